@@ -1,0 +1,33 @@
+package robosim.protocol;
+
+/**
+ * Bounds on every count a message reads from the wire, checked before anything is allocated.
+ * A value outside its bound raises a {@link ProtocolException} that names the field and the value.
+ */
+public final class Limits {
+    /** Robots in one world (and entries in one per-step batch). */
+    public static final int MAX_ROBOTS = 100_000;
+    /** Static obstacles in one world. */
+    public static final int MAX_OBSTACLES = 100_000;
+    /** Vertices of one obstacle polygon. */
+    public static final int MAX_VERTICES = 10_000;
+    /** Sonar transducers on one robot. */
+    public static final int MAX_SONARS = 64;
+    /** Messages one robot may send, or receive, in one step. */
+    public static final int MAX_MESSAGES_PER_STEP = 10_000;
+    /** Sonar ranges in one geometry response. */
+    public static final int MAX_RANGES = MAX_ROBOTS * 16;
+    /** Bytes one message may occupy on the wire (checked by {@link ObjectConnection}). */
+    public static final int MAX_MESSAGE_BYTES = 64 * 1024 * 1024;
+
+    private Limits() {
+    }
+
+    /** Returns {@code value} if it lies in [0, max], else throws naming {@code field}. */
+    public static int checkCount(String field, int value, int max) throws ProtocolException {
+        if (value < 0 || value > max) {
+            throw new ProtocolException(field + " must be in [0, " + max + "], got " + value);
+        }
+        return value;
+    }
+}

@@ -1,0 +1,56 @@
+package robosim.protocol;
+
+import java.io.FilterInputStream;
+import java.io.IOException;
+import java.io.InputStream;
+
+/**
+ * Counts the bytes read since {@link #startMessage()} and fails once a message has used more than
+ * its budget, so a peer cannot make us read an endless object. The object stream above it may read
+ * a little ahead, so the bound is approximate by at most one buffer.
+ */
+final class MessageBudgetInputStream extends FilterInputStream {
+    private final long budget;
+    private long used;
+
+    MessageBudgetInputStream(InputStream in, long budget) {
+        super(in);
+        this.budget = budget;
+    }
+
+    void startMessage() {
+        used = 0;
+    }
+
+    private void count(long n) throws ProtocolException {
+        if (n > 0) {
+            used += n;
+            if (used > budget) {
+                throw new ProtocolException("message exceeds " + budget + " bytes: read " + used);
+            }
+        }
+    }
+
+    @Override
+    public int read() throws IOException {
+        int b = super.read();
+        if (b >= 0) {
+            count(1);
+        }
+        return b;
+    }
+
+    @Override
+    public int read(byte[] b, int off, int len) throws IOException {
+        int n = super.read(b, off, len);
+        count(n);
+        return n;
+    }
+
+    @Override
+    public long skip(long n) throws IOException {
+        long skipped = super.skip(n);
+        count(skipped);
+        return skipped;
+    }
+}

@@ -1,0 +1,155 @@
+package robosim.protocol;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.Closeable;
+import java.io.EOFException;
+import java.io.Externalizable;
+import java.io.IOException;
+import java.io.InvalidClassException;
+import java.io.ObjectInputStream;
+import java.io.ObjectOutputStream;
+import java.io.ObjectStreamException;
+import java.io.OptionalDataException;
+import java.net.Socket;
+
+/**
+ * Owns one socket and its buffered object streams (TCP_NODELAY). Messages are written unshared and
+ * the output stream is reset every {@code resetEvery} messages, so neither side's handle table grows
+ * without bound. Every read passes the {@link ProtocolFilter} and a per-message byte budget; anything
+ * else becomes a {@link ProtocolException} naming what was wrong, after which the caller closes.
+ *
+ * <p>Not thread-safe: at most one thread reads and one thread writes at a time.
+ */
+public final class ObjectConnection implements Closeable {
+    /**
+     * Messages between output-stream resets. A reset costs one marker and re-sending one class
+     * descriptor (about 100 bytes); the handle tables hold at most this many entries.
+     */
+    public static final int DEFAULT_RESET_EVERY = 256;
+    private static final int BUFFER_BYTES = 64 * 1024;
+
+    private final Socket socket;
+    private final ObjectOutputStream out;
+    private final ObjectInputStream in;
+    private final MessageBudgetInputStream budget;
+    private final ProtocolFilter filter = new ProtocolFilter();
+    private final int resetEvery;
+    private final String peer;
+    private int sinceReset;
+
+    /**
+     * Wraps a connected socket. Writes the stream header and then reads the peer's, so it blocks
+     * until the peer does the same (bounded by the socket's SO_TIMEOUT, if set).
+     *
+     * @param resetEvery messages between resets; 0 never resets (for measurement only)
+     */
+    public ObjectConnection(Socket socket, int resetEvery) throws IOException {
+        if (resetEvery < 0) {
+            throw new IllegalArgumentException("resetEvery must be >= 0, got " + resetEvery);
+        }
+        this.socket = socket;
+        this.resetEvery = resetEvery;
+        this.peer = String.valueOf(socket.getRemoteSocketAddress());
+        try {
+            socket.setTcpNoDelay(true);
+            out = new ObjectOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER_BYTES));
+            out.flush();
+            budget = new MessageBudgetInputStream(new BufferedInputStream(socket.getInputStream(), BUFFER_BYTES),
+                    Limits.MAX_MESSAGE_BYTES);
+            budget.startMessage();
+            try {
+                in = new ObjectInputStream(budget);
+            } catch (ObjectStreamException e) {
+                throw new ProtocolException("not an object stream: " + e.getMessage());
+            }
+            in.setObjectInputFilter(filter);
+        } catch (IOException | RuntimeException e) {
+            closeQuietly();
+            throw e;
+        }
+    }
+
+    /** Writes a step number as a primitive long (never a boxed Long); not flushed. */
+    public void writeStep(long step) throws IOException {
+        out.writeLong(step);
+    }
+
+    /** Writes one message, unshared; not flushed. */
+    public void write(Externalizable message) throws IOException {
+        out.writeUnshared(message);
+        if (resetEvery > 0 && ++sinceReset >= resetEvery) {
+            out.reset();
+            sinceReset = 0;
+        }
+    }
+
+    public void flush() throws IOException {
+        out.flush();
+    }
+
+    /**
+     * Reads a step number written by {@link #writeStep}. An object where a step number belongs is a
+     * {@link ProtocolException}; a stream that ends is an {@link EOFException}.
+     */
+    public long readStep() throws IOException {
+        budget.startMessage();
+        try {
+            return in.readLong();
+        } catch (OptionalDataException e) {
+            throw new ProtocolException("expected a step number, got an object");
+        }
+    }
+
+    /** Reads one message of the expected type; anything else is a {@link ProtocolException}. */
+    public <T extends Externalizable> T read(Class<T> type) throws IOException {
+        budget.startMessage();
+        Object o;
+        try {
+            o = in.readUnshared();
+        } catch (InvalidClassException e) {
+            String why = filter.lastRejection();
+            throw new ProtocolException("refused: " + (why.isEmpty() ? e.getMessage() : why));
+        } catch (ClassNotFoundException e) {
+            throw new ProtocolException("refused: unknown class " + e.getMessage());
+        } catch (OptionalDataException e) {
+            throw new ProtocolException("expected a " + type.getSimpleName() + ", got primitive data");
+        } catch (ObjectStreamException e) {
+            throw new ProtocolException("corrupt stream while reading a " + type.getSimpleName() + ": " + e);
+        } catch (ClassCastException | IllegalStateException e) {
+            throw new ProtocolException("corrupt stream while reading a " + type.getSimpleName() + ": " + e);
+        }
+        if (!type.isInstance(o)) {
+            throw new ProtocolException("expected a " + type.getSimpleName() + ", got a "
+                    + (o == null ? "null" : o.getClass().getSimpleName()));
+        }
+        return type.cast(o);
+    }
+
+    /** Sets the read timeout in milliseconds (0 = none). */
+    public void setReadTimeoutMs(int ms) throws IOException {
+        socket.setSoTimeout(ms);
+    }
+
+    /** The remote address, for log lines. */
+    public String peer() {
+        return peer;
+    }
+
+    public boolean isClosed() {
+        return socket.isClosed();
+    }
+
+    @Override
+    public void close() {
+        closeQuietly();
+    }
+
+    private void closeQuietly() {
+        try {
+            socket.close();
+        } catch (IOException ignored) {
+            // closing: nothing left to tell the peer
+        }
+    }
+}

@@ -1,0 +1,61 @@
+package robosim.protocol;
+
+import java.io.ObjectInputFilter;
+import java.util.Set;
+
+/**
+ * The allow-list on every object input stream: only the protocol's own message classes, at most
+ * {@link #MAX_DEPTH} deep, no arrays longer than {@link #MAX_ARRAY_LENGTH} and at most
+ * {@link #MAX_REFERENCES} live handles (the writer resets its stream long before that). One
+ * instance per stream: it remembers why it last refused, for the connection's error message.
+ */
+public final class ProtocolFilter implements ObjectInputFilter {
+    public static final Set<Class<?>> MESSAGE_CLASSES = Set.of(
+            RobotHello.class, RobotWelcome.class, StepRequest.class, StepResponse.class,
+            GeometryHello.class, GeometryWorld.class, GeometryStepRequest.class, GeometryStepResponse.class,
+            ViewerHello.class, WorldSnapshot.class, PoseUpdate.class, SimulationEnd.class);
+    /** Messages are flat: one object, its fields written inline. */
+    public static final long MAX_DEPTH = 2;
+    /** No message sends an array object; primitive arrays up to this length are tolerated. */
+    public static final long MAX_ARRAY_LENGTH = 1 << 16;
+    public static final long MAX_REFERENCES = 1_000_000;
+
+    private volatile String lastRejection = "";
+
+    @Override
+    public Status checkInput(FilterInfo info) {
+        if (info.depth() > MAX_DEPTH) {
+            return reject("object graph deeper than " + MAX_DEPTH + ": " + info.depth());
+        }
+        if (info.references() > MAX_REFERENCES) {
+            return reject("more than " + MAX_REFERENCES + " live references: " + info.references());
+        }
+        Class<?> c = info.serialClass();
+        if (c == null) {
+            return Status.ALLOWED;
+        }
+        if (c.isArray()) {
+            if (!c.getComponentType().isPrimitive()) {
+                return reject("array of " + c.getComponentType().getName() + " is not a protocol type");
+            }
+            if (info.arrayLength() > MAX_ARRAY_LENGTH) {
+                return reject("array length exceeds " + MAX_ARRAY_LENGTH + ": " + info.arrayLength());
+            }
+            return Status.ALLOWED;
+        }
+        if (MESSAGE_CLASSES.contains(c)) {
+            return Status.ALLOWED;
+        }
+        return reject("class " + c.getName() + " is not a protocol message");
+    }
+
+    private Status reject(String why) {
+        lastRejection = why;
+        return Status.REJECTED;
+    }
+
+    /** Why this filter last refused something, or "" if it never did. */
+    public String lastRejection() {
+        return lastRejection;
+    }
+}

@@ -1,0 +1,92 @@
+package robosim.protocol;
+
+import java.io.IOException;
+import java.io.ObjectInput;
+import java.io.ObjectOutput;
+import java.util.List;
+
+/**
+ * Environment -> robot, once, in answer to {@link RobotHello}: either a refusal with a reason
+ * (the connection is then closed), or the time step (ms), the robot's start pose (world mm, degrees
+ * counter-clockwise from +x) and the names of every robot in the world, in world order.
+ */
+public final class RobotWelcome implements java.io.Externalizable {
+    private boolean accepted;
+    private String reason = "";
+    private long timeStepMs;
+    private double xMm;
+    private double yMm;
+    private double headingDeg;
+    private List<String> robotNames = List.of();
+
+    public RobotWelcome() {
+    }
+
+    public static RobotWelcome refused(String reason) {
+        RobotWelcome w = new RobotWelcome();
+        w.reason = reason;
+        return w;
+    }
+
+    public static RobotWelcome accepted(long timeStepMs, double xMm, double yMm, double headingDeg,
+            List<String> robotNames) {
+        RobotWelcome w = new RobotWelcome();
+        w.accepted = true;
+        w.timeStepMs = timeStepMs;
+        w.xMm = xMm;
+        w.yMm = yMm;
+        w.headingDeg = headingDeg;
+        w.robotNames = List.copyOf(robotNames);
+        return w;
+    }
+
+    public boolean isAccepted() {
+        return accepted;
+    }
+
+    public String reason() {
+        return reason;
+    }
+
+    public long timeStepMs() {
+        return timeStepMs;
+    }
+
+    public double xMm() {
+        return xMm;
+    }
+
+    public double yMm() {
+        return yMm;
+    }
+
+    public double headingDeg() {
+        return headingDeg;
+    }
+
+    public List<String> robotNames() {
+        return robotNames;
+    }
+
+    @Override
+    public void writeExternal(ObjectOutput out) throws IOException {
+        out.writeBoolean(accepted);
+        out.writeUTF(reason);
+        out.writeLong(timeStepMs);
+        out.writeDouble(xMm);
+        out.writeDouble(yMm);
+        out.writeDouble(headingDeg);
+        Wire.writeStrings(out, robotNames);
+    }
+
+    @Override
+    public void readExternal(ObjectInput in) throws IOException {
+        accepted = in.readBoolean();
+        reason = in.readUTF();
+        timeStepMs = in.readLong();
+        xMm = in.readDouble();
+        yMm = in.readDouble();
+        headingDeg = in.readDouble();
+        robotNames = Wire.readStrings(in, "robot name count", Limits.MAX_ROBOTS);
+    }
+}

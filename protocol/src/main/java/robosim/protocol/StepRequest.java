@@ -1,0 +1,68 @@
+package robosim.protocol;
+
+import java.io.IOException;
+import java.io.ObjectInput;
+import java.io.ObjectOutput;
+import java.util.List;
+
+/**
+ * Robot -> Environment, once per step, after the step number: this step's ACTION (turn, then move
+ * along the new heading), whether SENSOR sonar ranges are wanted, and the COMMEVENT messages to
+ * route. {@code moveMm} is signed (negative drives backwards); {@code turnDeg} is counter-clockwise.
+ */
+public final class StepRequest implements java.io.Externalizable {
+    private long step;
+    private double moveMm;
+    private double turnDeg;
+    private boolean sonar;
+    private List<CommEvent> messages = List.of();
+
+    public StepRequest() {
+    }
+
+    public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages) {
+        this.step = step;
+        this.moveMm = moveMm;
+        this.turnDeg = turnDeg;
+        this.sonar = sonar;
+        this.messages = List.copyOf(messages);
+    }
+
+    public long step() {
+        return step;
+    }
+
+    public double moveMm() {
+        return moveMm;
+    }
+
+    public double turnDeg() {
+        return turnDeg;
+    }
+
+    public boolean wantsSonar() {
+        return sonar;
+    }
+
+    public List<CommEvent> messages() {
+        return messages;
+    }
+
+    @Override
+    public void writeExternal(ObjectOutput out) throws IOException {
+        out.writeLong(step);
+        out.writeDouble(moveMm);
+        out.writeDouble(turnDeg);
+        out.writeBoolean(sonar);
+        Wire.writeEvents(out, messages);
+    }
+
+    @Override
+    public void readExternal(ObjectInput in) throws IOException {
+        step = in.readLong();
+        moveMm = in.readDouble();
+        turnDeg = in.readDouble();
+        sonar = in.readBoolean();
+        messages = Wire.readEvents(in, "outgoing message count");
+    }
+}

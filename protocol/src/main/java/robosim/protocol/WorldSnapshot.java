@@ -1,0 +1,114 @@
+package robosim.protocol;
+
+import java.io.IOException;
+import java.io.ObjectInput;
+import java.io.ObjectOutput;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * Environment -> viewer, once, right after {@link ViewerHello}: the whole world as it stands after
+ * {@code step} (-1 before the first step): time step, arena, obstacles and every robot's name, type,
+ * radius and pose (mm, degrees). {@link PoseUpdate}s follow, with robots in the same order.
+ */
+public final class WorldSnapshot implements java.io.Externalizable {
+    private long step;
+    private long timeStepMs;
+    private Arena arena;
+    private List<ObstacleShape> obstacles = List.of();
+    private List<String> robotNames = List.of();
+    private List<String> robotTypes = List.of();
+    private double[] radiusMm = new double[0];
+    private PoseUpdate poses = new PoseUpdate();
+
+    public WorldSnapshot() {
+    }
+
+    public WorldSnapshot(long timeStepMs, Arena arena, List<ObstacleShape> obstacles, List<String> robotNames,
+            List<String> robotTypes, double[] radiusMm, PoseUpdate poses) {
+        this.step = poses.step();
+        this.timeStepMs = timeStepMs;
+        this.arena = arena;
+        this.obstacles = List.copyOf(obstacles);
+        this.robotNames = List.copyOf(robotNames);
+        this.robotTypes = List.copyOf(robotTypes);
+        this.radiusMm = radiusMm.clone();
+        this.poses = poses;
+        if (robotNames.size() != robotTypes.size() || robotNames.size() != radiusMm.length
+                || robotNames.size() != poses.count()) {
+            throw new IllegalArgumentException("snapshot robot fields differ in length");
+        }
+    }
+
+    public long step() {
+        return step;
+    }
+
+    public long timeStepMs() {
+        return timeStepMs;
+    }
+
+    public Arena arena() {
+        return arena;
+    }
+
+    public List<ObstacleShape> obstacles() {
+        return obstacles;
+    }
+
+    public List<String> robotNames() {
+        return robotNames;
+    }
+
+    public List<String> robotTypes() {
+        return robotTypes;
+    }
+
+    public double radiusMm(int robot) {
+        return radiusMm[robot];
+    }
+
+    /** The robots' poses at {@link #step()}. */
+    public PoseUpdate poses() {
+        return poses;
+    }
+
+    @Override
+    public void writeExternal(ObjectOutput out) throws IOException {
+        out.writeLong(step);
+        out.writeLong(timeStepMs);
+        arena.write(out);
+        Wire.writeObstacles(out, obstacles);
+        out.writeInt(robotNames.size());
+        for (int i = 0; i < robotNames.size(); i++) {
+            out.writeUTF(robotNames.get(i));
+            out.writeUTF(robotTypes.get(i));
+            out.writeDouble(radiusMm[i]);
+        }
+        poses.writeExternal(out);
+    }
+
+    @Override
+    public void readExternal(ObjectInput in) throws IOException {
+        step = in.readLong();
+        timeStepMs = in.readLong();
+        arena = Arena.read(in);
+        obstacles = Wire.readObstacles(in);
+        int n = Limits.checkCount("robot count", in.readInt(), Limits.MAX_ROBOTS);
+        List<String> names = new ArrayList<>(n);
+        List<String> types = new ArrayList<>(n);
+        radiusMm = new double[n];
+        for (int i = 0; i < n; i++) {
+            names.add(in.readUTF());
+            types.add(in.readUTF());
+            radiusMm[i] = in.readDouble();
+        }
+        robotNames = List.copyOf(names);
+        robotTypes = List.copyOf(types);
+        poses = new PoseUpdate();
+        poses.readExternal(in);
+        if (poses.count() != n) {
+            throw new ProtocolException("snapshot has " + n + " robots but " + poses.count() + " poses");
+        }
+    }
+}

@@ -1,0 +1,226 @@
+package robosim.protocol;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayInputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.Externalizable;
+import java.io.IOException;
+import java.io.ObjectInputStream;
+import java.io.ObjectOutputStream;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+
+/**
+ * Every message survives a round trip through object streams, and its wire size is exactly its
+ * payload plus the 9 bytes an already-described Externalizable object costs: TC_OBJECT, a handle
+ * to its class descriptor (1 + 4), a short block-data header (2) and TC_ENDBLOCKDATA.
+ */
+class MessageRoundTripTest {
+    private static final int OVERHEAD = 9;
+
+    static final RobotProperties PROPS = new RobotProperties("ArRobot", 250, 500, 90,
+            List.of(new SonarSpec(100, 0, 0, 15, 5000)));
+
+    /** Writes the message twice in one stream and returns the bytes of the second copy. */
+    static int repeatedSize(Externalizable m) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        ObjectOutputStream out = new ObjectOutputStream(bytes);
+        out.writeUnshared(m);
+        out.flush();
+        int first = bytes.size();
+        out.writeUnshared(m);
+        out.flush();
+        return bytes.size() - first;
+    }
+
+    @SuppressWarnings("unchecked")
+    static <T extends Externalizable> T roundTrip(T m) throws Exception {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
+            out.writeUnshared(m);
+        }
+        try (ObjectInputStream in = new ObjectInputStream(new ByteArrayInputStream(bytes.toByteArray()))) {
+            in.setObjectInputFilter(new ProtocolFilter());
+            return (T) in.readUnshared();
+        }
+    }
+
+    private static int utf(String s) {
+        return 2 + s.length();
+    }
+
+    @Test
+    void robotHello() throws Exception {
+        RobotHello m = roundTrip(new RobotHello("robot1", PROPS));
+        assertEquals(Protocol.VERSION, m.protocolVersion());
+        assertEquals("robot1", m.name());
+        assertEquals(PROPS, m.properties());
+        int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
+        assertEquals(OVERHEAD + 4 + utf("robot1") + props, repeatedSize(new RobotHello("robot1", PROPS)));
+    }
+
+    @Test
+    void robotWelcomeAcceptedAndRefused() throws Exception {
+        RobotWelcome m = roundTrip(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b")));
+        assertTrue(m.isAccepted());
+        assertEquals(500, m.timeStepMs());
+        assertEquals(1000, m.xMm());
+        assertEquals(2000, m.yMm());
+        assertEquals(90, m.headingDeg());
+        assertEquals(List.of("a", "b"), m.robotNames());
+        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b"),
+                repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"))));
+
+        RobotWelcome r = roundTrip(RobotWelcome.refused("no robot named x"));
+        assertFalse(r.isAccepted());
+        assertEquals("no robot named x", r.reason());
+    }
+
+    @Test
+    void stepRequest() throws Exception {
+        StepRequest m = roundTrip(new StepRequest(7, 250, -45, true, List.of(new CommEvent("", "robot2", "7"))));
+        assertEquals(7, m.step());
+        assertEquals(250, m.moveMm());
+        assertEquals(-45, m.turnDeg());
+        assertTrue(m.wantsSonar());
+        assertEquals(List.of(new CommEvent("", "robot2", "7")), m.messages());
+        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+    }
+
+    @Test
+    void stepResponse() throws Exception {
+        double[] ranges = {1000, 2000.5};
+        StepResponse m = roundTrip(new StepResponse(3, 240, 0, "wall", 1, 2, 3, ranges,
+                List.of(new CommEvent("robot2", "robot1", "hi")), List.of("note")));
+        assertEquals(3, m.step());
+        assertEquals(240, m.movedMm());
+        assertEquals("wall", m.contact());
+        assertEquals(1, m.xMm());
+        assertEquals(2, m.yMm());
+        assertEquals(3, m.headingDeg());
+        assertArrayEquals(ranges, m.sonarMm());
+        assertEquals(List.of(new CommEvent("robot2", "robot1", "hi")), m.inbox());
+        assertEquals(List.of("note"), m.notices());
+        StepResponse empty = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of());
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4, repeatedSize(empty));
+    }
+
+    @Test
+    void geometryHelloAndWorld() throws Exception {
+        assertEquals(Protocol.VERSION, roundTrip(new GeometryHello()).protocolVersion());
+        assertEquals(OVERHEAD + 4, repeatedSize(new GeometryHello()));
+
+        Arena arena = new Arena(0, 0, 10_000, 5_000);
+        ObstacleShape box = ObstacleShape.rectangle("box", 1000, 1000, 500, 500);
+        GeometryWorld m = roundTrip(new GeometryWorld(arena, List.of(box), List.of("r1"), List.of(PROPS)));
+        assertEquals(arena, m.arena());
+        assertEquals(List.of(box), m.obstacles());
+        assertEquals(List.of("r1"), m.robotNames());
+        assertEquals(List.of(PROPS), m.robots());
+        int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
+        assertEquals(OVERHEAD + 4 * 8 + 4 + utf("box") + 4 + 8 * 8 + 4 + utf("r1") + props,
+                repeatedSize(new GeometryWorld(arena, List.of(box), List.of("r1"), List.of(PROPS))));
+    }
+
+    @Test
+    void geometryStep() throws Exception {
+        GeometryStepRequest q = new GeometryStepRequest(2);
+        q.setStep(9);
+        q.set(0, 1, 2, 3, 4, 5, true);
+        q.set(1, 6, 7, 8, 9, 10, false);
+        GeometryStepRequest q2 = roundTrip(q);
+        assertEquals(9, q2.step());
+        assertEquals(2, q2.count());
+        assertEquals(5, q2.moveMm(0));
+        assertEquals(9, q2.turnDeg(1));
+        assertTrue(q2.wantsSonar(0));
+        assertFalse(q2.wantsSonar(1));
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (5 * 8 + 1), repeatedSize(q));
+
+        GeometryStepResponse r = new GeometryStepResponse(2, 4);
+        r.begin(9);
+        r.setMotion(0, 250, 0, GeometryStepResponse.CONTACT_NONE, -1);
+        r.setMotion(1, 12.5, 0, GeometryStepResponse.CONTACT_OBSTACLE, 3);
+        r.addRange(1500);
+        GeometryStepResponse r2 = roundTrip(r);
+        assertEquals(9, r2.step());
+        assertEquals(12.5, r2.movedMm(1));
+        assertEquals(GeometryStepResponse.CONTACT_OBSTACLE, r2.contactKind(1));
+        assertEquals(3, r2.contactIndex(1));
+        assertEquals(1, r2.rangeCount());
+        assertEquals(1500, r2.rangeMm(0));
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (8 + 8 + 1 + 4) + 4 + 8, repeatedSize(r));
+    }
+
+    @Test
+    void viewerMessages() throws Exception {
+        ViewerHello h = roundTrip(new ViewerHello(true));
+        assertTrue(h.everyStep());
+        assertEquals(OVERHEAD + 4 + 1, repeatedSize(new ViewerHello(false)));
+
+        PoseUpdate p = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6});
+        PoseUpdate p2 = roundTrip(p);
+        assertEquals(4, p2.step());
+        assertEquals(2, p2.count());
+        assertEquals(4, p2.yMm(1));
+        assertEquals(6, p2.headingDeg(1));
+        assertEquals(OVERHEAD + 8 + 4 + 2 * 24, repeatedSize(p));
+
+        Arena arena = new Arena(0, 0, 1000, 1000);
+        WorldSnapshot s = new WorldSnapshot(500, arena, List.of(), List.of("a", "b"), List.of("Scout", "Scout"),
+                new double[] {200, 200}, p);
+        WorldSnapshot s2 = roundTrip(s);
+        assertEquals(4, s2.step());
+        assertEquals(500, s2.timeStepMs());
+        assertEquals(arena, s2.arena());
+        assertEquals(List.of("a", "b"), s2.robotNames());
+        assertEquals(200, s2.radiusMm(1));
+        assertEquals(3, s2.poses().yMm(0));
+        int robots = 2 * (utf("a") + utf("Scout") + 8);
+        assertEquals(OVERHEAD + 8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 48, repeatedSize(s));
+
+        SimulationEnd e = roundTrip(new SimulationEnd(99, "done"));
+        assertEquals(99, e.lastStep());
+        assertEquals("done", e.reason());
+        assertEquals(OVERHEAD + 8 + utf("done"), repeatedSize(e));
+    }
+
+    @Test
+    void helloWithAnotherVersionIsReadUpToTheVersionAndTheStreamStaysInStep() throws Exception {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
+            out.writeUnshared(new RobotHello("robot1", PROPS));
+            out.writeUnshared(new SimulationEnd(1, "after"));
+        }
+        byte[] data = bytes.toByteArray();
+        byte[] versionThenName = {0, 0, 0, (byte) Protocol.VERSION, 0, 6, 'r', 'o', 'b', 'o', 't', '1'};
+        int at = indexOf(data, versionThenName);
+        assertTrue(at > 0, "version bytes found in the stream");
+        data[at + 3] = (byte) (Protocol.VERSION + 1);
+        try (ObjectInputStream in = new ObjectInputStream(new ByteArrayInputStream(data))) {
+            in.setObjectInputFilter(new ProtocolFilter());
+            RobotHello h = (RobotHello) in.readUnshared();
+            assertEquals(Protocol.VERSION + 1, h.protocolVersion());
+            assertNull(h.name());
+            assertEquals("after", ((SimulationEnd) in.readUnshared()).reason());
+        }
+    }
+
+    private static int indexOf(byte[] data, byte[] pattern) {
+        outer:
+        for (int i = 0; i + pattern.length <= data.length; i++) {
+            for (int j = 0; j < pattern.length; j++) {
+                if (data[i + j] != pattern[j]) {
+                    continue outer;
+                }
+            }
+            return i;
+        }
+        return -1;
+    }
+}
