@@ -1,0 +1,76 @@
+package robosim.geometry;
+
+import java.io.EOFException;
+import java.io.Externalizable;
+import java.io.IOException;
+import java.net.Socket;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.GeometryHello;
+import robosim.protocol.GeometryStepRequest;
+import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.GeometryWorld;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.SimulationEnd;
+
+/**
+ * The Geometry process's one session with an Environment, on the caller's thread: hello, the
+ * world, then one request and one response per step until the Environment ends the simulation.
+ */
+public final class GeometryClient {
+    private static final Logger LOG = LoggerFactory.getLogger(GeometryClient.class);
+
+    private final ObjectConnection connection;
+    private long steps;
+
+    public GeometryClient(Socket socket, int resetEvery) throws IOException {
+        this.connection = new ObjectConnection(socket, resetEvery);
+    }
+
+    /** Runs the session; returns the Environment's reason for ending it. */
+    public String run() throws IOException {
+        try (connection) {
+            connection.write(new GeometryHello());
+            connection.flush();
+            Externalizable first = connection.read(Externalizable.class);
+            if (first instanceof SimulationEnd end) {
+                return "refused by the Environment: " + end.reason();
+            }
+            if (!(first instanceof GeometryWorld world)) {
+                throw new ProtocolException("expected a GeometryWorld, got a " + first.getClass().getSimpleName());
+            }
+            GeometryEngine engine = new GeometryEngine(new StaticWorld(world.arena(), world.obstacles()),
+                    world.robots());
+            GeometryStepResponse response = engine.newResponse();
+            LOG.info("world received: {} robots, {} obstacles", engine.robotCount(), world.obstacles().size());
+            while (true) {
+                Externalizable m;
+                try {
+                    m = connection.read(Externalizable.class);
+                } catch (EOFException e) {
+                    return "the Environment closed the connection after " + steps + " steps";
+                }
+                if (m instanceof SimulationEnd end) {
+                    return end.reason();
+                }
+                if (!(m instanceof GeometryStepRequest request)) {
+                    throw new ProtocolException("expected a GeometryStepRequest, got a "
+                            + m.getClass().getSimpleName());
+                }
+                try {
+                    engine.step(request, response);
+                } catch (IllegalArgumentException e) {
+                    throw new ProtocolException(e.getMessage());
+                }
+                connection.write(response);
+                connection.flush();
+                steps++;
+            }
+        }
+    }
+
+    public long steps() {
+        return steps;
+    }
+}

@@ -1,0 +1,75 @@
+package robosim.geometry;
+
+import java.io.IOException;
+import java.net.ConnectException;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.util.concurrent.Callable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+
+/** {@code scripts/geometry.sh HOST PORT}: the Geometry process, a client of the Environment. */
+@Command(name = "geometry.sh", mixinStandardHelpOptions = true,
+        description = "Connects to an Environment's geometry port and does its collision detection and sonar "
+                + "ranging until the simulation ends.")
+public final class GeometryMain implements Callable<Integer> {
+    private static final Logger LOG = LoggerFactory.getLogger(GeometryMain.class);
+
+    @Parameters(index = "0", defaultValue = "localhost", description = "Environment host (default: ${DEFAULT-VALUE}).")
+    String host;
+
+    @Parameters(index = "1", defaultValue = "" + Protocol.DEFAULT_GEOMETRY_PORT,
+            description = "Environment geometry port (default: ${DEFAULT-VALUE}).")
+    int port;
+
+    @Option(names = "--connect-timeout-s", defaultValue = "30",
+            description = "Keep trying to connect for this long, so start order does not matter "
+                    + "(default: ${DEFAULT-VALUE}).")
+    int connectTimeoutS;
+
+    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
+            description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
+    int resetEvery;
+
+    @Override
+    public Integer call() throws Exception {
+        Socket socket = connect(host, port, connectTimeoutS * 1000L);
+        if (socket == null) {
+            System.err.println("geometry: cannot connect to " + host + ":" + port + " within " + connectTimeoutS
+                    + " s (is the Environment running?)");
+            return 1;
+        }
+        GeometryClient client = new GeometryClient(socket, resetEvery);
+        String reason = client.run();
+        LOG.info("session over after {} steps: {}", client.steps(), reason);
+        return 0;
+    }
+
+    /** Connects, retrying while the port refuses, until the deadline; null if it never accepted. */
+    static Socket connect(String host, int port, long timeoutMs) throws IOException, InterruptedException {
+        long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
+        while (true) {
+            Socket s = new Socket();
+            try {
+                s.connect(new InetSocketAddress(host, port), 5000);
+                return s;
+            } catch (ConnectException e) {
+                s.close();
+                if (System.nanoTime() > deadline) {
+                    return null;
+                }
+                Thread.sleep(50); // a retry interval, not a wait for an event: nothing to wait on yet
+            }
+        }
+    }
+
+    public static void main(String[] args) {
+        System.exit(new CommandLine(new GeometryMain()).execute(args));
+    }
+}
