@@ -1,8 +1,5 @@
 package robosim.geometry;
 
-import java.io.IOException;
-import java.net.ConnectException;
-import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
@@ -11,6 +8,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.Connector;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 
@@ -39,7 +37,7 @@ public final class GeometryMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        Socket socket = connect(host, port, connectTimeoutS * 1000L);
+        Socket socket = Connector.connect(host, port, connectTimeoutS * 1000L);
         if (socket == null) {
             System.err.println("geometry: cannot connect to " + host + ":" + port + " within " + connectTimeoutS
                     + " s (is the Environment running?)");
@@ -51,25 +49,12 @@ public final class GeometryMain implements Callable<Integer> {
         return 0;
     }
 
-    /** Connects, retrying while the port refuses, until the deadline; null if it never accepted. */
-    static Socket connect(String host, int port, long timeoutMs) throws IOException, InterruptedException {
-        long deadline = System.nanoTime() + timeoutMs * 1_000_000L;
-        while (true) {
-            Socket s = new Socket();
-            try {
-                s.connect(new InetSocketAddress(host, port), 5000);
-                return s;
-            } catch (ConnectException e) {
-                s.close();
-                if (System.nanoTime() > deadline) {
-                    return null;
-                }
-                Thread.sleep(50); // a retry interval, not a wait for an event: nothing to wait on yet
-            }
-        }
-    }
-
     public static void main(String[] args) {
-        System.exit(new CommandLine(new GeometryMain()).execute(args));
+        CommandLine cl = new CommandLine(new GeometryMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("geometry: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
     }
 }

@@ -1,0 +1,119 @@
+package robosim.environment;
+
+import java.io.IOException;
+import java.net.BindException;
+import java.net.InetAddress;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.environment.config.EnvironmentFileException;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.WorldSpec;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+
+/**
+ * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
+ * {@code listening robots=P viewers=P geometry=P} when its ports are bound and, when the run ends,
+ * {@code summary steps=... robots=... wall_s=... steps_per_s=... robot_steps_per_s=...} as its last
+ * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option or port).
+ */
+@Command(name = "environment.sh", mixinStandardHelpOptions = true,
+        description = "Loads an environment file, waits for every robot it names (and a Geometry process), "
+                + "then runs the simulation in lock-step.")
+public final class EnvironmentMain implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE.xml", description = "The environment file.")
+    Path file;
+
+    @Option(names = "--robot-port", defaultValue = "" + Protocol.DEFAULT_ROBOT_PORT,
+            description = "Port for Hardware Simulators (default: ${DEFAULT-VALUE}; 0 picks a free one).")
+    int robotPort;
+
+    @Option(names = "--viewer-port", defaultValue = "" + Protocol.DEFAULT_VIEWER_PORT,
+            description = "Port for viewers (default: ${DEFAULT-VALUE}; 0 picks a free one).")
+    int viewerPort;
+
+    @Option(names = "--geometry-port", defaultValue = "" + Protocol.DEFAULT_GEOMETRY_PORT,
+            description = "Port for the Geometry process (default: ${DEFAULT-VALUE}; 0 picks a free one).")
+    int geometryPort;
+
+    @Option(names = "--bind", defaultValue = "127.0.0.1",
+            description = "Address to listen on (default: ${DEFAULT-VALUE}, loopback only).")
+    String bind;
+
+    @Option(names = "--no-geometry",
+            description = "Do collision and sonar in-process instead of in a Geometry process.")
+    boolean noGeometry;
+
+    @Option(names = "--steps", defaultValue = "0",
+            description = "End after this many steps (default: ${DEFAULT-VALUE} = run until stopped).")
+    long steps;
+
+    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
+            description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
+    int resetEvery;
+
+    @Option(names = "--handshake-timeout-ms", defaultValue = "10000",
+            description = "Drop a client that has not said hello within this time (default: ${DEFAULT-VALUE}).")
+    int handshakeTimeoutMs;
+
+    @Override
+    public Integer call() throws Exception {
+        WorldSpec spec;
+        try {
+            spec = new EnvironmentLoader().load(file);
+        } catch (EnvironmentFileException e) {
+            System.err.println(e.getMessage());
+            return 2;
+        }
+        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0) {
+            System.err.println("environment: --steps, --reset-every and --handshake-timeout-ms must be >= 0");
+            return 2;
+        }
+        ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
+                InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
+                handshakeTimeoutMs);
+        ClientWorkerCoordinator coordinator = new ClientWorkerCoordinator(spec, settings);
+        try {
+            coordinator.start();
+        } catch (BindException e) {
+            System.err.println("environment: " + e.getMessage() + " (choose another with the --*-port options)");
+            return 2;
+        } catch (IOException e) {
+            System.err.println("environment: cannot listen on " + bind + ": " + e.getMessage());
+            return 2;
+        }
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> coordinator.stop("the Environment was stopped"),
+                "shutdown"));
+        int[] ports = coordinator.ports();
+        System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]);
+        System.out.flush();
+        coordinator.awaitEnd();
+        ClientWorkerCoordinator.Summary s = coordinator.summary();
+        System.out.println(summaryLine(s));
+        System.out.flush();
+        return s.completed() ? 0 : 1;
+    }
+
+    /** The summary line, also used by the headless runner. */
+    public static String summaryLine(ClientWorkerCoordinator.Summary s) {
+        double wall = Math.max(s.wallSeconds(), 1e-9);
+        return String.format(java.util.Locale.ROOT,
+                "summary steps=%d robots=%d wall_s=%.3f steps_per_s=%.1f robot_steps_per_s=%.1f messages=%d",
+                s.steps(), s.robots(), s.wallSeconds(), s.steps() / wall, s.steps() * s.robots() / wall,
+                s.messagesDelivered());
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new EnvironmentMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("environment: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}

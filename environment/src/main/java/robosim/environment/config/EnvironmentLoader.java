@@ -1,0 +1,257 @@
+package robosim.environment.config;
+
+import com.fasterxml.jackson.core.JsonLocation;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
+import com.fasterxml.jackson.databind.exc.InvalidFormatException;
+import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
+import com.fasterxml.jackson.dataformat.xml.XmlMapper;
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.NoSuchFileException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Geometry;
+import org.locationtech.jts.geom.GeometryFactory;
+import org.locationtech.jts.geom.Polygon;
+import robosim.environment.core.WorldSpec;
+import robosim.environment.core.WorldSpec.RobotSpec;
+import robosim.protocol.Arena;
+import robosim.protocol.ObstacleShape;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotProperties;
+
+/**
+ * Reads an environment file and checks it: metres become millimetres, every fault becomes one
+ * {@link EnvironmentFileException} line that names the file, the element and what is wrong.
+ */
+public final class EnvironmentLoader {
+    private static final double MM_PER_M = 1000.0;
+    private static final XmlMapper MAPPER = XmlMapper.builder()
+            .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
+            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
+            .build();
+
+    private final GeometryFactory jts = new GeometryFactory();
+
+    public WorldSpec load(Path file) throws EnvironmentFileException {
+        String where = file.toString();
+        EnvironmentFile xml;
+        try {
+            xml = MAPPER.readValue(Files.readAllBytes(file), EnvironmentFile.class);
+        } catch (NoSuchFileException e) {
+            throw new EnvironmentFileException(where + ": file not found");
+        } catch (UnrecognizedPropertyException e) {
+            throw new EnvironmentFileException(where + at(e.getLocation()) + ": unknown element or attribute '"
+                    + e.getPropertyName() + "' (known here: " + e.getKnownPropertyIds() + ")");
+        } catch (InvalidFormatException e) {
+            throw new EnvironmentFileException(where + at(e.getLocation()) + ": " + path(e) + " value '"
+                    + e.getValue() + "' is not a " + e.getTargetType().getSimpleName().toLowerCase());
+        } catch (JsonProcessingException e) {
+            throw new EnvironmentFileException(where + at(e.getLocation()) + ": malformed XML: "
+                    + e.getOriginalMessage().lines().findFirst().orElse(""));
+        } catch (IOException e) {
+            throw new EnvironmentFileException(where + ": cannot read: " + e.getMessage());
+        }
+        if (xml == null) {
+            throw new EnvironmentFileException(where + ": empty file");
+        }
+        return check(where, xml);
+    }
+
+    private static String at(JsonLocation location) {
+        return location == null || location.getLineNr() < 0 ? ""
+                : ":" + location.getLineNr() + ":" + location.getColumnNr();
+    }
+
+    private static String path(InvalidFormatException e) {
+        StringBuilder b = new StringBuilder();
+        for (var ref : e.getPath()) {
+            if (ref.getFieldName() != null) {
+                b.append(b.length() == 0 ? "" : "/").append(ref.getFieldName());
+            }
+        }
+        return "<" + b + ">";
+    }
+
+    private WorldSpec check(String where, EnvironmentFile xml) throws EnvironmentFileException {
+        String env = where + ": <environment>";
+        if (xml.timeStepMs == null) {
+            throw new EnvironmentFileException(env + " needs timeStepMs (the time step in milliseconds)");
+        }
+        if (xml.timeStepMs <= 0) {
+            throw new EnvironmentFileException(env + " timeStepMs must be > 0, got " + xml.timeStepMs);
+        }
+        if (xml.arena == null) {
+            throw new EnvironmentFileException(env + " needs an <arena width=\"..\" height=\"..\"/> (metres)");
+        }
+        EnvironmentFile.ArenaXml a = xml.arena;
+        double ax = orZero(a.x);
+        double ay = orZero(a.y);
+        double w = required(where, "<arena>", "width", a.width);
+        double h = required(where, "<arena>", "height", a.height);
+        if (!(w > 0) || !(h > 0) || !Double.isFinite(ax) || !Double.isFinite(ay)) {
+            throw new EnvironmentFileException(where + ": <arena> width and height must be > 0 m, got " + w + " x " + h);
+        }
+        Arena arena = new Arena(ax * MM_PER_M, ay * MM_PER_M, (ax + w) * MM_PER_M, (ay + h) * MM_PER_M);
+        List<ObstacleShape> obstacles = obstacles(where, xml);
+        List<RobotSpec> robots = robots(where, xml, arena, obstacles);
+        long seed = xml.seed == null ? 1L : xml.seed;
+        String name = xml.name == null ? Path.of(where).getFileName().toString() : xml.name;
+        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots);
+    }
+
+    private static double orZero(Double v) {
+        return v == null ? 0 : v;
+    }
+
+    private static double required(String where, String element, String attribute, Double v)
+            throws EnvironmentFileException {
+        if (v == null) {
+            throw new EnvironmentFileException(where + ": " + element + " needs the attribute " + attribute);
+        }
+        if (!Double.isFinite(v)) {
+            throw new EnvironmentFileException(where + ": " + element + " " + attribute + " must be a finite number, got "
+                    + v);
+        }
+        return v;
+    }
+
+    private List<ObstacleShape> obstacles(String where, EnvironmentFile xml) throws EnvironmentFileException {
+        List<ObstacleShape> out = new ArrayList<>();
+        Set<String> names = new HashSet<>();
+        for (Object o : xml.obstacles.all) {
+            ObstacleShape shape;
+            if (o instanceof EnvironmentFile.RectangleXml r) {
+                String el = "<rectangle name=\"" + nameOr(r.name, out.size()) + "\">";
+                double x = required(where, el, "x", r.x);
+                double y = required(where, el, "y", r.y);
+                double w = required(where, el, "width", r.width);
+                double h = required(where, el, "height", r.height);
+                if (!(w > 0) || !(h > 0)) {
+                    throw new EnvironmentFileException(where + ": " + el + " width and height must be > 0 m, got "
+                            + w + " x " + h);
+                }
+                shape = ObstacleShape.rectangle(nameOr(r.name, out.size()), x * MM_PER_M, y * MM_PER_M, w * MM_PER_M,
+                        h * MM_PER_M);
+            } else {
+                EnvironmentFile.PolygonXml p = (EnvironmentFile.PolygonXml) o;
+                String el = "<polygon name=\"" + nameOr(p.name, out.size()) + "\">";
+                shape = new ObstacleShape(nameOr(p.name, out.size()), points(where, el, p.points));
+                if (!toPolygon(shape).isValid()) {
+                    throw new EnvironmentFileException(where + ": " + el + " points do not form a simple polygon"
+                            + " (edges cross or repeat)");
+                }
+            }
+            if (!names.add(shape.name())) {
+                throw new EnvironmentFileException(where + ": obstacle name \"" + shape.name() + "\" is used twice");
+            }
+            out.add(shape);
+        }
+        return out;
+    }
+
+    private static String nameOr(String name, int index) {
+        return name == null || name.isBlank() ? "obstacle" + (index + 1) : name;
+    }
+
+    private static double[] points(String where, String el, String text) throws EnvironmentFileException {
+        if (text == null || text.isBlank()) {
+            throw new EnvironmentFileException(where + ": " + el + " needs points=\"x1,y1 x2,y2 x3,y3 ...\" (metres)");
+        }
+        String[] pairs = text.trim().split("\\s+");
+        if (pairs.length < 3) {
+            throw new EnvironmentFileException(where + ": " + el + " needs at least 3 points, got " + pairs.length);
+        }
+        double[] xy = new double[pairs.length * 2];
+        for (int i = 0; i < pairs.length; i++) {
+            String[] c = pairs[i].split(",");
+            try {
+                if (c.length != 2) {
+                    throw new NumberFormatException();
+                }
+                xy[2 * i] = Double.parseDouble(c[0]) * MM_PER_M;
+                xy[2 * i + 1] = Double.parseDouble(c[1]) * MM_PER_M;
+                if (!Double.isFinite(xy[2 * i]) || !Double.isFinite(xy[2 * i + 1])) {
+                    throw new NumberFormatException();
+                }
+            } catch (NumberFormatException e) {
+                throw new EnvironmentFileException(where + ": " + el + " point '" + pairs[i]
+                        + "' is not of the form x,y (metres)");
+            }
+        }
+        return xy;
+    }
+
+    Polygon toPolygon(ObstacleShape shape) {
+        Coordinate[] ring = new Coordinate[shape.vertexCount() + 1];
+        for (int v = 0; v < shape.vertexCount(); v++) {
+            ring[v] = new Coordinate(shape.x(v), shape.y(v));
+        }
+        ring[shape.vertexCount()] = ring[0];
+        return jts.createPolygon(ring);
+    }
+
+    private List<RobotSpec> robots(String where, EnvironmentFile xml, Arena arena, List<ObstacleShape> obstacles)
+            throws EnvironmentFileException {
+        if (xml.robots.isEmpty()) {
+            throw new EnvironmentFileException(where + ": <robots> must name at least one <robot>");
+        }
+        List<Geometry> walls = new ArrayList<>();
+        for (ObstacleShape o : obstacles) {
+            walls.add(toPolygon(o));
+        }
+        List<RobotSpec> out = new ArrayList<>();
+        Set<String> names = new HashSet<>();
+        for (EnvironmentFile.RobotXml r : xml.robots) {
+            if (r.name == null || r.name.isBlank()) {
+                throw new EnvironmentFileException(where + ": <robot> number " + (out.size() + 1) + " needs a name");
+            }
+            String el = "<robot name=\"" + r.name + "\">";
+            if (!names.add(r.name)) {
+                throw new EnvironmentFileException(where + ": " + el + " the name is used twice");
+            }
+            if (r.type == null) {
+                throw new EnvironmentFileException(where + ": " + el + " needs a type (known: " + RobotModels.names()
+                        + ")");
+            }
+            RobotProperties props = RobotModels.byName(r.type);
+            if (props == null) {
+                throw new EnvironmentFileException(where + ": " + el + " type \"" + r.type
+                        + "\" is not a known robot type (known: " + RobotModels.names() + ")");
+            }
+            double x = required(where, el, "x", r.x) * MM_PER_M;
+            double y = required(where, el, "y", r.y) * MM_PER_M;
+            double heading = r.heading == null ? 0 : r.heading;
+            if (!Double.isFinite(heading)) {
+                throw new EnvironmentFileException(where + ": " + el + " heading must be a finite number");
+            }
+            double rad = props.radiusMm();
+            if (x - rad < arena.minXMm() || x + rad > arena.maxXMm() || y - rad < arena.minYMm()
+                    || y + rad > arena.maxYMm()) {
+                throw new EnvironmentFileException(where + ": " + el + " at (" + r.x + ", " + r.y
+                        + ") m does not fit inside the arena (radius " + rad / MM_PER_M + " m)");
+            }
+            Geometry body = jts.createPoint(new Coordinate(x, y));
+            for (int o = 0; o < walls.size(); o++) {
+                if (walls.get(o).distance(body) < rad) {
+                    throw new EnvironmentFileException(where + ": " + el + " at (" + r.x + ", " + r.y
+                            + ") m overlaps obstacle \"" + obstacles.get(o).name() + "\"");
+                }
+            }
+            for (RobotSpec other : out) {
+                double minimum = rad + RobotModels.byName(other.type()).radiusMm();
+                if (Math.hypot(other.xMm() - x, other.yMm() - y) < minimum) {
+                    throw new EnvironmentFileException(where + ": " + el + " overlaps robot \"" + other.name() + "\"");
+                }
+            }
+            out.add(new RobotSpec(r.name, r.type, r.control == null ? "" : r.control, x, y,
+                    robosim.geometry.Kinematics.turn(heading, 0)));
+        }
+        return out;
+    }
+}

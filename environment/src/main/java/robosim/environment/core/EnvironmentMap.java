@@ -1,0 +1,104 @@
+package robosim.environment.core;
+
+import java.util.ArrayList;
+import java.util.List;
+import robosim.protocol.GeometryWorld;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * The world as it stands: the static map from the file, every robot's properties (from its
+ * handshake) and its current pose (world mm, degrees). Answers snapshots for viewers and the world
+ * description for Geometry. Owned by {@link SimulationCore}.
+ */
+public final class EnvironmentMap {
+    private final WorldSpec spec;
+    private final List<RobotProperties> properties;
+    private final double[] x;
+    private final double[] y;
+    private final double[] heading;
+
+    EnvironmentMap(WorldSpec spec, List<RobotProperties> properties) {
+        if (properties.size() != spec.robots().size()) {
+            throw new IllegalArgumentException("need properties for " + spec.robots().size() + " robots, got "
+                    + properties.size());
+        }
+        this.spec = spec;
+        this.properties = List.copyOf(properties);
+        int n = properties.size();
+        x = new double[n];
+        y = new double[n];
+        heading = new double[n];
+        for (int i = 0; i < n; i++) {
+            WorldSpec.RobotSpec r = spec.robots().get(i);
+            x[i] = r.xMm();
+            y[i] = r.yMm();
+            heading[i] = r.headingDeg();
+        }
+    }
+
+    public WorldSpec spec() {
+        return spec;
+    }
+
+    public int robotCount() {
+        return x.length;
+    }
+
+    public String name(int robot) {
+        return spec.robots().get(robot).name();
+    }
+
+    public RobotProperties properties(int robot) {
+        return properties.get(robot);
+    }
+
+    public double xMm(int robot) {
+        return x[robot];
+    }
+
+    public double yMm(int robot) {
+        return y[robot];
+    }
+
+    public double headingDeg(int robot) {
+        return heading[robot];
+    }
+
+    void setPose(int robot, double xMm, double yMm, double headingDeg) {
+        x[robot] = xMm;
+        y[robot] = yMm;
+        heading[robot] = headingDeg;
+    }
+
+    /** The robots' poses as a new immutable update, labelled with {@code step}. */
+    public PoseUpdate poses(long step) {
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone());
+    }
+
+    public GeometryWorld geometryWorld() {
+        List<String> names = new ArrayList<>();
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            names.add(r.name());
+        }
+        return new GeometryWorld(spec.arena(), spec.obstacles(), names, properties);
+    }
+
+    public WorldSnapshot snapshot(long step) {
+        return snapshot(spec, properties, poses(step));
+    }
+
+    /** A snapshot of a world whose robots are described by {@code properties}, at the given poses. */
+    public static WorldSnapshot snapshot(WorldSpec spec, List<RobotProperties> properties, PoseUpdate poses) {
+        List<String> names = new ArrayList<>();
+        List<String> types = new ArrayList<>();
+        double[] radius = new double[properties.size()];
+        for (int i = 0; i < properties.size(); i++) {
+            names.add(spec.robots().get(i).name());
+            types.add(properties.get(i).type());
+            radius[i] = properties.get(i).radiusMm();
+        }
+        return new WorldSnapshot(spec.timeStepMs(), spec.arena(), spec.obstacles(), names, types, radius, poses);
+    }
+}

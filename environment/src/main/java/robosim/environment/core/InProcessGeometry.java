@@ -1,0 +1,25 @@
+package robosim.environment.core;
+
+import java.util.List;
+import robosim.geometry.GeometryEngine;
+import robosim.geometry.StaticWorld;
+import robosim.protocol.GeometryStepRequest;
+import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.GeometryWorld;
+
+/** {@code --no-geometry} (the original's GEOMETRY_USED off): the geometry library, called directly. */
+public final class InProcessGeometry implements GeometryService {
+    private final GeometryEngine engine;
+    private final GeometryStepResponse response;
+
+    public InProcessGeometry(GeometryWorld world) {
+        this.engine = new GeometryEngine(new StaticWorld(world.arena(), world.obstacles()), List.copyOf(world.robots()));
+        this.response = engine.newResponse();
+    }
+
+    @Override
+    public GeometryStepResponse resolve(GeometryStepRequest request) {
+        engine.step(request, response);
+        return response;
+    }
+}

@@ -1,0 +1,168 @@
+package robosim.environment.core;
+
+import java.io.IOException;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import robosim.geometry.Kinematics;
+import robosim.protocol.GeometryStepRequest;
+import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+
+/**
+ * One simulated world and its step function. {@link #step} takes every robot's request for step k
+ * and runs the phases in order: gather (route COMMEVENTs, bound each ACTION by the robot's speed
+ * limits), act and collide and sense (one {@link GeometryService} call for every ACTION and SONAR
+ * request), apply (poses from the distances Geometry returns), respond. Deterministic: the same
+ * world and the same requests give the same responses, bit for bit. Not thread-safe; one caller.
+ */
+public final class SimulationCore {
+    private static final double EPS = 1e-9;
+
+    private final EnvironmentMap map;
+    private final GeometryService geometry;
+    private final MessageRouter router;
+    private final int robots;
+    private final double[] maxMoveMm;
+    private final double[] maxTurnDeg;
+    private final GeometryStepRequest geometryRequest;
+    private final StepResponse[] responses;
+    private long lastStep = -1;
+
+    public SimulationCore(WorldSpec spec, List<RobotProperties> properties, GeometryService geometry) {
+        this.map = new EnvironmentMap(spec, properties);
+        this.geometry = geometry;
+        this.robots = map.robotCount();
+        Map<String, Integer> index = new HashMap<>();
+        for (int i = 0; i < robots; i++) {
+            index.put(map.name(i), i);
+        }
+        this.router = new MessageRouter(index, robots);
+        this.maxMoveMm = new double[robots];
+        this.maxTurnDeg = new double[robots];
+        double seconds = spec.timeStepMs() / 1000.0;
+        for (int i = 0; i < robots; i++) {
+            maxMoveMm[i] = properties.get(i).maxSpeedMmPerS() * seconds;
+            maxTurnDeg[i] = properties.get(i).maxTurnDegPerS() * seconds;
+        }
+        this.geometryRequest = new GeometryStepRequest(robots);
+        this.responses = new StepResponse[robots];
+    }
+
+    /** A core that resolves geometry in-process ({@code --no-geometry}). */
+    public static SimulationCore withInProcessGeometry(WorldSpec spec, List<RobotProperties> properties) {
+        return new SimulationCore(spec, properties,
+                new InProcessGeometry(new EnvironmentMap(spec, properties).geometryWorld()));
+    }
+
+    public EnvironmentMap map() {
+        return map;
+    }
+
+    /** The last step completed, -1 before the first. */
+    public long lastStep() {
+        return lastStep;
+    }
+
+    /** Marks a robot as gone: it stays where it is, idle, and messages to it are refused. */
+    public void depart(int robot) {
+        router.depart(robot);
+    }
+
+    /**
+     * Runs step {@code k}. {@code requests[i]} is robot i's request, or null for a robot that sends
+     * none (departed): it stands still. Afterwards {@link #response(int)} holds each robot's answer.
+     *
+     * @throws ProtocolException if a request is not for step k or holds a non-finite number
+     * @throws IOException if the geometry service fails
+     */
+    public void step(long k, StepRequest[] requests) throws IOException {
+        // gather
+        geometryRequest.setStep(k);
+        for (int i = 0; i < robots; i++) {
+            StepRequest q = requests[i];
+            double move = 0;
+            double turn = 0;
+            boolean sonar = false;
+            if (q != null) {
+                if (q.step() != k) {
+                    throw new ProtocolException(map.name(i) + " sent a request for step " + q.step() + " in step " + k);
+                }
+                move = bounded(i, "move", q.moveMm(), maxMoveMm[i], "mm");
+                turn = bounded(i, "turn", q.turnDeg(), maxTurnDeg[i], "deg");
+                sonar = q.wantsSonar();
+                router.route(i, map.name(i), q.messages());
+            }
+            geometryRequest.set(i, map.xMm(i), map.yMm(i), map.headingDeg(i), turn, move, sonar);
+        }
+        // act, collide, sense: one round trip
+        GeometryStepResponse g = geometry.resolve(geometryRequest);
+        if (g.step() != k || g.count() != robots) {
+            throw new ProtocolException("geometry answered step " + g.step() + " for " + g.count()
+                    + " robots, expected step " + k + " for " + robots);
+        }
+        // apply and respond
+        int range = 0;
+        for (int i = 0; i < robots; i++) {
+            double h = Kinematics.turn(map.headingDeg(i), g.turnedDeg(i));
+            double moved = g.movedMm(i);
+            double x = map.xMm(i) + Kinematics.dx(h, moved);
+            double y = map.yMm(i) + Kinematics.dy(h, moved);
+            map.setPose(i, x, y, h);
+            double[] sonar = NO_RANGES;
+            if (geometryRequest.wantsSonar(i)) {
+                int n = map.properties(i).sonars().size();
+                if (range + n > g.rangeCount()) {
+                    throw new ProtocolException("geometry returned " + g.rangeCount() + " sonar ranges, too few");
+                }
+                sonar = new double[n];
+                for (int s = 0; s < n; s++) {
+                    sonar[s] = g.rangeMm(range++);
+                }
+            }
+            responses[i] = new StepResponse(k, moved, g.turnedDeg(i), contactName(g, i), x, y, h, sonar,
+                    router.takeInbox(i), router.takeNotices(i));
+        }
+        lastStep = k;
+    }
+
+    private static final double[] NO_RANGES = new double[0];
+
+    private double bounded(int robot, String what, double value, double max, String unit) throws ProtocolException {
+        if (!Double.isFinite(value)) {
+            throw new ProtocolException(map.name(robot) + " asked to " + what + " by " + value);
+        }
+        if (Math.abs(value) > max + EPS) {
+            router.notice(robot, what + " of " + value + " " + unit + " limited to " + max + " " + unit
+                    + " per step by the robot's speed limit");
+            return Math.copySign(max, value);
+        }
+        return value;
+    }
+
+    private String contactName(GeometryStepResponse g, int robot) {
+        int index = g.contactIndex(robot);
+        return switch (g.contactKind(robot)) {
+            case GeometryStepResponse.CONTACT_ROBOT -> map.name(index);
+            case GeometryStepResponse.CONTACT_OBSTACLE -> map.spec().obstacles().get(index).name();
+            case GeometryStepResponse.CONTACT_ARENA -> "arena";
+            default -> "";
+        };
+    }
+
+    /** Robot i's response to the last step. */
+    public StepResponse response(int robot) {
+        return responses[robot];
+    }
+
+    public long messagesDelivered() {
+        return router.delivered();
+    }
+
+    public long messagesUndeliverable() {
+        return router.undeliverable();
+    }
+}

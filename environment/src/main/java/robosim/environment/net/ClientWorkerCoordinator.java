@@ -1,0 +1,522 @@
+package robosim.environment.net;
+
+import java.io.Closeable;
+import java.io.IOException;
+import java.net.BindException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.ReentrantLock;
+import java.util.function.Function;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.environment.core.EnvironmentMap;
+import robosim.environment.core.SimulationCore;
+import robosim.environment.core.WorldSpec;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.Protocol;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * Runs one simulation over sockets: waits until every robot named in the file (and, unless
+ * geometry is in-process, a Geometry process) has connected, then steps in lock-step.
+ *
+ * <p>Threads it owns: {@code accept-robots}, {@code accept-viewers}, {@code accept-geometry} (one
+ * per listening socket); one {@code robot-worker[name]} per robot; one {@code viewer-worker[n]} per
+ * viewer; one {@code geometry-worker}. All shared state is guarded by {@link #lock}. The step
+ * itself - core, geometry round trip, viewer publication - runs on the thread of the last robot
+ * worker to arrive with its request ({@link #processMessage}).
+ */
+public final class ClientWorkerCoordinator implements Closeable {
+    private static final Logger LOG = LoggerFactory.getLogger(ClientWorkerCoordinator.class);
+
+    /**
+     * How the Environment runs.
+     *
+     * @param maxSteps steps to run before ending; 0 runs until stopped
+     */
+    public record Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort,
+            boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs) {
+    }
+
+    /** How a finished run went. */
+    public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
+            long messagesDelivered) {
+    }
+
+    private enum State { WAITING, RUNNING, ENDED }
+
+    private final WorldSpec spec;
+    private final Settings settings;
+    private final int robotCount;
+    private final List<String> robotNames;
+    private final ReentrantLock lock = new ReentrantLock();
+    private final Condition changed = lock.newCondition();
+    private final CountDownLatch endedLatch = new CountDownLatch(1);
+    private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
+    private final List<ServerSocket> servers = new ArrayList<>();
+
+    private final RobotClientWorker[] robots;
+    private final RobotProperties[] properties;
+    private final StepRequest[] requests;
+    private final boolean[] active;
+    private int registered;
+    private GeometryClientWorker geometry;
+    private State state = State.WAITING;
+    private SimulationCore core;
+    private int activeCount;
+    private int arrived;
+    private long generation;
+    private long stepsDone;
+    private long startNanos;
+    private long endNanos;
+    private String endReason = "";
+    private boolean completed;
+    private int serial;
+
+    public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
+        this.spec = spec;
+        this.settings = settings;
+        this.robotCount = spec.robots().size();
+        List<String> names = new ArrayList<>();
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            names.add(r.name());
+        }
+        this.robotNames = List.copyOf(names);
+        this.robots = new RobotClientWorker[robotCount];
+        this.properties = new RobotProperties[robotCount];
+        this.requests = new StepRequest[robotCount];
+        this.active = new boolean[robotCount];
+    }
+
+    /** Binds the three ports and starts accepting; a port in use is a {@link BindException} naming it. */
+    public void start() throws IOException {
+        ServerSocket robotServer = bind("robot", settings.robotPort());
+        ServerSocket viewerServer = bind("viewer", settings.viewerPort());
+        ServerSocket geometryServer = settings.inProcessGeometry() ? null : bind("geometry", settings.geometryPort());
+        acceptOn(robotServer, "accept-robots", s -> new RobotClientWorker(this, s, nextSerial()));
+        acceptOn(viewerServer, "accept-viewers", s -> new ViewerClientWorker(this, s, nextSerial()));
+        if (geometryServer != null) {
+            acceptOn(geometryServer, "accept-geometry", s -> new GeometryClientWorker(this, s));
+        } else {
+            lock.lock();
+            try {
+                maybeStart();
+            } finally {
+                lock.unlock();
+            }
+        }
+        LOG.info("waiting for {} robot(s){}", robotCount, settings.inProcessGeometry() ? "" : " and a Geometry process");
+    }
+
+    private synchronized int nextSerial() {
+        return ++serial;
+    }
+
+    private ServerSocket bind(String what, int port) throws IOException {
+        ServerSocket s = new ServerSocket();
+        try {
+            s.bind(new InetSocketAddress(settings.bind(), port), 1024);
+        } catch (BindException e) {
+            s.close();
+            close();
+            throw new BindException(what + " port " + port + " is already in use");
+        }
+        servers.add(s);
+        return s;
+    }
+
+    private void acceptOn(ServerSocket server, String threadName, Function<Socket, ClientWorker> factory) {
+        Thread t = new Thread(() -> {
+            while (!server.isClosed()) {
+                try {
+                    Socket s = server.accept();
+                    factory.apply(s).start();
+                } catch (IOException e) {
+                    if (!server.isClosed()) {
+                        LOG.warn("{}: accept failed: {}", threadName, e.getMessage());
+                    }
+                }
+            }
+        }, threadName);
+        t.setDaemon(true);
+        t.start();
+    }
+
+    /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */
+    public int[] ports() {
+        int[] p = new int[3];
+        p[0] = servers.get(0).getLocalPort();
+        p[1] = servers.get(1).getLocalPort();
+        p[2] = servers.size() > 2 ? servers.get(2).getLocalPort() : -1;
+        return p;
+    }
+
+    Settings settings() {
+        return settings;
+    }
+
+    WorldSpec spec() {
+        return spec;
+    }
+
+    List<String> robotNames() {
+        return robotNames;
+    }
+
+    Logger log() {
+        return LOG;
+    }
+
+    // ---- registration -------------------------------------------------------------------------
+
+    /** Registers a robot; returns null when accepted, else the reason it is refused. */
+    String register(RobotClientWorker worker, RobotHello hello) {
+        if (hello.protocolVersion() != Protocol.VERSION) {
+            return "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
+                    + Protocol.VERSION + ")";
+        }
+        int index = spec.indexOf(hello.name());
+        if (index < 0) {
+            return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
+                    + String.join(", ", robotNames) + ")";
+        }
+        String fileType = spec.robots().get(index).type();
+        if (!fileType.equals(hello.properties().type())) {
+            return "robot " + hello.name() + " is a " + fileType + " in " + spec.source() + ", but says it is a "
+                    + hello.properties().type();
+        }
+        lock.lock();
+        try {
+            if (state != State.WAITING) {
+                return "the simulation is " + (state == State.RUNNING ? "already running" : "over");
+            }
+            if (robots[index] != null) {
+                return "robot " + hello.name() + " is already connected";
+            }
+            robots[index] = worker;
+            properties[index] = hello.properties();
+            registered++;
+            LOG.info("robot {} connected ({} of {})", hello.name(), registered, robotCount);
+            maybeStart();
+            return null;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    String attachGeometry(GeometryClientWorker worker) {
+        lock.lock();
+        try {
+            if (state != State.WAITING) {
+                return "the simulation is " + (state == State.RUNNING ? "already running" : "over");
+            }
+            if (geometry != null) {
+                return "a Geometry process is already attached";
+            }
+            geometry = worker;
+            LOG.info("Geometry process attached");
+            maybeStart();
+            return null;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Under the lock: starts the run once every robot and the geometry are there. */
+    private void maybeStart() {
+        if (state != State.WAITING || registered < robotCount
+                || (!settings.inProcessGeometry() && geometry == null)) {
+            return;
+        }
+        List<RobotProperties> props = Arrays.asList(properties.clone());
+        core = settings.inProcessGeometry() ? SimulationCore.withInProcessGeometry(spec, props)
+                : new SimulationCore(spec, props, geometry);
+        if (geometry != null) {
+            try {
+                geometry.sendWorld(core.map().geometryWorld());
+            } catch (IOException e) {
+                LOG.warn("could not send the world to Geometry: {}", e.getMessage());
+                geometry = null;
+                return;
+            }
+        }
+        Arrays.fill(active, true);
+        activeCount = robotCount;
+        state = State.RUNNING;
+        startNanos = System.nanoTime();
+        LOG.info("all {} robot(s) connected: running{}", robotCount,
+                settings.maxSteps() > 0 ? " for " + settings.maxSteps() + " steps" : "");
+        changed.signalAll();
+    }
+
+    /** Blocks until the run starts (true) or ends before starting (false). */
+    boolean awaitStart() throws InterruptedException {
+        lock.lock();
+        try {
+            while (state == State.WAITING) {
+                changed.await();
+            }
+            return state == State.RUNNING;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    long firstStep() {
+        lock.lock();
+        try {
+            return stepsDone;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---- the step ------------------------------------------------------------------------------
+
+    /**
+     * Hands in robot {@code index}'s request for step k and blocks until the step is done; the last
+     * robot to arrive runs it. Returns this robot's response, or null if the simulation ended first.
+     */
+    StepResponse processMessage(int index, long k, StepRequest request) throws InterruptedException {
+        lock.lock();
+        try {
+            if (state != State.RUNNING || stepsDone != k) {
+                return null;
+            }
+            requests[index] = request;
+            arrived++;
+            if (arrived == activeCount) {
+                runStep();
+            } else {
+                long gen = generation;
+                while (gen == generation && state == State.RUNNING) {
+                    changed.await();
+                }
+            }
+            return core.lastStep() >= k ? core.response(index) : null;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Under the lock, on the releasing thread: one step, then wake every waiting worker. */
+    private void runStep() throws InterruptedException {
+        long k = stepsDone;
+        try {
+            core.step(k, requests);
+        } catch (IOException | RuntimeException e) {
+            finish("step " + k + " failed: " + e.getMessage(), false);
+            return;
+        } finally {
+            Arrays.fill(requests, null);
+            arrived = 0;
+            generation++;
+            changed.signalAll();
+        }
+        stepsDone = k + 1;
+        if (!viewers.isEmpty()) {
+            PoseUpdate update = core.map().poses(k);
+            for (ViewerClientWorker v : viewers) {
+                v.offer(update);
+            }
+        }
+        if (settings.maxSteps() > 0 && stepsDone >= settings.maxSteps()) {
+            finish("completed " + stepsDone + " steps", true);
+        }
+    }
+
+    boolean isRunning() {
+        lock.lock();
+        try {
+            return state == State.RUNNING;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** A robot worker has gone (its connection closed or failed). */
+    void leave(RobotClientWorker worker, int index, String why) {
+        lock.lock();
+        try {
+            if (robots[index] != worker) {
+                return;
+            }
+            if (state == State.WAITING) {
+                robots[index] = null;
+                properties[index] = null;
+                registered--;
+                LOG.warn("robot {} left before the start ({}); waiting for it again", robotNames.get(index), why);
+            } else if (state == State.RUNNING && active[index]) {
+                active[index] = false;
+                activeCount--;
+                core.depart(index);
+                LOG.warn("robot {} left at step {} ({}); the others go on", robotNames.get(index), stepsDone, why);
+                if (activeCount == 0) {
+                    finish("every robot has left", false);
+                } else if (arrived == activeCount) {
+                    try {
+                        runStep();
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                    }
+                }
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    void geometryExited(GeometryClientWorker worker, String why) {
+        lock.lock();
+        try {
+            if (geometry == worker && state == State.WAITING) {
+                geometry = null;
+                LOG.warn("Geometry process left before the start ({}); waiting for another", why);
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    // ---- viewers -------------------------------------------------------------------------------
+
+    /** Registers a viewer and returns the snapshot it starts from; updates follow without a gap. */
+    WorldSnapshot addViewer(ViewerClientWorker viewer) {
+        lock.lock();
+        try {
+            WorldSnapshot snapshot;
+            if (core != null) {
+                snapshot = core.map().snapshot(stepsDone - 1);
+            } else {
+                List<RobotProperties> props = new ArrayList<>();
+                double[] x = new double[robotCount];
+                double[] y = new double[robotCount];
+                double[] h = new double[robotCount];
+                for (int i = 0; i < robotCount; i++) {
+                    WorldSpec.RobotSpec r = spec.robots().get(i);
+                    props.add(properties[i] != null ? properties[i] : RobotModels.byName(r.type()));
+                    x[i] = r.xMm();
+                    y[i] = r.yMm();
+                    h[i] = r.headingDeg();
+                }
+                snapshot = EnvironmentMap.snapshot(spec, props, new PoseUpdate(-1, x, y, h));
+            }
+            viewers.add(viewer);
+            if (state == State.ENDED) {
+                viewer.end(endMessage());
+            }
+            LOG.info("{} connected ({} viewer(s))", viewer.name(), viewers.size());
+            return snapshot;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    void removeViewer(ViewerClientWorker viewer, String why) {
+        if (viewers.remove(viewer)) {
+            LOG.info("{} disconnected: {}", viewer.name(), why);
+        }
+    }
+
+    // ---- the end -------------------------------------------------------------------------------
+
+    /** Ends the simulation (idempotent): robots, viewers and Geometry are told why. */
+    public void stop(String reason) {
+        lock.lock();
+        try {
+            finish(reason, false);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    private void finish(String reason, boolean asPlanned) {
+        if (state == State.ENDED) {
+            return;
+        }
+        state = State.ENDED;
+        endReason = reason;
+        completed = asPlanned;
+        endNanos = System.nanoTime();
+        changed.signalAll();
+        SimulationEnd end = endMessage();
+        for (ViewerClientWorker v : viewers) {
+            v.end(end);
+        }
+        if (geometry != null) {
+            geometry.sendEnd(end);
+        }
+        closeServers();
+        LOG.info("simulation over after {} steps: {}", stepsDone, reason);
+        endedLatch.countDown();
+    }
+
+    SimulationEnd endMessage() {
+        lock.lock();
+        try {
+            return new SimulationEnd(stepsDone - 1, endReason);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Blocks until the simulation is over. */
+    public void awaitEnd() throws InterruptedException {
+        endedLatch.await();
+    }
+
+    public boolean awaitEnd(long timeout, TimeUnit unit) throws InterruptedException {
+        return endedLatch.await(timeout, unit);
+    }
+
+    public Summary summary() {
+        lock.lock();
+        try {
+            double wall = startNanos == 0 ? 0 : ((endNanos == 0 ? System.nanoTime() : endNanos) - startNanos) / 1e9;
+            return new Summary(stepsDone, robotCount, wall, endReason, completed,
+                    core == null ? 0 : core.messagesDelivered());
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The most updates any connected viewer has had waiting (for tests of the bounded backlog). */
+    public int maxViewerBacklog() {
+        int max = 0;
+        for (ViewerClientWorker v : viewers) {
+            max = Math.max(max, v.maxPending());
+        }
+        return max;
+    }
+
+    private void closeServers() {
+        for (ServerSocket s : servers) {
+            try {
+                s.close();
+            } catch (IOException ignored) {
+                // closing anyway
+            }
+        }
+    }
+
+    @Override
+    public void close() {
+        stop("the Environment was shut down");
+        closeServers();
+    }
+}

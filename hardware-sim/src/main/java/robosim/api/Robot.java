@@ -1,0 +1,64 @@
+package robosim.api;
+
+import java.util.List;
+
+/**
+ * A robot as its control code sees it. Blocking calls ({@link #move}, {@link #turn}, {@link #sleep},
+ * {@link #waitForMessage}) return when the robot has done them; the others answer at once from the
+ * robot's newest readings.
+ */
+public interface Robot {
+    /** This robot's name. */
+    String name();
+
+    /** The names of every robot in the world, this one included. */
+    List<String> robotNames();
+
+    /**
+     * Drives {@code mm} along the heading (negative: backwards) at the set velocity; returns the
+     * distance actually covered, which is shorter when the robot touched something.
+     */
+    double move(double mm) throws InterruptedException;
+
+    /** Turns in place by {@code deg} (positive: counter-clockwise); returns the angle turned. */
+    double turn(double deg) throws InterruptedException;
+
+    /** Sets the speed for {@link #move}, mm/s (limited to the robot's maximum). */
+    void setVelocity(double mmPerS);
+
+    double velocity();
+
+    /** Sets the rate for {@link #turn}, deg/s (limited to the robot's maximum). */
+    void setRotVelocity(double degPerS);
+
+    double rotVelocity();
+
+    /** Waits {@code ms} of robot time, standing still. */
+    void sleep(long ms) throws InterruptedException;
+
+    /** The newest sonar ranges, mm, one per transducer in {@link #sonarAnglesDeg()} order. */
+    double[] sonarRanges();
+
+    /** Direction of each sonar, degrees from the heading. */
+    double[] sonarAnglesDeg();
+
+    /** Odometry: position, mm. */
+    double xMm();
+
+    double yMm();
+
+    /** Odometry: heading, degrees in [0, 360). */
+    double headingDeg();
+
+    /** What the robot touched during its last move or turn, or "" if nothing. */
+    String lastContact();
+
+    /** Sends a text message to the robot named {@code to}; it goes out with the robot's next step. */
+    void send(String to, String text);
+
+    /** The oldest message not yet received, or null if there is none. */
+    Message receive();
+
+    /** Waits up to {@code timeoutMs} of robot time for a message; null if none came. */
+    Message waitForMessage(long timeoutMs) throws InterruptedException;
+}

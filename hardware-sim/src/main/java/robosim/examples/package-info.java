@@ -1,0 +1,2 @@
+/** Example control programs, written only against {@link robosim.api}. */
+package robosim.examples;

@@ -1,0 +1,40 @@
+package robosim.hardware;
+
+import java.io.IOException;
+import java.net.Socket;
+import robosim.api.RobotControl;
+import robosim.protocol.Connector;
+
+/** Starts one robot: finds its control class and type, connects, runs until the simulation ends. */
+final class RobotLauncher {
+    private RobotLauncher() {
+    }
+
+    /** Instantiates a control class by name; a bad name is an IllegalArgumentException saying why. */
+    static RobotControl control(String className) {
+        try {
+            return Class.forName(className).asSubclass(RobotControl.class).getDeclaredConstructor().newInstance();
+        } catch (ClassNotFoundException e) {
+            throw new IllegalArgumentException("control class " + className + " is not on the class path");
+        } catch (ClassCastException e) {
+            throw new IllegalArgumentException("control class " + className + " does not implement "
+                    + RobotControl.class.getName());
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalArgumentException("control class " + className
+                    + " needs a public no-argument constructor");
+        }
+    }
+
+    /** Connects and runs; returns the Environment's reason for the end. */
+    static String run(String name, RobotType type, RobotControl control, String host, int port, long timeoutMs,
+            int resetEvery) throws IOException, InterruptedException {
+        Socket socket = Connector.connect(host, port, timeoutMs);
+        if (socket == null) {
+            throw new IOException("cannot connect to the Environment at " + host + ":" + port + " within "
+                    + timeoutMs / 1000 + " s");
+        }
+        HardwareSimulator sim = new HardwareSimulator(name, type);
+        sim.connect(socket, resetEvery);
+        return sim.run(control);
+    }
+}

@@ -1,0 +1,77 @@
+package robosim.hardware;
+
+import java.util.concurrent.Callable;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.api.RobotControl;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+import robosim.protocol.ProtocolException;
+
+/** {@code scripts/robot.sh CONTROL_CLASS NAME HOST PORT}: one robot process. */
+@Command(name = "robot.sh", mixinStandardHelpOptions = true,
+        description = "Runs one robot's control code on a Hardware Simulator connected to an Environment.")
+public final class RobotMain implements Callable<Integer> {
+    private static final Logger LOG = LoggerFactory.getLogger(RobotMain.class);
+
+    @Parameters(index = "0", paramLabel = "CONTROL_CLASS",
+            description = "Control class, e.g. robosim.examples.BackAndForth.")
+    String controlClass;
+
+    @Parameters(index = "1", paramLabel = "NAME", description = "The robot's name in the environment file.")
+    String name;
+
+    @Parameters(index = "2", paramLabel = "HOST", defaultValue = "localhost",
+            description = "Environment host (default: ${DEFAULT-VALUE}).")
+    String host;
+
+    @Parameters(index = "3", paramLabel = "PORT", defaultValue = "" + Protocol.DEFAULT_ROBOT_PORT,
+            description = "Environment robot port (default: ${DEFAULT-VALUE}).")
+    int port;
+
+    @Option(names = "--type", defaultValue = "ArRobot",
+            description = "Robot type: ArRobot, Scout or a RobotType class name (default: ${DEFAULT-VALUE}).")
+    String type;
+
+    @Option(names = "--connect-timeout-s", defaultValue = "30",
+            description = "Keep trying to connect for this long (default: ${DEFAULT-VALUE}).")
+    int connectTimeoutS;
+
+    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
+            description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
+    int resetEvery;
+
+    @Override
+    public Integer call() throws Exception {
+        RobotControl control;
+        RobotType robotType;
+        try {
+            control = RobotLauncher.control(controlClass);
+            robotType = RobotType.byName(type);
+        } catch (IllegalArgumentException e) {
+            System.err.println("robot " + name + ": " + e.getMessage());
+            return 2;
+        }
+        try {
+            String reason = RobotLauncher.run(name, robotType, control, host, port, connectTimeoutS * 1000L, resetEvery);
+            LOG.info("robot {}: simulation over: {}", name, reason);
+            return 0;
+        } catch (ProtocolException e) {
+            System.err.println("robot " + name + ": " + e.getMessage());
+            return 1;
+        }
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new RobotMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("robot: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}

@@ -1,0 +1,153 @@
+package robosim.hardware;
+
+import java.util.List;
+import robosim.api.Message;
+import robosim.api.Robot;
+import robosim.protocol.CommEvent;
+import robosim.protocol.SonarSpec;
+
+/** The {@link Robot} the control code gets: blocking calls become {@link Command}s on the link. */
+final class SimulatedRobot implements Robot {
+    private final HardwareSimulator sim;
+    private final List<String> robotNames;
+    private final long stepMs;
+    private final double[] sonarAngles;
+
+    SimulatedRobot(HardwareSimulator sim, List<String> robotNames, long stepMs) {
+        this.sim = sim;
+        this.robotNames = List.copyOf(robotNames);
+        this.stepMs = stepMs;
+        List<SonarSpec> sonars = sim.type.properties().sonars();
+        this.sonarAngles = new double[sonars.size()];
+        for (int i = 0; i < sonarAngles.length; i++) {
+            sonarAngles[i] = sonars.get(i).angleDeg();
+        }
+    }
+
+    @Override
+    public String name() {
+        return sim.name;
+    }
+
+    @Override
+    public List<String> robotNames() {
+        return robotNames;
+    }
+
+    @Override
+    public double move(double mm) throws InterruptedException {
+        checkFinite("move distance", mm);
+        if (mm == 0) {
+            return 0;
+        }
+        Command c = Command.move(mm, sim.velocityMmPerS);
+        sim.link.execute(c);
+        return c.result;
+    }
+
+    @Override
+    public double turn(double deg) throws InterruptedException {
+        checkFinite("turn angle", deg);
+        if (deg == 0) {
+            return 0;
+        }
+        Command c = Command.turn(deg, sim.rotVelocityDegPerS);
+        sim.link.execute(c);
+        return c.result;
+    }
+
+    private static void checkFinite(String what, double v) {
+        if (!Double.isFinite(v)) {
+            throw new IllegalArgumentException(what + " must be a finite number, got " + v);
+        }
+    }
+
+    @Override
+    public void setVelocity(double mmPerS) {
+        if (!(mmPerS > 0)) {
+            throw new IllegalArgumentException("velocity must be > 0 mm/s, got " + mmPerS);
+        }
+        sim.velocityMmPerS = Math.min(mmPerS, sim.type.properties().maxSpeedMmPerS());
+    }
+
+    @Override
+    public double velocity() {
+        return sim.velocityMmPerS;
+    }
+
+    @Override
+    public void setRotVelocity(double degPerS) {
+        if (!(degPerS > 0)) {
+            throw new IllegalArgumentException("rotational velocity must be > 0 deg/s, got " + degPerS);
+        }
+        sim.rotVelocityDegPerS = Math.min(degPerS, sim.type.properties().maxTurnDegPerS());
+    }
+
+    @Override
+    public double rotVelocity() {
+        return sim.rotVelocityDegPerS;
+    }
+
+    @Override
+    public void sleep(long ms) throws InterruptedException {
+        sim.link.execute(Command.idle(stepsFor(ms), false));
+    }
+
+    private long stepsFor(long ms) {
+        if (ms < 0) {
+            throw new IllegalArgumentException("time must be >= 0 ms, got " + ms);
+        }
+        return Math.max(1, (ms + stepMs - 1) / stepMs);
+    }
+
+    @Override
+    public double[] sonarRanges() {
+        return sim.sonarMm.clone();
+    }
+
+    @Override
+    public double[] sonarAnglesDeg() {
+        return sonarAngles.clone();
+    }
+
+    @Override
+    public double xMm() {
+        return sim.xMm;
+    }
+
+    @Override
+    public double yMm() {
+        return sim.yMm;
+    }
+
+    @Override
+    public double headingDeg() {
+        return sim.headingDeg;
+    }
+
+    @Override
+    public String lastContact() {
+        return sim.lastContact;
+    }
+
+    @Override
+    public void send(String to, String text) {
+        if (to == null || text == null) {
+            throw new IllegalArgumentException("recipient and text must not be null");
+        }
+        sim.outbox.add(new CommEvent(sim.name, to, text));
+    }
+
+    @Override
+    public Message receive() {
+        return sim.inbox.pollFirst();
+    }
+
+    @Override
+    public Message waitForMessage(long timeoutMs) throws InterruptedException {
+        if (sim.inbox.isEmpty()) {
+            sim.link.execute(Command.idle(stepsFor(timeoutMs), true));
+        }
+        return sim.inbox.pollFirst();
+    }
+}
