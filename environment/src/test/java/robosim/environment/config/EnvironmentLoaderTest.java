@@ -1,0 +1,133 @@
+package robosim.environment.config;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.environment.core.WorldSpec;
+
+/** Environment files: a good one loads with units converted; each bad one gets one line naming what is wrong. */
+class EnvironmentLoaderTest {
+    @TempDir
+    Path dir;
+
+    private Path write(String xml) throws IOException {
+        Path f = dir.resolve("env.xml");
+        Files.writeString(f, xml);
+        return f;
+    }
+
+    private static String env(String attrs, String body) {
+        return "<environment " + attrs + "><arena width=\"10\" height=\"5\"/>" + body + "</environment>";
+    }
+
+    private static final String ROBOT = "<robots><robot name=\"r1\" type=\"ArRobot\" control=\"x.Y\" x=\"1\" y=\"1\" "
+            + "heading=\"90\"/></robots>";
+
+    private String failure(String xml) throws IOException {
+        Path f = write(xml);
+        EnvironmentFileException e = assertThrows(EnvironmentFileException.class, () -> new EnvironmentLoader().load(f));
+        assertFalse(e.getMessage().contains("\n"), "one line: " + e.getMessage());
+        assertTrue(e.getMessage().startsWith(f.toString()), "names the file: " + e.getMessage());
+        return e.getMessage();
+    }
+
+    @Test
+    void loadsTheBundledEnvironments() throws Exception {
+        WorldSpec test = new EnvironmentLoader().load(Path.of("../test-envs/test.xml"));
+        assertEquals(500, test.timeStepMs());
+        assertEquals(2, test.robots().size());
+        assertEquals("robot1", test.robots().get(0).name());
+        assertEquals(1500, test.robots().get(0).xMm());
+        assertEquals(13_000, test.arena().maxXMm());
+        assertEquals(2, test.obstacles().size());
+        assertEquals(10, new EnvironmentLoader().load(Path.of("../test-envs/paper-benchmark.xml")).robots().size());
+    }
+
+    @Test
+    void convertsMetresToMillimetresAndKeepsObstacleOrder() throws Exception {
+        WorldSpec s = new EnvironmentLoader().load(write(env("timeStepMs=\"100\"",
+                "<obstacles><polygon name=\"p\" points=\"5,1 6,1 5.5,2\"/><rectangle name=\"r\" x=\"7\" y=\"3\" "
+                        + "width=\"1\" height=\"0.5\"/></obstacles>" + ROBOT)));
+        assertEquals(100, s.timeStepMs());
+        assertEquals("p", s.obstacles().get(0).name());
+        assertEquals(6000, s.obstacles().get(0).x(1));
+        assertEquals("r", s.obstacles().get(1).name());
+        assertEquals(3500, s.obstacles().get(1).y(2));
+        assertEquals(90, s.robots().get(0).headingDeg());
+    }
+
+    @Test
+    void aMissingFile() {
+        Path f = dir.resolve("nope.xml");
+        EnvironmentFileException e = assertThrows(EnvironmentFileException.class, () -> new EnvironmentLoader().load(f));
+        assertEquals(f + ": file not found", e.getMessage());
+    }
+
+    @Test
+    void malformedXmlNamesTheLine() throws Exception {
+        String m = failure("<environment timeStepMs=\"500\">\n<arena width=\"1\" height=\"1\">\n</environment>");
+        assertTrue(m.contains("malformed XML"), m);
+        assertTrue(m.matches(".*env\\.xml:3:\\d+: .*"), m);
+    }
+
+    @Test
+    void anUnknownRobotType() throws Exception {
+        String m = failure(env("timeStepMs=\"500\"",
+                "<robots><robot name=\"r1\" type=\"Roomba\" x=\"1\" y=\"1\"/></robots>"));
+        assertTrue(m.endsWith("<robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: [ArRobot, Scout])"), m);
+    }
+
+    @Test
+    void aNegativeTimeStep() throws Exception {
+        String m = failure(env("timeStepMs=\"-5\"", ROBOT));
+        assertTrue(m.endsWith("<environment> timeStepMs must be > 0, got -5"), m);
+    }
+
+    @Test
+    void aTimeStepThatIsNotANumber() throws Exception {
+        String m = failure(env("timeStepMs=\"fast\"", ROBOT));
+        assertTrue(m.contains("timeStepMs") && m.contains("'fast'"), m);
+    }
+
+    @Test
+    void anUnknownAttribute() throws Exception {
+        String m = failure(env("timeStepMs=\"500\" colour=\"red\"", ROBOT));
+        assertTrue(m.contains("unknown element or attribute 'colour'"), m);
+    }
+
+    @Test
+    void duplicateRobotNames() throws Exception {
+        String m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\"/>"
+                + "<robot name=\"r1\" type=\"ArRobot\" x=\"3\" y=\"1\"/></robots>"));
+        assertTrue(m.endsWith("<robot name=\"r1\"> the name is used twice"), m);
+    }
+
+    @Test
+    void aRobotOverlappingAnObstacleOrOutsideTheArena() throws Exception {
+        String m = failure(env("timeStepMs=\"500\"", "<obstacles><rectangle name=\"wall\" x=\"1.1\" y=\"0\" width=\"1\" "
+                + "height=\"5\"/></obstacles>" + ROBOT));
+        assertTrue(m.endsWith("overlaps obstacle \"wall\""), m);
+        m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"0.1\" y=\"1\"/></robots>"));
+        assertTrue(m.contains("does not fit inside the arena"), m);
+    }
+
+    @Test
+    void aSelfCrossingPolygon() throws Exception {
+        String m = failure(env("timeStepMs=\"500\"",
+                "<obstacles><polygon name=\"bow\" points=\"5,1 6,2 6,1 5,2\"/></obstacles>" + ROBOT));
+        assertTrue(m.endsWith("<polygon name=\"bow\"> points do not form a simple polygon (edges cross or repeat)"), m);
+    }
+
+    @Test
+    void missingArenaAndNoRobots() throws Exception {
+        assertTrue(failure("<environment timeStepMs=\"500\">" + ROBOT + "</environment>").contains("needs an <arena"));
+        assertTrue(failure(env("timeStepMs=\"500\"", "")).contains("must name at least one <robot>"));
+    }
+}

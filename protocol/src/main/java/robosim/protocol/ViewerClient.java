@@ -1,0 +1,108 @@
+package robosim.protocol;
+
+import java.io.Closeable;
+import java.io.EOFException;
+import java.io.Externalizable;
+import java.io.IOException;
+import java.net.Socket;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * A headless viewer: connects to an Environment's viewer port, receives the snapshot, then pose
+ * updates until the simulation ends, handing each to a {@link Listener} on its own thread
+ * ({@code viewer-client}). Used by the headless runner (pose log, progress) and by tests.
+ */
+public final class ViewerClient implements Closeable {
+    /** Receives what the Environment sends, on the viewer-client thread, in order. */
+    public interface Listener {
+        void snapshot(WorldSnapshot snapshot);
+
+        void update(PoseUpdate update);
+
+        default void end(SimulationEnd end) {
+        }
+    }
+
+    private final ObjectConnection connection;
+    private final CountDownLatch done = new CountDownLatch(1);
+    private volatile SimulationEnd end;
+    private volatile IOException failure;
+
+    private ViewerClient(ObjectConnection connection) {
+        this.connection = connection;
+    }
+
+    /**
+     * Connects and says hello.
+     *
+     * @param everyStep true for a recording viewer that must see every step
+     */
+    public static ViewerClient connect(String host, int port, boolean everyStep, long timeoutMs)
+            throws IOException, InterruptedException {
+        Socket s = Connector.connect(host, port, timeoutMs);
+        if (s == null) {
+            throw new IOException("cannot connect to the viewer port " + host + ":" + port);
+        }
+        ObjectConnection c = new ObjectConnection(s, ObjectConnection.DEFAULT_RESET_EVERY);
+        c.write(new ViewerHello(everyStep));
+        c.flush();
+        return new ViewerClient(c);
+    }
+
+    /** Starts the reading thread. */
+    public void start(Listener listener) {
+        Thread t = new Thread(() -> read(listener), "viewer-client");
+        t.setDaemon(true);
+        t.start();
+    }
+
+    private void read(Listener listener) {
+        try (connection) {
+            Externalizable first = connection.read(Externalizable.class);
+            if (first instanceof SimulationEnd e) {
+                end = e;
+                listener.end(e);
+                return;
+            }
+            if (!(first instanceof WorldSnapshot snapshot)) {
+                throw new ProtocolException("expected a WorldSnapshot, got a " + first.getClass().getSimpleName());
+            }
+            listener.snapshot(snapshot);
+            while (true) {
+                Externalizable m = connection.read(Externalizable.class);
+                if (m instanceof PoseUpdate u) {
+                    listener.update(u);
+                } else if (m instanceof SimulationEnd e) {
+                    end = e;
+                    listener.end(e);
+                    return;
+                } else {
+                    throw new ProtocolException("expected a PoseUpdate, got a " + m.getClass().getSimpleName());
+                }
+            }
+        } catch (EOFException e) {
+            failure = new EOFException("the Environment closed the viewer connection before the end");
+        } catch (IOException e) {
+            failure = e;
+        } finally {
+            done.countDown();
+        }
+    }
+
+    /** Waits for the end of the simulation; returns it, or throws what broke the connection. */
+    public SimulationEnd awaitEnd(long timeout, TimeUnit unit) throws IOException, InterruptedException {
+        if (!done.await(timeout, unit)) {
+            throw new IOException("no end of simulation within " + timeout + " " + unit);
+        }
+        if (failure != null) {
+            throw failure;
+        }
+        return end;
+    }
+
+    @Override
+    public void close() {
+        connection.close();
+    }
+}

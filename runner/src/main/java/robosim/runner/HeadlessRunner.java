@@ -1,0 +1,239 @@
+package robosim.runner;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import robosim.environment.config.EnvironmentFileException;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.WorldSpec;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * {@code scripts/headless.sh --env FILE --steps N}: runs a whole simulation with every part as its
+ * own OS process and prints, as its last line,
+ * {@code steps=N robots=R wall_s=... steps_per_s=... robot_steps_per_s=...}.
+ */
+@Command(name = "headless.sh", mixinStandardHelpOptions = true,
+        description = "Starts the Environment, the Geometry process and every robot named in the environment file "
+                + "as separate processes, runs the given number of steps, stops them all and prints a summary.")
+public final class HeadlessRunner implements Callable<Integer> {
+    @Option(names = "--env", required = true, paramLabel = "FILE", description = "The environment file.")
+    Path env;
+
+    @Option(names = "--steps", defaultValue = "1000", description = "Steps to run (default: ${DEFAULT-VALUE}).")
+    long steps;
+
+    @Option(names = "--ports", paramLabel = "ROBOT,VIEWER,GEOMETRY", split = ",",
+            description = "Environment ports (default: free ports picked by the system).")
+    List<Integer> ports;
+
+    @Option(names = "--robots-in-one-process",
+            description = "Run every robot in one JVM, each with its own socket and threads.")
+    boolean robotsInOneProcess;
+
+    @Option(names = "--no-geometry", description = "Do collision and sonar inside the Environment.")
+    boolean noGeometry;
+
+    @Option(names = "--pose-log", paramLabel = "FILE.csv",
+            description = "Write every robot's pose after every step: step,robot,x_m,y_m,heading_deg.")
+    Path poseLog;
+
+    @Option(names = "--progress", description = "Print the step and steps/s once a second.")
+    boolean progress;
+
+    @Option(names = "--jvm-opt", paramLabel = "OPTION", description = "An option for every child JVM; repeatable.")
+    List<String> jvmOptions = new ArrayList<>();
+
+    @Option(names = "--timeout-s", defaultValue = "0",
+            description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
+    long timeoutS;
+
+    @Override
+    public Integer call() throws Exception {
+        WorldSpec spec;
+        try {
+            spec = new EnvironmentLoader().load(env);
+        } catch (EnvironmentFileException e) {
+            System.err.println(e.getMessage());
+            return 2;
+        }
+        if (steps <= 0) {
+            System.err.println("headless: --steps must be > 0, got " + steps);
+            return 2;
+        }
+        if (ports != null && ports.size() != 3) {
+            System.err.println("headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports);
+            return 2;
+        }
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            if (r.control().isBlank()) {
+                System.err.println(env + ": <robot name=\"" + r.name() + "\"> needs a control class (control=\"...\") "
+                        + "for the headless runner");
+                return 2;
+            }
+        }
+        try (ChildProcesses children = new ChildProcesses(jvmOptions)) {
+            return run(spec, children);
+        }
+    }
+
+    private int run(WorldSpec spec, ChildProcesses children) throws Exception {
+        CompletableFuture<Map<String, String>> listening = new CompletableFuture<>();
+        CompletableFuture<Map<String, String>> summary = new CompletableFuture<>();
+        List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
+                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2)));
+        if (noGeometry) {
+            envArgs.add("--no-geometry");
+        }
+        Process environment = children.start("environment", "robosim.environment.EnvironmentMain", envArgs, line -> {
+            if (line.startsWith("listening ")) {
+                listening.complete(fields(line));
+            } else if (line.startsWith("summary ")) {
+                summary.complete(fields(line));
+            } else {
+                System.out.println(line);
+            }
+        });
+        environment.onExit().thenRun(() -> listening.complete(Map.of()));
+        Map<String, String> bound = listening.get(60, TimeUnit.SECONDS);
+        if (bound.isEmpty()) {
+            System.err.println("headless: the Environment exited with code " + environment.waitFor()
+                    + " before listening");
+            return environment.exitValue() == 2 ? 2 : 1;
+        }
+        String robotPort = bound.get("robots");
+        ViewerClient viewer = watch(Integer.parseInt(bound.get("viewers")));
+        if (!noGeometry) {
+            children.start("geometry", "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
+                    null);
+        }
+        startRobots(spec, children, robotPort);
+        long limit = timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2;
+        if (!environment.waitFor(limit, TimeUnit.SECONDS)) {
+            System.err.println("headless: no end after " + timeoutS + " s; stopping everything");
+            return 1;
+        }
+        int code = environment.exitValue();
+        Map<String, String> s;
+        try {
+            s = summary.get(10, TimeUnit.SECONDS);
+        } catch (TimeoutException e) {
+            System.err.println("headless: the Environment exited with code " + code + " without a summary");
+            return 1;
+        }
+        if (viewer != null) {
+            viewer.awaitEnd(60, TimeUnit.SECONDS);
+        }
+        if (poseLogWriter != null) {
+            poseLogWriter.close();
+        }
+        List<String> failed = children.awaitAll(30);
+        if (!failed.isEmpty()) {
+            System.err.println("headless: processes that did not end cleanly: " + failed);
+            code = code == 0 ? 1 : code;
+        }
+        System.out.println(String.format(Locale.ROOT,
+                "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s geometry=%s robots_in=%s",
+                s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
+                s.get("messages"), noGeometry ? "in-process" : "process",
+                robotsInOneProcess ? "one-process" : "processes"));
+        return code;
+    }
+
+    private PoseLog poseLogWriter;
+
+    private ViewerClient watch(int viewerPort) throws IOException, InterruptedException {
+        if (poseLog == null && !progress) {
+            return null;
+        }
+        poseLogWriter = poseLog == null ? null : new PoseLog(poseLog);
+        ViewerClient viewer = ViewerClient.connect("127.0.0.1", viewerPort, poseLog != null, 10_000);
+        viewer.start(new ViewerClient.Listener() {
+            private long lastPrint = System.nanoTime();
+            private long lastStep = -1;
+
+            @Override
+            public void snapshot(WorldSnapshot snapshot) {
+                if (poseLogWriter != null) {
+                    poseLogWriter.snapshot(snapshot);
+                }
+            }
+
+            @Override
+            public void update(PoseUpdate u) {
+                if (poseLogWriter != null) {
+                    poseLogWriter.update(u);
+                }
+                long now = System.nanoTime();
+                if (progress && now - lastPrint >= 1_000_000_000L) {
+                    double rate = (u.step() - lastStep) / ((now - lastPrint) / 1e9);
+                    System.out.printf(Locale.ROOT, "step %d/%d  %.0f steps/s%n", u.step() + 1, steps, rate);
+                    lastPrint = now;
+                    lastStep = u.step();
+                }
+            }
+
+            @Override
+            public void end(SimulationEnd end) {
+                if (progress) {
+                    System.out.println("simulation over: " + end.reason());
+                }
+            }
+        });
+        return viewer;
+    }
+
+    private void startRobots(WorldSpec spec, ChildProcesses children, String robotPort) throws IOException {
+        if (robotsInOneProcess) {
+            List<String> args = new ArrayList<>(List.of("127.0.0.1", robotPort));
+            for (WorldSpec.RobotSpec r : spec.robots()) {
+                args.add("--robot");
+                args.add(r.name() + ":" + r.type() + ":" + r.control());
+            }
+            children.start("robots", "robosim.hardware.MultiRobotMain", args, null);
+        } else {
+            for (WorldSpec.RobotSpec r : spec.robots()) {
+                children.start("robot " + r.name(), "robosim.hardware.RobotMain",
+                        List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type", r.type()), null);
+            }
+        }
+    }
+
+    private String port(int i) {
+        return ports == null ? "0" : Integer.toString(ports.get(i));
+    }
+
+    static Map<String, String> fields(String line) {
+        Map<String, String> m = new HashMap<>();
+        for (String part : line.trim().split("\\s+")) {
+            int eq = part.indexOf('=');
+            if (eq > 0) {
+                m.put(part.substring(0, eq), part.substring(eq + 1));
+            }
+        }
+        return m;
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new HeadlessRunner());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("headless: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}

@@ -1,0 +1,44 @@
+package robosim.runner;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.WorldSnapshot;
+
+/** Writes {@code step,robot,x_m,y_m,heading_deg}, one row per robot per step, from a recording viewer. */
+final class PoseLog implements AutoCloseable {
+    private final BufferedWriter out;
+    private List<String> names = List.of();
+
+    PoseLog(Path file) throws IOException {
+        out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
+        out.write("step,robot,x_m,y_m,heading_deg\n");
+    }
+
+    void snapshot(WorldSnapshot s) {
+        names = s.robotNames();
+    }
+
+    void update(PoseUpdate u) {
+        try {
+            for (int i = 0; i < u.count(); i++) {
+                out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s%n", u.step(), names.get(i),
+                        Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
+                        Double.toString(u.headingDeg(i))));
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        out.close();
+    }
+}
