@@ -1,0 +1,106 @@
+package robosim.environment.core;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.protocol.Arena;
+import robosim.protocol.CommEvent;
+import robosim.protocol.ObstacleShape;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+
+/** The core without sockets: routing, limits, contact names, determinism. */
+class SimulationCoreTest {
+    private static final WorldSpec SPEC = new WorldSpec("mem", "t", 500, 1, new Arena(0, 0, 10_000, 10_000),
+            List.of(ObstacleShape.rectangle("wall", 6000, 0, 100, 10_000)),
+            List.of(new WorldSpec.RobotSpec("a", "ArRobot", "", 1000, 1000, 0),
+                    new WorldSpec.RobotSpec("b", "ArRobot", "", 1000, 3000, 0),
+                    new WorldSpec.RobotSpec("c", "Scout", "", 5000, 5000, 0)));
+    private static final List<RobotProperties> PROPS = List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT,
+            RobotModels.SCOUT);
+
+    private static StepRequest req(long k, double move, double turn, CommEvent... messages) {
+        return new StepRequest(k, move, turn, true, List.of(messages));
+    }
+
+    @Test
+    void messagesAreDeliveredInTheSameStepInSenderAndSendOrder() throws Exception {
+        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        core.step(0, new StepRequest[] {
+            req(0, 0, 0, new CommEvent("", "c", "a1"), new CommEvent("", "c", "a2")),
+            req(0, 0, 0, new CommEvent("", "c", "b1"), new CommEvent("", "nobody", "x")),
+            req(0, 0, 0)});
+        List<CommEvent> inbox = core.response(2).inbox();
+        assertEquals(List.of("a1", "a2", "b1"), inbox.stream().map(CommEvent::payload).toList());
+        assertEquals("a", inbox.get(0).from());
+        assertEquals(List.of("message to nobody not delivered: no robot of that name"), core.response(1).notices());
+        assertEquals(3, core.messagesDelivered());
+        assertEquals(1, core.messagesUndeliverable());
+        core.step(1, new StepRequest[] {req(1, 0, 0), req(1, 0, 0), req(1, 0, 0)});
+        assertTrue(core.response(2).inbox().isEmpty(), "delivered exactly once");
+    }
+
+    @Test
+    void movesAreAppliedWithTheSpeedLimitAndContactsAreNamed() throws Exception {
+        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        // ArRobot max 1000 mm/s: 500 mm per 500 ms step
+        core.step(0, new StepRequest[] {req(0, 800, 0), req(0, 250, 90), req(0, 500, 0)});
+        StepResponse a = core.response(0);
+        assertEquals(500, a.movedMm());
+        assertEquals(1500, a.xMm());
+        assertTrue(a.notices().get(0).startsWith("move of 800.0 mm limited to 500.0 mm"), a.notices().toString());
+        StepResponse b = core.response(1);
+        assertEquals(90, b.headingDeg());
+        assertEquals(3250, b.yMm(), 1e-9);
+        assertEquals(8, a.sonarMm().length);
+        assertEquals(16, core.response(2).sonarMm().length);
+        // robot c is 5000 - 190 = 4810 from... its rim at 5190, the wall face at 6000: drive into it
+        core.step(1, new StepRequest[] {req(1, 0, 0), req(1, 0, 0), req(1, 500, 0)});
+        core.step(2, new StepRequest[] {req(2, 0, 0), req(2, 0, 0), req(2, 500, 0)});
+        StepResponse c = core.response(2);
+        assertEquals("wall", c.contact());
+        assertEquals(6000 - 190, c.xMm(), 1e-5);
+    }
+
+    @Test
+    void aRequestForTheWrongStepOrWithNaNIsAProtocolError() {
+        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        assertThrows(ProtocolException.class, () -> core.step(0, new StepRequest[] {req(5, 0, 0), null, null}));
+        assertThrows(ProtocolException.class,
+                () -> core.step(0, new StepRequest[] {req(0, Double.NaN, 0), null, null}));
+    }
+
+    @Test
+    void sameRequestsGiveTheSamePosesBitForBit() throws Exception {
+        double[][] first = run();
+        double[][] second = run();
+        for (int i = 0; i < first.length; i++) {
+            assertArrayEquals(first[i], second[i]);
+        }
+    }
+
+    private static double[][] run() throws Exception {
+        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        java.util.Random random = new java.util.Random(7);
+        for (long k = 0; k < 500; k++) {
+            StepRequest[] q = new StepRequest[3];
+            for (int i = 0; i < 3; i++) {
+                q[i] = req(k, random.nextDouble() * 500 - 100, random.nextDouble() * 60 - 30);
+            }
+            core.step(k, q);
+        }
+        double[][] poses = new double[3][];
+        for (int i = 0; i < 3; i++) {
+            StepResponse r = core.response(i);
+            poses[i] = new double[] {r.xMm(), r.yMm(), r.headingDeg()};
+        }
+        return poses;
+    }
+}

@@ -1,0 +1,109 @@
+package robosim.runner;
+
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Supplier;
+import robosim.api.RobotControl;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.WorldSpec;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.geometry.GeometryClient;
+import robosim.hardware.HardwareSimulator;
+import robosim.hardware.RobotType;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * A whole simulation inside the test JVM but over real loopback sockets on ephemeral ports: the
+ * Environment, a Geometry client (unless in-process), one Hardware Simulator thread per robot and a
+ * recording viewer that keeps every step's poses.
+ */
+final class InJvmSimulation {
+    final WorldSpec spec;
+    final List<RobotControl> controls = new ArrayList<>();
+    final List<PoseUpdate> updates = new ArrayList<>();
+    ClientWorkerCoordinator.Summary summary;
+
+    InJvmSimulation(Path file) throws Exception {
+        this.spec = new EnvironmentLoader().load(file);
+    }
+
+    InJvmSimulation run(long steps, boolean inProcessGeometry, Supplier<RobotControl> control) throws Exception {
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
+                InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry, steps, ObjectConnection.DEFAULT_RESET_EVERY,
+                10_000));
+        env.start();
+        try {
+            int[] ports = env.ports();
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], true, 10_000);
+            viewer.start(new ViewerClient.Listener() {
+                @Override
+                public void snapshot(WorldSnapshot snapshot) {
+                }
+
+                @Override
+                public void update(PoseUpdate update) {
+                    updates.add(update);
+                }
+            });
+            List<Thread> threads = new ArrayList<>();
+            List<Throwable> failures = new ArrayList<>();
+            if (!inProcessGeometry) {
+                threads.add(thread("geometry", failures, () -> new GeometryClient(
+                        new Socket(InetAddress.getLoopbackAddress(), ports[2]), ObjectConnection.DEFAULT_RESET_EVERY).run()));
+            }
+            for (WorldSpec.RobotSpec r : spec.robots()) {
+                RobotControl c = control.get();
+                controls.add(c);
+                threads.add(thread(r.name(), failures, () -> {
+                    HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                    sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), ObjectConnection.DEFAULT_RESET_EVERY);
+                    return sim.run(c);
+                }));
+            }
+            if (!env.awaitEnd(5, TimeUnit.MINUTES)) {
+                throw new AssertionError("the simulation did not end");
+            }
+            viewer.awaitEnd(1, TimeUnit.MINUTES);
+            for (Thread t : threads) {
+                t.join(TimeUnit.MINUTES.toMillis(1));
+            }
+            if (!failures.isEmpty()) {
+                throw new AssertionError("a client failed", failures.get(0));
+            }
+            summary = env.summary();
+            return this;
+        } finally {
+            env.close();
+        }
+    }
+
+    private interface Body {
+        Object run() throws Exception;
+    }
+
+    private static Thread thread(String name, List<Throwable> failures, Body body) {
+        Thread t = new Thread(() -> {
+            try {
+                body.run();
+            } catch (Exception | AssertionError e) {
+                synchronized (failures) {
+                    failures.add(e);
+                }
+            }
+        }, "test-" + name);
+        t.start();
+        return t;
+    }
+
+    static Path env(String name) {
+        return Path.of("..", "test-envs", name);
+    }
+
+}

@@ -1,0 +1,72 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.environment.core.WorldSpec;
+import robosim.protocol.PoseUpdate;
+
+/**
+ * The paper benchmark over real sockets: 10 robots, 5000 steps, a message to the next robot every
+ * step. Every pose after every step equals the hand-computed one, no two shapes overlap, every
+ * message arrives once and in order, and in-process geometry gives the same poses bit for bit.
+ */
+class LockStepIntegrationTest {
+    private static final int STEPS = 5000;
+
+    @Test
+    void tenChattingRobotsFor5000Steps() throws Exception {
+        InJvmSimulation remote = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .run(STEPS, false, Chatter::new);
+        check(remote);
+
+        InJvmSimulation local = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .run(STEPS, true, Chatter::new);
+        check(local);
+        for (int k = 0; k < STEPS; k++) {
+            PoseUpdate a = remote.updates.get(k);
+            PoseUpdate b = local.updates.get(k);
+            for (int i = 0; i < a.count(); i++) {
+                assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
+                        new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)},
+                        "--no-geometry differs at step " + k + " robot " + i);
+            }
+        }
+    }
+
+    private static void check(InJvmSimulation sim) throws Exception {
+        assertEquals(STEPS, sim.summary.steps());
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        assertEquals(STEPS, sim.updates.size(), "the recording viewer saw every step");
+        List<WorldSpec.RobotSpec> robots = sim.spec.robots();
+        for (int k = 0; k < STEPS; k++) {
+            PoseUpdate u = sim.updates.get(k);
+            assertEquals(k, u.step());
+            double[] expected = BackAndForthMath.after(k);
+            for (int i = 0; i < robots.size(); i++) {
+                assertEquals(robots.get(i).xMm() + expected[0], u.xMm(i), 1e-6, "x of robot " + i + " at step " + k);
+                assertEquals(robots.get(i).yMm(), u.yMm(i), 1e-6, "y of robot " + i + " at step " + k);
+                assertEquals(expected[1], u.headingDeg(i), 1e-9, "heading of robot " + i + " at step " + k);
+                for (int j = i + 1; j < robots.size(); j++) {
+                    double d = Math.hypot(u.xMm(i) - u.xMm(j), u.yMm(i) - u.yMm(j));
+                    assertTrue(d >= 500, "robots " + i + " and " + j + " overlap at step " + k);
+                }
+            }
+        }
+        PoseUpdate last = sim.updates.get(STEPS - 1);
+        // 5000 = 56 cycles of 88 + 72: forward 40, turn 4, back 28: x = start + 3000, heading 180
+        assertEquals(1500 + 3000, last.xMm(0), 1e-6);
+        assertEquals(180, last.headingDeg(0));
+        for (Object o : sim.controls) {
+            Chatter c = (Chatter) o;
+            assertTrue(c.finished.await(30, java.util.concurrent.TimeUnit.SECONDS));
+            assertEquals(List.of(), c.problems);
+            assertEquals(STEPS, c.sent, "one message per step");
+            assertEquals(STEPS, c.received, "every message received exactly once");
+        }
+        assertEquals(10L * STEPS, sim.summary.messagesDelivered());
+    }
+}
