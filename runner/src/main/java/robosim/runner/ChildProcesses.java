@@ -27,8 +27,15 @@ final class ChildProcesses implements AutoCloseable {
      * {@code stdoutLines} (on a pipe thread), or to our stderr when null.
      */
     Process start(String name, String mainClass, List<String> args, Consumer<String> stdoutLines) throws IOException {
+        return start(name, List.of(), mainClass, args, stdoutLines);
+    }
+
+    /** As above, with JVM options for this child before the common ones (which may override them). */
+    Process start(String name, List<String> ownOptions, String mainClass, List<String> args,
+            Consumer<String> stdoutLines) throws IOException {
         List<String> cmd = new ArrayList<>();
         cmd.add(java);
+        cmd.addAll(ownOptions);
         cmd.addAll(jvmOptions);
         cmd.add("-cp");
         cmd.add(classPath);

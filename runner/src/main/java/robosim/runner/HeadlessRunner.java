@@ -99,7 +99,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }
-        Process environment = children.start("environment", "robosim.environment.EnvironmentMain", envArgs, line -> {
+        Process environment = children.start("environment", opts("ROBOSIM_ENV_OPTS"), "robosim.environment.EnvironmentMain", envArgs, line -> {
             if (line.startsWith("listening ")) {
                 listening.complete(fields(line));
             } else if (line.startsWith("summary ")) {
@@ -118,7 +118,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         String robotPort = bound.get("robots");
         ViewerClient viewer = watch(Integer.parseInt(bound.get("viewers")));
         if (!noGeometry) {
-            children.start("geometry", "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
+            children.start("geometry", opts("ROBOSIM_GEOM_OPTS"), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
                     null);
         }
         startRobots(spec, children, robotPort);
@@ -204,13 +204,19 @@ public final class HeadlessRunner implements Callable<Integer> {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());
             }
-            children.start("robots", "robosim.hardware.MultiRobotMain", args, null);
+            children.start("robots", opts("ROBOSIM_ROBOT_OPTS"), "robosim.hardware.MultiRobotMain", args, null);
         } else {
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                children.start("robot " + r.name(), "robosim.hardware.RobotMain",
+                children.start("robot " + r.name(), opts("ROBOSIM_ROBOT_OPTS"), "robosim.hardware.RobotMain",
                         List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type", r.type()), null);
             }
         }
+    }
+
+    /** Experiment hook: JVM options from an environment variable. */
+    private static List<String> opts(String var) {
+        String v = System.getenv(var);
+        return v == null || v.isBlank() ? List.of() : List.of(v.trim().split("\\s+"));
     }
 
     private String port(int i) {

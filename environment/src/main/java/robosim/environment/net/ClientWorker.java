@@ -60,7 +60,7 @@ abstract class ClientWorker implements Runnable {
             LOG.warn("{} dropped: {}", name, why);
         } catch (EOFException e) {
             why = "the client closed the connection";
-            LOG.info("{}: {}", name, why);
+            LOG.debug("{}: {}", name, why);
         } catch (IOException e) {
             why = "connection lost: " + e.getMessage();
             LOG.info("{}: {}", name, why);

@@ -7,6 +7,7 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
@@ -28,7 +29,6 @@ import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
-import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -38,8 +38,10 @@ import robosim.protocol.WorldSnapshot;
  * <p>Threads it owns: {@code accept-robots}, {@code accept-viewers}, {@code accept-geometry} (one
  * per listening socket); one {@code robot-worker[name]} per robot; one {@code viewer-worker[n]} per
  * viewer; one {@code geometry-worker}. All shared state is guarded by {@link #lock}. The step
- * itself - core, geometry round trip, viewer publication - runs on the thread of the last robot
- * worker to arrive with its request ({@link #processMessage}).
+ * itself - core, geometry round trip, every robot's response, viewer publication - runs on the
+ * thread of the last robot worker to arrive with its request ({@link #processMessage}); the other
+ * robot workers are then already back in their socket reads. Every write to a robot's connection
+ * after its welcome happens under the lock.
  */
 public final class ClientWorkerCoordinator implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorkerCoordinator.class);
@@ -74,6 +76,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final RobotProperties[] properties;
     private final StepRequest[] requests;
     private final boolean[] active;
+    private final boolean[] begun;
+    private boolean robotsTold;
     private int registered;
     private GeometryClientWorker geometry;
     private State state = State.WAITING;
@@ -101,6 +105,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.properties = new RobotProperties[robotCount];
         this.requests = new StepRequest[robotCount];
         this.active = new boolean[robotCount];
+        this.begun = new boolean[robotCount];
     }
 
     /** Binds the three ports and starts accepting; a port in use is a {@link BindException} naming it. */
@@ -127,12 +132,17 @@ public final class ClientWorkerCoordinator implements Closeable {
         return ++serial;
     }
 
+    /**
+     * Listens through a blocking {@link ServerSocketChannel}: the sockets it accepts read with one
+     * system call per blocking read (see {@link robosim.protocol.Connector}).
+     */
     private ServerSocket bind(String what, int port) throws IOException {
-        ServerSocket s = new ServerSocket();
+        ServerSocketChannel channel = ServerSocketChannel.open();
+        ServerSocket s = channel.socket();
         try {
             s.bind(new InetSocketAddress(settings.bind(), port), 1024);
         } catch (BindException e) {
-            s.close();
+            channel.close();
             close();
             throw new BindException(what + " port " + port + " is already in use");
         }
@@ -144,7 +154,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         Thread t = new Thread(() -> {
             while (!server.isClosed()) {
                 try {
-                    Socket s = server.accept();
+                    Socket s = server.getChannel().accept().socket();
                     factory.apply(s).start();
                 } catch (IOException e) {
                     if (!server.isClosed()) {
@@ -264,23 +274,32 @@ public final class ClientWorkerCoordinator implements Closeable {
         changed.signalAll();
     }
 
-    /** Blocks until the run starts (true) or ends before starting (false). */
-    boolean awaitStart() throws InterruptedException {
+    /**
+     * Blocks until the run starts, then sends this robot the first step number (under the lock, so
+     * no other thread writes to it meanwhile). Returns that step, or -1 if the run ended first.
+     */
+    long awaitStart(RobotClientWorker worker, int index) throws InterruptedException, IOException {
         lock.lock();
         try {
             while (state == State.WAITING) {
                 changed.await();
             }
-            return state == State.RUNNING;
+            if (state != State.RUNNING || robots[index] != worker || !active[index]) {
+                return -1;
+            }
+            worker.begin(stepsDone);
+            begun[index] = true;
+            return stepsDone;
         } finally {
             lock.unlock();
         }
     }
 
-    long firstStep() {
+    /** True while robot {@code index} takes part in a running simulation. */
+    boolean accepts(int index) {
         lock.lock();
         try {
-            return stepsDone;
+            return state == State.RUNNING && active[index];
         } finally {
             lock.unlock();
         }
@@ -289,32 +308,29 @@ public final class ClientWorkerCoordinator implements Closeable {
     // ---- the step ------------------------------------------------------------------------------
 
     /**
-     * Hands in robot {@code index}'s request for step k and blocks until the step is done; the last
-     * robot to arrive runs it. Returns this robot's response, or null if the simulation ended first.
+     * Hands in robot {@code index}'s request for step k and returns at once, unless it is the last
+     * to arrive: then this thread runs the step and delivers every robot's response.
      */
-    StepResponse processMessage(int index, long k, StepRequest request) throws InterruptedException {
+    void processMessage(int index, long k, StepRequest request) throws InterruptedException {
         lock.lock();
         try {
-            if (state != State.RUNNING || stepsDone != k) {
-                return null;
+            if (state != State.RUNNING || !active[index] || stepsDone != k || requests[index] != null) {
+                return;
             }
             requests[index] = request;
             arrived++;
             if (arrived == activeCount) {
                 runStep();
-            } else {
-                long gen = generation;
-                while (gen == generation && state == State.RUNNING) {
-                    changed.await();
-                }
             }
-            return core.lastStep() >= k ? core.response(index) : null;
         } finally {
             lock.unlock();
         }
     }
 
-    /** Under the lock, on the releasing thread: one step, then wake every waiting worker. */
+    /**
+     * Under the lock, on the releasing thread: the core's step, then each robot's response with the
+     * next step number (or the end), then the poses to every viewer.
+     */
     private void runStep() throws InterruptedException {
         long k = stepsDone;
         try {
@@ -325,19 +341,45 @@ public final class ClientWorkerCoordinator implements Closeable {
         } finally {
             Arrays.fill(requests, null);
             arrived = 0;
-            generation++;
-            changed.signalAll();
         }
         stepsDone = k + 1;
+        boolean last = settings.maxSteps() > 0 && stepsDone >= settings.maxSteps();
+        SimulationEnd end = last ? new SimulationEnd(k, "completed " + stepsDone + " steps") : null;
+        for (int i = 0; i < robotCount; i++) {
+            if (!active[i]) {
+                continue;
+            }
+            try {
+                robots[i].deliver(core.response(i), stepsDone, end);
+            } catch (IOException e) {
+                depart(i, "could not send its response: " + e.getMessage());
+                robots[i].drop();
+            }
+        }
         if (!viewers.isEmpty()) {
             PoseUpdate update = core.map().poses(k);
             for (ViewerClientWorker v : viewers) {
                 v.offer(update);
             }
         }
-        if (settings.maxSteps() > 0 && stepsDone >= settings.maxSteps()) {
-            finish("completed " + stepsDone + " steps", true);
+        if (last) {
+            robotsTold = true;
+            finish(end.reason(), true);
+        } else if (activeCount == 0) {
+            finish("every robot has left", false);
         }
+    }
+
+    /** Under the lock: robot i no longer takes part; it stands where it is. */
+    private void depart(int i, String why) {
+        active[i] = false;
+        activeCount--;
+        if (requests[i] != null) {
+            requests[i] = null;
+            arrived--;
+        }
+        core.depart(i);
+        LOG.warn("robot {} left at step {} ({}); the others go on", robotNames.get(i), stepsDone, why);
     }
 
     boolean isRunning() {
@@ -362,10 +404,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 registered--;
                 LOG.warn("robot {} left before the start ({}); waiting for it again", robotNames.get(index), why);
             } else if (state == State.RUNNING && active[index]) {
-                active[index] = false;
-                activeCount--;
-                core.depart(index);
-                LOG.warn("robot {} left at step {} ({}); the others go on", robotNames.get(index), stepsDone, why);
+                depart(index, why);
                 if (activeCount == 0) {
                     finish("every robot has left", false);
                 } else if (arrived == activeCount) {
@@ -449,12 +488,21 @@ public final class ClientWorkerCoordinator implements Closeable {
         if (state == State.ENDED) {
             return;
         }
+        boolean started = state == State.RUNNING;
         state = State.ENDED;
         endReason = reason;
         completed = asPlanned;
         endNanos = System.nanoTime();
         changed.signalAll();
         SimulationEnd end = endMessage();
+        if (!robotsTold) {
+            robotsTold = true;
+            for (int i = 0; i < robotCount; i++) {
+                if (robots[i] != null && (!started || active[i])) {
+                    robots[i].end(end, begun[i]);
+                }
+            }
+        }
         for (ViewerClientWorker v : viewers) {
             v.end(end);
         }

@@ -11,9 +11,11 @@ import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * Serves one robot's Hardware Simulator: the handshake, then per step k: send k (a primitive long),
- * read the robot's request, hand it to the coordinator (which may run the step on this thread), and
- * write the response together with the next step number in one flush.
+ * Serves one robot's Hardware Simulator. Its thread does the handshake, sends the first step number
+ * and then only reads: each request goes to the coordinator, which runs the step on the thread of
+ * the last robot to arrive. That thread writes every robot's response through {@link #deliver}
+ * together with the next step number (or the end), in one flush; so between steps every worker
+ * thread stays parked in its socket read instead of waking up to write.
  */
 final class RobotClientWorker extends ClientWorker {
     private int index = -1;
@@ -39,37 +41,57 @@ final class RobotClientWorker extends ClientWorker {
                 coordinator.robotNames()));
         connection.flush();
         connection.setReadTimeoutMs(0);
-        if (!coordinator.awaitStart()) {
-            sendEnd();
+        long k = coordinator.awaitStart(this, index);
+        if (k < 0) {
             return;
         }
-        long k = coordinator.firstStep();
-        connection.writeStep(k);
-        connection.flush();
-        while (true) {
+        while (coordinator.accepts(index)) {
             StepRequest request = connection.read(StepRequest.class);
-            StepResponse response = coordinator.processMessage(index, k, request);
-            if (response == null) {
-                connection.write(coordinator.endMessage());
-                connection.flush();
-                return;
-            }
-            connection.write(response);
+            coordinator.processMessage(index, k, request);
             k++;
-            if (!coordinator.isRunning()) {
-                sendEnd();
-                return;
-            }
-            connection.writeStep(k);
-            connection.flush();
         }
     }
 
-    private void sendEnd() throws IOException {
-        connection.writeStep(Protocol.END_OF_SIMULATION);
-        SimulationEnd end = coordinator.endMessage();
-        connection.write(end);
+    /** Sends the first step number; called by this worker's thread, under the coordinator's lock. */
+    void begin(long firstStep) throws IOException {
+        connection.writeStep(firstStep);
         connection.flush();
+    }
+
+    /**
+     * Writes this robot's response and then the next step number, or the end of the simulation;
+     * called under the coordinator's lock by the thread that ran the step.
+     */
+    void deliver(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
+        connection.write(response);
+        if (end == null) {
+            connection.writeStep(nextStep);
+        } else {
+            connection.writeStep(Protocol.END_OF_SIMULATION);
+            connection.write(end);
+        }
+        connection.flush();
+    }
+
+    /**
+     * Ends the simulation for this robot out of turn. {@code midStep}: it has been given a step number
+     * and will read an object next; otherwise it is waiting for a step number.
+     */
+    void end(SimulationEnd end, boolean midStep) {
+        try {
+            if (!midStep) {
+                connection.writeStep(Protocol.END_OF_SIMULATION);
+            }
+            connection.write(end);
+            connection.flush();
+        } catch (IOException e) {
+            coordinator.log().info("{}: could not send the end of the simulation: {}", name(), e.getMessage());
+        }
+    }
+
+    /** Closes the connection, so this worker's blocked read ends. */
+    void drop() {
+        connection.close();
     }
 
     @Override
