@@ -55,8 +55,23 @@ public final class HeadlessRunner implements Callable<Integer> {
     @Option(names = "--progress", description = "Print the step and steps/s once a second.")
     boolean progress;
 
-    @Option(names = "--jvm-opt", paramLabel = "OPTION", description = "An option for every child JVM; repeatable.")
+    @Option(names = "--jvm-opt", paramLabel = "OPTION",
+            description = "An option for every child JVM, after the per-role ones; repeatable.")
     List<String> jvmOptions = new ArrayList<>();
+
+    @Option(names = "--environment-jvm-opts", paramLabel = "OPTIONS", defaultValue = "-XX:+UseSerialGC",
+            description = "JVM options for the Environment, space-separated (default: ${DEFAULT-VALUE}).")
+    String environmentJvmOpts;
+
+    @Option(names = "--geometry-jvm-opts", paramLabel = "OPTIONS", defaultValue = "-XX:+UseSerialGC",
+            description = "JVM options for the Geometry process (default: ${DEFAULT-VALUE}).")
+    String geometryJvmOpts;
+
+    @Option(names = "--robot-jvm-opts", paramLabel = "OPTIONS",
+            defaultValue = "-XX:+UseSerialGC -XX:TieredStopAtLevel=1",
+            description = "JVM options for each robot process (default: ${DEFAULT-VALUE}: ten JVMs warming up "
+                    + "with C1 only cost less CPU on a small machine; give '' for heavy control code).")
+    String robotJvmOpts;
 
     @Option(names = "--timeout-s", defaultValue = "0",
             description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
@@ -99,7 +114,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }
-        Process environment = children.start("environment", opts("ROBOSIM_ENV_OPTS"), "robosim.environment.EnvironmentMain", envArgs, line -> {
+        Process environment = children.start("environment", opts(environmentJvmOpts), "robosim.environment.EnvironmentMain", envArgs, line -> {
             if (line.startsWith("listening ")) {
                 listening.complete(fields(line));
             } else if (line.startsWith("summary ")) {
@@ -118,7 +133,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         String robotPort = bound.get("robots");
         ViewerClient viewer = watch(Integer.parseInt(bound.get("viewers")));
         if (!noGeometry) {
-            children.start("geometry", opts("ROBOSIM_GEOM_OPTS"), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
+            children.start("geometry", opts(geometryJvmOpts), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
                     null);
         }
         startRobots(spec, children, robotPort);
@@ -204,19 +219,18 @@ public final class HeadlessRunner implements Callable<Integer> {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());
             }
-            children.start("robots", opts("ROBOSIM_ROBOT_OPTS"), "robosim.hardware.MultiRobotMain", args, null);
+            children.start("robots", opts(robotJvmOpts), "robosim.hardware.MultiRobotMain", args, null);
         } else {
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                children.start("robot " + r.name(), opts("ROBOSIM_ROBOT_OPTS"), "robosim.hardware.RobotMain",
+                children.start("robot " + r.name(), opts(robotJvmOpts), "robosim.hardware.RobotMain",
                         List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type", r.type()), null);
             }
         }
     }
 
-    /** Experiment hook: JVM options from an environment variable. */
-    private static List<String> opts(String var) {
-        String v = System.getenv(var);
-        return v == null || v.isBlank() ? List.of() : List.of(v.trim().split("\\s+"));
+    private static List<String> opts(String spaceSeparated) {
+        return spaceSeparated == null || spaceSeparated.isBlank() ? List.of()
+                : List.of(spaceSeparated.trim().split("\\s+"));
     }
 
     private String port(int i) {

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# The original report's benchmark against the floor, in one sitting, repeated and alternated:
+#   scripts/bench-paper.sh [REPS] [STEPS] [extra headless.sh options...]
+# Runs, REPS times each in turn: ../shared/bench/Floor.java (clients as threads), bench/FloorProcesses
+# (clients as processes), headless.sh on test-envs/paper-benchmark.xml (robots as processes) and the
+# same with --robots-in-one-process. Prints every line, then the medians and the ratios to the floor.
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+reps=${1:-3}; steps=${2:-5000}; shift $(( $# > 2 ? 2 : $# )) || true
+floor=../shared/bench/Floor.java
+[ -f "$floor" ] || { echo "bench-paper: $floor not found (the shared floor lives beside the repository)" >&2; exit 2; }
+source scripts/common.sh
+robosim_build_if_missing
+mkdir -p bench/classes && javac -d bench/classes bench/FloorProcesses.java
+declare -a f fp hp ho
+rate() { grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }
+for i in $(seq "$reps"); do
+  l=$(java "$floor" 10 "$steps" obj); echo "floor            $l"; f+=("$(echo "$l" | rate)")
+  l=$(java -cp bench/classes FloorProcesses 10 "$steps" obj); echo "floor-processes  $l"; fp+=("$(echo "$l" | rate)")
+  l=$(scripts/headless.sh --env test-envs/paper-benchmark.xml --steps "$steps" "$@" 2>/dev/null | tail -n 1); echo "headless         $l"; hp+=("$(echo "$l" | rate)")
+  l=$(scripts/headless.sh --env test-envs/paper-benchmark.xml --steps "$steps" --robots-in-one-process "$@" 2>/dev/null | tail -n 1); echo "headless-1proc   $l"; ho+=("$(echo "$l" | rate)")
+done
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
+mf=$(median "${f[@]}"); mfp=$(median "${fp[@]}"); mh=$(median "${hp[@]}"); mo=$(median "${ho[@]}")
+echo "median steps/s: floor=$mf floor-processes=$mfp headless=$mh headless-1proc=$mo"
+awk -v f="$mf" -v fp="$mfp" -v h="$mh" -v o="$mo" 'BEGIN { printf "ratio to floor: headless=%.2f headless-1proc=%.2f floor-processes=%.2f; headless to floor-processes=%.2f\n", h/f, o/f, fp/f, h/fp }'
