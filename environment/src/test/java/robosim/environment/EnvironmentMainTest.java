@@ -36,6 +36,21 @@ class EnvironmentMainTest {
         assertEquals("no-such-file.xml: file not found", r.err().strip());
     }
 
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource(delimiter = '|', value = {
+        "<environment timeStepMs='500'><arena width='5' height='5'><robots></environment>|malformed XML",
+        "<environment timeStepMs='500'><arena width='5' height='5'/><robots><robot name='a' type='Roomba' x='1' y='1'/></robots></environment>|<robot name=\"a\"> type \"Roomba\" is not a known robot type",
+        "<environment timeStepMs='-500'><arena width='5' height='5'/><robots><robot name='a' type='ArRobot' x='1' y='1'/></robots></environment>|<environment> timeStepMs must be > 0, got -500"})
+    void badFilesExit2WithOneLine(String xml, String expected, @org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path f = dir.resolve("bad.xml");
+        java.nio.file.Files.writeString(f, xml);
+        Result r = run(f.toString());
+        assertEquals(2, r.code());
+        String line = r.err().strip();
+        assertTrue(line.startsWith(f.toString()) && line.contains(expected) && !line.contains("\n"), line);
+    }
+
     @Test
     void aPortInUseIsNamed() throws Exception {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {

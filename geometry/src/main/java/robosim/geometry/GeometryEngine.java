@@ -124,12 +124,10 @@ public final class GeometryEngine {
             if (j == i) {
                 continue;
             }
-            double rj = radius[j];
-            if (x[j] + rj < area.getMinX() || x[j] - rj > area.getMaxX()
-                    || y[j] + rj < area.getMinY() || y[j] - rj > area.getMaxY()) {
+            if (outsideArea(j)) {
                 continue;
             }
-            double t = Sweep.toCircle(px, py, ux, uy, r + rj, x[j], y[j]);
+            double t = Sweep.toCircle(px, py, ux, uy, r + radius[j], x[j], y[j]);
             if (t < v.best) {
                 v.best = t;
                 v.kind = GeometryStepResponse.CONTACT_ROBOT;
@@ -155,14 +153,19 @@ public final class GeometryEngine {
             if (j == i) {
                 continue;
             }
-            double rj = radius[j];
-            if (x[j] + rj < area.getMinX() || x[j] - rj > area.getMaxX()
-                    || y[j] + rj < area.getMinY() || y[j] - rj > area.getMaxY()) {
+            if (outsideArea(j)) {
                 continue;
             }
-            v.best = Math.min(v.best, cone.toDisc(x[j], y[j], rj));
+            v.best = Math.min(v.best, cone.toDisc(x[j], y[j], radius[j]));
         }
         return v.best;
+    }
+
+    /** The cheap test first: robot j's bounding box misses {@link #area}. */
+    private boolean outsideArea(int j) {
+        double rj = radius[j];
+        return x[j] + rj < area.getMinX() || x[j] - rj > area.getMaxX()
+                || y[j] + rj < area.getMinY() || y[j] - rj > area.getMaxY();
     }
 
     /** Sets {@link #area} to the bounding box of the cone cut off at {@code range}. */

@@ -22,44 +22,42 @@ abstract class Command {
 
     /** {@code move(mm)} at {@code mmPerS}: at most mmPerS * step per step. */
     static Command move(double mm, double mmPerS) {
-        return new Command() {
-            private double remaining = mm;
-
-            @Override
-            void plan(double stepSeconds) {
-                plannedMoveMm = Math.copySign(Math.min(Math.abs(remaining), mmPerS * stepSeconds), remaining);
-                plannedTurnDeg = 0;
-            }
-
-            @Override
-            boolean apply(StepResponse r, boolean messageArrived) {
-                result += r.movedMm();
-                remaining -= r.movedMm();
-                boolean blocked = Math.abs(r.movedMm()) < Math.abs(plannedMoveMm) - EPS;
-                return blocked || Math.abs(remaining) <= EPS;
-            }
-        };
+        return new Motion(mm, mmPerS, false);
     }
 
     /** {@code turn(deg)} at {@code degPerS}. */
     static Command turn(double deg, double degPerS) {
-        return new Command() {
-            private double remaining = deg;
+        return new Motion(deg, degPerS, true);
+    }
 
-            @Override
-            void plan(double stepSeconds) {
-                plannedMoveMm = 0;
-                plannedTurnDeg = Math.copySign(Math.min(Math.abs(remaining), degPerS * stepSeconds), remaining);
-            }
+    /** A move or a turn: pieces of at most rate * step until done or blocked. */
+    private static final class Motion extends Command {
+        private final double rate;
+        private final boolean turn;
+        private double remaining;
 
-            @Override
-            boolean apply(StepResponse r, boolean messageArrived) {
-                result += r.turnedDeg();
-                remaining -= r.turnedDeg();
-                boolean blocked = Math.abs(r.turnedDeg()) < Math.abs(plannedTurnDeg) - EPS;
-                return blocked || Math.abs(remaining) <= EPS;
-            }
-        };
+        Motion(double amount, double rate, boolean turn) {
+            this.remaining = amount;
+            this.rate = rate;
+            this.turn = turn;
+        }
+
+        @Override
+        void plan(double stepSeconds) {
+            double piece = Math.copySign(Math.min(Math.abs(remaining), rate * stepSeconds), remaining);
+            plannedMoveMm = turn ? 0 : piece;
+            plannedTurnDeg = turn ? piece : 0;
+        }
+
+        @Override
+        boolean apply(StepResponse r, boolean messageArrived) {
+            double planned = turn ? plannedTurnDeg : plannedMoveMm;
+            double done = turn ? r.turnedDeg() : r.movedMm();
+            result += done;
+            remaining -= done;
+            boolean blocked = Math.abs(done) < Math.abs(planned) - EPS;
+            return blocked || Math.abs(remaining) <= EPS;
+        }
     }
 
     /** Stand still for {@code steps} steps, or fewer if {@code untilMessage} and a message arrives. */

@@ -8,10 +8,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.api.RobotControl;
-import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 
 /**
@@ -34,13 +34,8 @@ public final class MultiRobotMain implements Callable<Integer> {
             description = "A robot to run; repeat for each.")
     List<String> robots;
 
-    @Option(names = "--connect-timeout-s", defaultValue = "30",
-            description = "Keep trying to connect for this long (default: ${DEFAULT-VALUE}).")
-    int connectTimeoutS;
-
-    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
-            description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
-    int resetEvery;
+    @Mixin
+    ConnectOptions connect;
 
     @Override
     public Integer call() throws Exception {
@@ -66,8 +61,8 @@ public final class MultiRobotMain implements Callable<Integer> {
             Thread t = new Thread(() -> {
                 try {
                     RobotControl control = RobotLauncher.control(p[2]);
-                    RobotLauncher.run(p[0], RobotType.byName(p[1]), control, host, port, connectTimeoutS * 1000L,
-                            resetEvery);
+                    RobotLauncher.run(p[0], RobotType.byName(p[1]), control, host, port, connect.connectTimeoutMs(),
+                            connect.resetEvery);
                 } catch (Exception e) {
                     failures.incrementAndGet();
                     LOG.error("robot {}: {}", p[0], e.getMessage());

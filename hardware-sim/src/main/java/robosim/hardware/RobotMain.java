@@ -5,10 +5,10 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.api.RobotControl;
-import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 
@@ -37,13 +37,8 @@ public final class RobotMain implements Callable<Integer> {
             description = "Robot type: ArRobot, Scout or a RobotType class name (default: ${DEFAULT-VALUE}).")
     String type;
 
-    @Option(names = "--connect-timeout-s", defaultValue = "30",
-            description = "Keep trying to connect for this long (default: ${DEFAULT-VALUE}).")
-    int connectTimeoutS;
-
-    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
-            description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
-    int resetEvery;
+    @Mixin
+    ConnectOptions connect;
 
     @Override
     public Integer call() throws Exception {
@@ -57,7 +52,7 @@ public final class RobotMain implements Callable<Integer> {
             return 2;
         }
         try {
-            String reason = RobotLauncher.run(name, robotType, control, host, port, connectTimeoutS * 1000L, resetEvery);
+            String reason = RobotLauncher.run(name, robotType, control, host, port, connect.connectTimeoutMs(), connect.resetEvery);
             LOG.info("robot {}: simulation over: {}", name, reason);
             return 0;
         } catch (ProtocolException e) {

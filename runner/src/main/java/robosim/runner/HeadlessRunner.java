@@ -194,7 +194,10 @@ public final class HeadlessRunner implements Callable<Integer> {
                     poseLogWriter.update(u);
                 }
                 long now = System.nanoTime();
-                if (progress && now - lastPrint >= 1_000_000_000L) {
+                if (lastStep < 0) {
+                    lastPrint = now;
+                    lastStep = u.step();
+                } else if (progress && now - lastPrint >= 1_000_000_000L) {
                     double rate = (u.step() - lastStep) / ((now - lastPrint) / 1e9);
                     System.out.printf(Locale.ROOT, "step %d/%d  %.0f steps/s%n", u.step() + 1, steps, rate);
                     lastPrint = now;
