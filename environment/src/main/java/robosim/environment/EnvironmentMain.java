@@ -53,6 +53,11 @@ public final class EnvironmentMain implements Callable<Integer> {
             description = "End after this many steps (default: ${DEFAULT-VALUE} = run until stopped).")
     long steps;
 
+    @Option(names = "--speed", defaultValue = "0",
+            description = "Run at most this many times real time, so a person can watch (default: ${DEFAULT-VALUE}"
+                    + " = as fast as possible).")
+    double speed;
+
     @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
             description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
     int resetEvery;
@@ -70,13 +75,13 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println(e.getMessage());
             return 2;
         }
-        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0) {
-            System.err.println("environment: --steps, --reset-every and --handshake-timeout-ms must be >= 0");
+        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(speed >= 0) || Double.isInfinite(speed)) {
+            System.err.println("environment: --steps, --speed, --reset-every and --handshake-timeout-ms must be >= 0");
             return 2;
         }
         ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
                 InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
-                handshakeTimeoutMs);
+                handshakeTimeoutMs, speed);
         ClientWorkerCoordinator coordinator = new ClientWorkerCoordinator(spec, settings);
         try {
             coordinator.start();

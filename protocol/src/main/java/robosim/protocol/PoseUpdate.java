@@ -6,27 +6,46 @@ import java.io.ObjectOutput;
 
 /**
  * Environment -> viewer, after each step: every robot's pose (mm, degrees) at the end of
- * {@code step}, in snapshot order. Immutable once built, so one instance is shared by every
- * viewer worker; a live viewer may see only some steps, a recording viewer sees all.
+ * {@code step}, in snapshot order, and the sonar ranges (mm) each robot read in that step (none if it
+ * did not ask). Immutable once built, so one instance is shared by every viewer worker; a live
+ * viewer may see only some steps, a recording viewer sees all.
  */
 public final class PoseUpdate implements java.io.Externalizable {
     private long step;
     private double[] xMm = new double[0];
     private double[] yMm = new double[0];
     private double[] headingDeg = new double[0];
+    private double[][] sonarMm = new double[0][];
+
+    private static final double[] NONE = new double[0];
 
     public PoseUpdate() {
     }
 
-    /** Takes the arrays as they are: the caller must never change them afterwards. */
+    /** Poses without sonar ranges. Takes the arrays as they are: the caller must not change them. */
     public PoseUpdate(long step, double[] xMm, double[] yMm, double[] headingDeg) {
-        if (xMm.length != yMm.length || xMm.length != headingDeg.length) {
+        this(step, xMm, yMm, headingDeg, null);
+    }
+
+    /**
+     * Takes the arrays as they are: the caller must never change them afterwards.
+     *
+     * @param sonarMm per robot its ranges this step (an empty array if none); null for none at all
+     */
+    public PoseUpdate(long step, double[] xMm, double[] yMm, double[] headingDeg, double[][] sonarMm) {
+        if (xMm.length != yMm.length || xMm.length != headingDeg.length
+                || (sonarMm != null && sonarMm.length != xMm.length)) {
             throw new IllegalArgumentException("pose arrays differ in length");
         }
         this.step = step;
         this.xMm = xMm;
         this.yMm = yMm;
         this.headingDeg = headingDeg;
+        if (sonarMm == null) {
+            sonarMm = new double[xMm.length][];
+            java.util.Arrays.fill(sonarMm, NONE);
+        }
+        this.sonarMm = sonarMm;
     }
 
     public long step() {
@@ -49,6 +68,11 @@ public final class PoseUpdate implements java.io.Externalizable {
         return headingDeg[robot];
     }
 
+    /** Robot's sonar ranges this step, in its layout order; empty if it did not read them. Do not change. */
+    public double[] sonarMm(int robot) {
+        return sonarMm[robot];
+    }
+
     @Override
     public void writeExternal(ObjectOutput out) throws IOException {
         out.writeLong(step);
@@ -57,6 +81,8 @@ public final class PoseUpdate implements java.io.Externalizable {
             out.writeDouble(xMm[i]);
             out.writeDouble(yMm[i]);
             out.writeDouble(headingDeg[i]);
+            out.writeByte(sonarMm[i].length);
+            Wire.writeDoubles(out, sonarMm[i], sonarMm[i].length);
         }
     }
 
@@ -67,10 +93,13 @@ public final class PoseUpdate implements java.io.Externalizable {
         xMm = new double[n];
         yMm = new double[n];
         headingDeg = new double[n];
+        sonarMm = new double[n][];
         for (int i = 0; i < n; i++) {
             xMm[i] = in.readDouble();
             yMm[i] = in.readDouble();
             headingDeg[i] = in.readDouble();
+            int ranges = Limits.checkCount("sonar range count", in.readUnsignedByte(), Limits.MAX_SONARS);
+            sonarMm[i] = ranges == 0 ? NONE : Wire.readDoubles(in, ranges);
         }
     }
 }

@@ -22,6 +22,10 @@ public final class ViewerClient implements Closeable {
 
         default void end(SimulationEnd end) {
         }
+
+        /** The connection broke before the end. */
+        default void lost(IOException cause) {
+        }
     }
 
     private final ObjectConnection connection;
@@ -83,8 +87,10 @@ public final class ViewerClient implements Closeable {
             }
         } catch (EOFException e) {
             failure = new EOFException("the Environment closed the viewer connection before the end");
+            listener.lost(failure);
         } catch (IOException e) {
             failure = e;
+            listener.lost(e);
         } finally {
             done.countDown();
         }

@@ -8,8 +8,9 @@ import java.util.List;
 
 /**
  * Environment -> viewer, once, right after {@link ViewerHello}: the whole world as it stands after
- * {@code step} (-1 before the first step): time step, arena, obstacles and every robot's name, type,
- * radius and pose (mm, degrees). {@link PoseUpdate}s follow, with robots in the same order.
+ * {@code step} (-1 before the first step): time step, arena, obstacles and every robot's name and
+ * properties (type, radius, sonar layout) and pose (mm, degrees). {@link PoseUpdate}s follow, with
+ * robots in the same order.
  */
 public final class WorldSnapshot implements java.io.Externalizable {
     private long step;
@@ -17,25 +18,22 @@ public final class WorldSnapshot implements java.io.Externalizable {
     private Arena arena;
     private List<ObstacleShape> obstacles = List.of();
     private List<String> robotNames = List.of();
-    private List<String> robotTypes = List.of();
-    private double[] radiusMm = new double[0];
+    private List<RobotProperties> robots = List.of();
     private PoseUpdate poses = new PoseUpdate();
 
     public WorldSnapshot() {
     }
 
     public WorldSnapshot(long timeStepMs, Arena arena, List<ObstacleShape> obstacles, List<String> robotNames,
-            List<String> robotTypes, double[] radiusMm, PoseUpdate poses) {
+            List<RobotProperties> robots, PoseUpdate poses) {
         this.step = poses.step();
         this.timeStepMs = timeStepMs;
         this.arena = arena;
         this.obstacles = List.copyOf(obstacles);
         this.robotNames = List.copyOf(robotNames);
-        this.robotTypes = List.copyOf(robotTypes);
-        this.radiusMm = radiusMm.clone();
+        this.robots = List.copyOf(robots);
         this.poses = poses;
-        if (robotNames.size() != robotTypes.size() || robotNames.size() != radiusMm.length
-                || robotNames.size() != poses.count()) {
+        if (robotNames.size() != robots.size() || robotNames.size() != poses.count()) {
             throw new IllegalArgumentException("snapshot robot fields differ in length");
         }
     }
@@ -60,12 +58,13 @@ public final class WorldSnapshot implements java.io.Externalizable {
         return robotNames;
     }
 
-    public List<String> robotTypes() {
-        return robotTypes;
+    /** Each robot's properties (type, radius, sonar layout), in {@link #robotNames()} order. */
+    public List<RobotProperties> robots() {
+        return robots;
     }
 
     public double radiusMm(int robot) {
-        return radiusMm[robot];
+        return robots.get(robot).radiusMm();
     }
 
     /** The robots' poses at {@link #step()}. */
@@ -82,8 +81,7 @@ public final class WorldSnapshot implements java.io.Externalizable {
         out.writeInt(robotNames.size());
         for (int i = 0; i < robotNames.size(); i++) {
             out.writeUTF(robotNames.get(i));
-            out.writeUTF(robotTypes.get(i));
-            out.writeDouble(radiusMm[i]);
+            robots.get(i).write(out);
         }
         poses.writeExternal(out);
     }
@@ -96,15 +94,13 @@ public final class WorldSnapshot implements java.io.Externalizable {
         obstacles = Wire.readObstacles(in);
         int n = Limits.checkCount("robot count", in.readInt(), Limits.MAX_ROBOTS);
         List<String> names = new ArrayList<>(n);
-        List<String> types = new ArrayList<>(n);
-        radiusMm = new double[n];
+        List<RobotProperties> props = new ArrayList<>(n);
         for (int i = 0; i < n; i++) {
             names.add(in.readUTF());
-            types.add(in.readUTF());
-            radiusMm[i] = in.readDouble();
+            props.add(RobotProperties.read(in));
         }
         robotNames = List.copyOf(names);
-        robotTypes = List.copyOf(types);
+        robots = List.copyOf(props);
         poses = new PoseUpdate();
         poses.readExternal(in);
         if (poses.count() != n) {

@@ -50,6 +50,14 @@ class MessageRoundTripTest {
         }
     }
 
+    /**
+     * Wire bytes of a repeated message with this payload: a payload over 255 bytes (and up to the
+     * 1024-byte block size) takes the long block-data header, 5 bytes instead of 2.
+     */
+    private static int wire(int payload) {
+        return payload + (payload > 255 ? OVERHEAD + 3 : OVERHEAD);
+    }
+
     private static int utf(String s) {
         return 2 + s.length();
     }
@@ -163,26 +171,31 @@ class MessageRoundTripTest {
         assertTrue(h.everyStep());
         assertEquals(OVERHEAD + 4 + 1, repeatedSize(new ViewerHello(false)));
 
-        PoseUpdate p = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6});
+        PoseUpdate p = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6},
+                new double[][] {{700, 800}, {}});
         PoseUpdate p2 = roundTrip(p);
         assertEquals(4, p2.step());
         assertEquals(2, p2.count());
         assertEquals(4, p2.yMm(1));
         assertEquals(6, p2.headingDeg(1));
-        assertEquals(OVERHEAD + 8 + 4 + 2 * 24, repeatedSize(p));
+        assertArrayEquals(new double[] {700, 800}, p2.sonarMm(0));
+        assertEquals(0, p2.sonarMm(1).length);
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8, repeatedSize(p));
 
         Arena arena = new Arena(0, 0, 1000, 1000);
-        WorldSnapshot s = new WorldSnapshot(500, arena, List.of(), List.of("a", "b"), List.of("Scout", "Scout"),
-                new double[] {200, 200}, p);
+        PoseUpdate plain = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6});
+        WorldSnapshot s = new WorldSnapshot(500, arena, List.of(), List.of("a", "b"), List.of(PROPS, PROPS), plain);
         WorldSnapshot s2 = roundTrip(s);
         assertEquals(4, s2.step());
         assertEquals(500, s2.timeStepMs());
         assertEquals(arena, s2.arena());
         assertEquals(List.of("a", "b"), s2.robotNames());
-        assertEquals(200, s2.radiusMm(1));
+        assertEquals(250, s2.radiusMm(1));
+        assertEquals(PROPS, s2.robots().get(0));
         assertEquals(3, s2.poses().yMm(0));
-        int robots = 2 * (utf("a") + utf("Scout") + 8);
-        assertEquals(OVERHEAD + 8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 48, repeatedSize(s));
+        int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
+        int robots = 2 * (utf("a") + props);
+        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25), repeatedSize(s));
 
         SimulationEnd e = roundTrip(new SimulationEnd(99, "done"));
         assertEquals(99, e.lastStep());

@@ -62,6 +62,13 @@ final class ChildProcesses implements AutoCloseable {
         return p;
     }
 
+    /** Starts a child that is not waited for nor stopped at the end (a viewer window the user closes). */
+    void startDetached(String name, String mainClass, List<String> args) throws IOException {
+        List<String> cmd = new ArrayList<>(List.of(java, "-cp", classPath, mainClass));
+        cmd.addAll(args);
+        new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+    }
+
     /** Waits up to {@code seconds} for every child; returns the names of those that failed or hung. */
     List<String> awaitAll(long seconds) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);

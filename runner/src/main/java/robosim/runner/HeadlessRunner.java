@@ -55,6 +55,21 @@ public final class HeadlessRunner implements Callable<Integer> {
     @Option(names = "--progress", description = "Print the step and steps/s once a second.")
     boolean progress;
 
+    @Option(names = "--speed", defaultValue = "0",
+            description = "Run at most this many times real time (default: ${DEFAULT-VALUE} = as fast as possible).")
+    double speed;
+
+    @Option(names = "--viewer", description = "Open a Viewer2D window (needs a display); it stays open after the run.")
+    boolean viewer;
+
+    @Option(names = "--live-viewers", defaultValue = "0",
+            description = "For measurement: connect this many headless live viewers (default: ${DEFAULT-VALUE}).")
+    int liveViewers;
+
+    @Option(names = "--frozen-viewers", defaultValue = "0",
+            description = "For measurement: connect this many viewers that never read (default: ${DEFAULT-VALUE}).")
+    int frozenViewers;
+
     @Option(names = "--jvm-opt", paramLabel = "OPTION",
             description = "An option for every child JVM, after the per-role ones; repeatable.")
     List<String> jvmOptions = new ArrayList<>();
@@ -90,6 +105,10 @@ public final class HeadlessRunner implements Callable<Integer> {
             System.err.println("headless: --steps must be > 0, got " + steps);
             return 2;
         }
+        if (liveViewers < 0 || frozenViewers < 0 || !(speed >= 0)) {
+            System.err.println("headless: --speed, --live-viewers and --frozen-viewers must be >= 0");
+            return 2;
+        }
         if (ports != null && ports.size() != 3) {
             System.err.println("headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports);
             return 2;
@@ -114,6 +133,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }
+        if (speed > 0) {
+            envArgs.add("--speed");
+            envArgs.add(Double.toString(speed));
+        }
         Process environment = children.start("environment", opts(environmentJvmOpts), "robosim.environment.EnvironmentMain", envArgs, line -> {
             if (line.startsWith("listening ")) {
                 listening.complete(fields(line));
@@ -131,7 +154,13 @@ public final class HeadlessRunner implements Callable<Integer> {
             return environment.exitValue() == 2 ? 2 : 1;
         }
         String robotPort = bound.get("robots");
-        ViewerClient viewer = watch(Integer.parseInt(bound.get("viewers")));
+        int viewerPort = Integer.parseInt(bound.get("viewers"));
+        ViewerClient viewer = watch(viewerPort);
+        ExtraViewers extras = ExtraViewers.connect(viewerPort, liveViewers, frozenViewers);
+        if (this.viewer) {
+            children.startDetached("viewer2d", "robosim.viewer.Viewer2DMain",
+                    List.of("127.0.0.1", Integer.toString(viewerPort)));
+        }
         if (!noGeometry) {
             children.start("geometry", opts(geometryJvmOpts), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
                     null);
@@ -153,6 +182,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (viewer != null) {
             viewer.awaitEnd(60, TimeUnit.SECONDS);
         }
+        extras.close();
         if (poseLogWriter != null) {
             poseLogWriter.close();
         }

@@ -28,7 +28,20 @@ final class InJvmSimulation {
     final WorldSpec spec;
     final List<RobotControl> controls = new ArrayList<>();
     final List<PoseUpdate> updates = new ArrayList<>();
+    /** The last update each extra live viewer saw. */
+    final List<PoseUpdate> liveLast = new ArrayList<>();
     ClientWorkerCoordinator.Summary summary;
+    int maxLiveViewerBacklog;
+    int viewersAtEnd;
+    private int liveViewers;
+    private int frozenViewers;
+
+    /** Adds live viewers (reading every update) and frozen ones (never reading) to the next run. */
+    InJvmSimulation withViewers(int live, int frozen) {
+        this.liveViewers = live;
+        this.frozenViewers = frozen;
+        return this;
+    }
 
     InJvmSimulation(Path file) throws Exception {
         this.spec = new EnvironmentLoader().load(file);
@@ -52,6 +65,27 @@ final class InJvmSimulation {
                     updates.add(update);
                 }
             });
+            List<ViewerClient> lives = new ArrayList<>();
+            PoseUpdate[] lastSeen = new PoseUpdate[liveViewers];
+            for (int v = 0; v < liveViewers; v++) {
+                int slot = v;
+                ViewerClient live = ViewerClient.connect("127.0.0.1", ports[1], false, 10_000);
+                live.start(new ViewerClient.Listener() {
+                    @Override
+                    public void snapshot(WorldSnapshot snapshot) {
+                    }
+
+                    @Override
+                    public void update(PoseUpdate update) {
+                        lastSeen[slot] = update;
+                    }
+                });
+                lives.add(live);
+            }
+            List<Socket> frozen = new ArrayList<>();
+            for (int v = 0; v < frozenViewers; v++) {
+                frozen.add(ExtraViewers.frozen(ports[1]));
+            }
             List<Thread> threads = new ArrayList<>();
             List<Throwable> failures = new ArrayList<>();
             if (!inProcessGeometry) {
@@ -71,6 +105,15 @@ final class InJvmSimulation {
                 throw new AssertionError("the simulation did not end");
             }
             viewer.awaitEnd(1, TimeUnit.MINUTES);
+            for (ViewerClient live : lives) {
+                live.awaitEnd(1, TimeUnit.MINUTES);
+            }
+            liveLast.addAll(java.util.Arrays.asList(lastSeen));
+            maxLiveViewerBacklog = env.maxLiveViewerBacklog();
+            viewersAtEnd = env.viewerCount();
+            for (Socket f : frozen) {
+                f.close();
+            }
             for (Thread t : threads) {
                 t.join(TimeUnit.MINUTES.toMillis(1));
             }

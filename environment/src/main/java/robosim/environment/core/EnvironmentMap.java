@@ -77,6 +77,11 @@ public final class EnvironmentMap {
         return new PoseUpdate(step, x.clone(), y.clone(), heading.clone());
     }
 
+    /** As {@link #poses}, with each robot's sonar ranges of that step (taken as they are). */
+    PoseUpdate poses(long step, double[][] sonarMm) {
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm);
+    }
+
     public GeometryWorld geometryWorld() {
         List<String> names = new ArrayList<>();
         for (WorldSpec.RobotSpec r : spec.robots()) {
@@ -92,13 +97,9 @@ public final class EnvironmentMap {
     /** A snapshot of a world whose robots are described by {@code properties}, at the given poses. */
     public static WorldSnapshot snapshot(WorldSpec spec, List<RobotProperties> properties, PoseUpdate poses) {
         List<String> names = new ArrayList<>();
-        List<String> types = new ArrayList<>();
-        double[] radius = new double[properties.size()];
         for (int i = 0; i < properties.size(); i++) {
             names.add(spec.robots().get(i).name());
-            types.add(properties.get(i).type());
-            radius[i] = properties.get(i).radiusMm();
         }
-        return new WorldSnapshot(spec.timeStepMs(), spec.arena(), spec.obstacles(), names, types, radius, poses);
+        return new WorldSnapshot(spec.timeStepMs(), spec.arena(), spec.obstacles(), names, properties, poses);
     }
 }

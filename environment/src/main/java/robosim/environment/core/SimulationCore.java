@@ -7,6 +7,7 @@ import java.util.Map;
 import robosim.geometry.Kinematics;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.PoseUpdate;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.StepRequest;
@@ -151,6 +152,18 @@ public final class SimulationCore {
             case GeometryStepResponse.CONTACT_ARENA -> "arena";
             default -> "";
         };
+    }
+
+    /**
+     * The last step's poses and sonar ranges for viewers: a new immutable update (the ranges are
+     * the responses' own arrays, which nobody changes).
+     */
+    public PoseUpdate viewerUpdate() {
+        double[][] sonar = new double[robots][];
+        for (int i = 0; i < robots; i++) {
+            sonar[i] = responses[i].sonarMm();
+        }
+        return map.poses(lastStep, sonar);
     }
 
     /** Robot i's response to the last step. */

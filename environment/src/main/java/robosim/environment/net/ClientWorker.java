@@ -20,7 +20,7 @@ abstract class ClientWorker implements Runnable {
     protected final ClientWorkerCoordinator coordinator;
     private final Socket socket;
     private volatile String name;
-    protected ObjectConnection connection;
+    protected volatile ObjectConnection connection;
 
     ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name) {
         this.coordinator = coordinator;

@@ -52,7 +52,13 @@ public final class ClientWorkerCoordinator implements Closeable {
      * @param maxSteps steps to run before ending; 0 runs until stopped
      */
     public record Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort,
-            boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs) {
+            boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs, double speed) {
+        /** As fast as possible (no pacing). */
+        public Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort, boolean inProcessGeometry,
+                long maxSteps, int resetEvery, int handshakeTimeoutMs) {
+            this(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
+                    handshakeTimeoutMs, 0);
+        }
     }
 
     /** How a finished run went. */
@@ -343,6 +349,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             arrived = 0;
         }
         stepsDone = k + 1;
+        pace(stepsDone);
         boolean last = settings.maxSteps() > 0 && stepsDone >= settings.maxSteps();
         SimulationEnd end = last ? new SimulationEnd(k, "completed " + stepsDone + " steps") : null;
         for (int i = 0; i < robotCount; i++) {
@@ -357,7 +364,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
         }
         if (!viewers.isEmpty()) {
-            PoseUpdate update = core.map().poses(k);
+            PoseUpdate update = core.viewerUpdate();
             for (ViewerClientWorker v : viewers) {
                 v.offer(update);
             }
@@ -367,6 +374,21 @@ public final class ClientWorkerCoordinator implements Closeable {
             finish(end.reason(), true);
         } else if (activeCount == 0) {
             finish("every robot has left", false);
+        }
+    }
+
+    /**
+     * With {@code speed} > 0, holds the step until simulated time runs at most {@code speed} times
+     * real time, so a person can watch. This is pacing, not waiting for an event.
+     */
+    private void pace(long steps) {
+        if (settings.speed() <= 0) {
+            return;
+        }
+        long due = startNanos + (long) (steps * spec.timeStepMs() * 1_000_000L / settings.speed());
+        long wait = due - System.nanoTime();
+        if (wait > 0) {
+            java.util.concurrent.locks.LockSupport.parkNanos(wait);
         }
     }
 
@@ -543,13 +565,20 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
-    /** The most updates any connected viewer has had waiting (for tests of the bounded backlog). */
-    public int maxViewerBacklog() {
+    /** The most updates any connected live viewer has ever had waiting (bounded: 1). */
+    public int maxLiveViewerBacklog() {
         int max = 0;
         for (ViewerClientWorker v : viewers) {
-            max = Math.max(max, v.maxPending());
+            if (!v.recording()) {
+                max = Math.max(max, v.maxPending());
+            }
         }
         return max;
+    }
+
+    /** Viewers connected now. */
+    public int viewerCount() {
+        return viewers.size();
     }
 
     private void closeServers() {
@@ -566,5 +595,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     public void close() {
         stop("the Environment was shut down");
         closeServers();
+        for (ViewerClientWorker v : viewers) {
+            v.drop();
+        }
     }
 }

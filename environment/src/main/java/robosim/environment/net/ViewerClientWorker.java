@@ -90,6 +90,17 @@ final class ViewerClientWorker extends ClientWorker {
         return next;
     }
 
+    synchronized boolean recording() {
+        return everyStep;
+    }
+
+    /** Closes the connection; a worker blocked writing to a frozen viewer then ends. */
+    void drop() {
+        if (connection != null) {
+            connection.close();
+        }
+    }
+
     /** The most updates this viewer ever had waiting. */
     synchronized int maxPending() {
         return maxPending;

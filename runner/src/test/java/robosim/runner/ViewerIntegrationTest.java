@@ -1,0 +1,41 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.environment.core.WorldSpec;
+import robosim.examples.BackAndForth;
+import robosim.protocol.PoseUpdate;
+
+/**
+ * Three viewers on a 10-robot run of 5000 steps, one of them never reading from its socket: the
+ * run completes, the live viewers see the final poses, the frozen viewer's worker never holds more
+ * than one update.
+ */
+class ViewerIntegrationTest {
+    private static final int STEPS = 5000;
+
+    @Test
+    void aFrozenViewerNeitherStopsTheRobotsNorGrowsTheEnvironment() throws Exception {
+        InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .withViewers(2, 1)
+                .run(STEPS, false, BackAndForth::new);
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        assertEquals(STEPS, sim.summary.steps());
+        // the recording and live viewers got the end and left; the frozen one is still there, its worker
+        // stuck writing to a socket nobody reads - and it never held more than one update
+        assertEquals(1, sim.viewersAtEnd, "only the frozen viewer is still connected");
+        assertEquals(1, sim.maxLiveViewerBacklog, "the frozen viewer's worker held at most one update");
+        List<WorldSpec.RobotSpec> robots = sim.spec.robots();
+        for (PoseUpdate last : sim.liveLast) {
+            assertEquals(STEPS - 1, last.step(), "a live viewer saw the last step");
+            for (int i = 0; i < robots.size(); i++) {
+                // 5000 steps of BackAndForth: 3 m out on the way back, heading 180
+                assertEquals(robots.get(i).xMm() + 3000, last.xMm(i), 1e-6);
+                assertEquals(180, last.headingDeg(i));
+            }
+        }
+    }
+}

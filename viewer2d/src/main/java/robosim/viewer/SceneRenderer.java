@@ -1,0 +1,167 @@
+package robosim.viewer;
+
+import java.awt.BasicStroke;
+import java.awt.Color;
+import java.awt.Font;
+import java.awt.Graphics2D;
+import java.awt.RenderingHints;
+import java.awt.geom.Ellipse2D;
+import java.awt.geom.Line2D;
+import java.awt.geom.Path2D;
+import java.awt.geom.Rectangle2D;
+import java.util.List;
+import robosim.protocol.Arena;
+import robosim.protocol.ObstacleShape;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.SonarSpec;
+
+/**
+ * Draws a {@link Scene} with a {@link ViewTransform}: arena (white, 1 m grid), obstacles (grey),
+ * optional trails and sonar rays, robots (a disc in the robot's colour, a line to the rim along its
+ * heading, its name). Pure drawing, no state: the window and the off-screen test use the same code.
+ */
+public final class SceneRenderer {
+    public static final Color OUTSIDE = new Color(0xDDE1E6);
+    public static final Color FLOOR = Color.WHITE;
+    public static final Color GRID = new Color(0xEEF0F3);
+    public static final Color WALL = new Color(0x6B6F76);
+    public static final Color OUTLINE = new Color(0x22262B);
+    private static final Color[] PALETTE = {
+        new Color(0x1F77B4), new Color(0xFF7F0E), new Color(0x2CA02C), new Color(0xD62728), new Color(0x9467BD),
+        new Color(0x8C564B), new Color(0xE377C2), new Color(0x17BECF), new Color(0xBCBD22), new Color(0x393B79)};
+
+    /** What to draw besides the world and the robots. */
+    public record Options(boolean names, boolean trails, boolean sonar) {
+        public static final Options DEFAULT = new Options(true, true, false);
+    }
+
+    private SceneRenderer() {
+    }
+
+    /** The colour robot {@code i} is drawn in. */
+    public static Color robotColor(int i) {
+        return PALETTE[i % PALETTE.length];
+    }
+
+    public static void render(Graphics2D g, Scene s, ViewTransform t, Options o, int width, int height) {
+        g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
+        g.setColor(OUTSIDE);
+        g.fillRect(0, 0, width, height);
+        drawArena(g, s.arena(), t);
+        g.setStroke(new BasicStroke(1f));
+        for (ObstacleShape obstacle : s.obstacles()) {
+            Path2D p = polygon(obstacle, t);
+            g.setColor(WALL);
+            g.fill(p);
+            g.setColor(OUTLINE);
+            g.draw(p);
+        }
+        PoseUpdate poses = s.poses();
+        if (o.trails()) {
+            for (int i = 0; i < s.robotCount(); i++) {
+                drawTrail(g, s.trails()[i], t, robotColor(i));
+            }
+        }
+        if (o.sonar()) {
+            for (int i = 0; i < s.robotCount(); i++) {
+                drawSonar(g, s.robots().get(i).sonars(), poses, i, t, robotColor(i));
+            }
+        }
+        g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        for (int i = 0; i < s.robotCount(); i++) {
+            drawRobot(g, s, i, t, o.names());
+        }
+    }
+
+    private static void drawArena(Graphics2D g, Arena a, ViewTransform t) {
+        double x0 = t.toScreenX(a.minXMm());
+        double y0 = t.toScreenY(a.maxYMm());
+        double x1 = t.toScreenX(a.maxXMm());
+        double y1 = t.toScreenY(a.minYMm());
+        g.setColor(FLOOR);
+        g.fill(new Rectangle2D.Double(x0, y0, x1 - x0, y1 - y0));
+        if (t.scale() * 1000 >= 8) {
+            g.setColor(GRID);
+            g.setStroke(new BasicStroke(1f));
+            for (double x = Math.ceil(a.minXMm() / 1000) * 1000; x <= a.maxXMm(); x += 1000) {
+                g.draw(new Line2D.Double(t.toScreenX(x), y0, t.toScreenX(x), y1));
+            }
+            for (double y = Math.ceil(a.minYMm() / 1000) * 1000; y <= a.maxYMm(); y += 1000) {
+                g.draw(new Line2D.Double(x0, t.toScreenY(y), x1, t.toScreenY(y)));
+            }
+        }
+        g.setColor(OUTLINE);
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new Rectangle2D.Double(x0, y0, x1 - x0, y1 - y0));
+    }
+
+    private static Path2D polygon(ObstacleShape o, ViewTransform t) {
+        Path2D.Double p = new Path2D.Double();
+        p.moveTo(t.toScreenX(o.x(0)), t.toScreenY(o.y(0)));
+        for (int v = 1; v < o.vertexCount(); v++) {
+            p.lineTo(t.toScreenX(o.x(v)), t.toScreenY(o.y(v)));
+        }
+        p.closePath();
+        return p;
+    }
+
+    private static void drawTrail(Graphics2D g, double[] trail, ViewTransform t, Color c) {
+        if (trail.length < 4) {
+            return;
+        }
+        Path2D.Double p = new Path2D.Double();
+        p.moveTo(t.toScreenX(trail[0]), t.toScreenY(trail[1]));
+        for (int k = 2; k < trail.length; k += 2) {
+            p.lineTo(t.toScreenX(trail[k]), t.toScreenY(trail[k + 1]));
+        }
+        g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 90));
+        g.setStroke(new BasicStroke(1.5f));
+        g.draw(p);
+    }
+
+    private static void drawSonar(Graphics2D g, List<SonarSpec> sonars, PoseUpdate poses, int i, ViewTransform t,
+            Color c) {
+        double[] ranges = poses.sonarMm(i);
+        if (ranges.length != sonars.size()) {
+            return;
+        }
+        double h = Math.toRadians(poses.headingDeg(i));
+        double cos = Math.cos(h);
+        double sin = Math.sin(h);
+        g.setStroke(new BasicStroke(1f));
+        for (int k = 0; k < ranges.length; k++) {
+            SonarSpec s = sonars.get(k);
+            double ox = poses.xMm(i) + s.xMm() * cos - s.yMm() * sin;
+            double oy = poses.yMm(i) + s.xMm() * sin + s.yMm() * cos;
+            double axis = h + Math.toRadians(s.angleDeg());
+            double half = Math.toRadians(s.coneDeg() / 2);
+            double r = ranges[k];
+            Path2D.Double cone = new Path2D.Double();
+            cone.moveTo(t.toScreenX(ox), t.toScreenY(oy));
+            cone.lineTo(t.toScreenX(ox + r * Math.cos(axis - half)), t.toScreenY(oy + r * Math.sin(axis - half)));
+            cone.lineTo(t.toScreenX(ox + r * Math.cos(axis + half)), t.toScreenY(oy + r * Math.sin(axis + half)));
+            cone.closePath();
+            g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), r < s.maxRangeMm() ? 45 : 18));
+            g.fill(cone);
+        }
+    }
+
+    private static void drawRobot(Graphics2D g, Scene s, int i, ViewTransform t, boolean names) {
+        PoseUpdate p = s.poses();
+        double r = s.robots().get(i).radiusMm() * t.scale();
+        double cx = t.toScreenX(p.xMm(i));
+        double cy = t.toScreenY(p.yMm(i));
+        Ellipse2D body = new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r);
+        g.setColor(robotColor(i));
+        g.fill(body);
+        g.setColor(OUTLINE);
+        g.setStroke(new BasicStroke(1.2f));
+        g.draw(body);
+        double h = Math.toRadians(p.headingDeg(i));
+        g.setStroke(new BasicStroke(2f));
+        g.draw(new Line2D.Double(cx, cy, cx + r * Math.cos(h), cy - r * Math.sin(h)));
+        if (names && r >= 3) {
+            g.drawString(s.names().get(i), (float) (cx + r + 2), (float) (cy - r - 2));
+        }
+    }
+}

@@ -1,0 +1,78 @@
+package robosim.viewer;
+
+import java.awt.GraphicsEnvironment;
+import java.io.IOException;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.protocol.Protocol;
+import robosim.protocol.ViewerClient;
+
+/** {@code scripts/viewer2d.sh HOST 3000}: a window onto a running Environment. */
+@Command(name = "viewer2d.sh", mixinStandardHelpOptions = true,
+        description = "Connects to an Environment's viewer port and draws the arena, obstacles and robots "
+                + "(1 unit = 1 m). Any number of viewers may watch at once.")
+public final class Viewer2DMain implements Callable<Integer> {
+    @Parameters(index = "0", defaultValue = "localhost", description = "Environment host (default: ${DEFAULT-VALUE}).")
+    String host;
+
+    @Parameters(index = "1", defaultValue = "" + Protocol.DEFAULT_VIEWER_PORT,
+            description = "Environment viewer port (default: ${DEFAULT-VALUE}).")
+    int port;
+
+    @Option(names = "--sonar", description = "Draw sonar cones from the start (key s toggles).")
+    boolean sonar;
+
+    @Option(names = "--no-trails", description = "Do not draw trails at first (key t toggles).")
+    boolean noTrails;
+
+    @Option(names = "--fps", defaultValue = "30", description = "Frames per second (default: ${DEFAULT-VALUE}).")
+    int fps;
+
+    @Option(names = "--connect-timeout-s", defaultValue = "30",
+            description = "Keep trying to connect for this long (default: ${DEFAULT-VALUE}).")
+    int connectTimeoutS;
+
+    @Override
+    public Integer call() throws Exception {
+        if (GraphicsEnvironment.isHeadless()) {
+            System.err.println("viewer2d: no display (set DISPLAY, or run without a viewer: scripts/headless.sh)");
+            return 2;
+        }
+        if (fps < 1 || fps > 240) {
+            System.err.println("viewer2d: --fps must be in 1..240, got " + fps);
+            return 2;
+        }
+        SceneFeed feed = new SceneFeed(1_000_000_000L / fps);
+        ViewerClient client;
+        try {
+            client = ViewerClient.connect(host, port, false, connectTimeoutS * 1000L);
+        } catch (IOException e) {
+            System.err.println("viewer2d: " + e.getMessage());
+            return 1;
+        }
+        client.start(feed);
+        ViewerWindow.open("RoboSim - " + host + ":" + port, feed, new SceneRenderer.Options(true, !noTrails, sonar),
+                fps);
+        windowOpen = true;
+        return 0;
+    }
+
+    /** Set once the window is up: the process then lives until the window is closed. */
+    private boolean windowOpen;
+
+    public static void main(String[] args) {
+        Viewer2DMain app = new Viewer2DMain();
+        CommandLine cl = new CommandLine(app);
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("viewer2d: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        int code = cl.execute(args);
+        if (!app.windowOpen) {
+            System.exit(code);
+        }
+    }
+}
