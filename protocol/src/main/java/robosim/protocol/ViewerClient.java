@@ -44,12 +44,18 @@ public final class ViewerClient implements Closeable {
      */
     public static ViewerClient connect(String host, int port, boolean everyStep, long timeoutMs)
             throws IOException, InterruptedException {
+        return connect(host, port, new ViewerHello(everyStep), timeoutMs);
+    }
+
+    /** Connects and sends the given hello (for a live viewer with an update-rate cap). */
+    public static ViewerClient connect(String host, int port, ViewerHello hello, long timeoutMs)
+            throws IOException, InterruptedException {
         Socket s = Connector.connect(host, port, timeoutMs);
         if (s == null) {
             throw new IOException("cannot connect to the viewer port " + host + ":" + port);
         }
         ObjectConnection c = new ObjectConnection(s, ObjectConnection.DEFAULT_RESET_EVERY);
-        c.write(new ViewerHello(everyStep));
+        c.write(hello);
         c.flush();
         return new ViewerClient(c);
     }

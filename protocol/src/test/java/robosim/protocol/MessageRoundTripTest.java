@@ -169,7 +169,8 @@ class MessageRoundTripTest {
     void viewerMessages() throws Exception {
         ViewerHello h = roundTrip(new ViewerHello(true));
         assertTrue(h.everyStep());
-        assertEquals(OVERHEAD + 4 + 1, repeatedSize(new ViewerHello(false)));
+        assertEquals(30, roundTrip(new ViewerHello(false, 30)).maxUpdatesPerSecond());
+        assertEquals(OVERHEAD + 4 + 1 + 4, repeatedSize(new ViewerHello(false)));
 
         PoseUpdate p = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6},
                 new double[][] {{700, 800}, {}});

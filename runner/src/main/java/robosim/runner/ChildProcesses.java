@@ -66,7 +66,8 @@ final class ChildProcesses implements AutoCloseable {
     void startDetached(String name, String mainClass, List<String> args) throws IOException {
         List<String> cmd = new ArrayList<>(List.of(java, "-cp", classPath, mainClass));
         cmd.addAll(args);
-        new ProcessBuilder(cmd).redirectErrorStream(true).redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT)
+                .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
     }
 
     /** Waits up to {@code seconds} for every child; returns the names of those that failed or hung. */

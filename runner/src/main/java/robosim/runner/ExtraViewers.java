@@ -12,17 +12,19 @@ import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * Viewers connected only to measure what viewers cost the robots: live ones that read every update
- * (in this process), and frozen ones that say hello and then never read a byte.
+ * Viewers connected only to measure what viewers cost the robots: live ones that ask for updates
+ * like a Viewer2D at {@code updatesPerSecond} frames a second (0: every step) and read them in this
+ * process, and frozen ones that say hello and then never read a byte.
  */
 final class ExtraViewers implements AutoCloseable {
     private final List<ViewerClient> live = new ArrayList<>();
     private final List<Socket> frozen = new ArrayList<>();
 
-    static ExtraViewers connect(int port, int liveCount, int frozenCount) throws IOException, InterruptedException {
+    static ExtraViewers connect(int port, int liveCount, int updatesPerSecond, int frozenCount)
+            throws IOException, InterruptedException {
         ExtraViewers v = new ExtraViewers();
         for (int i = 0; i < liveCount; i++) {
-            ViewerClient c = ViewerClient.connect("127.0.0.1", port, false, 10_000);
+            ViewerClient c = ViewerClient.connect("127.0.0.1", port, new ViewerHello(false, updatesPerSecond), 10_000);
             c.start(new ViewerClient.Listener() {
                 @Override
                 public void snapshot(WorldSnapshot snapshot) {

@@ -66,6 +66,11 @@ public final class HeadlessRunner implements Callable<Integer> {
             description = "For measurement: connect this many headless live viewers (default: ${DEFAULT-VALUE}).")
     int liveViewers;
 
+    @Option(names = "--live-viewer-fps", defaultValue = "30",
+            description = "Updates a second the --live-viewers ask for, like a Viewer2D window (default: "
+                    + "${DEFAULT-VALUE}; 0 = every step).")
+    int liveViewerFps;
+
     @Option(names = "--frozen-viewers", defaultValue = "0",
             description = "For measurement: connect this many viewers that never read (default: ${DEFAULT-VALUE}).")
     int frozenViewers;
@@ -105,7 +110,7 @@ public final class HeadlessRunner implements Callable<Integer> {
             System.err.println("headless: --steps must be > 0, got " + steps);
             return 2;
         }
-        if (liveViewers < 0 || frozenViewers < 0 || !(speed >= 0)) {
+        if (liveViewers < 0 || frozenViewers < 0 || liveViewerFps < 0 || !(speed >= 0)) {
             System.err.println("headless: --speed, --live-viewers and --frozen-viewers must be >= 0");
             return 2;
         }
@@ -156,7 +161,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         String robotPort = bound.get("robots");
         int viewerPort = Integer.parseInt(bound.get("viewers"));
         ViewerClient viewer = watch(viewerPort);
-        ExtraViewers extras = ExtraViewers.connect(viewerPort, liveViewers, frozenViewers);
+        ExtraViewers extras = ExtraViewers.connect(viewerPort, liveViewers, liveViewerFps, frozenViewers);
         if (this.viewer) {
             children.startDetached("viewer2d", "robosim.viewer.Viewer2DMain",
                     List.of("127.0.0.1", Integer.toString(viewerPort)));

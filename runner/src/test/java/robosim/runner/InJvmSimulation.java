@@ -35,6 +35,13 @@ final class InJvmSimulation {
     int viewersAtEnd;
     private int liveViewers;
     private int frozenViewers;
+    /** Called on the recording viewer's thread with each update, and the viewer port. */
+    private java.util.function.BiConsumer<PoseUpdate, Integer> onUpdate = (u, port) -> { };
+
+    InJvmSimulation onUpdate(java.util.function.BiConsumer<PoseUpdate, Integer> hook) {
+        this.onUpdate = hook;
+        return this;
+    }
 
     /** Adds live viewers (reading every update) and frozen ones (never reading) to the next run. */
     InJvmSimulation withViewers(int live, int frozen) {
@@ -63,6 +70,7 @@ final class InJvmSimulation {
                 @Override
                 public void update(PoseUpdate update) {
                     updates.add(update);
+                    onUpdate.accept(update, ports[1]);
                 }
             });
             List<ViewerClient> lives = new ArrayList<>();

@@ -8,6 +8,8 @@ import org.junit.jupiter.api.Test;
 import robosim.environment.core.WorldSpec;
 import robosim.examples.BackAndForth;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.WorldSnapshot;
 
 /**
  * Three viewers on a 10-robot run of 5000 steps, one of them never reading from its socket: the
@@ -37,5 +39,46 @@ class ViewerIntegrationTest {
                 assertEquals(180, last.headingDeg(i));
             }
         }
+    }
+
+    @Test
+    void aViewerJoiningMidRunGetsTheSnapshotThenEveryUpdateWithoutAGap() throws Exception {
+        java.util.concurrent.CompletableFuture<ViewerClient> late = new java.util.concurrent.CompletableFuture<>();
+        List<Long> lateSteps = java.util.Collections.synchronizedList(new java.util.ArrayList<>());
+        long[] snapshotStep = {Long.MIN_VALUE};
+        InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .onUpdate((u, port) -> {
+                    if (u.step() == 500) {
+                        // join from another thread while the run goes on
+                        new Thread(() -> {
+                            try {
+                                ViewerClient v = ViewerClient.connect("127.0.0.1", port, true, 10_000);
+                                v.start(new ViewerClient.Listener() {
+                                    @Override
+                                    public void snapshot(WorldSnapshot s) {
+                                        snapshotStep[0] = s.step();
+                                    }
+
+                                    @Override
+                                    public void update(PoseUpdate update) {
+                                        lateSteps.add(update.step());
+                                    }
+                                });
+                                late.complete(v);
+                            } catch (Exception e) {
+                                late.completeExceptionally(e);
+                            }
+                        }).start();
+                    }
+                })
+                .run(2000, true, BackAndForth::new);
+        ViewerClient v = late.get(30, java.util.concurrent.TimeUnit.SECONDS);
+        assertEquals("completed 2000 steps", v.awaitEnd(30, java.util.concurrent.TimeUnit.SECONDS).reason());
+        assertTrue(snapshotStep[0] >= 500 && snapshotStep[0] < 1999, "joined mid-run at " + snapshotStep[0]);
+        assertEquals(1999 - snapshotStep[0], lateSteps.size(), "every step after the snapshot");
+        for (int i = 0; i < lateSteps.size(); i++) {
+            assertEquals(snapshotStep[0] + 1 + i, lateSteps.get(i), "no gap, no repeat");
+        }
+        assertTrue(sim.summary.completed());
     }
 }

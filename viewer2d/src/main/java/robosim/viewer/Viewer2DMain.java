@@ -9,6 +9,7 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.protocol.Protocol;
 import robosim.protocol.ViewerClient;
+import robosim.protocol.ViewerHello;
 
 /** {@code scripts/viewer2d.sh HOST 3000}: a window onto a running Environment. */
 @Command(name = "viewer2d.sh", mixinStandardHelpOptions = true,
@@ -48,7 +49,7 @@ public final class Viewer2DMain implements Callable<Integer> {
         SceneFeed feed = new SceneFeed(1_000_000_000L / fps);
         ViewerClient client;
         try {
-            client = ViewerClient.connect(host, port, false, connectTimeoutS * 1000L);
+            client = ViewerClient.connect(host, port, new ViewerHello(false, fps), connectTimeoutS * 1000L);
         } catch (IOException e) {
             System.err.println("viewer2d: " + e.getMessage());
             return 1;

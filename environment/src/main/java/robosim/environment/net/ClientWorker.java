@@ -50,6 +50,7 @@ abstract class ClientWorker implements Runnable {
         String why = "finished";
         try {
             socket.setSoTimeout(coordinator.settings().handshakeTimeoutMs());
+            configure(socket);
             connection = new ObjectConnection(socket, coordinator.settings().resetEvery());
             serve();
         } catch (SocketTimeoutException e) {
@@ -79,6 +80,10 @@ abstract class ClientWorker implements Runnable {
             }
             exited(why);
         }
+    }
+
+    /** Socket options for this kind of client, set before the streams are opened. */
+    protected void configure(Socket s) throws IOException {
     }
 
     /** The client's whole session; returns or throws when it is over. */

@@ -13,19 +13,35 @@ import robosim.protocol.WorldSnapshot;
  * Serves one viewer: the snapshot, then pose updates, from its own thread. The step thread only
  * {@link #offer}s the newest update. A live viewer holds at most one pending update (newer ones
  * replace it), so a slow or frozen viewer never slows the robots and its memory stays bounded. A
- * recording viewer holds up to {@link #RECORDING_BACKLOG} and, past that, makes the step wait.
+ * recording viewer holds up to {@link #RECORDING_BACKLOG} and, past that, makes the step wait. A
+ * live viewer that asked for at most n updates a second gets the newest pose at most every 1/n s,
+ * and the step thread wakes its worker only when the worker is waiting for data.
  */
 final class ViewerClientWorker extends ClientWorker {
     static final int RECORDING_BACKLOG = 1024;
+    /**
+     * Kernel send buffer for a viewer: enough for dozens of updates, so a live viewer never waits on
+     * it, while a viewer that stops reading blocks its worker after this much instead of after the
+     * megabytes loopback would otherwise allow (until then its worker would wake every step).
+     */
+    static final int SEND_BUFFER_BYTES = 64 * 1024;
 
     private final ArrayDeque<PoseUpdate> pending = new ArrayDeque<>();
     private boolean everyStep;
+    private long intervalNanos;
+    private long nextAllowed;
+    private boolean waitingForData;
     private boolean closed;
     private SimulationEnd end;
     private int maxPending;
 
     ViewerClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
         super(coordinator, socket, "viewer-worker[" + serial + "]");
+    }
+
+    @Override
+    protected void configure(Socket s) throws IOException {
+        s.setSendBufferSize(SEND_BUFFER_BYTES);
     }
 
     @Override
@@ -41,6 +57,8 @@ final class ViewerClientWorker extends ClientWorker {
         }
         synchronized (this) {
             everyStep = hello.everyStep();
+            intervalNanos = everyStep || hello.maxUpdatesPerSecond() == 0 ? 0
+                    : 1_000_000_000L / hello.maxUpdatesPerSecond();
         }
         connection.setReadTimeoutMs(0);
         WorldSnapshot snapshot = coordinator.addViewer(this);
@@ -73,7 +91,9 @@ final class ViewerClientWorker extends ClientWorker {
         }
         pending.addLast(update);
         maxPending = Math.max(maxPending, pending.size());
-        notifyAll();
+        if (waitingForData) {
+            notifyAll();
+        }
     }
 
     synchronized void end(SimulationEnd message) {
@@ -81,13 +101,30 @@ final class ViewerClientWorker extends ClientWorker {
         notifyAll();
     }
 
+    /** The next thing to send: an update (at most one per interval for a capped live viewer), or the end. */
     private synchronized Object take() throws InterruptedException {
-        while (pending.isEmpty() && end == null) {
-            wait();
+        while (true) {
+            if (pending.isEmpty() && end != null) {
+                return end;
+            }
+            long early = nextAllowed - System.nanoTime();
+            if (early > 0) {
+                wait(early / 1_000_000, (int) (early % 1_000_000));
+                continue;
+            }
+            if (!pending.isEmpty()) {
+                nextAllowed = intervalNanos == 0 ? 0 : System.nanoTime() + intervalNanos;
+                PoseUpdate next = pending.pollFirst();
+                notifyAll();
+                return next;
+            }
+            waitingForData = true;
+            try {
+                wait();
+            } finally {
+                waitingForData = false;
+            }
         }
-        Object next = pending.isEmpty() ? end : pending.pollFirst();
-        notifyAll();
-        return next;
     }
 
     synchronized boolean recording() {
