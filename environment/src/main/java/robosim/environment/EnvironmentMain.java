@@ -98,6 +98,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]);
         System.out.flush();
         coordinator.awaitEnd();
+        coordinator.awaitViewersDone(5000);
         ClientWorkerCoordinator.Summary s = coordinator.summary();
         System.out.println(summaryLine(s));
         System.out.flush();

@@ -33,7 +33,7 @@ public final class ObjectConnection implements Closeable {
     private final ObjectOutputStream out;
     private final ObjectInputStream in;
     private final MessageBudgetInputStream budget;
-    private final ProtocolFilter filter = new ProtocolFilter();
+    private final ProtocolFilter filter;
     private final int resetEvery;
     private final String peer;
     private int sinceReset;
@@ -45,6 +45,11 @@ public final class ObjectConnection implements Closeable {
      * @param resetEvery messages between resets; 0 never resets (for measurement only)
      */
     public ObjectConnection(Socket socket, int resetEvery) throws IOException {
+        this(socket, resetEvery, new ProtocolFilter());
+    }
+
+    ObjectConnection(Socket socket, int resetEvery, ProtocolFilter filter) throws IOException {
+        this.filter = filter;
         if (resetEvery < 0) {
             throw new IllegalArgumentException("resetEvery must be >= 0, got " + resetEvery);
         }
@@ -89,8 +94,8 @@ public final class ObjectConnection implements Closeable {
     }
 
     /**
-     * Reads a step number written by {@link #writeStep}. An object where a step number belongs is a
-     * {@link ProtocolException}; a stream that ends is an {@link EOFException}.
+     * Reads a step number written by {@link #writeStep}. The end of the stream, and (as the JDK
+     * reports it) an object where a step number belongs, are an {@link EOFException}.
      */
     public long readStep() throws IOException {
         budget.startMessage();
@@ -104,6 +109,7 @@ public final class ObjectConnection implements Closeable {
     /** Reads one message of the expected type; anything else is a {@link ProtocolException}. */
     public <T extends Externalizable> T read(Class<T> type) throws IOException {
         budget.startMessage();
+        filter.beginMessage();
         Object o;
         try {
             o = in.readUnshared();

@@ -6,8 +6,10 @@ import java.util.Set;
 /**
  * The allow-list on every object input stream: only the protocol's own message classes, at most
  * {@link #MAX_DEPTH} deep, no arrays longer than {@link #MAX_ARRAY_LENGTH} and at most
- * {@link #MAX_REFERENCES} live handles (the writer resets its stream long before that). One
- * instance per stream: it remembers why it last refused, for the connection's error message.
+ * {@link #MAX_REFERENCES_PER_MESSAGE} objects read for one message. The JDK's reference count is a
+ * running total over the stream's life (a reset does not lower it), so the bound is measured from
+ * where the current message began ({@link #beginMessage}). One instance per stream: it remembers why
+ * it last refused, for the connection's error message.
  */
 public final class ProtocolFilter implements ObjectInputFilter {
     public static final Set<Class<?>> MESSAGE_CLASSES = Set.of(
@@ -18,17 +20,39 @@ public final class ProtocolFilter implements ObjectInputFilter {
     public static final long MAX_DEPTH = 2;
     /** No message sends an array object; primitive arrays up to this length are tolerated. */
     public static final long MAX_ARRAY_LENGTH = 1 << 16;
-    public static final long MAX_REFERENCES = 1_000_000;
+    /** Protocol messages are one object each; this leaves room and stops a reference flood. */
+    public static final long MAX_REFERENCES_PER_MESSAGE = 1_000;
 
+    private final long maxReferencesPerMessage;
+    private boolean messageStart = true;
+    private long referencesAtStart;
     private volatile String lastRejection = "";
+
+    public ProtocolFilter() {
+        this(MAX_REFERENCES_PER_MESSAGE);
+    }
+
+    ProtocolFilter(long maxReferencesPerMessage) {
+        this.maxReferencesPerMessage = maxReferencesPerMessage;
+    }
+
+    /** Called by the reader before each message: references are counted from here. */
+    public void beginMessage() {
+        messageStart = true;
+    }
 
     @Override
     public Status checkInput(FilterInfo info) {
         if (info.depth() > MAX_DEPTH) {
             return reject("object graph deeper than " + MAX_DEPTH + ": " + info.depth());
         }
-        if (info.references() > MAX_REFERENCES) {
-            return reject("more than " + MAX_REFERENCES + " live references: " + info.references());
+        if (messageStart) {
+            referencesAtStart = info.references();
+            messageStart = false;
+        }
+        long inMessage = info.references() - referencesAtStart;
+        if (inMessage > maxReferencesPerMessage) {
+            return reject("more than " + maxReferencesPerMessage + " objects in one message: " + inMessage);
         }
         Class<?> c = info.serialClass();
         if (c == null) {

@@ -54,10 +54,15 @@ public final class ViewerClient implements Closeable {
         if (s == null) {
             throw new IOException("cannot connect to the viewer port " + host + ":" + port);
         }
-        ObjectConnection c = new ObjectConnection(s, ObjectConnection.DEFAULT_RESET_EVERY);
-        c.write(hello);
-        c.flush();
-        return new ViewerClient(c);
+        try {
+            ObjectConnection c = new ObjectConnection(s, ObjectConnection.DEFAULT_RESET_EVERY);
+            c.write(hello);
+            c.flush();
+            return new ViewerClient(c);
+        } catch (IOException | RuntimeException e) {
+            s.close();
+            throw e;
+        }
     }
 
     /** Starts the reading thread. */

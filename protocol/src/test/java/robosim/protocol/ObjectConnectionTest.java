@@ -70,6 +70,29 @@ class ObjectConnectionTest {
     }
 
     @Test
+    void theReferenceBoundIsPerMessageNotPerStreamLife() throws Exception {
+        // with a bound of 100 objects per message, 5,000 one-object messages must all pass: the JDK's
+        // count only ever grows, so a bound on it would end every connection after 100 messages
+        CompletableFuture<ObjectConnection> a = CompletableFuture.supplyAsync(() -> open(clientSocket, 64));
+        ObjectConnection b = new ObjectConnection(serverSocket, 64, new ProtocolFilter(100));
+        ObjectConnection c = a.get(10, TimeUnit.SECONDS);
+        CompletableFuture<Void> writer = CompletableFuture.runAsync(() -> {
+            try {
+                for (int k = 0; k < 5000; k++) {
+                    c.write(new StepRequest(k, 0, 0, false, List.of()));
+                }
+                c.flush();
+            } catch (IOException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        for (int k = 0; k < 5000; k++) {
+            assertEquals(k, b.read(StepRequest.class).step());
+        }
+        writer.get(10, TimeUnit.SECONDS);
+    }
+
+    @Test
     void resetIsWrittenEveryNMessages() throws Exception {
         int messages = 10;
         int descriptor = descriptorBytes();

@@ -82,6 +82,20 @@ abstract class ClientWorker implements Runnable {
         }
     }
 
+    /** Closes the connection, so this worker's blocked read or write ends. Any thread. */
+    final void drop() {
+        ObjectConnection c = connection;
+        if (c != null) {
+            c.close();
+        } else {
+            try {
+                socket.close();
+            } catch (IOException ignored) {
+                // already gone
+            }
+        }
+    }
+
     /** Socket options for this kind of client, set before the streams are opened. */
     protected void configure(Socket s) throws IOException {
     }

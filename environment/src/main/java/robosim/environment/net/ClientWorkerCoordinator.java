@@ -14,7 +14,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.Condition;
+import java.util.concurrent.locks.LockSupport;
 import java.util.concurrent.locks.ReentrantLock;
 import java.util.function.Function;
 import org.slf4j.Logger;
@@ -24,6 +24,8 @@ import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.Protocol;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotWelcome;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
@@ -73,7 +75,6 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final int robotCount;
     private final List<String> robotNames;
     private final ReentrantLock lock = new ReentrantLock();
-    private final Condition changed = lock.newCondition();
     private final CountDownLatch endedLatch = new CountDownLatch(1);
     private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
     private final List<ServerSocket> servers = new ArrayList<>();
@@ -85,7 +86,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final boolean[] begun;
     private boolean robotsTold;
     private int registered;
-    private GeometryClientWorker geometry;
+    private volatile GeometryClientWorker geometry;
     private State state = State.WAITING;
     private SimulationCore core;
     private int activeCount;
@@ -165,6 +166,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 } catch (IOException e) {
                     if (!server.isClosed()) {
                         LOG.warn("{}: accept failed: {}", threadName, e.getMessage());
+                        LockSupport.parkNanos(100_000_000L); // back off: e.g. out of file descriptors
                     }
                 }
             }
@@ -200,13 +202,15 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     // ---- registration -------------------------------------------------------------------------
 
-    /** Registers a robot; returns null when accepted, else the reason it is refused. */
-    String register(RobotClientWorker worker, RobotHello hello) {
+    /**
+     * Registers a robot and, under the lock, sends its welcome; returns null when accepted, else the
+     * reason it is refused (the caller sends the refusal).
+     */
+    String register(RobotClientWorker worker, RobotHello hello, int index) throws IOException {
         if (hello.protocolVersion() != Protocol.VERSION) {
             return "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                     + Protocol.VERSION + ")";
         }
-        int index = spec.indexOf(hello.name());
         if (index < 0) {
             return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
                     + String.join(", ", robotNames) + ")";
@@ -224,6 +228,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (robots[index] != null) {
                 return "robot " + hello.name() + " is already connected";
             }
+            WorldSpec.RobotSpec r = spec.robots().get(index);
+            worker.welcome(RobotWelcome.accepted(spec.timeStepMs(), r.xMm(), r.yMm(), r.headingDeg(), robotNames));
             robots[index] = worker;
             properties[index] = hello.properties();
             registered++;
@@ -266,7 +272,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             try {
                 geometry.sendWorld(core.map().geometryWorld());
             } catch (IOException e) {
-                LOG.warn("could not send the world to Geometry: {}", e.getMessage());
+                LOG.warn("could not send the world to Geometry ({}); waiting for another", e.getMessage());
+                geometry.drop();
                 geometry = null;
                 return;
             }
@@ -277,35 +284,25 @@ public final class ClientWorkerCoordinator implements Closeable {
         startNanos = System.nanoTime();
         LOG.info("all {} robot(s) connected: running{}", robotCount,
                 settings.maxSteps() > 0 ? " for " + settings.maxSteps() + " steps" : "");
-        changed.signalAll();
-    }
-
-    /**
-     * Blocks until the run starts, then sends this robot the first step number (under the lock, so
-     * no other thread writes to it meanwhile). Returns that step, or -1 if the run ended first.
-     */
-    long awaitStart(RobotClientWorker worker, int index) throws InterruptedException, IOException {
-        lock.lock();
-        try {
-            while (state == State.WAITING) {
-                changed.await();
+        for (int i = 0; i < robotCount; i++) {
+            try {
+                robots[i].begin(0);
+                begun[i] = true;
+            } catch (IOException e) {
+                depart(i, "could not send it the first step: " + e.getMessage());
+                robots[i].drop();
             }
-            if (state != State.RUNNING || robots[index] != worker || !active[index]) {
-                return -1;
-            }
-            worker.begin(stepsDone);
-            begun[index] = true;
-            return stepsDone;
-        } finally {
-            lock.unlock();
+        }
+        if (activeCount == 0) {
+            finish("every robot has left", false);
         }
     }
 
-    /** True while robot {@code index} takes part in a running simulation. */
+    /** True while robot {@code index} may still send requests: before the start, or while it takes part. */
     boolean accepts(int index) {
         lock.lock();
         try {
-            return state == State.RUNNING && active[index];
+            return state == State.WAITING || (state == State.RUNNING && active[index]);
         } finally {
             lock.unlock();
         }
@@ -317,11 +314,18 @@ public final class ClientWorkerCoordinator implements Closeable {
      * Hands in robot {@code index}'s request for step k and returns at once, unless it is the last
      * to arrive: then this thread runs the step and delivers every robot's response.
      */
-    void processMessage(int index, long k, StepRequest request) throws InterruptedException {
+    void processMessage(int index, long k, StepRequest request) throws InterruptedException, ProtocolException {
         lock.lock();
         try {
-            if (state != State.RUNNING || !active[index] || stepsDone != k || requests[index] != null) {
+            if (state == State.WAITING) {
+                throw new ProtocolException("sent a request before the simulation started");
+            }
+            if (state != State.RUNNING || !active[index]) {
                 return;
+            }
+            if (stepsDone != k || requests[index] != null) {
+                throw new ProtocolException("sent a request for step " + k + " before its response to step "
+                        + (stepsDone - 1));
             }
             requests[index] = request;
             arrived++;
@@ -496,13 +500,49 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     // ---- the end -------------------------------------------------------------------------------
 
-    /** Ends the simulation (idempotent): robots, viewers and Geometry are told why. */
+    /**
+     * Ends the simulation (idempotent): robots, viewers and Geometry are told why. If a step holds
+     * the lock for more than {@link #STOP_GRACE_MS} (Geometry hung, a recording viewer stopped reading),
+     * their connections are closed first so the step fails and lets go.
+     */
     public void stop(String reason) {
-        lock.lock();
+        boolean locked;
+        try {
+            locked = lock.tryLock(STOP_GRACE_MS, TimeUnit.MILLISECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            locked = false;
+        }
+        if (!locked) {
+            LOG.warn("the step in progress is stuck; closing the Geometry and viewer connections to stop");
+            GeometryClientWorker g = geometry;
+            if (g != null) {
+                g.drop();
+            }
+            for (ViewerClientWorker v : viewers) {
+                v.drop();
+            }
+            lock.lock();
+        }
         try {
             finish(reason, false);
         } finally {
             lock.unlock();
+        }
+    }
+
+    private static final long STOP_GRACE_MS = 2000;
+
+    /**
+     * After the end: waits up to {@code timeoutMs} for viewer workers to send what they hold (a
+     * recording viewer may still be writing its backlog), so a process that exits next loses nothing.
+     */
+    public void awaitViewersDone(long timeoutMs) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+        for (ViewerClientWorker v : List.copyOf(viewers)) {
+            if (!v.awaitDone(Math.max(0, deadline - System.nanoTime()))) {
+                LOG.warn("{} did not take the end of the simulation within {} ms", v.name(), timeoutMs);
+            }
         }
     }
 
@@ -515,7 +555,6 @@ public final class ClientWorkerCoordinator implements Closeable {
         endReason = reason;
         completed = asPlanned;
         endNanos = System.nanoTime();
-        changed.signalAll();
         SimulationEnd end = endMessage();
         if (!robotsTold) {
             robotsTold = true;

@@ -23,6 +23,7 @@ final class GeometryClientWorker extends ClientWorker implements GeometryService
     @Override
     protected void serve() throws IOException, InterruptedException {
         GeometryHello hello = connection.read(GeometryHello.class);
+        connection.setReadTimeoutMs(0);
         String refusal = hello.protocolVersion() != Protocol.VERSION
                 ? "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                         + Protocol.VERSION + ")"
@@ -33,7 +34,6 @@ final class GeometryClientWorker extends ClientWorker implements GeometryService
             connection.flush();
             return;
         }
-        connection.setReadTimeoutMs(0);
         coordinator.awaitEnd();
     }
 

@@ -2,8 +2,8 @@ package robosim.environment.net;
 
 import java.io.IOException;
 import java.net.Socket;
-import robosim.environment.core.WorldSpec;
 import robosim.protocol.Protocol;
+import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
@@ -11,9 +11,11 @@ import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * Serves one robot's Hardware Simulator. Its thread does the handshake, sends the first step number
- * and then only reads: each request goes to the coordinator, which runs the step on the thread of
- * the last robot to arrive. That thread writes every robot's response through {@link #deliver}
+ * Serves one robot's Hardware Simulator. Its thread does the handshake and then only reads: each
+ * request goes to the coordinator, which runs the step on the thread of the last robot to arrive.
+ * Every write after the hello (welcome, first step, responses, end) happens under the coordinator's
+ * lock, from whichever thread holds it. A request out of turn, for the wrong step or with a
+ * non-finite action drops this robot alone. That thread writes every robot's response through {@link #deliver}
  * together with the next step number (or the end), in one flush; so between steps every worker
  * thread stays parked in its socket read instead of waking up to write.
  */
@@ -27,32 +29,41 @@ final class RobotClientWorker extends ClientWorker {
     @Override
     protected void serve() throws IOException, InterruptedException {
         RobotHello hello = connection.read(RobotHello.class);
-        String refusal = coordinator.register(this, hello);
+        int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
+        String refusal = coordinator.register(this, hello, wanted);
         if (refusal != null) {
             coordinator.log().warn("{} refused: {}", name(), refusal);
             connection.write(RobotWelcome.refused(refusal));
             connection.flush();
             return;
         }
+        index = wanted;
         rename("robot-worker[" + hello.name() + "]");
-        index = coordinator.spec().indexOf(hello.name());
-        WorldSpec.RobotSpec r = coordinator.spec().robots().get(index);
-        connection.write(RobotWelcome.accepted(coordinator.spec().timeStepMs(), r.xMm(), r.yMm(), r.headingDeg(),
-                coordinator.robotNames()));
-        connection.flush();
         connection.setReadTimeoutMs(0);
-        long k = coordinator.awaitStart(this, index);
-        if (k < 0) {
-            return;
-        }
+        // read at once, also while waiting for the others: a robot that leaves before the start is noticed
+        long k = 0;
         while (coordinator.accepts(index)) {
             StepRequest request = connection.read(StepRequest.class);
+            if (request.step() != k) {
+                throw new ProtocolException("sent a request for step " + request.step() + " where step " + k
+                        + " was due");
+            }
+            if (!Double.isFinite(request.moveMm()) || !Double.isFinite(request.turnDeg())) {
+                throw new ProtocolException("asked to move " + request.moveMm() + " mm and turn "
+                        + request.turnDeg() + " deg");
+            }
             coordinator.processMessage(index, k, request);
             k++;
         }
     }
 
-    /** Sends the first step number; called by this worker's thread, under the coordinator's lock. */
+    /** Sends the welcome; called by the coordinator under its lock when the robot is accepted. */
+    void welcome(RobotWelcome welcome) throws IOException {
+        connection.write(welcome);
+        connection.flush();
+    }
+
+    /** Sends the first step number; called by the coordinator under its lock when the run starts. */
     void begin(long firstStep) throws IOException {
         connection.writeStep(firstStep);
         connection.flush();
@@ -84,14 +95,9 @@ final class RobotClientWorker extends ClientWorker {
             }
             connection.write(end);
             connection.flush();
-        } catch (IOException e) {
+        } catch (IOException | RuntimeException e) {
             coordinator.log().info("{}: could not send the end of the simulation: {}", name(), e.getMessage());
         }
-    }
-
-    /** Closes the connection, so this worker's blocked read ends. */
-    void drop() {
-        connection.close();
     }
 
     @Override

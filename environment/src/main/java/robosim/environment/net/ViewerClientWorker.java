@@ -29,7 +29,9 @@ final class ViewerClientWorker extends ClientWorker {
     private final ArrayDeque<PoseUpdate> pending = new ArrayDeque<>();
     private boolean everyStep;
     private long intervalNanos;
+    private boolean capped;
     private long nextAllowed;
+    private final java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(1);
     private boolean waitingForData;
     private boolean closed;
     private SimulationEnd end;
@@ -107,13 +109,16 @@ final class ViewerClientWorker extends ClientWorker {
             if (pending.isEmpty() && end != null) {
                 return end;
             }
-            long early = nextAllowed - System.nanoTime();
+            long early = capped ? nextAllowed - System.nanoTime() : 0;
             if (early > 0) {
                 wait(early / 1_000_000, (int) (early % 1_000_000));
                 continue;
             }
             if (!pending.isEmpty()) {
-                nextAllowed = intervalNanos == 0 ? 0 : System.nanoTime() + intervalNanos;
+                if (intervalNanos > 0) {
+                    capped = true;
+                    nextAllowed = System.nanoTime() + intervalNanos;
+                }
                 PoseUpdate next = pending.pollFirst();
                 notifyAll();
                 return next;
@@ -131,16 +136,14 @@ final class ViewerClientWorker extends ClientWorker {
         return everyStep;
     }
 
-    /** Closes the connection; a worker blocked writing to a frozen viewer then ends. */
-    void drop() {
-        if (connection != null) {
-            connection.close();
-        }
-    }
-
     /** The most updates this viewer ever had waiting. */
     synchronized int maxPending() {
         return maxPending;
+    }
+
+    /** Waits until this worker has sent everything it holds (or its connection is gone). */
+    boolean awaitDone(long nanos) throws InterruptedException {
+        return done.await(nanos, java.util.concurrent.TimeUnit.NANOSECONDS);
     }
 
     @Override
@@ -151,5 +154,6 @@ final class ViewerClientWorker extends ClientWorker {
             notifyAll();
         }
         coordinator.removeViewer(this, why);
+        done.countDown();
     }
 }
