@@ -288,6 +288,7 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     public static void main(String[] args) {
         CommandLine cl = new CommandLine(new HeadlessRunner());
+        cl.setOverwrittenOptionsAllowed(true); // demo.sh's defaults, then the user's: the last one wins
         cl.setParameterExceptionHandler((ex, a) -> {
             System.err.println("headless: " + ex.getMessage() + " (see --help)");
             return 2;
