@@ -109,9 +109,10 @@ public final class EnvironmentMain implements Callable<Integer> {
     public static String summaryLine(ClientWorkerCoordinator.Summary s) {
         double wall = Math.max(s.wallSeconds(), 1e-9);
         return String.format(java.util.Locale.ROOT,
-                "summary steps=%d robots=%d wall_s=%.3f steps_per_s=%.1f robot_steps_per_s=%.1f messages=%d",
+                "summary steps=%d robots=%d wall_s=%.3f steps_per_s=%.1f robot_steps_per_s=%.1f messages=%d"
+                        + " messages_out_of_range=%d messages_refused=%d",
                 s.steps(), s.robots(), s.wallSeconds(), s.steps() / wall, s.steps() * s.robots() / wall,
-                s.messagesDelivered());
+                s.messagesDelivered(), s.messagesOutOfRange(), s.messagesRefused());
     }
 
     public static void main(String[] args) {

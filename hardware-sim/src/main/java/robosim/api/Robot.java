@@ -53,8 +53,15 @@ public interface Robot {
     /** What the robot touched during its last move or turn, or "" if nothing. */
     String lastContact();
 
-    /** Sends a text message to the robot named {@code to}; it goes out with the robot's next step. */
+    /**
+     * Sends a text message to the robot named {@code to}; it goes out with the robot's next step.
+     * Text longer than the wire allows (65,535 bytes as UTF-8) is refused here at once; the world's
+     * own, smaller limit and unknown recipients are reported back by the simulator.
+     */
     void send(String to, String text);
+
+    /** Sends a text message to every other robot (within communication range, if the world has one). */
+    void broadcast(String text);
 
     /** The oldest message not yet received, or null if there is none. */
     Message receive();

@@ -4,6 +4,7 @@ import java.util.List;
 import robosim.api.Message;
 import robosim.api.Robot;
 import robosim.protocol.CommEvent;
+import robosim.protocol.Limits;
 import robosim.protocol.SonarSpec;
 
 /** The {@link Robot} the control code gets: blocking calls become {@link Command}s on the link. */
@@ -135,7 +136,17 @@ final class SimulatedRobot implements Robot {
         if (to == null || text == null) {
             throw new IllegalArgumentException("recipient and text must not be null");
         }
+        int bytes = Limits.utfLength(text);
+        if (bytes > Limits.MAX_UTF_BYTES || Limits.utfLength(to) > Limits.MAX_UTF_BYTES) {
+            throw new IllegalArgumentException("a message of " + bytes + " bytes is more than the wire's limit of "
+                    + Limits.MAX_UTF_BYTES);
+        }
         sim.outbox.add(new CommEvent(sim.name, to, text));
+    }
+
+    @Override
+    public void broadcast(String text) {
+        send(CommEvent.EVERYONE, text);
     }
 
     @Override

@@ -6,9 +6,12 @@ import java.io.ObjectOutput;
 
 /**
  * A message from one robot's control code to another's (the original's COMMEVENT). The
- * Environment fills in {@code from}; {@code to} is a robot name. Written inline.
+ * Environment fills in {@code from}; {@code to} is a robot name or {@link #EVERYONE}. Written inline.
  */
 public record CommEvent(String from, String to, String payload) {
+    /** The recipient name that means every other robot (a broadcast). */
+    public static final String EVERYONE = "*";
+
     public CommEvent {
         if (from == null || to == null || payload == null) {
             throw new IllegalArgumentException("CommEvent fields must not be null");

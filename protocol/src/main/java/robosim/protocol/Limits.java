@@ -17,10 +17,22 @@ public final class Limits {
     public static final int MAX_MESSAGES_PER_STEP = 10_000;
     /** Sonar ranges in one geometry response. */
     public static final int MAX_RANGES = MAX_ROBOTS * 16;
+    /** Bytes a string may take on the wire ({@code writeUTF}'s own limit). */
+    public static final int MAX_UTF_BYTES = 65_535;
     /** Bytes one message may occupy on the wire (checked by {@link ObjectConnection}). */
     public static final int MAX_MESSAGE_BYTES = 64 * 1024 * 1024;
 
     private Limits() {
+    }
+
+    /** Bytes {@code s} takes as modified UTF-8 ({@code writeUTF}), without allocating. */
+    public static int utfLength(String s) {
+        int bytes = 0;
+        for (int i = 0; i < s.length(); i++) {
+            char c = s.charAt(i);
+            bytes += c >= 1 && c < 0x80 ? 1 : c < 0x800 ? 2 : 3;
+        }
+        return bytes;
     }
 
     /** Returns {@code value} if it lies in [0, max], else throws naming {@code field}. */

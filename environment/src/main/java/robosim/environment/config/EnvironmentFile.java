@@ -18,6 +18,12 @@ public final class EnvironmentFile {
     public Long timeStepMs;
     @JacksonXmlProperty(isAttribute = true)
     public Long seed;
+    /** How far messages between robots carry, metres (centre to centre); absent = everywhere. */
+    @JacksonXmlProperty(isAttribute = true)
+    public Double commRangeM;
+    /** Largest message payload in bytes; absent = 8192. */
+    @JacksonXmlProperty(isAttribute = true)
+    public Integer maxMessageBytes;
     public ArenaXml arena;
     public ObstaclesXml obstacles = new ObstaclesXml();
     @JacksonXmlElementWrapper(localName = "robots")

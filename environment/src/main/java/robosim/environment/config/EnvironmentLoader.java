@@ -102,7 +102,19 @@ public final class EnvironmentLoader {
         List<RobotSpec> robots = robots(where, xml, arena, obstacles);
         long seed = xml.seed == null ? 1L : xml.seed;
         String name = xml.name == null ? Path.of(where).getFileName().toString() : xml.name;
-        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots);
+        double range = 0;
+        if (xml.commRangeM != null) {
+            if (!(xml.commRangeM > 0) || Double.isInfinite(xml.commRangeM)) {
+                throw new EnvironmentFileException(env + " commRangeM must be > 0 m, got " + xml.commRangeM);
+            }
+            range = xml.commRangeM * MM_PER_M;
+        }
+        int maxBytes = xml.maxMessageBytes == null ? WorldSpec.DEFAULT_MAX_MESSAGE_BYTES : xml.maxMessageBytes;
+        if (maxBytes < 1 || maxBytes > robosim.protocol.Limits.MAX_UTF_BYTES) {
+            throw new EnvironmentFileException(env + " maxMessageBytes must be in 1.."
+                    + robosim.protocol.Limits.MAX_UTF_BYTES + ", got " + maxBytes);
+        }
+        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes);
     }
 
     private static double orZero(Double v) {
@@ -212,6 +224,9 @@ public final class EnvironmentLoader {
                 throw new EnvironmentFileException(where + ": <robot> number " + (out.size() + 1) + " needs a name");
             }
             String el = "<robot name=\"" + r.name + "\">";
+            if (r.name.equals(robosim.protocol.CommEvent.EVERYONE)) {
+                throw new EnvironmentFileException(where + ": " + el + " \"*\" is reserved: it addresses every robot");
+            }
             if (!names.add(r.name)) {
                 throw new EnvironmentFileException(where + ": " + el + " the name is used twice");
             }

@@ -8,19 +8,28 @@ import robosim.protocol.CommEvent;
 /**
  * Routes COMMEVENT messages between robots: a message sent in step k is delivered in the
  * recipient's response to step k, after every message sent to it before, in the order the
- * senders are listed in the world and each sender's own order. A message to an unknown or departed
- * robot is not delivered and the sender is told why.
+ * senders are listed in the world and each sender's own order. {@code to} is a robot's name, or
+ * {@link CommEvent#EVERYONE} for every other robot. A message to an unknown or departed robot, or larger than
+ * the world's limit, is not delivered and the sender is told why. With a communication range, a
+ * message to a robot farther away (centre to centre, at the start of the step) is dropped and
+ * counted, like a radio message that does not arrive; the sender is not told.
  */
 final class MessageRouter {
     private final Map<String, Integer> index;
+    private final double rangeMm;
+    private final int maxBytes;
     private final List<List<CommEvent>> inbox;
     private final List<List<String>> notices;
     private final boolean[] present;
     private long delivered;
     private long undeliverable;
+    private long outOfRange;
+    private long tooLarge;
 
-    MessageRouter(Map<String, Integer> index, int robots) {
+    MessageRouter(Map<String, Integer> index, int robots, double rangeMm, int maxBytes) {
         this.index = index;
+        this.rangeMm = rangeMm;
+        this.maxBytes = maxBytes;
         this.inbox = new ArrayList<>(robots);
         this.notices = new ArrayList<>(robots);
         for (int i = 0; i < robots; i++) {
@@ -35,8 +44,24 @@ final class MessageRouter {
         present[robot] = false;
     }
 
-    void route(int from, String fromName, List<CommEvent> messages) {
+    /** Routes robot {@code from}'s messages of this step; positions are read from {@code map}. */
+    void route(int from, String fromName, List<CommEvent> messages, EnvironmentMap map) {
         for (CommEvent m : messages) {
+            int bytes = robosim.protocol.Limits.utfLength(m.payload());
+            if (bytes > maxBytes) {
+                notice(from, "message to " + m.to() + " not sent: " + bytes + " bytes is more than the limit of "
+                        + maxBytes);
+                tooLarge++;
+                continue;
+            }
+            if (CommEvent.EVERYONE.equals(m.to())) {
+                for (int to = 0; to < present.length; to++) {
+                    if (to != from && present[to]) {
+                        deliver(from, fromName, to, map.name(to), m.payload(), map);
+                    }
+                }
+                continue;
+            }
             Integer to = index.get(m.to());
             if (to == null) {
                 notice(from, "message to " + m.to() + " not delivered: no robot of that name");
@@ -45,10 +70,18 @@ final class MessageRouter {
                 notice(from, "message to " + m.to() + " not delivered: that robot has left");
                 undeliverable++;
             } else {
-                inbox.get(to).add(new CommEvent(fromName, m.to(), m.payload()));
-                delivered++;
+                deliver(from, fromName, to, m.to(), m.payload(), map);
             }
         }
+    }
+
+    private void deliver(int from, String fromName, int to, String toName, String payload, EnvironmentMap map) {
+        if (rangeMm > 0 && Math.hypot(map.xMm(from) - map.xMm(to), map.yMm(from) - map.yMm(to)) > rangeMm) {
+            outOfRange++;
+            return;
+        }
+        inbox.get(to).add(new CommEvent(fromName, toName, payload));
+        delivered++;
     }
 
     void notice(int robot, String text) {
@@ -79,5 +112,13 @@ final class MessageRouter {
 
     long undeliverable() {
         return undeliverable;
+    }
+
+    long outOfRange() {
+        return outOfRange;
+    }
+
+    long tooLarge() {
+        return tooLarge;
     }
 }

@@ -41,7 +41,7 @@ public final class SimulationCore {
         for (int i = 0; i < robots; i++) {
             index.put(map.name(i), i);
         }
-        this.router = new MessageRouter(index, robots);
+        this.router = new MessageRouter(index, robots, spec.commRangeMm(), spec.maxMessageBytes());
         this.maxMoveMm = new double[robots];
         this.maxTurnDeg = new double[robots];
         double seconds = spec.timeStepMs() / 1000.0;
@@ -95,7 +95,7 @@ public final class SimulationCore {
                 move = bounded(i, "move", q.moveMm(), maxMoveMm[i], "mm");
                 turn = bounded(i, "turn", q.turnDeg(), maxTurnDeg[i], "deg");
                 sonar = q.wantsSonar();
-                router.route(i, map.name(i), q.messages());
+                router.route(i, map.name(i), q.messages(), map);
             }
             geometryRequest.set(i, map.xMm(i), map.yMm(i), map.headingDeg(i), turn, move, sonar);
         }
@@ -175,7 +175,13 @@ public final class SimulationCore {
         return router.delivered();
     }
 
+    /** Messages not delivered: unknown or departed recipient, or larger than the limit. */
     public long messagesUndeliverable() {
-        return router.undeliverable();
+        return router.undeliverable() + router.tooLarge();
+    }
+
+    /** Messages dropped because the recipient was out of communication range. */
+    public long messagesOutOfRange() {
+        return router.outOfRange();
     }
 }

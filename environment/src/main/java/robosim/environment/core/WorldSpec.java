@@ -8,15 +8,33 @@ import robosim.protocol.ObstacleShape;
  * An environment as loaded from its file, in world millimetres and degrees: immutable.
  *
  * @param source the file it came from, for messages
+ * @param commRangeMm how far a COMMEVENT carries, centre to centre; 0 = everywhere
+ * @param maxMessageBytes the largest payload a robot may send (modified UTF-8 bytes)
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
-        List<ObstacleShape> obstacles, List<RobotSpec> robots) {
+        List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes) {
+    /** Default payload limit: a few kilobytes, well under the wire's 65,535. */
+    public static final int DEFAULT_MAX_MESSAGE_BYTES = 8192;
+
     public WorldSpec {
         if (timeStepMs <= 0) {
             throw new IllegalArgumentException("time step must be > 0 ms, got " + timeStepMs);
         }
+        if (!(commRangeMm >= 0) || Double.isInfinite(commRangeMm)) {
+            throw new IllegalArgumentException("communication range must be >= 0 mm, got " + commRangeMm);
+        }
+        if (maxMessageBytes < 1 || maxMessageBytes > robosim.protocol.Limits.MAX_UTF_BYTES) {
+            throw new IllegalArgumentException("maxMessageBytes must be in 1.." + robosim.protocol.Limits.MAX_UTF_BYTES
+                    + ", got " + maxMessageBytes);
+        }
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
+    }
+
+    /** A world whose messages carry everywhere, with the default size limit. */
+    public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
+            List<ObstacleShape> obstacles, List<RobotSpec> robots) {
+        this(source, name, timeStepMs, seed, arena, obstacles, robots, 0, DEFAULT_MAX_MESSAGE_BYTES);
     }
 
     /** Index of the robot with this name, or -1. */

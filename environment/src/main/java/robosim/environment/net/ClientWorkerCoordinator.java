@@ -65,7 +65,7 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** How a finished run went. */
     public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
-            long messagesDelivered) {
+            long messagesDelivered, long messagesOutOfRange, long messagesRefused) {
     }
 
     private enum State { WAITING, RUNNING, ENDED }
@@ -598,7 +598,8 @@ public final class ClientWorkerCoordinator implements Closeable {
         try {
             double wall = startNanos == 0 ? 0 : ((endNanos == 0 ? System.nanoTime() : endNanos) - startNanos) / 1e9;
             return new Summary(stepsDone, robotCount, wall, endReason, completed,
-                    core == null ? 0 : core.messagesDelivered());
+                    core == null ? 0 : core.messagesDelivered(), core == null ? 0 : core.messagesOutOfRange(),
+                    core == null ? 0 : core.messagesUndeliverable());
         } finally {
             lock.unlock();
         }

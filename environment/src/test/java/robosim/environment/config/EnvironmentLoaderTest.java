@@ -126,6 +126,22 @@ class EnvironmentLoaderTest {
     }
 
     @Test
+    void messagingSettingsAreReadAndChecked() throws Exception {
+        WorldSpec s = new EnvironmentLoader().load(write(env("timeStepMs=\"500\" commRangeM=\"2.5\" maxMessageBytes=\"100\"",
+                ROBOT)));
+        assertEquals(2500, s.commRangeMm());
+        assertEquals(100, s.maxMessageBytes());
+        assertEquals(WorldSpec.DEFAULT_MAX_MESSAGE_BYTES,
+                new EnvironmentLoader().load(write(env("timeStepMs=\"500\"", ROBOT))).maxMessageBytes());
+        assertTrue(failure(env("timeStepMs=\"500\" commRangeM=\"-1\"", ROBOT))
+                .endsWith("<environment> commRangeM must be > 0 m, got -1.0"));
+        assertTrue(failure(env("timeStepMs=\"500\" maxMessageBytes=\"70000\"", ROBOT))
+                .endsWith("<environment> maxMessageBytes must be in 1..65535, got 70000"));
+        assertTrue(failure(env("timeStepMs=\"500\"", "<robots><robot name=\"*\" type=\"ArRobot\" x=\"1\" y=\"1\"/>"
+                + "</robots>")).endsWith("\"*\" is reserved: it addresses every robot"));
+    }
+
+    @Test
     void missingArenaAndNoRobots() throws Exception {
         assertTrue(failure("<environment timeStepMs=\"500\">" + ROBOT + "</environment>").contains("needs an <arena"));
         assertTrue(failure(env("timeStepMs=\"500\"", "")).contains("must name at least one <robot>"));

@@ -48,6 +48,37 @@ class SimulationCoreTest {
     }
 
     @Test
+    void aBroadcastReachesEveryOtherRobotInSenderOrder() throws Exception {
+        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        core.step(0, new StepRequest[] {req(0, 0, 0, new CommEvent("", "*", "hello all")),
+            req(0, 0, 0, new CommEvent("", "c", "b to c")), req(0, 0, 0)});
+        assertEquals(List.of(), core.response(0).inbox(), "not to the sender itself");
+        assertEquals(List.of(new CommEvent("a", "b", "hello all")), core.response(1).inbox());
+        assertEquals(List.of(new CommEvent("a", "c", "hello all"), new CommEvent("b", "c", "b to c")),
+                core.response(2).inbox());
+        assertEquals(3, core.messagesDelivered());
+    }
+
+    @Test
+    void outOfRangeMessagesAreDroppedAndCountedAndOversizedOnesRefusedWithANotice() throws Exception {
+        // a at (1, 1) m, b at (1, 3) m: 2 m apart; c at (5, 5) m: 5.66 m from a. Range 2.5 m, limit 10 bytes.
+        WorldSpec limited = new WorldSpec("mem", "t", 500, 1, SPEC.arena(), SPEC.obstacles(), SPEC.robots(), 2500, 10);
+        SimulationCore core = SimulationCore.withInProcessGeometry(limited, PROPS);
+        core.step(0, new StepRequest[] {
+            req(0, 0, 0, new CommEvent("", "b", "near"), new CommEvent("", "c", "far"),
+                    new CommEvent("", "b", "eleven char")),
+            req(0, 0, 0, new CommEvent("", "*", "all")), req(0, 0, 0)});
+        assertEquals(List.of(new CommEvent("a", "b", "near")), core.response(1).inbox());
+        assertEquals(List.of(new CommEvent("b", "a", "all")), core.response(0).inbox(), "c is 4.47 m from b");
+        assertEquals(List.of(), core.response(2).inbox());
+        assertEquals(List.of("message to b not sent: 11 bytes is more than the limit of 10"),
+                core.response(0).notices());
+        assertEquals(2, core.messagesDelivered());
+        assertEquals(2, core.messagesOutOfRange(), "a to c, and b's broadcast to c");
+        assertEquals(1, core.messagesUndeliverable());
+    }
+
+    @Test
     void movesAreAppliedWithTheSpeedLimitAndContactsAreNamed() throws Exception {
         SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
         // ArRobot max 1000 mm/s: 500 mm per 500 ms step

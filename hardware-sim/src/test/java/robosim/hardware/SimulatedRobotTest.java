@@ -1,0 +1,27 @@
+package robosim.hardware;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.protocol.CommEvent;
+
+/** What the robot API refuses at once, and what it queues for the next step. */
+class SimulatedRobotTest {
+    @Test
+    void sendQueuesBroadcastAddressesEveryoneAndOversizedTextIsRefusedAtOnce() {
+        HardwareSimulator sim = new HardwareSimulator("r1", new ArRobot());
+        SimulatedRobot robot = new SimulatedRobot(sim, List.of("r1", "r2"), 500);
+        robot.send("r2", "hi");
+        robot.broadcast("all");
+        assertEquals(List.of(new CommEvent("r1", "r2", "hi"), new CommEvent("r1", CommEvent.EVERYONE, "all")),
+                sim.outbox);
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> robot.send("r2", "x".repeat(70_000)));
+        assertTrue(e.getMessage().startsWith("a message of 70000 bytes is more than the wire's limit of 65535"),
+                e.getMessage());
+        assertEquals(2, sim.outbox.size(), "nothing half-sent");
+    }
+}
