@@ -42,6 +42,16 @@ public interface Robot {
     /** Direction of each sonar, degrees from the heading. */
     double[] sonarAnglesDeg();
 
+    /** The names of this robot's other sensors (laser, heat, bump, ... as the world configures them). */
+    List<String> sensorNames();
+
+    /**
+     * The newest reading of the sensor of that name, in its own units and order (a laser: ranges in mm
+     * from right to left; heat: one value; bump: front, left, back, right as 1 or 0); empty before the
+     * first step. An unknown name is an IllegalArgumentException.
+     */
+    double[] sensor(String name);
+
     /** Odometry: position, mm. */
     double xMm();
 

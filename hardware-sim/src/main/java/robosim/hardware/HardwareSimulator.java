@@ -49,6 +49,8 @@ public final class HardwareSimulator {
     double velocityMmPerS;
     double rotVelocityDegPerS;
     final ArrayDeque<Message> inbox = new ArrayDeque<>();
+    /** Newest plug-in sensor readings by name. */
+    final java.util.Map<String, double[]> readings = new java.util.HashMap<>();
     final List<CommEvent> outbox = new ArrayList<>();
 
     public HardwareSimulator(String name, RobotType type) {
@@ -87,12 +89,13 @@ public final class HardwareSimulator {
         if (welcome == null) {
             throw new IllegalStateException("connect first");
         }
-        SimulatedRobot api = new SimulatedRobot(this, welcome.robotNames(), welcome.timeStepMs());
+        SimulatedRobot api = new SimulatedRobot(this, welcome.robotNames(), welcome.timeStepMs(), welcome.sensors());
         Thread controlThread = new Thread(() -> runControl(control, api), "control[" + name + "]");
         controlThread.setDaemon(true);
         controlThread.start();
         double stepSeconds = welcome.timeStepMs() / 1000.0;
         boolean sonar = !type.properties().sonars().isEmpty();
+        List<String> sensors = welcome.sensors();
         try (ObjectConnection c = connection) {
             while (true) {
                 long k;
@@ -116,7 +119,7 @@ public final class HardwareSimulator {
                 }
                 List<CommEvent> messages = outbox.isEmpty() ? List.of() : List.copyOf(outbox);
                 outbox.clear();
-                c.write(new StepRequest(k, move, turn, sonar, messages));
+                c.write(new StepRequest(k, move, turn, sonar, messages, sensors));
                 c.flush();
                 Externalizable answer = c.read(Externalizable.class);
                 if (answer instanceof SimulationEnd end) {
@@ -147,6 +150,9 @@ public final class HardwareSimulator {
         }
         if (r.movedMm() != 0 || r.turnedDeg() != 0 || !r.contact().isEmpty()) {
             lastContact = r.contact();
+        }
+        for (robosim.protocol.SensorReading reading : r.readings()) {
+            readings.put(reading.name(), reading.values());
         }
         for (CommEvent e : r.inbox()) {
             inbox.addLast(new Message(e.from(), e.payload()));

@@ -14,8 +14,15 @@ final class SimulatedRobot implements Robot {
     private final long stepMs;
     private final double[] sonarAngles;
 
+    private final List<String> sensorNames;
+
     SimulatedRobot(HardwareSimulator sim, List<String> robotNames, long stepMs) {
+        this(sim, robotNames, stepMs, List.of());
+    }
+
+    SimulatedRobot(HardwareSimulator sim, List<String> robotNames, long stepMs, List<String> sensorNames) {
         this.sim = sim;
+        this.sensorNames = List.copyOf(sensorNames);
         this.robotNames = List.copyOf(robotNames);
         this.stepMs = stepMs;
         List<SonarSpec> sonars = sim.type.properties().sonars();
@@ -109,6 +116,21 @@ final class SimulatedRobot implements Robot {
     @Override
     public double[] sonarAnglesDeg() {
         return sonarAngles.clone();
+    }
+
+    @Override
+    public List<String> sensorNames() {
+        return sensorNames;
+    }
+
+    @Override
+    public double[] sensor(String name) {
+        if (!sensorNames.contains(name)) {
+            throw new IllegalArgumentException("no sensor named " + name + " on " + sim.name + " (it has "
+                    + sensorNames + ")");
+        }
+        double[] values = sim.readings.get(name);
+        return values == null ? new double[0] : values.clone();
     }
 
     @Override

@@ -13,6 +13,10 @@ public final class Limits {
     public static final int MAX_VERTICES = 10_000;
     /** Sonar transducers on one robot. */
     public static final int MAX_SONARS = 64;
+    /** Plug-in sensors on one robot. */
+    public static final int MAX_SENSORS = 64;
+    /** Values in one sensor reading (a laser scan of 0.1-degree steps all round fits). */
+    public static final int MAX_SENSOR_VALUES = 4096;
     /** Messages one robot may send, or receive, in one step. */
     public static final int MAX_MESSAGES_PER_STEP = 10_000;
     /** Sonar ranges in one geometry response. */

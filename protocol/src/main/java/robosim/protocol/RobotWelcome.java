@@ -8,7 +8,8 @@ import java.util.List;
 /**
  * Environment -> robot, once, in answer to {@link RobotHello}: either a refusal with a reason
  * (the connection is then closed), or the time step (ms), the robot's start pose (world mm, degrees
- * counter-clockwise from +x) and the names of every robot in the world, in world order.
+ * counter-clockwise from +x), the names of every robot in the world, in world order, and the names
+ * of this robot's plug-in sensors (from the environment file), which it may ask for each step.
  */
 public final class RobotWelcome implements java.io.Externalizable {
     private boolean accepted;
@@ -18,6 +19,7 @@ public final class RobotWelcome implements java.io.Externalizable {
     private double yMm;
     private double headingDeg;
     private List<String> robotNames = List.of();
+    private List<String> sensors = List.of();
 
     public RobotWelcome() {
     }
@@ -30,6 +32,11 @@ public final class RobotWelcome implements java.io.Externalizable {
 
     public static RobotWelcome accepted(long timeStepMs, double xMm, double yMm, double headingDeg,
             List<String> robotNames) {
+        return accepted(timeStepMs, xMm, yMm, headingDeg, robotNames, List.of());
+    }
+
+    public static RobotWelcome accepted(long timeStepMs, double xMm, double yMm, double headingDeg,
+            List<String> robotNames, List<String> sensors) {
         RobotWelcome w = new RobotWelcome();
         w.accepted = true;
         w.timeStepMs = timeStepMs;
@@ -37,6 +44,7 @@ public final class RobotWelcome implements java.io.Externalizable {
         w.yMm = yMm;
         w.headingDeg = headingDeg;
         w.robotNames = List.copyOf(robotNames);
+        w.sensors = List.copyOf(sensors);
         return w;
     }
 
@@ -68,6 +76,11 @@ public final class RobotWelcome implements java.io.Externalizable {
         return robotNames;
     }
 
+    /** This robot's plug-in sensors, by the names the environment file gives them. */
+    public List<String> sensors() {
+        return sensors;
+    }
+
     @Override
     public void writeExternal(ObjectOutput out) throws IOException {
         out.writeBoolean(accepted);
@@ -77,6 +90,7 @@ public final class RobotWelcome implements java.io.Externalizable {
         out.writeDouble(yMm);
         out.writeDouble(headingDeg);
         Wire.writeStrings(out, robotNames);
+        Wire.writeStrings(out, sensors);
     }
 
     @Override
@@ -88,5 +102,6 @@ public final class RobotWelcome implements java.io.Externalizable {
         yMm = in.readDouble();
         headingDeg = in.readDouble();
         robotNames = Wire.readStrings(in, "robot name count", Limits.MAX_ROBOTS);
+        sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
     }
 }

@@ -9,6 +9,7 @@ import java.util.List;
  * Robot -> Environment, once per step, after the step number: this step's ACTION (turn, then move
  * along the new heading), whether SENSOR sonar ranges are wanted, and the COMMEVENT messages to
  * route. {@code moveMm} is signed (negative drives backwards); {@code turnDeg} is counter-clockwise.
+ * {@code sensors} names the plug-in sensors (laser, heat, bump, ...) to read at the end of the step.
  */
 public final class StepRequest implements java.io.Externalizable {
     private long step;
@@ -16,16 +17,28 @@ public final class StepRequest implements java.io.Externalizable {
     private double turnDeg;
     private boolean sonar;
     private List<CommEvent> messages = List.of();
+    private List<String> sensors = List.of();
 
     public StepRequest() {
     }
 
     public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages) {
+        this(step, moveMm, turnDeg, sonar, messages, List.of());
+    }
+
+    public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages,
+            List<String> sensors) {
         this.step = step;
         this.moveMm = moveMm;
         this.turnDeg = turnDeg;
         this.sonar = sonar;
         this.messages = List.copyOf(messages);
+        this.sensors = List.copyOf(sensors);
+    }
+
+    /** Plug-in sensors to read at the end of this step, by name. */
+    public List<String> sensors() {
+        return sensors;
     }
 
     public long step() {
@@ -55,6 +68,7 @@ public final class StepRequest implements java.io.Externalizable {
         out.writeDouble(turnDeg);
         out.writeBoolean(sonar);
         Wire.writeEvents(out, messages);
+        Wire.writeStrings(out, sensors);
     }
 
     @Override
@@ -64,5 +78,6 @@ public final class StepRequest implements java.io.Externalizable {
         turnDeg = in.readDouble();
         sonar = in.readBoolean();
         messages = Wire.readEvents(in, "outgoing message count");
+        sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
     }
 }

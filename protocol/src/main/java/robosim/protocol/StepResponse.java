@@ -9,7 +9,8 @@ import java.util.List;
  * Environment -> robot, once per step: how far the robot actually moved (mm) and turned (deg),
  * what it touched ("" for nothing), its pose at the end of the step, the sonar ranges (mm, in the
  * order of its sonar layout; empty when not asked for), the messages delivered to it (in send
- * order) and notices about its own requests (for example a message to an unknown robot).
+ * order), notices about its own requests (for example a message to an unknown robot) and the
+ * readings of the plug-in sensors it asked for, in the order it asked.
  */
 public final class StepResponse implements java.io.Externalizable {
     private static final double[] NO_RANGES = new double[0];
@@ -24,6 +25,7 @@ public final class StepResponse implements java.io.Externalizable {
     private double[] sonarMm = NO_RANGES;
     private List<CommEvent> inbox = List.of();
     private List<String> notices = List.of();
+    private List<SensorReading> readings = List.of();
 
     public StepResponse() {
     }
@@ -31,6 +33,14 @@ public final class StepResponse implements java.io.Externalizable {
     /** The arrays and lists are taken as they are: the caller must not change them afterwards. */
     public StepResponse(long step, double movedMm, double turnedDeg, String contact, double xMm, double yMm,
             double headingDeg, double[] sonarMm, List<CommEvent> inbox, List<String> notices) {
+        this(step, movedMm, turnedDeg, contact, xMm, yMm, headingDeg, sonarMm, inbox, notices, List.of());
+    }
+
+    /** The arrays and lists are taken as they are: the caller must not change them afterwards. */
+    public StepResponse(long step, double movedMm, double turnedDeg, String contact, double xMm, double yMm,
+            double headingDeg, double[] sonarMm, List<CommEvent> inbox, List<String> notices,
+            List<SensorReading> readings) {
+        this.readings = readings;
         this.step = step;
         this.movedMm = movedMm;
         this.turnedDeg = turnedDeg;
@@ -83,6 +93,11 @@ public final class StepResponse implements java.io.Externalizable {
         return notices;
     }
 
+    /** Readings of the plug-in sensors asked for, in the order asked. */
+    public List<SensorReading> readings() {
+        return readings;
+    }
+
     @Override
     public void writeExternal(ObjectOutput out) throws IOException {
         out.writeLong(step);
@@ -96,6 +111,7 @@ public final class StepResponse implements java.io.Externalizable {
         Wire.writeDoubles(out, sonarMm, sonarMm.length);
         Wire.writeEvents(out, inbox);
         Wire.writeStrings(out, notices);
+        Wire.writeReadings(out, readings);
     }
 
     @Override
@@ -110,5 +126,6 @@ public final class StepResponse implements java.io.Externalizable {
         sonarMm = Wire.readDoubles(in, Limits.checkCount("sonar range count", in.readInt(), Limits.MAX_SONARS));
         inbox = Wire.readEvents(in, "inbox message count");
         notices = Wire.readStrings(in, "notice count", Limits.MAX_MESSAGES_PER_STEP);
+        readings = Wire.readReadings(in);
     }
 }

@@ -63,6 +63,25 @@ final class Wire {
         return List.copyOf(values);
     }
 
+    static void writeReadings(ObjectOutput out, List<SensorReading> readings) throws IOException {
+        out.writeInt(readings.size());
+        for (SensorReading r : readings) {
+            r.write(out);
+        }
+    }
+
+    static List<SensorReading> readReadings(ObjectInput in) throws IOException {
+        int n = Limits.checkCount("sensor reading count", in.readInt(), Limits.MAX_SENSORS);
+        if (n == 0) {
+            return List.of();
+        }
+        List<SensorReading> readings = new ArrayList<>(n);
+        for (int i = 0; i < n; i++) {
+            readings.add(SensorReading.read(in));
+        }
+        return readings;
+    }
+
     static void writeObstacles(ObjectOutput out, List<ObstacleShape> obstacles) throws IOException {
         out.writeInt(obstacles.size());
         for (ObstacleShape o : obstacles) {

@@ -81,8 +81,10 @@ class MessageRoundTripTest {
         assertEquals(2000, m.yMm());
         assertEquals(90, m.headingDeg());
         assertEquals(List.of("a", "b"), m.robotNames());
-        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b"),
-                repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"))));
+        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser"),
+                repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"), List.of("laser"))));
+        assertEquals(List.of("laser"),
+                roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of(), List.of("laser"))).sensors());
 
         RobotWelcome r = roundTrip(RobotWelcome.refused("no robot named x"));
         assertFalse(r.isAccepted());
@@ -97,7 +99,9 @@ class MessageRoundTripTest {
         assertEquals(-45, m.turnDeg());
         assertTrue(m.wantsSonar());
         assertEquals(List.of(new CommEvent("", "robot2", "7")), m.messages());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        StepRequest withSensors = roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of("laser", "heat")));
+        assertEquals(List.of("laser", "heat"), withSensors.sensors());
     }
 
     @Test
@@ -115,7 +119,12 @@ class MessageRoundTripTest {
         assertEquals(List.of(new CommEvent("robot2", "robot1", "hi")), m.inbox());
         assertEquals(List.of("note"), m.notices());
         StepResponse empty = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4, repeatedSize(empty));
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4, repeatedSize(empty));
+        StepResponse withReading = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of(),
+                List.of(new SensorReading("heat", new double[] {0.5})));
+        assertEquals(List.of(new SensorReading("heat", new double[] {0.5})), roundTrip(withReading).readings());
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf("heat") + 4 + 8,
+                repeatedSize(withReading));
     }
 
     @Test

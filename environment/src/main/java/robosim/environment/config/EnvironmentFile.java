@@ -26,6 +26,9 @@ public final class EnvironmentFile {
     public Integer maxMessageBytes;
     public ArenaXml arena;
     public ObstaclesXml obstacles = new ObstaclesXml();
+    @JacksonXmlElementWrapper(localName = "heatSources")
+    @JacksonXmlProperty(localName = "heat")
+    public List<HeatXml> heatSources = new ArrayList<>();
     @JacksonXmlElementWrapper(localName = "robots")
     @JacksonXmlProperty(localName = "robot")
     public List<RobotXml> robots = new ArrayList<>();
@@ -96,5 +99,42 @@ public final class EnvironmentFile {
         public Double y;
         @JacksonXmlProperty(isAttribute = true)
         public Double heading;
+        /** Standard deviation of Gaussian noise on its sonar ranges, mm; absent = none. */
+        @JacksonXmlProperty(isAttribute = true)
+        public Double sonarNoiseMm;
+        @JacksonXmlElementWrapper(useWrapping = false)
+        @JacksonXmlProperty(localName = "sensor")
+        public List<SensorXml> sensors = new ArrayList<>();
+    }
+
+    /**
+     * {@code <sensor name="front-laser" type="laser" noise="5" fovDeg="180"/>} inside a robot: any
+     * other attribute goes to the sensor's own {@code configure}.
+     */
+    public static final class SensorXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public String type;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double noise;
+        public final java.util.Map<String, String> attributes = new java.util.LinkedHashMap<>();
+
+        @com.fasterxml.jackson.annotation.JsonAnySetter
+        public void attribute(String key, String value) {
+            attributes.put(key, value);
+        }
+    }
+
+    /** {@code <heat name="fire" x="5" y="3" intensity="10"/>}: metres; intensity is the reading at the source. */
+    public static final class HeatXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double x;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double y;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double intensity;
     }
 }

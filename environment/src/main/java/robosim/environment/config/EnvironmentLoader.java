@@ -114,7 +114,47 @@ public final class EnvironmentLoader {
             throw new EnvironmentFileException(env + " maxMessageBytes must be in 1.."
                     + robosim.protocol.Limits.MAX_UTF_BYTES + ", got " + maxBytes);
         }
-        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes);
+        List<WorldSpec.HeatSource> heat = new ArrayList<>();
+        for (EnvironmentFile.HeatXml src : xml.heatSources) {
+            String el = "<heat name=\"" + (src.name == null ? "heat" + (heat.size() + 1) : src.name) + "\">";
+            double hx = required(where, el, "x", src.x);
+            double hy = required(where, el, "y", src.y);
+            double intensity = required(where, el, "intensity", src.intensity);
+            if (!(intensity >= 0)) {
+                throw new EnvironmentFileException(where + ": " + el + " intensity must be >= 0, got " + intensity);
+            }
+            heat.add(new WorldSpec.HeatSource(src.name == null ? "heat" + (heat.size() + 1) : src.name, hx * MM_PER_M,
+                    hy * MM_PER_M, intensity));
+        }
+        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes, heat);
+    }
+
+    private static List<WorldSpec.SensorSpec> sensors(String where, String robot, List<EnvironmentFile.SensorXml> xml)
+            throws EnvironmentFileException {
+        List<WorldSpec.SensorSpec> out = new ArrayList<>();
+        Set<String> names = new HashSet<>();
+        for (EnvironmentFile.SensorXml s : xml) {
+            if (s.type == null || s.type.isBlank()) {
+                throw new EnvironmentFileException(where + ": " + robot + " <sensor> needs a type (laser, heat, bump "
+                        + "or a RobotSensor class name)");
+            }
+            String name = s.name == null || s.name.isBlank() ? s.type : s.name;
+            String el = robot + " <sensor name=\"" + name + "\">";
+            if (!names.add(name)) {
+                throw new EnvironmentFileException(where + ": " + el + " the name is used twice on this robot");
+            }
+            double noise = s.noise == null ? 0 : s.noise;
+            if (!(noise >= 0) || Double.isInfinite(noise)) {
+                throw new EnvironmentFileException(where + ": " + el + " noise must be >= 0, got " + noise);
+            }
+            try {
+                robosim.environment.sensors.RobotSensors.create(s.type, s.attributes);
+            } catch (IllegalArgumentException e) {
+                throw new EnvironmentFileException(where + ": " + el + " " + e.getMessage());
+            }
+            out.add(new WorldSpec.SensorSpec(name, s.type, noise, s.attributes));
+        }
+        return out;
     }
 
     private static double orZero(Double v) {
@@ -264,8 +304,12 @@ public final class EnvironmentLoader {
                     throw new EnvironmentFileException(where + ": " + el + " overlaps robot \"" + other.name() + "\"");
                 }
             }
+            double sonarNoise = r.sonarNoiseMm == null ? 0 : r.sonarNoiseMm;
+            if (!(sonarNoise >= 0) || Double.isInfinite(sonarNoise)) {
+                throw new EnvironmentFileException(where + ": " + el + " sonarNoiseMm must be >= 0, got " + sonarNoise);
+            }
             out.add(new RobotSpec(r.name, r.type, r.control == null ? "" : r.control, x, y,
-                    robosim.geometry.Kinematics.turn(heading, 0)));
+                    robosim.geometry.Kinematics.turn(heading, 0), sensors(where, el, r.sensors), sonarNoise));
         }
         return out;
     }

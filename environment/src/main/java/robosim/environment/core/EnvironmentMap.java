@@ -66,6 +66,19 @@ public final class EnvironmentMap {
         return heading[robot];
     }
 
+    /** The live pose arrays, for the sensors' context (read-only use, on the step's thread). */
+    double[] xs() {
+        return x;
+    }
+
+    double[] ys() {
+        return y;
+    }
+
+    double[] headings() {
+        return heading;
+    }
+
     void setPose(int robot, double xMm, double yMm, double headingDeg) {
         x[robot] = xMm;
         y[robot] = yMm;

@@ -1,23 +1,33 @@
 package robosim.environment.core;
 
 import java.io.IOException;
+import java.util.ArrayList;
+import java.util.Random;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import robosim.environment.sensors.RobotSensor;
+import robosim.environment.sensors.RobotSensors;
+import robosim.environment.sensors.SensorContext;
 import robosim.geometry.Kinematics;
+import robosim.geometry.StaticWorld;
+import robosim.geometry.WorldQueries;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotProperties;
+import robosim.protocol.SensorReading;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
  * One simulated world and its step function. {@link #step} takes every robot's request for step k
  * and runs the phases in order: gather (route COMMEVENTs, bound each ACTION by the robot's speed
- * limits), act and collide and sense (one {@link GeometryService} call for every ACTION and SONAR
- * request), apply (poses from the distances Geometry returns), respond. Deterministic: the same
+ * limits), act and collide (one {@link GeometryService} call for every ACTION and SONAR request),
+ * apply (poses from the distances Geometry returns), sense (sonar from Geometry, other SENSOR
+ * requests from the robot's {@link RobotSensor}s, all on the world after every move; noise from the
+ * world's one seeded generator, in robot order), respond. Deterministic: the same
  * world and the same requests give the same responses, bit for bit. Not thread-safe; one caller.
  */
 public final class SimulationCore {
@@ -31,6 +41,11 @@ public final class SimulationCore {
     private final double[] maxTurnDeg;
     private final GeometryStepRequest geometryRequest;
     private final StepResponse[] responses;
+    private final RobotSensor[][] sensors;
+    private final WorldSpec.SensorSpec[][] sensorSpecs;
+    private final SensorContext sensorContext;
+    /** The world's one seeded generator: all sensor noise comes from it, in a fixed order. */
+    private final Random random;
     private long lastStep = -1;
 
     public SimulationCore(WorldSpec spec, List<RobotProperties> properties, GeometryService geometry) {
@@ -51,6 +66,21 @@ public final class SimulationCore {
         }
         this.geometryRequest = new GeometryStepRequest(robots);
         this.responses = new StepResponse[robots];
+        this.random = new Random(spec.seed());
+        this.sensors = new RobotSensor[robots][];
+        this.sensorSpecs = new WorldSpec.SensorSpec[robots][];
+        double[] radius = new double[robots];
+        for (int i = 0; i < robots; i++) {
+            radius[i] = properties.get(i).radiusMm();
+            List<WorldSpec.SensorSpec> specs = spec.robots().get(i).sensors();
+            sensorSpecs[i] = specs.toArray(new WorldSpec.SensorSpec[0]);
+            sensors[i] = new RobotSensor[specs.size()];
+            for (int k = 0; k < specs.size(); k++) {
+                sensors[i][k] = RobotSensors.create(specs.get(k).type(), specs.get(k).attributes());
+            }
+        }
+        this.sensorContext = new SensorContext(new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles())),
+                spec.heatSources(), map.xs(), map.ys(), radius, map.headings());
     }
 
     /** A core that resolves geometry in-process ({@code --no-geometry}). */
@@ -105,29 +135,58 @@ public final class SimulationCore {
             throw new ProtocolException("geometry answered step " + g.step() + " for " + g.count()
                     + " robots, expected step " + k + " for " + robots);
         }
-        // apply and respond
-        int range = 0;
+        // apply
         for (int i = 0; i < robots; i++) {
             double h = Kinematics.turn(map.headingDeg(i), g.turnedDeg(i));
             double moved = g.movedMm(i);
-            double x = map.xMm(i) + Kinematics.dx(h, moved);
-            double y = map.yMm(i) + Kinematics.dy(h, moved);
-            map.setPose(i, x, y, h);
+            map.setPose(i, map.xMm(i) + Kinematics.dx(h, moved), map.yMm(i) + Kinematics.dy(h, moved), h);
+        }
+        // sense (the world after every move) and respond
+        int range = 0;
+        for (int i = 0; i < robots; i++) {
             double[] sonar = NO_RANGES;
             if (geometryRequest.wantsSonar(i)) {
                 int n = map.properties(i).sonars().size();
                 if (range + n > g.rangeCount()) {
                     throw new ProtocolException("geometry returned " + g.rangeCount() + " sonar ranges, too few");
                 }
+                double noise = map.spec().robots().get(i).sonarNoiseMm();
                 sonar = new double[n];
                 for (int s = 0; s < n; s++) {
-                    sonar[s] = g.rangeMm(range++);
+                    double r = g.rangeMm(range++);
+                    sonar[s] = noise > 0 ? Math.max(0, r + noise * random.nextGaussian()) : r;
                 }
             }
-            responses[i] = new StepResponse(k, moved, g.turnedDeg(i), contactName(g, i), x, y, h, sonar,
-                    router.takeInbox(i), router.takeNotices(i));
+            List<SensorReading> readings = requests[i] == null || requests[i].sensors().isEmpty() ? List.of()
+                    : read(i, requests[i].sensors());
+            responses[i] = new StepResponse(k, g.movedMm(i), g.turnedDeg(i), contactName(g, i), map.xMm(i),
+                    map.yMm(i), map.headingDeg(i), sonar, router.takeInbox(i), router.takeNotices(i), readings);
         }
         lastStep = k;
+    }
+
+    /** Robot i's plug-in sensors, in the order asked; an unknown name gets a notice. */
+    private List<SensorReading> read(int i, List<String> names) {
+        List<SensorReading> out = new ArrayList<>(names.size());
+        for (String name : names) {
+            int s = 0;
+            while (s < sensorSpecs[i].length && !sensorSpecs[i][s].name().equals(name)) {
+                s++;
+            }
+            if (s == sensorSpecs[i].length) {
+                router.notice(i, "no sensor named " + name + " on " + map.name(i));
+                continue;
+            }
+            double[] values = sensors[i][s].generateSensorResponse(sensorContext.aim(i));
+            double noise = sensorSpecs[i][s].noise();
+            if (noise > 0) {
+                for (int v = 0; v < values.length; v++) {
+                    values[v] += noise * random.nextGaussian();
+                }
+            }
+            out.add(new SensorReading(name, values));
+        }
+        return out;
     }
 
     private static final double[] NO_RANGES = new double[0];

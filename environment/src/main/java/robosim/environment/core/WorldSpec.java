@@ -1,6 +1,7 @@
 package robosim.environment.core;
 
 import java.util.List;
+import java.util.Map;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
 
@@ -12,7 +13,8 @@ import robosim.protocol.ObstacleShape;
  * @param maxMessageBytes the largest payload a robot may send (modified UTF-8 bytes)
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
-        List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes) {
+        List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
+        List<HeatSource> heatSources) {
     /** Default payload limit: a few kilobytes, well under the wire's 65,535. */
     public static final int DEFAULT_MAX_MESSAGE_BYTES = 8192;
 
@@ -29,12 +31,37 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         }
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
+        heatSources = List.copyOf(heatSources);
     }
 
-    /** A world whose messages carry everywhere, with the default size limit. */
+    /** A world whose messages carry everywhere, with the default size limit, and no heat sources. */
     public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
             List<ObstacleShape> obstacles, List<RobotSpec> robots) {
         this(source, name, timeStepMs, seed, arena, obstacles, robots, 0, DEFAULT_MAX_MESSAGE_BYTES);
+    }
+
+    /** A world without heat sources. */
+    public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
+            List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes) {
+        this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, List.of());
+    }
+
+    /** A source of heat for heat sensors: position (mm) and intensity (reading at the source). */
+    public record HeatSource(String name, double xMm, double yMm, double intensity) {
+    }
+
+    /**
+     * One plug-in sensor on a robot, as the file names it.
+     *
+     * @param name what the robot asks for it by
+     * @param type {@code laser}, {@code heat}, {@code bump} or a RobotSensor class name
+     * @param noise standard deviation of Gaussian noise added to every value, in the sensor's units
+     * @param attributes its other attributes, for {@code RobotSensor.configure}
+     */
+    public record SensorSpec(String name, String type, double noise, Map<String, String> attributes) {
+        public SensorSpec {
+            attributes = Map.copyOf(attributes);
+        }
     }
 
     /** Index of the robot with this name, or -1. */
@@ -51,7 +78,22 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
      * One robot named in the file.
      *
      * @param control the control class the headless runner starts for it (may be empty)
+     * @param sensors its plug-in sensors
+     * @param sonarNoiseMm standard deviation of Gaussian noise on its sonar ranges
      */
-    public record RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg) {
+    public record RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
+            List<SensorSpec> sensors, double sonarNoiseMm) {
+        public RobotSpec {
+            sensors = List.copyOf(sensors);
+        }
+
+        /** A robot with sonar only and no noise. */
+        public RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg) {
+            this(name, type, control, xMm, yMm, headingDeg, List.of(), 0);
+        }
+
+        public List<String> sensorNames() {
+            return sensors.stream().map(SensorSpec::name).toList();
+        }
     }
 }

@@ -229,7 +229,8 @@ public final class ClientWorkerCoordinator implements Closeable {
                 return "robot " + hello.name() + " is already connected";
             }
             WorldSpec.RobotSpec r = spec.robots().get(index);
-            worker.welcome(RobotWelcome.accepted(spec.timeStepMs(), r.xMm(), r.yMm(), r.headingDeg(), robotNames));
+            worker.welcome(RobotWelcome.accepted(spec.timeStepMs(), r.xMm(), r.yMm(), r.headingDeg(), robotNames,
+                    r.sensorNames()));
             robots[index] = worker;
             properties[index] = hello.properties();
             registered++;

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.environment.core.WorldSpec;
@@ -139,6 +140,31 @@ class EnvironmentLoaderTest {
                 .endsWith("<environment> maxMessageBytes must be in 1..65535, got 70000"));
         assertTrue(failure(env("timeStepMs=\"500\"", "<robots><robot name=\"*\" type=\"ArRobot\" x=\"1\" y=\"1\"/>"
                 + "</robots>")).endsWith("\"*\" is reserved: it addresses every robot"));
+    }
+
+    @Test
+    void sensorsAndHeatSourcesAreReadAndChecked() throws Exception {
+        WorldSpec s = new EnvironmentLoader().load(write(env("timeStepMs=\"500\"",
+                "<heatSources><heat name=\"fire\" x=\"5\" y=\"2\" intensity=\"10\"/></heatSources>"
+                        + "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\" sonarNoiseMm=\"15\">"
+                        + "<sensor name=\"front\" type=\"laser\" fovDeg=\"90\" noise=\"5\"/><sensor type=\"bump\"/>"
+                        + "</robot></robots>")));
+        assertEquals(List.of(new WorldSpec.HeatSource("fire", 5000, 2000, 10)), s.heatSources());
+        WorldSpec.RobotSpec r = s.robots().get(0);
+        assertEquals(List.of("front", "bump"), r.sensorNames());
+        assertEquals(5, r.sensors().get(0).noise());
+        assertEquals(java.util.Map.of("fovDeg", "90"), r.sensors().get(0).attributes());
+        assertEquals(15, r.sonarNoiseMm());
+
+        String m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\">"
+                + "<sensor type=\"sniffer\"/></robot></robots>"));
+        assertTrue(m.endsWith("<robot name=\"r1\"> <sensor name=\"sniffer\"> type \"sniffer\" is neither laser, heat, "
+                + "bump nor a class on the class path"), m);
+        m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\">"
+                + "<sensor type=\"laser\" fov=\"90\"/></robot></robots>"));
+        assertTrue(m.endsWith("unknown attribute(s) [fov] for a laser sensor"), m);
+        m = failure(env("timeStepMs=\"500\"", "<heatSources><heat name=\"h\" x=\"1\" y=\"1\"/></heatSources>" + ROBOT));
+        assertTrue(m.endsWith("<heat name=\"h\"> needs the attribute intensity"), m);
     }
 
     @Test

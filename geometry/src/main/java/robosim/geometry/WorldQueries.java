@@ -1,0 +1,175 @@
+package robosim.geometry;
+
+import org.locationtech.jts.geom.Envelope;
+import org.locationtech.jts.index.ItemVisitor;
+
+/**
+ * Questions sensors ask about the world as it stands (static walls plus robot discs at given poses,
+ * mm): the first thing a ray hits (laser), whether a straight line is clear of obstacles (heat),
+ * and which directions a robot is touching something in (bump). Reuses scratch state: one thread
+ * at a time.
+ */
+public final class WorldQueries {
+    private final StaticWorld world;
+    private final Envelope area = new Envelope();
+    private final RayVisitor rayVisitor = new RayVisitor();
+    private final SightVisitor sightVisitor = new SightVisitor();
+    private final TouchVisitor touchVisitor = new TouchVisitor();
+
+    public WorldQueries(StaticWorld world) {
+        this.world = world;
+    }
+
+    /**
+     * Distance from (ox, oy) along {@code angleDeg} to the first wall or robot disc, capped at
+     * {@code maxMm}; robot {@code exclude} (the one asking) is ignored.
+     */
+    public double ray(double ox, double oy, double angleDeg, double maxMm, double[] x, double[] y, double[] r,
+            int exclude) {
+        double a = Math.toRadians(angleDeg);
+        double ux = Math.cos(a);
+        double uy = Math.sin(a);
+        double ex = ox + ux * maxMm;
+        double ey = oy + uy * maxMm;
+        area.init(Math.min(ox, ex), Math.max(ox, ex), Math.min(oy, ey), Math.max(oy, ey));
+        RayVisitor v = rayVisitor;
+        v.begin(ox, oy, ux, uy, maxMm);
+        world.query(area, v);
+        for (int j = 0; j < x.length; j++) {
+            if (j != exclude) {
+                v.best = Math.min(v.best, Sweep.toCircle(ox, oy, ux, uy, r[j], x[j], y[j]));
+            }
+        }
+        return v.best;
+    }
+
+    /** True when the straight line from A to B crosses no obstacle edge (the arena's edges do not count). */
+    public boolean clear(double ax, double ay, double bx, double by) {
+        area.init(Math.min(ax, bx), Math.max(ax, bx), Math.min(ay, by), Math.max(ay, by));
+        SightVisitor v = sightVisitor;
+        v.begin(ax, ay, bx, by);
+        world.query(area, v);
+        return !v.blocked;
+    }
+
+    /**
+     * Directions (degrees, world frame) from robot {@code i}'s centre to everything within
+     * {@code toleranceMm} of its rim: walls, obstacles and other robots. At most {@code out.length};
+     * returns how many.
+     */
+    public int touching(int i, double[] x, double[] y, double[] r, double toleranceMm, double[] out) {
+        double reach = r[i] + toleranceMm;
+        area.init(x[i] - reach, x[i] + reach, y[i] - reach, y[i] + reach);
+        TouchVisitor v = touchVisitor;
+        v.begin(x[i], y[i], reach, out);
+        world.query(area, v);
+        for (int j = 0; j < x.length && v.count < out.length; j++) {
+            if (j != i && Math.hypot(x[j] - x[i], y[j] - y[i]) <= reach + r[j]) {
+                out[v.count++] = Math.toDegrees(Math.atan2(y[j] - y[i], x[j] - x[i]));
+            }
+        }
+        return v.count;
+    }
+
+    /** Nearest ray hit on a wall segment. */
+    private static final class RayVisitor implements ItemVisitor {
+        private double ox;
+        private double oy;
+        private double ux;
+        private double uy;
+        double best;
+
+        void begin(double ox, double oy, double ux, double uy, double max) {
+            this.ox = ox;
+            this.oy = oy;
+            this.ux = ux;
+            this.uy = uy;
+            best = max;
+        }
+
+        @Override
+        public void visitItem(Object item) {
+            Segment s = (Segment) item;
+            double ex = s.bx - s.ax;
+            double ey = s.by - s.ay;
+            double denom = ux * ey - uy * ex;
+            if (denom == 0) {
+                return;
+            }
+            double qx = s.ax - ox;
+            double qy = s.ay - oy;
+            double t = (qx * ey - qy * ex) / denom;
+            double u = (qx * uy - qy * ux) / denom;
+            if (t >= 0 && u >= 0 && u <= 1 && t < best) {
+                best = t;
+            }
+        }
+    }
+
+    /** Whether a segment crosses an obstacle edge. */
+    private static final class SightVisitor implements ItemVisitor {
+        private double ax;
+        private double ay;
+        private double bx;
+        private double by;
+        boolean blocked;
+
+        void begin(double ax, double ay, double bx, double by) {
+            this.ax = ax;
+            this.ay = ay;
+            this.bx = bx;
+            this.by = by;
+            blocked = false;
+        }
+
+        @Override
+        public void visitItem(Object item) {
+            Segment s = (Segment) item;
+            if (blocked || s.ownerKind != robosim.protocol.GeometryStepResponse.CONTACT_OBSTACLE) {
+                return;
+            }
+            // the two segments cross (or touch) when each one's ends lie on both sides of the other
+            blocked = orient(ax, ay, bx, by, s.ax, s.ay) * orient(ax, ay, bx, by, s.bx, s.by) <= 0
+                    && orient(s.ax, s.ay, s.bx, s.by, ax, ay) * orient(s.ax, s.ay, s.bx, s.by, bx, by) <= 0;
+        }
+    }
+
+    /** The side of line P-Q that R lies on: 1 left, -1 right, 0 on it. */
+    private static int orient(double px, double py, double qx, double qy, double rx, double ry) {
+        return (int) Math.signum((qx - px) * (ry - py) - (qy - py) * (rx - px));
+    }
+
+    /** Directions to the wall points within reach of a robot's centre. */
+    private static final class TouchVisitor implements ItemVisitor {
+        private double cx;
+        private double cy;
+        private double reach;
+        private double[] out;
+        int count;
+
+        void begin(double cx, double cy, double reach, double[] out) {
+            this.cx = cx;
+            this.cy = cy;
+            this.reach = reach;
+            this.out = out;
+            count = 0;
+        }
+
+        @Override
+        public void visitItem(Object item) {
+            Segment s = (Segment) item;
+            if (count >= out.length) {
+                return;
+            }
+            double ex = s.bx - s.ax;
+            double ey = s.by - s.ay;
+            double len2 = ex * ex + ey * ey;
+            double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((cx - s.ax) * ex + (cy - s.ay) * ey) / len2));
+            double px = s.ax + t * ex;
+            double py = s.ay + t * ey;
+            if (Math.hypot(px - cx, py - cy) <= reach) {
+                out[count++] = Math.toDegrees(Math.atan2(py - cy, px - cx));
+            }
+        }
+    }
+}
