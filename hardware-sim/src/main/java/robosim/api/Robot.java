@@ -33,6 +33,12 @@ public interface Robot {
 
     double rotVelocity();
 
+    /**
+     * Tags the nearest robot or taggable object in front, within the world's tag range; takes one
+     * step. Returns its name, or "" when nothing was in reach.
+     */
+    String tag() throws InterruptedException;
+
     /** Waits {@code ms} of robot time, standing still. */
     void sleep(long ms) throws InterruptedException;
 

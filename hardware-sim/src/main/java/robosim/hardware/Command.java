@@ -12,8 +12,11 @@ abstract class Command {
 
     double plannedMoveMm;
     double plannedTurnDeg;
+    boolean plannedTag;
     boolean done;
     double result;
+    /** What a tag hit ("" for nothing). */
+    String text = "";
 
     abstract void plan(double stepSeconds);
 
@@ -58,6 +61,24 @@ abstract class Command {
             boolean blocked = Math.abs(done) < Math.abs(planned) - EPS;
             return blocked || Math.abs(remaining) <= EPS;
         }
+    }
+
+    /** One step that tags what is in front. */
+    static Command tag() {
+        return new Command() {
+            @Override
+            void plan(double stepSeconds) {
+                plannedMoveMm = 0;
+                plannedTurnDeg = 0;
+                plannedTag = true;
+            }
+
+            @Override
+            boolean apply(StepResponse r, boolean messageArrived) {
+                text = r.tagged();
+                return true;
+            }
+        };
     }
 
     /** Stand still for {@code steps} steps, or fewer if {@code untilMessage} and a message arrives. */

@@ -112,14 +112,16 @@ public final class HardwareSimulator {
                 Command command = link.awaitControl();
                 double move = 0;
                 double turn = 0;
+                boolean tag = false;
                 if (command != null) {
                     command.plan(stepSeconds);
                     move = command.plannedMoveMm;
                     turn = command.plannedTurnDeg;
+                    tag = command.plannedTag;
                 }
                 List<CommEvent> messages = outbox.isEmpty() ? List.of() : List.copyOf(outbox);
                 outbox.clear();
-                c.write(new StepRequest(k, move, turn, sonar, messages, sensors));
+                c.write(new StepRequest(k, move, turn, sonar, messages, sensors, tag));
                 c.flush();
                 Externalizable answer = c.read(Externalizable.class);
                 if (answer instanceof SimulationEnd end) {

@@ -97,6 +97,13 @@ final class SimulatedRobot implements Robot {
     }
 
     @Override
+    public String tag() throws InterruptedException {
+        Command c = Command.tag();
+        sim.link.execute(c);
+        return c.text;
+    }
+
+    @Override
     public void sleep(long ms) throws InterruptedException {
         sim.link.execute(Command.idle(stepsFor(ms), false));
     }

@@ -13,6 +13,8 @@ public final class Limits {
     public static final int MAX_VERTICES = 10_000;
     /** Sonar transducers on one robot. */
     public static final int MAX_SONARS = 64;
+    /** Tags listed in one pose update. */
+    public static final int MAX_TAGS = 1_000_000;
     /** Plug-in sensors on one robot. */
     public static final int MAX_SENSORS = 64;
     /** Values in one sensor reading (a laser scan of 0.1-degree steps all round fits). */

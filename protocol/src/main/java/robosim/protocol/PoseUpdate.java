@@ -3,11 +3,13 @@ package robosim.protocol;
 import java.io.IOException;
 import java.io.ObjectInput;
 import java.io.ObjectOutput;
+import java.util.List;
 
 /**
  * Environment -> viewer, after each step: every robot's pose (mm, degrees) at the end of
  * {@code step}, in snapshot order, and the sonar ranges (mm) each robot read in that step (none if it
- * did not ask). Immutable once built, so one instance is shared by every viewer worker; a live
+ * did not ask), and every tag so far as "tagger>target" (cumulative, so a viewer that skips steps
+ * misses none). Immutable once built, so one instance is shared by every viewer worker; a live
  * viewer may see only some steps, a recording viewer sees all.
  */
 public final class PoseUpdate implements java.io.Externalizable {
@@ -16,6 +18,7 @@ public final class PoseUpdate implements java.io.Externalizable {
     private double[] yMm = new double[0];
     private double[] headingDeg = new double[0];
     private double[][] sonarMm = new double[0][];
+    private List<String> tags = List.of();
 
     private static final double[] NONE = new double[0];
 
@@ -46,6 +49,18 @@ public final class PoseUpdate implements java.io.Externalizable {
             java.util.Arrays.fill(sonarMm, NONE);
         }
         this.sonarMm = sonarMm;
+    }
+
+    /** As above, with the tags so far ("tagger>target", oldest first; taken as it is). */
+    public PoseUpdate(long step, double[] xMm, double[] yMm, double[] headingDeg, double[][] sonarMm,
+            List<String> tags) {
+        this(step, xMm, yMm, headingDeg, sonarMm);
+        this.tags = tags;
+    }
+
+    /** Every tag so far, "tagger>target", oldest first. */
+    public List<String> tags() {
+        return tags;
     }
 
     public long step() {
@@ -84,6 +99,7 @@ public final class PoseUpdate implements java.io.Externalizable {
             out.writeByte(sonarMm[i].length);
             Wire.writeDoubles(out, sonarMm[i], sonarMm[i].length);
         }
+        Wire.writeStrings(out, tags);
     }
 
     @Override
@@ -101,5 +117,6 @@ public final class PoseUpdate implements java.io.Externalizable {
             int ranges = Limits.checkCount("sonar range count", in.readUnsignedByte(), Limits.MAX_SONARS);
             sonarMm[i] = ranges == 0 ? NONE : Wire.readDoubles(in, ranges);
         }
+        tags = Wire.readStrings(in, "tag count", Limits.MAX_TAGS);
     }
 }

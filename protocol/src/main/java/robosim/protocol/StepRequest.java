@@ -10,6 +10,7 @@ import java.util.List;
  * along the new heading), whether SENSOR sonar ranges are wanted, and the COMMEVENT messages to
  * route. {@code moveMm} is signed (negative drives backwards); {@code turnDeg} is counter-clockwise.
  * {@code sensors} names the plug-in sensors (laser, heat, bump, ...) to read at the end of the step.
+ * {@code tag} (ACTION) tags the nearest robot or taggable object in front, after the move.
  */
 public final class StepRequest implements java.io.Externalizable {
     private long step;
@@ -18,6 +19,7 @@ public final class StepRequest implements java.io.Externalizable {
     private boolean sonar;
     private List<CommEvent> messages = List.of();
     private List<String> sensors = List.of();
+    private boolean tag;
 
     public StepRequest() {
     }
@@ -28,12 +30,23 @@ public final class StepRequest implements java.io.Externalizable {
 
     public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages,
             List<String> sensors) {
+        this(step, moveMm, turnDeg, sonar, messages, sensors, false);
+    }
+
+    public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages,
+            List<String> sensors, boolean tag) {
+        this.tag = tag;
         this.step = step;
         this.moveMm = moveMm;
         this.turnDeg = turnDeg;
         this.sonar = sonar;
         this.messages = List.copyOf(messages);
         this.sensors = List.copyOf(sensors);
+    }
+
+    /** ACTION tag: tag what is nearest in front after this step's move. */
+    public boolean wantsTag() {
+        return tag;
     }
 
     /** Plug-in sensors to read at the end of this step, by name. */
@@ -69,6 +82,7 @@ public final class StepRequest implements java.io.Externalizable {
         out.writeBoolean(sonar);
         Wire.writeEvents(out, messages);
         Wire.writeStrings(out, sensors);
+        out.writeBoolean(tag);
     }
 
     @Override
@@ -79,5 +93,6 @@ public final class StepRequest implements java.io.Externalizable {
         sonar = in.readBoolean();
         messages = Wire.readEvents(in, "outgoing message count");
         sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
+        tag = in.readBoolean();
     }
 }

@@ -26,6 +26,7 @@ public final class StepResponse implements java.io.Externalizable {
     private List<CommEvent> inbox = List.of();
     private List<String> notices = List.of();
     private List<SensorReading> readings = List.of();
+    private String tagged = "";
 
     public StepResponse() {
     }
@@ -40,6 +41,14 @@ public final class StepResponse implements java.io.Externalizable {
     public StepResponse(long step, double movedMm, double turnedDeg, String contact, double xMm, double yMm,
             double headingDeg, double[] sonarMm, List<CommEvent> inbox, List<String> notices,
             List<SensorReading> readings) {
+        this(step, movedMm, turnedDeg, contact, xMm, yMm, headingDeg, sonarMm, inbox, notices, readings, "");
+    }
+
+    /** As above, with what a tag this step hit ("" for nothing or no tag). */
+    public StepResponse(long step, double movedMm, double turnedDeg, String contact, double xMm, double yMm,
+            double headingDeg, double[] sonarMm, List<CommEvent> inbox, List<String> notices,
+            List<SensorReading> readings, String tagged) {
+        this.tagged = tagged;
         this.readings = readings;
         this.step = step;
         this.movedMm = movedMm;
@@ -93,6 +102,11 @@ public final class StepResponse implements java.io.Externalizable {
         return notices;
     }
 
+    /** The name of what this step's tag hit, or "" when nothing was tagged. */
+    public String tagged() {
+        return tagged;
+    }
+
     /** Readings of the plug-in sensors asked for, in the order asked. */
     public List<SensorReading> readings() {
         return readings;
@@ -112,6 +126,7 @@ public final class StepResponse implements java.io.Externalizable {
         Wire.writeEvents(out, inbox);
         Wire.writeStrings(out, notices);
         Wire.writeReadings(out, readings);
+        out.writeUTF(tagged);
     }
 
     @Override
@@ -127,5 +142,6 @@ public final class StepResponse implements java.io.Externalizable {
         inbox = Wire.readEvents(in, "inbox message count");
         notices = Wire.readStrings(in, "notice count", Limits.MAX_MESSAGES_PER_STEP);
         readings = Wire.readReadings(in);
+        tagged = in.readUTF();
     }
 }

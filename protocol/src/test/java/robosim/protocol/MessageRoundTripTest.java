@@ -99,7 +99,8 @@ class MessageRoundTripTest {
         assertEquals(-45, m.turnDeg());
         assertTrue(m.wantsSonar());
         assertEquals(List.of(new CommEvent("", "robot2", "7")), m.messages());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4 + 1, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        assertTrue(roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of(), true)).wantsTag());
         StepRequest withSensors = roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of("laser", "heat")));
         assertEquals(List.of("laser", "heat"), withSensors.sensors());
     }
@@ -119,11 +120,13 @@ class MessageRoundTripTest {
         assertEquals(List.of(new CommEvent("robot2", "robot1", "hi")), m.inbox());
         assertEquals(List.of("note"), m.notices());
         StepResponse empty = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4, repeatedSize(empty));
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf(""), repeatedSize(empty));
+        assertEquals("robot2", roundTrip(new StepResponse(3, 0, 0, "", 1, 2, 3, new double[0], List.of(), List.of(),
+                List.of(), "robot2")).tagged());
         StepResponse withReading = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of(),
                 List.of(new SensorReading("heat", new double[] {0.5})));
         assertEquals(List.of(new SensorReading("heat", new double[] {0.5})), roundTrip(withReading).readings());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf("heat") + 4 + 8,
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf("heat") + 4 + 8 + utf(""),
                 repeatedSize(withReading));
     }
 
@@ -190,7 +193,10 @@ class MessageRoundTripTest {
         assertEquals(6, p2.headingDeg(1));
         assertArrayEquals(new double[] {700, 800}, p2.sonarMm(0));
         assertEquals(0, p2.sonarMm(1).length);
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8, repeatedSize(p));
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4, repeatedSize(p));
+        PoseUpdate tagged = new PoseUpdate(4, new double[] {1}, new double[] {3}, new double[] {5}, null,
+                List.of("a>b"));
+        assertEquals(List.of("a>b"), roundTrip(tagged).tags());
 
         Arena arena = new Arena(0, 0, 1000, 1000);
         PoseUpdate plain = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6});
@@ -205,7 +211,7 @@ class MessageRoundTripTest {
         assertEquals(3, s2.poses().yMm(0));
         int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
         int robots = 2 * (utf("a") + props);
-        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25), repeatedSize(s));
+        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4), repeatedSize(s));
 
         SimulationEnd e = roundTrip(new SimulationEnd(99, "done"));
         assertEquals(99, e.lastStep());

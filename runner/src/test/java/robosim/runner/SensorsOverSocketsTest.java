@@ -14,7 +14,7 @@ import robosim.api.RobotControl;
 
 /** Control code reads the Environment's sensors through the robot API, over real sockets. */
 class SensorsOverSocketsTest {
-    /** Reads laser and heat, drives into the wall, reads bump. */
+    /** Reads laser and heat, tags the flag, drives into the wall, reads bump. */
     static final class Probe implements RobotControl {
         final CountDownLatch done = new CountDownLatch(1);
         List<String> names;
@@ -22,6 +22,7 @@ class SensorsOverSocketsTest {
         double heat;
         double moved;
         double[] bump;
+        String tagged;
 
         @Override
         public void run(Robot robot) throws InterruptedException {
@@ -29,6 +30,7 @@ class SensorsOverSocketsTest {
             robot.sleep(500);
             laserAhead = robot.sensor("laser")[90];
             heat = robot.sensor("heat")[0];
+            tagged = robot.tag();
             moved = robot.move(5000);
             robot.sleep(500);
             bump = robot.sensor("bump");
@@ -47,5 +49,7 @@ class SensorsOverSocketsTest {
         assertEquals(8 / (1 + 0.5 * 0.5), probe[0].heat, 1e-12, "the stove is 0.5 m away, in sight");
         assertEquals(3000 - 250 - robosim.geometry.GeometryEngine.CONTACT_GAP_MM, probe[0].moved, 1e-9);
         assertArrayEquals(new double[] {1, 0, 0, 0}, probe[0].bump, "touching the wall in front");
+        assertEquals("flag", probe[0].tagged);
+        assertEquals(List.of("s1>flag"), sim.updates.get(sim.updates.size() - 1).tags(), "viewers were told");
     }
 }

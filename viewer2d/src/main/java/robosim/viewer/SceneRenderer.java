@@ -18,7 +18,7 @@ import robosim.protocol.SonarSpec;
 /**
  * Draws a {@link Scene} with a {@link ViewTransform}: arena (white, 1 m grid), obstacles (grey),
  * optional trails and sonar rays, robots (a disc in the robot's colour, a line to the rim along its
- * heading, its name). Pure drawing, no state: the window and the off-screen test use the same code.
+ * heading, its name), and a crimson ring around anything that has been tagged. Pure drawing, no state: the window and the off-screen test use the same code.
  */
 public final class SceneRenderer {
     public static final Color OUTSIDE = new Color(0xDDE1E6);
@@ -26,6 +26,8 @@ public final class SceneRenderer {
     public static final Color GRID = new Color(0xEEF0F3);
     public static final Color WALL = new Color(0x6B6F76);
     public static final Color OUTLINE = new Color(0x22262B);
+    /** The ring around anything that has been tagged. */
+    public static final Color TAGGED = new Color(0xE0115F);
     private static final Color[] PALETTE = {
         new Color(0x1F77B4), new Color(0xFF7F0E), new Color(0x2CA02C), new Color(0xD62728), new Color(0x9467BD),
         new Color(0x8C564B), new Color(0xE377C2), new Color(0x17BECF), new Color(0xBCBD22), new Color(0x393B79)};
@@ -49,13 +51,20 @@ public final class SceneRenderer {
         g.fillRect(0, 0, width, height);
         drawArena(g, s.arena(), t);
         g.setStroke(new BasicStroke(1f));
+        java.util.Set<String> tagged = new java.util.HashSet<>();
+        for (String tag : s.poses().tags()) {
+            tagged.add(tag.substring(tag.indexOf('>') + 1));
+        }
         for (ObstacleShape obstacle : s.obstacles()) {
             Path2D p = polygon(obstacle, t);
             g.setColor(WALL);
             g.fill(p);
-            g.setColor(OUTLINE);
+            boolean hit = tagged.contains(obstacle.name());
+            g.setColor(hit ? TAGGED : OUTLINE);
+            g.setStroke(new BasicStroke(hit ? 3f : 1f));
             g.draw(p);
         }
+        g.setStroke(new BasicStroke(1f));
         PoseUpdate poses = s.poses();
         if (o.trails()) {
             for (int i = 0; i < s.robotCount(); i++) {
@@ -69,7 +78,7 @@ public final class SceneRenderer {
         }
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         for (int i = 0; i < s.robotCount(); i++) {
-            drawRobot(g, s, i, t, o.names());
+            drawRobot(g, s, i, t, o.names(), tagged.contains(s.names().get(i)));
         }
     }
 
@@ -146,11 +155,16 @@ public final class SceneRenderer {
         }
     }
 
-    private static void drawRobot(Graphics2D g, Scene s, int i, ViewTransform t, boolean names) {
+    private static void drawRobot(Graphics2D g, Scene s, int i, ViewTransform t, boolean names, boolean tagged) {
         PoseUpdate p = s.poses();
         double r = s.robots().get(i).radiusMm() * t.scale();
         double cx = t.toScreenX(p.xMm(i));
         double cy = t.toScreenY(p.yMm(i));
+        if (tagged) {
+            g.setColor(TAGGED);
+            g.setStroke(new BasicStroke(3f));
+            g.draw(new Ellipse2D.Double(cx - r - 4, cy - r - 4, 2 * r + 8, 2 * r + 8));
+        }
         Ellipse2D body = new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r);
         g.setColor(robotColor(i));
         g.fill(body);

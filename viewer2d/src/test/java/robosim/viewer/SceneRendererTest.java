@@ -1,6 +1,7 @@
 package robosim.viewer;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.awt.Color;
 import java.awt.Graphics2D;
@@ -26,6 +27,16 @@ class SceneRendererTest {
 
     private static int pixel(BufferedImage img, ViewTransform t, double xMm, double yMm) {
         return img.getRGB((int) Math.round(t.toScreenX(xMm)), (int) Math.round(t.toScreenY(yMm))) & 0xFFFFFF;
+    }
+
+    /** Each channel within {@code tolerance}: the 3-pixel ring's edges are anti-aliased. */
+    private static boolean close(int expected, int actual, int tolerance) {
+        for (int shift = 0; shift <= 16; shift += 8) {
+            if (Math.abs(((expected >> shift) & 0xFF) - ((actual >> shift) & 0xFF)) > tolerance) {
+                return false;
+            }
+        }
+        return true;
     }
 
     private static int rgb(Color c) {
@@ -56,6 +67,26 @@ class SceneRendererTest {
         assertEquals(rgb(SceneRenderer.OUTSIDE), img.getRGB(3, 3) & 0xFFFFFF);
         // where robot a is not: floor
         assertEquals(rgb(SceneRenderer.FLOOR), pixel(img, t, 3500, 3500));
+    }
+
+    @Test
+    void aTaggedRobotGetsARing() {
+        PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
+                new double[] {0, 90}, null, List.of("a>b"));
+        Scene s = new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+                poses, new double[][] {{}, {}}, 0, "running");
+        BufferedImage img = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);
+        ViewTransform t = new ViewTransform();
+        t.fit(ARENA, 1000, 500);
+        Graphics2D g = img.createGraphics();
+        SceneRenderer.render(g, s, t, SceneRenderer.Options.DEFAULT, 1000, 500);
+        g.dispose();
+        // b (radius 190 mm) gets a ring 4 px outside its rim; a does not
+        double ringMm = 190 + 4 / t.scale();
+        int ring = pixel(img, t, 8000 + ringMm, 4000);
+        assertTrue(close(rgb(SceneRenderer.TAGGED), ring, 24), "the ring's colour (anti-aliased): "
+                + Integer.toHexString(ring));
+        assertEquals(rgb(SceneRenderer.FLOOR), pixel(img, t, 2000 - (250 + 4 / t.scale()), 2500));
     }
 
     @Test

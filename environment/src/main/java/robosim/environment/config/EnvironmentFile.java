@@ -21,6 +21,9 @@ public final class EnvironmentFile {
     /** How far messages between robots carry, metres (centre to centre); absent = everywhere. */
     @JacksonXmlProperty(isAttribute = true)
     public Double commRangeM;
+    /** How far a tag reaches from the robot's rim, metres; absent = 1. */
+    @JacksonXmlProperty(isAttribute = true)
+    public Double tagRangeM;
     /** Largest message payload in bytes; absent = 8192. */
     @JacksonXmlProperty(isAttribute = true)
     public Integer maxMessageBytes;
@@ -67,6 +70,9 @@ public final class EnvironmentFile {
     public static final class RectangleXml {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
+        /** A robot's tag can hit it. */
+        @JacksonXmlProperty(isAttribute = true)
+        public Boolean taggable;
         @JacksonXmlProperty(isAttribute = true)
         public Double x;
         @JacksonXmlProperty(isAttribute = true)
@@ -81,6 +87,8 @@ public final class EnvironmentFile {
     public static final class PolygonXml {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public Boolean taggable;
         @JacksonXmlProperty(isAttribute = true)
         public String points;
     }

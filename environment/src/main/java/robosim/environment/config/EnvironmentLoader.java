@@ -99,6 +99,18 @@ public final class EnvironmentLoader {
         }
         Arena arena = new Arena(ax * MM_PER_M, ay * MM_PER_M, (ax + w) * MM_PER_M, (ay + h) * MM_PER_M);
         List<ObstacleShape> obstacles = obstacles(where, xml);
+        java.util.Set<String> taggable = new java.util.HashSet<>();
+        for (int o = 0; o < xml.obstacles.all.size(); o++) {
+            Object x = xml.obstacles.all.get(o);
+            Boolean t = x instanceof EnvironmentFile.RectangleXml r ? r.taggable : ((EnvironmentFile.PolygonXml) x).taggable;
+            if (Boolean.TRUE.equals(t)) {
+                taggable.add(obstacles.get(o).name());
+            }
+        }
+        double tagRange = xml.tagRangeM == null ? WorldSpec.DEFAULT_TAG_RANGE_MM / MM_PER_M : xml.tagRangeM;
+        if (!(tagRange > 0) || Double.isInfinite(tagRange)) {
+            throw new EnvironmentFileException(env + " tagRangeM must be > 0 m, got " + tagRange);
+        }
         List<RobotSpec> robots = robots(where, xml, arena, obstacles);
         long seed = xml.seed == null ? 1L : xml.seed;
         String name = xml.name == null ? Path.of(where).getFileName().toString() : xml.name;
@@ -126,7 +138,8 @@ public final class EnvironmentLoader {
             heat.add(new WorldSpec.HeatSource(src.name == null ? "heat" + (heat.size() + 1) : src.name, hx * MM_PER_M,
                     hy * MM_PER_M, intensity));
         }
-        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes, heat);
+        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes, heat,
+                tagRange * MM_PER_M, taggable);
     }
 
     private static List<WorldSpec.SensorSpec> sensors(String where, String robot, List<EnvironmentFile.SensorXml> xml)

@@ -91,8 +91,13 @@ public final class EnvironmentMap {
     }
 
     /** As {@link #poses}, with each robot's sonar ranges of that step (taken as they are). */
-    PoseUpdate poses(long step, double[][] sonarMm) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm);
+    PoseUpdate poses(long step, double[][] sonarMm, List<String> tags) {
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags);
+    }
+
+    /** The robots' radii, mm, in world order. */
+    double radiusMm(int robot) {
+        return properties.get(robot).radiusMm();
     }
 
     public GeometryWorld geometryWorld() {

@@ -46,6 +46,8 @@ public final class SimulationCore {
     private final SensorContext sensorContext;
     /** The world's one seeded generator: all sensor noise comes from it, in a fixed order. */
     private final Random random;
+    /** Every tag so far, "tagger>target"; replaced (never changed) when a tag happens. */
+    private List<String> tags = List.of();
     private long lastStep = -1;
 
     public SimulationCore(WorldSpec spec, List<RobotProperties> properties, GeometryService geometry) {
@@ -141,6 +143,21 @@ public final class SimulationCore {
             double moved = g.movedMm(i);
             map.setPose(i, map.xMm(i) + Kinematics.dx(h, moved), map.yMm(i) + Kinematics.dy(h, moved), h);
         }
+        // tag (an ACTION, after every move)
+        String[] tagged = null;
+        for (int i = 0; i < robots; i++) {
+            if (requests[i] != null && requests[i].wantsTag()) {
+                if (tagged == null) {
+                    tagged = new String[robots];
+                }
+                tagged[i] = Tags.nearest(map, i, map.spec().tagRangeMm());
+                if (!tagged[i].isEmpty()) {
+                    List<String> more = new ArrayList<>(tags);
+                    more.add(map.name(i) + ">" + tagged[i]);
+                    tags = List.copyOf(more);
+                }
+            }
+        }
         // sense (the world after every move) and respond
         int range = 0;
         for (int i = 0; i < robots; i++) {
@@ -160,7 +177,8 @@ public final class SimulationCore {
             List<SensorReading> readings = requests[i] == null || requests[i].sensors().isEmpty() ? List.of()
                     : read(i, requests[i].sensors());
             responses[i] = new StepResponse(k, g.movedMm(i), g.turnedDeg(i), contactName(g, i), map.xMm(i),
-                    map.yMm(i), map.headingDeg(i), sonar, router.takeInbox(i), router.takeNotices(i), readings);
+                    map.yMm(i), map.headingDeg(i), sonar, router.takeInbox(i), router.takeNotices(i), readings,
+                    tagged == null || tagged[i] == null ? "" : tagged[i]);
         }
         lastStep = k;
     }
@@ -222,7 +240,12 @@ public final class SimulationCore {
         for (int i = 0; i < robots; i++) {
             sonar[i] = responses[i].sonarMm();
         }
-        return map.poses(lastStep, sonar);
+        return map.poses(lastStep, sonar, tags);
+    }
+
+    /** Every tag so far, "tagger>target", oldest first. */
+    public List<String> tags() {
+        return tags;
     }
 
     /** Robot i's response to the last step. */

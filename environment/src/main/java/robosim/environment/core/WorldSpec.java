@@ -14,7 +14,12 @@ import robosim.protocol.ObstacleShape;
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
         List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
-        List<HeatSource> heatSources) {
+        List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable) {
+    /** How far a tag reaches from the robot's rim by default, mm. */
+    public static final double DEFAULT_TAG_RANGE_MM = 1000;
+    /** A tag hits only what lies within this many degrees of the heading. */
+    public static final double TAG_HALF_ANGLE_DEG = 30;
+
     /** Default payload limit: a few kilobytes, well under the wire's 65,535. */
     public static final int DEFAULT_MAX_MESSAGE_BYTES = 8192;
 
@@ -32,6 +37,18 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         obstacles = List.copyOf(obstacles);
         robots = List.copyOf(robots);
         heatSources = List.copyOf(heatSources);
+        if (!(tagRangeMm > 0) || Double.isInfinite(tagRangeMm)) {
+            throw new IllegalArgumentException("tag range must be > 0 mm, got " + tagRangeMm);
+        }
+        taggable = java.util.Set.copyOf(taggable);
+    }
+
+    /** With the default tag range and no taggable obstacles. */
+    public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
+            List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
+            List<HeatSource> heatSources) {
+        this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, heatSources,
+                DEFAULT_TAG_RANGE_MM, java.util.Set.of());
     }
 
     /** A world whose messages carry everywhere, with the default size limit, and no heat sources. */
