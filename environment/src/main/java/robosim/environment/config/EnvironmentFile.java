@@ -107,6 +107,12 @@ public final class EnvironmentFile {
         public Double y;
         @JacksonXmlProperty(isAttribute = true)
         public Double heading;
+        /** Radius in metres: required for a robot type given by class name, checked against known models. */
+        @JacksonXmlProperty(isAttribute = true)
+        public Double radius;
+        /** How many sonars the robot must report; absent = whatever its type has. */
+        @JacksonXmlProperty(isAttribute = true)
+        public Integer sonars;
         /** Standard deviation of Gaussian noise on its sonar ranges, mm; absent = none. */
         @JacksonXmlProperty(isAttribute = true)
         public Double sonarNoiseMm;

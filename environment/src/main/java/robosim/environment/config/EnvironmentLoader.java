@@ -288,9 +288,27 @@ public final class EnvironmentLoader {
                         + ")");
             }
             RobotProperties props = RobotModels.byName(r.type);
-            if (props == null) {
+            boolean classType = props == null && r.type.contains(".");
+            if (props == null && !classType) {
                 throw new EnvironmentFileException(where + ": " + el + " type \"" + r.type
-                        + "\" is not a known robot type (known: " + RobotModels.names() + ")");
+                        + "\" is not a known robot type (known: " + RobotModels.names()
+                        + ", or the class name of a RobotType with radius=\"...\")");
+            }
+            if (classType && r.radius == null) {
+                throw new EnvironmentFileException(where + ": " + el + " a robot of type class " + r.type
+                        + " needs radius=\"...\" (metres)");
+            }
+            double radiusMm = r.radius == null ? props.radiusMm() : required(where, el, "radius", r.radius) * MM_PER_M;
+            if (!(radiusMm > 0)) {
+                throw new EnvironmentFileException(where + ": " + el + " radius must be > 0 m, got " + r.radius);
+            }
+            if (props != null && Math.abs(radiusMm - props.radiusMm()) > 1e-6) {
+                throw new EnvironmentFileException(where + ": " + el + " radius " + r.radius + " m contradicts the "
+                        + r.type + "'s " + props.radiusMm() / MM_PER_M + " m");
+            }
+            if (r.sonars != null && (r.sonars < 0 || r.sonars > robosim.protocol.Limits.MAX_SONARS)) {
+                throw new EnvironmentFileException(where + ": " + el + " sonars must be in 0.."
+                        + robosim.protocol.Limits.MAX_SONARS + ", got " + r.sonars);
             }
             double x = required(where, el, "x", r.x) * MM_PER_M;
             double y = required(where, el, "y", r.y) * MM_PER_M;
@@ -298,7 +316,7 @@ public final class EnvironmentLoader {
             if (!Double.isFinite(heading)) {
                 throw new EnvironmentFileException(where + ": " + el + " heading must be a finite number");
             }
-            double rad = props.radiusMm();
+            double rad = radiusMm;
             if (x - rad < arena.minXMm() || x + rad > arena.maxXMm() || y - rad < arena.minYMm()
                     || y + rad > arena.maxYMm()) {
                 throw new EnvironmentFileException(where + ": " + el + " at (" + r.x + ", " + r.y
@@ -312,7 +330,7 @@ public final class EnvironmentLoader {
                 }
             }
             for (RobotSpec other : out) {
-                double minimum = rad + RobotModels.byName(other.type()).radiusMm();
+                double minimum = rad + other.radiusMm();
                 if (Math.hypot(other.xMm() - x, other.yMm() - y) < minimum) {
                     throw new EnvironmentFileException(where + ": " + el + " overlaps robot \"" + other.name() + "\"");
                 }
@@ -322,7 +340,8 @@ public final class EnvironmentLoader {
                 throw new EnvironmentFileException(where + ": " + el + " sonarNoiseMm must be >= 0, got " + sonarNoise);
             }
             out.add(new RobotSpec(r.name, r.type, r.control == null ? "" : r.control, x, y,
-                    robosim.geometry.Kinematics.turn(heading, 0), sensors(where, el, r.sensors), sonarNoise));
+                    robosim.geometry.Kinematics.turn(heading, 0), sensors(where, el, r.sensors), sonarNoise, radiusMm,
+                    r.sonars == null ? -1 : r.sonars));
         }
         return out;
     }

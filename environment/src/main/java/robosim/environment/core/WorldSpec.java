@@ -97,16 +97,44 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
      * @param control the control class the headless runner starts for it (may be empty)
      * @param sensors its plug-in sensors
      * @param sonarNoiseMm standard deviation of Gaussian noise on its sonar ranges
+     * @param radiusMm the radius the robot must report: its model's, or the file's for a robot type class
+     * @param sonarCount the number of sonars the robot must report, or -1 when the file does not say
      */
     public record RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
-            List<SensorSpec> sensors, double sonarNoiseMm) {
+            List<SensorSpec> sensors, double sonarNoiseMm, double radiusMm, int sonarCount) {
         public RobotSpec {
             sensors = List.copyOf(sensors);
         }
 
-        /** A robot with sonar only and no noise. */
+        /** A robot of a known model ({@code ArRobot}, {@code Scout}), its radius the model's. */
+        public RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
+                List<SensorSpec> sensors, double sonarNoiseMm) {
+            this(name, type, control, xMm, yMm, headingDeg, sensors, sonarNoiseMm,
+                    robosim.protocol.RobotModels.byName(type).radiusMm(), -1);
+        }
+
+        /** A robot of a known model with sonar only and no noise. */
         public RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg) {
             this(name, type, control, xMm, yMm, headingDeg, List.of(), 0);
+        }
+
+        /**
+         * Why the properties a robot reports contradict this entry, or null if they agree: its type,
+         * radius and (when the file gives one) sonar count must be the file's.
+         */
+        public String contradiction(robosim.protocol.RobotProperties p, String source) {
+            if (!type.equals(p.type())) {
+                return "robot " + name + " is a " + type + " in " + source + ", but says it is a " + p.type();
+            }
+            if (Math.abs(p.radiusMm() - radiusMm) > 1e-6) {
+                return "robot " + name + " has radius " + radiusMm / 1000 + " m in " + source + ", but says "
+                        + p.radiusMm() / 1000 + " m";
+            }
+            if (sonarCount >= 0 && p.sonars().size() != sonarCount) {
+                return "robot " + name + " has " + sonarCount + " sonars in " + source + ", but says "
+                        + p.sonars().size();
+            }
+            return null;
         }
 
         public List<String> sensorNames() {

@@ -215,10 +215,9 @@ public final class ClientWorkerCoordinator implements Closeable {
             return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
                     + String.join(", ", robotNames) + ")";
         }
-        String fileType = spec.robots().get(index).type();
-        if (!fileType.equals(hello.properties().type())) {
-            return "robot " + hello.name() + " is a " + fileType + " in " + spec.source() + ", but says it is a "
-                    + hello.properties().type();
+        String contradiction = spec.robots().get(index).contradiction(hello.properties(), spec.source());
+        if (contradiction != null) {
+            return contradiction;
         }
         lock.lock();
         try {
@@ -475,7 +474,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 double[] h = new double[robotCount];
                 for (int i = 0; i < robotCount; i++) {
                     WorldSpec.RobotSpec r = spec.robots().get(i);
-                    props.add(properties[i] != null ? properties[i] : RobotModels.byName(r.type()));
+                    props.add(properties[i] != null ? properties[i] : expected(r));
                     x[i] = r.xMm();
                     y[i] = r.yMm();
                     h[i] = r.headingDeg();
@@ -491,6 +490,12 @@ public final class ClientWorkerCoordinator implements Closeable {
         } finally {
             lock.unlock();
         }
+    }
+
+    /** What a robot not yet connected looks like: its model, or a disc of the file's radius. */
+    private static RobotProperties expected(WorldSpec.RobotSpec r) {
+        RobotProperties model = RobotModels.byName(r.type());
+        return model != null ? model : new RobotProperties(r.type(), r.radiusMm(), 1, 1, List.of());
     }
 
     void removeViewer(ViewerClientWorker viewer, String why) {

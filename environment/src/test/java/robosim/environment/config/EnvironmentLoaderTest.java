@@ -82,7 +82,8 @@ class EnvironmentLoaderTest {
     void anUnknownRobotType() throws Exception {
         String m = failure(env("timeStepMs=\"500\"",
                 "<robots><robot name=\"r1\" type=\"Roomba\" x=\"1\" y=\"1\"/></robots>"));
-        assertTrue(m.endsWith("<robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: [ArRobot, Scout])"), m);
+        assertTrue(m.endsWith("<robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: [ArRobot, Scout], "
+                + "or the class name of a RobotType with radius=\"...\")"), m);
     }
 
     @Test
@@ -165,6 +166,20 @@ class EnvironmentLoaderTest {
         assertTrue(m.endsWith("unknown attribute(s) [fov] for a laser sensor"), m);
         m = failure(env("timeStepMs=\"500\"", "<heatSources><heat name=\"h\" x=\"1\" y=\"1\"/></heatSources>" + ROBOT));
         assertTrue(m.endsWith("<heat name=\"h\"> needs the attribute intensity"), m);
+    }
+
+    @Test
+    void aRobotTypeClassNeedsItsRadiusAndAKnownModelsRadiusMustAgree() throws Exception {
+        String m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"h\" type=\"com.example.Hexapod\" x=\"1\" "
+                + "y=\"1\"/></robots>"));
+        assertTrue(m.endsWith("a robot of type class com.example.Hexapod needs radius=\"...\" (metres)"), m);
+        WorldSpec s = new EnvironmentLoader().load(write(env("timeStepMs=\"500\"", "<robots><robot name=\"h\" "
+                + "type=\"com.example.Hexapod\" radius=\"0.3\" sonars=\"6\" x=\"1\" y=\"1\"/></robots>")));
+        assertEquals(300, s.robots().get(0).radiusMm());
+        assertEquals(6, s.robots().get(0).sonarCount());
+        m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"a\" type=\"ArRobot\" radius=\"0.3\" x=\"1\" "
+                + "y=\"1\"/></robots>"));
+        assertTrue(m.endsWith("radius 0.3 m contradicts the ArRobot's 0.25 m"), m);
     }
 
     @Test
