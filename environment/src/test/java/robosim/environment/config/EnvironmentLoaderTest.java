@@ -49,6 +49,10 @@ class EnvironmentLoaderTest {
         assertEquals(13_000, test.arena().maxXMm());
         assertEquals(2, test.obstacles().size());
         assertEquals(10, new EnvironmentLoader().load(Path.of("../test-envs/paper-benchmark.xml")).robots().size());
+        assertEquals(6, new EnvironmentLoader().load(Path.of("../test-envs/maze.xml")).robots().size());
+        assertEquals(100, new EnvironmentLoader().load(Path.of("../test-envs/swarm-100.xml")).robots().size());
+        assertEquals(4, new EnvironmentLoader().load(Path.of("../test-envs/follow.xml")).robots().size());
+        assertEquals(4, new EnvironmentLoader().load(Path.of("../test-envs/tag.xml")).robots().size());
     }
 
     @Test

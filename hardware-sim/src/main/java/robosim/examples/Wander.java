@@ -1,0 +1,63 @@
+package robosim.examples;
+
+import java.util.Random;
+import robosim.api.Robot;
+import robosim.api.RobotControl;
+
+/**
+ * Sonar-based obstacle avoidance: drive ahead in legs of {@link #LEG_MM}; when a sonar facing within 60
+ * degrees of ahead reads closer than {@link #CLEARANCE_MM}, turn away towards the more open side by
+ * 30 to 90 degrees. The turn sizes come from a generator seeded by the robot's name, so runs repeat.
+ * Subclasses may act once a step ({@link #everyStep}).
+ */
+public class Wander implements RobotControl {
+    /** How close an obstacle ahead may come before the robot turns away, mm (from the sonar). */
+    public static final double CLEARANCE_MM = 600;
+    /** Length of one leg ahead, mm: one step at 500 mm/s and 500 ms steps. */
+    public static final double LEG_MM = 250;
+
+    @Override
+    public void run(Robot robot) throws InterruptedException {
+        Random random = new Random(robot.name().hashCode());
+        double[] angles = robot.sonarAnglesDeg();
+        robot.sleep(1);
+        while (true) {
+            everyStep(robot);
+            double[] ranges = robot.sonarRanges();
+            double ahead = Double.POSITIVE_INFINITY;
+            double left = 0;
+            double right = 0;
+            for (int s = 0; s < ranges.length; s++) {
+                double a = normalise(angles[s]);
+                if (Math.abs(a) <= 60) {
+                    ahead = Math.min(ahead, ranges[s]);
+                }
+                if (a > 0 && a < 180) {
+                    left += ranges[s];
+                } else if (a < 0) {
+                    right += ranges[s];
+                }
+            }
+            if (ahead < CLEARANCE_MM) {
+                double by = 30 + random.nextInt(61);
+                robot.turn(left >= right ? by : -by);
+            } else {
+                robot.move(LEG_MM);
+            }
+        }
+    }
+
+    /** Called once before each step's decision; does nothing here. */
+    protected void everyStep(Robot robot) throws InterruptedException {
+    }
+
+    static double normalise(double deg) {
+        double a = deg % 360;
+        if (a > 180) {
+            a -= 360;
+        } else if (a <= -180) {
+            a += 360;
+        }
+        return a;
+    }
+}
