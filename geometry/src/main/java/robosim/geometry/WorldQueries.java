@@ -36,7 +36,10 @@ public final class WorldQueries {
         v.begin(ox, oy, ux, uy, maxMm);
         world.query(area, v);
         for (int j = 0; j < x.length; j++) {
-            if (j != exclude) {
+            double dx = x[j] - ox;
+            double dy = y[j] - oy;
+            double reach = v.best + r[j];
+            if (j != exclude && dx * dx + dy * dy <= reach * reach) {
                 v.best = Math.min(v.best, Sweep.toCircle(ox, oy, ux, uy, r[j], x[j], y[j]));
             }
         }
@@ -128,9 +131,10 @@ public final class WorldQueries {
             if (blocked || s.ownerKind != robosim.protocol.GeometryStepResponse.CONTACT_OBSTACLE) {
                 return;
             }
-            // the two segments cross (or touch) when each one's ends lie on both sides of the other
+            // blocked when the edge meets the sight line and the line's ends lie strictly on both sides
+            // of the edge: a point on the surface itself (a heat source on a wall) stays in sight
             blocked = orient(ax, ay, bx, by, s.ax, s.ay) * orient(ax, ay, bx, by, s.bx, s.by) <= 0
-                    && orient(s.ax, s.ay, s.bx, s.by, ax, ay) * orient(s.ax, s.ay, s.bx, s.by, bx, by) <= 0;
+                    && orient(s.ax, s.ay, s.bx, s.by, ax, ay) * orient(s.ax, s.ay, s.bx, s.by, bx, by) < 0;
         }
     }
 

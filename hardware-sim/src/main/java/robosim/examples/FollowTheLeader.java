@@ -4,8 +4,8 @@ import robosim.api.Robot;
 import robosim.api.RobotControl;
 
 /**
- * The first robot in the world leads: it wanders slowly (250 mm/s) and broadcasts its pose every
- * step. Every other robot follows: each step it turns towards the leader's newest pose if that lies
+ * The first robot in the world leads: it wanders slowly (250 mm/s) and broadcasts its pose before
+ * every leg or turn (a 250 mm leg takes it two steps). Every other robot follows: each step it turns towards the leader's newest pose if that lies
  * more than 20 degrees off its heading, and otherwise drives towards it, stopping {@link #GAP_MM}
  * short.
  */

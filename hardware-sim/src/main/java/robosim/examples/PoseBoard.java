@@ -23,7 +23,11 @@ class PoseBoard {
         for (Message m = robot.receive(); m != null; m = robot.receive()) {
             if (m.text().startsWith(PREFIX)) {
                 String[] p = m.text().substring(PREFIX.length()).split(" ");
-                poses.put(m.from(), new double[] {Double.parseDouble(p[0]), Double.parseDouble(p[1])});
+                try {
+                    poses.put(m.from(), new double[] {Double.parseDouble(p[0]), Double.parseDouble(p[1])});
+                } catch (ArrayIndexOutOfBoundsException | NumberFormatException malformed) {
+                    other(m);
+                }
             } else {
                 other(m);
             }

@@ -38,8 +38,8 @@ public final class RemoteControlRobot implements RobotControl {
                     return false;
                 }
             }
-        } catch (ArrayIndexOutOfBoundsException | NumberFormatException e) {
-            return false;
+        } catch (ArrayIndexOutOfBoundsException | IllegalArgumentException e) {
+            return false; // missing, not a number, or not finite ("forward NaN"): not a command
         }
         return true;
     }

@@ -7,8 +7,9 @@ import robosim.api.RobotControl;
 
 /**
  * The first robot chases; the others wander and broadcast their poses every step. The chaser heads
- * for the nearest robot it has not tagged yet, and tags when it is within a metre, roughly ahead;
- * a tagged robot is left alone. When all are tagged the chaser stops.
+ * for the nearest robot it has not tagged yet and tags when it is within 1.4 m, roughly ahead (after
+ * a miss it closes in before trying again); a tagged robot is left alone, and only robots count.
+ * When all are tagged the chaser stops.
  */
 public final class TagChase implements RobotControl {
     @Override
@@ -25,6 +26,7 @@ public final class TagChase implements RobotControl {
         }
         PoseBoard board = new PoseBoard();
         Set<String> tagged = new HashSet<>();
+        boolean missed = false;
         robot.sleep(1);
         while (tagged.size() < robot.robotNames().size() - 1) {
             board.listen(robot);
@@ -45,13 +47,15 @@ public final class TagChase implements RobotControl {
             double bearing = PoseBoard.bearingTo(robot, p[0], p[1]);
             if (Math.abs(bearing) > 20) {
                 robot.turn(Math.max(-45, Math.min(45, bearing)));
-            } else if (nearest < 1400) {
+            } else if (nearest < 1400 && !missed) {
                 String hit = robot.tag();
-                if (!hit.isEmpty()) {
+                if (robot.robotNames().contains(hit)) {
                     tagged.add(hit);
                 }
+                missed = hit.isEmpty();
             } else {
-                robot.move(Math.min(Wander.LEG_MM, nearest - 700));
+                robot.move(Math.min(Wander.LEG_MM, Math.max(Wander.LEG_MM / 5, nearest - 700)));
+                missed = false;
             }
         }
         while (true) {

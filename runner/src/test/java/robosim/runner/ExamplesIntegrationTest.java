@@ -110,7 +110,7 @@ class ExamplesIntegrationTest {
     }
 
     private static void drive(Robot robot, List<String> replies) throws InterruptedException {
-        for (String c : new String[] {"forward 500", "jump", "left 90", "forward 250"}) {
+        for (String c : new String[] {"forward 500", "jump", "forward NaN", "left 90", "forward 250"}) {
             robot.send("rc", c);
         }
         while (true) {

@@ -46,7 +46,10 @@ public final class SimulationCore {
     private final SensorContext sensorContext;
     /** The world's one seeded generator: all sensor noise comes from it, in a fixed order. */
     private final Random random;
-    /** Every tag so far, "tagger>target"; replaced (never changed) when a tag happens. */
+    /**
+     * Every distinct "tagger>target" so far, first time first (bounded by robots x (robots +
+     * obstacles)); replaced, never changed, when a new pair appears.
+     */
     private List<String> tags = List.of();
     private long lastStep = -1;
 
@@ -151,9 +154,10 @@ public final class SimulationCore {
                     tagged = new String[robots];
                 }
                 tagged[i] = Tags.nearest(map, i, map.spec().tagRangeMm());
-                if (!tagged[i].isEmpty()) {
+                String pair = map.name(i) + ">" + tagged[i];
+                if (!tagged[i].isEmpty() && !tags.contains(pair)) {
                     List<String> more = new ArrayList<>(tags);
-                    more.add(map.name(i) + ">" + tagged[i]);
+                    more.add(pair);
                     tags = List.copyOf(more);
                 }
             }
@@ -195,7 +199,19 @@ public final class SimulationCore {
                 router.notice(i, "no sensor named " + name + " on " + map.name(i));
                 continue;
             }
-            double[] values = sensors[i][s].generateSensorResponse(sensorContext.aim(i));
+            double[] values;
+            try {
+                values = sensors[i][s].generateSensorResponse(sensorContext.aim(i));
+            } catch (RuntimeException e) {
+                router.notice(i, "sensor " + name + " failed: " + e);
+                continue;
+            }
+            if (values == null || values.length > robosim.protocol.Limits.MAX_SENSOR_VALUES) {
+                router.notice(i, "sensor " + name + " gave " + (values == null ? "no values"
+                        : values.length + " values, more than " + robosim.protocol.Limits.MAX_SENSOR_VALUES));
+                continue;
+            }
+            values = values.clone();
             double noise = sensorSpecs[i][s].noise();
             if (noise > 0) {
                 for (int v = 0; v < values.length; v++) {

@@ -26,11 +26,12 @@ public final class LaserSensor extends RobotSensor {
         if (!(rangeMm > 0)) {
             throw new IllegalArgumentException("rangeM must be > 0, got " + rangeMm / 1000);
         }
-        beams = (int) Math.floor(fovDeg / resolutionDeg + 1e-9) + (fovDeg >= 360 ? 0 : 1);
-        if (beams > robosim.protocol.Limits.MAX_SENSOR_VALUES) {
-            throw new IllegalArgumentException("fovDeg / resolutionDeg gives " + beams + " beams, more than "
+        double count = Math.floor(fovDeg / resolutionDeg + 1e-9) + (fovDeg >= 360 ? 0 : 1);
+        if (count > robosim.protocol.Limits.MAX_SENSOR_VALUES) {
+            throw new IllegalArgumentException("fovDeg / resolutionDeg gives " + (long) count + " beams, more than "
                     + robosim.protocol.Limits.MAX_SENSOR_VALUES);
         }
+        beams = (int) count;
     }
 
     public LaserSensor() {

@@ -72,6 +72,26 @@ class SensorsTest {
     }
 
     @Test
+    void aHeatSourceOnAWallsFaceIsInSight() throws Exception {
+        // the wall's face is at x = 4 m; a source on that face, 2 m from a: 10 / (1 + 4) = 2
+        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 2000, 1000, 0, ALL, 0)),
+                List.of(new WorldSpec.HeatSource("lamp", 4000, 1000, 10)), 1);
+        core.step(0, new StepRequest[] {ask(0, 0, "heat")});
+        assertArrayEquals(new double[] {2}, reading(core, 0, "heat"), 1e-12);
+    }
+
+    @Test
+    void aFailingSensorIsANoticeNotTheEndOfTheRun() throws Exception {
+        List<SensorSpec> failing = List.of(new SensorSpec("broken", FailingTestSensor.class.getName(), 0, Map.of()),
+                new SensorSpec("bump", "bump", 0, Map.of()));
+        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, failing, 0)), List.of(), 1);
+        core.step(0, new StepRequest[] {ask(0, 0, "broken", "bump")});
+        assertEquals(List.of("sensor broken failed: java.lang.IllegalStateException: out of order"),
+                core.response(0).notices());
+        assertEquals(4, reading(core, 0, "bump").length, "the other sensors still answer");
+    }
+
+    @Test
     void bumpSaysWhichSideTouches() throws Exception {
         // a drives into the wall head on; d drives down onto b, touching b's left side with its front
         SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 3500, 5000, 0, ALL, 0),
@@ -124,6 +144,9 @@ class SensorsTest {
         assertEquals("unknown attribute(s) [fov] for a laser sensor",
                 assertThrows(IllegalArgumentException.class, () -> RobotSensors.create("laser", Map.of("fov", "90")))
                         .getMessage());
+        assertTrue(assertThrows(IllegalArgumentException.class,
+                () -> RobotSensors.create("laser", Map.of("resolutionDeg", "1e-8"))).getMessage()
+                .endsWith("beams, more than 4096"));
         assertEquals("attribute rangeM value 'far' is not a number",
                 assertThrows(IllegalArgumentException.class, () -> RobotSensors.create("laser", Map.of("rangeM", "far")))
                         .getMessage());
