@@ -93,6 +93,11 @@ public final class HeadlessRunner implements Callable<Integer> {
                     + "with C1 only cost less CPU on a small machine; give '' for heavy control code).")
     String robotJvmOpts;
 
+    @Option(names = "--profile", paramLabel = "DIR",
+            description = "Record a Java Flight Recorder profile of the Environment and the Geometry process into "
+                    + "DIR (environment.jfr, geometry.jfr); read them with 'jfr print' or JDK Mission Control.")
+    Path profile;
+
     @Option(names = "--timeout-s", defaultValue = "0",
             description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
     long timeoutS;
@@ -142,7 +147,7 @@ public final class HeadlessRunner implements Callable<Integer> {
             envArgs.add("--speed");
             envArgs.add(Double.toString(speed));
         }
-        Process environment = children.start("environment", opts(environmentJvmOpts), "robosim.environment.EnvironmentMain", envArgs, line -> {
+        Process environment = children.start("environment", profiled(opts(environmentJvmOpts), "environment"), "robosim.environment.EnvironmentMain", envArgs, line -> {
             if (line.startsWith("listening ")) {
                 listening.complete(fields(line));
             } else if (line.startsWith("summary ")) {
@@ -167,7 +172,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                     List.of("127.0.0.1", Integer.toString(viewerPort)));
         }
         if (!noGeometry) {
-            children.start("geometry", opts(geometryJvmOpts), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
+            children.start("geometry", profiled(opts(geometryJvmOpts), "geometry"), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
                     null);
         }
         startRobots(spec, children, robotPort);
@@ -264,6 +269,18 @@ public final class HeadlessRunner implements Callable<Integer> {
                         List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type", r.type()), null);
             }
         }
+    }
+
+    /** Adds a flight recording of the whole process to {@code options} when --profile is given. */
+    private List<String> profiled(List<String> options, String role) throws IOException {
+        if (profile == null) {
+            return options;
+        }
+        java.nio.file.Files.createDirectories(profile);
+        List<String> withJfr = new ArrayList<>(options);
+        withJfr.add("-XX:StartFlightRecording=filename=" + profile.resolve(role + ".jfr").toAbsolutePath()
+                + ",settings=profile");
+        return withJfr;
     }
 
     private static List<String> opts(String spaceSeparated) {

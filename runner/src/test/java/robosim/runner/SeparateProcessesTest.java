@@ -27,7 +27,8 @@ class SeparateProcessesTest {
         System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
         try {
             code = new CommandLine(new HeadlessRunner()).execute("--env", "src/test/resources/three-robots.xml",
-                    "--steps", "200", "--pose-log", log.toString(), "--timeout-s", "120");
+                    "--steps", "200", "--pose-log", log.toString(), "--timeout-s", "120", "--profile",
+                    dir.resolve("profile").toString());
         } finally {
             System.setOut(saved);
         }
@@ -46,6 +47,8 @@ class SeparateProcessesTest {
         assertEquals("199,r1,7.5,1.0,0.0", rows.get(rows.size() - 3));
         assertEquals("199,r2,7.5,2.0,0.0", rows.get(rows.size() - 2));
         assertEquals("199,r3,7.5,3.0,0.0", rows.get(rows.size() - 1));
+        assertTrue(Files.size(dir.resolve("profile/environment.jfr")) > 0, "--profile recorded the Environment");
+        assertTrue(Files.size(dir.resolve("profile/geometry.jfr")) > 0, "--profile recorded Geometry");
     }
 
     @Test
