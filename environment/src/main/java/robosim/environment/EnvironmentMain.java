@@ -58,6 +58,11 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + " = as fast as possible).")
     double speed;
 
+    @Option(names = "--coordinator", defaultValue = "THREADS",
+            description = "How robots' requests are read: THREADS (one thread per robot, the default) or "
+                    + "SEQUENTIAL (the original's single loop).")
+    ClientWorkerCoordinator.Design design;
+
     @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
             description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
     int resetEvery;
@@ -81,7 +86,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
                 InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
-                handshakeTimeoutMs, speed);
+                handshakeTimeoutMs, speed, design);
         ClientWorkerCoordinator coordinator = new ClientWorkerCoordinator(spec, settings);
         try {
             coordinator.start();

@@ -55,6 +55,10 @@ public final class HeadlessRunner implements Callable<Integer> {
     @Option(names = "--progress", description = "Print the step and steps/s once a second.")
     boolean progress;
 
+    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "THREADS",
+            description = "The Environment's coordinator design: THREADS (default) or SEQUENTIAL.")
+    String coordinator;
+
     @Option(names = "--speed", defaultValue = "0",
             description = "Run at most this many times real time (default: ${DEFAULT-VALUE} = as fast as possible).")
     double speed;
@@ -143,6 +147,8 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }
+        envArgs.add("--coordinator");
+        envArgs.add(coordinator);
         if (speed > 0) {
             envArgs.add("--speed");
             envArgs.add(Double.toString(speed));

@@ -38,6 +38,13 @@ final class InJvmSimulation {
     /** Called on the recording viewer's thread with each update, and the viewer port. */
     private java.util.function.BiConsumer<PoseUpdate, Integer> onUpdate = (u, port) -> { };
 
+    private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.THREADS;
+
+    InJvmSimulation design(ClientWorkerCoordinator.Design d) {
+        this.design = d;
+        return this;
+    }
+
     InJvmSimulation onUpdate(java.util.function.BiConsumer<PoseUpdate, Integer> hook) {
         this.onUpdate = hook;
         return this;
@@ -57,7 +64,7 @@ final class InJvmSimulation {
     InJvmSimulation run(long steps, boolean inProcessGeometry, Supplier<RobotControl> control) throws Exception {
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
                 InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry, steps, ObjectConnection.DEFAULT_RESET_EVERY,
-                10_000));
+                10_000).withDesign(design));
         env.start();
         try {
             int[] ports = env.ports();

@@ -37,6 +37,30 @@ class LockStepIntegrationTest {
         }
     }
 
+    @org.junit.jupiter.api.Test
+    void theSequentialCoordinatorGivesTheSamePosesAndMessages() throws Exception {
+        InJvmSimulation threads = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .run(1000, false, Chatter::new);
+        InJvmSimulation sequential = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .design(robosim.environment.net.ClientWorkerCoordinator.Design.SEQUENTIAL)
+                .run(1000, false, Chatter::new);
+        assertEquals(1000, sequential.updates.size());
+        for (int k = 0; k < 1000; k++) {
+            PoseUpdate a = threads.updates.get(k);
+            PoseUpdate b = sequential.updates.get(k);
+            for (int i = 0; i < a.count(); i++) {
+                assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
+                        new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)}, "step " + k + " robot " + i);
+            }
+        }
+        for (Object o : sequential.controls) {
+            Chatter c = (Chatter) o;
+            assertTrue(c.finished.await(30, java.util.concurrent.TimeUnit.SECONDS));
+            assertEquals(List.of(), c.problems);
+            assertEquals(1000, c.received);
+        }
+    }
+
     private static void check(InJvmSimulation sim) throws Exception {
         assertEquals(STEPS, sim.summary.steps());
         assertTrue(sim.summary.completed(), sim.summary.reason());

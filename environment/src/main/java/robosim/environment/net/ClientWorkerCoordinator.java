@@ -54,14 +54,27 @@ public final class ClientWorkerCoordinator implements Closeable {
      * @param maxSteps steps to run before ending; 0 runs until stopped
      */
     public record Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort,
-            boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs, double speed) {
-        /** As fast as possible (no pacing). */
+            boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs, double speed,
+            Design design) {
+        /** As fast as possible (no pacing), one thread per client. */
         public Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort, boolean inProcessGeometry,
                 long maxSteps, int resetEvery, int handshakeTimeoutMs) {
             this(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, 0);
+                    handshakeTimeoutMs, 0, Design.THREADS);
+        }
+
+        public Settings withDesign(Design d) {
+            return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
+                    handshakeTimeoutMs, speed, d);
         }
     }
+
+    /**
+     * How robots' requests are read: {@code THREADS}, one thread per robot (the paper's design, the
+     * default); {@code SEQUENTIAL}, the original's loop: after the handshakes one {@code stepper}
+     * thread reads every robot's request in world order, runs the step and delivers.
+     */
+    public enum Design { THREADS, SEQUENTIAL }
 
     /** How a finished run went. */
     public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
@@ -295,7 +308,63 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         if (activeCount == 0) {
             finish("every robot has left", false);
+        } else if (sequential()) {
+            Thread stepper = new Thread(this::stepSequentially, "stepper");
+            stepper.setDaemon(true);
+            stepper.start();
         }
+    }
+
+    /**
+     * The original's loop ({@link Design#SEQUENTIAL}), on the {@code stepper} thread: read each
+     * active robot's request in world order, then run and deliver the step under the lock. A robot
+     * whose read fails or who breaks the protocol is dropped, as in the threaded design.
+     */
+    private void stepSequentially() {
+        try {
+            while (true) {
+                long k;
+                RobotClientWorker[] order;
+                lock.lock();
+                try {
+                    if (state != State.RUNNING) {
+                        return;
+                    }
+                    k = stepsDone;
+                    order = robots.clone();
+                } finally {
+                    lock.unlock();
+                }
+                for (int i = 0; i < robotCount; i++) {
+                    if (!isActive(i)) {
+                        continue;
+                    }
+                    try {
+                        StepRequest request = order[i].readRequest(k);
+                        processMessage(i, k, request);
+                    } catch (IOException e) {
+                        order[i].drop();
+                        leave(order[i], i, e.getMessage() == null ? e.toString() : e.getMessage());
+                    }
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private boolean isActive(int i) {
+        lock.lock();
+        try {
+            return state == State.RUNNING && active[i];
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** True when robots' requests are read by one stepper thread, not by their workers. */
+    boolean sequential() {
+        return settings.design() == Design.SEQUENTIAL;
     }
 
     /** True while robot {@code index} may still send requests: before the start, or while it takes part. */

@@ -40,21 +40,31 @@ final class RobotClientWorker extends ClientWorker {
         index = wanted;
         rename("robot-worker[" + hello.name() + "]");
         connection.setReadTimeoutMs(0);
+        if (coordinator.sequential()) {
+            // the stepper thread reads this robot's requests; this thread holds the session open
+            coordinator.awaitEnd();
+            return;
+        }
         // read at once, also while waiting for the others: a robot that leaves before the start is noticed
         long k = 0;
         while (coordinator.accepts(index)) {
-            StepRequest request = connection.read(StepRequest.class);
-            if (request.step() != k) {
-                throw new ProtocolException("sent a request for step " + request.step() + " where step " + k
-                        + " was due");
-            }
-            if (!Double.isFinite(request.moveMm()) || !Double.isFinite(request.turnDeg())) {
-                throw new ProtocolException("asked to move " + request.moveMm() + " mm and turn "
-                        + request.turnDeg() + " deg");
-            }
-            coordinator.processMessage(index, k, request);
+            coordinator.processMessage(index, k, readRequest(k));
             k++;
         }
+    }
+
+    /** Reads and checks this robot's request for step k (its worker's or the stepper's thread). */
+    StepRequest readRequest(long k) throws IOException {
+        StepRequest request = connection.read(StepRequest.class);
+        if (request.step() != k) {
+            throw new ProtocolException("sent a request for step " + request.step() + " where step " + k
+                    + " was due");
+        }
+        if (!Double.isFinite(request.moveMm()) || !Double.isFinite(request.turnDeg())) {
+            throw new ProtocolException("asked to move " + request.moveMm() + " mm and turn "
+                    + request.turnDeg() + " deg");
+        }
+        return request;
     }
 
     /** Sends the welcome; called by the coordinator under its lock when the robot is accepted. */
