@@ -18,12 +18,7 @@ public final class FollowTheLeader implements RobotControl {
         String leader = robot.robotNames().get(0);
         if (robot.name().equals(leader)) {
             robot.setVelocity(250);
-            new Wander() {
-                @Override
-                protected void everyStep(Robot r) {
-                    PoseBoard.announce(r);
-                }
-            }.run(robot);
+            new AnnouncingWander().run(robot);
             return;
         }
         PoseBoard board = new PoseBoard();

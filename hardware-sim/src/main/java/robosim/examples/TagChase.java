@@ -16,12 +16,7 @@ public final class TagChase implements RobotControl {
     public void run(Robot robot) throws InterruptedException {
         String chaser = robot.robotNames().get(0);
         if (!robot.name().equals(chaser)) {
-            new Wander() {
-                @Override
-                protected void everyStep(Robot r) {
-                    PoseBoard.announce(r);
-                }
-            }.run(robot);
+            new AnnouncingWander().run(robot);
             return;
         }
         PoseBoard board = new PoseBoard();
