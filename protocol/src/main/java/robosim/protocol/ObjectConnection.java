@@ -24,7 +24,8 @@ import java.net.Socket;
 public final class ObjectConnection implements Closeable {
     /**
      * Messages between output-stream resets. A reset costs one marker and re-sending one class
-     * descriptor (about 100 bytes); the handle tables hold at most this many entries.
+     * descriptor (about 100 bytes); the handle tables hold at most this many entries. Chosen by
+     * measurement (scripts/bench-reset.sh, docs/PERFORMANCE.md): within 1% of never resetting, heap flat.
      */
     public static final int DEFAULT_RESET_EVERY = 256;
     private static final int BUFFER_BYTES = 64 * 1024;

@@ -59,6 +59,11 @@ public final class HeadlessRunner implements Callable<Integer> {
             description = "The Environment's coordinator design: THREADS (default) or SEQUENTIAL.")
     String coordinator;
 
+    @Option(names = "--reset-every", paramLabel = "N",
+            description = "Messages between object-stream resets, for every process (default: each process's own, "
+                    + "256; 0 = never, for measurement only).")
+    Integer resetEvery;
+
     @Option(names = "--speed", defaultValue = "0",
             description = "Run at most this many times real time (default: ${DEFAULT-VALUE} = as fast as possible).")
     double speed;
@@ -149,6 +154,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         }
         envArgs.add("--coordinator");
         envArgs.add(coordinator);
+        envArgs.addAll(resetArgs());
         if (speed > 0) {
             envArgs.add("--speed");
             envArgs.add(Double.toString(speed));
@@ -178,8 +184,10 @@ public final class HeadlessRunner implements Callable<Integer> {
                     List.of("127.0.0.1", Integer.toString(viewerPort)));
         }
         if (!noGeometry) {
-            children.start("geometry", profiled(opts(geometryJvmOpts), "geometry"), "robosim.geometry.GeometryMain", List.of("127.0.0.1", bound.get("geometry")),
-                    null);
+            List<String> geometryArgs = new ArrayList<>(List.of("127.0.0.1", bound.get("geometry")));
+            geometryArgs.addAll(resetArgs());
+            children.start("geometry", profiled(opts(geometryJvmOpts), "geometry"), "robosim.geometry.GeometryMain",
+                    geometryArgs, null);
         }
         startRobots(spec, children, robotPort);
         long limit = timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2;
@@ -264,6 +272,7 @@ public final class HeadlessRunner implements Callable<Integer> {
     private void startRobots(WorldSpec spec, ChildProcesses children, String robotPort) throws IOException {
         if (robotsInOneProcess) {
             List<String> args = new ArrayList<>(List.of("127.0.0.1", robotPort));
+            args.addAll(resetArgs());
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());
@@ -271,10 +280,16 @@ public final class HeadlessRunner implements Callable<Integer> {
             children.start("robots", opts(robotJvmOpts), "robosim.hardware.MultiRobotMain", args, null);
         } else {
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                children.start("robot " + r.name(), opts(robotJvmOpts), "robosim.hardware.RobotMain",
-                        List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type", r.type()), null);
+                List<String> args = new ArrayList<>(List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type",
+                        r.type()));
+                args.addAll(resetArgs());
+                children.start("robot " + r.name(), opts(robotJvmOpts), "robosim.hardware.RobotMain", args, null);
             }
         }
+    }
+
+    private List<String> resetArgs() {
+        return resetEvery == null ? List.of() : List.of("--reset-every", Integer.toString(resetEvery));
     }
 
     /** Adds a flight recording of the whole process to {@code options} when --profile is given. */
