@@ -59,9 +59,15 @@ public final class EnvironmentMain implements Callable<Integer> {
     double speed;
 
     @Option(names = "--coordinator", defaultValue = "THREADS",
-            description = "How robots' requests are read: THREADS (one thread per robot, the default) or "
-                    + "SEQUENTIAL (the original's single loop).")
+            description = "The coordinator design: THREADS (a reading thread per robot; the step's thread writes "
+                    + "every response; the default), SEQUENTIAL (the original's single loop) or TWO_THREADS (a reading "
+                    + "and a writing thread per robot).")
     ClientWorkerCoordinator.Design design;
+
+    @Option(names = "--no-step-messages",
+            description = "Send robots the step number only before step 0; they count on (the report's untested "
+                    + "idea; default: a step number after every response).")
+    boolean noStepMessages;
 
     @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
             description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
@@ -86,7 +92,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
                 InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
-                handshakeTimeoutMs, speed, design);
+                handshakeTimeoutMs, speed, design, !noStepMessages);
         ClientWorkerCoordinator coordinator = new ClientWorkerCoordinator(spec, settings);
         try {
             coordinator.start();

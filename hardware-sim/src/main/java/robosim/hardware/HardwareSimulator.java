@@ -23,7 +23,8 @@ import robosim.protocol.StepResponse;
 
 /**
  * One robot's Hardware Simulator: the handshake with the Environment, then the lock-step exchange on
- * the calling thread while the control code runs on its own thread ({@code control[name]}). Each
+ * the calling thread (or as {@link Exchange} says) while the control code runs on its own thread
+ * ({@code control[name]}). Each
  * step it reads the step number, waits for the control code to block (see {@link ControlLink}),
  * sends this step's piece of the current call with the outgoing messages and a sonar request, and
  * applies the response. The robot state below is touched by one thread at a time, handed over by
@@ -82,64 +83,246 @@ public final class HardwareSimulator {
     }
 
     /**
+     * How the lock-step exchange is threaded on the robot's side: {@code ONE_THREAD} (the default),
+     * the calling thread both sends each request and reads each response; {@code SEND_RECEIVE}, the
+     * report's untested two-thread Hardware Simulator: a {@code receiver[name]} thread reads and applies
+     * responses while the calling thread sends requests. Many robots in one process can also share one
+     * exchange thread ({@link #runShared}).
+     */
+    public enum Exchange { ONE_THREAD, SEND_RECEIVE }
+
+    /**
      * Runs {@code control} until the Environment ends the simulation; returns its reason. The
      * lock-step exchange runs on the calling thread.
      */
     public String run(RobotControl control) throws IOException, InterruptedException {
+        return run(control, Exchange.ONE_THREAD);
+    }
+
+    /** Runs {@code control} until the Environment ends the simulation, threaded as {@code exchange}. */
+    public String run(RobotControl control, Exchange exchange) throws IOException, InterruptedException {
+        try {
+            if (!begin(control)) {
+                return endReason;
+            }
+            if (exchange == Exchange.SEND_RECEIVE) {
+                return runSendReceive();
+            }
+            do {
+                send();
+            } while (receive());
+            return endReason;
+        } finally {
+            finish();
+        }
+    }
+
+    /**
+     * Runs many robots' exchanges on the calling thread (each robot's control code still has its own
+     * thread): each step it sends every robot's request in the given order, then reads every
+     * response in the same order. Returns when every robot's simulation is over.
+     *
+     * @param sims connected simulators, in world order (the order the Environment writes in)
+     */
+    public static void runShared(List<HardwareSimulator> sims, List<RobotControl> controls)
+            throws IOException, InterruptedException {
+        List<HardwareSimulator> running = new ArrayList<>();
+        try {
+            for (int i = 0; i < sims.size(); i++) {
+                HardwareSimulator sim = sims.get(i);
+                if (sim.begin(controls.get(i))) {
+                    running.add(sim);
+                } else {
+                    sim.finish();
+                }
+            }
+            while (!running.isEmpty()) {
+                for (HardwareSimulator sim : running) {
+                    sim.send();
+                }
+                for (int i = 0; i < running.size(); i++) {
+                    HardwareSimulator sim = running.get(i);
+                    if (!sim.receive()) {
+                        sim.finish();
+                        running.set(i, null);
+                    }
+                }
+                running.removeIf(java.util.Objects::isNull);
+            }
+        } finally {
+            for (HardwareSimulator sim : sims) {
+                sim.finish();
+            }
+        }
+    }
+
+    // ---- the exchange, one step at a time -----------------------------------------------------
+
+    private Thread controlThread;
+    private long nextStep;
+    private Command current;
+    private double stepSeconds;
+    private boolean sonarWanted;
+    private List<String> sensorsWanted = List.of();
+
+    /** Starts the control thread and reads the first step number; false if the simulation ended first. */
+    private boolean begin(RobotControl control) throws IOException {
         if (welcome == null) {
             throw new IllegalStateException("connect first");
         }
         SimulatedRobot api = new SimulatedRobot(this, welcome.robotNames(), welcome.timeStepMs(), welcome.sensors());
-        Thread controlThread = new Thread(() -> runControl(control, api), "control[" + name + "]");
+        controlThread = new Thread(() -> runControl(control, api), "control[" + name + "]");
         controlThread.setDaemon(true);
         controlThread.start();
-        double stepSeconds = welcome.timeStepMs() / 1000.0;
-        boolean sonar = !type.properties().sonars().isEmpty();
-        List<String> sensors = welcome.sensors();
-        try (ObjectConnection c = connection) {
-            while (true) {
-                long k;
-                try {
-                    k = c.readStep();
-                } catch (EOFException e) {
-                    endReason = "the Environment closed the connection";
-                    return endReason;
+        stepSeconds = welcome.timeStepMs() / 1000.0;
+        sonarWanted = !type.properties().sonars().isEmpty();
+        sensorsWanted = welcome.sensors();
+        return readStepNumber();
+    }
+
+    /** Reads the next step number; false (with the reason kept) at the end of the simulation. */
+    private boolean readStepNumber() throws IOException {
+        long k;
+        try {
+            k = connection.readStep();
+        } catch (EOFException e) {
+            endReason = "the Environment closed the connection";
+            return false;
+        }
+        if (k == Protocol.END_OF_SIMULATION) {
+            endReason = connection.read(SimulationEnd.class).reason();
+            return false;
+        }
+        nextStep = k;
+        return true;
+    }
+
+    /** Waits for the control code to block, then sends this step's request. */
+    private void send() throws IOException, InterruptedException {
+        Command command = link.awaitControl();
+        double move = 0;
+        double turn = 0;
+        boolean tag = false;
+        if (command != null) {
+            command.plan(stepSeconds);
+            move = command.plannedMoveMm;
+            turn = command.plannedTurnDeg;
+            tag = command.plannedTag;
+        }
+        current = command;
+        List<CommEvent> messages = outbox.isEmpty() ? List.of() : List.copyOf(outbox);
+        outbox.clear();
+        connection.write(new StepRequest(nextStep, move, turn, sonarWanted, messages, sensorsWanted, tag));
+        connection.flush();
+    }
+
+    /**
+     * Reads the response to the request just sent, applies it and reads the next step number (or,
+     * with step messages off, counts on); false (with the reason kept) at the end of the simulation.
+     */
+    private boolean receive() throws IOException {
+        Externalizable answer;
+        try {
+            answer = connection.read(Externalizable.class);
+        } catch (EOFException e) {
+            endReason = "the Environment closed the connection";
+            return false;
+        }
+        if (answer instanceof SimulationEnd end) {
+            endReason = end.reason();
+            return false;
+        }
+        if (!(answer instanceof StepResponse r)) {
+            throw new ProtocolException("expected a StepResponse, got a " + answer.getClass().getSimpleName());
+        }
+        boolean arrived = apply(r);
+        steps++;
+        Command command = current;
+        current = null;
+        if (command != null && command.apply(r, arrived)) {
+            link.complete(command);
+        }
+        if (welcome.stepMessages()) {
+            return readStepNumber();
+        }
+        nextStep++;
+        return true;
+    }
+
+    /** SEND_RECEIVE: the calling thread sends, a receiver thread reads; a baton passes between them. */
+    private String runSendReceive() throws IOException, InterruptedException {
+        Baton sent = new Baton();
+        Baton received = new Baton();
+        Throwable[] failure = new Throwable[1];
+        Thread receiver = new Thread(() -> {
+            try {
+                while (sent.take()) {
+                    received.give(receive());
                 }
-                if (k == Protocol.END_OF_SIMULATION) {
-                    endReason = c.read(SimulationEnd.class).reason();
-                    return endReason;
-                }
-                Command command = link.awaitControl();
-                double move = 0;
-                double turn = 0;
-                boolean tag = false;
-                if (command != null) {
-                    command.plan(stepSeconds);
-                    move = command.plannedMoveMm;
-                    turn = command.plannedTurnDeg;
-                    tag = command.plannedTag;
-                }
-                List<CommEvent> messages = outbox.isEmpty() ? List.of() : List.copyOf(outbox);
-                outbox.clear();
-                c.write(new StepRequest(k, move, turn, sonar, messages, sensors, tag));
-                c.flush();
-                Externalizable answer = c.read(Externalizable.class);
-                if (answer instanceof SimulationEnd end) {
-                    endReason = end.reason();
-                    return endReason;
-                }
-                if (!(answer instanceof StepResponse r)) {
-                    throw new ProtocolException("expected a StepResponse, got a " + answer.getClass().getSimpleName());
-                }
-                boolean arrived = apply(r);
-                steps++;
-                if (command != null && command.apply(r, arrived)) {
-                    link.complete(command);
-                }
+            } catch (IOException | RuntimeException | InterruptedException e) {
+                failure[0] = e;
+                received.give(false);
             }
+        }, "receiver[" + name + "]");
+        receiver.setDaemon(true);
+        receiver.start();
+        try {
+            do {
+                send();
+                sent.give(true);
+            } while (received.take());
         } finally {
-            link.shutdown();
+            sent.give(false);
+            receiver.join(5000);
+        }
+        if (failure[0] instanceof IOException e) {
+            throw e;
+        } else if (failure[0] instanceof RuntimeException e) {
+            throw e;
+        }
+        return endReason;
+    }
+
+    /** A one-slot hand-over of a boolean between the sending and the receiving thread. */
+    private static final class Baton {
+        private final java.util.concurrent.locks.ReentrantLock lock = new java.util.concurrent.locks.ReentrantLock();
+        private final java.util.concurrent.locks.Condition full = lock.newCondition();
+        private boolean has;
+        private boolean value;
+
+        void give(boolean v) {
+            lock.lock();
+            try {
+                value = v;
+                has = true;
+                full.signal();
+            } finally {
+                lock.unlock();
+            }
+        }
+
+        boolean take() throws InterruptedException {
+            lock.lock();
+            try {
+                while (!has) {
+                    full.await();
+                }
+                has = false;
+                return value;
+            } finally {
+                lock.unlock();
+            }
+        }
+    }
+
+    /** Stops the control code and closes the connection (idempotent). */
+    private void finish() {
+        link.shutdown();
+        if (controlThread != null) {
             controlThread.interrupt();
+        }
+        if (connection != null) {
+            connection.close();
         }
     }
 

@@ -15,8 +15,10 @@ import robosim.api.RobotControl;
 import robosim.protocol.Protocol;
 
 /**
- * Many robots in one JVM (for large robot counts): each robot has its own socket, its own
- * Hardware Simulator thread ({@code hardware[name]}) and its own control thread.
+ * Many robots in one JVM (for large robot counts): each robot has its own socket and its own control
+ * thread. With {@code --exchange ONE_THREAD} (the default) each also has its own Hardware Simulator
+ * thread ({@code hardware[name]}); with {@code SEND_RECEIVE} two (sending, receiving); with
+ * {@code SHARED} one {@code exchange} thread runs every robot's exchange, in the order given.
  */
 @Command(name = "robots.sh", mixinStandardHelpOptions = true,
         description = "Runs several robots in one process, each with its own connection and threads.")
@@ -37,6 +39,15 @@ public final class MultiRobotMain implements Callable<Integer> {
     @Mixin
     ConnectOptions connect;
 
+    /** How the robots' exchanges are threaded. */
+    enum Threading { ONE_THREAD, SEND_RECEIVE, SHARED }
+
+    @Option(names = "--exchange", defaultValue = "ONE_THREAD",
+            description = "ONE_THREAD: a Hardware Simulator thread per robot (default); SEND_RECEIVE: a sending and "
+                    + "a receiving thread per robot; SHARED: one thread for every robot's exchange, in the order "
+                    + "the robots are given (list them in world order).")
+    Threading exchange;
+
     @Override
     public Integer call() throws Exception {
         List<String[]> parsed = new ArrayList<>();
@@ -55,6 +66,11 @@ public final class MultiRobotMain implements Callable<Integer> {
             }
             parsed.add(p);
         }
+        if (exchange == Threading.SHARED) {
+            return runShared(parsed);
+        }
+        HardwareSimulator.Exchange each = exchange == Threading.SEND_RECEIVE
+                ? HardwareSimulator.Exchange.SEND_RECEIVE : HardwareSimulator.Exchange.ONE_THREAD;
         AtomicInteger failures = new AtomicInteger();
         List<Thread> threads = new ArrayList<>();
         for (String[] p : parsed) {
@@ -62,7 +78,7 @@ public final class MultiRobotMain implements Callable<Integer> {
                 try {
                     RobotControl control = RobotLauncher.control(p[2]);
                     RobotLauncher.run(p[0], RobotType.byName(p[1]), control, host, port, connect.connectTimeoutMs(),
-                            connect.resetEvery);
+                            connect.resetEvery, each);
                 } catch (Exception e) {
                     failures.incrementAndGet();
                     LOG.error("robot {}: {}", p[0], e.getMessage());
@@ -75,6 +91,28 @@ public final class MultiRobotMain implements Callable<Integer> {
             t.join();
         }
         return failures.get() == 0 ? 0 : 1;
+    }
+
+    /** SHARED: connects every robot in turn, then runs all their exchanges on this thread. */
+    private int runShared(List<String[]> parsed) {
+        List<HardwareSimulator> sims = new ArrayList<>();
+        List<RobotControl> controls = new ArrayList<>();
+        try {
+            for (String[] p : parsed) {
+                controls.add(RobotLauncher.control(p[2]));
+                sims.add(RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect.connectTimeoutMs(),
+                        connect.resetEvery));
+            }
+            Thread.currentThread().setName("exchange");
+            HardwareSimulator.runShared(sims, controls);
+            return 0;
+        } catch (java.io.IOException e) {
+            LOG.error("robots: {}", e.getMessage());
+            return 1;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
     }
 
     public static void main(String[] args) {

@@ -27,6 +27,12 @@ final class RobotLauncher {
 
     /** Connects and runs; returns the Environment's reason for the end. */
     static String run(String name, RobotType type, RobotControl control, String host, int port, long timeoutMs,
+            int resetEvery, HardwareSimulator.Exchange exchange) throws IOException, InterruptedException {
+        return connect(name, type, host, port, timeoutMs, resetEvery).run(control, exchange);
+    }
+
+    /** Connects and says hello; the simulator returned is ready to run. */
+    static HardwareSimulator connect(String name, RobotType type, String host, int port, long timeoutMs,
             int resetEvery) throws IOException, InterruptedException {
         Socket socket = Connector.connect(host, port, timeoutMs);
         if (socket == null) {
@@ -35,6 +41,6 @@ final class RobotLauncher {
         }
         HardwareSimulator sim = new HardwareSimulator(name, type);
         sim.connect(socket, resetEvery);
-        return sim.run(control);
+        return sim;
     }
 }

@@ -40,6 +40,11 @@ public final class RobotMain implements Callable<Integer> {
     @Mixin
     ConnectOptions connect;
 
+    @Option(names = "--exchange", defaultValue = "ONE_THREAD",
+            description = "ONE_THREAD: one Hardware Simulator thread sends and receives (default); SEND_RECEIVE: a "
+                    + "sending and a receiving thread (the report's two-thread Hardware Simulator).")
+    HardwareSimulator.Exchange exchange;
+
     @Override
     public Integer call() throws Exception {
         RobotControl control;
@@ -52,7 +57,8 @@ public final class RobotMain implements Callable<Integer> {
             return 2;
         }
         try {
-            String reason = RobotLauncher.run(name, robotType, control, host, port, connect.connectTimeoutMs(), connect.resetEvery);
+            String reason = RobotLauncher.run(name, robotType, control, host, port, connect.connectTimeoutMs(), connect.resetEvery,
+                    exchange);
             LOG.info("robot {}: simulation over: {}", name, reason);
             return 0;
         } catch (ProtocolException e) {

@@ -9,7 +9,10 @@ import java.util.List;
  * Environment -> robot, once, in answer to {@link RobotHello}: either a refusal with a reason
  * (the connection is then closed), or the time step (ms), the robot's start pose (world mm, degrees
  * counter-clockwise from +x), the names of every robot in the world, in world order, and the names
- * of this robot's plug-in sensors (from the environment file), which it may ask for each step.
+ * of this robot's plug-in sensors (from the environment file), which it may ask for each step; and
+ * whether the Environment sends the next step number after each response ({@link #stepMessages()},
+ * the default) or only the first one (the report's untested idea: the robot counts the steps itself,
+ * and the end of the simulation arrives as a {@link SimulationEnd} where a response would be).
  */
 public final class RobotWelcome implements java.io.Externalizable {
     private boolean accepted;
@@ -20,6 +23,7 @@ public final class RobotWelcome implements java.io.Externalizable {
     private double headingDeg;
     private List<String> robotNames = List.of();
     private List<String> sensors = List.of();
+    private boolean stepMessages = true;
 
     public RobotWelcome() {
     }
@@ -46,6 +50,17 @@ public final class RobotWelcome implements java.io.Externalizable {
         w.robotNames = List.copyOf(robotNames);
         w.sensors = List.copyOf(sensors);
         return w;
+    }
+
+    /** This welcome with step numbers after every response ({@code true}) or only before the first step. */
+    public RobotWelcome withStepMessages(boolean on) {
+        stepMessages = on;
+        return this;
+    }
+
+    /** True: a step number follows every response; false: only step 0 is sent, the robot counts on. */
+    public boolean stepMessages() {
+        return stepMessages;
     }
 
     public boolean isAccepted() {
@@ -91,6 +106,7 @@ public final class RobotWelcome implements java.io.Externalizable {
         out.writeDouble(headingDeg);
         Wire.writeStrings(out, robotNames);
         Wire.writeStrings(out, sensors);
+        out.writeBoolean(stepMessages);
     }
 
     @Override
@@ -103,5 +119,6 @@ public final class RobotWelcome implements java.io.Externalizable {
         headingDeg = in.readDouble();
         robotNames = Wire.readStrings(in, "robot name count", Limits.MAX_ROBOTS);
         sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
+        stepMessages = in.readBoolean();
     }
 }

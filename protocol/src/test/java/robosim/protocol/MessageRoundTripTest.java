@@ -81,7 +81,9 @@ class MessageRoundTripTest {
         assertEquals(2000, m.yMm());
         assertEquals(90, m.headingDeg());
         assertEquals(List.of("a", "b"), m.robotNames());
-        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser"),
+        assertTrue(m.stepMessages());
+        assertFalse(roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of()).withStepMessages(false)).stepMessages());
+        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser") + 1,
                 repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"), List.of("laser"))));
         assertEquals(List.of("laser"),
                 roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of(), List.of("laser"))).sensors());

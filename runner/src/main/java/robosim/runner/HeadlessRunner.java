@@ -56,8 +56,17 @@ public final class HeadlessRunner implements Callable<Integer> {
     boolean progress;
 
     @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "THREADS",
-            description = "The Environment's coordinator design: THREADS (default) or SEQUENTIAL.")
+            description = "The Environment's coordinator design: THREADS (default), SEQUENTIAL or TWO_THREADS.")
     String coordinator;
+
+    @Option(names = "--exchange", paramLabel = "THREADING",
+            description = "The robots' exchange threading: ONE_THREAD (default), SEND_RECEIVE, or, with "
+                    + "--robots-in-one-process, SHARED (one thread for every robot).")
+    String exchange;
+
+    @Option(names = "--no-step-messages",
+            description = "The Environment sends the step number only before step 0 (see environment.sh --help).")
+    boolean noStepMessages;
 
     @Option(names = "--reset-every", paramLabel = "N",
             description = "Messages between object-stream resets, for every process (default: each process's own, "
@@ -154,6 +163,9 @@ public final class HeadlessRunner implements Callable<Integer> {
         }
         envArgs.add("--coordinator");
         envArgs.add(coordinator);
+        if (noStepMessages) {
+            envArgs.add("--no-step-messages");
+        }
         envArgs.addAll(resetArgs());
         if (speed > 0) {
             envArgs.add("--speed");
@@ -225,6 +237,10 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     private PoseLog poseLogWriter;
 
+    private List<String> exchangeArgs() {
+        return exchange == null ? List.of() : List.of("--exchange", exchange);
+    }
+
     private ViewerClient watch(int viewerPort) throws IOException, InterruptedException {
         if (poseLog == null && !progress) {
             return null;
@@ -273,6 +289,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (robotsInOneProcess) {
             List<String> args = new ArrayList<>(List.of("127.0.0.1", robotPort));
             args.addAll(resetArgs());
+            args.addAll(exchangeArgs());
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());
@@ -283,6 +300,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 List<String> args = new ArrayList<>(List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type",
                         r.type()));
                 args.addAll(resetArgs());
+                args.addAll(exchangeArgs());
                 children.start("robot " + r.name(), opts(robotJvmOpts), "robosim.hardware.RobotMain", args, null);
             }
         }

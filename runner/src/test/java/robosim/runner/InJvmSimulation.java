@@ -45,6 +45,22 @@ final class InJvmSimulation {
         return this;
     }
 
+    /** The robots' exchange threading; SHARED runs every robot's exchange on one thread. */
+    enum Exchange { ONE_THREAD, SEND_RECEIVE, SHARED }
+
+    private Exchange exchange = Exchange.ONE_THREAD;
+    private boolean stepMessages = true;
+
+    InJvmSimulation exchange(Exchange e) {
+        this.exchange = e;
+        return this;
+    }
+
+    InJvmSimulation stepMessages(boolean on) {
+        this.stepMessages = on;
+        return this;
+    }
+
     InJvmSimulation onUpdate(java.util.function.BiConsumer<PoseUpdate, Integer> hook) {
         this.onUpdate = hook;
         return this;
@@ -64,7 +80,7 @@ final class InJvmSimulation {
     InJvmSimulation run(long steps, boolean inProcessGeometry, Supplier<RobotControl> control) throws Exception {
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
                 InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry, steps, ObjectConnection.DEFAULT_RESET_EVERY,
-                10_000).withDesign(design));
+                10_000).withDesign(design).withStepMessages(stepMessages));
         env.start();
         try {
             int[] ports = env.ports();
@@ -108,13 +124,33 @@ final class InJvmSimulation {
                         new Socket(InetAddress.getLoopbackAddress(), ports[2]), ObjectConnection.DEFAULT_RESET_EVERY).run()));
             }
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                RobotControl c = control.get();
-                controls.add(c);
-                threads.add(thread(r.name(), failures, () -> {
-                    HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
-                    sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), ObjectConnection.DEFAULT_RESET_EVERY);
-                    return sim.run(c);
+                controls.add(control.get());
+            }
+            if (exchange == Exchange.SHARED) {
+                threads.add(thread("shared-exchange", failures, () -> {
+                    List<HardwareSimulator> sims = new ArrayList<>();
+                    for (WorldSpec.RobotSpec r : spec.robots()) {
+                        HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                        sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
+                                ObjectConnection.DEFAULT_RESET_EVERY);
+                        sims.add(sim);
+                    }
+                    HardwareSimulator.runShared(sims, controls);
+                    return null;
                 }));
+            } else {
+                HardwareSimulator.Exchange each = exchange == Exchange.SEND_RECEIVE
+                        ? HardwareSimulator.Exchange.SEND_RECEIVE : HardwareSimulator.Exchange.ONE_THREAD;
+                for (int i = 0; i < spec.robots().size(); i++) {
+                    WorldSpec.RobotSpec r = spec.robots().get(i);
+                    RobotControl c = controls.get(i);
+                    threads.add(thread(r.name(), failures, () -> {
+                        HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                        sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
+                                ObjectConnection.DEFAULT_RESET_EVERY);
+                        return sim.run(c, each);
+                    }));
+                }
             }
             if (!env.awaitEnd(5, TimeUnit.MINUTES)) {
                 throw new AssertionError("the simulation did not end");

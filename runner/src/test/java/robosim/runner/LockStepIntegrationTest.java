@@ -6,6 +6,10 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.examples.Wander;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.PoseUpdate;
 
@@ -37,27 +41,71 @@ class LockStepIntegrationTest {
         }
     }
 
-    @org.junit.jupiter.api.Test
-    void theSequentialCoordinatorGivesTheSamePosesAndMessages() throws Exception {
-        InJvmSimulation threads = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .run(1000, false, Chatter::new);
-        InJvmSimulation sequential = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .design(robosim.environment.net.ClientWorkerCoordinator.Design.SEQUENTIAL)
-                .run(1000, false, Chatter::new);
-        assertEquals(1000, sequential.updates.size());
-        for (int k = 0; k < 1000; k++) {
-            PoseUpdate a = threads.updates.get(k);
-            PoseUpdate b = sequential.updates.get(k);
+    /**
+     * Every coordinator design and every setting of the performance work (step messages off, the
+     * robots' exchange threading) against the default: the same pose for every robot at every step,
+     * bit for bit, and every message delivered once and in order.
+     */
+    @ParameterizedTest(name = "{0} {1} stepMessages={2}")
+    @CsvSource({
+        "SEQUENTIAL, ONE_THREAD, true",
+        "TWO_THREADS, ONE_THREAD, true",
+        "THREADS, ONE_THREAD, false",
+        "THREADS, SEND_RECEIVE, true",
+        "THREADS, SHARED, true",
+        "SEQUENTIAL, SHARED, false",
+        "TWO_THREADS, SEND_RECEIVE, false",
+    })
+    void everyDesignAndSettingGivesTheSamePosesAndMessages(ClientWorkerCoordinator.Design design,
+            InJvmSimulation.Exchange exchange, boolean stepMessages) throws Exception {
+        InJvmSimulation variant = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .design(design).exchange(exchange).stepMessages(stepMessages)
+                .run(VARIANT_STEPS, false, Chatter::new);
+        assertTrue(variant.summary.completed(), variant.summary.reason());
+        assertSamePoses(reference(), variant);
+        for (Object o : variant.controls) {
+            Chatter c = (Chatter) o;
+            assertTrue(c.finished.await(30, java.util.concurrent.TimeUnit.SECONDS));
+            assertEquals(List.of(), c.problems);
+            assertEquals(VARIANT_STEPS, c.received);
+        }
+        assertEquals(10L * VARIANT_STEPS, variant.summary.messagesDelivered());
+    }
+
+    /** A sonar-driven workload (Wander in the maze, noisy sonar) under the least default combination. */
+    @Test
+    void wanderingRobotsTakeTheSamePathsUnderEveryThreading() throws Exception {
+        InJvmSimulation a = new InJvmSimulation(InJvmSimulation.env("maze.xml")).run(600, false, Wander::new);
+        InJvmSimulation b = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
+                .design(ClientWorkerCoordinator.Design.SEQUENTIAL).exchange(InJvmSimulation.Exchange.SHARED)
+                .stepMessages(false).run(600, false, Wander::new);
+        InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
+                .design(ClientWorkerCoordinator.Design.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)
+                .run(600, false, Wander::new);
+        assertSamePoses(a, b);
+        assertSamePoses(a, c);
+    }
+
+    private static final int VARIANT_STEPS = 1000;
+    private static InJvmSimulation reference;
+
+    private static synchronized InJvmSimulation reference() throws Exception {
+        if (reference == null) {
+            reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                    .run(VARIANT_STEPS, false, Chatter::new);
+        }
+        return reference;
+    }
+
+    private static void assertSamePoses(InJvmSimulation expected, InJvmSimulation actual) {
+        assertEquals(expected.updates.size(), actual.updates.size(), "steps seen");
+        for (int k = 0; k < expected.updates.size(); k++) {
+            PoseUpdate a = expected.updates.get(k);
+            PoseUpdate b = actual.updates.get(k);
             for (int i = 0; i < a.count(); i++) {
                 assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
                         new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)}, "step " + k + " robot " + i);
             }
-        }
-        for (Object o : sequential.controls) {
-            Chatter c = (Chatter) o;
-            assertTrue(c.finished.await(30, java.util.concurrent.TimeUnit.SECONDS));
-            assertEquals(List.of(), c.problems);
-            assertEquals(1000, c.received);
         }
     }
 

@@ -52,29 +52,39 @@ public final class ClientWorkerCoordinator implements Closeable {
      * How the Environment runs.
      *
      * @param maxSteps steps to run before ending; 0 runs until stopped
+     * @param stepMessages true (the default): the next step number follows every response; false: only
+     *     step 0 is sent and robots count on (the report's untested idea, measured in docs/PERFORMANCE.md)
      */
     public record Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort,
             boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs, double speed,
-            Design design) {
-        /** As fast as possible (no pacing), one thread per client. */
+            Design design, boolean stepMessages) {
+        /** As fast as possible (no pacing), one thread per client, a step number every step. */
         public Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort, boolean inProcessGeometry,
                 long maxSteps, int resetEvery, int handshakeTimeoutMs) {
             this(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, 0, Design.THREADS);
+                    handshakeTimeoutMs, 0, Design.THREADS, true);
         }
 
         public Settings withDesign(Design d) {
             return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, speed, d);
+                    handshakeTimeoutMs, speed, d, stepMessages);
+        }
+
+        public Settings withStepMessages(boolean on) {
+            return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
+                    handshakeTimeoutMs, speed, design, on);
         }
     }
 
     /**
-     * How robots' requests are read: {@code THREADS}, one thread per robot (the paper's design, the
-     * default); {@code SEQUENTIAL}, the original's loop: after the handshakes one {@code stepper}
-     * thread reads every robot's request in world order, runs the step and delivers.
+     * How robots' requests are read and responses written, the report's coordinator designs:
+     * {@code THREADS}, one thread per robot that reads its requests, the responses all written by the
+     * thread that ran the step (the default); {@code SEQUENTIAL}, the original's loop: after the
+     * handshakes one {@code stepper} thread reads every robot's request in world order, runs the step
+     * and delivers; {@code TWO_THREADS}, two threads per robot, one reading its requests and one
+     * ({@code robot-writer[name]}) writing its responses, handed over by the thread that ran the step.
      */
-    public enum Design { THREADS, SEQUENTIAL }
+    public enum Design { THREADS, SEQUENTIAL, TWO_THREADS }
 
     /** How a finished run went. */
     public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
@@ -242,7 +252,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
             WorldSpec.RobotSpec r = spec.robots().get(index);
             worker.welcome(RobotWelcome.accepted(spec.timeStepMs(), r.xMm(), r.yMm(), r.headingDeg(), robotNames,
-                    r.sensorNames()));
+                    r.sensorNames()).withStepMessages(settings.stepMessages()));
             robots[index] = worker;
             properties[index] = hello.properties();
             registered++;

@@ -2,6 +2,9 @@ package robosim.environment.net;
 
 import java.io.IOException;
 import java.net.Socket;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
@@ -18,9 +21,24 @@ import robosim.protocol.StepResponse;
  * non-finite action drops this robot alone. That thread writes every robot's response through {@link #deliver}
  * together with the next step number (or the end), in one flush; so between steps every worker
  * thread stays parked in its socket read instead of waking up to write.
+ *
+ * <p>In the {@link ClientWorkerCoordinator.Design#TWO_THREADS} design the worker has a second thread,
+ * {@code robot-writer[name]}: the step's thread queues the response (and the next step number or the
+ * end) and the writer writes it, so responses go out in parallel and out of the lock. Everything
+ * after the first step number goes through that queue, in order.
  */
 final class RobotClientWorker extends ClientWorker {
+    /** What the writer thread sends next: a response with the next step, or the end alone. */
+    private record Outgoing(StepResponse response, long nextStep, SimulationEnd end, boolean midStep) {
+    }
+
+    private static final Outgoing STOP = new Outgoing(null, 0, null, false);
+
     private int index = -1;
+    private BlockingQueue<Outgoing> outgoing;
+    private Thread writer;
+    private volatile boolean stepMessages = true;
+    private String robotName = "";
 
     RobotClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
         super(coordinator, socket, "robot-worker[#" + serial + "]");
@@ -30,6 +48,7 @@ final class RobotClientWorker extends ClientWorker {
     protected void serve() throws IOException, InterruptedException {
         RobotHello hello = connection.read(RobotHello.class);
         int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
+        robotName = String.valueOf(hello.name());
         String refusal = coordinator.register(this, hello, wanted);
         if (refusal != null) {
             coordinator.log().warn("{} refused: {}", name(), refusal);
@@ -40,16 +59,52 @@ final class RobotClientWorker extends ClientWorker {
         index = wanted;
         rename("robot-worker[" + hello.name() + "]");
         connection.setReadTimeoutMs(0);
-        if (coordinator.sequential()) {
-            // the stepper thread reads this robot's requests; this thread holds the session open
-            coordinator.awaitEnd();
-            return;
+        try {
+            if (coordinator.sequential()) {
+                // the stepper thread reads this robot's requests; this thread holds the session open
+                coordinator.awaitEnd();
+                return;
+            }
+            // read at once, also while waiting for the others: a robot that leaves before the start is noticed
+            long k = 0;
+            while (coordinator.accepts(index)) {
+                coordinator.processMessage(index, k, readRequest(k));
+                k++;
+            }
+        } finally {
+            stopWriter();
         }
-        // read at once, also while waiting for the others: a robot that leaves before the start is noticed
-        long k = 0;
-        while (coordinator.accepts(index)) {
-            coordinator.processMessage(index, k, readRequest(k));
-            k++;
+    }
+
+    /** TWO_THREADS: lets the writer send what it holds (at most a few seconds), then stops it. */
+    private void stopWriter() throws InterruptedException {
+        Thread w = writer;
+        if (w != null) {
+            outgoing.offer(STOP);
+            w.join(TimeUnit.SECONDS.toMillis(5));
+            w.interrupt();
+        }
+    }
+
+    private void writeLoop() {
+        try {
+            while (true) {
+                Outgoing o = outgoing.take();
+                if (o == STOP) {
+                    return;
+                }
+                if (o.response() == null) {
+                    writeEnd(o.end(), o.midStep());
+                } else {
+                    writeResponse(o.response(), o.nextStep(), o.end());
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (IOException | RuntimeException e) {
+            String why = "could not send its response: " + e.getMessage();
+            drop();
+            coordinator.leave(this, index, why);
         }
     }
 
@@ -67,11 +122,22 @@ final class RobotClientWorker extends ClientWorker {
         return request;
     }
 
-    /** Sends the welcome; called by the coordinator under its lock when the robot is accepted. */
+    /**
+     * Sends the welcome; called by the coordinator under its lock when the robot is accepted. In the
+     * TWO_THREADS design this starts the writer thread.
+     */
     void welcome(RobotWelcome welcome) throws IOException {
+        stepMessages = welcome.stepMessages();
         connection.write(welcome);
         connection.flush();
+        if (coordinator.settings().design() == ClientWorkerCoordinator.Design.TWO_THREADS) {
+            outgoing = new ArrayBlockingQueue<>(4);
+            writer = new Thread(this::writeLoop, "robot-writer[" + robotName + "]");
+            writer.setDaemon(true);
+            writer.start();
+        }
     }
+
 
     /** Sends the first step number; called by the coordinator under its lock when the run starts. */
     void begin(long firstStep) throws IOException {
@@ -80,18 +146,43 @@ final class RobotClientWorker extends ClientWorker {
     }
 
     /**
-     * Writes this robot's response and then the next step number, or the end of the simulation;
-     * called under the coordinator's lock by the thread that ran the step.
+     * Writes this robot's response and then the next step number (unless step messages are off), or
+     * the end of the simulation; called under the coordinator's lock by the thread that ran the step.
+     * In the TWO_THREADS design it is queued for the writer thread instead.
      */
     void deliver(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
+        if (outgoing != null) {
+            enqueue(new Outgoing(response, nextStep, end, true));
+        } else {
+            writeResponse(response, nextStep, end);
+        }
+    }
+
+    private void writeResponse(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
         connection.write(response);
         if (end == null) {
-            connection.writeStep(nextStep);
+            if (stepMessages) {
+                connection.writeStep(nextStep);
+            }
         } else {
-            connection.writeStep(Protocol.END_OF_SIMULATION);
+            if (stepMessages) {
+                connection.writeStep(Protocol.END_OF_SIMULATION);
+            }
             connection.write(end);
         }
         connection.flush();
+    }
+
+    private void enqueue(Outgoing o) throws IOException {
+        try {
+            // at most one response is ever outstanding (lock-step), plus the end: this never waits long
+            if (!outgoing.offer(o, 5, TimeUnit.SECONDS)) {
+                throw new IOException("its writer is stuck");
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted");
+        }
     }
 
     /**
@@ -100,14 +191,22 @@ final class RobotClientWorker extends ClientWorker {
      */
     void end(SimulationEnd end, boolean midStep) {
         try {
-            if (!midStep) {
-                connection.writeStep(Protocol.END_OF_SIMULATION);
+            if (outgoing != null) {
+                enqueue(new Outgoing(null, 0, end, midStep));
+            } else {
+                writeEnd(end, midStep);
             }
-            connection.write(end);
-            connection.flush();
         } catch (IOException | RuntimeException e) {
             coordinator.log().info("{}: could not send the end of the simulation: {}", name(), e.getMessage());
         }
+    }
+
+    private void writeEnd(SimulationEnd end, boolean midStep) throws IOException {
+        if (!midStep) {
+            connection.writeStep(Protocol.END_OF_SIMULATION);
+        }
+        connection.write(end);
+        connection.flush();
     }
 
     @Override
