@@ -34,6 +34,7 @@ public final class GeometryEngine {
     private final MoveVisitor moveVisitor = new MoveVisitor();
     private final SonarVisitor sonarVisitor = new SonarVisitor();
     private final Cone cone = new Cone();
+    private final RobotGrid grid;
 
     public GeometryEngine(StaticWorld world, List<RobotProperties> robots) {
         this.world = world;
@@ -50,6 +51,11 @@ public final class GeometryEngine {
         this.x = new double[this.robots];
         this.y = new double[this.robots];
         this.heading = new double[this.robots];
+        double maxRadius = 0;
+        for (double r : radius) {
+            maxRadius = Math.max(maxRadius, r);
+        }
+        this.grid = new RobotGrid(this.robots, maxRadius);
     }
 
     public StaticWorld world() {
@@ -76,6 +82,7 @@ public final class GeometryEngine {
             y[i] = in.yMm(i);
             heading[i] = in.headingDeg(i);
         }
+        grid.rebuild(x, y);
         for (int i = 0; i < robots; i++) {
             heading[i] = Kinematics.turn(heading[i], in.turnDeg(i));
             double move = in.moveMm(i);
@@ -97,6 +104,7 @@ public final class GeometryEngine {
                 moved *= sign;
                 x[i] += Kinematics.dx(heading[i], moved);
                 y[i] += Kinematics.dy(heading[i], moved);
+                grid.moved(i, x[i], y[i]);
             }
             out.setMotion(i, moved, in.turnDeg(i), kind, index);
         }
@@ -120,18 +128,19 @@ public final class GeometryEngine {
         MoveVisitor v = moveVisitor;
         v.begin(px, py, ux, uy, r);
         world.query(area, v);
-        for (int j = 0; j < robots; j++) {
-            if (j == i) {
-                continue;
-            }
-            if (outsideArea(j)) {
-                continue;
-            }
-            double t = Sweep.toCircle(px, py, ux, uy, r + radius[j], x[j], y[j]);
-            if (t < v.best) {
-                v.best = t;
-                v.kind = GeometryStepResponse.CONTACT_ROBOT;
-                v.index = j;
+        grid.select(area);
+        for (int c = grid.nextCell(); c >= 0; c = grid.nextCell()) {
+            for (int j = grid.first(c); j >= 0; j = grid.next(j)) {
+                if (j == i || outsideArea(j)) {
+                    continue;
+                }
+                double t = Sweep.toCircle(px, py, ux, uy, r + radius[j], x[j], y[j]);
+                // walls win ties, then the robot first in world order, whatever order the grid gives
+                if (t < v.best || (t == v.best && v.kind == GeometryStepResponse.CONTACT_ROBOT && j < v.index)) {
+                    v.best = t;
+                    v.kind = GeometryStepResponse.CONTACT_ROBOT;
+                    v.index = j;
+                }
             }
         }
         return v.best;
@@ -149,14 +158,13 @@ public final class GeometryEngine {
         SonarVisitor v = sonarVisitor;
         v.best = max;
         world.query(area, v);
-        for (int j = 0; j < robots; j++) {
-            if (j == i) {
-                continue;
+        grid.select(area);
+        for (int g = grid.nextCell(); g >= 0; g = grid.nextCell()) {
+            for (int j = grid.first(g); j >= 0; j = grid.next(j)) {
+                if (j != i && !outsideArea(j)) {
+                    v.best = Math.min(v.best, cone.toDisc(x[j], y[j], radius[j]));
+                }
             }
-            if (outsideArea(j)) {
-                continue;
-            }
-            v.best = Math.min(v.best, cone.toDisc(x[j], y[j], radius[j]));
         }
         return v.best;
     }
