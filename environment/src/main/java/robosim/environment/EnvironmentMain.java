@@ -58,10 +58,11 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + " = as fast as possible).")
     double speed;
 
-    @Option(names = "--coordinator", defaultValue = "THREADS",
-            description = "The coordinator design: THREADS (a reading thread per robot; the step's thread writes "
-                    + "every response; the default), SEQUENTIAL (the original's single loop) or TWO_THREADS (a reading "
-                    + "and a writing thread per robot).")
+    @Option(names = "--coordinator", defaultValue = "SEQUENTIAL",
+            description = "The coordinator design: SEQUENTIAL (the original's single loop reads every robot in "
+                    + "turn; the default, fastest as measured in docs/PERFORMANCE.md), THREADS (a reading thread per "
+                    + "robot; the step's thread writes every response) or TWO_THREADS (a reading and a writing thread "
+                    + "per robot).")
     ClientWorkerCoordinator.Design design;
 
     @Option(names = "--no-step-messages",

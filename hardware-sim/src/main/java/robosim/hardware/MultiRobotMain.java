@@ -16,9 +16,9 @@ import robosim.protocol.Protocol;
 
 /**
  * Many robots in one JVM (for large robot counts): each robot has its own socket and its own control
- * thread. With {@code --exchange ONE_THREAD} (the default) each also has its own Hardware Simulator
- * thread ({@code hardware[name]}); with {@code SEND_RECEIVE} two (sending, receiving); with
- * {@code SHARED} one {@code exchange} thread runs every robot's exchange, in the order given.
+ * thread. With {@code --exchange SHARED} (the default) one {@code exchange} thread runs every robot's
+ * exchange, in the order given; with {@code ONE_THREAD} each robot also has its own Hardware Simulator
+ * thread ({@code hardware[name]}); with {@code SEND_RECEIVE} two (sending, receiving).
  */
 @Command(name = "robots.sh", mixinStandardHelpOptions = true,
         description = "Runs several robots in one process, each with its own connection and threads.")
@@ -42,10 +42,10 @@ public final class MultiRobotMain implements Callable<Integer> {
     /** How the robots' exchanges are threaded. */
     enum Threading { ONE_THREAD, SEND_RECEIVE, SHARED }
 
-    @Option(names = "--exchange", defaultValue = "ONE_THREAD",
-            description = "ONE_THREAD: a Hardware Simulator thread per robot (default); SEND_RECEIVE: a sending and "
-                    + "a receiving thread per robot; SHARED: one thread for every robot's exchange, in the order "
-                    + "the robots are given (list them in world order).")
+    @Option(names = "--exchange", defaultValue = "SHARED",
+            description = "SHARED: one thread for every robot's exchange, in the order the robots are given (list "
+                    + "them in world order; the default, fastest as measured in docs/PERFORMANCE.md); ONE_THREAD: a "
+                    + "Hardware Simulator thread per robot; SEND_RECEIVE: a sending and a receiving thread per robot.")
     Threading exchange;
 
     @Override

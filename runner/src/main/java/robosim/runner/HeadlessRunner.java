@@ -55,13 +55,13 @@ public final class HeadlessRunner implements Callable<Integer> {
     @Option(names = "--progress", description = "Print the step and steps/s once a second.")
     boolean progress;
 
-    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "THREADS",
-            description = "The Environment's coordinator design: THREADS (default), SEQUENTIAL or TWO_THREADS.")
+    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "SEQUENTIAL",
+            description = "The Environment's coordinator design: SEQUENTIAL (default), THREADS or TWO_THREADS.")
     String coordinator;
 
     @Option(names = "--exchange", paramLabel = "THREADING",
-            description = "The robots' exchange threading: ONE_THREAD (default), SEND_RECEIVE, or, with "
-                    + "--robots-in-one-process, SHARED (one thread for every robot).")
+            description = "The robots' exchange threading: ONE_THREAD, SEND_RECEIVE, or, with "
+                    + "--robots-in-one-process, SHARED (one thread for every robot; the default there).")
     String exchange;
 
     @Option(names = "--no-step-messages",

@@ -38,7 +38,7 @@ final class InJvmSimulation {
     /** Called on the recording viewer's thread with each update, and the viewer port. */
     private java.util.function.BiConsumer<PoseUpdate, Integer> onUpdate = (u, port) -> { };
 
-    private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.THREADS;
+    private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.SEQUENTIAL;
 
     InJvmSimulation design(ClientWorkerCoordinator.Design d) {
         this.design = d;

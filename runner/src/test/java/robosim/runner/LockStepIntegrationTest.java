@@ -48,12 +48,12 @@ class LockStepIntegrationTest {
      */
     @ParameterizedTest(name = "{0} {1} stepMessages={2}")
     @CsvSource({
-        "SEQUENTIAL, ONE_THREAD, true",
+        "THREADS, ONE_THREAD, true",
         "TWO_THREADS, ONE_THREAD, true",
-        "THREADS, ONE_THREAD, false",
-        "THREADS, SEND_RECEIVE, true",
-        "THREADS, SHARED, true",
-        "SEQUENTIAL, SHARED, false",
+        "SEQUENTIAL, ONE_THREAD, false",
+        "SEQUENTIAL, SEND_RECEIVE, true",
+        "SEQUENTIAL, SHARED, true",
+        "THREADS, SHARED, false",
         "TWO_THREADS, SEND_RECEIVE, false",
     })
     void everyDesignAndSettingGivesTheSamePosesAndMessages(ClientWorkerCoordinator.Design design,
@@ -77,7 +77,7 @@ class LockStepIntegrationTest {
     void wanderingRobotsTakeTheSamePathsUnderEveryThreading() throws Exception {
         InJvmSimulation a = new InJvmSimulation(InJvmSimulation.env("maze.xml")).run(600, false, Wander::new);
         InJvmSimulation b = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
-                .design(ClientWorkerCoordinator.Design.SEQUENTIAL).exchange(InJvmSimulation.Exchange.SHARED)
+                .design(ClientWorkerCoordinator.Design.THREADS).exchange(InJvmSimulation.Exchange.SHARED)
                 .stepMessages(false).run(600, false, Wander::new);
         InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
                 .design(ClientWorkerCoordinator.Design.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)

@@ -58,11 +58,11 @@ public final class ClientWorkerCoordinator implements Closeable {
     public record Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort,
             boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs, double speed,
             Design design, boolean stepMessages) {
-        /** As fast as possible (no pacing), one thread per client, a step number every step. */
+        /** As fast as possible (no pacing), the default (sequential) design, a step number every step. */
         public Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort, boolean inProcessGeometry,
                 long maxSteps, int resetEvery, int handshakeTimeoutMs) {
             this(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, 0, Design.THREADS, true);
+                    handshakeTimeoutMs, 0, Design.SEQUENTIAL, true);
         }
 
         public Settings withDesign(Design d) {
@@ -326,7 +326,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     /**
-     * The original's loop ({@link Design#SEQUENTIAL}), on the {@code stepper} thread: read each
+     * The original's loop ({@link Design#SEQUENTIAL}), on the {@code stepper} thread (step 0's requests are
+     * read by the workers, so a robot leaving before the start is noticed): read each
      * active robot's request in world order, then run and deliver the step under the lock. A robot
      * whose read fails or who breaks the protocol is dropped, as in the threaded design.
      */
@@ -350,7 +351,11 @@ public final class ClientWorkerCoordinator implements Closeable {
                         continue;
                     }
                     try {
-                        StepRequest request = order[i].readRequest(k);
+                        StepRequest request = k == 0 ? order[i].takeFirst() : order[i].readRequest(k);
+                        if (request == null) {
+                            leave(order[i], i, "its first request could not be read");
+                            continue;
+                        }
                         processMessage(i, k, request);
                     } catch (IOException e) {
                         order[i].drop();

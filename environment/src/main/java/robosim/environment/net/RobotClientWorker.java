@@ -61,7 +61,17 @@ final class RobotClientWorker extends ClientWorker {
         connection.setReadTimeoutMs(0);
         try {
             if (coordinator.sequential()) {
-                // the stepper thread reads this robot's requests; this thread holds the session open
+                // this thread reads the first request, so a robot that leaves before the start is noticed;
+                // the stepper thread reads the rest, and this thread holds the session open
+                StepRequest request = null;
+                try {
+                    request = readRequest(0);
+                    if (!coordinator.isRunning()) {
+                        throw new ProtocolException("sent a request before the simulation started");
+                    }
+                } finally {
+                    handOverFirst(request);
+                }
                 coordinator.awaitEnd();
                 return;
             }
@@ -73,6 +83,39 @@ final class RobotClientWorker extends ClientWorker {
             }
         } finally {
             stopWriter();
+        }
+    }
+
+    // SEQUENTIAL: the first request, read by this worker, handed to the stepper
+    private final java.util.concurrent.locks.ReentrantLock firstLock = new java.util.concurrent.locks.ReentrantLock();
+    private final java.util.concurrent.locks.Condition firstReady = firstLock.newCondition();
+    private boolean firstHandedOver;
+    private StepRequest first;
+
+    private void handOverFirst(StepRequest request) {
+        firstLock.lock();
+        try {
+            first = request;
+            firstHandedOver = true;
+            firstReady.signalAll();
+        } finally {
+            firstLock.unlock();
+        }
+    }
+
+    /**
+     * SEQUENTIAL, on the stepper thread: this robot's request for step 0, once its worker has read it;
+     * null if the worker's read failed (the worker then reports the departure).
+     */
+    StepRequest takeFirst() throws InterruptedException {
+        firstLock.lock();
+        try {
+            while (!firstHandedOver) {
+                firstReady.await();
+            }
+            return first;
+        } finally {
+            firstLock.unlock();
         }
     }
 
