@@ -38,7 +38,7 @@ steps_for() {
   [ "$quick" = 1 ] && s=$((s / 5))
   echo "$s"
 }
-rate() { grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }
+rate() { (grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' || true) | head -n 1 | sed -E 's/.*=//'; }
 declare -A floor_of
 
 row() { # scenario variant robots robots_in steps rep steps_per_s

@@ -123,11 +123,6 @@ public final class Plots {
 
     private static void designs(Path dir, Map<String, List<Double>> runs, Map<String, List<Double>> ratios)
             throws IOException {
-        CategoryChart chart = new CategoryChartBuilder().width(1000).height(560)
-                .title("Coordinator designs and the report's untested ideas, as a ratio to the floor")
-                .xAxisTitle("setting").yAxisTitle("steps/s / floor steps/s (same sitting)").build();
-        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideNE);
-        chart.getStyler().setXAxisLabelRotation(20);
         for (String scenario : List.of("paper", "designs")) {
             List<String> names = new ArrayList<>();
             List<Double> values = new ArrayList<>();
@@ -138,13 +133,19 @@ public final class Plots {
                     values.add(median(e.getValue()));
                 }
             }
-            if (!names.isEmpty()) {
-                chart.addSeries(scenario.equals("paper") ? "paper benchmark, 10 robot processes"
-                        : "bench-100, robots in one process", names, values);
+            if (names.isEmpty()) {
+                continue;
             }
-        }
-        if (!chart.getSeriesMap().isEmpty()) {
-            BitmapEncoder.saveBitmap(chart, dir.resolve("designs").toString(), BitmapEncoder.BitmapFormat.PNG);
+            boolean paper = scenario.equals("paper");
+            CategoryChart chart = new CategoryChartBuilder().width(900).height(500)
+                    .title((paper ? "Paper benchmark, 10 BackAndForth robot processes" : "bench-100, 100 Wander robots "
+                            + "in one process") + ": each setting as a ratio to the floor")
+                    .xAxisTitle("setting (the others at their defaults)").yAxisTitle("steps/s / floor steps/s").build();
+            chart.getStyler().setLegendVisible(false);
+            chart.getStyler().setXAxisLabelRotation(15);
+            chart.addSeries(scenario, names, values);
+            BitmapEncoder.saveBitmap(chart, dir.resolve(paper ? "designs-paper" : "designs-100").toString(),
+                    BitmapEncoder.BitmapFormat.PNG);
         }
     }
 
