@@ -65,6 +65,24 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "per robot).")
     ClientWorkerCoordinator.Design design;
 
+    @Option(names = "--step-timeout-ms", defaultValue = ""
+            + ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS,
+            description = "Drop a robot that sends no request this long after its step was released "
+                    + "(default: ${DEFAULT-VALUE}; 0 = wait for ever).")
+    long stepTimeoutMs;
+
+    @Option(names = "--geometry-timeout-ms", defaultValue = ""
+            + ClientWorkerCoordinator.Settings.DEFAULT_GEOMETRY_TIMEOUT_MS,
+            description = "Count the Geometry process as lost if one step's round trip takes longer "
+                    + "(default: ${DEFAULT-VALUE}; 0 = wait for ever).")
+    long geometryTimeoutMs;
+
+    @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS",
+            description = "When the Geometry process dies or hangs mid-run: IN_PROCESS (go on with in-process "
+                    + "geometry, same results; the default) or WAIT (hold the step until a new Geometry process "
+                    + "attaches). Either way a new Geometry process may attach and takes over.")
+    ClientWorkerCoordinator.GeometryLoss onGeometryLoss;
+
     @Option(names = "--no-step-messages",
             description = "Send robots the step number only before step 0; they count on (the report's untested "
                     + "idea; default: a step number after every response).")
@@ -87,13 +105,15 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println(e.getMessage());
             return 2;
         }
-        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(speed >= 0) || Double.isInfinite(speed)) {
-            System.err.println("environment: --steps, --speed, --reset-every and --handshake-timeout-ms must be >= 0");
+        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(speed >= 0) || Double.isInfinite(speed)
+                || stepTimeoutMs < 0 || geometryTimeoutMs < 0) {
+            System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be "
+                    + ">= 0");
             return 2;
         }
         ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
                 InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
-                handshakeTimeoutMs, speed, design, !noStepMessages);
+                handshakeTimeoutMs, speed, design, !noStepMessages, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
         ClientWorkerCoordinator coordinator = new ClientWorkerCoordinator(spec, settings);
         try {
             coordinator.start();
@@ -122,9 +142,11 @@ public final class EnvironmentMain implements Callable<Integer> {
         double wall = Math.max(s.wallSeconds(), 1e-9);
         return String.format(java.util.Locale.ROOT,
                 "summary steps=%d robots=%d wall_s=%.3f steps_per_s=%.1f robot_steps_per_s=%.1f messages=%d"
-                        + " messages_out_of_range=%d messages_refused=%d",
+                        + " messages_out_of_range=%d messages_refused=%d robots_left=%d geometry_losses=%d"
+                        + " geometry_attaches=%d",
                 s.steps(), s.robots(), s.wallSeconds(), s.steps() / wall, s.steps() * s.robots() / wall,
-                s.messagesDelivered(), s.messagesOutOfRange(), s.messagesRefused());
+                s.messagesDelivered(), s.messagesOutOfRange(), s.messagesRefused(), s.robotsLeft(),
+                s.geometryLosses(), s.geometryAttaches());
     }
 
     public static void main(String[] args) {

@@ -13,7 +13,8 @@ import robosim.protocol.SonarSpec;
  * turn in place), then moves along its new heading until the distance asked for is covered or it
  * touches a wall, the arena's edge or another robot (at that robot's position so far this step);
  * then every sonar that was asked for reads the world as it stands after all the moves. A robot
- * that touches something stops {@link #CONTACT_GAP_MM} short of it, so shapes never overlap.
+ * that touches something stops {@link #CONTACT_GAP_MM} short of it, so shapes never overlap. A robot
+ * marked absent (it has left the simulation) is not in the world at all.
  *
  * <p>Deterministic: the same request gives the same response, bit for bit. Not thread-safe (it
  * reuses scratch state); one instance per thread.
@@ -30,6 +31,7 @@ public final class GeometryEngine {
     private final double[] x;
     private final double[] y;
     private final double[] heading;
+    private final boolean[] absent;
     private final Envelope area = new Envelope();
     private final MoveVisitor moveVisitor = new MoveVisitor();
     private final SonarVisitor sonarVisitor = new SonarVisitor();
@@ -51,6 +53,7 @@ public final class GeometryEngine {
         this.x = new double[this.robots];
         this.y = new double[this.robots];
         this.heading = new double[this.robots];
+        this.absent = new boolean[this.robots];
         double maxRadius = 0;
         for (double r : radius) {
             maxRadius = Math.max(maxRadius, r);
@@ -82,8 +85,15 @@ public final class GeometryEngine {
             y[i] = in.yMm(i);
             heading[i] = in.headingDeg(i);
         }
-        grid.rebuild(x, y);
         for (int i = 0; i < robots; i++) {
+            absent[i] = in.isAbsent(i);
+        }
+        grid.rebuild(x, y, absent);
+        for (int i = 0; i < robots; i++) {
+            if (absent[i]) {
+                out.setMotion(i, 0, 0, GeometryStepResponse.CONTACT_NONE, -1);
+                continue;
+            }
             heading[i] = Kinematics.turn(heading[i], in.turnDeg(i));
             double move = in.moveMm(i);
             double moved = 0;

@@ -42,6 +42,11 @@ final class RobotGrid {
 
     /** Puts every robot in its cell, sizing the grid to the robots' bounding box. */
     void rebuild(double[] x, double[] y) {
+        rebuild(x, y, null);
+    }
+
+    /** As {@link #rebuild(double[], double[])}, leaving out robots marked in {@code skip} (may be null). */
+    void rebuild(double[] x, double[] y, boolean[] skip) {
         double x0 = Double.POSITIVE_INFINITY;
         double y0 = Double.POSITIVE_INFINITY;
         double x1 = Double.NEGATIVE_INFINITY;
@@ -68,7 +73,9 @@ final class RobotGrid {
         }
         java.util.Arrays.fill(head, 0, cols * rows, -1);
         for (int i = 0; i < n; i++) {
-            insert(i, cellIndex(x[i], y[i]));
+            if (skip == null || !skip[i]) {
+                insert(i, cellIndex(x[i], y[i]));
+            }
         }
     }
 

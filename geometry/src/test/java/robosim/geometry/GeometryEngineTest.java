@@ -148,6 +148,23 @@ class GeometryEngineTest {
     }
 
     @Test
+    void aRobotThatHasLeftNeitherBlocksNorEchoesNorMoves() {
+        GeometryEngine e = engine(List.of(), 2, FRONT);
+        GeometryStepRequest q = new GeometryStepRequest(2);
+        q.set(0, 1000, 0, 0, 0, 1000, true);
+        q.set(1, 2000, 0, 0, 90, 300, true);
+        q.setAbsent(1);
+        GeometryStepResponse r = e.newResponse();
+        e.step(q, r);
+        assertEquals(1000, r.movedMm(0), 1e-9, "drives through where robot 1 stood");
+        assertEquals(GeometryStepResponse.CONTACT_NONE, r.contactKind(0));
+        assertEquals(0, r.movedMm(1));
+        assertEquals(0, r.turnedDeg(1));
+        assertEquals(1, r.rangeCount(), "ranges for robot 0 only");
+        assertEquals(5000, r.rangeMm(0), "robot 1 gives no echo");
+    }
+
+    @Test
     void aRobotDrivenIntoAnotherRobotStopsAtContact() {
         GeometryEngine e = engine(List.of(), 2);
         GeometryStepResponse r = step(e, new double[][] {{1000, 0, 0}, {2000, 0, 0}}, new double[] {0, 0},

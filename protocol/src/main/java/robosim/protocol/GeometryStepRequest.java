@@ -7,7 +7,9 @@ import java.io.ObjectOutput;
 /**
  * Environment -> Geometry, once per step: for every robot in world order its pose at the start of
  * the step (mm, degrees), the requested turn (deg) and move (mm, along the heading after the turn),
- * and whether its sonar ranges are wanted. Geometry is stateless between steps.
+ * and a flags byte: {@link #SONAR} (its sonar ranges are wanted) and {@link #ABSENT} (the robot has
+ * left the simulation: it neither moves, blocks nor echoes, and gets no ranges). Geometry is
+ * stateless between steps.
  *
  * <p>The sender may reuse one instance and its arrays from step to step (the connection writes
  * messages unshared); a received instance owns fresh arrays.
@@ -20,7 +22,12 @@ public final class GeometryStepRequest implements java.io.Externalizable {
     private double[] headingDeg = new double[0];
     private double[] turnDeg = new double[0];
     private double[] moveMm = new double[0];
-    private boolean[] sonar = new boolean[0];
+    private byte[] flags = new byte[0];
+
+    /** Flag: this robot's sonar ranges are wanted. */
+    public static final byte SONAR = 1;
+    /** Flag: this robot has left; the world goes on without it. */
+    public static final byte ABSENT = 2;
 
     public GeometryStepRequest() {
     }
@@ -36,7 +43,7 @@ public final class GeometryStepRequest implements java.io.Externalizable {
         headingDeg = new double[n];
         turnDeg = new double[n];
         moveMm = new double[n];
-        sonar = new boolean[n];
+        flags = new byte[n];
     }
 
     public void setStep(long step) {
@@ -49,7 +56,18 @@ public final class GeometryStepRequest implements java.io.Externalizable {
         headingDeg[robot] = heading;
         turnDeg[robot] = turn;
         moveMm[robot] = move;
-        sonar[robot] = wantsSonar;
+        flags[robot] = wantsSonar ? SONAR : 0;
+    }
+
+    /** Marks a robot as gone for this step: no motion, no contact, no echo, no ranges. */
+    public void setAbsent(int robot) {
+        moveMm[robot] = 0;
+        turnDeg[robot] = 0;
+        flags[robot] = ABSENT;
+    }
+
+    public boolean isAbsent(int i) {
+        return (flags[i] & ABSENT) != 0;
     }
 
     public long step() {
@@ -81,7 +99,7 @@ public final class GeometryStepRequest implements java.io.Externalizable {
     }
 
     public boolean wantsSonar(int i) {
-        return sonar[i];
+        return (flags[i] & SONAR) != 0 && (flags[i] & ABSENT) == 0;
     }
 
     @Override
@@ -94,7 +112,7 @@ public final class GeometryStepRequest implements java.io.Externalizable {
             out.writeDouble(headingDeg[i]);
             out.writeDouble(turnDeg[i]);
             out.writeDouble(moveMm[i]);
-            out.writeBoolean(sonar[i]);
+            out.writeByte(flags[i]);
         }
     }
 
@@ -108,7 +126,7 @@ public final class GeometryStepRequest implements java.io.Externalizable {
             headingDeg[i] = in.readDouble();
             turnDeg[i] = in.readDouble();
             moveMm[i] = in.readDouble();
-            sonar[i] = in.readBoolean();
+            flags[i] = in.readByte();
         }
     }
 }

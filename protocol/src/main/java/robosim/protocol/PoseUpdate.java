@@ -9,7 +9,8 @@ import java.util.List;
  * Environment -> viewer, after each step: every robot's pose (mm, degrees) at the end of
  * {@code step}, in snapshot order, and the sonar ranges (mm) each robot read in that step (none if it
  * did not ask), and every tag so far as "tagger>target" (cumulative, so a viewer that skips steps
- * misses none). Immutable once built, so one instance is shared by every viewer worker; a live
+ * misses none), and the names of the robots that have left the simulation (cumulative too; a viewer
+ * draws them as gone; their last pose stays in the arrays). Immutable once built, so one instance is shared by every viewer worker; a live
  * viewer may see only some steps, a recording viewer sees all.
  */
 public final class PoseUpdate implements java.io.Externalizable {
@@ -19,6 +20,7 @@ public final class PoseUpdate implements java.io.Externalizable {
     private double[] headingDeg = new double[0];
     private double[][] sonarMm = new double[0][];
     private List<String> tags = List.of();
+    private List<String> departed = List.of();
 
     private static final double[] NONE = new double[0];
 
@@ -56,6 +58,18 @@ public final class PoseUpdate implements java.io.Externalizable {
             List<String> tags) {
         this(step, xMm, yMm, headingDeg, sonarMm);
         this.tags = tags;
+    }
+
+    /** As above, with the robots that have left so far (names, in the order they left; taken as it is). */
+    public PoseUpdate(long step, double[] xMm, double[] yMm, double[] headingDeg, double[][] sonarMm,
+            List<String> tags, List<String> departed) {
+        this(step, xMm, yMm, headingDeg, sonarMm, tags);
+        this.departed = departed;
+    }
+
+    /** The robots that have left the simulation so far, in the order they left. */
+    public List<String> departed() {
+        return departed;
     }
 
     /** Every tag so far, "tagger>target", oldest first. */
@@ -100,6 +114,7 @@ public final class PoseUpdate implements java.io.Externalizable {
             Wire.writeDoubles(out, sonarMm[i], sonarMm[i].length);
         }
         Wire.writeStrings(out, tags);
+        Wire.writeStrings(out, departed);
     }
 
     @Override
@@ -118,5 +133,6 @@ public final class PoseUpdate implements java.io.Externalizable {
             sonarMm[i] = ranges == 0 ? NONE : Wire.readDoubles(in, ranges);
         }
         tags = Wire.readStrings(in, "tag count", Limits.MAX_TAGS);
+        departed = Wire.readStrings(in, "departed robot count", Limits.MAX_ROBOTS);
     }
 }

@@ -61,6 +61,29 @@ final class InJvmSimulation {
         return this;
     }
 
+    private java.util.function.UnaryOperator<ClientWorkerCoordinator.Settings> settingsHook = x -> x;
+    private Sideline sideline;
+    /** The Geometry client's socket while it runs (a test may close it to kill Geometry). */
+    volatile Socket geometrySocket;
+    /** Set by a test that kills Geometry on purpose: that client's failure is then expected. */
+    volatile boolean geometryKilled;
+
+    /** Changes the Environment's settings for the next run. */
+    InJvmSimulation settings(java.util.function.UnaryOperator<ClientWorkerCoordinator.Settings> hook) {
+        this.settingsHook = hook;
+        return this;
+    }
+
+    /** Something a test does beside the run, on its own thread, once the Environment is listening. */
+    interface Sideline {
+        void run(ClientWorkerCoordinator env, int[] ports) throws Exception;
+    }
+
+    InJvmSimulation sideline(Sideline action) {
+        this.sideline = action;
+        return this;
+    }
+
     InJvmSimulation onUpdate(java.util.function.BiConsumer<PoseUpdate, Integer> hook) {
         this.onUpdate = hook;
         return this;
@@ -78,9 +101,9 @@ final class InJvmSimulation {
     }
 
     InJvmSimulation run(long steps, boolean inProcessGeometry, Supplier<RobotControl> control) throws Exception {
-        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, settingsHook.apply(new ClientWorkerCoordinator.Settings(
                 InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry, steps, ObjectConnection.DEFAULT_RESET_EVERY,
-                10_000).withDesign(design).withStepMessages(stepMessages));
+                10_000).withDesign(design).withStepMessages(stepMessages)));
         env.start();
         try {
             int[] ports = env.ports();
@@ -120,8 +143,24 @@ final class InJvmSimulation {
             List<Thread> threads = new ArrayList<>();
             List<Throwable> failures = new ArrayList<>();
             if (!inProcessGeometry) {
-                threads.add(thread("geometry", failures, () -> new GeometryClient(
-                        new Socket(InetAddress.getLoopbackAddress(), ports[2]), ObjectConnection.DEFAULT_RESET_EVERY).run()));
+                threads.add(thread("geometry", failures, () -> {
+                    Socket g = new Socket(InetAddress.getLoopbackAddress(), ports[2]);
+                    geometrySocket = g;
+                    try {
+                        return new GeometryClient(g, ObjectConnection.DEFAULT_RESET_EVERY).run();
+                    } catch (java.io.IOException e) {
+                        if (geometryKilled) {
+                            return null;
+                        }
+                        throw e;
+                    }
+                }));
+            }
+            if (sideline != null) {
+                threads.add(thread("sideline", failures, () -> {
+                    sideline.run(env, ports);
+                    return null;
+                }));
             }
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 controls.add(control.get());

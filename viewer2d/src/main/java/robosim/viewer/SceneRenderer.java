@@ -77,8 +77,13 @@ public final class SceneRenderer {
             }
         }
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
+        java.util.Set<String> gone = new java.util.HashSet<>(poses.departed());
         for (int i = 0; i < s.robotCount(); i++) {
-            drawRobot(g, s, i, t, o.names(), tagged.contains(s.names().get(i)));
+            if (gone.contains(s.names().get(i))) {
+                drawGone(g, s, i, t, o.names());
+            } else {
+                drawRobot(g, s, i, t, o.names(), tagged.contains(s.names().get(i)));
+            }
         }
     }
 
@@ -152,6 +157,20 @@ public final class SceneRenderer {
             cone.closePath();
             g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), r < s.maxRangeMm() ? 45 : 18));
             g.fill(cone);
+        }
+    }
+
+    /** A robot that has left the simulation: a dashed outline where it was last, and "(left)". */
+    private static void drawGone(Graphics2D g, Scene s, int i, ViewTransform t, boolean names) {
+        PoseUpdate p = s.poses();
+        double r = s.robots().get(i).radiusMm() * t.scale();
+        double cx = t.toScreenX(p.xMm(i));
+        double cy = t.toScreenY(p.yMm(i));
+        g.setColor(OUTLINE);
+        g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
+        g.draw(new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r));
+        if (names && r >= 3) {
+            g.drawString(s.names().get(i) + " (left)", (float) (cx + r + 2), (float) (cy - r - 2));
         }
     }
 

@@ -87,12 +87,33 @@ public final class EnvironmentMap {
 
     /** The robots' poses as a new immutable update, labelled with {@code step}. */
     public PoseUpdate poses(long step) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone());
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), null, List.of(), departed);
     }
 
     /** As {@link #poses}, with each robot's sonar ranges of that step (taken as they are). */
     PoseUpdate poses(long step, double[][] sonarMm, List<String> tags) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags);
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags, departed);
+    }
+
+    private List<String> departed = List.of();
+    private boolean[] gone;
+
+    /** Robot {@code robot} has left the simulation. */
+    void depart(int robot) {
+        if (gone == null) {
+            gone = new boolean[x.length];
+        }
+        if (!gone[robot]) {
+            gone[robot] = true;
+            List<String> more = new ArrayList<>(departed);
+            more.add(name(robot));
+            departed = List.copyOf(more);
+        }
+    }
+
+    /** True once robot {@code robot} has left. */
+    public boolean isGone(int robot) {
+        return gone != null && gone[robot];
     }
 
     /** The robots' radii, mm, in world order. */

@@ -34,7 +34,12 @@ public final class SimulationCore {
     private static final double EPS = 1e-9;
 
     private final EnvironmentMap map;
-    private final GeometryService geometry;
+    private GeometryService geometry;
+    private GeometryLoss onGeometryLoss = (failed, cause) -> {
+        throw cause;
+    };
+    private final boolean[] gone;
+    private final double[] sensorRadius;
     private final MessageRouter router;
     private final int robots;
     private final double[] maxMoveMm;
@@ -75,6 +80,8 @@ public final class SimulationCore {
         this.sensors = new RobotSensor[robots][];
         this.sensorSpecs = new WorldSpec.SensorSpec[robots][];
         double[] radius = new double[robots];
+        this.sensorRadius = radius;
+        this.gone = new boolean[robots];
         for (int i = 0; i < robots; i++) {
             radius[i] = properties.get(i).radiusMm();
             List<WorldSpec.SensorSpec> specs = spec.robots().get(i).sensors();
@@ -103,9 +110,41 @@ public final class SimulationCore {
         return lastStep;
     }
 
-    /** Marks a robot as gone: it stays where it is, idle, and messages to it are refused. */
+    /**
+     * Removes a robot from the world: from the next step it neither moves, blocks, echoes nor can be
+     * sensed or tagged, messages to it are refused (the sender gets a notice), and viewers are told.
+     */
     public void depart(int robot) {
         router.depart(robot);
+        gone[robot] = true;
+        // sensor queries test each robot's disc against its radius; minus infinity never meets anything
+        sensorRadius[robot] = Double.NEGATIVE_INFINITY;
+        map.depart(robot);
+    }
+
+    /** What to do when the geometry service fails in the middle of a step. */
+    public interface GeometryLoss {
+        /**
+         * Returns the service to retry the step with, or throws (the step then fails).
+         *
+         * @param failed the service that failed
+         * @param cause why
+         */
+        GeometryService replace(GeometryService failed, IOException cause) throws IOException;
+    }
+
+    /** Sets the policy for a failing geometry service (default: the step fails). */
+    public void onGeometryLoss(GeometryLoss policy) {
+        this.onGeometryLoss = policy;
+    }
+
+    /** Resolves geometry from the next step on with {@code service} (e.g. a new Geometry process). */
+    public void useGeometry(GeometryService service) {
+        this.geometry = service;
+    }
+
+    public GeometryService geometry() {
+        return geometry;
     }
 
     /**
@@ -133,12 +172,24 @@ public final class SimulationCore {
                 router.route(i, map.name(i), q.messages(), map);
             }
             geometryRequest.set(i, map.xMm(i), map.yMm(i), map.headingDeg(i), turn, move, sonar);
+            if (gone[i]) {
+                geometryRequest.setAbsent(i);
+            }
         }
-        // act, collide, sense: one round trip
-        GeometryStepResponse g = geometry.resolve(geometryRequest);
-        if (g.step() != k || g.count() != robots) {
-            throw new ProtocolException("geometry answered step " + g.step() + " for " + g.count()
-                    + " robots, expected step " + k + " for " + robots);
+        // act, collide, sense: one round trip (the same request again if the service had to be replaced)
+        GeometryStepResponse g;
+        while (true) {
+            GeometryService current = geometry;
+            try {
+                g = current.resolve(geometryRequest);
+                if (g.step() != k || g.count() != robots) {
+                    throw new ProtocolException("geometry answered step " + g.step() + " for " + g.count()
+                            + " robots, expected step " + k + " for " + robots);
+                }
+                break;
+            } catch (IOException e) {
+                geometry = onGeometryLoss.replace(current, e);
+            }
         }
         // apply
         for (int i = 0; i < robots; i++) {

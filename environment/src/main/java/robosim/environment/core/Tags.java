@@ -19,7 +19,7 @@ final class Tags {
         double best = Double.POSITIVE_INFINITY;
         String hit = "";
         for (int j = 0; j < map.robotCount(); j++) {
-            if (j == i) {
+            if (j == i || map.isGone(j)) {
                 continue;
             }
             double d = Math.hypot(map.xMm(j) - cx, map.yMm(j) - cy) - rim - map.radiusMm(j);

@@ -57,24 +57,55 @@ public final class ClientWorkerCoordinator implements Closeable {
      */
     public record Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort,
             boolean inProcessGeometry, long maxSteps, int resetEvery, int handshakeTimeoutMs, double speed,
-            Design design, boolean stepMessages) {
+            Design design, boolean stepMessages, long stepTimeoutMs, long geometryTimeoutMs,
+            GeometryLoss onGeometryLoss) {
+        /** Default step and Geometry timeouts, ms. */
+        public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
+        public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
+
         /** As fast as possible (no pacing), the default (sequential) design, a step number every step. */
         public Settings(InetAddress bind, int robotPort, int viewerPort, int geometryPort, boolean inProcessGeometry,
                 long maxSteps, int resetEvery, int handshakeTimeoutMs) {
             this(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, 0, Design.SEQUENTIAL, true);
+                    handshakeTimeoutMs, 0, Design.SEQUENTIAL, true, DEFAULT_STEP_TIMEOUT_MS,
+                    DEFAULT_GEOMETRY_TIMEOUT_MS, GeometryLoss.IN_PROCESS);
         }
 
         public Settings withDesign(Design d) {
             return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, speed, d, stepMessages);
+                    handshakeTimeoutMs, speed, d, stepMessages, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
         }
 
         public Settings withStepMessages(boolean on) {
             return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
-                    handshakeTimeoutMs, speed, design, on);
+                    handshakeTimeoutMs, speed, design, on, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
+        }
+
+        /** A robot that has not sent its request this long after the step was released is dropped (0: never). */
+        public Settings withStepTimeoutMs(long ms) {
+            return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
+                    handshakeTimeoutMs, speed, design, stepMessages, ms, geometryTimeoutMs, onGeometryLoss);
+        }
+
+        /** A Geometry process that takes longer than this over one step counts as lost (0: never). */
+        public Settings withGeometryTimeoutMs(long ms) {
+            return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
+                    handshakeTimeoutMs, speed, design, stepMessages, stepTimeoutMs, ms, onGeometryLoss);
+        }
+
+        public Settings withGeometryLoss(GeometryLoss policy) {
+            return new Settings(bind, robotPort, viewerPort, geometryPort, inProcessGeometry, maxSteps, resetEvery,
+                    handshakeTimeoutMs, speed, design, stepMessages, stepTimeoutMs, geometryTimeoutMs, policy);
         }
     }
+
+    /**
+     * What the Environment does when its Geometry process dies or stops answering mid-run:
+     * {@code IN_PROCESS} (the default) resolves the step, and every later one, with the same geometry
+     * library in-process (the results are the same, bit for bit) until a new Geometry process attaches;
+     * {@code WAIT} holds the step until a new Geometry process attaches.
+     */
+    public enum GeometryLoss { IN_PROCESS, WAIT }
 
     /**
      * How robots' requests are read and responses written, the report's coordinator designs:
@@ -88,7 +119,8 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** How a finished run went. */
     public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
-            long messagesDelivered, long messagesOutOfRange, long messagesRefused) {
+            long messagesDelivered, long messagesOutOfRange, long messagesRefused, int robotsLeft,
+            int geometryLosses, int geometryAttaches) {
     }
 
     private enum State { WAITING, RUNNING, ENDED }
@@ -121,6 +153,16 @@ public final class ClientWorkerCoordinator implements Closeable {
     private String endReason = "";
     private boolean completed;
     private int serial;
+    private int robotsLeft;
+    private int geometryLosses;
+    private int geometryAttaches;
+    /** Signalled when a Geometry process attaches or the simulation ends (WAIT policy). */
+    private final java.util.concurrent.locks.Condition geometryChanged = lock.newCondition();
+    private boolean stepRunning;
+    private long stepReleasedNanos;
+    /** SEQUENTIAL: the robot whose request the stepper is reading now, or -1. */
+    private volatile int stepperReading = -1;
+    private java.util.concurrent.ScheduledExecutorService watchdog;
 
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
         this.spec = spec;
@@ -267,11 +309,25 @@ public final class ClientWorkerCoordinator implements Closeable {
     String attachGeometry(GeometryClientWorker worker) {
         lock.lock();
         try {
-            if (state != State.WAITING) {
-                return "the simulation is " + (state == State.RUNNING ? "already running" : "over");
+            if (state == State.ENDED) {
+                return "the simulation is over";
             }
             if (geometry != null) {
                 return "a Geometry process is already attached";
+            }
+            if (state == State.RUNNING) {
+                // the old one was lost: this one takes over from the next step (or the step waiting for it)
+                try {
+                    worker.sendWorld(core.map().geometryWorld());
+                } catch (IOException e) {
+                    return "could not send it the world: " + e.getMessage();
+                }
+                geometry = worker;
+                geometryAttaches++;
+                core.useGeometry(worker);
+                LOG.warn("a new Geometry process attached at step {}: geometry is resolved there again", stepsDone);
+                geometryChanged.signalAll();
+                return null;
             }
             geometry = worker;
             LOG.info("Geometry process attached");
@@ -301,10 +357,13 @@ public final class ClientWorkerCoordinator implements Closeable {
                 return;
             }
         }
+        core.onGeometryLoss(this::geometryLost);
         Arrays.fill(active, true);
         activeCount = robotCount;
         state = State.RUNNING;
         startNanos = System.nanoTime();
+        stepReleasedNanos = startNanos;
+        startWatchdog();
         LOG.info("all {} robot(s) connected: running{}", robotCount,
                 settings.maxSteps() > 0 ? " for " + settings.maxSteps() + " steps" : "");
         for (int i = 0; i < robotCount; i++) {
@@ -351,7 +410,13 @@ public final class ClientWorkerCoordinator implements Closeable {
                         continue;
                     }
                     try {
-                        StepRequest request = k == 0 ? order[i].takeFirst() : order[i].readRequest(k);
+                        stepperReading = i;
+                        StepRequest request;
+                        try {
+                            request = k == 0 ? order[i].takeFirst() : order[i].readRequest(k);
+                        } finally {
+                            stepperReading = -1;
+                        }
                         if (request == null) {
                             leave(order[i], i, "its first request could not be read");
                             continue;
@@ -413,7 +478,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
             requests[index] = request;
             arrived++;
-            if (arrived == activeCount) {
+            if (arrived == activeCount && !stepRunning) {
                 runStep();
             }
         } finally {
@@ -427,6 +492,7 @@ public final class ClientWorkerCoordinator implements Closeable {
      */
     private void runStep() throws InterruptedException {
         long k = stepsDone;
+        stepRunning = true;
         try {
             core.step(k, requests);
         } catch (IOException | RuntimeException e) {
@@ -435,6 +501,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         } finally {
             Arrays.fill(requests, null);
             arrived = 0;
+            stepRunning = false;
         }
         stepsDone = k + 1;
         pace(stepsDone);
@@ -451,6 +518,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 robots[i].drop();
             }
         }
+        stepReleasedNanos = System.nanoTime();
         if (!viewers.isEmpty()) {
             PoseUpdate update = core.viewerUpdate();
             for (ViewerClientWorker v : viewers) {
@@ -489,7 +557,9 @@ public final class ClientWorkerCoordinator implements Closeable {
             arrived--;
         }
         core.depart(i);
-        LOG.warn("robot {} left at step {} ({}); the others go on", robotNames.get(i), stepsDone, why);
+        robotsLeft++;
+        LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on",
+                robotNames.get(i), stepsDone, why);
     }
 
     boolean isRunning() {
@@ -517,7 +587,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 depart(index, why);
                 if (activeCount == 0) {
                     finish("every robot has left", false);
-                } else if (arrived == activeCount) {
+                } else if (arrived == activeCount && !stepRunning) {
                     try {
                         runStep();
                     } catch (InterruptedException e) {
@@ -539,6 +609,102 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
         } finally {
             lock.unlock();
+        }
+    }
+
+    // ---- faults: a lost Geometry process, a silent robot --------------------------------------
+
+    /**
+     * Under the lock, on the step's thread, when the geometry service failed mid-step: drops a failed
+     * Geometry process and returns what to retry the step with, as {@link Settings#onGeometryLoss} says.
+     */
+    private robosim.environment.core.GeometryService geometryLost(robosim.environment.core.GeometryService failed,
+            IOException cause) throws IOException {
+        if (!(failed instanceof GeometryClientWorker lost)) {
+            throw cause; // in-process geometry failing is a bug: the step fails and says why
+        }
+        lost.drop();
+        if (geometry == lost) {
+            geometry = null;
+        }
+        geometryLosses++;
+        geometryChanged.signalAll();
+        String why = cause.getMessage() == null ? cause.toString() : cause.getMessage();
+        if (settings.onGeometryLoss() == GeometryLoss.IN_PROCESS) {
+            LOG.warn("Geometry process lost in step {} ({}); going on with in-process geometry (same results); "
+                    + "a new Geometry process may attach", stepsDone, why);
+            return new robosim.environment.core.InProcessGeometry(core.map().geometryWorld());
+        }
+        LOG.warn("Geometry process lost in step {} ({}); the step waits for a new Geometry process", stepsDone, why);
+        try {
+            while (geometry == null) {
+                if (state != State.RUNNING) {
+                    throw new IOException("the simulation ended while waiting for a Geometry process");
+                }
+                geometryChanged.await();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while waiting for a Geometry process");
+        }
+        return geometry;
+    }
+
+    /** Starts the timer that enforces the step and Geometry timeouts, if either is set. */
+    private void startWatchdog() {
+        long step = settings.stepTimeoutMs();
+        long geo = settings.inProcessGeometry() ? 0 : settings.geometryTimeoutMs();
+        if (step <= 0 && geo <= 0) {
+            return;
+        }
+        long shortest = Math.min(step <= 0 ? Long.MAX_VALUE : step, geo <= 0 ? Long.MAX_VALUE : geo);
+        long period = Math.max(5, Math.min(250, shortest / 4));
+        watchdog = java.util.concurrent.Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "watchdog");
+            t.setDaemon(true);
+            return t;
+        });
+        watchdog.scheduleWithFixedDelay(this::enforceTimeouts, period, period, TimeUnit.MILLISECONDS);
+    }
+
+    /** On the watchdog thread: drops a Geometry process or robots that have taken too long. */
+    private void enforceTimeouts() {
+        try {
+            long now = System.nanoTime();
+            GeometryClientWorker g = geometry;
+            long geo = settings.geometryTimeoutMs();
+            if (g != null && geo > 0 && g.busyFor(now) > TimeUnit.MILLISECONDS.toNanos(geo)) {
+                LOG.warn("Geometry process has not answered step {} within {} ms; dropping it", stepsDone, geo);
+                g.drop(); // the step's read fails and the loss policy takes over
+            }
+            long step = settings.stepTimeoutMs();
+            if (step <= 0 || !lock.tryLock()) {
+                return; // a step is running: robots are not late while the Environment works
+            }
+            try {
+                if (state != State.RUNNING || stepRunning
+                        || now - stepReleasedNanos <= TimeUnit.MILLISECONDS.toNanos(step)) {
+                    return;
+                }
+                for (int i = 0; i < robotCount; i++) {
+                    if (active[i] && requests[i] == null && (!sequential() || stepperReading == i)) {
+                        RobotClientWorker late = robots[i];
+                        depart(i, "sent no request for step " + stepsDone + " within " + step + " ms (step timeout)");
+                        late.drop();
+                    }
+                }
+                if (activeCount == 0) {
+                    finish("every robot has left", false);
+                } else if (arrived == activeCount && !stepRunning && arrived > 0) {
+                    runStep();
+                }
+            } finally {
+                lock.unlock();
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (RuntimeException e) {
+            LOG.error("watchdog failed", e);
         }
     }
 
@@ -661,6 +827,10 @@ public final class ClientWorkerCoordinator implements Closeable {
             geometry.sendEnd(end);
         }
         closeServers();
+        geometryChanged.signalAll();
+        if (watchdog != null) {
+            watchdog.shutdownNow();
+        }
         LOG.info("simulation over after {} steps: {}", stepsDone, reason);
         endedLatch.countDown();
     }
@@ -669,6 +839,26 @@ public final class ClientWorkerCoordinator implements Closeable {
         lock.lock();
         try {
             return new SimulationEnd(stepsDone - 1, endReason);
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Waits until at least {@code losses} Geometry processes have been lost and {@code attaches} new
+     * ones attached during the run; false on timeout.
+     */
+    public boolean awaitGeometry(int losses, int attaches, long timeout, TimeUnit unit) throws InterruptedException {
+        long nanos = unit.toNanos(timeout);
+        lock.lock();
+        try {
+            while (geometryLosses < losses || geometryAttaches < attaches) {
+                if (nanos <= 0) {
+                    return false;
+                }
+                nanos = geometryChanged.awaitNanos(nanos);
+            }
+            return true;
         } finally {
             lock.unlock();
         }
@@ -689,7 +879,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             double wall = startNanos == 0 ? 0 : ((endNanos == 0 ? System.nanoTime() : endNanos) - startNanos) / 1e9;
             return new Summary(stepsDone, robotCount, wall, endReason, completed,
                     core == null ? 0 : core.messagesDelivered(), core == null ? 0 : core.messagesOutOfRange(),
-                    core == null ? 0 : core.messagesUndeliverable());
+                    core == null ? 0 : core.messagesUndeliverable(), robotsLeft, geometryLosses, geometryAttaches);
         } finally {
             lock.unlock();
         }

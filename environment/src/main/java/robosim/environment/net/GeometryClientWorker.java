@@ -52,11 +52,24 @@ final class GeometryClientWorker extends ClientWorker implements GeometryService
         }
     }
 
+    private volatile long busySince;
+
     @Override
     public GeometryStepResponse resolve(GeometryStepRequest request) throws IOException {
-        connection.write(request);
-        connection.flush();
-        return connection.read(GeometryStepResponse.class);
+        busySince = System.nanoTime();
+        try {
+            connection.write(request);
+            connection.flush();
+            return connection.read(GeometryStepResponse.class);
+        } finally {
+            busySince = 0;
+        }
+    }
+
+    /** How long the current step's round trip has taken so far, ns; 0 if none is under way. */
+    long busyFor(long now) {
+        long since = busySince;
+        return since == 0 ? 0 : now - since;
     }
 
     @Override

@@ -1,0 +1,413 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.ObjectOutputStream;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+import org.junit.jupiter.params.provider.EnumSource;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.WorldSpec;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.examples.BackAndForth;
+import robosim.geometry.GeometryClient;
+import robosim.hardware.ArRobot;
+import robosim.hardware.HardwareSimulator;
+import robosim.hardware.Scout;
+import robosim.protocol.GeometryHello;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.Protocol;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * The faults of the reliability work, each over real sockets: robots that leave or fall silent
+ * mid-run, a Geometry process that dies, viewers that leave, and garbage, truncated frames, wrong
+ * versions and silence on every port. After each, the simulation goes on.
+ */
+class FaultsTest {
+    private static final long LONG = 60;
+
+    private static WorldSpec three() throws Exception {
+        return new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml"));
+    }
+
+    private static ClientWorkerCoordinator start(ClientWorkerCoordinator.Settings settings) throws Exception {
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(three(), settings);
+        env.start();
+        return env;
+    }
+
+    private static ClientWorkerCoordinator.Settings settings(boolean inProcessGeometry, long steps) {
+        return new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry,
+                steps, 64, 10_000);
+    }
+
+    private static CompletableFuture<String> robot(String name, robosim.hardware.RobotType type, int port) {
+        return CompletableFuture.supplyAsync(() -> {
+            try {
+                HardwareSimulator sim = new HardwareSimulator(name, type);
+                sim.connect(new Socket(InetAddress.getLoopbackAddress(), port), 64);
+                return sim.run(new BackAndForth());
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+    }
+
+    /** A robot client by hand: hello, welcome, then {@code steps} steps standing still. */
+    private static ObjectConnection rawRobot(String name, int port, int steps) throws IOException {
+        ObjectConnection c = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 64);
+        c.write(new RobotHello(name, RobotModels.AR_ROBOT));
+        c.flush();
+        assertTrue(c.read(RobotWelcome.class).isAccepted());
+        for (int k = 0; k < steps; k++) {
+            assertEquals(k, c.readStep());
+            c.write(new StepRequest(k, 0, 0, false, List.of()));
+            c.flush();
+            assertEquals(k, c.read(StepResponse.class).step());
+        }
+        return c;
+    }
+
+    /** A recording viewer that keeps every update. */
+    private static List<PoseUpdate> record(int viewerPort) throws Exception {
+        List<PoseUpdate> seen = new CopyOnWriteArrayList<>();
+        ViewerClient v = ViewerClient.connect("127.0.0.1", viewerPort, true, 10_000);
+        v.start(new ViewerClient.Listener() {
+            @Override
+            public void snapshot(WorldSnapshot snapshot) {
+            }
+
+            @Override
+            public void update(PoseUpdate update) {
+                seen.add(update);
+            }
+        });
+        return seen;
+    }
+
+    @ParameterizedTest
+    @EnumSource(ClientWorkerCoordinator.Design.class)
+    void aRobotThatDisconnectsMidRunIsRemovedViewersAreToldAndTheOthersGoOn(ClientWorkerCoordinator.Design design)
+            throws Exception {
+        try (ClientWorkerCoordinator env = start(settings(true, 100).withDesign(design))) {
+            int[] ports = env.ports();
+            List<PoseUpdate> seen = record(ports[1]);
+            CompletableFuture<ObjectConnection> r1 = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return rawRobot("r1", ports[0], 20);
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            CompletableFuture<String> r2 = robot("r2", new ArRobot(), ports[0]);
+            CompletableFuture<String> r3 = robot("r3", new Scout(), ports[0]);
+            r1.get(LONG, TimeUnit.SECONDS).close(); // gone after 20 steps, mid-run
+            assertEquals("completed 100 steps", r2.get(LONG, TimeUnit.SECONDS));
+            assertEquals("completed 100 steps", r3.get(LONG, TimeUnit.SECONDS));
+            assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
+            ClientWorkerCoordinator.Summary s = env.summary();
+            assertTrue(s.completed(), s.reason());
+            assertEquals(1, s.robotsLeft());
+            env.awaitViewersDone(10_000);
+            PoseUpdate last = seen.get(seen.size() - 1);
+            assertEquals(99, last.step());
+            assertEquals(List.of("r1"), last.departed(), "viewers are told who left");
+            assertEquals(List.of(), seen.get(10).departed(), "r1 was still there at step 10");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(ClientWorkerCoordinator.Design.class)
+    void aRobotThatFallsSilentIsDroppedAfterTheStepTimeout(ClientWorkerCoordinator.Design design) throws Exception {
+        try (ClientWorkerCoordinator env = start(settings(true, 60).withDesign(design).withStepTimeoutMs(300))) {
+            int[] ports = env.ports();
+            CompletableFuture<ObjectConnection> r1 = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return rawRobot("r1", ports[0], 5);
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            CompletableFuture<String> r2 = robot("r2", new ArRobot(), ports[0]);
+            CompletableFuture<String> r3 = robot("r3", new Scout(), ports[0]);
+            try (ObjectConnection silent = r1.get(LONG, TimeUnit.SECONDS)) {
+                // connected, answering nothing from step 5 on
+                assertEquals("completed 60 steps", r2.get(LONG, TimeUnit.SECONDS));
+                assertEquals("completed 60 steps", r3.get(LONG, TimeUnit.SECONDS));
+                assertEquals(1, env.summary().robotsLeft());
+                assertTrue(env.summary().completed());
+                assertTrue(closedByPeer(silent), "the silent robot's connection was closed");
+            }
+        }
+    }
+
+    /** Reads until the peer closes; true if it did within the timeout (an object or step may come first). */
+    private static boolean closedByPeer(ObjectConnection c) {
+        try {
+            c.setReadTimeoutMs((int) TimeUnit.SECONDS.toMillis(LONG));
+            while (true) {
+                c.readStep();
+            }
+        } catch (SocketTimeoutException e) {
+            return false;
+        } catch (java.io.EOFException | java.net.SocketException e) {
+            return true;
+        } catch (IOException e) {
+            throw new AssertionError("expected the connection to close, got " + e);
+        }
+    }
+
+    @Test
+    void whenGeometryDiesTheRunGoesOnInProcessWithTheSamePosesAndANewGeometryTakesOver() throws Exception {
+        InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .run(400, false, Chatter::new);
+        CountDownLatch atStep50 = new CountDownLatch(1);
+        InJvmSimulation[] faulty = new InJvmSimulation[1];
+        faulty[0] = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> new ClientWorkerCoordinator.Settings(s.bind(), 0, 0, 0, false, s.maxSteps(),
+                        s.resetEvery(), s.handshakeTimeoutMs(), 200, s.design(), true, s.stepTimeoutMs(),
+                        s.geometryTimeoutMs(), ClientWorkerCoordinator.GeometryLoss.IN_PROCESS))
+                .onUpdate((u, port) -> {
+                    if (u.step() == 50) {
+                        atStep50.countDown();
+                    }
+                })
+                .sideline((env, ports) -> {
+                    assertTrue(atStep50.await(LONG, TimeUnit.SECONDS));
+                    faulty[0].geometryKilled = true;
+                    faulty[0].geometrySocket.close();
+                    assertTrue(env.awaitGeometry(1, 0, LONG, TimeUnit.SECONDS), "the loss was noticed");
+                    // a new Geometry process attaches while the run goes on in-process (paced: 200x real time)
+                    CompletableFuture<String> second = CompletableFuture.supplyAsync(() -> {
+                        try {
+                            return new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run();
+                        } catch (IOException e) {
+                            throw new IllegalStateException(e);
+                        }
+                    });
+                    assertTrue(env.awaitGeometry(1, 1, LONG, TimeUnit.SECONDS), "the new Geometry attached");
+                    second.get(LONG, TimeUnit.SECONDS);
+                });
+        InJvmSimulation sim = faulty[0].run(400, false, Chatter::new);
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        assertEquals(1, sim.summary.geometryLosses());
+        assertEquals(1, sim.summary.geometryAttaches());
+        assertSamePoses(reference, sim);
+    }
+
+    @Test
+    void withTheWaitSettingTheStepWaitsForANewGeometryProcess() throws Exception {
+        InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .run(300, false, Chatter::new);
+        CountDownLatch atStep50 = new CountDownLatch(1);
+        InJvmSimulation[] faulty = new InJvmSimulation[1];
+        faulty[0] = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> s.withGeometryLoss(ClientWorkerCoordinator.GeometryLoss.WAIT))
+                .onUpdate((u, port) -> {
+                    if (u.step() == 50) {
+                        atStep50.countDown();
+                    }
+                })
+                .sideline((env, ports) -> {
+                    assertTrue(atStep50.await(LONG, TimeUnit.SECONDS));
+                    faulty[0].geometryKilled = true;
+                    faulty[0].geometrySocket.close();
+                    assertTrue(env.awaitGeometry(1, 0, LONG, TimeUnit.SECONDS), "the loss was noticed");
+                    new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run();
+                });
+        InJvmSimulation sim = faulty[0].run(300, false, Chatter::new);
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        assertEquals(1, sim.summary.geometryLosses());
+        assertEquals(1, sim.summary.geometryAttaches());
+        assertSamePoses(reference, sim);
+    }
+
+    @Test
+    void aViewerThatDisconnectsMidRunChangesNothing() throws Exception {
+        InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .run(300, true, Chatter::new);
+        InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .sideline((env, ports) -> {
+                    CountDownLatch some = new CountDownLatch(20);
+                    ViewerClient v = ViewerClient.connect("127.0.0.1", ports[1], false, 10_000);
+                    v.start(new ViewerClient.Listener() {
+                        @Override
+                        public void snapshot(WorldSnapshot snapshot) {
+                        }
+
+                        @Override
+                        public void update(PoseUpdate update) {
+                            some.countDown();
+                        }
+                    });
+                    some.await(LONG, TimeUnit.SECONDS);
+                    v.close();
+                })
+                .run(300, true, Chatter::new);
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        assertSamePoses(reference, sim);
+    }
+
+    // ---- bad input on every port ---------------------------------------------------------------
+
+    /** What a bad client sends. */
+    enum Bad { GARBAGE, TRUNCATED, WRONG_VERSION, NOTHING, GADGET, HUGE_ARRAY, DEEP }
+
+    @ParameterizedTest(name = "{1} on the {0} port")
+    @CsvSource({
+        "robot, GARBAGE", "robot, TRUNCATED", "robot, WRONG_VERSION", "robot, NOTHING",
+        "viewer, GARBAGE", "viewer, TRUNCATED", "viewer, WRONG_VERSION", "viewer, NOTHING",
+        "geometry, GARBAGE", "geometry, TRUNCATED", "geometry, WRONG_VERSION", "geometry, NOTHING",
+        "robot, GADGET", "robot, HUGE_ARRAY", "robot, DEEP",
+        "viewer, GADGET", "viewer, HUGE_ARRAY", "viewer, DEEP",
+        "geometry, GADGET", "geometry, HUGE_ARRAY", "geometry, DEEP",
+    })
+    void badInputIsRefusedAndTheSimulationRunsOn(String port, Bad bad) throws Exception {
+        ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
+                0, 0, 0, false, 30, 64, 500);
+        try (ClientWorkerCoordinator env = start(s)) {
+            int[] ports = env.ports();
+            int p = switch (port) {
+                case "robot" -> ports[0];
+                case "viewer" -> ports[1];
+                default -> ports[2];
+            };
+            try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), p)) {
+                socket.setSoTimeout((int) TimeUnit.SECONDS.toMillis(LONG));
+                byte[] reply = switch (bad) {
+                    case GARBAGE -> send(socket, "GET / HTTP/1.1\r\nHost: robosim\r\n\r\n".getBytes(StandardCharsets.US_ASCII));
+                    case TRUNCATED -> {
+                        byte[] hello = helloBytes(port, Protocol.VERSION);
+                        yield send(socket, java.util.Arrays.copyOf(hello, hello.length - 3));
+                    }
+                    case WRONG_VERSION -> send(socket, helloBytes(port, Protocol.VERSION + 7));
+                    case NOTHING -> readToEnd(socket.getInputStream());
+                    // the shape of the URLDNS gadget chain: a HashMap keyed by a URL, outside the allow-list
+                    case GADGET -> send(socket, objectBytes(new java.util.HashMap<>(
+                            java.util.Map.of(new java.net.URL("http://gadget.invalid/"), "x"))));
+                    case HUGE_ARRAY -> send(socket, objectBytes(new byte[1 << 17]));
+                    case DEEP -> send(socket, objectBytes(new Object[] {new Object[] {new Object[] {new Object[] {}}}}));
+                };
+                if (bad == Bad.WRONG_VERSION) {
+                    String text = new String(reply, StandardCharsets.ISO_8859_1);
+                    assertTrue(text.contains("protocol version " + (Protocol.VERSION + 7) + " is not supported"),
+                            "the refusal names the version: " + text);
+                }
+            }
+            // the Environment is still there: a whole run goes through
+            CompletableFuture<String> geometry = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run();
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            List<CompletableFuture<String>> robots = new ArrayList<>(List.of(robot("r1", new ArRobot(), ports[0]),
+                    robot("r2", new ArRobot(), ports[0]), robot("r3", new Scout(), ports[0])));
+            for (CompletableFuture<String> r : robots) {
+                assertEquals("completed 30 steps", r.get(LONG, TimeUnit.SECONDS));
+            }
+            geometry.get(LONG, TimeUnit.SECONDS);
+            assertTrue(env.summary().completed());
+        }
+    }
+
+    /** The hello of the client for {@code port}, as its stream would carry it, with the given version. */
+    private static byte[] helloBytes(String port, int version) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
+            out.writeUnshared(switch (port) {
+                case "robot" -> new RobotHello("r1", RobotModels.AR_ROBOT);
+                case "viewer" -> new ViewerHello(true);
+                default -> new GeometryHello();
+            });
+        }
+        byte[] data = bytes.toByteArray();
+        if (version != Protocol.VERSION) {
+            // the version is the first int of the hello's data: block data (TC_BLOCKDATA, length) 00 00 00 VERSION
+            int at = -1;
+            // (TC_BLOCKDATA has a 1-byte length, TC_BLOCKDATALONG a 4-byte one)
+            for (int i = 0; i + 6 <= data.length && at < 0; i++) {
+                int start = data[i] == 0x77 ? i + 2 : data[i] == 0x7A ? i + 5 : -1;
+                if (start > 0 && start + 4 <= data.length && data[start] == 0 && data[start + 1] == 0 && data[start + 2] == 0
+                        && data[start + 3] == Protocol.VERSION) {
+                    at = start;
+                }
+            }
+            assertTrue(at > 0, "version found");
+            data[at + 3] = (byte) version;
+        }
+        return data;
+    }
+
+    /** One object as a fresh object stream would carry it. */
+    private static byte[] objectBytes(Object o) throws IOException {
+        ByteArrayOutputStream bytes = new ByteArrayOutputStream();
+        try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
+            out.writeObject(o);
+        }
+        return bytes.toByteArray();
+    }
+
+    /** Sends bytes, then reads everything until the Environment closes the connection. */
+    private static byte[] send(Socket socket, byte[] bytes) throws IOException {
+        socket.getOutputStream().write(bytes);
+        socket.getOutputStream().flush();
+        socket.shutdownOutput();
+        return readToEnd(socket.getInputStream());
+    }
+
+    /** Everything the peer sends until it closes (a reset counts as closed); fails on timeout. */
+    private static byte[] readToEnd(InputStream in) throws IOException {
+        ByteArrayOutputStream got = new ByteArrayOutputStream();
+        byte[] buffer = new byte[4096];
+        try {
+            for (int n = in.read(buffer); n >= 0; n = in.read(buffer)) {
+                got.write(buffer, 0, n);
+            }
+        } catch (SocketTimeoutException e) {
+            throw new AssertionError("the Environment never closed the connection");
+        } catch (IOException reset) {
+            // closed with unread data: a reset is a close too
+        }
+        return got.toByteArray();
+    }
+
+    private static void assertSamePoses(InJvmSimulation expected, InJvmSimulation actual) {
+        assertEquals(expected.updates.size(), actual.updates.size(), "steps seen");
+        for (int k = 0; k < expected.updates.size(); k++) {
+            PoseUpdate a = expected.updates.get(k);
+            PoseUpdate b = actual.updates.get(k);
+            for (int i = 0; i < a.count(); i++) {
+                assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
+                        new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)}, "step " + k + " robot " + i);
+            }
+        }
+    }
+}
