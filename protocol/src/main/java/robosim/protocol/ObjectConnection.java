@@ -104,6 +104,8 @@ public final class ObjectConnection implements Closeable {
             return in.readLong();
         } catch (OptionalDataException e) {
             throw new ProtocolException("expected a step number, got an object");
+        } catch (RuntimeException e) {
+            throw new ProtocolException("corrupt stream while reading a step number: " + e);
         }
     }
 
@@ -123,7 +125,9 @@ public final class ObjectConnection implements Closeable {
             throw new ProtocolException("expected a " + type.getSimpleName() + ", got primitive data");
         } catch (ObjectStreamException e) {
             throw new ProtocolException("corrupt stream while reading a " + type.getSimpleName() + ": " + e);
-        } catch (ClassCastException | IllegalStateException e) {
+        } catch (RuntimeException e) {
+            // the JDK's decoder answers some malformed streams with runtime exceptions (found by fuzzing:
+            // a TC_ENUM without a class description throws NullPointerException); all are bad input
             throw new ProtocolException("corrupt stream while reading a " + type.getSimpleName() + ": " + e);
         }
         if (!type.isInstance(o)) {
