@@ -53,6 +53,7 @@ public final class HardwareSimulator {
     /** Newest plug-in sensor readings by name. */
     final java.util.Map<String, double[]> readings = new java.util.HashMap<>();
     final List<CommEvent> outbox = new ArrayList<>();
+    private final java.util.Set<String> seenNotices = new java.util.HashSet<>();
 
     public HardwareSimulator(String name, RobotType type) {
         this.name = name;
@@ -114,7 +115,21 @@ public final class HardwareSimulator {
             return endReason;
         } finally {
             finish();
+            awaitControlCode(CONTROL_GRACE_MS);
         }
+    }
+
+    /** How long control code gets to clean up (finally blocks) once the simulation is over, ms. */
+    static final long CONTROL_GRACE_MS = 2000;
+
+    /** Waits up to {@code ms} for the control thread to end after {@link #finish}; true if it did. */
+    private boolean awaitControlCode(long ms) throws InterruptedException {
+        Thread t = controlThread;
+        if (t == null) {
+            return true;
+        }
+        t.join(Math.max(1, ms));
+        return !t.isAlive();
     }
 
     /**
@@ -152,6 +167,10 @@ public final class HardwareSimulator {
         } finally {
             for (HardwareSimulator sim : sims) {
                 sim.finish();
+            }
+            long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(CONTROL_GRACE_MS);
+            for (HardwareSimulator sim : sims) {
+                sim.awaitControlCode(java.util.concurrent.TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
             }
         }
     }
@@ -343,7 +362,12 @@ public final class HardwareSimulator {
             inbox.addLast(new Message(e.from(), e.payload()));
         }
         for (String notice : r.notices()) {
-            LOG.warn("{}: {}", name, notice);
+            // the same notice every step (e.g. messages to a robot that has left) is logged once
+            if (seenNotices.size() < 1000 && seenNotices.add(notice)) {
+                LOG.warn("{}: {} (repeats are logged at debug level)", name, notice);
+            } else {
+                LOG.debug("{}: {}", name, notice);
+            }
         }
         return !r.inbox().isEmpty();
     }

@@ -86,6 +86,15 @@ final class ChildProcesses implements AutoCloseable {
         return bad;
     }
 
+    /** Kills the child started under {@code name} at once (for fault injection). */
+    void kill(String name) {
+        for (int i = 0; i < names.size(); i++) {
+            if (names.get(i).equals(name)) {
+                started.get(i).destroyForcibly();
+            }
+        }
+    }
+
     @Override
     public void close() {
         for (Process p : started) {

@@ -1,0 +1,402 @@
+package robosim.runner;
+
+import java.io.IOException;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.Callable;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * The soak: N {@code RingChatter} robots (in several robot processes), an Environment and a Geometry
+ * process, run for many steps while faults are injected at random steps drawn from a seeded
+ * generator: a robot process killed, robots that fall silent, the Geometry process killed and a new
+ * one started, viewers that come and go or never read, garbage on every port. Afterwards it checks
+ * that every step ran, that every message between robots that were both still there arrived exactly
+ * once and in order, that the faults were seen as faults, and that the Environment's heap after a
+ * full GC near the end is within 10% of its heap near the start. Prints a report; exit 0 if all hold.
+ */
+@Command(name = "soak.sh", mixinStandardHelpOptions = true,
+        description = "Runs a long simulation with faults injected at random (seeded) and checks what survived.")
+public final class Soak implements Callable<Integer> {
+    @Option(names = "--robots", defaultValue = "100", description = "Ring robots (default: ${DEFAULT-VALUE}).")
+    int robots;
+
+    @Option(names = "--steps", defaultValue = "100000", description = "Steps (default: ${DEFAULT-VALUE}).")
+    long steps;
+
+    @Option(names = "--seed", defaultValue = "1", description = "Seed of the fault schedule (default: ${DEFAULT-VALUE}).")
+    long seed;
+
+    @Option(names = "--robot-processes", defaultValue = "5",
+            description = "Robot processes the ring robots are spread over (default: ${DEFAULT-VALUE}).")
+    int robotProcesses;
+
+    @Option(names = "--silent-robots", defaultValue = "3",
+            description = "Extra robots that fall silent at random steps (default: ${DEFAULT-VALUE}).")
+    int silentRobots;
+
+    @Option(names = "--step-timeout-ms", defaultValue = "2000",
+            description = "The Environment's step timeout (default: ${DEFAULT-VALUE}).")
+    long stepTimeoutMs;
+
+    private final AtomicLong step = new AtomicLong(-1);
+    private final Object stepChanged = new Object();
+    private final Map<String, String> ringLines = new ConcurrentHashMap<>();
+    private final List<String> faults = java.util.Collections.synchronizedList(new ArrayList<>());
+
+    @Override
+    public Integer call() throws Exception {
+        if (robots < 3 || steps < 1000 || robotProcesses < 2 || robotProcesses > robots || silentRobots < 0) {
+            System.err.println("soak: need --robots >= 3, --steps >= 1000, 2 <= --robot-processes <= --robots");
+            return 2;
+        }
+        Path dir = Files.createTempDirectory("robosim-soak");
+        Path env = writeEnvironment(dir.resolve("soak.xml"));
+        Random random = new Random(seed);
+        try (ChildProcesses children = new ChildProcesses(List.of())) {
+            CompletableFuture<Map<String, String>> listening = new CompletableFuture<>();
+            CompletableFuture<String> summary = new CompletableFuture<>();
+            Process environment = children.start("environment", List.of("-XX:+UseSerialGC"),
+                    "robosim.environment.EnvironmentMain", List.of(env.toString(), "--steps", Long.toString(steps),
+                            "--robot-port", "0", "--viewer-port", "0", "--geometry-port", "0",
+                            "--step-timeout-ms", Long.toString(stepTimeoutMs)), line -> {
+                        if (line.startsWith("listening ")) {
+                            listening.complete(HeadlessRunner.fields(line));
+                        } else if (line.startsWith("summary ")) {
+                            summary.complete(line);
+                        }
+                    });
+            Map<String, String> ports = listening.get(60, TimeUnit.SECONDS);
+            int robotPort = Integer.parseInt(ports.get("robots"));
+            int viewerPort = Integer.parseInt(ports.get("viewers"));
+            int geometryPort = Integer.parseInt(ports.get("geometry"));
+            children.start("geometry", List.of("-XX:+UseSerialGC"), "robosim.geometry.GeometryMain",
+                    List.of("127.0.0.1", Integer.toString(geometryPort)), null);
+            watch(viewerPort);
+            List<Process> robotJvms = new ArrayList<>();
+            int per = (robots + robotProcesses - 1) / robotProcesses;
+            for (int p = 0; p < robotProcesses; p++) {
+                List<String> args = new ArrayList<>(List.of("127.0.0.1", Integer.toString(robotPort)));
+                for (int i = p * per; i < Math.min(robots, (p + 1) * per); i++) {
+                    args.add("--robot");
+                    args.add("ring" + i + ":ArRobot:robosim.examples.RingChatter");
+                }
+                robotJvms.add(children.start("robots-" + p, List.of("-XX:+UseSerialGC", "-XX:TieredStopAtLevel=1"),
+                        "robosim.hardware.MultiRobotMain", args, this::robotLine));
+            }
+            List<CompletableFuture<Void>> silent = new ArrayList<>();
+            for (int v = 0; v < silentRobots; v++) {
+                long at = between(random, 0.05, 0.95);
+                String name = "silent" + v;
+                silent.add(CompletableFuture.runAsync(() -> silentRobot(name, robotPort, at)));
+                faults.add(String.format(Locale.ROOT, "robot %s falls silent at step %d", name, at));
+            }
+            Socket frozen = frozenViewer(viewerPort);
+            faults.add("a viewer that never reads, connected for the whole run");
+            int killed = random.nextInt(robotProcesses);
+            long killAt = between(random, 0.2, 0.8);
+            long geometryAt = between(random, 0.1, 0.9);
+            List<long[]> viewerVisits = new ArrayList<>();
+            for (int i = 0; i < 5; i++) {
+                long from = between(random, 0.0, 0.9);
+                viewerVisits.add(new long[] {from, Math.min(steps - 1, from + 1 + random.nextInt((int) (steps / 10)))});
+            }
+            List<long[]> garbage = new ArrayList<>();
+            for (int i = 0; i < 9; i++) {
+                garbage.add(new long[] {between(random, 0.0, 0.95), i % 3});
+            }
+            List<CompletableFuture<Void>> scheduled = new ArrayList<>();
+            scheduled.add(at(killAt, () -> {
+                robotJvms.get(killed).destroyForcibly();
+                faults.add(String.format(Locale.ROOT, "robot process %d (%d robots) killed at step %d", killed,
+                        Math.min(robots, (killed + 1) * per) - killed * per, step.get()));
+            }));
+            scheduled.add(at(geometryAt, () -> {
+                children.kill("geometry");
+                faults.add("Geometry process killed at step " + step.get() + "; a new one started");
+                children.start("geometry-2", List.of("-XX:+UseSerialGC"), "robosim.geometry.GeometryMain",
+                        List.of("127.0.0.1", Integer.toString(geometryPort)), null);
+            }));
+            for (long[] visit : viewerVisits) {
+                scheduled.add(at(visit[0], () -> {
+                    ViewerClient v = ViewerClient.connect("127.0.0.1", viewerPort, false, 10_000);
+                    v.start(new ViewerClient.Listener() {
+                        @Override
+                        public void snapshot(WorldSnapshot snapshot) {
+                        }
+
+                        @Override
+                        public void update(PoseUpdate update) {
+                        }
+                    });
+                    awaitStep(visit[1]);
+                    v.close();
+                    faults.add("a live viewer connected at step " + visit[0] + " and left at step " + step.get());
+                }));
+            }
+            for (long[] g : garbage) {
+                int port = g[1] == 0 ? robotPort : g[1] == 1 ? viewerPort : geometryPort;
+                scheduled.add(at(g[0], () -> {
+                    try (Socket s = new Socket(InetAddress.getLoopbackAddress(), port)) {
+                        OutputStream out = s.getOutputStream();
+                        out.write("\u00ac\u00ed\u0000\u0005garbage".getBytes(StandardCharsets.ISO_8859_1));
+                        out.flush();
+                        s.shutdownOutput();
+                        s.setSoTimeout(30_000);
+                        while (s.getInputStream().read() >= 0) {
+                            // until the Environment closes it
+                        }
+                    }
+                    faults.add("garbage sent to the " + (g[1] == 0 ? "robot" : g[1] == 1 ? "viewer" : "geometry")
+                            + " port at step " + step.get());
+                }));
+            }
+            long early = heapAt((long) (steps * 0.1), environment.pid());
+            long late = heapAt((long) (steps * 0.95), environment.pid());
+            if (!environment.waitFor(6, TimeUnit.HOURS)) {
+                System.out.println("FAIL the Environment did not end");
+                return 1;
+            }
+            String sum = summary.get(30, TimeUnit.SECONDS);
+            for (CompletableFuture<Void> f : scheduled) {
+                f.get(60, TimeUnit.SECONDS);
+            }
+            frozen.close();
+            children.awaitAll(60);
+            return report(sum, early, late, killed, per);
+        }
+    }
+
+    private long between(Random random, double from, double to) {
+        return (long) (steps * (from + (to - from) * random.nextDouble()));
+    }
+
+    /** The soak's world: robots in rows 1 m apart, driving back and forth along x; 500 ms steps. */
+    private Path writeEnvironment(Path file) throws IOException {
+        StringBuilder b = new StringBuilder();
+        int rows = robots + silentRobots;
+        b.append("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<environment name=\"soak\" timeStepMs=\"500\">\n");
+        b.append("  <arena width=\"13\" height=\"").append(rows + 1).append("\"/>\n  <robots>\n");
+        for (int i = 0; i < rows; i++) {
+            String name = i < robots ? "ring" + i : "silent" + (i - robots);
+            b.append("    <robot name=\"").append(name).append("\" type=\"ArRobot\" control=\"")
+                    .append(i < robots ? "robosim.examples.RingChatter" : "robosim.examples.BackAndForth")
+                    .append("\" x=\"1.5\" y=\"").append(i + 1).append("\"/>\n");
+        }
+        b.append("  </robots>\n</environment>\n");
+        Files.writeString(file, b.toString());
+        return file;
+    }
+
+    private void robotLine(String line) {
+        if (line.startsWith("ring ")) {
+            ringLines.put(line.split(" ")[1], line);
+        }
+    }
+
+    /** A live viewer that follows the step, for the fault schedule. */
+    private void watch(int viewerPort) throws IOException, InterruptedException {
+        ViewerClient v = ViewerClient.connect("127.0.0.1", viewerPort, new ViewerHello(false, 50), 10_000);
+        v.start(new ViewerClient.Listener() {
+            @Override
+            public void snapshot(WorldSnapshot snapshot) {
+            }
+
+            @Override
+            public void update(PoseUpdate update) {
+                step.set(update.step());
+                synchronized (stepChanged) {
+                    stepChanged.notifyAll();
+                }
+            }
+
+            @Override
+            public void end(robosim.protocol.SimulationEnd end) {
+                step.set(Long.MAX_VALUE);
+                synchronized (stepChanged) {
+                    stepChanged.notifyAll();
+                }
+            }
+        });
+    }
+
+    private void awaitStep(long k) throws InterruptedException {
+        synchronized (stepChanged) {
+            while (step.get() < k) {
+                stepChanged.wait();
+            }
+        }
+    }
+
+    private interface Fault {
+        void run() throws Exception;
+    }
+
+    private CompletableFuture<Void> at(long k, Fault fault) {
+        return CompletableFuture.runAsync(() -> {
+            try {
+                awaitStep(k);
+                if (step.get() != Long.MAX_VALUE) {
+                    fault.run();
+                }
+            } catch (Exception e) {
+                faults.add("a fault could not be injected: " + e);
+            }
+        });
+    }
+
+    /** A robot driven by hand that answers until step {@code silentAt}, then says nothing. */
+    private void silentRobot(String name, int port, long silentAt) {
+        try (ObjectConnection c = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 256)) {
+            c.write(new RobotHello(name, RobotModels.AR_ROBOT));
+            c.flush();
+            if (!c.read(RobotWelcome.class).isAccepted()) {
+                faults.add(name + " was refused");
+                return;
+            }
+            for (long k = c.readStep(); k >= 0 && k < silentAt; k = c.readStep()) {
+                c.write(new StepRequest(k, 0, 0, false, List.of()));
+                c.flush();
+                c.read(StepResponse.class);
+            }
+            // silent from here: the Environment's step timeout must drop us and close the connection
+            c.setReadTimeoutMs(0);
+            while (true) {
+                c.readStep();
+            }
+        } catch (IOException expected) {
+            // dropped, or the end
+        }
+    }
+
+    private static Socket frozenViewer(int port) throws IOException {
+        Socket s = new Socket(InetAddress.getLoopbackAddress(), port);
+        s.setReceiveBufferSize(4096);
+        ObjectConnection c = new ObjectConnection(s, 256);
+        c.write(new ViewerHello(false));
+        c.flush();
+        return s; // never read again
+    }
+
+    /** At step k: a full GC in the Environment and its old generation, KB (-1 if it could not be read). */
+    private long heapAt(long k, long pid) throws Exception {
+        awaitStep(k);
+        if (step.get() == Long.MAX_VALUE) {
+            return -1;
+        }
+        long at = step.get();
+        run("jcmd", Long.toString(pid), "GC.run");
+        Matcher m = Pattern.compile("tenured generation\\s+total \\d+K, used (\\d+)K")
+                .matcher(run("jcmd", Long.toString(pid), "GC.heap_info"));
+        long kb = m.find() ? Long.parseLong(m.group(1)) : -1;
+        faults.add("Environment heap read at step " + at + ": " + kb + " KB");
+        return kb;
+    }
+
+    private static String run(String... cmd) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        p.waitFor();
+        return out;
+    }
+
+    private int report(String summary, long early, long late, int killed, int per) {
+        Map<String, String> s = HeadlessRunner.fields(summary);
+        boolean ok = true;
+        System.out.println("soak: " + robots + " ring robots in " + robotProcesses + " processes, " + silentRobots
+                + " silent robots, " + steps + " steps, seed " + seed);
+        System.out.println("faults injected:");
+        for (String f : List.copyOf(faults)) {
+            System.out.println("  - " + f);
+        }
+        System.out.println("Environment: " + summary);
+        ok &= check(Long.parseLong(s.get("steps")) == steps, "every step ran: " + s.get("steps") + " of " + steps);
+        int lost = Math.min(robots, (killed + 1) * per) - killed * per;
+        ok &= check(Integer.parseInt(s.get("robots_left")) == lost + silentRobots,
+                "robots that left: " + s.get("robots_left") + " (expected " + lost + " killed + " + silentRobots
+                        + " silent)");
+        ok &= check(Integer.parseInt(s.get("geometry_losses")) == 1 && Integer.parseInt(s.get("geometry_attaches")) == 1,
+                "Geometry lost " + s.get("geometry_losses") + " time(s), a new one attached "
+                        + s.get("geometry_attaches") + " time(s)");
+        long pairs = 0;
+        long delivered = 0;
+        int problems = 0;
+        for (int i = 0; i < robots; i++) {
+            String line = ringLines.get("ring" + i);
+            boolean alive = i / per != killed;
+            if (line == null) {
+                if (alive) {
+                    ok &= check(false, "ring" + i + " (alive) reported nothing");
+                }
+                continue;
+            }
+            Map<String, String> f = HeadlessRunner.fields(line.substring(line.indexOf(' ', 5) + 1));
+            problems += Integer.parseInt(f.get("problems"));
+            if (!line.contains("problems=0")) {
+                ok &= check(false, line);
+            }
+            int prev = (i + robots - 1) % robots;
+            if (alive && prev / per != killed) {
+                pairs++;
+                delivered += Long.parseLong(f.get("received"));
+                if (Long.parseLong(f.get("received")) != steps) {
+                    ok &= check(false, "ring" + i + " received " + f.get("received") + " of " + steps + " messages");
+                }
+            }
+        }
+        ok &= check(problems == 0, "messages out of order, repeated or from the wrong robot: " + problems);
+        ok &= check(true, "messages between robots both there to the end: " + delivered + " delivered over " + pairs
+                + " pairs, " + steps + " each (exactly once, in order)");
+        if (early > 0 && late > 0) {
+            double growth = (late - early) * 100.0 / early;
+            ok &= check(Math.abs(growth) <= 10, String.format(Locale.ROOT,
+                    "Environment old generation after a full GC: %d KB at 10%%, %d KB at 95%% (%+.1f%%)", early, late,
+                    growth));
+        } else {
+            ok &= check(false, "the Environment's heap could not be read (jcmd)");
+        }
+        System.out.println(ok ? "soak: PASS" : "soak: FAIL");
+        return ok ? 0 : 1;
+    }
+
+    private static boolean check(boolean holds, String what) {
+        System.out.println((holds ? "  ok   " : "  FAIL ") + what);
+        return holds;
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new Soak());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("soak: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}
