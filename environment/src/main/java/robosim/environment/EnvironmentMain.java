@@ -11,6 +11,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.control.ControlServer;
+import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.protocol.ObjectConnection;
@@ -83,6 +85,23 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "attaches). Either way a new Geometry process may attach and takes over.")
     ClientWorkerCoordinator.GeometryLoss onGeometryLoss;
 
+    @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
+            description = "The control port for the Control Panel (default: ${DEFAULT-VALUE}; 0 = any free port; "
+                    + "-1 = none).")
+    int controlPort;
+
+    @Option(names = "--control-token", description = "A secret the control port asks for before any request "
+            + "(default: the environment variable ROBOSIM_CONTROL_TOKEN; required when --bind is not loopback).")
+    String controlToken;
+
+    @Option(names = "--start-paused", description = "Once every client is there, wait for start (or step N) "
+            + "from the control port.")
+    boolean startPaused;
+
+    @Option(names = "--keep-running", negatable = true, description = "After a simulation ends, wait on the "
+            + "control port for start, load or shutdown (default: on without --steps, off with --steps).")
+    Boolean keepRunning;
+
     @Option(names = "--no-step-messages",
             description = "Send robots the step number only before step 0; they count on (the report's untested "
                     + "idea; default: a step number after every response).")
@@ -114,27 +133,57 @@ public final class EnvironmentMain implements Callable<Integer> {
         ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
                 InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
                 handshakeTimeoutMs, speed, design, !noStepMessages, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
-        ClientWorkerCoordinator coordinator = new ClientWorkerCoordinator(spec, settings);
+        InetAddress bindAddress = InetAddress.getByName(bind);
+        String token = controlToken != null ? controlToken : System.getenv("ROBOSIM_CONTROL_TOKEN");
+        if (controlPort >= 0 && !bindAddress.isLoopbackAddress() && (token == null || token.isBlank())) {
+            System.err.println("environment: --bind " + bind + " opens the control port beyond this machine: give a "
+                    + "token with --control-token or ROBOSIM_CONTROL_TOKEN (or turn the port off with --control-port -1)");
+            return 2;
+        }
+        boolean stay = keepRunning != null ? keepRunning : steps == 0;
+        EnvironmentHost host = new EnvironmentHost(file, spec, settings, stay, startPaused);
+        ControlServer control = null;
         try {
-            coordinator.start();
+            host.open();
+            if (controlPort >= 0) {
+                control = new ControlServer(host, token);
+                control.start(bindAddress, controlPort);
+            }
         } catch (BindException e) {
+            closeQuietly(host, control);
             System.err.println("environment: " + e.getMessage() + " (choose another with the --*-port options)");
             return 2;
         } catch (IOException e) {
+            closeQuietly(host, control);
             System.err.println("environment: cannot listen on " + bind + ": " + e.getMessage());
             return 2;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> coordinator.stop("the Environment was stopped"),
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> host.current().stop("the Environment was stopped"),
                 "shutdown"));
-        int[] ports = coordinator.ports();
-        System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]);
+        int[] ports = host.ports();
+        System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
+                + " control=" + (control == null ? -1 : control.port()));
         System.out.flush();
-        coordinator.awaitEnd();
-        coordinator.awaitViewersDone(5000);
-        ClientWorkerCoordinator.Summary s = coordinator.summary();
-        System.out.println(summaryLine(s));
-        System.out.flush();
-        return s.completed() ? 0 : 1;
+        try {
+            return host.run(s -> {
+                System.out.println(summaryLine(s));
+                System.out.flush();
+            });
+        } finally {
+            if (control != null) {
+                control.close();
+            }
+        }
+    }
+
+    private static void closeQuietly(EnvironmentHost host, ControlServer control) {
+        if (control != null) {
+            control.close();
+        }
+        ClientWorkerCoordinator c = host.current();
+        if (c != null) {
+            c.close();
+        }
     }
 
     /** The summary line, also used by the headless runner. */

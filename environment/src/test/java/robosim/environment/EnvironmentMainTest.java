@@ -56,7 +56,7 @@ class EnvironmentMainTest {
         try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
             int port = taken.getLocalPort();
             Result r = run("../test-envs/test.xml", "--robot-port", Integer.toString(port), "--viewer-port", "0",
-                    "--geometry-port", "0");
+                    "--geometry-port", "0", "--control-port", "0");
             assertEquals(2, r.code());
             assertTrue(r.err().strip().endsWith("robot port " + port
                     + " is already in use (choose another with the --*-port options)"), r.err());

@@ -157,7 +157,8 @@ public final class HeadlessRunner implements Callable<Integer> {
         CompletableFuture<Map<String, String>> listening = new CompletableFuture<>();
         CompletableFuture<Map<String, String>> summary = new CompletableFuture<>();
         List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
-                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2)));
+                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
+                "0"));
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }

@@ -86,7 +86,7 @@ public final class Soak implements Callable<Integer> {
             Process environment = children.start("environment", List.of("-XX:+UseSerialGC"),
                     "robosim.environment.EnvironmentMain", List.of(env.toString(), "--steps", Long.toString(steps),
                             "--robot-port", "0", "--viewer-port", "0", "--geometry-port", "0",
-                            "--step-timeout-ms", Long.toString(stepTimeoutMs)), line -> {
+                            "--step-timeout-ms", Long.toString(stepTimeoutMs), "--control-port", "0"), line -> {
                         if (line.startsWith("listening ")) {
                             listening.complete(HeadlessRunner.fields(line));
                         } else if (line.startsWith("summary ")) {

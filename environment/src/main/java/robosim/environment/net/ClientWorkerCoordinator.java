@@ -163,6 +163,17 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** SEQUENTIAL: the robot whose request the stepper is reading now, or -1. */
     private volatile int stepperReading = -1;
     private java.util.concurrent.ScheduledExecutorService watchdog;
+    // pause, resume, step N (the control port)
+    private final java.util.concurrent.locks.Condition pauseChanged = lock.newCondition();
+    private boolean paused;
+    private long stepBudget;
+    private boolean holding;
+    private boolean beginPending;
+    private long rateMarkNanos;
+    private long rateMarkSteps;
+    private double recentRate;
+    /** Steps whose responses have gone out (stepsDone counts a step held by a pause too). */
+    private long stepsReleased;
 
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
         this.spec = spec;
@@ -210,6 +221,8 @@ public final class ClientWorkerCoordinator implements Closeable {
      */
     private ServerSocket bind(String what, int port) throws IOException {
         ServerSocketChannel channel = ServerSocketChannel.open();
+        // a later simulation of the same Environment listens on the same port at once
+        channel.setOption(java.net.StandardSocketOptions.SO_REUSEADDR, true);
         ServerSocket s = channel.socket();
         try {
             s.bind(new InetSocketAddress(settings.bind(), port), 1024);
@@ -366,14 +379,13 @@ public final class ClientWorkerCoordinator implements Closeable {
         startWatchdog();
         LOG.info("all {} robot(s) connected: running{}", robotCount,
                 settings.maxSteps() > 0 ? " for " + settings.maxSteps() + " steps" : "");
-        for (int i = 0; i < robotCount; i++) {
-            try {
-                robots[i].begin(0);
-                begun[i] = true;
-            } catch (IOException e) {
-                depart(i, "could not send it the first step: " + e.getMessage());
-                robots[i].drop();
-            }
+        rateMarkNanos = startNanos;
+        if (paused && stepBudget == 0) {
+            beginPending = true;
+            LOG.info("every client is here; paused before step 0 (start or step from the control port)");
+            pauseChanged.signalAll();
+        } else {
+            beginAll();
         }
         if (activeCount == 0) {
             finish("every robot has left", false);
@@ -381,6 +393,26 @@ public final class ClientWorkerCoordinator implements Closeable {
             Thread stepper = new Thread(this::stepSequentially, "stepper");
             stepper.setDaemon(true);
             stepper.start();
+        }
+    }
+
+    /** Under the lock: sends every robot step 0, starting the lock-step. */
+    private void beginAll() {
+        beginPending = false;
+        startNanos = System.nanoTime();
+        stepReleasedNanos = startNanos;
+        rateMarkNanos = startNanos;
+        for (int i = 0; i < robotCount; i++) {
+            if (!active[i]) {
+                continue;
+            }
+            try {
+                robots[i].begin(0);
+                begun[i] = true;
+            } catch (IOException e) {
+                depart(i, "could not send it the first step: " + e.getMessage());
+                robots[i].drop();
+            }
         }
     }
 
@@ -505,6 +537,9 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         stepsDone = k + 1;
         pace(stepsDone);
+        if (!holdWhilePaused()) {
+            return; // ended while paused: the robots have been told
+        }
         boolean last = settings.maxSteps() > 0 && stepsDone >= settings.maxSteps();
         SimulationEnd end = last ? new SimulationEnd(k, "completed " + stepsDone + " steps") : null;
         for (int i = 0; i < robotCount; i++) {
@@ -519,6 +554,15 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
         }
         stepReleasedNanos = System.nanoTime();
+        stepsReleased++;
+        if (paused) {
+            pauseChanged.signalAll(); // "step N" waits for its last step to go out
+        }
+        if (stepReleasedNanos - rateMarkNanos >= 500_000_000L) {
+            recentRate = (stepsDone - rateMarkSteps) * 1e9 / (stepReleasedNanos - rateMarkNanos);
+            rateMarkNanos = stepReleasedNanos;
+            rateMarkSteps = stepsDone;
+        }
         if (!viewers.isEmpty()) {
             PoseUpdate update = core.viewerUpdate();
             for (ViewerClientWorker v : viewers) {
@@ -612,6 +656,144 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
+    // ---- pause, resume, step N, status (the control port) ---------------------------------------
+
+    /**
+     * Under the lock, on the step's thread, after step k is computed and before its responses go out:
+     * waits while paused (the robots wait for their responses). False if the simulation ended meanwhile.
+     */
+    private boolean holdWhilePaused() throws InterruptedException {
+        if (paused && stepBudget > 0) {
+            stepBudget--;
+            if (stepBudget == 0) {
+                pauseChanged.signalAll(); // a "step N" waiter: the last of its steps is going out
+            }
+            return true;
+        }
+        if (!paused) {
+            return true;
+        }
+        holding = true;
+        pauseChanged.signalAll();
+        try {
+            while (paused && stepBudget == 0 && state == State.RUNNING) {
+                pauseChanged.await();
+            }
+        } finally {
+            holding = false;
+            stepReleasedNanos = System.nanoTime(); // robots are not late for the time we held them
+            rateMarkNanos = stepReleasedNanos;
+            rateMarkSteps = stepsDone;
+        }
+        if (state != State.RUNNING) {
+            return false;
+        }
+        if (paused) {
+            stepBudget--;
+            if (stepBudget == 0) {
+                pauseChanged.signalAll();
+            }
+        }
+        return true;
+    }
+
+    /**
+     * Pauses after the step in progress (or before step 0, if the run has not begun); returns once
+     * the Environment holds, or at once when no run is under way.
+     */
+    public void pause(long timeout, TimeUnit unit) throws InterruptedException {
+        long nanos = unit.toNanos(timeout);
+        lock.lock();
+        try {
+            paused = true;
+            stepBudget = 0;
+            while (state == State.RUNNING && !holding && !beginPending && nanos > 0) {
+                nanos = pauseChanged.awaitNanos(nanos);
+            }
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Resumes a paused run (or lets it begin when every client is there). */
+    public void resume() {
+        lock.lock();
+        try {
+            paused = false;
+            stepBudget = 0;
+            if (beginPending && state == State.RUNNING) {
+                beginAll();
+            }
+            pauseChanged.signalAll();
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /**
+     * Runs {@code n} more steps and pauses again; waits until they are done (or the run ends, or the
+     * timeout passes). Returns the steps done so far.
+     */
+    public long step(long n, long timeout, TimeUnit unit) throws InterruptedException {
+        long nanos = unit.toNanos(timeout);
+        lock.lock();
+        try {
+            paused = true;
+            long target = stepsReleased + n;
+            stepBudget += n;
+            if (beginPending && state == State.RUNNING) {
+                beginAll();
+            }
+            pauseChanged.signalAll();
+            while (state != State.ENDED && stepsReleased < target && nanos > 0) {
+                nanos = pauseChanged.awaitNanos(nanos);
+            }
+            return stepsReleased;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** Starts the run paused: nothing moves until {@link #resume} or {@link #step}. Call before {@link #start}. */
+    public void startPaused() {
+        lock.lock();
+        try {
+            paused = true;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** What the control port reports. */
+    public record Status(String state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
+            List<String> left, boolean geometryAttached, String reason) {
+    }
+
+    public Status status() {
+        lock.lock();
+        try {
+            List<String> connected = new ArrayList<>();
+            List<String> left = new ArrayList<>();
+            for (int i = 0; i < robotCount; i++) {
+                if (robots[i] != null && (state == State.WAITING || active[i])) {
+                    connected.add(robotNames.get(i));
+                } else if (robots[i] != null && state != State.WAITING) {
+                    left.add(robotNames.get(i));
+                }
+            }
+            String st = switch (state) {
+                case WAITING -> "WAITING";
+                case ENDED -> "ENDED";
+                case RUNNING -> paused && (holding || beginPending || stepBudget == 0) ? "PAUSED" : "RUNNING";
+            };
+            double rate = "RUNNING".equals(st) ? recentRate : 0;
+            return new Status(st, stepsReleased, rate, robotNames, connected, left,
+                    settings.inProcessGeometry() || geometry != null, endReason);
+        } finally {
+            lock.unlock();
+        }
+    }
+
     // ---- faults: a lost Geometry process, a silent robot --------------------------------------
 
     /**
@@ -682,7 +864,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 return; // a step is running: robots are not late while the Environment works
             }
             try {
-                if (state != State.RUNNING || stepRunning
+                if (state != State.RUNNING || stepRunning || holding || beginPending
                         || now - stepReleasedNanos <= TimeUnit.MILLISECONDS.toNanos(step)) {
                     return;
                 }
@@ -828,6 +1010,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         closeServers();
         geometryChanged.signalAll();
+        pauseChanged.signalAll();
         if (watchdog != null) {
             watchdog.shutdownNow();
         }

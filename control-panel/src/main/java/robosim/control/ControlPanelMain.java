@@ -1,0 +1,101 @@
+package robosim.control;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.Iterator;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+
+/**
+ * The Control Panel: with no request, a window; with one, a command line for scripts:
+ * {@code control-panel.sh HOST PORT status|start|stop|pause|resume|step N|load FILE|shutdown}.
+ * Prints the reply as {@code key=value} lines; exits 0 if the Environment said ok, 1 if it refused,
+ * 2 on bad arguments or when it cannot be reached.
+ */
+@Command(name = "control-panel.sh", mixinStandardHelpOptions = true,
+        description = "Loads, starts, stops, pauses and steps a running Environment through its control port.")
+public final class ControlPanelMain implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "HOST", description = "The Environment's host.")
+    String host;
+
+    @Parameters(index = "1", paramLabel = "PORT", defaultValue = "8100",
+            description = "The Environment's control port (default: ${DEFAULT-VALUE}).")
+    int port;
+
+    @Parameters(index = "2..*", paramLabel = "REQUEST",
+            description = "status, start, stop, pause, resume, step N, load FILE or shutdown; none opens the window.")
+    List<String> request;
+
+    @Option(names = "--token", description = "The control token, if the Environment was started with one "
+            + "(default: the environment variable ROBOSIM_CONTROL_TOKEN).")
+    String token;
+
+    @Option(names = "--timeout-s", defaultValue = "600",
+            description = "How long to wait for a reply (step N waits for its steps; default: ${DEFAULT-VALUE}).")
+    int timeoutS;
+
+    @Override
+    public Integer call() throws Exception {
+        String tok = token != null ? token : System.getenv("ROBOSIM_CONTROL_TOKEN");
+        if (request == null || request.isEmpty()) {
+            if (java.awt.GraphicsEnvironment.isHeadless()) {
+                System.err.println("control-panel: no display for the window; give a request instead (see --help)");
+                return 2;
+            }
+            ControlPanelWindow.open(host, port, tok);
+            windowOpened = true;
+            return 0;
+        }
+        String line = String.join(" ", request);
+        if (request.get(0).equals("load") && request.size() == 2) {
+            // the Environment opens the file: give it an absolute path
+            line = "load " + Path.of(request.get(1)).toAbsolutePath().normalize();
+        }
+        try (ControlClient c = new ControlClient(host, port, tok, timeoutS * 1000)) {
+            JsonNode reply = c.request(line);
+            print(reply);
+            return reply.path("ok").asBoolean() ? 0 : 1;
+        } catch (IOException e) {
+            System.err.println("control-panel: cannot talk to the Environment at " + host + ":" + port + ": "
+                    + e.getMessage());
+            return 2;
+        }
+    }
+
+    static void print(JsonNode reply) {
+        for (Iterator<Map.Entry<String, JsonNode>> it = reply.fields(); it.hasNext();) {
+            Map.Entry<String, JsonNode> f = it.next();
+            JsonNode v = f.getValue();
+            System.out.println(f.getKey() + "=" + (v.isArray() ? join(v) : v.asText()));
+        }
+    }
+
+    private static String join(JsonNode array) {
+        StringBuilder b = new StringBuilder();
+        for (JsonNode n : array) {
+            b.append(b.length() == 0 ? "" : ",").append(n.asText());
+        }
+        return b.toString();
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new ControlPanelMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("control-panel: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        int code = cl.execute(args);
+        if (!windowOpened) {
+            System.exit(code);
+        }
+    }
+
+    /** True once the window is up: the process then lives until it is closed. */
+    private static volatile boolean windowOpened;
+}

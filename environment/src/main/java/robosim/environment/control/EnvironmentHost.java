@@ -1,0 +1,164 @@
+package robosim.environment.control;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.environment.config.EnvironmentFileException;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.WorldSpec;
+import robosim.environment.net.ClientWorkerCoordinator;
+
+/**
+ * Runs simulations one after another on the same ports: the first from the file given at start-up,
+ * later ones when the control port says {@code start} (the same file again) or {@code load FILE} (a
+ * new file: the current simulation ends, its robots are told, and the Environment waits for the new
+ * file's robots). Each simulation is one {@link ClientWorkerCoordinator}.
+ */
+public final class EnvironmentHost {
+    private static final Logger LOG = LoggerFactory.getLogger(EnvironmentHost.class);
+
+    private final ClientWorkerCoordinator.Settings base;
+    private final boolean keepRunning;
+    private Path file;
+    private WorldSpec spec;
+    private ClientWorkerCoordinator current;
+    private ClientWorkerCoordinator.Settings settings;
+    private boolean shutdown;
+    private boolean startPaused;
+
+    /**
+     * @param keepRunning after a simulation ends, wait for {@code start}, {@code load} or
+     *     {@code shutdown} instead of returning from {@link #run}
+     * @param startPaused the first simulation waits for {@code start} once every client is there
+     */
+    public EnvironmentHost(Path file, WorldSpec spec, ClientWorkerCoordinator.Settings settings, boolean keepRunning,
+            boolean startPaused) {
+        this.file = file;
+        this.spec = spec;
+        this.base = settings;
+        this.settings = settings;
+        this.keepRunning = keepRunning;
+        this.startPaused = startPaused;
+    }
+
+    /** Binds the ports and opens the first simulation; a port in use is a BindException naming it. */
+    public synchronized void open() throws IOException {
+        current = newSession(spec, startPaused);
+    }
+
+    private ClientWorkerCoordinator newSession(WorldSpec s, boolean paused) throws IOException {
+        ClientWorkerCoordinator c = new ClientWorkerCoordinator(s, settings);
+        if (paused) {
+            c.startPaused();
+        }
+        c.start();
+        int[] p = c.ports();
+        // later simulations listen on the same ports, even when the first ones were picked by the system
+        settings = new ClientWorkerCoordinator.Settings(base.bind(), p[0], p[1], Math.max(p[2], base.geometryPort()),
+                base.inProcessGeometry(), base.maxSteps(), base.resetEvery(), base.handshakeTimeoutMs(), base.speed(),
+                base.design(), base.stepMessages(), base.stepTimeoutMs(), base.geometryTimeoutMs(),
+                base.onGeometryLoss());
+        return c;
+    }
+
+    /** The ports of the current simulation: robot, viewer, geometry (-1 when in-process). */
+    public synchronized int[] ports() {
+        return current.ports();
+    }
+
+    public synchronized ClientWorkerCoordinator current() {
+        return current;
+    }
+
+    public synchronized Path file() {
+        return file;
+    }
+
+    /**
+     * Waits for each simulation to end and reports it; returns the exit code when the host is done:
+     * at the first end unless it keeps running, else at {@code shutdown}.
+     */
+    public int run(Consumer<ClientWorkerCoordinator.Summary> ended) throws InterruptedException {
+        while (true) {
+            ClientWorkerCoordinator c;
+            synchronized (this) {
+                c = current;
+            }
+            c.awaitEnd();
+            c.awaitViewersDone(5000);
+            ClientWorkerCoordinator.Summary summary = c.summary();
+            ended.accept(summary);
+            synchronized (this) {
+                if (current != c) {
+                    continue; // a new file was loaded: its simulation is already waiting for clients
+                }
+                if (shutdown || !keepRunning) {
+                    return shutdown || summary.completed() ? 0 : 1;
+                }
+                LOG.info("simulation over; waiting for start, load or shutdown on the control port");
+                while (current == c && !shutdown) {
+                    wait();
+                }
+                if (shutdown) {
+                    return 0;
+                }
+            }
+        }
+    }
+
+    /** {@code start}: resumes a paused simulation, or runs the current file again once it has ended. */
+    public synchronized String start() throws IOException {
+        if (current.status().state().equals("ENDED")) {
+            if (shutdown) {
+                return "the Environment is shutting down";
+            }
+            current = newSession(spec, false);
+            notifyAll();
+            return "started a new simulation of " + file;
+        }
+        current.resume();
+        return "running";
+    }
+
+    /** {@code load FILE}: checks the file first; a bad one changes nothing. */
+    public String load(Path newFile) throws IOException, EnvironmentFileException {
+        WorldSpec loaded = new EnvironmentLoader().load(newFile);
+        ClientWorkerCoordinator old;
+        synchronized (this) {
+            old = current;
+        }
+        old.stop("a new environment file was loaded: " + newFile);
+        synchronized (this) {
+            old.close();
+            file = newFile;
+            spec = loaded;
+            current = newSession(loaded, false);
+            notifyAll();
+        }
+        LOG.info("loaded {}: waiting for its {} robot(s)", newFile, loaded.robots().size());
+        return "loaded " + newFile + "; waiting for " + loaded.robots().size() + " robot(s)";
+    }
+
+    /** {@code stop}: ends the current simulation (robots, viewers and Geometry are told). */
+    public String stop() throws InterruptedException {
+        ClientWorkerCoordinator c = current();
+        c.stop("stopped from the control port");
+        c.awaitEnd(10, TimeUnit.SECONDS);
+        return "stopped at step " + c.status().step();
+    }
+
+    /** {@code shutdown}: ends the current simulation and lets {@link #run} return. */
+    public String shutdown() {
+        ClientWorkerCoordinator c;
+        synchronized (this) {
+            shutdown = true;
+            c = current;
+            notifyAll();
+        }
+        c.stop("the Environment was shut down from the control port");
+        return "shutting down";
+    }
+}

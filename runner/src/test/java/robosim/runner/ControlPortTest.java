@@ -1,0 +1,241 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.InputStream;
+import java.io.OutputStream;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import robosim.control.ControlClient;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.control.ControlServer;
+import robosim.environment.control.EnvironmentHost;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.examples.BackAndForth;
+import robosim.hardware.HardwareSimulator;
+import robosim.hardware.RobotType;
+
+/** The control port over real sockets: start, stop, pause, resume, step N, status, load, bad input, token. */
+class ControlPortTest {
+    private static final Path THREE = Path.of("src/test/resources/three-robots.xml");
+    private static final int TIMEOUT_MS = 60_000;
+
+    /** An Environment host with its control port, on ephemeral ports; paused until told. */
+    private static final class Fixture implements AutoCloseable {
+        final EnvironmentHost host;
+        final ControlServer control;
+        final CompletableFuture<Integer> running;
+
+        Fixture(Path file, String token) throws Exception {
+            ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
+                    0, 0, 0, true, 0, 64, 10_000);
+            host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
+            host.open();
+            control = new ControlServer(host, token);
+            control.start(InetAddress.getLoopbackAddress(), 0);
+            running = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return host.run(summary -> { });
+                } catch (InterruptedException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+        }
+
+        ControlClient client(String token) throws IOException {
+            return new ControlClient("127.0.0.1", control.port(), token, TIMEOUT_MS);
+        }
+
+        /** Connects every robot of the current file, each running BackAndForth; their end reasons. */
+        List<CompletableFuture<String>> robots() throws Exception {
+            int port = host.ports()[0];
+            List<CompletableFuture<String>> out = new ArrayList<>();
+            for (var r : new EnvironmentLoader().load(host.file()).robots()) {
+                HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                sim.connect(new Socket(InetAddress.getLoopbackAddress(), port), 64);
+                out.add(CompletableFuture.supplyAsync(() -> {
+                    try {
+                        return sim.run(new BackAndForth());
+                    } catch (Exception e) {
+                        throw new IllegalStateException(e);
+                    }
+                }));
+            }
+            return out;
+        }
+
+        @Override
+        public void close() throws Exception {
+            host.shutdown();
+            running.get(TIMEOUT_MS, TimeUnit.MILLISECONDS);
+            control.close();
+            host.current().close();
+        }
+    }
+
+    private static JsonNode ok(ControlClient c, String request) throws IOException {
+        JsonNode r = c.request(request);
+        assertTrue(r.path("ok").asBoolean(), request + " -> " + r);
+        return r;
+    }
+
+    @Test
+    void stepPauseResumeStopAndStartChangeTheStepCounterAsTheyShould() throws Exception {
+        try (Fixture f = new Fixture(THREE, null); ControlClient c = f.client(null)) {
+            assertEquals("WAITING", ok(c, "status").path("state").asText());
+            List<CompletableFuture<String>> robots = f.robots();
+            // started paused: step N runs exactly N steps and holds again
+            assertEquals("paused at step 10", ok(c, "step 10").path("message").asText());
+            JsonNode s = ok(c, "status");
+            assertEquals("PAUSED", s.path("state").asText());
+            assertEquals(10, s.path("step").asLong());
+            assertEquals(3, s.path("connected").size());
+            assertEquals("paused at step 15", ok(c, "step 5").path("message").asText());
+            assertEquals(15, ok(c, "status").path("step").asLong(), "a paused Environment stays put");
+            ok(c, "resume");
+            String paused = ok(c, "pause").path("message").asText();
+            long at = Long.parseLong(paused.substring("paused at step ".length()));
+            assertTrue(at >= 15, paused);
+            assertEquals(at, ok(c, "status").path("step").asLong());
+            assertEquals("paused at step " + (at + 1), ok(c, "step 1").path("message").asText());
+            // stop ends the simulation and tells the robots
+            ok(c, "stop");
+            assertEquals("ENDED", ok(c, "status").path("state").asText());
+            for (CompletableFuture<String> r : robots) {
+                assertEquals("stopped from the control port", r.get(TIMEOUT_MS, TimeUnit.MILLISECONDS));
+            }
+            // start runs the file again: a new simulation waits for its robots
+            assertTrue(ok(c, "start").path("message").asText().startsWith("started a new simulation"));
+            assertEquals("WAITING", ok(c, "status").path("state").asText());
+            assertEquals(0, ok(c, "status").path("step").asLong());
+            List<CompletableFuture<String>> again = f.robots();
+            ok(c, "pause");
+            long s0 = ok(c, "status").path("step").asLong();
+            assertEquals("paused at step " + (s0 + 3), ok(c, "step 3").path("message").asText());
+            ok(c, "stop");
+            for (CompletableFuture<String> r : again) {
+                r.get(TIMEOUT_MS, TimeUnit.MILLISECONDS);
+            }
+        }
+    }
+
+    @Test
+    void loadingANewFileEndsTheRunningOneAndWaitsForTheNewRobots() throws Exception {
+        Path other = InJvmSimulation.env("test.xml").toAbsolutePath();
+        try (Fixture f = new Fixture(THREE, null); ControlClient c = f.client(null)) {
+            List<CompletableFuture<String>> robots = f.robots();
+            ok(c, "step 5");
+            JsonNode loaded = ok(c, "load " + other);
+            assertTrue(loaded.path("message").asText().startsWith("loaded " + other), loaded.toString());
+            for (CompletableFuture<String> r : robots) {
+                assertEquals("a new environment file was loaded: " + other, r.get(TIMEOUT_MS, TimeUnit.MILLISECONDS));
+            }
+            JsonNode s = ok(c, "status");
+            assertEquals("WAITING", s.path("state").asText());
+            assertEquals(other.toString(), s.path("file").asText());
+            List<String> names = new ArrayList<>();
+            s.path("robots").forEach(n -> names.add(n.asText()));
+            assertEquals(new EnvironmentLoader().load(other).robots().stream().map(r -> r.name()).toList(), names);
+            List<CompletableFuture<String>> newRobots = f.robots();
+            ok(c, "pause");
+            ok(c, "step 4");
+            assertTrue(ok(c, "status").path("step").asLong() >= 4);
+            assertEquals(names.size(), ok(c, "status").path("connected").size());
+            ok(c, "stop");
+            for (CompletableFuture<String> r : newRobots) {
+                r.get(TIMEOUT_MS, TimeUnit.MILLISECONDS);
+            }
+        }
+    }
+
+    @Test
+    void badRequestsGetAnErrorReplyAndTheSimulationRunsOn() throws Exception {
+        try (Fixture f = new Fixture(THREE, null); ControlClient c = f.client(null)) {
+            f.robots();
+            ok(c, "step 2");
+            assertError(c, "jump over the moon", "unknown request");
+            assertError(c, "step", "positive whole number");
+            assertError(c, "step -4", "positive whole number");
+            assertError(c, "step 1e99", "positive whole number");
+            assertError(c, "load /no/such/file.xml", "/no/such/file.xml");
+            assertError(c, "load", "load needs a file");
+            // bytes that are not text, and a line far over the limit: an error, then the connection closes
+            try (Socket raw = new Socket(InetAddress.getLoopbackAddress(), f.control.port())) {
+                raw.setSoTimeout(TIMEOUT_MS);
+                OutputStream out = raw.getOutputStream();
+                out.write(new byte[] {(byte) 0xac, (byte) 0xed, 0, 5, (byte) 0xff, (byte) 0xfe, '\n'});
+                out.flush();
+                java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(raw.getInputStream(),
+                        StandardCharsets.UTF_8));
+                String first = in.readLine();
+                assertTrue(first.contains("unknown request"), first);
+                byte[] flood = new byte[ControlServer.MAX_LINE * 3];
+                java.util.Arrays.fill(flood, (byte) 'x');
+                out.write(flood);
+                out.flush();
+                StringBuilder rest = new StringBuilder();
+                try {
+                    for (String l = in.readLine(); l != null; l = in.readLine()) {
+                        rest.append(l).append('\n');
+                    }
+                } catch (java.net.SocketException reset) {
+                    // closed with our flood unread: also closed
+                }
+                String replies = rest.toString();
+                assertTrue(replies.contains("request longer than " + ControlServer.MAX_LINE + " bytes"), replies);
+            }
+            // the simulation and the control port are fine
+            assertEquals("paused at step 5", ok(c, "step 3").path("message").asText());
+            try (ControlClient again = f.client(null)) {
+                assertEquals(5, ok(again, "status").path("step").asLong());
+            }
+        }
+    }
+
+    @Test
+    void withATokenEveryRequestWaitsForIt() throws Exception {
+        try (Fixture f = new Fixture(THREE, "s3cret")) {
+            try (ControlClient raw = f.client(null)) {
+                assertTrue(raw.request("status").path("error").asText().contains("a token is required first"));
+                assertTrue(raw.request("token guess").path("error").asText().contains("wrong token"));
+                JsonNode still = raw.request("status");
+                assertFalse(still.path("ok").asBoolean(), "no status without the token: " + still);
+                assertTrue(raw.request("stop").path("error").asText().contains("a token is required first"));
+            }
+            try (ControlClient c = f.client("s3cret")) {
+                assertEquals("WAITING", ok(c, "status").path("state").asText());
+            }
+        }
+    }
+
+    private static void assertError(ControlClient c, String request, String part) throws IOException {
+        JsonNode r = c.request(request);
+        assertFalse(r.path("ok").asBoolean(), request + " -> " + r);
+        assertTrue(r.path("error").asText().contains(part), request + " -> " + r);
+    }
+
+    private static String readToEnd(InputStream in) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream();
+        byte[] buf = new byte[4096];
+        try {
+            for (int n = in.read(buf); n >= 0; n = in.read(buf)) {
+                b.write(buf, 0, n);
+            }
+        } catch (java.net.SocketException reset) {
+            // closed with data unread: also closed
+        }
+        return b.toString(StandardCharsets.UTF_8);
+    }
+}

@@ -1,0 +1,7 @@
+#!/usr/bin/env bash
+# The Control Panel for a running Environment:
+#   scripts/control-panel.sh HOST [PORT]                      a window (needs a display)
+#   scripts/control-panel.sh HOST PORT status|start|stop|pause|resume|step N|load FILE|shutdown
+# Default port 8100. --token (or ROBOSIM_CONTROL_TOKEN) when the Environment asks for one; see --help.
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_java robosim.control.ControlPanelMain "$@"
