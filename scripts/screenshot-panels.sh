@@ -31,16 +31,15 @@ for r in rc1 rc2; do
 done
 sleep 4   # a script, not a test: let the processes come up
 java -cp "$cp" robosim.control.ControlPanelMain 127.0.0.1 $((base + 2)) step 20 >/dev/null
-# drive rc1 a little through its link so the remote-control window has replies to show
-exec 3<>/dev/tcp/127.0.0.1/9101 && printf 'forward 500\nleft 45\n' >&3 && sleep 3 && exec 3>&-
+java -cp "$cp" robosim.control.ControlPanelMain 127.0.0.1 $((base + 2)) resume >/dev/null
 DISPLAY=$display java -cp "$cp" robosim.control.ControlPanelMain 127.0.0.1 $((base + 2)) >/dev/null 2>&1 &
 pids+=($!)
 sleep 4
 mkdir -p docs
-DISPLAY=$display java -cp "$cp" robosim.viewer.ScreenCapture docs/control-panel.png 560 330
+DISPLAY=$display java -cp "$cp" robosim.viewer.ScreenCapture docs/control-panel.png
 kill "${pids[-1]}"
 DISPLAY=$display java -cp "$cp" robosim.remote.RemoteControlMain test-envs/RobotInfo.xml >/dev/null 2>&1 &
 pids+=($!)
 sleep 4
-DISPLAY=$display java -cp "$cp" robosim.viewer.ScreenCapture docs/remote-control.png 560 400
+DISPLAY=$display java -cp "$cp" robosim.viewer.ScreenCapture docs/remote-control.png --keys UP,UP,LEFT,TAB,RIGHT
 echo "wrote docs/control-panel.png and docs/remote-control.png"

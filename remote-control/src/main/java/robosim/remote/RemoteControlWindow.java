@@ -56,8 +56,8 @@ public final class RemoteControlWindow {
         log.setEditable(false);
         log.setFocusable(false);
         log.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
-        JLabel help = new JLabel(String.format(Locale.ROOT, "Arrows: forward/back %.0f mm, turn %.0f deg.  Space: stop."
-                + "  Tab or 1-9: choose robot.", stepMm, turnDeg));
+        JLabel help = new JLabel(String.format(Locale.ROOT, "<html>Arrows: forward/back %.0f mm, turn %.0f deg. "
+                + "Space: stop.<br>Tab or 1-9: choose the robot.</html>", stepMm, turnDeg));
         JPanel root = new JPanel(new BorderLayout(6, 6));
         root.setBorder(BorderFactory.createEmptyBorder(8, 8, 8, 8));
         JPanel top = new JPanel(new BorderLayout(4, 4));
