@@ -64,6 +64,15 @@ class EnvironmentMainTest {
     }
 
     @Test
+    void listeningBeyondLoopbackNeedsAControlToken() throws Exception {
+        Result r = run("../test-envs/test.xml", "--bind", "0.0.0.0", "--robot-port", "0", "--viewer-port", "0",
+                "--geometry-port", "0", "--control-port", "0");
+        assertEquals(2, r.code());
+        assertTrue(r.err().strip().startsWith("environment: --bind 0.0.0.0 opens the control port beyond this machine: "
+                + "give a token with --control-token"), r.err());
+    }
+
+    @Test
     void helpExitsZero() {
         PrintStream saved = System.out;
         ByteArrayOutputStream out = new ByteArrayOutputStream();
