@@ -50,6 +50,14 @@ public final class EnvironmentHost {
     }
 
     private ClientWorkerCoordinator newSession(WorldSpec s, boolean paused) throws IOException {
+        if (current != null) {
+            try {
+                current.awaitServersClosed(5000); // its ports are ours again
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IOException("interrupted while the previous simulation closed its ports");
+            }
+        }
         ClientWorkerCoordinator c = new ClientWorkerCoordinator(s, settings);
         if (paused) {
             c.startPaused();

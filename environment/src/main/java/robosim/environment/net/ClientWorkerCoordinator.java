@@ -133,6 +133,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final CountDownLatch endedLatch = new CountDownLatch(1);
     private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
     private final List<ServerSocket> servers = new ArrayList<>();
+    private final List<Thread> acceptors = new CopyOnWriteArrayList<>();
 
     private final RobotClientWorker[] robots;
     private final RobotProperties[] properties;
@@ -250,7 +251,20 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
         }, threadName);
         t.setDaemon(true);
+        acceptors.add(t);
         t.start();
+    }
+
+    /**
+     * After the end: waits until the listening sockets are really released (a blocked accept defers
+     * the close until its thread leaves), so a next simulation can bind the same ports at once.
+     */
+    public void awaitServersClosed(long timeoutMs) throws InterruptedException {
+        closeServers();
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+        for (Thread t : acceptors) {
+            t.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+        }
     }
 
     /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */
