@@ -18,3 +18,11 @@ robosim_java() {
   # shellcheck disable=SC2086
   exec java ${ROBOSIM_JAVA_OPTS:-} -cp "$ROBOSIM_LIB/*:$jar" "$main" "$@"
 }
+
+# For the screenshot scripts: makes sure Xvfb is there (installs Debian's xvfb when we are root).
+robosim_need_xvfb() {
+  if ! command -v Xvfb >/dev/null; then
+    if [ "$(id -u)" = 0 ]; then apt-get update -qq && apt-get install -y -qq xvfb >/dev/null; else
+      echo "$1: needs Xvfb (apt-get install xvfb)" >&2; exit 2; fi
+  fi
+}

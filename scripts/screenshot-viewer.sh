@@ -5,11 +5,8 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 out=${1:-docs/viewer.png}
-if ! command -v Xvfb >/dev/null; then
-  if [ "$(id -u)" = 0 ]; then apt-get update -qq && apt-get install -y -qq xvfb >/dev/null; else
-    echo "screenshot-viewer: needs Xvfb (apt-get install xvfb)" >&2; exit 2; fi
-fi
 source scripts/common.sh
+robosim_need_xvfb screenshot-viewer
 robosim_build_if_missing
 jar=$(ls runner/target/runner-*.jar | head -n 1)
 cp="runner/target/lib/*:$jar"

@@ -1,6 +1,5 @@
 package robosim.runner;
 
-import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -185,25 +184,10 @@ class FaultsTest {
 
     @Test
     void whenGeometryDiesTheRunGoesOnInProcessWithTheSamePosesAndANewGeometryTakesOver() throws Exception {
-        InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .run(400, false, Chatter::new);
-        CountDownLatch atStep50 = new CountDownLatch(1);
-        InJvmSimulation[] faulty = new InJvmSimulation[1];
-        faulty[0] = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .settings(s -> new ClientWorkerCoordinator.Settings(s.bind(), 0, 0, 0, false, s.maxSteps(),
-                        s.resetEvery(), s.handshakeTimeoutMs(), 200, s.design(), true, s.stepTimeoutMs(),
-                        s.geometryTimeoutMs(), ClientWorkerCoordinator.GeometryLoss.IN_PROCESS))
-                .onUpdate((u, port) -> {
-                    if (u.step() == 50) {
-                        atStep50.countDown();
-                    }
-                })
-                .sideline((env, ports) -> {
-                    assertTrue(atStep50.await(LONG, TimeUnit.SECONDS));
-                    faulty[0].geometryKilled = true;
-                    faulty[0].geometrySocket.close();
-                    assertTrue(env.awaitGeometry(1, 0, LONG, TimeUnit.SECONDS), "the loss was noticed");
-                    // a new Geometry process attaches while the run goes on in-process (paced: 200x real time)
+        // paced at 200x real time, so the run is still going when the new Geometry process attaches
+        geometryKilledAtStep50(400, s -> new ClientWorkerCoordinator.Settings(s.bind(), 0, 0, 0, false, s.maxSteps(),
+                s.resetEvery(), s.handshakeTimeoutMs(), 200, s.design(), true, s.stepTimeoutMs(),
+                s.geometryTimeoutMs(), ClientWorkerCoordinator.GeometryLoss.IN_PROCESS), (env, ports) -> {
                     CompletableFuture<String> second = CompletableFuture.supplyAsync(() -> {
                         try {
                             return new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run();
@@ -214,38 +198,43 @@ class FaultsTest {
                     assertTrue(env.awaitGeometry(1, 1, LONG, TimeUnit.SECONDS), "the new Geometry attached");
                     second.get(LONG, TimeUnit.SECONDS);
                 });
-        InJvmSimulation sim = faulty[0].run(400, false, Chatter::new);
-        assertTrue(sim.summary.completed(), sim.summary.reason());
-        assertEquals(1, sim.summary.geometryLosses());
-        assertEquals(1, sim.summary.geometryAttaches());
-        assertSamePoses(reference, sim);
     }
 
     @Test
     void withTheWaitSettingTheStepWaitsForANewGeometryProcess() throws Exception {
+        geometryKilledAtStep50(300, s -> s.withGeometryLoss(ClientWorkerCoordinator.GeometryLoss.WAIT),
+                (env, ports) -> new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run());
+    }
+
+    /**
+     * Runs the paper benchmark with Geometry as a client, kills that client after step 50, waits until
+     * the Environment has noticed, then does {@code afterLoss}; the run must complete with one loss,
+     * one new Geometry attached, and the poses of a run without the fault.
+     */
+    private static void geometryKilledAtStep50(long steps,
+            java.util.function.UnaryOperator<ClientWorkerCoordinator.Settings> settings,
+            InJvmSimulation.Sideline afterLoss) throws Exception {
         InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .run(300, false, Chatter::new);
+                .run(steps, false, Chatter::new);
         CountDownLatch atStep50 = new CountDownLatch(1);
-        InJvmSimulation[] faulty = new InJvmSimulation[1];
-        faulty[0] = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .settings(s -> s.withGeometryLoss(ClientWorkerCoordinator.GeometryLoss.WAIT))
+        InJvmSimulation faulty = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).settings(settings)
                 .onUpdate((u, port) -> {
                     if (u.step() == 50) {
                         atStep50.countDown();
                     }
-                })
-                .sideline((env, ports) -> {
-                    assertTrue(atStep50.await(LONG, TimeUnit.SECONDS));
-                    faulty[0].geometryKilled = true;
-                    faulty[0].geometrySocket.close();
-                    assertTrue(env.awaitGeometry(1, 0, LONG, TimeUnit.SECONDS), "the loss was noticed");
-                    new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run();
                 });
-        InJvmSimulation sim = faulty[0].run(300, false, Chatter::new);
+        faulty.sideline((env, ports) -> {
+            assertTrue(atStep50.await(LONG, TimeUnit.SECONDS));
+            faulty.geometryKilled = true;
+            faulty.geometrySocket.close();
+            assertTrue(env.awaitGeometry(1, 0, LONG, TimeUnit.SECONDS), "the loss was noticed");
+            afterLoss.run(env, ports);
+        });
+        InJvmSimulation sim = faulty.run(steps, false, Chatter::new);
         assertTrue(sim.summary.completed(), sim.summary.reason());
         assertEquals(1, sim.summary.geometryLosses());
         assertEquals(1, sim.summary.geometryAttaches());
-        assertSamePoses(reference, sim);
+        InJvmSimulation.assertSamePoses(reference, sim);
     }
 
     @Test
@@ -271,7 +260,7 @@ class FaultsTest {
                 })
                 .run(300, true, Chatter::new);
         assertTrue(sim.summary.completed(), sim.summary.reason());
-        assertSamePoses(reference, sim);
+        InJvmSimulation.assertSamePoses(reference, sim);
     }
 
     // ---- bad input on every port ---------------------------------------------------------------
@@ -399,15 +388,4 @@ class FaultsTest {
         return got.toByteArray();
     }
 
-    private static void assertSamePoses(InJvmSimulation expected, InJvmSimulation actual) {
-        assertEquals(expected.updates.size(), actual.updates.size(), "steps seen");
-        for (int k = 0; k < expected.updates.size(); k++) {
-            PoseUpdate a = expected.updates.get(k);
-            PoseUpdate b = actual.updates.get(k);
-            for (int i = 0; i < a.count(); i++) {
-                assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
-                        new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)}, "step " + k + " robot " + i);
-            }
-        }
-    }
 }

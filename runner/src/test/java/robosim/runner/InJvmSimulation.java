@@ -235,6 +235,19 @@ final class InJvmSimulation {
         return t;
     }
 
+    /** Every robot's pose at every step of {@code actual} equals {@code expected}'s, bit for bit. */
+    static void assertSamePoses(InJvmSimulation expected, InJvmSimulation actual) {
+        org.junit.jupiter.api.Assertions.assertEquals(expected.updates.size(), actual.updates.size(), "steps seen");
+        for (int k = 0; k < expected.updates.size(); k++) {
+            PoseUpdate a = expected.updates.get(k);
+            PoseUpdate b = actual.updates.get(k);
+            for (int i = 0; i < a.count(); i++) {
+                org.junit.jupiter.api.Assertions.assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
+                        new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)}, "step " + k + " robot " + i);
+            }
+        }
+    }
+
     static Path env(String name) {
         return Path.of("..", "test-envs", name);
     }

@@ -62,7 +62,7 @@ class LockStepIntegrationTest {
                 .design(design).exchange(exchange).stepMessages(stepMessages)
                 .run(VARIANT_STEPS, false, Chatter::new);
         assertTrue(variant.summary.completed(), variant.summary.reason());
-        assertSamePoses(reference(), variant);
+        InJvmSimulation.assertSamePoses(reference(), variant);
         for (Object o : variant.controls) {
             Chatter c = (Chatter) o;
             assertTrue(c.finished.await(30, java.util.concurrent.TimeUnit.SECONDS));
@@ -82,8 +82,8 @@ class LockStepIntegrationTest {
         InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
                 .design(ClientWorkerCoordinator.Design.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)
                 .run(600, false, Wander::new);
-        assertSamePoses(a, b);
-        assertSamePoses(a, c);
+        InJvmSimulation.assertSamePoses(a, b);
+        InJvmSimulation.assertSamePoses(a, c);
     }
 
     private static final int VARIANT_STEPS = 1000;
@@ -97,17 +97,6 @@ class LockStepIntegrationTest {
         return reference;
     }
 
-    private static void assertSamePoses(InJvmSimulation expected, InJvmSimulation actual) {
-        assertEquals(expected.updates.size(), actual.updates.size(), "steps seen");
-        for (int k = 0; k < expected.updates.size(); k++) {
-            PoseUpdate a = expected.updates.get(k);
-            PoseUpdate b = actual.updates.get(k);
-            for (int i = 0; i < a.count(); i++) {
-                assertArrayEquals(new double[] {a.xMm(i), a.yMm(i), a.headingDeg(i)},
-                        new double[] {b.xMm(i), b.yMm(i), b.headingDeg(i)}, "step " + k + " robot " + i);
-            }
-        }
-    }
 
     private static void check(InJvmSimulation sim) throws Exception {
         assertEquals(STEPS, sim.summary.steps());
