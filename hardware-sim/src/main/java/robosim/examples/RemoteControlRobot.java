@@ -128,7 +128,11 @@ public final class RemoteControlRobot implements RobotControl {
                 reply(ctx.channel(), "error not a command: \"" + abbreviate(line.strip())
                         + "\" (forward MM, back MM, left DEG, right DEG, stop)");
             } else if (command.equals("stop")) {
-                queue.clear();
+                java.util.List<Pending> dropped = new java.util.ArrayList<>();
+                queue.drainTo(dropped);
+                for (Pending p : dropped) {
+                    reply(p.from(), "error cancelled by stop: " + p.command());
+                }
                 queue.offer(new Pending(command, ctx.channel()));
             } else if (!queue.offer(new Pending(command, ctx.channel()))) {
                 reply(ctx.channel(), "error busy: " + QUEUE + " commands are waiting; send stop to clear them");

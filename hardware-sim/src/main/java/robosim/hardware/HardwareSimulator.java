@@ -152,12 +152,32 @@ public final class HardwareSimulator {
                 }
             }
             while (!running.isEmpty()) {
-                for (HardwareSimulator sim : running) {
-                    sim.send();
+                for (int i = 0; i < running.size(); i++) {
+                    HardwareSimulator sim = running.get(i);
+                    try {
+                        sim.send();
+                    } catch (IOException e) {
+                        // this robot's connection failed (the Environment dropped it): only it stops
+                        LOG.warn("{}: {}; the other robots of this process go on", sim.name, e.getMessage());
+                        sim.endReason = "connection lost: " + e.getMessage();
+                        sim.finish();
+                        running.set(i, null);
+                    }
                 }
                 for (int i = 0; i < running.size(); i++) {
                     HardwareSimulator sim = running.get(i);
-                    if (!sim.receive()) {
+                    if (sim == null) {
+                        continue;
+                    }
+                    boolean more;
+                    try {
+                        more = sim.receive();
+                    } catch (IOException e) {
+                        LOG.warn("{}: {}; the other robots of this process go on", sim.name, e.getMessage());
+                        sim.endReason = "connection lost: " + e.getMessage();
+                        more = false;
+                    }
+                    if (!more) {
                         sim.finish();
                         running.set(i, null);
                     }

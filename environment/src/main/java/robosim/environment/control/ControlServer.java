@@ -55,7 +55,10 @@ public final class ControlServer implements Closeable {
     private final String token;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
             (java.util.concurrent.ThreadFactory) r -> named(r, "control-io"));
+    /** Requests that wait (step N, pause, start, load), one at a time, in arrival order. */
     private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> named(r, "control"));
+    /** Requests that answer at once (status, resume, stop, shutdown), so a long step never holds them up. */
+    private final ExecutorService quick = Executors.newSingleThreadExecutor(r -> named(r, "control-quick"));
     private Channel server;
 
     /** @param token required before any other request, or null for none (loopback only) */
@@ -104,6 +107,7 @@ public final class ControlServer implements Closeable {
         }
         group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
         worker.shutdownNow();
+        quick.shutdownNow();
     }
 
     /** One per connection: holds whether it has given the token. */
@@ -116,7 +120,18 @@ public final class ControlServer implements Closeable {
             if (request.isEmpty()) {
                 return;
             }
-            worker.execute(() -> reply(ctx, handle(request)));
+            String verb = request.split("\\s+", 2)[0].toLowerCase(java.util.Locale.ROOT);
+            if (!authorised && !verb.equals("token")) {
+                reply(ctx, error("a token is required first: token SECRET")); // on the I/O thread: no queueing
+                return;
+            }
+            // one request at a time per connection: read no more until this one is answered
+            ctx.channel().config().setAutoRead(false);
+            boolean waits = verb.equals("step") || verb.equals("pause") || verb.equals("start") || verb.equals("load");
+            (waits ? worker : quick).execute(() -> {
+                reply(ctx, handle(request));
+                ctx.channel().config().setAutoRead(true);
+            });
         }
 
         private ObjectNode handle(String request) {

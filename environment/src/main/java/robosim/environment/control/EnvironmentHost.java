@@ -28,6 +28,8 @@ public final class EnvironmentHost {
     private ClientWorkerCoordinator.Settings settings;
     private boolean shutdown;
     private boolean startPaused;
+    /** True while {@code load} replaces the simulation: {@link #run} must not take its end for the last. */
+    private boolean replacing;
 
     /**
      * @param keepRunning after a simulation ends, wait for {@code start}, {@code load} or
@@ -100,6 +102,9 @@ public final class EnvironmentHost {
             ClientWorkerCoordinator.Summary summary = c.summary();
             ended.accept(summary);
             synchronized (this) {
+                while (replacing) {
+                    wait();
+                }
                 if (current != c) {
                     continue; // a new file was loaded: its simulation is already waiting for clients
                 }
@@ -136,15 +141,25 @@ public final class EnvironmentHost {
         WorldSpec loaded = new EnvironmentLoader().load(newFile);
         ClientWorkerCoordinator old;
         synchronized (this) {
+            if (shutdown) {
+                return "the Environment is shutting down";
+            }
             old = current;
+            replacing = true;
         }
-        old.stop("a new environment file was loaded: " + newFile);
-        synchronized (this) {
-            old.close();
-            file = newFile;
-            spec = loaded;
-            current = newSession(loaded, false);
-            notifyAll();
+        try {
+            old.stop("a new environment file was loaded: " + newFile);
+            synchronized (this) {
+                old.close();
+                file = newFile;
+                spec = loaded;
+                current = newSession(loaded, false);
+            }
+        } finally {
+            synchronized (this) {
+                replacing = false;
+                notifyAll();
+            }
         }
         LOG.info("loaded {}: waiting for its {} robot(s)", newFile, loaded.robots().size());
         return "loaded " + newFile + "; waiting for " + loaded.robots().size() + " robot(s)";

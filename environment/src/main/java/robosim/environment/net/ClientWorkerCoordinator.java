@@ -339,6 +339,13 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (state == State.ENDED) {
                 return "the simulation is over";
             }
+            if (geometry != null && state == State.RUNNING) {
+                // no step holds the lock now, so none is talking to it: the newcomer takes over (the old one
+                // may have died between steps, which nothing notices until the next step)
+                LOG.warn("a new Geometry process attaches while one is attached: it replaces the old one");
+                geometry.drop();
+                geometry = null;
+            }
             if (geometry != null) {
                 return "a Geometry process is already attached";
             }
@@ -518,7 +525,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (state != State.RUNNING || !active[index]) {
                 return;
             }
-            if (stepsDone != k || requests[index] != null) {
+            if (stepsDone != k || stepsReleased != k || requests[index] != null) {
                 throw new ProtocolException("sent a request for step " + k + " before its response to step "
                         + (stepsDone - 1));
             }
@@ -567,14 +574,14 @@ public final class ClientWorkerCoordinator implements Closeable {
                 robots[i].drop();
             }
         }
-        stepReleasedNanos = System.nanoTime();
+        long released = System.nanoTime();
         stepsReleased++;
         if (paused) {
             pauseChanged.signalAll(); // "step N" waits for its last step to go out
         }
-        if (stepReleasedNanos - rateMarkNanos >= 500_000_000L) {
-            recentRate = (stepsDone - rateMarkSteps) * 1e9 / (stepReleasedNanos - rateMarkNanos);
-            rateMarkNanos = stepReleasedNanos;
+        if (released - rateMarkNanos >= 500_000_000L) {
+            recentRate = (stepsDone - rateMarkSteps) * 1e9 / (released - rateMarkNanos);
+            rateMarkNanos = released;
             rateMarkSteps = stepsDone;
         }
         if (!viewers.isEmpty()) {
@@ -583,6 +590,8 @@ public final class ClientWorkerCoordinator implements Closeable {
                 v.offer(update);
             }
         }
+        // robots are timed from here: a recording viewer that held the step up is not their delay
+        stepReleasedNanos = System.nanoTime();
         if (last) {
             robotsTold = true;
             finish(end.reason(), true);
@@ -759,7 +768,7 @@ public final class ClientWorkerCoordinator implements Closeable {
                 beginAll();
             }
             pauseChanged.signalAll();
-            while (state != State.ENDED && stepsReleased < target && nanos > 0) {
+            while (state != State.ENDED && paused && stepsReleased < target && nanos > 0) {
                 nanos = pauseChanged.awaitNanos(nanos);
             }
             return stepsReleased;
@@ -855,30 +864,38 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         long shortest = Math.min(step <= 0 ? Long.MAX_VALUE : step, geo <= 0 ? Long.MAX_VALUE : geo);
         long period = Math.max(5, Math.min(250, shortest / 4));
-        watchdog = java.util.concurrent.Executors.newSingleThreadScheduledExecutor(r -> {
+        // two threads: the robot check may end up running a step (and wait on Geometry), while the
+        // Geometry check must still run
+        watchdog = java.util.concurrent.Executors.newScheduledThreadPool(2, r -> {
             Thread t = new Thread(r, "watchdog");
             t.setDaemon(true);
             return t;
         });
-        watchdog.scheduleWithFixedDelay(this::enforceTimeouts, period, period, TimeUnit.MILLISECONDS);
+        watchdog.scheduleWithFixedDelay(this::enforceGeometryTimeout, period, period, TimeUnit.MILLISECONDS);
+        watchdog.scheduleWithFixedDelay(this::enforceStepTimeout, period, period, TimeUnit.MILLISECONDS);
     }
 
-    /** On the watchdog thread: drops a Geometry process or robots that have taken too long. */
-    private void enforceTimeouts() {
+    /** On a watchdog thread, without the lock: drops a Geometry process that has taken too long over a step. */
+    private void enforceGeometryTimeout() {
+        GeometryClientWorker g = geometry;
+        long geo = settings.geometryTimeoutMs();
+        if (g != null && geo > 0 && g.busyFor(System.nanoTime()) > TimeUnit.MILLISECONDS.toNanos(geo)) {
+            LOG.warn("Geometry process has not answered step {} within {} ms; dropping it", stepsDone, geo);
+            g.drop(); // the step's read fails and the loss policy takes over
+        }
+    }
+
+    /** On a watchdog thread: drops robots that have sent nothing for too long after their step went out. */
+    private void enforceStepTimeout() {
         try {
-            long now = System.nanoTime();
-            GeometryClientWorker g = geometry;
-            long geo = settings.geometryTimeoutMs();
-            if (g != null && geo > 0 && g.busyFor(now) > TimeUnit.MILLISECONDS.toNanos(geo)) {
-                LOG.warn("Geometry process has not answered step {} within {} ms; dropping it", stepsDone, geo);
-                g.drop(); // the step's read fails and the loss policy takes over
-            }
             long step = settings.stepTimeoutMs();
             if (step <= 0 || !lock.tryLock()) {
                 return; // a step is running: robots are not late while the Environment works
             }
             try {
-                if (state != State.RUNNING || stepRunning || holding || beginPending
+                long now = System.nanoTime();
+                // threads waiting for the lock may be robots' requests that arrived in time
+                if (state != State.RUNNING || stepRunning || holding || beginPending || lock.hasQueuedThreads()
                         || now - stepReleasedNanos <= TimeUnit.MILLISECONDS.toNanos(step)) {
                     return;
                 }
@@ -973,6 +990,11 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
             for (ViewerClientWorker v : viewers) {
                 v.drop();
+            }
+            for (RobotClientWorker r : robots) {
+                if (r != null) {
+                    r.drop(); // a write to a robot that stopped reading holds the step too
+                }
             }
             lock.lock();
         }

@@ -145,9 +145,10 @@ final class RobotClientWorker extends ClientWorker {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (IOException | RuntimeException e) {
-            String why = "could not send its response: " + e.getMessage();
+            // closing the connection makes this robot's reading thread fail; its exit reports the departure,
+            // so this thread never runs a step (it may be interrupted by stopWriter)
+            coordinator.log().info("{}: could not send its response: {}", name(), e.getMessage());
             drop();
-            coordinator.leave(this, index, why);
         }
     }
 
