@@ -62,6 +62,25 @@ final class ControlLink {
         }
     }
 
+    /**
+     * Simulator thread: waits up to {@code nanos} for the control code to block or finish; true if it
+     * has (then {@link #awaitControl} returns at once).
+     */
+    boolean awaitControlFor(long nanos) throws InterruptedException {
+        lock.lock();
+        try {
+            while (controlRunning && !shutdown) {
+                if (nanos <= 0) {
+                    return false;
+                }
+                nanos = changed.awaitNanos(nanos);
+            }
+            return true;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** Simulator thread: the call is done; the control thread runs again. */
     void complete(Command c) {
         lock.lock();

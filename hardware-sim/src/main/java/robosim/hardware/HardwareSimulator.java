@@ -152,18 +152,7 @@ public final class HardwareSimulator {
                 }
             }
             while (!running.isEmpty()) {
-                for (int i = 0; i < running.size(); i++) {
-                    HardwareSimulator sim = running.get(i);
-                    try {
-                        sim.send();
-                    } catch (IOException e) {
-                        // this robot's connection failed (the Environment dropped it): only it stops
-                        LOG.warn("{}: {}; the other robots of this process go on", sim.name, e.getMessage());
-                        sim.endReason = "connection lost: " + e.getMessage();
-                        sim.finish();
-                        running.set(i, null);
-                    }
-                }
+                sendShared(running);
                 for (int i = 0; i < running.size(); i++) {
                     HardwareSimulator sim = running.get(i);
                     if (sim == null) {
@@ -192,6 +181,67 @@ public final class HardwareSimulator {
             for (HardwareSimulator sim : sims) {
                 sim.awaitControlCode(java.util.concurrent.TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
             }
+        }
+    }
+
+    /** How long the shared exchange waits for one control code before looking whether the step went on. */
+    private static final long SHARED_LOOK_NANOS = java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(50);
+
+    /**
+     * The shared exchange's send phase: sends each robot's request as soon as its control code has
+     * blocked, those that are ready first. A control code that does not yield holds up only its own
+     * robot: if, while waiting for it, a response arrives for a robot already sent, the Environment has
+     * gone on without it (its step timeout dropped it), and it is finished here too.
+     */
+    private static void sendShared(List<HardwareSimulator> running) throws InterruptedException {
+        List<HardwareSimulator> sent = new ArrayList<>(running.size());
+        List<Integer> late = new ArrayList<>();
+        for (int i = 0; i < running.size(); i++) {
+            HardwareSimulator sim = running.get(i);
+            if (sim.link.awaitControlFor(0)) {
+                if (sendOrFinish(sim)) {
+                    sent.add(sim);
+                } else {
+                    running.set(i, null);
+                }
+            } else {
+                late.add(i);
+            }
+        }
+        for (int i : late) {
+            HardwareSimulator sim = running.get(i);
+            while (!sim.link.awaitControlFor(SHARED_LOOK_NANOS)) {
+                if (sent.stream().anyMatch(s -> s.connection.hasInput())) {
+                    LOG.warn("{}: its control code has not yielded and the Environment went on without it; "
+                            + "the other robots of this process go on", sim.name);
+                    sim.endReason = "its control code did not yield in time";
+                    sim.finish();
+                    running.set(i, null);
+                    sim = null;
+                    break;
+                }
+            }
+            if (sim != null) {
+                if (sendOrFinish(sim)) {
+                    sent.add(sim);
+                } else {
+                    running.set(i, null);
+                }
+            }
+        }
+    }
+
+    /** Sends one robot's request; on a failed connection finishes that robot alone and returns false. */
+    private static boolean sendOrFinish(HardwareSimulator sim) throws InterruptedException {
+        try {
+            sim.send();
+            return true;
+        } catch (IOException e) {
+            // this robot's connection failed (the Environment dropped it): only it stops
+            LOG.warn("{}: {}; the other robots of this process go on", sim.name, e.getMessage());
+            sim.endReason = "connection lost: " + e.getMessage();
+            sim.finish();
+            return false;
         }
     }
 

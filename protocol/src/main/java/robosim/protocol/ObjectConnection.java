@@ -137,6 +137,18 @@ public final class ObjectConnection implements Closeable {
         return type.cast(o);
     }
 
+    /**
+     * True if the peer has sent something not read yet (or the stream has failed, which the next read
+     * will report); never blocks.
+     */
+    public boolean hasInput() {
+        try {
+            return in.available() > 0 || budget.available() > 0;
+        } catch (IOException e) {
+            return true;
+        }
+    }
+
     /** Sets the read timeout in milliseconds (0 = none). */
     public void setReadTimeoutMs(int ms) throws IOException {
         socket.setSoTimeout(ms);

@@ -166,6 +166,31 @@ class FaultsTest {
         }
     }
 
+    /**
+     * Robots sharing one exchange thread (the default for robots in one process): one control code that
+     * stops yielding (stuck in a computation of its own) costs only its own robot; the others of the
+     * same process keep stepping.
+     */
+    @Test
+    void aStuckControlCodeInASharedProcessCostsOnlyItsOwnRobot() throws Exception {
+        InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .exchange(InJvmSimulation.Exchange.SHARED)
+                .settings(s -> s.withStepTimeoutMs(300))
+                .run(200, true, () -> robot -> {
+                    if (robot.name().equals("robot3")) {
+                        for (int i = 0; i < 20; i++) {
+                            robot.move(250);
+                        }
+                        new CountDownLatch(1).await(); // never yields again (until the end interrupts it)
+                    }
+                    new BackAndForth().run(robot);
+                });
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        assertEquals(200, sim.summary.steps());
+        assertEquals(1, sim.summary.robotsLeft(), "only the stuck robot was dropped");
+        assertEquals(List.of("robot3"), sim.updates.get(199).departed());
+    }
+
     /** Reads until the peer closes; true if it did within the timeout (an object or step may come first). */
     private static boolean closedByPeer(ObjectConnection c) {
         try {
