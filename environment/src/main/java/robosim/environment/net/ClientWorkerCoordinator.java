@@ -143,6 +143,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private boolean robotsTold;
     private int registered;
     private volatile GeometryClientWorker geometry;
+    /** A Geometry process being sent the world mid-run (under the lock), so stop() can unblock it. */
+    private volatile GeometryClientWorker attaching;
     private State state = State.WAITING;
     private SimulationCore core;
     private int activeCount;
@@ -351,10 +353,13 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
             if (state == State.RUNNING) {
                 // the old one was lost: this one takes over from the next step (or the step waiting for it)
+                attaching = worker;
                 try {
                     worker.sendWorld(core.map().geometryWorld());
                 } catch (IOException e) {
                     return "could not send it the world: " + e.getMessage();
+                } finally {
+                    attaching = null;
                 }
                 geometry = worker;
                 geometryAttaches++;
@@ -987,6 +992,10 @@ public final class ClientWorkerCoordinator implements Closeable {
             GeometryClientWorker g = geometry;
             if (g != null) {
                 g.drop();
+            }
+            GeometryClientWorker a = attaching;
+            if (a != null) {
+                a.drop();
             }
             for (ViewerClientWorker v : viewers) {
                 v.drop();
