@@ -164,8 +164,12 @@ public final class EnvironmentMain implements Callable<Integer> {
         System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
                 + " control=" + (control == null ? -1 : control.port()));
         System.out.flush();
+        announceStart(host.current());
         try {
             return host.run(s -> {
+                for (ClientWorkerCoordinator.Departure d : s.departures()) {
+                    System.out.println("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
+                }
                 System.out.println(summaryLine(s));
                 System.out.flush();
             });
@@ -174,6 +178,25 @@ public final class EnvironmentMain implements Callable<Integer> {
                 control.close();
             }
         }
+    }
+
+    /**
+     * Prints {@code running robots=N} when every client of the first simulation is there, so a runner
+     * knows that a client process which exits from then on has taken part (thread "start-announcer").
+     */
+    private static void announceStart(ClientWorkerCoordinator first) {
+        Thread t = new Thread(() -> {
+            try {
+                if (first.awaitStart(Long.MAX_VALUE, java.util.concurrent.TimeUnit.DAYS)) {
+                    System.out.println("running robots=" + first.summary().robots());
+                    System.out.flush();
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "start-announcer");
+        t.setDaemon(true);
+        t.start();
     }
 
     private static void closeQuietly(EnvironmentHost host, ControlServer control) {

@@ -1,5 +1,6 @@
 package robosim.geometry;
 
+import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
@@ -37,7 +38,13 @@ public final class GeometryMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        Socket socket = Connector.connect(host, port, connectTimeoutS * 1000L);
+        Socket socket;
+        try {
+            socket = Connector.connect(host, port, connectTimeoutS * 1000L, System.err::println);
+        } catch (IOException e) {
+            System.err.println("geometry: cannot connect to " + host + ":" + port + ": " + e.getMessage());
+            return e instanceof java.net.UnknownHostException ? 2 : 1;
+        }
         if (socket == null) {
             System.err.println("geometry: cannot connect to " + host + ":" + port + " within " + connectTimeoutS
                     + " s (is the Environment running?)");

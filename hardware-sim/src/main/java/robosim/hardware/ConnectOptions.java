@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import java.util.concurrent.atomic.AtomicBoolean;
 import picocli.CommandLine.Option;
 import robosim.protocol.ObjectConnection;
 
@@ -13,7 +14,16 @@ final class ConnectOptions {
             description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
     int resetEvery;
 
+    private final AtomicBoolean toldWaiting = new AtomicBoolean();
+
     long connectTimeoutMs() {
         return connectTimeoutS * 1000L;
+    }
+
+    /** Prints the "connecting to HOST:PORT ..." line once per process, however many robots wait. */
+    void waiting(String line) {
+        if (toldWaiting.compareAndSet(false, true)) {
+            System.err.println(line);
+        }
     }
 }

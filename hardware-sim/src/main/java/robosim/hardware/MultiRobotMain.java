@@ -77,8 +77,7 @@ public final class MultiRobotMain implements Callable<Integer> {
             Thread t = new Thread(() -> {
                 try {
                     RobotControl control = RobotLauncher.control(p[2]);
-                    RobotLauncher.run(p[0], RobotType.byName(p[1]), control, host, port, connect.connectTimeoutMs(),
-                            connect.resetEvery, each);
+                    RobotLauncher.run(p[0], RobotType.byName(p[1]), control, host, port, connect, each);
                 } catch (Exception e) {
                     failures.incrementAndGet();
                     LOG.error("robot {}: {}", p[0], e.getMessage());
@@ -100,8 +99,7 @@ public final class MultiRobotMain implements Callable<Integer> {
         try {
             for (String[] p : parsed) {
                 controls.add(RobotLauncher.control(p[2]));
-                sims.add(RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect.connectTimeoutMs(),
-                        connect.resetEvery));
+                sims.add(RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect));
             }
             Thread.currentThread().setName("exchange");
             HardwareSimulator.runShared(sims, controls);

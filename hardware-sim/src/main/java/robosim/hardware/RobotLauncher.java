@@ -2,6 +2,7 @@ package robosim.hardware;
 
 import java.io.IOException;
 import java.net.Socket;
+import java.net.UnknownHostException;
 import robosim.api.RobotControl;
 import robosim.protocol.Connector;
 
@@ -26,21 +27,32 @@ final class RobotLauncher {
     }
 
     /** Connects and runs; returns the Environment's reason for the end. */
-    static String run(String name, RobotType type, RobotControl control, String host, int port, long timeoutMs,
-            int resetEvery, HardwareSimulator.Exchange exchange) throws IOException, InterruptedException {
-        return connect(name, type, host, port, timeoutMs, resetEvery).run(control, exchange);
+    static String run(String name, RobotType type, RobotControl control, String host, int port, ConnectOptions options,
+            HardwareSimulator.Exchange exchange) throws IOException, InterruptedException {
+        return connect(name, type, host, port, options).run(control, exchange);
     }
 
-    /** Connects and says hello; the simulator returned is ready to run. */
-    static HardwareSimulator connect(String name, RobotType type, String host, int port, long timeoutMs,
-            int resetEvery) throws IOException, InterruptedException {
-        Socket socket = Connector.connect(host, port, timeoutMs);
+    /**
+     * Connects and says hello; the simulator returned is ready to run. A failure to connect is an
+     * IOException whose message is one line naming the host and port.
+     */
+    static HardwareSimulator connect(String name, RobotType type, String host, int port, ConnectOptions options)
+            throws IOException, InterruptedException {
+        Socket socket;
+        try {
+            socket = Connector.connect(host, port, options.connectTimeoutMs(), options::waiting);
+        } catch (UnknownHostException e) {
+            throw new UnknownHostException("cannot connect to the Environment at " + host + ":" + port + ": "
+                    + e.getMessage());
+        } catch (IOException e) {
+            throw new IOException("cannot connect to the Environment at " + host + ":" + port + ": " + e.getMessage());
+        }
         if (socket == null) {
             throw new IOException("cannot connect to the Environment at " + host + ":" + port + " within "
-                    + timeoutMs / 1000 + " s");
+                    + options.connectTimeoutS + " s (is it running, on that port?)");
         }
         HardwareSimulator sim = new HardwareSimulator(name, type);
-        sim.connect(socket, resetEvery);
+        sim.connect(socket, options.resetEvery);
         return sim;
     }
 }

@@ -1,5 +1,7 @@
 package robosim.hardware;
 
+import java.io.IOException;
+import java.net.UnknownHostException;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -10,7 +12,6 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.api.RobotControl;
 import robosim.protocol.Protocol;
-import robosim.protocol.ProtocolException;
 
 /** {@code scripts/robot.sh CONTROL_CLASS NAME HOST PORT}: one robot process. */
 @Command(name = "robot.sh", mixinStandardHelpOptions = true,
@@ -57,11 +58,13 @@ public final class RobotMain implements Callable<Integer> {
             return 2;
         }
         try {
-            String reason = RobotLauncher.run(name, robotType, control, host, port, connect.connectTimeoutMs(), connect.resetEvery,
-                    exchange);
+            String reason = RobotLauncher.run(name, robotType, control, host, port, connect, exchange);
             LOG.info("robot {}: simulation over: {}", name, reason);
             return 0;
-        } catch (ProtocolException e) {
+        } catch (UnknownHostException e) {
+            System.err.println("robot " + name + ": " + e.getMessage());
+            return 2;
+        } catch (IOException e) {
             System.err.println("robot " + name + ": " + e.getMessage());
             return 1;
         }

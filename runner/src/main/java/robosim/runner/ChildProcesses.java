@@ -2,28 +2,75 @@ package robosim.runner;
 
 import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStream;
 import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 
-/** Starts Java child processes on this JVM's class path and stops them all at the end. */
+/**
+ * Starts Java child processes on this JVM's class path and stops them all at the end: when closed,
+ * and when this JVM is told to stop (SIGTERM, SIGINT, SIGHUP) once {@link #stopOnSignal} was called.
+ * Safe to use from the runner's thread and the JVM's shutdown thread at once.
+ */
 final class ChildProcesses implements AutoCloseable {
-    private final List<Process> started = new ArrayList<>();
-    private final List<String> names = new ArrayList<>();
+    /** How long children get to end after SIGTERM before they are killed. */
+    private static final long GRACE_MS = 5000;
+
+    /** A started child, with the last lines it wrote to stderr (its reason, when it fails). */
+    static final class Child {
+        private static final int KEPT_LINES = 3;
+        final String name;
+        final Process process;
+        private final java.util.ArrayDeque<String> lastErrorLines = new java.util.ArrayDeque<>();
+        private final java.util.concurrent.CountDownLatch stderrClosed = new java.util.concurrent.CountDownLatch(1);
+
+        private Child(String name, Process process) {
+            this.name = name;
+            this.process = process;
+        }
+
+        private synchronized void errorLine(String line) {
+            if (lastErrorLines.size() == KEPT_LINES) {
+                lastErrorLines.removeFirst();
+            }
+            lastErrorLines.addLast(line.strip());
+        }
+
+        /**
+         * Its last (up to three) non-blank stderr lines, joined by " | ", once its stderr has closed
+         * (every line it wrote has been read) or after {@code timeoutMs}.
+         */
+        String lastErrorLines(long timeoutMs) throws InterruptedException {
+            stderrClosed.await(timeoutMs, TimeUnit.MILLISECONDS);
+            synchronized (this) {
+                return String.join(" | ", lastErrorLines);
+            }
+        }
+    }
+
+    private final List<Child> started = new CopyOnWriteArrayList<>();
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final List<String> jvmOptions;
+    private Thread onSignal;
 
     ChildProcesses(List<String> jvmOptions) {
         this.jvmOptions = List.copyOf(jvmOptions);
     }
 
+    /** Stops every child when this JVM is told to stop (thread "stop-children", a shutdown hook). */
+    void stopOnSignal() {
+        onSignal = new Thread(this::close, "stop-children");
+        Runtime.getRuntime().addShutdownHook(onSignal);
+    }
+
     /**
-     * Starts {@code mainClass} with {@code args}. Its stderr goes to ours; its stdout lines go to
+     * Starts {@code mainClass} with {@code args}. Its stderr is copied to ours; its stdout lines go to
      * {@code stdoutLines} (on a pipe thread), or to our stderr when null.
      */
     Process start(String name, String mainClass, List<String> args, Consumer<String> stdoutLines) throws IOException {
@@ -33,6 +80,12 @@ final class ChildProcesses implements AutoCloseable {
     /** As above, with JVM options for this child before the common ones (which may override them). */
     Process start(String name, List<String> ownOptions, String mainClass, List<String> args,
             Consumer<String> stdoutLines) throws IOException {
+        return startChild(name, ownOptions, mainClass, args, stdoutLines).process;
+    }
+
+    /** As above, returning the child with its last stderr line. */
+    Child startChild(String name, List<String> ownOptions, String mainClass, List<String> args,
+            Consumer<String> stdoutLines) throws IOException {
         List<String> cmd = new ArrayList<>();
         cmd.add(java);
         cmd.addAll(ownOptions);
@@ -41,25 +94,35 @@ final class ChildProcesses implements AutoCloseable {
         cmd.add(classPath);
         cmd.add(mainClass);
         cmd.addAll(args);
-        ProcessBuilder pb = new ProcessBuilder(cmd);
-        pb.redirectError(ProcessBuilder.Redirect.INHERIT);
-        Process p = pb.start();
-        started.add(p);
-        names.add(name);
-        Consumer<String> sink = stdoutLines != null ? stdoutLines : System.err::println;
+        Child child = new Child(name, new ProcessBuilder(cmd).start());
+        started.add(child);
+        pipe(name + ".out", child.process.getInputStream(), stdoutLines != null ? stdoutLines : System.err::println,
+                () -> { });
+        pipe(name + ".err", child.process.getErrorStream(), line -> {
+            System.err.println(line);
+            if (!line.isBlank()) {
+                child.errorLine(line);
+            }
+        }, child.stderrClosed::countDown);
+        return child;
+    }
+
+    /** Copies {@code stream}'s lines to {@code sink} on a thread of its own; {@code atEnd} runs at its end. */
+    private static void pipe(String name, InputStream stream, Consumer<String> sink, Runnable atEnd) {
         Thread pipe = new Thread(() -> {
-            try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+            try (BufferedReader r = new BufferedReader(new InputStreamReader(stream, StandardCharsets.UTF_8))) {
                 String line;
                 while ((line = r.readLine()) != null) {
                     sink.accept(line);
                 }
             } catch (IOException ignored) {
                 // the child is gone
+            } finally {
+                atEnd.run();
             }
         }, "pipe[" + name + "]");
         pipe.setDaemon(true);
         pipe.start();
-        return p;
     }
 
     /** Starts a child that is not waited for nor stopped at the end (a viewer window the user closes). */
@@ -74,13 +137,12 @@ final class ChildProcesses implements AutoCloseable {
     List<String> awaitAll(long seconds) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
         List<String> bad = new ArrayList<>();
-        for (int i = 0; i < started.size(); i++) {
-            Process p = started.get(i);
+        for (Child c : started) {
             long left = Math.max(0, deadline - System.nanoTime());
-            if (!p.waitFor(left, TimeUnit.NANOSECONDS)) {
-                bad.add(names.get(i) + " (still running)");
-            } else if (p.exitValue() != 0) {
-                bad.add(names.get(i) + " (exit " + p.exitValue() + ")");
+            if (!c.process.waitFor(left, TimeUnit.NANOSECONDS)) {
+                bad.add(c.name + " (still running)");
+            } else if (c.process.exitValue() != 0) {
+                bad.add(c.name + " (exit " + c.process.exitValue() + ")");
             }
         }
         return bad;
@@ -88,18 +150,39 @@ final class ChildProcesses implements AutoCloseable {
 
     /** Kills the child started under {@code name} at once (for fault injection). */
     void kill(String name) {
-        for (int i = 0; i < names.size(); i++) {
-            if (names.get(i).equals(name)) {
-                started.get(i).destroyForcibly();
+        for (Child c : started) {
+            if (c.name.equals(name)) {
+                c.process.destroyForcibly();
             }
         }
     }
 
+    /**
+     * Asks every child still running (and its children) to stop with SIGTERM, so the Environment can
+     * tell its clients; kills what is left after a grace period. Idempotent.
+     */
     @Override
     public void close() {
-        for (Process p : started) {
-            p.descendants().forEach(ProcessHandle::destroyForcibly);
-            p.destroyForcibly();
+        List<ProcessHandle> all = new ArrayList<>();
+        for (Child c : started) {
+            c.process.descendants().forEach(all::add);
+            all.add(c.process.toHandle());
+        }
+        all.forEach(ProcessHandle::destroy);
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(GRACE_MS);
+        for (ProcessHandle h : all) {
+            try {
+                h.onExit().get(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
+            } catch (Exception stillRunning) {
+                h.destroyForcibly();
+            }
+        }
+        if (onSignal != null && Thread.currentThread() != onSignal) {
+            try {
+                Runtime.getRuntime().removeShutdownHook(onSignal);
+            } catch (IllegalStateException shuttingDown) {
+                // the hook is running or about to: it finds every child gone
+            }
         }
     }
 }

@@ -10,17 +10,17 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeoutException;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
+import robosim.api.RobotControl;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.PoseUpdate;
-import robosim.protocol.SimulationEnd;
-import robosim.protocol.ViewerClient;
-import robosim.protocol.WorldSnapshot;
+import robosim.environment.net.ClientWorkerCoordinator;
 
 /**
  * {@code scripts/headless.sh --env FILE --steps N}: runs a whole simulation with every part as its
@@ -31,6 +31,9 @@ import robosim.protocol.WorldSnapshot;
         description = "Starts the Environment, the Geometry process and every robot named in the environment file "
                 + "as separate processes, runs the given number of steps, stops them all and prints a summary.")
 public final class HeadlessRunner implements Callable<Integer> {
+    /** The exit code of a run that completed without some of its robots (each is named before the summary). */
+    static final int EXIT_ROBOTS_REMOVED = 3;
+
     @Option(names = "--env", required = true, paramLabel = "FILE", description = "The environment file.")
     Path env;
 
@@ -93,28 +96,14 @@ public final class HeadlessRunner implements Callable<Integer> {
             description = "For measurement: connect this many viewers that never read (default: ${DEFAULT-VALUE}).")
     int frozenViewers;
 
-    @Option(names = "--jvm-opt", paramLabel = "OPTION",
-            description = "An option for every child JVM, after the per-role ones; repeatable.")
-    List<String> jvmOptions = new ArrayList<>();
+    @Mixin
+    ChildJvmOptions jvm = new ChildJvmOptions();
 
-    @Option(names = "--environment-jvm-opts", paramLabel = "OPTIONS", defaultValue = "-XX:+UseSerialGC",
-            description = "JVM options for the Environment, space-separated (default: ${DEFAULT-VALUE}).")
-    String environmentJvmOpts;
-
-    @Option(names = "--geometry-jvm-opts", paramLabel = "OPTIONS", defaultValue = "-XX:+UseSerialGC",
-            description = "JVM options for the Geometry process (default: ${DEFAULT-VALUE}).")
-    String geometryJvmOpts;
-
-    @Option(names = "--robot-jvm-opts", paramLabel = "OPTIONS",
-            defaultValue = "-XX:+UseSerialGC -XX:TieredStopAtLevel=1",
-            description = "JVM options for each robot process (default: ${DEFAULT-VALUE}: ten JVMs warming up "
-                    + "with C1 only cost less CPU on a small machine; give '' for heavy control code).")
-    String robotJvmOpts;
-
-    @Option(names = "--profile", paramLabel = "DIR",
-            description = "Record a Java Flight Recorder profile of the Environment and the Geometry process into "
-                    + "DIR (environment.jfr, geometry.jfr); read them with 'jfr print' or JDK Mission Control.")
-    Path profile;
+    @Option(names = "--step-timeout-ms", paramLabel = "MS",
+            description = "Remove a robot that sends no request this long after its step was released (default: the "
+                    + "Environment's, " + ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS + "; 0 = wait for "
+                    + "ever). A run that lost a robot exits " + EXIT_ROBOTS_REMOVED + ".")
+    Long stepTimeoutMs;
 
     @Option(names = "--timeout-s", defaultValue = "0",
             description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
@@ -129,58 +118,75 @@ public final class HeadlessRunner implements Callable<Integer> {
             System.err.println(e.getMessage());
             return 2;
         }
-        if (steps <= 0) {
-            System.err.println("headless: --steps must be > 0, got " + steps);
+        String bad = badOptions();
+        if (bad == null) {
+            bad = missingControl(spec);
+        }
+        if (bad != null) {
+            System.err.println(bad);
             return 2;
         }
-        if (liveViewers < 0 || frozenViewers < 0 || liveViewerFps < 0 || !(speed >= 0)) {
-            System.err.println("headless: --speed, --live-viewers and --frozen-viewers must be >= 0");
-            return 2;
-        }
-        if (ports != null && ports.size() != 3) {
-            System.err.println("headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports);
-            return 2;
-        }
-        for (WorldSpec.RobotSpec r : spec.robots()) {
-            if (r.control().isBlank()) {
-                System.err.println(env + ": <robot name=\"" + r.name() + "\"> needs a control class (control=\"...\") "
-                        + "for the headless runner");
-                return 2;
-            }
-        }
-        try (ChildProcesses children = new ChildProcesses(jvmOptions)) {
+        try (ChildProcesses children = new ChildProcesses(jvm.all)) {
+            children.stopOnSignal();
             return run(spec, children);
         }
+    }
+
+    private String badOptions() {
+        if (steps <= 0) {
+            return "headless: --steps must be > 0, got " + steps;
+        }
+        if (liveViewers < 0 || frozenViewers < 0 || liveViewerFps < 0 || !(speed >= 0)) {
+            return "headless: --speed, --live-viewers and --frozen-viewers must be >= 0";
+        }
+        if (stepTimeoutMs != null && stepTimeoutMs < 0) {
+            return "headless: --step-timeout-ms must be >= 0, got " + stepTimeoutMs;
+        }
+        if (ports != null && ports.size() != 3) {
+            return "headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports;
+        }
+        return null;
+    }
+
+    /** Every robot needs a control class on the class path the robot processes get (ours). */
+    private String missingControl(WorldSpec spec) {
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            String where = env + ": <robot name=\"" + r.name() + "\">";
+            if (r.control().isBlank()) {
+                return where + " needs a control class (control=\"...\") for the headless runner";
+            }
+            try {
+                Class<?> c = Class.forName(r.control(), false, HeadlessRunner.class.getClassLoader());
+                if (!RobotControl.class.isAssignableFrom(c)) {
+                    return where + ": " + r.control() + " does not implement " + RobotControl.class.getName();
+                }
+            } catch (ClassNotFoundException | LinkageError e) {
+                return where + ": control class " + r.control() + " is not on the class path (add its classes "
+                        + "with --classpath or ROBOSIM_CLASSPATH)";
+            }
+        }
+        return null;
     }
 
     private int run(WorldSpec spec, ChildProcesses children) throws Exception {
         CompletableFuture<Map<String, String>> listening = new CompletableFuture<>();
         CompletableFuture<Map<String, String>> summary = new CompletableFuture<>();
-        List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
-                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
-                "0"));
-        if (noGeometry) {
-            envArgs.add("--no-geometry");
-        }
-        envArgs.add("--coordinator");
-        envArgs.add(coordinator);
-        if (noStepMessages) {
-            envArgs.add("--no-step-messages");
-        }
-        envArgs.addAll(resetArgs());
-        if (speed > 0) {
-            envArgs.add("--speed");
-            envArgs.add(Double.toString(speed));
-        }
-        Process environment = children.start("environment", profiled(opts(environmentJvmOpts), "environment"), "robosim.environment.EnvironmentMain", envArgs, line -> {
-            if (line.startsWith("listening ")) {
-                listening.complete(fields(line));
-            } else if (line.startsWith("summary ")) {
-                summary.complete(fields(line));
-            } else {
-                System.out.println(line);
-            }
-        });
+        CompletableFuture<Void> started = new CompletableFuture<>();
+        List<String> removed = new CopyOnWriteArrayList<>();
+        Process environment = children.start("environment", jvm.environment(),
+                "robosim.environment.EnvironmentMain", environmentArgs(), line -> {
+                    if (line.startsWith("listening ")) {
+                        listening.complete(fields(line));
+                    } else if (line.startsWith("running ")) {
+                        started.complete(null);
+                    } else if (line.startsWith("left ")) {
+                        removed.add(line.substring("left ".length()));
+                    } else if (line.startsWith("summary ")) {
+                        summary.complete(fields(line));
+                    } else {
+                        System.out.println(line);
+                    }
+                });
         environment.onExit().thenRun(() -> listening.complete(Map.of()));
         Map<String, String> bound = listening.get(60, TimeUnit.SECONDS);
         if (bound.isEmpty()) {
@@ -188,21 +194,31 @@ public final class HeadlessRunner implements Callable<Integer> {
                     + " before listening");
             return environment.exitValue() == 2 ? 2 : 1;
         }
-        String robotPort = bound.get("robots");
+        System.out.println("listening robots=" + bound.get("robots") + " viewers=" + bound.get("viewers")
+                + " geometry=" + bound.get("geometry") + " control=" + bound.get("control"));
         int viewerPort = Integer.parseInt(bound.get("viewers"));
-        ViewerClient viewer = watch(viewerPort);
+        RunWatch watch = RunWatch.connect(viewerPort, poseLog, progress, steps);
         ExtraViewers extras = ExtraViewers.connect(viewerPort, liveViewers, liveViewerFps, frozenViewers);
         if (this.viewer) {
             children.startDetached("viewer2d", "robosim.viewer.Viewer2DMain",
                     List.of("127.0.0.1", Integer.toString(viewerPort)));
         }
+        List<ChildProcesses.Child> clients = new ArrayList<>();
         if (!noGeometry) {
             List<String> geometryArgs = new ArrayList<>(List.of("127.0.0.1", bound.get("geometry")));
             geometryArgs.addAll(resetArgs());
-            children.start("geometry", profiled(opts(geometryJvmOpts), "geometry"), "robosim.geometry.GeometryMain",
-                    geometryArgs, null);
+            clients.add(children.startChild("geometry", jvm.geometry(),
+                    "robosim.geometry.GeometryMain", geometryArgs, null));
         }
-        startRobots(spec, children, robotPort);
+        clients.addAll(startRobots(spec, children, bound.get("robots")));
+        String early = EarlyExit.await(started, environment, clients);
+        if (early != null) {
+            System.err.println("headless: " + early + "; stopping everything");
+            return 2;
+        }
+        if (started.isDone()) {
+            System.out.println("running " + spec.robots().size() + " robots for " + steps + " steps");
+        }
         long limit = timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2;
         if (!environment.waitFor(limit, TimeUnit.SECONDS)) {
             System.err.println("headless: no end after " + timeoutS + " s; stopping everything");
@@ -216,77 +232,59 @@ public final class HeadlessRunner implements Callable<Integer> {
             System.err.println("headless: the Environment exited with code " + code + " without a summary");
             return 1;
         }
-        if (viewer != null) {
-            viewer.awaitEnd(60, TimeUnit.SECONDS);
+        if (watch != null) {
+            watch.awaitEnd(60);
+            watch.close();
         }
         extras.close();
-        if (poseLogWriter != null) {
-            poseLogWriter.close();
-        }
         List<String> failed = children.awaitAll(30);
         if (!failed.isEmpty()) {
             System.err.println("headless: processes that did not end cleanly: " + failed);
             code = code == 0 ? 1 : code;
         }
+        for (String r : removed) {
+            System.out.println("removed " + r);
+        }
+        if (!removed.isEmpty() && code == 0) {
+            code = EXIT_ROBOTS_REMOVED;
+        }
         System.out.println(String.format(Locale.ROOT,
-                "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s geometry=%s robots_in=%s",
+                "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s robots_left=%s "
+                        + "geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
-                s.get("messages"), noGeometry ? "in-process" : "process",
+                s.get("messages"), s.get("robots_left"), noGeometry ? "in-process" : "process",
                 robotsInOneProcess ? "one-process" : "processes"));
         return code;
     }
 
-    private PoseLog poseLogWriter;
+    private List<String> environmentArgs() {
+        List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
+                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
+                "0", "--coordinator", coordinator));
+        if (noGeometry) {
+            envArgs.add("--no-geometry");
+        }
+        if (noStepMessages) {
+            envArgs.add("--no-step-messages");
+        }
+        envArgs.addAll(resetArgs());
+        if (speed > 0) {
+            envArgs.add("--speed");
+            envArgs.add(Double.toString(speed));
+        }
+        if (stepTimeoutMs != null) {
+            envArgs.add("--step-timeout-ms");
+            envArgs.add(Long.toString(stepTimeoutMs));
+        }
+        return envArgs;
+    }
 
     private List<String> exchangeArgs() {
         return exchange == null ? List.of() : List.of("--exchange", exchange);
     }
 
-    private ViewerClient watch(int viewerPort) throws IOException, InterruptedException {
-        if (poseLog == null && !progress) {
-            return null;
-        }
-        poseLogWriter = poseLog == null ? null : new PoseLog(poseLog);
-        ViewerClient viewer = ViewerClient.connect("127.0.0.1", viewerPort, poseLog != null, 10_000);
-        viewer.start(new ViewerClient.Listener() {
-            private long lastPrint = System.nanoTime();
-            private long lastStep = -1;
-
-            @Override
-            public void snapshot(WorldSnapshot snapshot) {
-                if (poseLogWriter != null) {
-                    poseLogWriter.snapshot(snapshot);
-                }
-            }
-
-            @Override
-            public void update(PoseUpdate u) {
-                if (poseLogWriter != null) {
-                    poseLogWriter.update(u);
-                }
-                long now = System.nanoTime();
-                if (lastStep < 0) {
-                    lastPrint = now;
-                    lastStep = u.step();
-                } else if (progress && now - lastPrint >= 1_000_000_000L) {
-                    double rate = (u.step() - lastStep) / ((now - lastPrint) / 1e9);
-                    System.out.printf(Locale.ROOT, "step %d/%d  %.0f steps/s%n", u.step() + 1, steps, rate);
-                    lastPrint = now;
-                    lastStep = u.step();
-                }
-            }
-
-            @Override
-            public void end(SimulationEnd end) {
-                if (progress) {
-                    System.out.println("simulation over: " + end.reason());
-                }
-            }
-        });
-        return viewer;
-    }
-
-    private void startRobots(WorldSpec spec, ChildProcesses children, String robotPort) throws IOException {
+    private List<ChildProcesses.Child> startRobots(WorldSpec spec, ChildProcesses children, String robotPort)
+            throws IOException {
         if (robotsInOneProcess) {
             List<String> args = new ArrayList<>(List.of("127.0.0.1", robotPort));
             args.addAll(resetArgs());
@@ -295,37 +293,23 @@ public final class HeadlessRunner implements Callable<Integer> {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());
             }
-            children.start("robots", opts(robotJvmOpts), "robosim.hardware.MultiRobotMain", args, null);
-        } else {
-            for (WorldSpec.RobotSpec r : spec.robots()) {
-                List<String> args = new ArrayList<>(List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type",
-                        r.type()));
-                args.addAll(resetArgs());
-                args.addAll(exchangeArgs());
-                children.start("robot " + r.name(), opts(robotJvmOpts), "robosim.hardware.RobotMain", args, null);
-            }
+            return List.of(children.startChild("robots", jvm.robot(), "robosim.hardware.MultiRobotMain", args,
+                    null));
         }
+        List<ChildProcesses.Child> started = new ArrayList<>();
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            List<String> args = new ArrayList<>(List.of(r.control(), r.name(), "127.0.0.1", robotPort, "--type",
+                    r.type()));
+            args.addAll(resetArgs());
+            args.addAll(exchangeArgs());
+            started.add(children.startChild("robot " + r.name(), jvm.robot(), "robosim.hardware.RobotMain",
+                    args, null));
+        }
+        return started;
     }
 
     private List<String> resetArgs() {
         return resetEvery == null ? List.of() : List.of("--reset-every", Integer.toString(resetEvery));
-    }
-
-    /** Adds a flight recording of the whole process to {@code options} when --profile is given. */
-    private List<String> profiled(List<String> options, String role) throws IOException {
-        if (profile == null) {
-            return options;
-        }
-        java.nio.file.Files.createDirectories(profile);
-        List<String> withJfr = new ArrayList<>(options);
-        withJfr.add("-XX:StartFlightRecording=filename=" + profile.resolve(role + ".jfr").toAbsolutePath()
-                + ",settings=profile");
-        return withJfr;
-    }
-
-    private static List<String> opts(String spaceSeparated) {
-        return spaceSeparated == null || spaceSeparated.isBlank() ? List.of()
-                : List.of(spaceSeparated.trim().split("\\s+"));
     }
 
     private String port(int i) {

@@ -2,6 +2,9 @@
  * The headless runner ({@code scripts/headless.sh}, {@code scripts/demo.sh}): starts the
  * Environment, the Geometry process and the robots as separate OS processes, watches the run
  * through a viewer connection (pose log, progress) on the {@code viewer-client} thread, and prints
- * a one-line summary. Child output is copied by one {@code pipe[...]} thread per stream.
+ * a one-line summary. Its threads: {@code main} (starts the children, waits for the start, the end
+ * or a client that ends before the start), one {@code pipe[NAME.out]} and one {@code pipe[NAME.err]}
+ * per child (copy its output; the Environment's stdout lines are the runner's events), and
+ * {@code stop-children} (the JVM's shutdown hook: on SIGTERM, SIGINT or SIGHUP it stops every child).
  */
 package robosim.runner;

@@ -72,7 +72,7 @@ class MisbehavingClientsTest {
             raw("r1", port).close();
             // the Environment notices the close on its own; until then the name is still taken
             HardwareSimulator r1 = null;
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(10);
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(60);
             while (r1 == null) {
                 try {
                     r1 = connect("r1", new ArRobot(), port);

@@ -118,9 +118,14 @@ public final class ClientWorkerCoordinator implements Closeable {
     public enum Design { THREADS, SEQUENTIAL, TWO_THREADS }
 
     /** How a finished run went. */
+    /** How a run went; {@code departures} says, for each robot that left mid-run, when and why. */
     public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
             long messagesDelivered, long messagesOutOfRange, long messagesRefused, int robotsLeft,
-            int geometryLosses, int geometryAttaches) {
+            int geometryLosses, int geometryAttaches, List<Departure> departures) {
+    }
+
+    /** A robot that left the run at {@code step}, and why (network text already made safe to print). */
+    public record Departure(String robot, long step, String why) {
     }
 
     private enum State { WAITING, RUNNING, ENDED }
@@ -131,6 +136,9 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final List<String> robotNames;
     private final ReentrantLock lock = new ReentrantLock();
     private final CountDownLatch endedLatch = new CountDownLatch(1);
+    /** Counted down when every client is there and the run begins, or when it ends without beginning. */
+    private final CountDownLatch startedLatch = new CountDownLatch(1);
+    private final List<Departure> departures = new ArrayList<>();
     private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
     private final List<ServerSocket> servers = new ArrayList<>();
     private final List<Thread> acceptors = new CopyOnWriteArrayList<>();
@@ -402,6 +410,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         state = State.RUNNING;
         startNanos = System.nanoTime();
         stepReleasedNanos = startNanos;
+        startedLatch.countDown();
         startWatchdog();
         LOG.info("all {} robot(s) connected: running{}", robotCount,
                 settings.maxSteps() > 0 ? " for " + settings.maxSteps() + " steps" : "");
@@ -630,6 +639,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         core.depart(i);
         robotsLeft++;
+        departures.add(new Departure(robotNames.get(i), stepsDone, printable(why)));
         LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on",
                 robotNames.get(i), stepsDone, why);
     }
@@ -1061,6 +1071,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         LOG.info("simulation over after {} steps: {}", stepsDone, reason);
         endedLatch.countDown();
+        startedLatch.countDown();
     }
 
     SimulationEnd endMessage() {
@@ -1092,6 +1103,20 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
+    /**
+     * Waits until every client is there and the run has begun; true if it began (false when it ended
+     * first, or on timeout).
+     */
+    public boolean awaitStart(long timeout, TimeUnit unit) throws InterruptedException {
+        return startedLatch.await(timeout, unit) && startNanos != 0;
+    }
+
+    /** {@code text} with every control character (a line break from the network) shown as '?'. */
+    private static String printable(String text) {
+        return text == null ? "" : text.codePoints().map(c -> Character.isISOControl(c) ? '?' : c)
+                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
+    }
+
     /** Blocks until the simulation is over. */
     public void awaitEnd() throws InterruptedException {
         endedLatch.await();
@@ -1107,7 +1132,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             double wall = startNanos == 0 ? 0 : ((endNanos == 0 ? System.nanoTime() : endNanos) - startNanos) / 1e9;
             return new Summary(stepsDone, robotCount, wall, endReason, completed,
                     core == null ? 0 : core.messagesDelivered(), core == null ? 0 : core.messagesOutOfRange(),
-                    core == null ? 0 : core.messagesUndeliverable(), robotsLeft, geometryLosses, geometryAttaches);
+                    core == null ? 0 : core.messagesUndeliverable(), robotsLeft, geometryLosses, geometryAttaches,
+                    List.copyOf(departures));
         } finally {
             lock.unlock();
         }

@@ -1,0 +1,86 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.util.List;
+import java.util.concurrent.Callable;
+import org.junit.jupiter.api.Test;
+import picocli.CommandLine;
+import robosim.geometry.GeometryMain;
+import robosim.hardware.MultiRobotMain;
+import robosim.hardware.RobotMain;
+
+/**
+ * A process that cannot reach the Environment says so in one line naming the host and port (exit 2
+ * for a host that does not exist, 1 when nothing answers in time), and says "connecting to HOST:PORT"
+ * once while it waits.
+ */
+class ConnectionErrorsTest {
+    /** Exit code and stderr lines of one command line run in this JVM. */
+    private record Run(int code, List<String> err) {
+    }
+
+    private static Run run(Callable<Integer> command, String... args) {
+        PrintStream saved = System.err;
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+        int code;
+        try {
+            code = new CommandLine(command).execute(args);
+        } finally {
+            System.setErr(saved);
+        }
+        return new Run(code, err.toString(StandardCharsets.UTF_8).lines().toList());
+    }
+
+    @Test
+    void aRobotGivenAHostThatDoesNotExistSaysSoInOneLine() {
+        Run r = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "nosuchhost.invalid", "8000");
+        assertEquals(2, r.code(), r.err().toString());
+        assertEquals(List.of("robot r1: cannot connect to the Environment at nosuchhost.invalid:8000: unknown host "
+                + "nosuchhost.invalid"), r.err());
+    }
+
+    @Test
+    void geometryGivenAHostThatDoesNotExistSaysSoInOneLine() {
+        Run r = run(new GeometryMain(), "nosuchhost.invalid", "10000");
+        assertEquals(2, r.code(), r.err().toString());
+        assertEquals(List.of("geometry: cannot connect to nosuchhost.invalid:10000: unknown host nosuchhost.invalid"),
+                r.err());
+    }
+
+    @Test
+    void aRobotWaitingForAnEnvironmentThatNeverComesSaysWhatItWaitsForThenGivesUpInOneLine() throws Exception {
+        try (Socket reserved = new Socket()) {
+            reserved.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0)); // bound, never listening
+            String port = Integer.toString(reserved.getLocalPort());
+            Run r = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "127.0.0.1", port,
+                    "--connect-timeout-s", "1");
+            assertEquals(1, r.code(), r.err().toString());
+            assertEquals(List.of(
+                    "connecting to 127.0.0.1:" + port + " ... (for up to 1 s; is the Environment running?)",
+                    "robot r1: cannot connect to the Environment at 127.0.0.1:" + port + " within 1 s (is it running, "
+                            + "on that port?)"), r.err());
+        }
+    }
+
+    @Test
+    void manyRobotsInOneProcessSayConnectingOnce() throws Exception {
+        try (Socket reserved = new Socket()) {
+            reserved.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
+            String port = Integer.toString(reserved.getLocalPort());
+            Run r = run(new MultiRobotMain(), "127.0.0.1", port, "--connect-timeout-s", "1",
+                    "--robot", "a:ArRobot:robosim.examples.BackAndForth",
+                    "--robot", "b:ArRobot:robosim.examples.BackAndForth");
+            assertEquals(1, r.code(), r.err().toString());
+            assertEquals(1, r.err().stream().filter(l -> l.startsWith("connecting to 127.0.0.1:" + port)).count(),
+                    r.err().toString());
+        }
+    }
+}
