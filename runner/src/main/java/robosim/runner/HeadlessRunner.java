@@ -20,7 +20,6 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.api.RobotControl;
 import robosim.environment.core.WorldSpec;
-import robosim.environment.net.ClientWorkerCoordinator;
 
 /**
  * {@code scripts/headless.sh --env FILE --steps N}: runs a whole simulation with every part as its
@@ -40,10 +39,6 @@ public final class HeadlessRunner implements Callable<Integer> {
     @Option(names = "--steps", defaultValue = "1000", description = "Steps to run (default: ${DEFAULT-VALUE}).")
     long steps;
 
-    @Option(names = "--ports", paramLabel = "ROBOT,VIEWER,GEOMETRY", split = ",",
-            description = "Environment ports (default: free ports picked by the system).")
-    List<Integer> ports;
-
     @Option(names = "--robots-in-one-process",
             description = "Run every robot in one JVM, each with its own socket and threads.")
     boolean robotsInOneProcess;
@@ -58,52 +53,27 @@ public final class HeadlessRunner implements Callable<Integer> {
     @Option(names = "--progress", description = "Print the step and steps/s once a second.")
     boolean progress;
 
-    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "SEQUENTIAL",
-            description = "The Environment's coordinator design: SEQUENTIAL (default), THREADS or TWO_THREADS.")
-    String coordinator;
-
     @Option(names = "--exchange", paramLabel = "THREADING",
             description = "The robots' exchange threading: ONE_THREAD, SEND_RECEIVE, or, with "
                     + "--robots-in-one-process, SHARED (one thread for every robot; the default there).")
     String exchange;
-
-    @Option(names = "--no-step-messages",
-            description = "The Environment sends the step number only before step 0 (see environment.sh --help).")
-    boolean noStepMessages;
 
     @Option(names = "--reset-every", paramLabel = "N",
             description = "Messages between object-stream resets, for every process (default: each process's own, "
                     + "256; 0 = never, for measurement only).")
     Integer resetEvery;
 
-    @Option(names = "--speed", defaultValue = "0",
-            description = "Run at most this many times real time (default: ${DEFAULT-VALUE} = as fast as possible).")
-    double speed;
-
     @Option(names = "--viewer", description = "Open a Viewer2D window (needs a display); it stays open after the run.")
     boolean viewer;
 
-    @Option(names = "--live-viewers", defaultValue = "0",
-            description = "For measurement: connect this many headless live viewers (default: ${DEFAULT-VALUE}).")
-    int liveViewers;
+    @Mixin
+    EnvironmentOptions environmentOptions = new EnvironmentOptions();
 
-    @Option(names = "--live-viewer-fps", defaultValue = "30",
-            description = "Updates a second the --live-viewers ask for, like a Viewer2D window (default: "
-                    + "${DEFAULT-VALUE}; 0 = every step).")
-    int liveViewerFps;
-
-    @Option(names = "--frozen-viewers", defaultValue = "0",
-            description = "For measurement: connect this many viewers that never read (default: ${DEFAULT-VALUE}).")
-    int frozenViewers;
+    @Mixin
+    ExtraViewerOptions extraViewers = new ExtraViewerOptions();
 
     @Mixin
     ChildJvmOptions jvm = new ChildJvmOptions();
-
-    @Option(names = "--step-timeout-ms", paramLabel = "MS",
-            description = "Remove a robot that sends no request this long after its step was released (default: the "
-                    + "Environment's, " + ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS + "; 0 = wait for "
-                    + "ever). A run that lost a robot exits " + EXIT_ROBOTS_REMOVED + ".")
-    Long stepTimeoutMs;
 
     @Option(names = "--timeout-s", defaultValue = "0",
             description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
@@ -136,16 +106,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (steps <= 0) {
             return "headless: --steps must be > 0, got " + steps;
         }
-        if (liveViewers < 0 || frozenViewers < 0 || liveViewerFps < 0 || !(speed >= 0)) {
+        if (extraViewers.negative() || !(environmentOptions.speed >= 0)) {
             return "headless: --speed, --live-viewers and --frozen-viewers must be >= 0";
         }
-        if (stepTimeoutMs != null && stepTimeoutMs < 0) {
-            return "headless: --step-timeout-ms must be >= 0, got " + stepTimeoutMs;
-        }
-        if (ports != null && ports.size() != 3) {
-            return "headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports;
-        }
-        return null;
+        return environmentOptions.bad();
     }
 
     /** Every robot needs a control class on the class path the robot processes get (ours). */
@@ -174,7 +138,8 @@ public final class HeadlessRunner implements Callable<Integer> {
         CompletableFuture<Void> started = new CompletableFuture<>();
         List<String> removed = new CopyOnWriteArrayList<>();
         Process environment = children.start("environment", jvm.environment(),
-                "robosim.environment.EnvironmentMain", environmentArgs(), line -> {
+                "robosim.environment.EnvironmentMain",
+                environmentOptions.args(env, steps, noGeometry, resetArgs()), line -> {
                     if (line.startsWith("listening ")) {
                         listening.complete(fields(line));
                     } else if (line.startsWith("running ")) {
@@ -198,7 +163,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 + " geometry=" + bound.get("geometry") + " control=" + bound.get("control"));
         int viewerPort = Integer.parseInt(bound.get("viewers"));
         RunWatch watch = RunWatch.connect(viewerPort, poseLog, progress, steps);
-        ExtraViewers extras = ExtraViewers.connect(viewerPort, liveViewers, liveViewerFps, frozenViewers);
+        ExtraViewers extras = extraViewers.connect(viewerPort);
         if (this.viewer) {
             children.startDetached("viewer2d", "robosim.viewer.Viewer2DMain",
                     List.of("127.0.0.1", Integer.toString(viewerPort)));
@@ -257,28 +222,6 @@ public final class HeadlessRunner implements Callable<Integer> {
         return code;
     }
 
-    private List<String> environmentArgs() {
-        List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
-                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
-                "0", "--coordinator", coordinator));
-        if (noGeometry) {
-            envArgs.add("--no-geometry");
-        }
-        if (noStepMessages) {
-            envArgs.add("--no-step-messages");
-        }
-        envArgs.addAll(resetArgs());
-        if (speed > 0) {
-            envArgs.add("--speed");
-            envArgs.add(Double.toString(speed));
-        }
-        if (stepTimeoutMs != null) {
-            envArgs.add("--step-timeout-ms");
-            envArgs.add(Long.toString(stepTimeoutMs));
-        }
-        return envArgs;
-    }
-
     private List<String> exchangeArgs() {
         return exchange == null ? List.of() : List.of("--exchange", exchange);
     }
@@ -310,10 +253,6 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     private List<String> resetArgs() {
         return resetEvery == null ? List.of() : List.of("--reset-every", Integer.toString(resetEvery));
-    }
-
-    private String port(int i) {
-        return ports == null ? "0" : Integer.toString(ports.get(i));
     }
 
     static Map<String, String> fields(String line) {

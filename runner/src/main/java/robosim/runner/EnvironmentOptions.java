@@ -1,0 +1,69 @@
+package robosim.runner;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import picocli.CommandLine.Option;
+import robosim.environment.net.ClientWorkerCoordinator;
+
+/** The headless runner's options for the Environment process, and its command line (a picocli mixin). */
+final class EnvironmentOptions {
+    @Option(names = "--ports", paramLabel = "ROBOT,VIEWER,GEOMETRY", split = ",",
+            description = "Environment ports (default: free ports picked by the system).")
+    List<Integer> ports;
+
+    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "SEQUENTIAL",
+            description = "The Environment's coordinator design: SEQUENTIAL (default), THREADS or TWO_THREADS.")
+    String coordinator;
+
+    @Option(names = "--no-step-messages",
+            description = "The Environment sends the step number only before step 0 (see environment.sh --help).")
+    boolean noStepMessages;
+
+    @Option(names = "--speed", defaultValue = "0",
+            description = "Run at most this many times real time (default: ${DEFAULT-VALUE} = as fast as possible).")
+    double speed;
+
+    @Option(names = "--step-timeout-ms", paramLabel = "MS",
+            description = "Remove a robot that sends no request this long after its step was released (default: the "
+                    + "Environment's, " + ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS + "; 0 = wait for "
+                    + "ever). A run that lost a robot exits " + HeadlessRunner.EXIT_ROBOTS_REMOVED + ".")
+    Long stepTimeoutMs;
+
+    /** What is wrong with these options, or null. */
+    String bad() {
+        if (stepTimeoutMs != null && stepTimeoutMs < 0) {
+            return "headless: --step-timeout-ms must be >= 0, got " + stepTimeoutMs;
+        }
+        if (ports != null && ports.size() != 3) {
+            return "headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports;
+        }
+        return null;
+    }
+
+    List<String> args(Path env, long steps, boolean noGeometry, List<String> resetArgs) {
+        List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
+                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
+                "0", "--coordinator", coordinator));
+        if (noGeometry) {
+            envArgs.add("--no-geometry");
+        }
+        if (noStepMessages) {
+            envArgs.add("--no-step-messages");
+        }
+        envArgs.addAll(resetArgs);
+        if (speed > 0) {
+            envArgs.add("--speed");
+            envArgs.add(Double.toString(speed));
+        }
+        if (stepTimeoutMs != null) {
+            envArgs.add("--step-timeout-ms");
+            envArgs.add(Long.toString(stepTimeoutMs));
+        }
+        return envArgs;
+    }
+
+    private String port(int i) {
+        return ports == null ? "0" : Integer.toString(ports.get(i));
+    }
+}
