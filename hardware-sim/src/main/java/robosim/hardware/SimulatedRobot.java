@@ -38,6 +38,11 @@ final class SimulatedRobot implements Robot {
     }
 
     @Override
+    public long stepMs() {
+        return stepMs;
+    }
+
+    @Override
     public List<String> robotNames() {
         return robotNames;
     }
