@@ -123,6 +123,18 @@ class CommandSplittingTest {
         assertTrue(seen.stream().allMatch(q -> q.moveMm() == 0 && q.turnDeg() == 0), "sleeping stands still");
     }
 
+    /** The longest sleep (and wait) stays asleep: rounding up does not overflow into a one-step sleep. */
+    @Test
+    void sleepOfLongMaxValueDoesNotEnd() throws Exception {
+        RobotControl control = robot -> {
+            robot.sleep(Long.MAX_VALUE);
+            robot.send("robot2", "woke up");
+        };
+        List<StepRequest> seen = ScriptedEnvironment.run(control, 250, 6).requests();
+        assertEquals(6, seen.size());
+        assertTrue(seen.stream().allMatch(q -> q.messages().isEmpty()), "still asleep after 6 steps");
+    }
+
     private static List<Double> box(double[] a) {
         List<Double> l = new ArrayList<>();
         for (double v : a) {
