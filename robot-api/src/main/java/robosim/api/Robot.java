@@ -8,9 +8,10 @@ import java.util.List;
  * once from the robot's newest readings.
  *
  * <p>Robot time advances in whole time steps of {@link #stepMs()}; every blocking call takes a whole
- * number of steps, and robot time stands still while the control code computes between calls. Units:
+ * number of steps (in the simulator robot time also stands still while control code computes between
+ * calls). Units:
  * millimetres, degrees (counter-clockwise), milliseconds. Per robot type (sonar mounting, cone width,
- * range, radius, speed limits) and the exact rounding rules: {@code hardware-sim/README.md}, section
+ * range, radius, speed limits) and the exact rounding rules: {@code hardware-sim/README.md}, sections
  * "Robot types" and "How a call becomes steps".
  */
 public interface Robot {
@@ -64,7 +65,11 @@ public interface Robot {
      */
     void sleep(long ms) throws InterruptedException;
 
-    /** The newest sonar ranges, mm, one per transducer in {@link #sonarAnglesDeg()} order. */
+    /**
+     * The newest sonar ranges, mm, one per transducer in {@link #sonarAnglesDeg()} order, measured from
+     * the transducer on the rim; the sonar's maximum range when nothing is in its cone, NaN before the
+     * first step.
+     */
     double[] sonarRanges();
 
     /** Direction of each sonar, degrees from the heading. */
