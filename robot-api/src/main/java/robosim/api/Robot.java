@@ -9,10 +9,9 @@ import java.util.List;
  *
  * <p>Robot time advances in whole time steps of {@link #stepMs()}; every blocking call takes a whole
  * number of steps (in the simulator robot time also stands still while control code computes between
- * calls). Units:
- * millimetres, degrees (counter-clockwise), milliseconds. Per robot type (sonar mounting, cone width,
- * range, radius, speed limits) and the exact rounding rules: {@code hardware-sim/README.md}, sections
- * "Robot types" and "How a call becomes steps".
+ * calls). Units: millimetres, degrees (counter-clockwise), milliseconds. Per robot type (sonar
+ * mounting, cone width, range, radius, speed limits) and the exact rounding rules:
+ * {@code hardware-sim/README.md}, sections "Robot types" and "How a call becomes steps".
  */
 public interface Robot {
     /** This robot's name. */
