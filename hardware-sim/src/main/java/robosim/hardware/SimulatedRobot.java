@@ -38,6 +38,11 @@ final class SimulatedRobot implements Robot {
     }
 
     @Override
+    public long stepMs() {
+        return stepMs;
+    }
+
+    @Override
     public List<String> robotNames() {
         return robotNames;
     }
@@ -112,7 +117,8 @@ final class SimulatedRobot implements Robot {
         if (ms < 0) {
             throw new IllegalArgumentException("time must be >= 0 ms, got " + ms);
         }
-        return Math.max(1, (ms + stepMs - 1) / stepMs);
+        long whole = ms / stepMs + (ms % stepMs == 0 ? 0 : 1); // rounded up, without overflow near Long.MAX_VALUE
+        return Math.max(1, whole);
     }
 
     @Override

@@ -4,25 +4,17 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.IOException;
-import java.net.InetAddress;
-import java.net.ServerSocket;
-import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import robosim.api.RobotControl;
-import robosim.protocol.ObjectConnection;
-import robosim.protocol.Protocol;
-import robosim.protocol.RobotHello;
-import robosim.protocol.RobotWelcome;
-import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
-/** The splitting rule: step 500 ms, 500 mm/s: move(750) is exactly three steps of 250 mm. */
+/**
+ * The splitting rule: step 500 ms, 500 mm/s: move(750) is exactly three steps of 250 mm; and how
+ * sleep rounds to whole steps.
+ */
 class CommandSplittingTest {
     private static StepResponse moved(double mm, double deg) {
         return new StepResponse(0, mm, deg, "", 0, 0, 0, new double[0], List.of(), List.of());
@@ -91,14 +83,10 @@ class CommandSplittingTest {
             robot.turn(90);
             robot.sleep(1000);
         };
-        List<StepRequest> seen = new ArrayList<>();
-        try (ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            CompletableFuture<Void> env = CompletableFuture.runAsync(() -> script(server, seen, 9));
-            HardwareSimulator sim = new HardwareSimulator("robot1", new ArRobot());
-            sim.connect(new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort()), 16);
-            assertEquals("scripted end", sim.run(control));
-            env.get(10, TimeUnit.SECONDS);
-        }
+        ScriptedEnvironment.Run run = ScriptedEnvironment.run(control, 500, 9);
+        assertEquals(ScriptedEnvironment.END_REASON, run.endReason());
+        assertEquals("ArRobot", run.hello().properties().type());
+        List<StepRequest> seen = run.requests();
         double[] moves = seen.stream().mapToDouble(StepRequest::moveMm).toArray();
         double[] turns = seen.stream().mapToDouble(StepRequest::turnDeg).toArray();
         assertEquals(List.of(250.0, 250.0, 250.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0), box(moves));
@@ -108,33 +96,50 @@ class CommandSplittingTest {
         assertTrue(seen.get(0).wantsSonar());
     }
 
+    /**
+     * sleep(ms) rounds up to whole steps and takes at least one: with 250 ms steps, sleep(0) and
+     * sleep(250) take one step, sleep(251) two, sleep(600) three. Each sleep is preceded by a message
+     * naming it, which goes out with that sleep's first step, so the steps between two messages are
+     * the steps the sleep between them took.
+     */
+    @Test
+    void sleepRoundsUpToWholeStepsAndTakesAtLeastOne() throws Exception {
+        long[] sleeps = {0, 250, 251, 600, 1};
+        RobotControl control = robot -> {
+            for (long ms : sleeps) {
+                robot.send("robot2", "sleep " + ms);
+                robot.sleep(ms);
+            }
+        };
+        List<StepRequest> seen = ScriptedEnvironment.run(control, 250, 10).requests();
+        List<Integer> firstSteps = new ArrayList<>();
+        for (int k = 0; k < seen.size(); k++) {
+            if (!seen.get(k).messages().isEmpty()) {
+                assertEquals("sleep " + sleeps[firstSteps.size()], seen.get(k).messages().get(0).payload());
+                firstSteps.add(k);
+            }
+        }
+        assertEquals(List.of(0, 1, 2, 4, 7), firstSteps, "steps taken: 1, 1, 2, 3, then sleep(1) from step 7");
+        assertTrue(seen.stream().allMatch(q -> q.moveMm() == 0 && q.turnDeg() == 0), "sleeping stands still");
+    }
+
+    /** The longest sleep (and wait) stays asleep: rounding up does not overflow into a one-step sleep. */
+    @Test
+    void sleepOfLongMaxValueDoesNotEnd() throws Exception {
+        RobotControl control = robot -> {
+            robot.sleep(Long.MAX_VALUE);
+            robot.send("robot2", "woke up");
+        };
+        List<StepRequest> seen = ScriptedEnvironment.run(control, 250, 6).requests();
+        assertEquals(6, seen.size());
+        assertTrue(seen.stream().allMatch(q -> q.messages().isEmpty()), "still asleep after 6 steps");
+    }
+
     private static List<Double> box(double[] a) {
         List<Double> l = new ArrayList<>();
         for (double v : a) {
             l.add(v);
         }
         return l;
-    }
-
-    /** A fake Environment that grants every request in full for {@code steps} steps, then ends. */
-    private static void script(ServerSocket server, List<StepRequest> seen, int steps) {
-        try (Socket s = server.accept(); ObjectConnection c = new ObjectConnection(s, 16)) {
-            RobotHello hello = c.read(RobotHello.class);
-            assertEquals("ArRobot", hello.properties().type());
-            c.write(RobotWelcome.accepted(500, 1000, 1000, 0, List.of("robot1", "robot2")));
-            for (int k = 0; k < steps; k++) {
-                c.writeStep(k);
-                c.flush();
-                StepRequest q = c.read(StepRequest.class);
-                seen.add(q);
-                c.write(new StepResponse(k, q.moveMm(), q.turnDeg(), "", 0, 0, 0, new double[8], List.of(),
-                        List.of()));
-            }
-            c.writeStep(Protocol.END_OF_SIMULATION);
-            c.write(new SimulationEnd(steps - 1, "scripted end"));
-            c.flush();
-        } catch (IOException e) {
-            throw new IllegalStateException(e);
-        }
     }
 }

@@ -1,15 +1,31 @@
 package robosim.hardware;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import robosim.api.RobotControl;
 import robosim.protocol.CommEvent;
 
-/** What the robot API refuses at once, and what it queues for the next step. */
+/** What the robot API refuses at once, what it queues for the next step, and the time step it reports. */
 class SimulatedRobotTest {
+    @Test
+    void stepMsIsTheTimeStepOfTheEnvironmentsWelcome() throws Exception {
+        long[] seen = new long[2];
+        RobotControl control = robot -> {
+            seen[0] = robot.stepMs();
+            robot.sleep(1);
+            seen[1] = robot.stepMs();
+        };
+        ScriptedEnvironment.run(control, 125, 3);
+        assertArrayEquals(new long[] {125, 125}, seen, "before the first step and after it");
+        HardwareSimulator sim = new HardwareSimulator("r1", new Scout());
+        assertEquals(40, new SimulatedRobot(sim, List.of("r1"), 40).stepMs());
+    }
+
     @Test
     void sendQueuesBroadcastAddressesEveryoneAndOversizedTextIsRefusedAtOnce() {
         HardwareSimulator sim = new HardwareSimulator("r1", new ArRobot());

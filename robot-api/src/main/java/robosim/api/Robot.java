@@ -3,24 +3,43 @@ package robosim.api;
 import java.util.List;
 
 /**
- * A robot as its control code sees it. Blocking calls ({@link #move}, {@link #turn}, {@link #sleep},
- * {@link #waitForMessage}) return when the robot has done them; the others answer at once from the
- * robot's newest readings.
+ * A robot as its control code sees it. Blocking calls ({@link #move}, {@link #turn}, {@link #tag},
+ * {@link #sleep}, {@link #waitForMessage}) return when the robot has done them; the others answer at
+ * once from the robot's newest readings.
+ *
+ * <p>Robot time advances in whole time steps of {@link #stepMs()}; every blocking call takes a whole
+ * number of steps (in the simulator robot time also stands still while control code computes between
+ * calls). Units: millimetres, degrees (counter-clockwise), milliseconds. Per robot type (sonar
+ * mounting, cone width, range, radius, speed limits) and the exact rounding rules:
+ * {@code hardware-sim/README.md}, sections "Robot types" and "How a call becomes steps".
  */
 public interface Robot {
     /** This robot's name. */
     String name();
+
+    /**
+     * The simulation's time step, ms: the robot time one step takes, the same for every robot of the
+     * world and fixed for the whole run (a simulator takes it from its world; a real robot from its
+     * control cycle).
+     */
+    long stepMs();
 
     /** The names of every robot in the world, this one included. */
     List<String> robotNames();
 
     /**
      * Drives {@code mm} along the heading (negative: backwards) at the set velocity; returns the
-     * distance actually covered, which is shorter when the robot touched something.
+     * distance actually covered, which is shorter when the robot touched something. Takes one step per
+     * piece of at most {@code velocity() * stepMs() / 1000} mm; a shorter last piece still takes a
+     * whole step (step 500 ms, 500 mm/s: {@code move(600)} is 250 + 250 + 100 mm in three steps).
+     * {@code move(0)} returns 0 at once, without a step.
      */
     double move(double mm) throws InterruptedException;
 
-    /** Turns in place by {@code deg} (positive: counter-clockwise); returns the angle turned. */
+    /**
+     * Turns in place by {@code deg} (positive: counter-clockwise); returns the angle turned. Cut into
+     * steps like {@link #move}, pieces of at most {@code rotVelocity() * stepMs() / 1000} degrees.
+     */
     double turn(double deg) throws InterruptedException;
 
     /** Sets the speed for {@link #move}, mm/s (limited to the robot's maximum). */
@@ -39,10 +58,17 @@ public interface Robot {
      */
     String tag() throws InterruptedException;
 
-    /** Waits {@code ms} of robot time, standing still. */
+    /**
+     * Waits {@code ms} of robot time, standing still, rounded up to whole steps and at least one step:
+     * with 500 ms steps {@code sleep(0)} and {@code sleep(500)} take one step, {@code sleep(501)} two.
+     */
     void sleep(long ms) throws InterruptedException;
 
-    /** The newest sonar ranges, mm, one per transducer in {@link #sonarAnglesDeg()} order. */
+    /**
+     * The newest sonar ranges, mm, one per transducer in {@link #sonarAnglesDeg()} order, measured from
+     * the transducer on the rim; the sonar's maximum range when nothing is in its cone, NaN before the
+     * first step.
+     */
     double[] sonarRanges();
 
     /** Direction of each sonar, degrees from the heading. */
@@ -82,6 +108,10 @@ public interface Robot {
     /** The oldest message not yet received, or null if there is none. */
     Message receive();
 
-    /** Waits up to {@code timeoutMs} of robot time for a message; null if none came. */
+    /**
+     * Returns the oldest waiting message at once, if there is one; otherwise waits for one, standing
+     * still, up to {@code timeoutMs} rounded up to whole steps (at least one step), and ends with the
+     * step in which a message arrives. Null if none came.
+     */
     Message waitForMessage(long timeoutMs) throws InterruptedException;
 }
