@@ -400,7 +400,7 @@ class FaultsTest {
             socket.getOutputStream().write(bytes);
             socket.getOutputStream().flush();
             socket.shutdownOutput();
-        } catch (java.net.SocketException closedWhileWriting) {
+        } catch (SocketException closedWhileWriting) {
             // refused before the end of our bytes: read what was said before the close
         }
         return readToEnd(socket.getInputStream());
