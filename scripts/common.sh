@@ -143,19 +143,51 @@ robosim_need_xvfb() {
   fi
 }
 
-# Where a benchmark or screenshot script writes: docs/SUBDIR with --write-docs ($1 = 1), DIR with
-# --out DIR ($2), else a fresh temporary directory. Prints the directory.
+# The arguments of the benchmark and screenshot scripts: -h/--help (prints the usage, exits 0),
+# --classpath (robosim_take_classpath), anything after `--` (into ROBOSIM_PASS, for the tool the
+# script runs) and, when $1 names the docs/ directory the script writes to, --write-docs and --out DIR.
+# Leaves the other arguments in ROBOSIM_ARGS; any other option: one line, exit 2.
+robosim_script_args() {
+  local docs=$1
+  shift
+  robosim_take_classpath "$@"
+  set -- "${ROBOSIM_ARGS[@]}"
+  ROBOSIM_ARGS=() ROBOSIM_PASS=() ROBOSIM_WRITE_DOCS=0 ROBOSIM_OUT_ARG="" ROBOSIM_DOCS=$docs
+  while [ $# -gt 0 ]; do
+    case $1 in
+      -h|--help) robosim_usage; exit 0 ;;
+      --) shift; ROBOSIM_PASS=("$@"); break ;;
+      --write-docs) [ -n "$docs" ] || robosim_fail "unknown option $1 (see --help)"; ROBOSIM_WRITE_DOCS=1 ;;
+      --out) [ -n "$docs" ] || robosim_fail "unknown option $1 (see --help)"
+        [ -n "${2:-}" ] || robosim_fail "--out needs a directory"; ROBOSIM_OUT_ARG=$2; shift ;;
+      --out=*) [ -n "$docs" ] || robosim_fail "unknown option --out (see --help)"; ROBOSIM_OUT_ARG=${1#--out=} ;;
+      -?*) robosim_fail "unknown option $1 (see --help)" ;;
+      *) ROBOSIM_ARGS+=("$1") ;;
+    esac
+    shift
+  done
+}
+
+# Checks that positional argument $1 (its name) has a whole number >= 1 as its value $2.
+robosim_count() {
+  [[ "$2" =~ ^[1-9][0-9]*$ ]] || robosim_fail "$1 must be a whole number >= 1, got '$2'"
+}
+
+# Where a benchmark or screenshot script writes (after robosim_script_args): the docs/ directory with
+# --write-docs, DIR with --out DIR (relative to where the user started the script), else a fresh
+# temporary directory. Makes it, says where on stderr, and prints it.
 robosim_out_dir() {
-  local write_docs=$1 out=$2 subdir=$3
-  if [ "$write_docs" = 1 ] && [ -n "$out" ]; then
+  local out
+  if [ "$ROBOSIM_WRITE_DOCS" = 1 ] && [ -n "$ROBOSIM_OUT_ARG" ]; then
     robosim_fail "give --write-docs or --out DIR, not both"
-  elif [ "$write_docs" = 1 ]; then
-    out="$ROBOSIM_HOME/$subdir"
-  elif [ -n "$out" ]; then
-    out=$(robosim_abs "$out")
+  elif [ "$ROBOSIM_WRITE_DOCS" = 1 ]; then
+    out="$ROBOSIM_HOME/$ROBOSIM_DOCS"
+  elif [ -n "$ROBOSIM_OUT_ARG" ]; then
+    out=$(robosim_abs "$ROBOSIM_OUT_ARG")
   else
     out=$(mktemp -d "${TMPDIR:-/tmp}/robosim-$ROBOSIM_SCRIPT.XXXXXX")
   fi
   mkdir -p "$out" || robosim_fail "cannot create the output directory $out"
+  echo "$ROBOSIM_SCRIPT: writing to $out" >&2
   echo "$out"
 }
