@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# A library sourced by bench-reset.sh and bench-memory.sh, not a command: reading heaps and following
-# a headless run's progress.
+# bench-lib.sh: a library sourced by bench-reset.sh and bench-memory.sh, not a command: reading heaps
+# and following a headless run's progress.
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;

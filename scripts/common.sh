@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# A library sourced by every script in scripts/, not a command: finds the repository, rebuilds it
-# when a source is newer than the build, takes --classpath out of the arguments, and runs a RoboSim
-# main class on the built class path. See runner/README.md.
+# common.sh: a library sourced by every script in scripts/, not a command: finds the repository,
+# rebuilds it when a source is newer than the build, takes --classpath out of the arguments, and runs
+# a RoboSim main class on the built class path. See runner/README.md.
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
