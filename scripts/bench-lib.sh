@@ -4,7 +4,7 @@
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
-    *) echo "bench-lib.sh: a library for bench-reset.sh and bench-memory.sh, not a command (see --help)" >&2; exit 2 ;;
+    *) echo "bench-lib.sh: a library for bench-reset.sh and bench-memory.sh, not a command (given: $*; see --help)" >&2; exit 2 ;;
   esac
 fi
 

@@ -5,7 +5,7 @@
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
-    *) echo "common.sh: a library for the scripts in scripts/, not a command (see --help)" >&2; exit 2 ;;
+    *) echo "common.sh: a library for the scripts in scripts/, not a command (given: $*; see --help)" >&2; exit 2 ;;
   esac
 fi
 ROBOSIM_HOME="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
