@@ -7,19 +7,25 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
 
-/** Starts Java child processes on this JVM's class path and stops them all at the end. */
+/**
+ * Starts Java child processes on this JVM's class path and stops them all at the end, or when this JVM
+ * is stopped (SIGTERM, Ctrl-C: a shutdown hook), so that killing a runner never leaves its children.
+ */
 final class ChildProcesses implements AutoCloseable {
-    private final List<Process> started = new ArrayList<>();
+    private final List<Process> started = new CopyOnWriteArrayList<>();
     private final List<String> names = new ArrayList<>();
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final List<String> jvmOptions;
+    private final Thread stopOnExit = new Thread(this::stopAll, "stop-children");
 
     ChildProcesses(List<String> jvmOptions) {
         this.jvmOptions = List.copyOf(jvmOptions);
+        Runtime.getRuntime().addShutdownHook(stopOnExit);
     }
 
     /**
@@ -97,6 +103,15 @@ final class ChildProcesses implements AutoCloseable {
 
     @Override
     public void close() {
+        stopAll();
+        try {
+            Runtime.getRuntime().removeShutdownHook(stopOnExit);
+        } catch (IllegalStateException shuttingDown) {
+            // the JVM is stopping: the hook runs stopAll anyway
+        }
+    }
+
+    private void stopAll() {
         for (Process p : started) {
             p.descendants().forEach(ProcessHandle::destroyForcibly);
             p.destroyForcibly();

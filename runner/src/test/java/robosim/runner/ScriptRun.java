@@ -2,7 +2,9 @@ package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.BufferedReader;
 import java.io.IOException;
+import java.io.InputStreamReader;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -22,15 +24,47 @@ record ScriptRun(int exit, String stdout, String stderr) {
 
     /** Runs {@code cmd} in {@code dir} with {@code env} added (and no ROBOSIM_* of ours); logs go to {@code logs}. */
     static ScriptRun of(Path dir, Map<String, String> env, Path logs, String... cmd) throws Exception {
-        List<String> full = new ArrayList<>(List.of("setsid"));
-        full.addAll(List.of(cmd));
         Path out = Files.createTempFile(logs, "stdout", ".txt");
         Path err = Files.createTempFile(logs, "stderr", ".txt");
-        ProcessBuilder pb = new ProcessBuilder(full).directory(dir.toFile())
-                .redirectOutput(out.toFile()).redirectError(err.toFile());
+        Process p = start(dir, env, cmd, ProcessBuilder.Redirect.to(out.toFile()), err);
+        int exit = awaitWithEveryProcess(p, cmd);
+        return new ScriptRun(exit, Files.readString(out), Files.readString(err));
+    }
+
+    /** As {@link #of}, but stops the script (SIGTERM) as soon as it prints a line starting with {@code line}. */
+    static ScriptRun terminatedAfter(String line, Path dir, Map<String, String> env, Path logs, String... cmd)
+            throws Exception {
+        Path err = Files.createTempFile(logs, "stderr", ".txt");
+        Process p = start(dir, env, cmd, ProcessBuilder.Redirect.PIPE, err);
+        StringBuilder seen = new StringBuilder();
+        try (BufferedReader r = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8))) {
+            String l = r.readLine();
+            while (l != null && !l.startsWith(line)) {
+                seen.append(l).append('\n');
+                l = r.readLine();
+            }
+            assertTrue(l != null, String.join(" ", cmd) + " ended before printing '" + line + "': " + seen);
+            p.destroy();
+            int exit = awaitWithEveryProcess(p, cmd);
+            return new ScriptRun(exit, seen.toString(), Files.readString(err));
+        } finally {
+            p.destroyForcibly();
+        }
+    }
+
+    private static Process start(Path dir, Map<String, String> env, String[] cmd, ProcessBuilder.Redirect stdout,
+            Path stderr) throws IOException {
+        List<String> full = new ArrayList<>(List.of("setsid"));
+        full.addAll(List.of(cmd));
+        ProcessBuilder pb = new ProcessBuilder(full).directory(dir.toFile()).redirectOutput(stdout)
+                .redirectError(stderr.toFile());
         pb.environment().keySet().removeIf(k -> k.startsWith("ROBOSIM_"));
         pb.environment().putAll(env);
-        Process p = pb.start();
+        return pb.start();
+    }
+
+    /** Waits for {@code p}, then for every process of its session; returns its exit code. */
+    private static int awaitWithEveryProcess(Process p, String[] cmd) throws Exception {
         long session = p.pid(); // setsid execs in place: not a group leader, so its pid is the session id
         String what = String.join(" ", cmd);
         try {
@@ -44,7 +78,7 @@ record ScriptRun(int exit, String stdout, String stderr) {
                 }
             }
             assertTrue(left.isEmpty(), what + " left processes running: " + left);
-            return new ScriptRun(p.exitValue(), Files.readString(out), Files.readString(err));
+            return p.exitValue();
         } finally {
             p.destroyForcibly();
             inSession(session).forEach(ProcessHandle::destroyForcibly);

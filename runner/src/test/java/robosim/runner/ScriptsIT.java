@@ -116,6 +116,16 @@ class ScriptsIT {
         assertRobotDrove(run);
     }
 
+    /** SIGTERM (a kill, or Ctrl-C) on headless.sh also ends the Environment, Geometry and robot it started. */
+    @Test
+    void stoppingHeadlessStopsEveryProcessItStarted() throws Exception {
+        writeWorldAndControlClass();
+        ScriptRun run = ScriptRun.terminatedAfter("step ", tmp, Map.of(), tmp,
+                REPO.resolve("scripts/headless.sh").toString(), "--env", "world.xml", "--steps", "1000000",
+                "--speed", "1", "--progress", "--classpath", "classes");
+        assertEquals(128 + 15, run.exit(), "ended by SIGTERM; stderr: " + run.stderr());
+    }
+
     private void assertRobotDrove(ScriptRun run) throws IOException {
         assertEquals(0, run.exit(), "stderr: " + run.stderr());
         assertTrue(run.stdout().contains("steps=20 robots=1"), run.stdout());
