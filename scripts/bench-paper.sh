@@ -19,7 +19,7 @@ robosim_build_if_stale
 mkdir -p bench/classes && javac -d bench/classes bench/FloorProcesses.java
 declare -a f fp hp ho
 rate() { grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }
-for i in $(seq "$reps"); do
+for _ in $(seq "$reps"); do
   l=$(java "$floor" 10 "$steps" obj); echo "floor            $l"; f+=("$(echo "$l" | rate)")
   l=$(java -cp bench/classes FloorProcesses 10 "$steps" obj); echo "floor-processes  $l"; fp+=("$(echo "$l" | rate)")
   l=$(scripts/headless.sh --env test-envs/paper-benchmark.xml --steps "$steps" "$@" 2>/dev/null | tail -n 1); echo "headless         $l"; hp+=("$(echo "$l" | rate)")

@@ -16,7 +16,7 @@ robosim_build_if_stale
 rate() { grep -oE '(^| )steps_per_s=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 declare -a none three every
-for i in $(seq "$reps"); do
+for _ in $(seq "$reps"); do
   l=$(scripts/headless.sh --env test-envs/paper-benchmark.xml --steps "$steps" 2>/dev/null | tail -n 1)
   echo "no viewers        $l"; none+=("$(echo "$l" | rate)")
   l=$(scripts/headless.sh --env test-envs/paper-benchmark.xml --steps "$steps" --live-viewers 2 --frozen-viewers 1 2>/dev/null | tail -n 1)

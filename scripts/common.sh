@@ -153,6 +153,7 @@ robosim_script_args() {
   robosim_take_classpath "$@"
   set -- "${ROBOSIM_ARGS[@]}"
   ROBOSIM_ARGS=() ROBOSIM_PASS=() ROBOSIM_WRITE_DOCS=0 ROBOSIM_OUT_ARG="" ROBOSIM_DOCS=$docs
+  # shellcheck disable=SC2034  # ROBOSIM_PASS is read by the calling script
   while [ $# -gt 0 ]; do
     case $1 in
       -h|--help) robosim_usage; exit 0 ;;

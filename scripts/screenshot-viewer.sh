@@ -10,7 +10,9 @@ robosim_script_args docs "$@"
 [ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, OUT.png, got ${ROBOSIM_ARGS[*]} (see --help)"
 [ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
 if [ ${#ROBOSIM_ARGS[@]} = 1 ]; then
-  [ "$ROBOSIM_WRITE_DOCS" = 0 ] && [ -z "$ROBOSIM_OUT_ARG" ] || robosim_fail "give OUT.png, --out DIR or --write-docs, not more than one"
+  if [ "$ROBOSIM_WRITE_DOCS" = 1 ] || [ -n "$ROBOSIM_OUT_ARG" ]; then
+    robosim_fail "give OUT.png, --out DIR or --write-docs, not more than one"
+  fi
   out=$(robosim_abs "${ROBOSIM_ARGS[0]}")
 else
   out="$(robosim_out_dir)/viewer.png"
