@@ -90,20 +90,36 @@ robosim_newer_source() {
   find "${paths[@]}" -newer "$1" -print -quit
 }
 
-# Builds (quietly, output on stderr) when nothing is built yet or a source is newer than the build.
-robosim_build_if_stale() {
-  local jar changed why=""
+# Why a build is needed (nothing built, or the first source newer than the build), or nothing.
+robosim_why_build() {
+  local jar changed
   jar=$(robosim_runner_jar)
   if [ -z "$jar" ] || [ ! -d "$ROBOSIM_LIB" ]; then
-    why="RoboSim is not built yet"
+    echo "RoboSim is not built yet"
   else
     changed=$(robosim_newer_source "$jar")
-    [ -z "$changed" ] || why="RoboSim sources changed since the last build (${changed#"$ROBOSIM_HOME"/})"
+    [ -z "$changed" ] || echo "RoboSim sources changed since the last build (${changed#"$ROBOSIM_HOME"/})"
   fi
+}
+
+# Builds (quietly, output on stderr) when nothing is built yet or a source is newer than the build.
+# One build at a time per repository: scripts started together wait (flock) and find it done.
+robosim_build_if_stale() {
+  local why lock
+  why=$(robosim_why_build)
   [ -n "$why" ] || return 0
-  echo "$why: rebuilding (./mvnw -q package -DskipTests) ..." >&2
-  (cd "$ROBOSIM_HOME" && ./mvnw -q -B -ntp package -DskipTests) >&2 \
-    || { echo "$ROBOSIM_SCRIPT: the build failed (its errors are above); nothing was started" >&2; exit 1; }
+  lock="${TMPDIR:-/tmp}/robosim-build-$(echo "$ROBOSIM_HOME" | cksum | cut -d' ' -f1).lock"
+  exec 9>"$lock"
+  if command -v flock >/dev/null; then
+    flock 9
+    why=$(robosim_why_build)
+  fi
+  if [ -n "$why" ]; then
+    echo "$why: rebuilding (./mvnw -q package -DskipTests) ..." >&2
+    (cd "$ROBOSIM_HOME" && ./mvnw -q -B -ntp package -DskipTests) >&2 \
+      || { echo "$ROBOSIM_SCRIPT: the build failed (its errors are above); nothing was started" >&2; exit 1; }
+  fi
+  exec 9>&-
 }
 
 # RoboSim's class path: every module's jar and dependency, then the user's ROBOSIM_CLASSPATH entries

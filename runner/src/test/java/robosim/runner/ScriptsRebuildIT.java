@@ -10,8 +10,10 @@ import java.nio.file.Path;
 import java.nio.file.attribute.FileTime;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -45,6 +47,7 @@ class ScriptsRebuildIT {
         script("mvnw", """
                 #!/usr/bin/env bash
                 echo "$*" >> mvnw.calls
+                sleep 1 # a build takes a while: scripts started together overlap it
                 [ "${FAKE_BUILD_FAILS:-}" = 1 ] && { echo "[ERROR] COMPILATION ERROR"; exit 1; }
                 touch runner/target/runner-0.1.jar
                 """);
@@ -84,6 +87,22 @@ class ScriptsRebuildIT {
         assertEquals(List.of("-q -B -ntp package -DskipTests"), Files.readAllLines(repo.resolve("mvnw.calls")));
         assertEquals("", probe(Map.of()).stderr(), "built: no second build");
         assertEquals(1, Files.readAllLines(repo.resolve("mvnw.calls")).size());
+    }
+
+    @Test
+    void scriptsStartedTogetherBuildOnce() throws Exception {
+        touch("alpha/src/main/java/A.java");
+        List<Process> probes = new ArrayList<>();
+        for (int i = 0; i < 3; i++) {
+            probes.add(new ProcessBuilder(repo.resolve("scripts/probe.sh").toString()).directory(repo.toFile())
+                    .redirectOutput(ProcessBuilder.Redirect.DISCARD)
+                    .redirectError(ProcessBuilder.Redirect.DISCARD).start());
+        }
+        for (Process p : probes) {
+            assertTrue(p.waitFor(60, TimeUnit.SECONDS), "probe did not end");
+            assertEquals(0, p.exitValue());
+        }
+        assertEquals(1, Files.readAllLines(repo.resolve("mvnw.calls")).size(), "one build for three scripts");
     }
 
     @Test
