@@ -1,4 +1,12 @@
-# Sourced by bench-reset.sh and bench-memory.sh: reading heaps and following a headless run's progress.
+#!/usr/bin/env bash
+# bench-lib.sh: a library sourced by bench-reset.sh and bench-memory.sh, not a command: reading heaps
+# and following a headless run's progress.
+if [ "${BASH_SOURCE[0]}" = "$0" ]; then
+  case ${1:-} in
+    -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
+    *) echo "bench-lib.sh: a library for bench-reset.sh and bench-memory.sh, not a command (given: $*; see --help)" >&2; exit 2 ;;
+  esac
+fi
 
 # Old-generation size (KB) of JVM $1 after a full GC (SerialGC); empty if there is no such JVM.
 tenured() {

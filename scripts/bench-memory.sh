@@ -2,11 +2,17 @@
 # Heap over a long run at the default reset interval: the paper benchmark (10 robots in one process,
 # Geometry as a process) for 130,000 steps (a margin for jcmd); at step 10,000 and at step 100,000 a full GC in the
 # Environment, the robots' JVM and Geometry, then their old-generation sizes (SerialGC).
-#   scripts/bench-memory.sh          (writes docs/perf/memory.txt)
+#   scripts/bench-memory.sh [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+# Writes memory.txt into a fresh temporary directory (its path is printed), into DIR with --out DIR,
+# or into docs/perf/ (the file docs/PERFORMANCE.md quotes) with --write-docs.
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-mkdir -p docs/perf
-out=docs/perf/memory.txt
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_script_args docs/perf "$@"
+[ ${#ROBOSIM_ARGS[@]} = 0 ] || robosim_fail "takes no arguments, got '${ROBOSIM_ARGS[0]}' (see --help)"
+[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
+out="$(robosim_out_dir)/memory.txt"
+cd "$ROBOSIM_HOME"
+robosim_build_if_stale
 steps=130000
 source scripts/bench-lib.sh
 log=$(mktemp)
@@ -24,3 +30,4 @@ done
 wait "$run" || true
 tail -n 1 "$log" | tee -a "$out"
 rm -f "$log"
+echo "bench-memory: wrote $out"

@@ -1,20 +1,25 @@
 #!/usr/bin/env bash
 # The original report's benchmark against the floor, in one sitting, repeated and alternated:
-#   scripts/bench-paper.sh [REPS] [STEPS] [extra headless.sh options...]
-# Runs, REPS times each in turn: ../shared/bench/Floor.java (clients as threads), bench/FloorProcesses
-# (clients as processes), headless.sh on test-envs/paper-benchmark.xml (robots as processes) and the
-# same with --robots-in-one-process. Prints every line, then the medians and the ratios to the floor.
+#   scripts/bench-paper.sh [REPS] [STEPS] [--classpath PATH[:PATH...]] [-- headless.sh options...] [--help]
+# REPS defaults to 3, STEPS to 5000. Runs, REPS times each in turn: ../shared/bench/Floor.java (clients
+# as threads), bench/FloorProcesses (clients as processes), headless.sh on test-envs/paper-benchmark.xml
+# (robots as processes) and the same with --robots-in-one-process. Prints every line, then the
+# medians and the ratios to the floor; writes no file (bench/FloorProcesses compiles to bench/classes).
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-reps=${1:-3}; steps=${2:-5000}; shift $(( $# > 2 ? 2 : $# )) || true
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_script_args "" "$@"
+[ ${#ROBOSIM_ARGS[@]} -le 2 ] || robosim_fail "takes at most REPS and STEPS, got ${ROBOSIM_ARGS[*]} (see --help)"
+reps=${ROBOSIM_ARGS[0]:-3}; steps=${ROBOSIM_ARGS[1]:-5000}
+robosim_count REPS "$reps"; robosim_count STEPS "$steps"
+set -- "${ROBOSIM_PASS[@]}"
+cd "$ROBOSIM_HOME"
 floor=../shared/bench/Floor.java
-[ -f "$floor" ] || { echo "bench-paper: $floor not found (the shared floor lives beside the repository)" >&2; exit 2; }
-source scripts/common.sh
-robosim_build_if_missing
+[ -f "$floor" ] || robosim_fail "$floor not found (the shared floor lives beside the repository)"
+robosim_build_if_stale
 mkdir -p bench/classes && javac -d bench/classes bench/FloorProcesses.java
 declare -a f fp hp ho
 rate() { grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }
-for i in $(seq "$reps"); do
+for _ in $(seq "$reps"); do
   l=$(java "$floor" 10 "$steps" obj); echo "floor            $l"; f+=("$(echo "$l" | rate)")
   l=$(java -cp bench/classes FloorProcesses 10 "$steps" obj); echo "floor-processes  $l"; fp+=("$(echo "$l" | rate)")
   l=$(scripts/headless.sh --env test-envs/paper-benchmark.xml --steps "$steps" "$@" 2>/dev/null | tail -n 1); echo "headless         $l"; hp+=("$(echo "$l" | rate)")

@@ -3,15 +3,24 @@
 # Geometry as a process) for STEPS + 30% steps at each interval (the margin lets jcmd finish); at step
 # STEPS a full GC in the Environment, the robots' and the Geometry process, then their old-generation
 # sizes (SerialGC). steps_per_s is over the whole run.
-#   scripts/bench-reset.sh [STEPS]     (default 100000; writes docs/perf/reset-interval.txt)
+#   scripts/bench-reset.sh [STEPS] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+# STEPS defaults to 100000. Writes reset-interval.txt into a fresh temporary directory (its path is
+# printed), into DIR with --out DIR, or into docs/perf/ (which docs/PERFORMANCE.md quotes and
+# bench.sh plots) with --write-docs.
 # The floor (../shared/bench/Floor.java 10 STEPS obj) runs before and after, in the same sitting; each
 # row's ratio is its steps/s over their mean.
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-steps=${1:-100000}
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_script_args docs/perf "$@"
+[ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, STEPS, got ${ROBOSIM_ARGS[*]} (see --help)"
+[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
+steps=${ROBOSIM_ARGS[0]:-100000}
+robosim_count STEPS "$steps"
 total=$((steps + steps * 3 / 10))
-mkdir -p docs/perf
-out=docs/perf/reset-interval.txt
+[ -f "$ROBOSIM_HOME/../shared/bench/Floor.java" ] || robosim_fail "../shared/bench/Floor.java not found (the shared floor lives beside the repository)"
+out="$(robosim_out_dir)/reset-interval.txt"
+cd "$ROBOSIM_HOME"
+robosim_build_if_stale
 source scripts/bench-lib.sh
 floor_run() { java ../shared/bench/Floor.java 10 "$steps" obj | awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "=");
   v[kv[1]] = kv[2] } } END { sub(/s$/, "", v["wall"]); printf "%.1f", v["steps"] / v["wall"] }'; }
@@ -40,3 +49,4 @@ for row in "${rows[@]}"; do
   set -- $row
   awk -v n="$1" -v r="$2" -v a="$f1" -v b="$f2" 'BEGIN { printf "ratio reset_every=%s %.2f\n", (n == 0 ? "never" : n), r / ((a + b) / 2) }'
 done | tee -a "$out"
+echo "bench-reset: wrote $out"

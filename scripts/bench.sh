@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
 # The benchmark suite (outside the tests): every speed question of the performance work, each run
 # next to ../shared/bench/Floor.java in the same sitting, repeated and alternated.
-#   scripts/bench.sh [REPS] [--quick]
-# Writes docs/perf/results.csv (one row per run) and the plots docs/perf/*.png (robosim.bench.Plots,
-# which also reads docs/perf/reset-interval.txt and serialization.txt / message-sizes.txt from
-# bench-reset.sh and bench-serialization.sh). --quick: one repetition with fewer steps (a smoke run).
+#   scripts/bench.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+# REPS defaults to 3. --quick: one repetition with fewer steps (a smoke run).
+# Writes results.csv (one row per run, appended) and the plots *.png (robosim.bench.Plots, which also
+# reads reset-interval.txt and serialization.txt / message-sizes.txt from bench-reset.sh and
+# bench-serialization.sh in the same directory) into a fresh temporary directory (its path is
+# printed), into DIR with --out DIR, or into docs/perf/ (which docs/PERFORMANCE.md quotes) with
+# --write-docs.
 #
 # Scenarios (column `scenario`):
 #   floor      Floor.java N STEPS obj, and obj-nostep at 10 (the reference; `ratio_to_floor` divides by it)
@@ -14,20 +17,25 @@
 #              each coordinator design and each of the report's untested ideas
 #   designs    bench-100.xml, robots in one process: each coordinator design and robot exchange threading
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-reps=${1:-3}
-quick=0
-for a in "$@"; do [ "$a" = "--quick" ] && quick=1; done
-[[ "$reps" =~ ^[0-9]+$ ]] || reps=3
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+quick=0 args=()
+for a in "$@"; do
+  if [ "$a" = --quick ]; then quick=1; else args+=("$a"); fi
+done
+robosim_script_args docs/perf "${args[@]}"
+[ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, REPS, got ${ROBOSIM_ARGS[*]} (see --help)"
+[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
+reps=${ROBOSIM_ARGS[0]:-3}
+robosim_count REPS "$reps"
 [ "$quick" = 1 ] && reps=1
+cd "$ROBOSIM_HOME"
 floor=../shared/bench/Floor.java
-[ -f "$floor" ] || { echo "bench: $floor not found (the shared floor lives beside the repository)" >&2; exit 2; }
-source scripts/common.sh
-robosim_build_if_missing
+[ -f "$floor" ] || robosim_fail "$floor not found (the shared floor lives beside the repository)"
+dir=$(robosim_out_dir)
+robosim_build_if_stale
 ls bench-jmh/target/lib/xchart-*.jar >/dev/null 2>&1 || ./mvnw -q -B package -DskipTests -pl bench-jmh -am
 
-out=docs/perf/results.csv
-mkdir -p docs/perf
+out=$dir/results.csv
 sitting=$(date -u +%Y-%m-%dT%H:%MZ)
 [ -f "$out" ] || echo "sitting,scenario,variant,robots,robots_in,steps,rep,steps_per_s,robot_steps_per_s,floor_steps_per_s,ratio_to_floor" > "$out"
 
@@ -101,5 +109,5 @@ for rep in $(seq "$reps"); do
 done
 
 jar=$(ls bench-jmh/target/bench-jmh-*.jar | grep -v sources | head -n 1)
-java -cp "bench-jmh/target/lib/*:$jar" robosim.bench.Plots docs/perf
-echo "bench: rows appended to $out; plots in docs/perf/*.png"
+java -cp "bench-jmh/target/lib/*:$jar" robosim.bench.Plots "$dir"
+echo "bench: rows appended to $out; plots in $dir/*.png"

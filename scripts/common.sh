@@ -1,22 +1,154 @@
-# Sourced by the launch scripts: finds the repository, builds it once if the jars are missing,
-# and runs a RoboSim main class on the built class path.
+#!/usr/bin/env bash
+# common.sh: a library sourced by every script in scripts/, not a command: finds the repository,
+# rebuilds it when a source is newer than the build, takes --classpath out of the arguments, and runs
+# a RoboSim main class on the built class path. See runner/README.md.
+if [ "${BASH_SOURCE[0]}" = "$0" ]; then
+  case ${1:-} in
+    -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
+    *) echo "common.sh: a library for the scripts in scripts/, not a command (given: $*; see --help)" >&2; exit 2 ;;
+  esac
+fi
 ROBOSIM_HOME="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 ROBOSIM_LIB="$ROBOSIM_HOME/runner/target/lib"
+ROBOSIM_SCRIPT=$(basename "$0" .sh)
+ROBOSIM_CALLER_DIR=$PWD   # where the user started the script, before any cd
 
-robosim_build_if_missing() {
-  if ! ls "$ROBOSIM_HOME"/runner/target/runner-*.jar >/dev/null 2>&1 || [ ! -d "$ROBOSIM_LIB" ]; then
-    echo "RoboSim is not built yet: building it once with ./mvnw package -DskipTests ..." >&2
-    (cd "$ROBOSIM_HOME" && ./mvnw -q -B package -DskipTests) >&2 || { echo "build failed" >&2; exit 1; }
+# Bad input: one line naming the script, exit 2.
+robosim_fail() {
+  echo "$ROBOSIM_SCRIPT: $*" >&2
+  exit 2
+}
+
+# The calling script's usage: its header comment (from line 2 to the first line that is not a comment).
+robosim_usage() {
+  sed -nE '2,/^[^#]/s/^# ?//p' "$0"
+}
+
+# Path $1 made absolute against the directory the user started the script in.
+robosim_abs() {
+  case $1 in /*) echo "$1" ;; *) echo "$ROBOSIM_CALLER_DIR/$1" ;; esac
+}
+
+# Takes every --classpath PATH[:PATH...] and --classpath=PATH[:PATH...] before a `--` out of the
+# arguments; the rest are left in ROBOSIM_ARGS. Their entries, then those of ROBOSIM_CLASSPATH, made
+# absolute, become ROBOSIM_CLASSPATH, exported so that scripts started from here add the same entries.
+robosim_take_classpath() {
+  local given=() entries=() parts=() joined e
+  ROBOSIM_ARGS=()
+  while [ $# -gt 0 ]; do
+    case $1 in
+      --) ROBOSIM_ARGS+=("$@"); break ;;
+      --classpath) [ -n "${2:-}" ] || robosim_fail "--classpath needs a value: PATH[:PATH...]"
+        given+=("$2"); shift ;;
+      --classpath=*) [ -n "${1#--classpath=}" ] || robosim_fail "--classpath needs a value: PATH[:PATH...]"
+        given+=("${1#--classpath=}") ;;
+      *) ROBOSIM_ARGS+=("$1") ;;
+    esac
+    shift
+  done
+  given+=("${ROBOSIM_CLASSPATH:-}")
+  for joined in "${given[@]}"; do
+    IFS=: read -ra parts <<<"$joined"
+    for e in "${parts[@]}"; do
+      [ -n "$e" ] || continue
+      e=$(robosim_abs "$e")
+      [ -e "${e%/\*}" ] || robosim_fail "class path entry $e does not exist (from --classpath or ROBOSIM_CLASSPATH)"
+      entries+=("$e")
+    done
+  done
+  ROBOSIM_CLASSPATH=$(IFS=:; echo "${entries[*]}")
+  export ROBOSIM_CLASSPATH
+}
+
+# ROBOSIM_JAVA_OPTS may not set the class path: java would take the last -cp and drop RoboSim's own.
+robosim_check_java_opts() {
+  local words=() w
+  read -ra words <<<"${ROBOSIM_JAVA_OPTS:-}"
+  for w in "${words[@]}"; do
+    case $w in
+      -cp|-classpath|--class-path|--class-path=*|-Djava.class.path=*)
+        robosim_fail "ROBOSIM_JAVA_OPTS may not set the class path ($w): use --classpath PATH[:PATH...] or ROBOSIM_CLASSPATH" ;;
+    esac
+  done
+}
+
+# The runner's jar: rewritten by every `./mvnw package` (forceCreation), so it dates the last build.
+robosim_runner_jar() {
+  find "$ROBOSIM_HOME/runner/target" -maxdepth 1 -name 'runner-*.jar' ! -name '*-sources.jar' \
+    ! -name '*-tests.jar' -print -quit 2>/dev/null
+}
+
+# The first file under a module's src/main, a module's pom.xml or the parent pom.xml that is newer
+# than file $1; every <module> of the parent pom counts.
+robosim_newer_source() {
+  local paths=("$ROBOSIM_HOME/pom.xml") m p
+  while read -r m; do
+    for p in "$ROBOSIM_HOME/$m/pom.xml" "$ROBOSIM_HOME/$m/src/main"; do
+      [ -e "$p" ] && paths+=("$p")
+    done
+  done < <(sed -nE 's|.*<module>([^<]+)</module>.*|\1|p' "$ROBOSIM_HOME/pom.xml")
+  find "${paths[@]}" -newer "$1" -print -quit
+}
+
+# Why a build is needed (nothing built, or the first source newer than the build), or nothing.
+robosim_why_build() {
+  local jar changed
+  jar=$(robosim_runner_jar)
+  if [ -z "$jar" ] || [ ! -d "$ROBOSIM_LIB" ]; then
+    echo "RoboSim is not built yet"
+  else
+    changed=$(robosim_newer_source "$jar")
+    [ -z "$changed" ] || echo "RoboSim sources changed since the last build (${changed#"$ROBOSIM_HOME"/})"
   fi
 }
 
+# Builds (quietly, output on stderr) when nothing is built yet or a source is newer than the build.
+# One build at a time per repository: scripts started together wait (flock) and find it done.
+robosim_build_if_stale() {
+  local why lock
+  why=$(robosim_why_build)
+  [ -n "$why" ] || return 0
+  lock="${TMPDIR:-/tmp}/robosim-build-$(echo "$ROBOSIM_HOME" | cksum | cut -d' ' -f1).lock"
+  exec 9>"$lock"
+  if command -v flock >/dev/null; then
+    flock 9
+    why=$(robosim_why_build)
+  fi
+  if [ -n "$why" ]; then
+    echo "$why: rebuilding (./mvnw -q package -DskipTests) ..." >&2
+    (cd "$ROBOSIM_HOME" && ./mvnw -q -B -ntp package -DskipTests) >&2 \
+      || { echo "$ROBOSIM_SCRIPT: the build failed (its errors are above); nothing was started" >&2; exit 1; }
+  fi
+  exec 9>&-
+}
+
+# RoboSim's class path: every module's jar and dependency, then the user's ROBOSIM_CLASSPATH entries
+# (after, so a user class never shadows one of RoboSim's by accident).
+robosim_classpath() {
+  echo "$ROBOSIM_LIB/*:$(robosim_runner_jar)${ROBOSIM_CLASSPATH:+:$ROBOSIM_CLASSPATH}"
+}
+
+# Runs main class $1 with the other arguments (less --classpath) on RoboSim's class path. With -h or
+# --help it adds the options this library takes to the main class's usage.
 robosim_java() {
-  robosim_build_if_missing
-  local main="$1"; shift
-  local jar
-  jar=$(ls "$ROBOSIM_HOME"/runner/target/runner-*.jar | head -n 1)
+  local main=$1 a
+  shift
+  robosim_take_classpath "$@"
+  robosim_check_java_opts
+  robosim_build_if_stale
+  for a in "${ROBOSIM_ARGS[@]}"; do
+    case $a in
+      --) break ;;
+      -h|--help)
+        # shellcheck disable=SC2086
+        java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
+        echo "This script also takes --classpath PATH[:PATH...] (anywhere, or ROBOSIM_CLASSPATH): entries added"
+        echo "after RoboSim's own jars to every process it starts. JVM options: ROBOSIM_JAVA_OPTS."
+        exit 0 ;;
+    esac
+  done
   # shellcheck disable=SC2086
-  exec java ${ROBOSIM_JAVA_OPTS:-} -cp "$ROBOSIM_LIB/*:$jar" "$main" "$@"
+  exec java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}"
 }
 
 # For the screenshot scripts: makes sure Xvfb is there (installs Debian's xvfb when we are root).
@@ -25,4 +157,54 @@ robosim_need_xvfb() {
     if [ "$(id -u)" = 0 ]; then apt-get update -qq && apt-get install -y -qq xvfb >/dev/null; else
       echo "$1: needs Xvfb (apt-get install xvfb)" >&2; exit 2; fi
   fi
+}
+
+# The arguments of the benchmark and screenshot scripts: -h/--help (prints the usage, exits 0),
+# --classpath (robosim_take_classpath), anything after `--` (into ROBOSIM_PASS, for the tool the
+# script runs) and, when $1 names the docs/ directory the script writes to, --write-docs and --out DIR.
+# Leaves the other arguments in ROBOSIM_ARGS; any other option: one line, exit 2.
+robosim_script_args() {
+  local docs=$1
+  shift
+  robosim_take_classpath "$@"
+  set -- "${ROBOSIM_ARGS[@]}"
+  ROBOSIM_ARGS=() ROBOSIM_PASS=() ROBOSIM_WRITE_DOCS=0 ROBOSIM_OUT_ARG="" ROBOSIM_DOCS=$docs
+  # shellcheck disable=SC2034  # ROBOSIM_PASS is read by the calling script
+  while [ $# -gt 0 ]; do
+    case $1 in
+      -h|--help) robosim_usage; exit 0 ;;
+      --) shift; ROBOSIM_PASS=("$@"); break ;;
+      --write-docs) [ -n "$docs" ] || robosim_fail "unknown option $1 (see --help)"; ROBOSIM_WRITE_DOCS=1 ;;
+      --out) [ -n "$docs" ] || robosim_fail "unknown option $1 (see --help)"
+        [ -n "${2:-}" ] || robosim_fail "--out needs a directory"; ROBOSIM_OUT_ARG=$2; shift ;;
+      --out=*) [ -n "$docs" ] || robosim_fail "unknown option --out (see --help)"; ROBOSIM_OUT_ARG=${1#--out=} ;;
+      -?*) robosim_fail "unknown option $1 (see --help)" ;;
+      *) ROBOSIM_ARGS+=("$1") ;;
+    esac
+    shift
+  done
+}
+
+# Checks that positional argument $1 (its name) has a whole number >= 1 as its value $2.
+robosim_count() {
+  [[ "$2" =~ ^[1-9][0-9]*$ ]] || robosim_fail "$1 must be a whole number >= 1, got '$2'"
+}
+
+# Where a benchmark or screenshot script writes (after robosim_script_args): the docs/ directory with
+# --write-docs, DIR with --out DIR (relative to where the user started the script), else a fresh
+# temporary directory. Makes it, says where on stderr, and prints it.
+robosim_out_dir() {
+  local out
+  if [ "$ROBOSIM_WRITE_DOCS" = 1 ] && [ -n "$ROBOSIM_OUT_ARG" ]; then
+    robosim_fail "give --write-docs or --out DIR, not both"
+  elif [ "$ROBOSIM_WRITE_DOCS" = 1 ]; then
+    out="$ROBOSIM_HOME/$ROBOSIM_DOCS"
+  elif [ -n "$ROBOSIM_OUT_ARG" ]; then
+    out=$(robosim_abs "$ROBOSIM_OUT_ARG")
+  else
+    out=$(mktemp -d "${TMPDIR:-/tmp}/robosim-$ROBOSIM_SCRIPT.XXXXXX")
+  fi
+  mkdir -p "$out" || robosim_fail "cannot create the output directory $out"
+  echo "$ROBOSIM_SCRIPT: writing to $out" >&2
+  echo "$out"
 }

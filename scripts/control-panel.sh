@@ -3,5 +3,6 @@
 #   scripts/control-panel.sh HOST [PORT]                      a window (needs a display)
 #   scripts/control-panel.sh HOST PORT status|start|stop|pause|resume|step N|load FILE|shutdown
 # Default port 8100. --token (or ROBOSIM_CONTROL_TOKEN) when the Environment asks for one; see --help.
+# --classpath PATH[:PATH...] (or ROBOSIM_CLASSPATH) adds entries after RoboSim's own jars.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_java robosim.control.ControlPanelMain "$@"

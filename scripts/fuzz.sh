@@ -1,13 +1,22 @@
 #!/usr/bin/env bash
 # Fuzzes the message decoding for longer than the build does (the build fuzzes for 20 s):
-#   scripts/fuzz.sh [DURATION]     e.g. scripts/fuzz.sh 30m   (default 5m)
+#   scripts/fuzz.sh [DURATION] [--help]     e.g. scripts/fuzz.sh 30m   (default 5m)
 # Jazzer (coverage-guided, libFuzzer) feeds bytes through ObjectConnection exactly as every process
 # reads its peers. A finding fails the run and is saved as a regression input under
 # protocol/src/test/resources/robosim/protocol/MessageDecodingFuzzTestInputs/ (commit it with the fix);
 # the growing corpus stays in protocol/.cifuzz-corpus/ between runs.
 set -euo pipefail
-cd "$(dirname "${BASH_SOURCE[0]}")/.."
-duration=${1:-5m}
-[[ "$duration" =~ ^[0-9]+[smh]?$ ]] || { echo "fuzz: DURATION must look like 90s, 30m or 2h, got $duration" >&2; exit 2; }
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+duration=""
+for a in "$@"; do
+  case $a in
+    -h|--help) robosim_usage; exit 0 ;;
+    -?*) robosim_fail "unknown option $a (see --help)" ;;
+    *) [ -z "$duration" ] || robosim_fail "takes one DURATION, got $duration and $a"; duration=$a ;;
+  esac
+done
+duration=${duration:-5m}
+[[ "$duration" =~ ^[0-9]+[smh]?$ ]] || robosim_fail "DURATION must look like 90s, 30m or 2h, got $duration"
+cd "$ROBOSIM_HOME"
 exec ./mvnw -B -ntp -pl protocol test -Dfuzz.duration="$duration" -Dtest=MessageDecodingFuzzTest \
   -Dsurefire.failIfNoSpecifiedTests=false

@@ -14,7 +14,8 @@ import java.util.function.Consumer;
 
 /**
  * Starts Java child processes on this JVM's class path and stops them all at the end: when closed,
- * and when this JVM is told to stop (SIGTERM, SIGINT, SIGHUP) once {@link #stopOnSignal} was called.
+ * and when this JVM is told to stop (SIGTERM, SIGINT, SIGHUP: a shutdown hook, thread "stop-children"),
+ * so that killing a runner never leaves its children running.
  * Safe to use from the runner's thread and the JVM's shutdown thread at once.
  */
 final class ChildProcesses implements AutoCloseable {
@@ -57,15 +58,10 @@ final class ChildProcesses implements AutoCloseable {
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final List<String> jvmOptions;
-    private Thread onSignal;
+    private final Thread onSignal = new Thread(this::close, "stop-children");
 
     ChildProcesses(List<String> jvmOptions) {
         this.jvmOptions = List.copyOf(jvmOptions);
-    }
-
-    /** Stops every child when this JVM is told to stop (thread "stop-children", a shutdown hook). */
-    void stopOnSignal() {
-        onSignal = new Thread(this::close, "stop-children");
         Runtime.getRuntime().addShutdownHook(onSignal);
     }
 
@@ -177,7 +173,7 @@ final class ChildProcesses implements AutoCloseable {
                 h.destroyForcibly();
             }
         }
-        if (onSignal != null && Thread.currentThread() != onSignal) {
+        if (Thread.currentThread() != onSignal) {
             try {
                 Runtime.getRuntime().removeShutdownHook(onSignal);
             } catch (IllegalStateException shuttingDown) {

@@ -97,7 +97,6 @@ public final class HeadlessRunner implements Callable<Integer> {
             return 2;
         }
         try (ChildProcesses children = new ChildProcesses(jvm.all)) {
-            children.stopOnSignal();
             return run(spec, children);
         }
     }
