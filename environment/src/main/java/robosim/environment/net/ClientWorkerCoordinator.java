@@ -140,6 +140,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final StepRequest[] requests;
     private final boolean[] active;
     private final boolean[] begun;
+    /** Robots whose connection has closed (they exited, were dropped, or the run ended): never "connected". */
+    private final boolean[] gone;
     private boolean robotsTold;
     private int registered;
     private volatile GeometryClientWorker geometry;
@@ -192,6 +194,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.requests = new StepRequest[robotCount];
         this.active = new boolean[robotCount];
         this.begun = new boolean[robotCount];
+        this.gone = new boolean[robotCount];
     }
 
     /** Binds the three ports and starts accepting; a port in use is a {@link BindException} naming it. */
@@ -650,6 +653,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (robots[index] != worker) {
                 return;
             }
+            gone[index] = state != State.WAITING; // before the start its name is simply free again
             if (state == State.WAITING) {
                 robots[index] = null;
                 properties[index] = null;
@@ -678,6 +682,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (geometry == worker && state == State.WAITING) {
                 geometry = null;
                 LOG.warn("Geometry process left before the start ({}); waiting for another", why);
+            } else if (geometry == worker && state == State.ENDED) {
+                geometry = null; // told the end and gone; during a run a loss is the step's to notice
             }
         } finally {
             lock.unlock();
@@ -792,9 +798,16 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
-    /** What the control port reports. */
+    /**
+     * What the control port reports.
+     *
+     * @param connected robots whose connection is open and who take part (or wait for the start)
+     * @param left robots that were in this simulation and whose connection has closed or who were removed
+     * @param geometry {@code in-process} (no Geometry process: {@code --no-geometry}, or going on without
+     *     a lost one), {@code attached}, {@code waiting} (for a Geometry process) or {@code none} (ended)
+     */
     public record Status(String state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
-            List<String> left, boolean geometryAttached, String reason) {
+            List<String> left, String geometry, String reason) {
     }
 
     public Status status() {
@@ -803,7 +816,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             List<String> connected = new ArrayList<>();
             List<String> left = new ArrayList<>();
             for (int i = 0; i < robotCount; i++) {
-                if (robots[i] != null && (state == State.WAITING || active[i])) {
+                if (robots[i] != null && !gone[i] && (state == State.WAITING || active[i])) {
                     connected.add(robotNames.get(i));
                 } else if (robots[i] != null && state != State.WAITING) {
                     left.add(robotNames.get(i));
@@ -815,11 +828,26 @@ public final class ClientWorkerCoordinator implements Closeable {
                 case RUNNING -> paused && (holding || beginPending || stepBudget == 0) ? "PAUSED" : "RUNNING";
             };
             double rate = "RUNNING".equals(st) ? recentRate : 0;
-            return new Status(st, stepsReleased, rate, robotNames, connected, left,
-                    settings.inProcessGeometry() || geometry != null, endReason);
+            return new Status(st, stepsReleased, rate, robotNames, connected, left, geometryStatus(), endReason);
         } finally {
             lock.unlock();
         }
+    }
+
+    /** Under the lock: where collision and sonar are resolved now, for {@link #status}. */
+    private String geometryStatus() {
+        if (settings.inProcessGeometry()) {
+            return "in-process";
+        }
+        if (geometry != null) {
+            return "attached";
+        }
+        if (state == State.ENDED) {
+            return "none";
+        }
+        boolean goingOnWithout = state == State.RUNNING && geometryLosses > 0
+                && settings.onGeometryLoss() == GeometryLoss.IN_PROCESS;
+        return goingOnWithout ? "in-process" : "waiting";
     }
 
     // ---- faults: a lost Geometry process, a silent robot --------------------------------------
