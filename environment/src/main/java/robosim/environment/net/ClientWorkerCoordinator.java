@@ -29,6 +29,7 @@ import robosim.protocol.RobotWelcome;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
+import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.WorldSnapshot;
@@ -413,6 +414,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             beginPending = true;
             LOG.info("every client is here; paused before step 0 (start or step from the control port)");
             pauseChanged.signalAll();
+            announce(RunState.Phase.PAUSED);
         } else {
             beginAll();
         }
@@ -428,6 +430,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Under the lock: sends every robot step 0, starting the lock-step. */
     private void beginAll() {
         beginPending = false;
+        announce(RunState.Phase.RUNNING);
         startNanos = System.nanoTime();
         stepReleasedNanos = startNanos;
         rateMarkNanos = startNanos;
@@ -709,6 +712,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         holding = true;
         pauseChanged.signalAll();
+        announce(RunState.Phase.PAUSED);
         try {
             while (paused && stepBudget == 0 && state == State.RUNNING) {
                 pauseChanged.await();
@@ -722,6 +726,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         if (state != State.RUNNING) {
             return false;
         }
+        announce(RunState.Phase.RUNNING);
         if (paused) {
             stepBudget--;
             if (stepBudget == 0) {
@@ -980,6 +985,9 @@ public final class ClientWorkerCoordinator implements Closeable {
             viewers.add(viewer);
             if (state == State.ENDED) {
                 viewer.end(endMessage());
+            } else {
+                viewer.state(new RunState(stepsReleased, state == State.WAITING ? RunState.Phase.WAITING
+                        : holding || beginPending ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
             }
             LOG.info("{} connected ({} viewer(s))", viewer.name(), viewers.size());
             return snapshot;
@@ -992,6 +1000,14 @@ public final class ClientWorkerCoordinator implements Closeable {
     private static RobotProperties expected(WorldSpec.RobotSpec r) {
         RobotProperties model = RobotModels.byName(r.type());
         return model != null ? model : new RobotProperties(r.type(), r.radiusMm(), 1, 1, List.of());
+    }
+
+    /** Under the lock: tells every viewer the run now runs or is held (pause, resume, start). */
+    private void announce(RunState.Phase phase) {
+        RunState s = new RunState(stepsReleased, phase);
+        for (ViewerClientWorker v : viewers) {
+            v.state(s);
+        }
     }
 
     void removeViewer(ViewerClientWorker viewer, String why) {
