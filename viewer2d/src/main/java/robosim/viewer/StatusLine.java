@@ -8,7 +8,7 @@ import java.util.Locale;
  * is doing meanwhile. Text from the network (reasons) has its control characters replaced and is cut
  * to {@link #MAX_REASON} characters.
  */
-final class StatusLine {
+public final class StatusLine {
     static final int MAX_REASON = 160;
     static final String KEYS = "[f fit, wheel/+/- zoom, drag/arrows pan, t trails, s sonar, n names]";
 
@@ -16,7 +16,7 @@ final class StatusLine {
     }
 
     /** The state part alone, e.g. {@code RUNNING  10 steps/s}, {@code PAUSED}, {@code STOPPED: why}. */
-    static String state(Scene s) {
+    public static String state(Scene s) {
         RunStatus r = s.status();
         String text = switch (r.kind()) {
             case CONNECTING -> "connecting";
@@ -31,7 +31,7 @@ final class StatusLine {
     }
 
     /** The whole line under the world. */
-    static String text(Scene s) {
+    public static String text(Scene s) {
         return String.format(Locale.ROOT, "step %d   %d robots   %s      %s", s.step() + 1, s.robotCount(), state(s),
                 KEYS);
     }
