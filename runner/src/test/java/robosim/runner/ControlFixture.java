@@ -28,8 +28,16 @@ final class ControlFixture implements AutoCloseable {
     final List<Socket> sockets = new ArrayList<>();
 
     ControlFixture(Path file, String token) throws Exception {
+        this(file, token, 0);
+    }
+
+    /** @param speed the run's pace in times real time (0: as fast as possible) */
+    ControlFixture(Path file, String token, double speed) throws Exception {
         ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
-                0, 0, 0, true, 0, 64, 10_000);
+                0, 0, 0, true, 0, 64, 10_000, speed, ClientWorkerCoordinator.Design.SEQUENTIAL, true,
+                ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS,
+                ClientWorkerCoordinator.Settings.DEFAULT_GEOMETRY_TIMEOUT_MS,
+                ClientWorkerCoordinator.GeometryLoss.IN_PROCESS);
         host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
         host.open();
         control = new ControlServer(host, token);

@@ -174,6 +174,11 @@ public final class ClientWorkerCoordinator implements Closeable {
     private boolean paused;
     private long stepBudget;
     private boolean holding;
+    /** True while the step's thread waits for the pace ({@code --speed}), the lock released. */
+    private boolean pacing;
+    /** Pacing counts from here: the start, or the end of the last hold (a pause is not caught up after). */
+    private long paceOriginNanos;
+    private long paceOriginStep;
     private boolean beginPending;
     private long rateMarkNanos;
     private long rateMarkSteps;
@@ -434,6 +439,8 @@ public final class ClientWorkerCoordinator implements Closeable {
         startNanos = System.nanoTime();
         stepReleasedNanos = startNanos;
         rateMarkNanos = startNanos;
+        paceOriginNanos = startNanos;
+        paceOriginStep = 0;
         for (int i = 0; i < robotCount; i++) {
             if (!active[i]) {
                 continue;
@@ -568,8 +575,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             stepRunning = false;
         }
         stepsDone = k + 1;
-        pace(stepsDone);
-        if (!holdWhilePaused()) {
+        if (!pace(stepsDone) || !holdWhilePaused()) {
             return; // ended while paused: the robots have been told
         }
         boolean last = settings.maxSteps() > 0 && stepsDone >= settings.maxSteps();
@@ -612,18 +618,31 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     /**
-     * With {@code speed} > 0, holds the step until simulated time runs at most {@code speed} times
-     * real time, so a person can watch. This is pacing, not waiting for an event.
+     * Under the lock, on the step's thread, after step {@code steps - 1} is computed and before its
+     * responses go out: with {@code speed} > 0, holds the step until simulated time runs at most
+     * {@code speed} times real time (counted from the start or the last pause), so a person can
+     * watch. It waits on a condition, so the lock is free meanwhile (the status, a pause, a stop, a
+     * viewer joining go on), exactly as while paused; a pause ends the wait and holds the step. False
+     * if the simulation ended meanwhile.
      */
-    private void pace(long steps) {
+    private boolean pace(long steps) throws InterruptedException {
         if (settings.speed() <= 0) {
-            return;
+            return true;
         }
-        long due = startNanos + (long) (steps * spec.timeStepMs() * 1_000_000L / settings.speed());
-        long wait = due - System.nanoTime();
-        if (wait > 0) {
-            java.util.concurrent.locks.LockSupport.parkNanos(wait);
+        long due = paceOriginNanos
+                + (long) ((steps - paceOriginStep) * spec.timeStepMs() * 1_000_000L / settings.speed());
+        pacing = true;
+        try {
+            // a pause takes hold at once (the hold follows); the pace counts afresh after it
+            long wait = due - System.nanoTime();
+            while (wait > 0 && state == State.RUNNING && !(paused && stepBudget == 0)) {
+                pauseChanged.awaitNanos(wait);
+                wait = due - System.nanoTime();
+            }
+        } finally {
+            pacing = false;
         }
+        return state == State.RUNNING;
     }
 
     /** Under the lock: robot i no longer takes part; it stands where it is. */
@@ -722,6 +741,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             stepReleasedNanos = System.nanoTime(); // robots are not late for the time we held them
             rateMarkNanos = stepReleasedNanos;
             rateMarkSteps = stepsDone;
+            paceOriginNanos = stepReleasedNanos; // pace on from here: no rush to catch up the pause
+            paceOriginStep = stepsDone;
         }
         if (state != State.RUNNING) {
             return false;
@@ -746,6 +767,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         try {
             paused = true;
             stepBudget = 0;
+            pauseChanged.signalAll(); // a step waiting for its pace holds at once
             while (state == State.RUNNING && !holding && !beginPending && nanos > 0) {
                 nanos = pauseChanged.awaitNanos(nanos);
             }
@@ -933,7 +955,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             try {
                 long now = System.nanoTime();
                 // threads waiting for the lock may be robots' requests that arrived in time
-                if (state != State.RUNNING || stepRunning || holding || beginPending || lock.hasQueuedThreads()
+                if (state != State.RUNNING || stepRunning || holding || pacing || beginPending
+                        || lock.hasQueuedThreads()
                         || now - stepReleasedNanos <= TimeUnit.MILLISECONDS.toNanos(step)) {
                     return;
                 }
