@@ -7,7 +7,7 @@ package robosim.viewer;
  */
 public record RunStatus(Kind kind, String reason, String next) {
     /** The run's state as the viewer shows it. */
-    public enum Kind { CONNECTING, WAITING_FOR_ROBOTS, RUNNING, PAUSED, STOPPED, LOST }
+    public enum Kind { WAITING_FOR_ROBOTS, RUNNING, PAUSED, STOPPED, LOST }
 
     public RunStatus {
         if (kind == null || reason == null || next == null) {

@@ -19,7 +19,6 @@ public final class StatusLine {
     public static String state(Scene s) {
         RunStatus r = s.status();
         String text = switch (r.kind()) {
-            case CONNECTING -> "connecting";
             case WAITING_FOR_ROBOTS -> "waiting for robots";
             case RUNNING -> Double.isNaN(s.stepsPerSecond()) ? "RUNNING"
                     : String.format(Locale.ROOT, "RUNNING  %.0f steps/s", s.stepsPerSecond());

@@ -17,8 +17,8 @@ import robosim.protocol.WorldSnapshot;
  * recording viewer holds up to {@link #RECORDING_BACKLOG} and, past that, makes the step wait. A
  * live viewer that asked for at most n updates a second gets the newest pose at most every 1/n s,
  * and the step thread wakes its worker only when the worker is waiting for data. A change of run
- * state (running, paused) is held the same way, newest only, and goes out after the updates held
- * before it, without waiting for the update-rate cap.
+ * state (running, paused) is held the same way, newest only; it goes out after the updates held
+ * before it, or ahead of one that is waiting for the update-rate cap (a state never waits for it).
  */
 final class ViewerClientWorker extends ClientWorker {
     static final int RECORDING_BACKLOG = 1024;
