@@ -193,8 +193,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         ViewerClient viewer = watch(viewerPort);
         ExtraViewers extras = ExtraViewers.connect(viewerPort, liveViewers, liveViewerFps, frozenViewers);
         if (this.viewer) {
+            // this Environment exits after its one run: the window keeps the last picture and stops
+            // waiting for a next run on the same port soon after
             children.startDetached("viewer2d", "robosim.viewer.Viewer2DMain",
-                    List.of("127.0.0.1", Integer.toString(viewerPort)));
+                    List.of("127.0.0.1", Integer.toString(viewerPort), "--next-run-wait-s", "5"));
         }
         if (!noGeometry) {
             List<String> geometryArgs = new ArrayList<>(List.of("127.0.0.1", bound.get("geometry")));
