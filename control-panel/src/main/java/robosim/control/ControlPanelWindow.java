@@ -22,7 +22,8 @@ import javax.swing.WindowConstants;
 
 /**
  * The Control Panel window: Load..., Start, Stop, Pause, Resume and Step N buttons, and a live status
- * (state, step, steps/s, which robots are connected) polled twice a second. Requests go out on one
+ * (state, step, steps/s while running, which robots are connected and which have left, geometry; see
+ * {@link StatusText}) polled twice a second. Requests go out on one
  * background thread, never on Swing's; a status poll waits while a long request (step N) runs.
  */
 public final class ControlPanelWindow {
@@ -126,12 +127,8 @@ public final class ControlPanelWindow {
             String body;
             try {
                 JsonNode r = client().request("status");
-                head = r.path("state").asText("?") + "   step " + r.path("step").asLong() + "   "
-                        + r.path("steps_per_s").asDouble() + " steps/s";
-                body = "file:      " + r.path("file").asText() + "\nrobots:    " + list(r.path("robots"))
-                        + "\nconnected: " + list(r.path("connected")) + "\nleft:      " + list(r.path("left"))
-                        + "\ngeometry:  " + (r.path("geometry").asBoolean() ? "attached" : "waiting")
-                        + (r.has("reason") ? "\nended:     " + r.path("reason").asText() : "");
+                head = StatusText.headline(r);
+                body = StatusText.details(r);
             } catch (IOException e) {
                 dropClient();
                 head = "not connected";
@@ -144,14 +141,6 @@ public final class ControlPanelWindow {
                 detail.setText(b);
             });
         });
-    }
-
-    private static String list(JsonNode array) {
-        StringBuilder b = new StringBuilder();
-        for (JsonNode n : array) {
-            b.append(b.length() == 0 ? "" : ", ").append(n.asText());
-        }
-        return b.length() == 0 ? "-" : b.toString();
     }
 
     private ControlClient client() throws IOException {

@@ -55,10 +55,10 @@ public final class EnvironmentMain implements Callable<Integer> {
             description = "End after this many steps (default: ${DEFAULT-VALUE} = run until stopped).")
     long steps;
 
-    @Option(names = "--speed", defaultValue = "0",
-            description = "Run at most this many times real time, so a person can watch (default: ${DEFAULT-VALUE}"
-                    + " = as fast as possible).")
-    double speed;
+    @Option(names = "--speed",
+            description = "Run at most this many times real time, so a person can watch; 0 = as fast as possible "
+                    + "(default: 1, real time, without --steps, a session driven by hand; 0 with --steps).")
+    Double speed;
 
     @Option(names = "--coordinator", defaultValue = "SEQUENTIAL",
             description = "The coordinator design: SEQUENTIAL (the original's single loop reads every robot in "
@@ -124,7 +124,8 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println(e.getMessage());
             return 2;
         }
-        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(speed >= 0) || Double.isInfinite(speed)
+        double pace = effectiveSpeed(speed, steps);
+        if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(pace >= 0) || Double.isInfinite(pace)
                 || stepTimeoutMs < 0 || geometryTimeoutMs < 0) {
             System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be "
                     + ">= 0");
@@ -132,7 +133,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
                 InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
-                handshakeTimeoutMs, speed, design, !noStepMessages, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
+                handshakeTimeoutMs, pace, design, !noStepMessages, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
         InetAddress bindAddress = InetAddress.getByName(bind);
         String token = controlToken != null ? controlToken : System.getenv("ROBOSIM_CONTROL_TOKEN");
         if (controlPort >= 0 && !bindAddress.isLoopbackAddress() && (token == null || token.isBlank())) {
@@ -207,6 +208,18 @@ public final class EnvironmentMain implements Callable<Integer> {
         if (c != null) {
             c.close();
         }
+    }
+
+    /**
+     * The pace of the run: {@code --speed} when given; otherwise real time (1) for a session without
+     * {@code --steps} (robots driven by hand wait for people, so running flat out would only burn the
+     * CPU), and as fast as possible (0) for a run of a set number of steps.
+     */
+    static double effectiveSpeed(Double speed, long steps) {
+        if (speed != null) {
+            return speed;
+        }
+        return steps == 0 ? 1 : 0;
     }
 
     /** The summary line, also used by the headless runner. */

@@ -72,6 +72,16 @@ class EnvironmentMainTest {
                 + "give a token with --control-token"), r.err());
     }
 
+    @org.junit.jupiter.params.ParameterizedTest
+    @org.junit.jupiter.params.provider.CsvSource(delimiter = '|', value = {
+        "f.xml|1.0", "f.xml --steps 500|0.0", "f.xml --speed 0|0.0", "f.xml --speed 2.5|2.5",
+        "f.xml --steps 500 --speed 4|4.0"})
+    void aSessionWithoutStepsRunsInRealTimeUnlessSpeedSaysOtherwise(String args, double expected) {
+        EnvironmentMain main = new EnvironmentMain();
+        new CommandLine(main).parseArgs(args.split(" "));
+        assertEquals(expected, EnvironmentMain.effectiveSpeed(main.speed, main.steps));
+    }
+
     @Test
     void helpExitsZero() {
         PrintStream saved = System.out;

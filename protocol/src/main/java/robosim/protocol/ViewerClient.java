@@ -10,7 +10,7 @@ import java.util.concurrent.TimeUnit;
 
 /**
  * A headless viewer: connects to an Environment's viewer port, receives the snapshot, then pose
- * updates until the simulation ends, handing each to a {@link Listener} on its own thread
+ * updates (and run states: running, paused) until the simulation ends, handing each to a {@link Listener} on its own thread
  * ({@code viewer-client}). Used by the headless runner (pose log, progress) and by tests.
  */
 public final class ViewerClient implements Closeable {
@@ -19,6 +19,10 @@ public final class ViewerClient implements Closeable {
         void snapshot(WorldSnapshot snapshot);
 
         void update(PoseUpdate update);
+
+        /** The run started, was paused or resumed (and, first, what it is doing at connect time). */
+        default void runState(RunState state) {
+        }
 
         default void end(SimulationEnd end) {
         }
@@ -88,6 +92,8 @@ public final class ViewerClient implements Closeable {
                 Externalizable m = connection.read(Externalizable.class);
                 if (m instanceof PoseUpdate u) {
                     listener.update(u);
+                } else if (m instanceof RunState s) {
+                    listener.runState(s);
                 } else if (m instanceof SimulationEnd e) {
                     end = e;
                     listener.end(e);
@@ -105,6 +111,15 @@ public final class ViewerClient implements Closeable {
         } finally {
             done.countDown();
         }
+    }
+
+    /** Waits, for as long as it takes, for the end of the simulation; returns it, or throws what broke the connection. */
+    public SimulationEnd awaitEnd() throws IOException, InterruptedException {
+        done.await();
+        if (failure != null) {
+            throw failure;
+        }
+        return end;
     }
 
     /** Waits for the end of the simulation; returns it, or throws what broke the connection. */

@@ -219,6 +219,20 @@ class MessageRoundTripTest {
         int robots = 2 * (utf("a") + props);
         assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4), repeatedSize(s));
 
+        RunState r = roundTrip(new RunState(12, RunState.Phase.PAUSED));
+        assertEquals(12, r.step());
+        assertEquals(RunState.Phase.PAUSED, r.phase());
+        assertEquals(OVERHEAD + 8 + 1, repeatedSize(r));
+        java.io.ByteArrayOutputStream bad = new java.io.ByteArrayOutputStream();
+        try (java.io.ObjectOutputStream o = new java.io.ObjectOutputStream(bad)) {
+            o.writeLong(1);
+            o.writeByte(7);
+        }
+        java.io.ObjectInputStream in = new java.io.ObjectInputStream(new java.io.ByteArrayInputStream(bad.toByteArray()));
+        ProtocolException refused = org.junit.jupiter.api.Assertions.assertThrows(ProtocolException.class,
+                () -> new RunState().readExternal(in));
+        assertEquals("run state phase must be 0..2, got 7", refused.getMessage());
+
         SimulationEnd e = roundTrip(new SimulationEnd(99, "done"));
         assertEquals(99, e.lastStep());
         assertEquals("done", e.reason());

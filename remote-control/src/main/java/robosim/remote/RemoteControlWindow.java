@@ -12,7 +12,9 @@ import javax.swing.BorderFactory;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
 import javax.swing.JPanel;
+import javax.swing.JScrollPane;
 import javax.swing.JTextArea;
+import javax.swing.ScrollPaneConstants;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
@@ -29,14 +31,15 @@ public final class RemoteControlWindow {
     private final double turnDeg;
     private final JLabel driving = new JLabel();
     private final JTextArea robotsView = new JTextArea(5, 40);
-    private final JTextArea log = new JTextArea(8, 40);
+    private final JTextArea logArea = new JTextArea(8, 40);
+    private final ReplyLog log = new ReplyLog(logArea, ReplyLog.MAX_LINES);
     private int current;
 
     private RemoteControlWindow(List<RobotInfo> robots, double stepMm, double turnDeg) {
         this.stepMm = stepMm;
         this.turnDeg = turnDeg;
         for (RobotInfo r : robots) {
-            links.add(new RobotLink(r, line -> SwingUtilities.invokeLater(() -> append(r.name() + ": " + line))));
+            links.add(new RobotLink(r, line -> SwingUtilities.invokeLater(() -> log.append(r.name() + ": " + line))));
         }
     }
 
@@ -53,9 +56,9 @@ public final class RemoteControlWindow {
         robotsView.setEditable(false);
         robotsView.setFocusable(false);
         robotsView.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
-        log.setEditable(false);
-        log.setFocusable(false);
-        log.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
+        logArea.setEditable(false);
+        logArea.setFocusable(false);
+        logArea.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         JLabel help = new JLabel(String.format(Locale.ROOT, "<html>Arrows: forward/back %.0f mm, turn %.0f deg. "
                 + "Space: stop.<br>Tab or 1-9: choose the robot.</html>", stepMm, turnDeg));
         JPanel root = new JPanel(new BorderLayout(6, 6));
@@ -65,7 +68,8 @@ public final class RemoteControlWindow {
         top.add(robotsView, BorderLayout.CENTER);
         top.add(help, BorderLayout.SOUTH);
         root.add(top, BorderLayout.NORTH);
-        root.add(log, BorderLayout.CENTER);
+        root.add(new JScrollPane(logArea, ScrollPaneConstants.VERTICAL_SCROLLBAR_ALWAYS,
+                ScrollPaneConstants.HORIZONTAL_SCROLLBAR_AS_NEEDED), BorderLayout.CENTER);
         frame.setContentPane(root);
         frame.setFocusTraversalKeysEnabled(false);
         frame.addKeyListener(new KeyAdapter() {
@@ -110,7 +114,7 @@ public final class RemoteControlWindow {
             new Thread(() -> {
                 boolean sent = link.send(command);
                 SwingUtilities.invokeLater(() -> {
-                    append("-> " + link.robot().name() + ": " + command + (sent ? "" : "  (not connected)"));
+                    log.append("-> " + link.robot().name() + ": " + command + (sent ? "" : "  (not connected)"));
                     refresh();
                 });
             }, "send").start();
@@ -135,14 +139,5 @@ public final class RemoteControlWindow {
                 l.ensureConnected();
             }
         }, "connect").start();
-    }
-
-    private void append(String line) {
-        log.append(line + "\n");
-        String[] lines = log.getText().split("\n");
-        if (lines.length > 200) {
-            log.setText(String.join("\n", java.util.Arrays.copyOfRange(lines, lines.length - 200, lines.length)) + "\n");
-        }
-        log.setCaretPosition(log.getDocument().getLength());
     }
 }

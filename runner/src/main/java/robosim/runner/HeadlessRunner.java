@@ -164,8 +164,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         RunWatch watch = RunWatch.connect(viewerPort, poseLog, progress, steps);
         ExtraViewers extras = extraViewers.connect(viewerPort);
         if (this.viewer) {
+            // this Environment exits after its one run: the window keeps the last picture and stops
+            // waiting for a next run on the same port soon after
             children.startDetached("viewer2d", "robosim.viewer.Viewer2DMain",
-                    List.of("127.0.0.1", Integer.toString(viewerPort)));
+                    List.of("127.0.0.1", Integer.toString(viewerPort), "--next-run-wait-s", "5"));
         }
         List<ChildProcesses.Child> clients = new ArrayList<>();
         if (!noGeometry) {

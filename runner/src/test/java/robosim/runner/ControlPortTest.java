@@ -21,71 +21,13 @@ import org.junit.jupiter.api.Test;
 import robosim.control.ControlClient;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
-import robosim.environment.control.EnvironmentHost;
-import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.examples.BackAndForth;
-import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
 
 /** The control port over real sockets: start, stop, pause, resume, step N, status, load, bad input, token. */
 class ControlPortTest {
     private static final Path THREE = Path.of("src/test/resources/three-robots.xml");
     private static final int TIMEOUT_MS = 60_000;
 
-    /** An Environment host with its control port, on ephemeral ports; paused until told. */
-    private static final class Fixture implements AutoCloseable {
-        final EnvironmentHost host;
-        final ControlServer control;
-        final CompletableFuture<Integer> running;
-
-        Fixture(Path file, String token) throws Exception {
-            ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
-                    0, 0, 0, true, 0, 64, 10_000);
-            host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
-            host.open();
-            control = new ControlServer(host, token);
-            control.start(InetAddress.getLoopbackAddress(), 0);
-            running = CompletableFuture.supplyAsync(() -> {
-                try {
-                    return host.run(summary -> { });
-                } catch (InterruptedException e) {
-                    throw new IllegalStateException(e);
-                }
-            });
-        }
-
-        ControlClient client(String token) throws IOException {
-            return new ControlClient("127.0.0.1", control.port(), token, TIMEOUT_MS);
-        }
-
-        /** Connects every robot of the current file, each running BackAndForth; their end reasons. */
-        List<CompletableFuture<String>> robots() throws Exception {
-            int port = host.ports()[0];
-            List<CompletableFuture<String>> out = new ArrayList<>();
-            for (var r : new EnvironmentLoader().load(host.file()).robots()) {
-                HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
-                sim.connect(new Socket(InetAddress.getLoopbackAddress(), port), 64);
-                out.add(CompletableFuture.supplyAsync(() -> {
-                    try {
-                        return sim.run(new BackAndForth());
-                    } catch (Exception e) {
-                        throw new IllegalStateException(e);
-                    }
-                }));
-            }
-            return out;
-        }
-
-        @Override
-        public void close() throws Exception {
-            host.shutdown();
-            running.get(TIMEOUT_MS, TimeUnit.MILLISECONDS);
-            control.close();
-            host.current().close();
-        }
-    }
-
-    private static JsonNode ok(ControlClient c, String request) throws IOException {
+    static JsonNode ok(ControlClient c, String request) throws IOException {
         JsonNode r = c.request(request);
         assertTrue(r.path("ok").asBoolean(), request + " -> " + r);
         return r;
@@ -93,7 +35,7 @@ class ControlPortTest {
 
     @Test
     void stepPauseResumeStopAndStartChangeTheStepCounterAsTheyShould() throws Exception {
-        try (Fixture f = new Fixture(THREE, null); ControlClient c = f.client(null)) {
+        try (ControlFixture f = new ControlFixture(THREE, null); ControlClient c = f.client(null)) {
             assertEquals("WAITING", ok(c, "status").path("state").asText());
             List<CompletableFuture<String>> robots = f.robots();
             // started paused: step N runs exactly N steps and holds again
@@ -134,7 +76,7 @@ class ControlPortTest {
     @Test
     void loadingANewFileEndsTheRunningOneAndWaitsForTheNewRobots() throws Exception {
         Path other = InJvmSimulation.env("test.xml").toAbsolutePath();
-        try (Fixture f = new Fixture(THREE, null); ControlClient c = f.client(null)) {
+        try (ControlFixture f = new ControlFixture(THREE, null); ControlClient c = f.client(null)) {
             List<CompletableFuture<String>> robots = f.robots();
             ok(c, "step 5");
             JsonNode loaded = ok(c, "load " + other);
@@ -162,7 +104,7 @@ class ControlPortTest {
 
     @Test
     void badRequestsGetAnErrorReplyAndTheSimulationRunsOn() throws Exception {
-        try (Fixture f = new Fixture(THREE, null); ControlClient c = f.client(null)) {
+        try (ControlFixture f = new ControlFixture(THREE, null); ControlClient c = f.client(null)) {
             f.robots();
             ok(c, "step 2");
             assertError(c, "jump over the moon", "unknown request");
@@ -206,7 +148,7 @@ class ControlPortTest {
 
     @Test
     void withATokenEveryRequestWaitsForIt() throws Exception {
-        try (Fixture f = new Fixture(THREE, "s3cret")) {
+        try (ControlFixture f = new ControlFixture(THREE, "s3cret")) {
             try (ControlClient raw = f.client(null)) {
                 assertTrue(raw.request("status").path("error").asText().contains("a token is required first"));
                 assertTrue(raw.request("token guess").path("error").asText().contains("wrong token"));

@@ -8,13 +8,14 @@ import robosim.protocol.RobotProperties;
 
 /**
  * Everything one frame shows, immutable: the static world, the newest poses and sonar ranges, each
- * robot's trail (x, y pairs in mm, oldest first) and the status line's numbers. Shared between the
+ * robot's trail (x, y pairs in mm, oldest first) and the status line's facts. Shared between the
  * network thread that builds it and the Swing thread that draws it.
  *
- * @param status "running", or why the simulation is over or the connection lost
+ * @param stepsPerSecond measured from the updates while running; NaN until measured
+ * @param status the run's state as the viewer knows it (see {@link StatusLine})
  */
 public record Scene(Arena arena, List<ObstacleShape> obstacles, List<String> names, List<RobotProperties> robots,
-        PoseUpdate poses, double[][] trails, double stepsPerSecond, String status) {
+        PoseUpdate poses, double[][] trails, double stepsPerSecond, RunStatus status) {
 
     public int robotCount() {
         return names.size();
@@ -25,7 +26,7 @@ public record Scene(Arena arena, List<ObstacleShape> obstacles, List<String> nam
         return poses.step();
     }
 
-    public Scene withStatus(String newStatus) {
+    public Scene withStatus(RunStatus newStatus) {
         return new Scene(arena, obstacles, names, robots, poses, trails, stepsPerSecond, newStatus);
     }
 }

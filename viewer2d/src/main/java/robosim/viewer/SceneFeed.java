@@ -2,16 +2,20 @@ package robosim.viewer;
 
 import java.util.concurrent.atomic.AtomicReference;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
-import robosim.protocol.ViewerClient;
 import robosim.protocol.WorldSnapshot;
 
 /**
  * Turns the Environment's snapshot and updates into {@link Scene}s, on the network thread. Trails
  * are kept here in ring buffers ({@link #TRAIL_POINTS} per robot); a new Scene (with copies) is
- * published at most every {@code frameNanos}, so copying costs per frame, not per step.
+ * published at most every {@code frameNanos}, so copying costs per frame, not per step. Changes of
+ * the run's state (running, paused, stopped, lost, waiting for the next run) are published at once.
+ * A new snapshot (the next run, after a reconnect) starts afresh: new world, empty trails, no rate.
+ * Called by one thread at a time: a session's {@code viewer-client} thread, then, between sessions,
+ * the {@link RunFollower}'s.
  */
-public final class SceneFeed implements ViewerClient.Listener {
+public final class SceneFeed implements RunFollower.Listener {
     public static final int TRAIL_POINTS = 400;
     /** A trail point is kept only when the robot moved at least this far (mm) since the last one. */
     private static final double TRAIL_SPACING_MM = 20;
@@ -25,7 +29,9 @@ public final class SceneFeed implements ViewerClient.Listener {
     private long lastPublish;
     private long rateStep = -1;
     private long rateNanos;
-    private double stepsPerSecond;
+    private double stepsPerSecond = Double.NaN;
+    private PoseUpdate poses;
+    private RunStatus status = RunStatus.of(RunStatus.Kind.WAITING_FOR_ROBOTS);
 
     public SceneFeed(long frameNanos) {
         this.frameNanos = frameNanos;
@@ -43,8 +49,28 @@ public final class SceneFeed implements ViewerClient.Listener {
         ring = new double[n][2 * TRAIL_POINTS];
         ringStart = new int[n];
         ringSize = new int[n];
+        rateStep = -1;
+        stepsPerSecond = Double.NaN;
+        lastPublish = 0;
+        status = RunStatus.of(RunStatus.Kind.WAITING_FOR_ROBOTS);
         record(snapshot.poses());
-        publish(snapshot.poses(), "waiting for robots");
+        publish(snapshot.poses());
+    }
+
+    @Override
+    public void runState(RunState state) {
+        status = RunStatus.of(switch (state.phase()) {
+            case WAITING -> RunStatus.Kind.WAITING_FOR_ROBOTS;
+            case RUNNING -> RunStatus.Kind.RUNNING;
+            case PAUSED -> RunStatus.Kind.PAUSED;
+        });
+        if (state.phase() == RunState.Phase.RUNNING) {
+            rateStep = -1; // measure afresh: the time spent paused is not the run's speed
+            stepsPerSecond = Double.NaN;
+        }
+        if (poses != null) {
+            publish(poses);
+        }
     }
 
     @Override
@@ -60,30 +86,41 @@ public final class SceneFeed implements ViewerClient.Listener {
             rateNanos = now;
         }
         if (now - lastPublish >= frameNanos) {
-            publish(u, "running");
+            publish(u);
             lastPublish = now;
         }
     }
 
+    /** The simulation is over: keep the last picture (with the newest poses), say why. */
     @Override
     public void end(SimulationEnd end) {
-        Scene s = latest.get();
-        String status = "simulation over: " + end.reason();
-        if (s != null) {
-            latest.set(s.withStatus(status));
+        status = new RunStatus(RunStatus.Kind.STOPPED, end.reason(), "");
+        if (poses != null) {
+            publish(poses);
         }
     }
 
     /** The connection broke: keep the last picture, say why. */
     @Override
     public void lost(java.io.IOException cause) {
+        status = new RunStatus(RunStatus.Kind.LOST, String.valueOf(cause.getMessage()), "");
+        if (poses != null) {
+            publish(poses);
+        }
+    }
+
+    /** Between runs: the last picture stays, the status line says what the viewer does meanwhile. */
+    @Override
+    public void between(String doing) {
+        status = status.withNext(doing);
         Scene s = latest.get();
         if (s != null) {
-            latest.set(s.withStatus("connection lost: " + cause.getMessage()));
+            latest.set(s.withStatus(status));
         }
     }
 
     private void record(PoseUpdate u) {
+        poses = u;
         for (int i = 0; i < u.count(); i++) {
             int size = ringSize[i];
             if (size > 0) {
@@ -107,7 +144,7 @@ public final class SceneFeed implements ViewerClient.Listener {
         }
     }
 
-    private void publish(PoseUpdate u, String status) {
+    private void publish(PoseUpdate u) {
         double[][] trails = new double[ring.length][];
         for (int i = 0; i < ring.length; i++) {
             double[] t = new double[2 * ringSize[i]];

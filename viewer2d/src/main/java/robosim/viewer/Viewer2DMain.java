@@ -36,6 +36,16 @@ public final class Viewer2DMain implements Callable<Integer> {
             description = "Keep trying to connect for this long (default: ${DEFAULT-VALUE}).")
     int connectTimeoutS;
 
+    @Option(names = "--next-run-wait-s", defaultValue = "0",
+            description = "After a simulation ends (or the connection is lost), wait this long for the next run "
+                    + "on the same port, then give up and keep the last picture (default: ${DEFAULT-VALUE} = for as "
+                    + "long as the window is open).")
+    int nextRunWaitS;
+
+    /** First and longest interval between attempts to reach the next run, ms. */
+    static final long FIRST_RETRY_MS = 250;
+    static final long MAX_RETRY_MS = 2000;
+
     @Override
     public Integer call() throws Exception {
         if (GraphicsEnvironment.isHeadless()) {
@@ -46,15 +56,20 @@ public final class Viewer2DMain implements Callable<Integer> {
             System.err.println("viewer2d: --fps must be in 1..240, got " + fps);
             return 2;
         }
+        if (nextRunWaitS < 0) {
+            System.err.println("viewer2d: --next-run-wait-s must be >= 0, got " + nextRunWaitS);
+            return 2;
+        }
         SceneFeed feed = new SceneFeed(1_000_000_000L / fps);
+        ViewerHello hello = new ViewerHello(false, fps);
         ViewerClient client;
         try {
-            client = ViewerClient.connect(host, port, new ViewerHello(false, fps), connectTimeoutS * 1000L);
+            client = ViewerClient.connect(host, port, hello, connectTimeoutS * 1000L);
         } catch (IOException e) {
             System.err.println("viewer2d: " + e.getMessage());
             return 1;
         }
-        client.start(feed);
+        new RunFollower(host, port, hello, feed, FIRST_RETRY_MS, MAX_RETRY_MS, nextRunWaitS * 1000L).start(client);
         ViewerWindow.open("RoboSim - " + host + ":" + port, feed, new SceneRenderer.Options(true, !noTrails, sonar),
                 fps);
         windowOpen = true;

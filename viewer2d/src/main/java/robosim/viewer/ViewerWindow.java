@@ -1,7 +1,6 @@
 package robosim.viewer;
 
 import java.awt.BorderLayout;
-import java.util.Locale;
 import javax.swing.BorderFactory;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
@@ -10,7 +9,7 @@ import javax.swing.Timer;
 import javax.swing.WindowConstants;
 
 /**
- * The viewer's window: the world and a status line (step, steps/s, robot count, state). A Swing
+ * The viewer's window: the world and a status line ({@link StatusLine}). A Swing
  * timer polls the {@link SceneFeed} for the newest immutable scene each frame, on the Swing thread.
  */
 final class ViewerWindow {
@@ -48,12 +47,6 @@ final class ViewerWindow {
         }
         shown = s;
         panel.show(s);
-        status.setText(statusLine(s));
-    }
-
-    static String statusLine(Scene s) {
-        return String.format(Locale.ROOT, "step %d   %.0f steps/s   %d robots   %s      "
-                + "[f fit, wheel/+/- zoom, drag/arrows pan, t trails, s sonar, n names]",
-                s.step() + 1, s.stepsPerSecond(), s.robotCount(), s.status());
+        status.setText(StatusLine.text(s));
     }
 }

@@ -215,7 +215,7 @@ public final class ControlServer implements Closeable {
             n.putPOJO("robots", s.robots());
             n.putPOJO("connected", s.connected());
             n.putPOJO("left", s.left());
-            n.put("geometry", s.geometryAttached());
+            n.put("geometry", s.geometry());
             if (!s.reason().isEmpty()) {
                 n.put("reason", s.reason());
             }

@@ -29,6 +29,7 @@ import robosim.protocol.RobotWelcome;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
+import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.WorldSnapshot;
@@ -148,6 +149,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final StepRequest[] requests;
     private final boolean[] active;
     private final boolean[] begun;
+    /** Robots whose connection has closed (they exited, were dropped, or the run ended): never "connected". */
+    private final boolean[] gone;
     private boolean robotsTold;
     private int registered;
     private volatile GeometryClientWorker geometry;
@@ -179,6 +182,11 @@ public final class ClientWorkerCoordinator implements Closeable {
     private boolean paused;
     private long stepBudget;
     private boolean holding;
+    /** True while the step's thread waits for the pace ({@code --speed}), the lock released. */
+    private boolean pacing;
+    /** Pacing counts from here: the start, or the end of the last hold (a pause is not caught up after). */
+    private long paceOriginNanos;
+    private long paceOriginStep;
     private boolean beginPending;
     private long rateMarkNanos;
     private long rateMarkSteps;
@@ -200,6 +208,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.requests = new StepRequest[robotCount];
         this.active = new boolean[robotCount];
         this.begun = new boolean[robotCount];
+        this.gone = new boolean[robotCount];
     }
 
     /** Binds the three ports and starts accepting; a port in use is a {@link BindException} naming it. */
@@ -419,6 +428,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             beginPending = true;
             LOG.info("every client is here; paused before step 0 (start or step from the control port)");
             pauseChanged.signalAll();
+            announce(RunState.Phase.PAUSED);
         } else {
             beginAll();
         }
@@ -434,9 +444,12 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Under the lock: sends every robot step 0, starting the lock-step. */
     private void beginAll() {
         beginPending = false;
+        announce(RunState.Phase.RUNNING);
         startNanos = System.nanoTime();
         stepReleasedNanos = startNanos;
         rateMarkNanos = startNanos;
+        paceOriginNanos = startNanos;
+        paceOriginStep = 0;
         for (int i = 0; i < robotCount; i++) {
             if (!active[i]) {
                 continue;
@@ -571,8 +584,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             stepRunning = false;
         }
         stepsDone = k + 1;
-        pace(stepsDone);
-        if (!holdWhilePaused()) {
+        if (!pace(stepsDone) || !holdWhilePaused()) {
             return; // ended while paused: the robots have been told
         }
         boolean last = settings.maxSteps() > 0 && stepsDone >= settings.maxSteps();
@@ -615,18 +627,31 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     /**
-     * With {@code speed} > 0, holds the step until simulated time runs at most {@code speed} times
-     * real time, so a person can watch. This is pacing, not waiting for an event.
+     * Under the lock, on the step's thread, after step {@code steps - 1} is computed and before its
+     * responses go out: with {@code speed} > 0, holds the step until simulated time runs at most
+     * {@code speed} times real time (counted from the start or the last pause), so a person can
+     * watch. It waits on a condition, so the lock is free meanwhile (the status, a pause, a stop, a
+     * viewer joining go on), exactly as while paused; a pause ends the wait and holds the step. False
+     * if the simulation ended meanwhile.
      */
-    private void pace(long steps) {
+    private boolean pace(long steps) throws InterruptedException {
         if (settings.speed() <= 0) {
-            return;
+            return true;
         }
-        long due = startNanos + (long) (steps * spec.timeStepMs() * 1_000_000L / settings.speed());
-        long wait = due - System.nanoTime();
-        if (wait > 0) {
-            java.util.concurrent.locks.LockSupport.parkNanos(wait);
+        long due = paceOriginNanos
+                + (long) ((steps - paceOriginStep) * spec.timeStepMs() * 1_000_000L / settings.speed());
+        pacing = true;
+        try {
+            // a pause takes hold at once (the hold follows); the pace counts afresh after it
+            long wait = due - System.nanoTime();
+            while (wait > 0 && state == State.RUNNING && !(paused && stepBudget == 0)) {
+                pauseChanged.awaitNanos(wait);
+                wait = due - System.nanoTime();
+            }
+        } finally {
+            pacing = false;
         }
+        return state == State.RUNNING;
     }
 
     /** Under the lock: robot i no longer takes part; it stands where it is. */
@@ -660,6 +685,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (robots[index] != worker) {
                 return;
             }
+            gone[index] = state != State.WAITING; // before the start its name is simply free again
             if (state == State.WAITING) {
                 robots[index] = null;
                 properties[index] = null;
@@ -688,6 +714,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             if (geometry == worker && state == State.WAITING) {
                 geometry = null;
                 LOG.warn("Geometry process left before the start ({}); waiting for another", why);
+            } else if (geometry == worker && state == State.ENDED) {
+                geometry = null; // told the end and gone; during a run a loss is the step's to notice
             }
         } finally {
             lock.unlock();
@@ -713,6 +741,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
         holding = true;
         pauseChanged.signalAll();
+        announce(RunState.Phase.PAUSED);
         try {
             while (paused && stepBudget == 0 && state == State.RUNNING) {
                 pauseChanged.await();
@@ -722,10 +751,13 @@ public final class ClientWorkerCoordinator implements Closeable {
             stepReleasedNanos = System.nanoTime(); // robots are not late for the time we held them
             rateMarkNanos = stepReleasedNanos;
             rateMarkSteps = stepsDone;
+            paceOriginNanos = stepReleasedNanos; // pace on from here: no rush to catch up the pause
+            paceOriginStep = stepsDone;
         }
         if (state != State.RUNNING) {
             return false;
         }
+        announce(RunState.Phase.RUNNING);
         if (paused) {
             stepBudget--;
             if (stepBudget == 0) {
@@ -745,6 +777,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         try {
             paused = true;
             stepBudget = 0;
+            pauseChanged.signalAll(); // a step waiting for its pace holds at once
             while (state == State.RUNNING && !holding && !beginPending && nanos > 0) {
                 nanos = pauseChanged.awaitNanos(nanos);
             }
@@ -802,9 +835,16 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
-    /** What the control port reports. */
+    /**
+     * What the control port reports.
+     *
+     * @param connected robots whose connection is open and who take part (or wait for the start)
+     * @param left robots that were in this simulation and whose connection has closed or who were removed
+     * @param geometry {@code in-process} (no Geometry process: {@code --no-geometry}, or going on without
+     *     a lost one), {@code attached}, {@code waiting} (for a Geometry process) or {@code none} (ended)
+     */
     public record Status(String state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
-            List<String> left, boolean geometryAttached, String reason) {
+            List<String> left, String geometry, String reason) {
     }
 
     public Status status() {
@@ -813,7 +853,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             List<String> connected = new ArrayList<>();
             List<String> left = new ArrayList<>();
             for (int i = 0; i < robotCount; i++) {
-                if (robots[i] != null && (state == State.WAITING || active[i])) {
+                if (robots[i] != null && !gone[i] && (state == State.WAITING || active[i])) {
                     connected.add(robotNames.get(i));
                 } else if (robots[i] != null && state != State.WAITING) {
                     left.add(robotNames.get(i));
@@ -825,11 +865,26 @@ public final class ClientWorkerCoordinator implements Closeable {
                 case RUNNING -> paused && (holding || beginPending || stepBudget == 0) ? "PAUSED" : "RUNNING";
             };
             double rate = "RUNNING".equals(st) ? recentRate : 0;
-            return new Status(st, stepsReleased, rate, robotNames, connected, left,
-                    settings.inProcessGeometry() || geometry != null, endReason);
+            return new Status(st, stepsReleased, rate, robotNames, connected, left, geometryStatus(), endReason);
         } finally {
             lock.unlock();
         }
+    }
+
+    /** Under the lock: where collision and sonar are resolved now, for {@link #status}. */
+    private String geometryStatus() {
+        if (settings.inProcessGeometry()) {
+            return "in-process";
+        }
+        if (geometry != null) {
+            return "attached";
+        }
+        if (state == State.ENDED) {
+            return "none";
+        }
+        boolean goingOnWithout = state == State.RUNNING && geometryLosses > 0
+                && settings.onGeometryLoss() == GeometryLoss.IN_PROCESS;
+        return goingOnWithout ? "in-process" : "waiting";
     }
 
     // ---- faults: a lost Geometry process, a silent robot --------------------------------------
@@ -910,7 +965,8 @@ public final class ClientWorkerCoordinator implements Closeable {
             try {
                 long now = System.nanoTime();
                 // threads waiting for the lock may be robots' requests that arrived in time
-                if (state != State.RUNNING || stepRunning || holding || beginPending || lock.hasQueuedThreads()
+                if (state != State.RUNNING || stepRunning || holding || pacing || beginPending
+                        || lock.hasQueuedThreads()
                         || now - stepReleasedNanos <= TimeUnit.MILLISECONDS.toNanos(step)) {
                     return;
                 }
@@ -962,6 +1018,9 @@ public final class ClientWorkerCoordinator implements Closeable {
             viewers.add(viewer);
             if (state == State.ENDED) {
                 viewer.end(endMessage());
+            } else {
+                viewer.state(new RunState(stepsReleased, state == State.WAITING ? RunState.Phase.WAITING
+                        : holding || beginPending ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
             }
             LOG.info("{} connected ({} viewer(s))", viewer.name(), viewers.size());
             return snapshot;
@@ -974,6 +1033,14 @@ public final class ClientWorkerCoordinator implements Closeable {
     private static RobotProperties expected(WorldSpec.RobotSpec r) {
         RobotProperties model = RobotModels.byName(r.type());
         return model != null ? model : new RobotProperties(r.type(), r.radiusMm(), 1, 1, List.of());
+    }
+
+    /** Under the lock: tells every viewer the run now runs or is held (pause, resume, start). */
+    private void announce(RunState.Phase phase) {
+        RunState s = new RunState(stepsReleased, phase);
+        for (ViewerClientWorker v : viewers) {
+            v.state(s);
+        }
     }
 
     void removeViewer(ViewerClientWorker viewer, String why) {

@@ -5,6 +5,7 @@ import java.net.Socket;
 import java.util.ArrayDeque;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.Protocol;
+import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldSnapshot;
@@ -15,7 +16,9 @@ import robosim.protocol.WorldSnapshot;
  * replace it), so a slow or frozen viewer never slows the robots and its memory stays bounded. A
  * recording viewer holds up to {@link #RECORDING_BACKLOG} and, past that, makes the step wait. A
  * live viewer that asked for at most n updates a second gets the newest pose at most every 1/n s,
- * and the step thread wakes its worker only when the worker is waiting for data.
+ * and the step thread wakes its worker only when the worker is waiting for data. A change of run
+ * state (running, paused) is held the same way, newest only; it goes out after the updates held
+ * before it, or ahead of one that is waiting for the update-rate cap (a state never waits for it).
  */
 final class ViewerClientWorker extends ClientWorker {
     static final int RECORDING_BACKLOG = 1024;
@@ -35,6 +38,8 @@ final class ViewerClientWorker extends ClientWorker {
     private boolean waitingForData;
     private boolean closed;
     private SimulationEnd end;
+    /** The newest run state not yet sent (a newer one replaces it), or null. */
+    private RunState state;
     private int maxPending;
 
     ViewerClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
@@ -71,6 +76,9 @@ final class ViewerClientWorker extends ClientWorker {
             if (next instanceof PoseUpdate u) {
                 connection.write(u);
                 connection.flush();
+            } else if (next instanceof RunState s) {
+                connection.write(s);
+                connection.flush();
             } else {
                 connection.write((SimulationEnd) next);
                 connection.flush();
@@ -98,6 +106,15 @@ final class ViewerClientWorker extends ClientWorker {
         }
     }
 
+    /** Called under the coordinator's lock when the run starts, pauses or resumes. Never blocks. */
+    synchronized void state(RunState newState) {
+        if (closed) {
+            return;
+        }
+        state = newState;
+        notifyAll(); // rare: also cuts short a wait for the update-rate cap
+    }
+
     synchronized void end(SimulationEnd message) {
         end = message;
         notifyAll();
@@ -110,6 +127,11 @@ final class ViewerClientWorker extends ClientWorker {
                 return end;
             }
             long early = capped ? nextAllowed - System.nanoTime() : 0;
+            if ((pending.isEmpty() || early > 0) && state != null && end == null) {
+                RunState s = state;
+                state = null;
+                return s;
+            }
             if (early > 0) {
                 wait(early / 1_000_000, (int) (early % 1_000_000));
                 continue;

@@ -1,0 +1,40 @@
+package robosim.control;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import org.junit.jupiter.api.Test;
+
+/** The Control Panel's status text: steps/s only while running; fields shown as the Environment said. */
+class StatusTextTest {
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private static JsonNode status(String json) throws Exception {
+        return JSON.readTree(json.replace('\'', '"'));
+    }
+
+    @Test
+    void stepsPerSecondOnlyWhileRunning() throws Exception {
+        assertEquals("RUNNING   step 120   2.0 steps/s",
+                StatusText.headline(status("{'state':'RUNNING','step':120,'steps_per_s':2.0}")));
+        assertEquals("PAUSED   step 120", StatusText.headline(status("{'state':'PAUSED','step':120,'steps_per_s':0}")));
+        assertEquals("ENDED   step 300", StatusText.headline(status("{'state':'ENDED','step':300,'steps_per_s':0}")));
+    }
+
+    @Test
+    void detailsShowGeometryAndWhoLeft() throws Exception {
+        assertEquals("file:      remote.xml\nrobots:    rc1, rc2\nconnected: rc1\nleft:      rc2\ngeometry:  in-process",
+                StatusText.details(status("{'file':'remote.xml','robots':['rc1','rc2'],'connected':['rc1'],"
+                        + "'left':['rc2'],'geometry':'in-process'}")));
+        assertEquals("file:      remote.xml\nrobots:    rc1\nconnected: -\nleft:      rc1\ngeometry:  none\n"
+                + "ended:     stopped from the control port",
+                StatusText.details(status("{'file':'remote.xml','robots':['rc1'],'connected':[],'left':['rc1'],"
+                        + "'geometry':'none','reason':'stopped from the control port'}")));
+    }
+
+    @Test
+    void controlCharactersFromTheNetworkAreNotShown() throws Exception {
+        assertEquals("RUN?NING   step 1", StatusText.headline(status("{'state':'RUN\\nNING','step':1}")));
+    }
+}

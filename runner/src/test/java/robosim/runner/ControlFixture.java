@@ -1,0 +1,85 @@
+package robosim.runner;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import robosim.control.ControlClient;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.control.ControlServer;
+import robosim.environment.control.EnvironmentHost;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.examples.BackAndForth;
+import robosim.hardware.HardwareSimulator;
+import robosim.hardware.RobotType;
+
+/** An Environment host with its control port, on ephemeral ports; paused until told. */
+final class ControlFixture implements AutoCloseable {
+    static final int TIMEOUT_MS = 60_000;
+
+    final EnvironmentHost host;
+    final ControlServer control;
+    final CompletableFuture<Integer> running;
+    /** Every robot's socket, in file order, for each call of {@link #robots}: a test may close one. */
+    final List<Socket> sockets = new ArrayList<>();
+
+    ControlFixture(Path file, String token) throws Exception {
+        this(file, token, 0);
+    }
+
+    /** @param speed the run's pace in times real time (0: as fast as possible) */
+    ControlFixture(Path file, String token, double speed) throws Exception {
+        ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
+                0, 0, 0, true, 0, 64, 10_000, speed, ClientWorkerCoordinator.Design.SEQUENTIAL, true,
+                ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS,
+                ClientWorkerCoordinator.Settings.DEFAULT_GEOMETRY_TIMEOUT_MS,
+                ClientWorkerCoordinator.GeometryLoss.IN_PROCESS);
+        host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
+        host.open();
+        control = new ControlServer(host, token);
+        control.start(InetAddress.getLoopbackAddress(), 0);
+        running = CompletableFuture.supplyAsync(() -> {
+            try {
+                return host.run(summary -> { });
+            } catch (InterruptedException e) {
+                throw new IllegalStateException(e);
+            }
+        });
+    }
+
+    ControlClient client(String token) throws IOException {
+        return new ControlClient("127.0.0.1", control.port(), token, TIMEOUT_MS);
+    }
+
+    /** Connects every robot of the current file, each running BackAndForth; their end reasons. */
+    List<CompletableFuture<String>> robots() throws Exception {
+        int port = host.ports()[0];
+        List<CompletableFuture<String>> out = new ArrayList<>();
+        for (var r : new EnvironmentLoader().load(host.file()).robots()) {
+            HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+            Socket socket = new Socket(InetAddress.getLoopbackAddress(), port);
+            sockets.add(socket);
+            sim.connect(socket, 64);
+            out.add(CompletableFuture.supplyAsync(() -> {
+                try {
+                    return sim.run(new BackAndForth());
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }));
+        }
+        return out;
+    }
+
+    @Override
+    public void close() throws Exception {
+        host.shutdown();
+        running.get(TIMEOUT_MS, TimeUnit.MILLISECONDS);
+        control.close();
+        host.current().close();
+    }
+}
