@@ -15,6 +15,7 @@ import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 
@@ -60,24 +61,29 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "(default: 1, real time, without --steps, a session driven by hand; 0 with --steps).")
     Double speed;
 
-    @Option(names = "--coordinator", defaultValue = "SEQUENTIAL",
-            description = "The coordinator design: SEQUENTIAL (the original's single loop reads every robot in "
-                    + "turn; the default, fastest as measured in docs/PERFORMANCE.md), THREADS (a reading thread per "
-                    + "robot; the step's thread writes every response) or TWO_THREADS (a reading and a writing thread "
-                    + "per robot).")
+    @Option(names = "--coordinator", defaultValue = "THREADS",
+            description = "The coordinator design: THREADS (the report's design and the default: a reading thread "
+                    + "per robot, the simulation loop writes every response), SEQUENTIAL (the original's loop: one "
+                    + "thread reads every robot in turn) or TWO_THREADS (a reading and a writing thread per robot). "
+                    + "Measured against each other in docs/PERFORMANCE.md.")
     ClientWorkerCoordinator.Design design;
 
     @Option(names = "--step-timeout-ms", defaultValue = ""
-            + ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS,
+            + Settings.DEFAULT_STEP_TIMEOUT_MS,
             description = "Drop a robot that sends no request this long after its step was released "
                     + "(default: ${DEFAULT-VALUE}; 0 = wait for ever).")
     long stepTimeoutMs;
 
     @Option(names = "--geometry-timeout-ms", defaultValue = ""
-            + ClientWorkerCoordinator.Settings.DEFAULT_GEOMETRY_TIMEOUT_MS,
+            + Settings.DEFAULT_GEOMETRY_TIMEOUT_MS,
             description = "Count the Geometry process as lost if one step's round trip takes longer "
                     + "(default: ${DEFAULT-VALUE}; 0 = wait for ever).")
     long geometryTimeoutMs;
+
+    @Option(names = "--viewer-write-timeout-ms", defaultValue = "" + Settings.DEFAULT_VIEWER_WRITE_TIMEOUT_MS,
+            description = "Drop a viewer that does not take one write within this time; nothing else waits on it "
+                    + "(default: ${DEFAULT-VALUE}; 0 = never).")
+    long viewerWriteTimeoutMs;
 
     @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS",
             description = "When the Geometry process dies or hangs mid-run: IN_PROCESS (go on with in-process "
@@ -126,14 +132,17 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         double pace = effectiveSpeed(speed, steps);
         if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(pace >= 0) || Double.isInfinite(pace)
-                || stepTimeoutMs < 0 || geometryTimeoutMs < 0) {
+                || stepTimeoutMs < 0 || geometryTimeoutMs < 0 || viewerWriteTimeoutMs < 0) {
             System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be "
                     + ">= 0");
             return 2;
         }
-        ClientWorkerCoordinator.Settings settings = new ClientWorkerCoordinator.Settings(
-                InetAddress.getByName(bind), robotPort, viewerPort, geometryPort, noGeometry, steps, resetEvery,
-                handshakeTimeoutMs, pace, design, !noStepMessages, stepTimeoutMs, geometryTimeoutMs, onGeometryLoss);
+        Settings settings = Settings.builder()
+                .ports(InetAddress.getByName(bind), robotPort, viewerPort, geometryPort)
+                .handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
+                .geometryTimeoutMs(geometryTimeoutMs).viewerWriteTimeoutMs(viewerWriteTimeoutMs)
+                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
+                .maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
         InetAddress bindAddress = InetAddress.getByName(bind);
         String token = controlToken != null ? controlToken : System.getenv("ROBOSIM_CONTROL_TOKEN");
         if (controlPort >= 0 && !bindAddress.isLoopbackAddress() && (token == null || token.isBlank())) {

@@ -12,8 +12,8 @@ final class EnvironmentOptions {
             description = "Environment ports (default: free ports picked by the system).")
     List<Integer> ports;
 
-    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "SEQUENTIAL",
-            description = "The Environment's coordinator design: SEQUENTIAL (default), THREADS or TWO_THREADS.")
+    @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "THREADS",
+            description = "The Environment's coordinator design: THREADS (the report's, the default), SEQUENTIAL or TWO_THREADS.")
     String coordinator;
 
     @Option(names = "--no-step-messages",
@@ -26,7 +26,7 @@ final class EnvironmentOptions {
 
     @Option(names = "--step-timeout-ms", paramLabel = "MS",
             description = "Remove a robot that sends no request this long after its step was released (default: the "
-                    + "Environment's, " + ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS + "; 0 = wait for "
+                    + "Environment's, " + robosim.environment.net.Settings.DEFAULT_STEP_TIMEOUT_MS + "; 0 = wait for "
                     + "ever). A run that lost a robot exits " + HeadlessRunner.EXIT_ROBOTS_REMOVED + ".")
     Long stepTimeoutMs;
 

@@ -13,6 +13,7 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
@@ -33,11 +34,8 @@ final class ControlFixture implements AutoCloseable {
 
     /** @param speed the run's pace in times real time (0: as fast as possible) */
     ControlFixture(Path file, String token, double speed) throws Exception {
-        ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
-                0, 0, 0, true, 0, 64, 10_000, speed, ClientWorkerCoordinator.Design.SEQUENTIAL, true,
-                ClientWorkerCoordinator.Settings.DEFAULT_STEP_TIMEOUT_MS,
-                ClientWorkerCoordinator.Settings.DEFAULT_GEOMETRY_TIMEOUT_MS,
-                ClientWorkerCoordinator.GeometryLoss.IN_PROCESS);
+        Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
+                .resetEvery(64).speed(speed).build();
         host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
         host.open();
         control = new ControlServer(host, token);

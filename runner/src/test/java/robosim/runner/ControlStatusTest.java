@@ -17,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import robosim.control.ControlClient;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 
 /** The control port's status tells the truth: where geometry is resolved, who is connected, who has left. */
 class ControlStatusTest {
@@ -74,7 +75,8 @@ class ControlStatusTest {
     @Test
     void withAGeometryPortTheStatusWaitsForTheProcessAndSaysNoneOnceEnded() throws Exception {
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(new EnvironmentLoader().load(THREE),
-                new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(), 0, 0, 0, false, 0, 64, 10_000));
+                Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(false).maxSteps(0)
+                .resetEvery(64).handshakeTimeoutMs(10_000).build());
         try (env) {
             env.start();
             assertEquals("waiting", env.status().geometry());

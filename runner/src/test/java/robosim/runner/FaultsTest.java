@@ -26,6 +26,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.geometry.GeometryClient;
 import robosim.hardware.ArRobot;
@@ -56,15 +57,19 @@ class FaultsTest {
         return new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml"));
     }
 
-    private static ClientWorkerCoordinator start(ClientWorkerCoordinator.Settings settings) throws Exception {
+    private static ClientWorkerCoordinator start(Settings settings) throws Exception {
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(three(), settings);
         env.start();
         return env;
     }
 
-    private static ClientWorkerCoordinator.Settings settings(boolean inProcessGeometry, long steps) {
-        return new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry,
-                steps, 64, 10_000);
+    private static Settings settings(boolean inProcessGeometry, long steps) {
+        return builder(inProcessGeometry, steps).build();
+    }
+
+    private static Settings.Builder builder(boolean inProcessGeometry, long steps) {
+        return Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(inProcessGeometry)
+                .maxSteps(steps).resetEvery(64).handshakeTimeoutMs(10_000);
     }
 
     private static CompletableFuture<String> robot(String name, robosim.hardware.RobotType type, int port) {
@@ -114,7 +119,7 @@ class FaultsTest {
     @EnumSource(ClientWorkerCoordinator.Design.class)
     void aRobotThatDisconnectsMidRunIsRemovedViewersAreToldAndTheOthersGoOn(ClientWorkerCoordinator.Design design)
             throws Exception {
-        try (ClientWorkerCoordinator env = start(settings(true, 100).withDesign(design))) {
+        try (ClientWorkerCoordinator env = start(builder(true, 100).design(design).build())) {
             int[] ports = env.ports();
             List<PoseUpdate> seen = new CopyOnWriteArrayList<>();
             ViewerClient viewer = record(ports[1], seen);
@@ -145,7 +150,7 @@ class FaultsTest {
     @ParameterizedTest
     @EnumSource(ClientWorkerCoordinator.Design.class)
     void aRobotThatFallsSilentIsDroppedAfterTheStepTimeout(ClientWorkerCoordinator.Design design) throws Exception {
-        try (ClientWorkerCoordinator env = start(settings(true, 60).withDesign(design).withStepTimeoutMs(300))) {
+        try (ClientWorkerCoordinator env = start(builder(true, 60).design(design).stepTimeoutMs(300).build())) {
             int[] ports = env.ports();
             CompletableFuture<ObjectConnection> r1 = CompletableFuture.supplyAsync(() -> {
                 try {
@@ -176,7 +181,7 @@ class FaultsTest {
     void aStuckControlCodeInASharedProcessCostsOnlyItsOwnRobot() throws Exception {
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
                 .exchange(InJvmSimulation.Exchange.SHARED)
-                .settings(s -> s.withStepTimeoutMs(300))
+                .settings(s -> s.stepTimeoutMs(300))
                 .run(200, true, () -> robot -> {
                     if (robot.name().equals("robot3")) {
                         for (int i = 0; i < 20; i++) {
@@ -211,9 +216,8 @@ class FaultsTest {
     @Test
     void whenGeometryDiesTheRunGoesOnInProcessWithTheSamePosesAndANewGeometryTakesOver() throws Exception {
         // paced at 200x real time, so the run is still going when the new Geometry process attaches
-        geometryKilledAtStep50(400, s -> new ClientWorkerCoordinator.Settings(s.bind(), 0, 0, 0, false, s.maxSteps(),
-                s.resetEvery(), s.handshakeTimeoutMs(), 200, s.design(), true, s.stepTimeoutMs(),
-                s.geometryTimeoutMs(), ClientWorkerCoordinator.GeometryLoss.IN_PROCESS), (env, ports) -> {
+        geometryKilledAtStep50(400, s -> s.speed(200).onGeometryLoss(ClientWorkerCoordinator.GeometryLoss.IN_PROCESS),
+                (env, ports, events) -> {
                     CompletableFuture<String> second = CompletableFuture.supplyAsync(() -> {
                         try {
                             return new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run();
@@ -221,15 +225,21 @@ class FaultsTest {
                             throw new IllegalStateException(e);
                         }
                     });
-                    assertTrue(env.awaitGeometry(1, 1, LONG, TimeUnit.SECONDS), "the new Geometry attached");
+                    assertTrue(events.geometryAttached.await(LONG, TimeUnit.SECONDS), "the new Geometry attached");
                     second.get(LONG, TimeUnit.SECONDS);
                 });
     }
 
     @Test
     void withTheWaitSettingTheStepWaitsForANewGeometryProcess() throws Exception {
-        geometryKilledAtStep50(300, s -> s.withGeometryLoss(ClientWorkerCoordinator.GeometryLoss.WAIT),
-                (env, ports) -> new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64).run());
+        geometryKilledAtStep50(300, s -> s.onGeometryLoss(ClientWorkerCoordinator.GeometryLoss.WAIT),
+                (env, ports, events) -> new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64)
+                        .run());
+    }
+
+    /** What a test does once the Environment has noticed the loss of its Geometry process. */
+    private interface AfterLoss {
+        void run(ClientWorkerCoordinator env, int[] ports, RunEvents events) throws Exception;
     }
 
     /**
@@ -238,12 +248,14 @@ class FaultsTest {
      * one new Geometry attached, and the poses of a run without the fault.
      */
     private static void geometryKilledAtStep50(long steps,
-            java.util.function.UnaryOperator<ClientWorkerCoordinator.Settings> settings,
-            InJvmSimulation.Sideline afterLoss) throws Exception {
+            java.util.function.UnaryOperator<Settings.Builder> settings,
+            AfterLoss afterLoss) throws Exception {
         InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
                 .run(steps, false, Chatter::new);
         CountDownLatch atStep50 = new CountDownLatch(1);
+        RunEvents events = new RunEvents();
         InJvmSimulation faulty = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).settings(settings)
+                .listen(events)
                 .onUpdate((u, port) -> {
                     if (u.step() == 50) {
                         atStep50.countDown();
@@ -253,8 +265,8 @@ class FaultsTest {
             assertTrue(atStep50.await(LONG, TimeUnit.SECONDS));
             faulty.geometryKilled = true;
             faulty.geometrySocket.close();
-            assertTrue(env.awaitGeometry(1, 0, LONG, TimeUnit.SECONDS), "the loss was noticed");
-            afterLoss.run(env, ports);
+            assertTrue(events.geometryLost.await(LONG, TimeUnit.SECONDS), "the loss was noticed");
+            afterLoss.run(env, ports, events);
         });
         InJvmSimulation sim = faulty.run(steps, false, Chatter::new);
         assertTrue(sim.summary.completed(), sim.summary.reason());
@@ -304,8 +316,8 @@ class FaultsTest {
         "geometry, GADGET", "geometry, HUGE_ARRAY", "geometry, DEEP",
     })
     void badInputIsRefusedAndTheSimulationRunsOn(String port, Bad bad) throws Exception {
-        ClientWorkerCoordinator.Settings s = new ClientWorkerCoordinator.Settings(InetAddress.getLoopbackAddress(),
-                0, 0, 0, false, 30, 64, 500);
+        Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(false).maxSteps(30)
+                .resetEvery(64).handshakeTimeoutMs(500).build();
         try (ClientWorkerCoordinator env = start(s)) {
             int[] ports = env.ports();
             int p = switch (port) {

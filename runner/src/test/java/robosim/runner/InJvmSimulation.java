@@ -11,6 +11,7 @@ import robosim.api.RobotControl;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.geometry.GeometryClient;
 import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
@@ -31,14 +32,21 @@ final class InJvmSimulation {
     /** The last update each extra live viewer saw. */
     final List<PoseUpdate> liveLast = new ArrayList<>();
     ClientWorkerCoordinator.Summary summary;
-    int maxLiveViewerBacklog;
     int viewersAtEnd;
     private int liveViewers;
     private int frozenViewers;
     /** Called on the recording viewer's thread with each update, and the viewer port. */
     private java.util.function.BiConsumer<PoseUpdate, Integer> onUpdate = (u, port) -> { };
 
-    private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.SEQUENTIAL;
+    /** The coordinator design; null: the Environment's default. */
+    private ClientWorkerCoordinator.Design design;
+    private final List<ClientWorkerCoordinator.RunListener> listeners = new ArrayList<>();
+
+    /** Adds a listener to the Environment of the next run. */
+    InJvmSimulation listen(ClientWorkerCoordinator.RunListener listener) {
+        listeners.add(listener);
+        return this;
+    }
 
     InJvmSimulation design(ClientWorkerCoordinator.Design d) {
         this.design = d;
@@ -61,7 +69,7 @@ final class InJvmSimulation {
         return this;
     }
 
-    private java.util.function.UnaryOperator<ClientWorkerCoordinator.Settings> settingsHook = x -> x;
+    private java.util.function.UnaryOperator<Settings.Builder> settingsHook = x -> x;
     private Sideline sideline;
     /** The Geometry client's socket while it runs (a test may close it to kill Geometry). */
     volatile Socket geometrySocket;
@@ -69,7 +77,7 @@ final class InJvmSimulation {
     volatile boolean geometryKilled;
 
     /** Changes the Environment's settings for the next run. */
-    InJvmSimulation settings(java.util.function.UnaryOperator<ClientWorkerCoordinator.Settings> hook) {
+    InJvmSimulation settings(java.util.function.UnaryOperator<Settings.Builder> hook) {
         this.settingsHook = hook;
         return this;
     }
@@ -101,9 +109,16 @@ final class InJvmSimulation {
     }
 
     InJvmSimulation run(long steps, boolean inProcessGeometry, Supplier<RobotControl> control) throws Exception {
-        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, settingsHook.apply(new ClientWorkerCoordinator.Settings(
-                InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry, steps, ObjectConnection.DEFAULT_RESET_EVERY,
-                10_000).withDesign(design).withStepMessages(stepMessages)));
+        Settings.Builder settings = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0)
+                .inProcessGeometry(inProcessGeometry).maxSteps(steps).resetEvery(ObjectConnection.DEFAULT_RESET_EVERY)
+                .handshakeTimeoutMs(10_000).stepMessages(stepMessages);
+        if (design != null) {
+            settings.design(design);
+        }
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, settingsHook.apply(settings).build());
+        for (ClientWorkerCoordinator.RunListener l : listeners) {
+            env.listen(l);
+        }
         env.start();
         try {
             int[] ports = env.ports();
@@ -199,7 +214,6 @@ final class InJvmSimulation {
                 live.awaitEnd(1, TimeUnit.MINUTES);
             }
             liveLast.addAll(java.util.Arrays.asList(lastSeen));
-            maxLiveViewerBacklog = env.maxLiveViewerBacklog();
             // the viewers that took the end leave on their own; wait for their workers (the frozen one never
             // finishes, so this returns after the timeout at the latest)
             env.awaitViewersDone(frozenViewers > 0 ? 3000 : 30_000);

@@ -15,6 +15,7 @@ import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.ArRobot;
 import robosim.hardware.HardwareSimulator;
@@ -34,8 +35,8 @@ class MisbehavingClientsTest {
     }
 
     private static ClientWorkerCoordinator start(boolean inProcessGeometry, long steps) throws Exception {
-        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec(), new ClientWorkerCoordinator.Settings(
-                InetAddress.getLoopbackAddress(), 0, 0, 0, inProcessGeometry, steps, 64, 10_000));
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec(), Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(inProcessGeometry).maxSteps(steps)
+                .resetEvery(64).handshakeTimeoutMs(10_000).build());
         env.start();
         return env;
     }

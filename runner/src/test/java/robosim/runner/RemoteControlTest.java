@@ -24,6 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.examples.RemoteControlRobot;
 import robosim.examples.RobotInfo;
 import robosim.hardware.HardwareSimulator;
@@ -50,8 +51,8 @@ class RemoteControlTest {
                 + "  <robot name=\"rc2\" host=\"127.0.0.1\" port=\"" + port2 + "\"/>\n</robotInfo>\n");
         System.setProperty(RobotInfo.PROPERTY, info.toString());
         WorldSpec spec = new EnvironmentLoader().load(InJvmSimulation.env("remote.xml"));
-        try (ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
-                InetAddress.getLoopbackAddress(), 0, 0, 0, true, 0, 64, 10_000))) {
+        try (ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true).maxSteps(0)
+                .resetEvery(64).handshakeTimeoutMs(10_000).build())) {
             env.start();
             int[] ports = env.ports();
             List<PoseUpdate> seen = new CopyOnWriteArrayList<>();

@@ -12,6 +12,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.ArRobot;
 import robosim.hardware.HardwareSimulator;
@@ -23,8 +24,8 @@ class RobotRefusalTest {
     @Test
     void refusedRobotsDoNotStopTheSimulationFromStarting() throws Exception {
         var spec = new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml"));
-        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
-                InetAddress.getLoopbackAddress(), 0, 0, 0, true, 20, 64, 10_000));
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true).maxSteps(20)
+                .resetEvery(64).handshakeTimeoutMs(10_000).build());
         env.start();
         int port = env.ports()[0];
         try {

@@ -11,6 +11,7 @@ import robosim.api.Robot;
 import robosim.api.RobotControl;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
 import robosim.protocol.ProtocolException;
@@ -44,8 +45,8 @@ class RobotTypePlugInTest {
     @Test
     void aRobotWhoseRadiusContradictsTheFileIsRefusedSayingWhich() throws Exception {
         var spec = new EnvironmentLoader().load(Path.of("src/test/resources/hexapod.xml"));
-        try (ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, new ClientWorkerCoordinator.Settings(
-                InetAddress.getLoopbackAddress(), 0, 0, 0, true, 5, 64, 10_000))) {
+        try (ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true).maxSteps(5)
+                .resetEvery(64).handshakeTimeoutMs(10_000).build())) {
             env.start();
             HardwareSimulator fat = new HardwareSimulator("h1", new Hexapod(350));
             ProtocolException e = assertThrows(ProtocolException.class,

@@ -10,6 +10,7 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
 
 /**
  * Runs simulations one after another on the same ports: the first from the file given at start-up,
@@ -20,12 +21,12 @@ import robosim.environment.net.ClientWorkerCoordinator;
 public final class EnvironmentHost {
     private static final Logger LOG = LoggerFactory.getLogger(EnvironmentHost.class);
 
-    private final ClientWorkerCoordinator.Settings base;
+    private final Settings base;
     private final boolean keepRunning;
     private Path file;
     private WorldSpec spec;
     private ClientWorkerCoordinator current;
-    private ClientWorkerCoordinator.Settings settings;
+    private Settings settings;
     private boolean shutdown;
     private boolean startPaused;
     /** True while {@code load} replaces the simulation: {@link #run} must not take its end for the last. */
@@ -36,7 +37,7 @@ public final class EnvironmentHost {
      *     {@code shutdown} instead of returning from {@link #run}
      * @param startPaused the first simulation waits for {@code start} once every client is there
      */
-    public EnvironmentHost(Path file, WorldSpec spec, ClientWorkerCoordinator.Settings settings, boolean keepRunning,
+    public EnvironmentHost(Path file, WorldSpec spec, Settings settings, boolean keepRunning,
             boolean startPaused) {
         this.file = file;
         this.spec = spec;
@@ -67,10 +68,7 @@ public final class EnvironmentHost {
         c.start();
         int[] p = c.ports();
         // later simulations listen on the same ports, even when the first ones were picked by the system
-        settings = new ClientWorkerCoordinator.Settings(base.bind(), p[0], p[1], Math.max(p[2], base.geometryPort()),
-                base.inProcessGeometry(), base.maxSteps(), base.resetEvery(), base.handshakeTimeoutMs(), base.speed(),
-                base.design(), base.stepMessages(), base.stepTimeoutMs(), base.geometryTimeoutMs(),
-                base.onGeometryLoss());
+        settings = base.toBuilder().ports(base.bind(), p[0], p[1], Math.max(p[2], base.geometryPort())).build();
         return c;
     }
 

@@ -8,7 +8,7 @@ import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.GeometryWorld;
 
 /** {@code --no-geometry} (the original's GEOMETRY_USED off): the geometry library, called directly. */
-public final class InProcessGeometry implements GeometryService {
+public final class InProcessGeometry {
     private final GeometryEngine engine;
     private final GeometryStepResponse response;
 
@@ -17,7 +17,7 @@ public final class InProcessGeometry implements GeometryService {
         this.response = engine.newResponse();
     }
 
-    @Override
+    /** The answer to {@code request}; valid until the next call. */
     public GeometryStepResponse resolve(GeometryStepRequest request) {
         engine.step(request, response);
         return response;

@@ -20,7 +20,6 @@ final class MessageRouter {
     private final int maxBytes;
     private final List<List<CommEvent>> inbox;
     private final List<List<String>> notices;
-    private final boolean[] present;
     private long delivered;
     private long undeliverable;
     private long outOfRange;
@@ -36,12 +35,6 @@ final class MessageRouter {
             inbox.add(new ArrayList<>());
             notices.add(new ArrayList<>());
         }
-        this.present = new boolean[robots];
-        java.util.Arrays.fill(present, true);
-    }
-
-    void depart(int robot) {
-        present[robot] = false;
     }
 
     /** Routes robot {@code from}'s messages of this step; positions are read from {@code map}. */
@@ -55,8 +48,8 @@ final class MessageRouter {
                 continue;
             }
             if (CommEvent.EVERYONE.equals(m.to())) {
-                for (int to = 0; to < present.length; to++) {
-                    if (to != from && present[to]) {
+                for (int to = 0; to < inbox.size(); to++) {
+                    if (to != from && !map.isGone(to)) {
                         deliver(from, fromName, to, map.name(to), m.payload(), map);
                     }
                 }
@@ -66,7 +59,7 @@ final class MessageRouter {
             if (to == null) {
                 notice(from, "message to " + m.to() + " not delivered: no robot of that name");
                 undeliverable++;
-            } else if (!present[to]) {
+            } else if (map.isGone(to)) {
                 notice(from, "message to " + m.to() + " not delivered: that robot has left");
                 undeliverable++;
             } else {

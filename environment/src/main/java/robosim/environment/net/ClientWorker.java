@@ -82,8 +82,33 @@ abstract class ClientWorker implements Runnable {
         }
     }
 
+    /**
+     * Waits for the loop's answer to this client's hello, at most {@link #VERDICT_LIMIT_MS}; a loop that
+     * does not answer in that time (it never blocks that long) is taken as a refusal.
+     */
+    protected final <T> T awaitVerdict(java.util.concurrent.CompletableFuture<T> verdict)
+            throws IOException, InterruptedException {
+        try {
+            return verdict.get(VERDICT_LIMIT_MS, java.util.concurrent.TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.TimeoutException e) {
+            throw new IOException("the Environment did not answer its hello in time");
+        } catch (java.util.concurrent.ExecutionException e) {
+            throw new IOException("its hello was not answered: " + e.getCause());
+        }
+    }
+
+    private static final long VERDICT_LIMIT_MS = 30_000;
+
+    /** True once {@link #drop} has been called. */
+    final boolean dropped() {
+        return dropped;
+    }
+
+    private volatile boolean dropped;
+
     /** Closes the connection, so this worker's blocked read or write ends. Any thread. */
     final void drop() {
+        dropped = true;
         ObjectConnection c = connection;
         if (c != null) {
             c.close();

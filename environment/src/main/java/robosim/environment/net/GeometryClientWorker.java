@@ -2,7 +2,9 @@ package robosim.environment.net;
 
 import java.io.IOException;
 import java.net.Socket;
-import robosim.environment.core.GeometryService;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.CompletableFuture;
 import robosim.protocol.GeometryHello;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
@@ -11,11 +13,26 @@ import robosim.protocol.Protocol;
 import robosim.protocol.SimulationEnd;
 
 /**
- * Serves the Geometry process. Its thread does the handshake and then holds the session open until
- * the simulation ends; each step's round trip ({@link #resolve}) runs on the thread that releases
- * the step, which would only wait for it otherwise.
+ * Serves the Geometry process on its own thread, {@code geometry-worker}, which owns that connection:
+ * after the handshake it does what the {@link GeometryLink} asks, one task at a time - send the world,
+ * do a step's round trip (write the request, read the answer) and hand the answer to the loop, send
+ * the end. The simulation loop never touches this socket, so a Geometry process that hangs holds up
+ * nobody but the step that waits for it, and only until the Geometry timeout.
  */
-final class GeometryClientWorker extends ClientWorker implements GeometryService {
+final class GeometryClientWorker extends ClientWorker {
+    private record SendWorld(GeometryWorld world) {
+    }
+
+    private record Resolve(GeometryStepRequest request) {
+    }
+
+    private record End(SimulationEnd end) {
+    }
+
+    /** At most the world, one step and the end are ever outstanding. */
+    private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
+    private volatile long busySince;
+
     GeometryClientWorker(ClientWorkerCoordinator coordinator, Socket socket) {
         super(coordinator, socket, "geometry-worker");
     }
@@ -23,46 +40,61 @@ final class GeometryClientWorker extends ClientWorker implements GeometryService
     @Override
     protected void serve() throws IOException, InterruptedException {
         GeometryHello hello = connection.read(GeometryHello.class);
-        connection.setReadTimeoutMs(0);
-        String refusal = hello.protocolVersion() != Protocol.VERSION
-                ? "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
-                        + Protocol.VERSION + ")"
-                : coordinator.attachGeometry(this);
+        String refusal;
+        if (hello.protocolVersion() != Protocol.VERSION) {
+            refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
+                    + Protocol.VERSION + ")";
+        } else {
+            CompletableFuture<String> verdict = new CompletableFuture<>();
+            coordinator.post(new LoopEvent.GeometryJoins(this, verdict), () -> verdict.complete("the simulation is over"));
+            refusal = awaitVerdict(verdict);
+        }
         if (refusal != null) {
             coordinator.log().warn("{} refused: {}", name(), refusal);
             connection.write(new SimulationEnd(-1, refusal));
             connection.flush();
             return;
         }
-        coordinator.awaitEnd();
-    }
-
-    /** Sends the world; called once, by the coordinator, when the run starts. */
-    void sendWorld(GeometryWorld world) throws IOException {
-        connection.write(world);
-        connection.flush();
-    }
-
-    void sendEnd(SimulationEnd end) {
-        try {
-            connection.write(end);
-            connection.flush();
-        } catch (IOException e) {
-            coordinator.log().info("geometry-worker: could not send the end of the simulation: {}", e.getMessage());
+        connection.setReadTimeoutMs(0);
+        while (true) {
+            Object task = tasks.take();
+            if (task instanceof SendWorld w) {
+                connection.write(w.world());
+                connection.flush();
+                coordinator.post(new LoopEvent.GeometryReady(this), () -> { });
+            } else if (task instanceof Resolve r) {
+                busySince = System.nanoTime();
+                GeometryStepResponse answer;
+                try {
+                    connection.write(r.request());
+                    connection.flush();
+                    answer = connection.read(GeometryStepResponse.class);
+                } finally {
+                    busySince = 0;
+                }
+                coordinator.post(new LoopEvent.GeometryAnswer(this, answer), () -> { });
+            } else {
+                connection.write(((End) task).end());
+                connection.flush();
+                return;
+            }
         }
     }
 
-    private volatile long busySince;
+    /** Loop thread: send the world (once, when the run starts or when this process takes over mid-run). */
+    void sendWorld(GeometryWorld world) {
+        tasks.add(new SendWorld(world));
+    }
 
-    @Override
-    public GeometryStepResponse resolve(GeometryStepRequest request) throws IOException {
-        busySince = System.nanoTime();
-        try {
-            connection.write(request);
-            connection.flush();
-            return connection.read(GeometryStepResponse.class);
-        } finally {
-            busySince = 0;
+    /** Loop thread: resolve {@code request}; the answer comes back as a {@link LoopEvent.GeometryAnswer}. */
+    void resolve(GeometryStepRequest request) {
+        tasks.add(new Resolve(request));
+    }
+
+    /** Loop thread: tell the Geometry process the simulation is over, after whatever it is doing. */
+    void end(SimulationEnd end) {
+        if (!tasks.offer(new End(end))) {
+            drop();
         }
     }
 
@@ -74,6 +106,6 @@ final class GeometryClientWorker extends ClientWorker implements GeometryService
 
     @Override
     protected void exited(String why) {
-        coordinator.geometryExited(this, why);
+        coordinator.post(new LoopEvent.GeometryLeaves(this, why), () -> { });
     }
 }

@@ -1,46 +1,33 @@
 package robosim.environment.net;
 
+import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
-import java.util.ArrayDeque;
-import robosim.protocol.PoseUpdate;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import robosim.protocol.Protocol;
-import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * Serves one viewer: the snapshot, then pose updates, from its own thread. The step thread only
- * {@link #offer}s the newest update. A live viewer holds at most one pending update (newer ones
- * replace it), so a slow or frozen viewer never slows the robots and its memory stays bounded. A
- * recording viewer holds up to {@link #RECORDING_BACKLOG} and, past that, makes the step wait. A
- * live viewer that asked for at most n updates a second gets the newest pose at most every 1/n s,
- * and the step thread wakes its worker only when the worker is waiting for data. A change of run
- * state (running, paused) is held the same way, newest only; it goes out after the updates held
- * before it, or ahead of one that is waiting for the update-rate cap (a state never waits for it).
+ * Serves one viewer from its own thread, {@code viewer-worker[n]}: the snapshot, then what its
+ * {@link ViewerQueue} holds (updates, run states, the end). The loop only offers to the queue, never
+ * writes to this socket; a write this thread cannot finish within the viewer write timeout gets the
+ * viewer dropped by the loop with a logged reason ({@link #writingFor}).
  */
 final class ViewerClientWorker extends ClientWorker {
-    static final int RECORDING_BACKLOG = 1024;
     /**
      * Kernel send buffer for a viewer: enough for dozens of updates, so a live viewer never waits on
      * it, while a viewer that stops reading blocks its worker after this much instead of after the
-     * megabytes loopback would otherwise allow (until then its worker would wake every step).
+     * megabytes loopback would otherwise allow.
      */
     static final int SEND_BUFFER_BYTES = 64 * 1024;
 
-    private final ArrayDeque<PoseUpdate> pending = new ArrayDeque<>();
-    private boolean everyStep;
-    private long intervalNanos;
-    private boolean capped;
-    private long nextAllowed;
-    private final java.util.concurrent.CountDownLatch done = new java.util.concurrent.CountDownLatch(1);
-    private boolean waitingForData;
-    private boolean closed;
-    private SimulationEnd end;
-    /** The newest run state not yet sent (a newer one replaces it), or null. */
-    private RunState state;
-    private int maxPending;
+    private final CountDownLatch done = new CountDownLatch(1);
+    private volatile ViewerQueue queue;
+    private volatile long writingSince;
 
     ViewerClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
         super(coordinator, socket, "viewer-worker[" + serial + "]");
@@ -62,120 +49,62 @@ final class ViewerClientWorker extends ClientWorker {
             connection.flush();
             return;
         }
-        synchronized (this) {
-            everyStep = hello.everyStep();
-            intervalNanos = everyStep || hello.maxUpdatesPerSecond() == 0 ? 0
-                    : 1_000_000_000L / hello.maxUpdatesPerSecond();
-        }
+        queue = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        CompletableFuture<WorldSnapshot> snapshot = new CompletableFuture<>();
+        coordinator.post(new LoopEvent.ViewerJoins(this, snapshot),
+                () -> snapshot.completeExceptionally(new IOException("the simulation is over")));
+        WorldSnapshot first = awaitVerdict(snapshot);
         connection.setReadTimeoutMs(0);
-        WorldSnapshot snapshot = coordinator.addViewer(this);
-        connection.write(snapshot);
-        connection.flush();
+        send(first);
         while (true) {
-            Object next = take();
-            if (next instanceof PoseUpdate u) {
-                connection.write(u);
-                connection.flush();
-            } else if (next instanceof RunState s) {
-                connection.write(s);
-                connection.flush();
-            } else {
-                connection.write((SimulationEnd) next);
-                connection.flush();
+            Object next = queue.take();
+            if (queue.claimRoomSignal()) {
+                coordinator.post(new LoopEvent.ViewerHasRoom(this), () -> { });
+            }
+            send((Externalizable) next);
+            if (next instanceof SimulationEnd) {
                 return;
             }
         }
     }
 
-    /** Called by the step thread with each step's poses. Never blocks for a live viewer. */
-    synchronized void offer(PoseUpdate update) throws InterruptedException {
-        if (closed) {
-            return;
-        }
-        if (!everyStep) {
-            pending.clear();
-        } else {
-            while (pending.size() >= RECORDING_BACKLOG && !closed) {
-                wait();
-            }
-        }
-        pending.addLast(update);
-        maxPending = Math.max(maxPending, pending.size());
-        if (waitingForData) {
-            notifyAll();
+    private void send(Externalizable message) throws IOException {
+        writingSince = System.nanoTime();
+        try {
+            connection.write(message);
+            connection.flush();
+        } finally {
+            writingSince = 0;
         }
     }
 
-    /** Called under the coordinator's lock when the run starts, pauses or resumes. Never blocks. */
-    synchronized void state(RunState newState) {
-        if (closed) {
-            return;
-        }
-        state = newState;
-        notifyAll(); // rare: also cuts short a wait for the update-rate cap
+    /** Its queue, once it has said hello (the loop only sees joined viewers). */
+    ViewerQueue queue() {
+        return queue;
     }
 
-    synchronized void end(SimulationEnd message) {
-        end = message;
-        notifyAll();
+    /** How long its current write has taken so far, ns; 0 when it is not writing. */
+    long writingFor(long now) {
+        long since = writingSince;
+        return since == 0 ? 0 : now - since;
     }
 
-    /** The next thing to send: an update (at most one per interval for a capped live viewer), or the end. */
-    private synchronized Object take() throws InterruptedException {
-        while (true) {
-            if (pending.isEmpty() && end != null) {
-                return end;
-            }
-            long early = capped ? nextAllowed - System.nanoTime() : 0;
-            if ((pending.isEmpty() || early > 0) && state != null && end == null) {
-                RunState s = state;
-                state = null;
-                return s;
-            }
-            if (early > 0) {
-                wait(early / 1_000_000, (int) (early % 1_000_000));
-                continue;
-            }
-            if (!pending.isEmpty()) {
-                if (intervalNanos > 0) {
-                    capped = true;
-                    nextAllowed = System.nanoTime() + intervalNanos;
-                }
-                PoseUpdate next = pending.pollFirst();
-                notifyAll();
-                return next;
-            }
-            waitingForData = true;
-            try {
-                wait();
-            } finally {
-                waitingForData = false;
-            }
-        }
-    }
-
-    synchronized boolean recording() {
-        return everyStep;
-    }
-
-    /** The most updates this viewer ever had waiting. */
-    synchronized int maxPending() {
-        return maxPending;
+    String viewerName() {
+        return name();
     }
 
     /** Waits until this worker has sent everything it holds (or its connection is gone). */
     boolean awaitDone(long nanos) throws InterruptedException {
-        return done.await(nanos, java.util.concurrent.TimeUnit.NANOSECONDS);
+        return done.await(nanos, TimeUnit.NANOSECONDS);
     }
 
     @Override
     protected void exited(String why) {
-        synchronized (this) {
-            closed = true;
-            pending.clear();
-            notifyAll();
+        ViewerQueue q = queue;
+        if (q != null) {
+            q.close();
+            coordinator.viewerLeft(this, why);
         }
-        coordinator.removeViewer(this, why);
         done.countDown();
     }
 }

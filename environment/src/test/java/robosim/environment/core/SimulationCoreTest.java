@@ -32,7 +32,7 @@ class SimulationCoreTest {
 
     @Test
     void messagesAreDeliveredInTheSameStepInSenderAndSendOrder() throws Exception {
-        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        InProcessSteps core = InProcessSteps.of(SPEC, PROPS);
         core.step(0, new StepRequest[] {
             req(0, 0, 0, new CommEvent("", "c", "a1"), new CommEvent("", "c", "a2")),
             req(0, 0, 0, new CommEvent("", "c", "b1"), new CommEvent("", "nobody", "x")),
@@ -49,7 +49,7 @@ class SimulationCoreTest {
 
     @Test
     void aBroadcastReachesEveryOtherRobotInSenderOrder() throws Exception {
-        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        InProcessSteps core = InProcessSteps.of(SPEC, PROPS);
         core.step(0, new StepRequest[] {req(0, 0, 0, new CommEvent("", "*", "hello all")),
             req(0, 0, 0, new CommEvent("", "c", "b to c")), req(0, 0, 0)});
         assertEquals(List.of(), core.response(0).inbox(), "not to the sender itself");
@@ -63,7 +63,7 @@ class SimulationCoreTest {
     void outOfRangeMessagesAreDroppedAndCountedAndOversizedOnesRefusedWithANotice() throws Exception {
         // a at (1, 1) m, b at (1, 3) m: 2 m apart; c at (5, 5) m: 5.66 m from a. Range 2.5 m, limit 10 bytes.
         WorldSpec limited = new WorldSpec("mem", "t", 500, 1, SPEC.arena(), SPEC.obstacles(), SPEC.robots(), 2500, 10);
-        SimulationCore core = SimulationCore.withInProcessGeometry(limited, PROPS);
+        InProcessSteps core = InProcessSteps.of(limited, PROPS);
         core.step(0, new StepRequest[] {
             req(0, 0, 0, new CommEvent("", "b", "near"), new CommEvent("", "c", "far"),
                     new CommEvent("", "b", "eleven char")),
@@ -80,7 +80,7 @@ class SimulationCoreTest {
 
     @Test
     void movesAreAppliedWithTheSpeedLimitAndContactsAreNamed() throws Exception {
-        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        InProcessSteps core = InProcessSteps.of(SPEC, PROPS);
         // ArRobot max 1000 mm/s: 500 mm per 500 ms step
         core.step(0, new StepRequest[] {req(0, 800, 0), req(0, 250, 90), req(0, 500, 0)});
         StepResponse a = core.response(0);
@@ -102,7 +102,7 @@ class SimulationCoreTest {
 
     @Test
     void aRequestForTheWrongStepOrWithNaNIsAProtocolError() {
-        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        InProcessSteps core = InProcessSteps.of(SPEC, PROPS);
         assertThrows(ProtocolException.class, () -> core.step(0, new StepRequest[] {req(5, 0, 0), null, null}));
         assertThrows(ProtocolException.class,
                 () -> core.step(0, new StepRequest[] {req(0, Double.NaN, 0), null, null}));
@@ -118,7 +118,7 @@ class SimulationCoreTest {
     }
 
     private static double[][] run() throws Exception {
-        SimulationCore core = SimulationCore.withInProcessGeometry(SPEC, PROPS);
+        InProcessSteps core = InProcessSteps.of(SPEC, PROPS);
         java.util.Random random = new java.util.Random(7);
         for (long k = 0; k < 500; k++) {
             StepRequest[] q = new StepRequest[3];

@@ -12,7 +12,7 @@ import robosim.protocol.StepRequest;
 
 /** The tag ACTION: nearest thing in front, within range of the rim; taggable obstacles; the record of tags. */
 class TagsTest {
-    private static SimulationCore world(double bX, Set<String> taggable) {
+    private static InProcessSteps world(double bX, Set<String> taggable) {
         // a at (1, 1) m facing +x; b ahead on the same line; c straight to a's left, 0.6 m rim to rim
         List<WorldSpec.RobotSpec> robots = List.of(new WorldSpec.RobotSpec("a", "ArRobot", "", 1000, 1000, 0),
                 new WorldSpec.RobotSpec("b", "ArRobot", "", bX, 1000, 0),
@@ -20,11 +20,11 @@ class TagsTest {
         List<ObstacleShape> obstacles = List.of(ObstacleShape.rectangle("flag", 1700, 1300, 100, 100));
         WorldSpec spec = new WorldSpec("mem", "t", 500, 1, new Arena(0, 0, 10_000, 10_000), obstacles, robots, 0,
                 8192, List.of(), 1000, taggable);
-        return SimulationCore.withInProcessGeometry(spec, List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT,
+        return InProcessSteps.of(spec, List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT,
                 RobotModels.AR_ROBOT));
     }
 
-    private static String tagOnce(SimulationCore core) throws Exception {
+    private static String tagOnce(InProcessSteps core) throws Exception {
         core.step(0, new StepRequest[] {new StepRequest(0, 0, 0, false, List.of(), List.of(), true), null, null});
         return core.response(0).tagged();
     }
@@ -32,7 +32,7 @@ class TagsTest {
     @Test
     void tagsTheNearestThingInFrontWithinRange() throws Exception {
         // b's rim is 2100 - 250 - 250 - 1000 = 600 mm from a's: in range; c is 600 mm away too, but at 90 degrees
-        SimulationCore core = world(2100, Set.of());
+        InProcessSteps core = world(2100, Set.of());
         assertEquals("b", tagOnce(core));
         assertEquals(List.of("a>b"), core.tags());
         assertEquals(List.of("a>b"), core.viewerUpdate().tags(), "viewers are told");
@@ -41,7 +41,7 @@ class TagsTest {
     @Test
     void nothingWhenTheNearestInFrontIsOutOfRange() throws Exception {
         // b's rim 1100 mm away, beyond the 1000 mm range; the flag is not taggable
-        SimulationCore core = world(2600, Set.of());
+        InProcessSteps core = world(2600, Set.of());
         assertEquals("", tagOnce(core));
         assertEquals(List.of(), core.tags());
     }

@@ -10,7 +10,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
-import robosim.environment.core.SimulationCore;
+import robosim.environment.core.InProcessSteps;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.environment.core.WorldSpec.SensorSpec;
@@ -28,20 +28,20 @@ class SensorsTest {
     private static final List<SensorSpec> ALL = List.of(new SensorSpec("laser", "laser", 0, Map.of()),
             new SensorSpec("heat", "heat", 0, Map.of()), new SensorSpec("bump", "bump", 0, Map.of()));
 
-    private static SimulationCore core(List<RobotSpec> robots, List<WorldSpec.HeatSource> heat, long seed) {
+    private static InProcessSteps core(List<RobotSpec> robots, List<WorldSpec.HeatSource> heat, long seed) {
         WorldSpec spec = new WorldSpec("mem", "t", 500, seed, ARENA, List.of(WALL), robots, 0, 8192, heat);
         List<RobotProperties> props = new ArrayList<>();
         for (int i = 0; i < robots.size(); i++) {
             props.add(RobotModels.AR_ROBOT);
         }
-        return SimulationCore.withInProcessGeometry(spec, props);
+        return InProcessSteps.of(spec, props);
     }
 
     private static StepRequest ask(long k, double move, String... sensors) {
         return new StepRequest(k, move, 0, false, List.of(), List.of(sensors));
     }
 
-    private static double[] reading(SimulationCore core, int robot, String name) {
+    private static double[] reading(InProcessSteps core, int robot, String name) {
         return core.response(robot).readings().stream().filter(r -> r.name().equals(name)).findFirst()
                 .orElseThrow().values();
     }
@@ -49,7 +49,7 @@ class SensorsTest {
     @Test
     void laserBeamsReadTheDistanceToWallsAndRobots() throws Exception {
         // a at (1, 1) m facing +x: the wall's face is 3 m ahead; b stands 2 m straight up from a
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, ALL, 0),
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, ALL, 0),
                 new RobotSpec("b", "ArRobot", "", 1000, 3000, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "laser"), null});
         double[] ranges = reading(core, 0, "laser");
@@ -63,7 +63,7 @@ class SensorsTest {
     @Test
     void heatFallsOffWithDistanceAndAWallBlocksIt() throws Exception {
         // source of 10 at (2, 1) m; a 1 m from it reads 10 / (1 + 1); c behind the wall reads nothing
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, ALL, 0),
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, ALL, 0),
                 new RobotSpec("c", "ArRobot", "", 5000, 1000, 0, ALL, 0)),
                 List.of(new WorldSpec.HeatSource("fire", 2000, 1000, 10)), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "heat"), ask(0, 0, "heat")});
@@ -74,7 +74,7 @@ class SensorsTest {
     @Test
     void aHeatSourceOnAWallsFaceIsInSight() throws Exception {
         // the wall's face is at x = 4 m; a source on that face, 2 m from a: 10 / (1 + 4) = 2
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 2000, 1000, 0, ALL, 0)),
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 2000, 1000, 0, ALL, 0)),
                 List.of(new WorldSpec.HeatSource("lamp", 4000, 1000, 10)), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "heat")});
         assertArrayEquals(new double[] {2}, reading(core, 0, "heat"), 1e-12);
@@ -84,7 +84,7 @@ class SensorsTest {
     void aFailingSensorIsANoticeNotTheEndOfTheRun() throws Exception {
         List<SensorSpec> failing = List.of(new SensorSpec("broken", FailingTestSensor.class.getName(), 0, Map.of()),
                 new SensorSpec("bump", "bump", 0, Map.of()));
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, failing, 0)), List.of(), 1);
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, failing, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "broken", "bump")});
         assertEquals(List.of("sensor broken failed: java.lang.IllegalStateException: out of order"),
                 core.response(0).notices());
@@ -94,7 +94,7 @@ class SensorsTest {
     @Test
     void bumpSaysWhichSideTouches() throws Exception {
         // a drives into the wall head on; d drives down onto b, touching b's left side with its front
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 3500, 5000, 0, ALL, 0),
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 3500, 5000, 0, ALL, 0),
                 new RobotSpec("b", "ArRobot", "", 1000, 7000, 0, ALL, 0),
                 new RobotSpec("d", "ArRobot", "", 1000, 7800, 270, ALL, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 400, "bump"), ask(0, 0, "bump"), ask(0, 400, "bump")});
@@ -120,7 +120,7 @@ class SensorsTest {
     }
 
     private static double[] noisyLaser(List<SensorSpec> sensors, long seed) throws Exception {
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, sensors, 0)), List.of(),
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, sensors, 0)), List.of(),
                 seed);
         core.step(0, new StepRequest[] {ask(0, 0, "laser")});
         core.step(1, new StepRequest[] {ask(1, 0, "laser")});
@@ -131,7 +131,7 @@ class SensorsTest {
     void aPlugInSensorIsOneClassNamedInTheWorld() throws Exception {
         List<SensorSpec> compass = List.of(new SensorSpec("compass", CompassTestSensor.class.getName(), 0,
                 Map.of("offsetDeg", "10")));
-        SimulationCore core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 30, compass, 0)), List.of(), 1);
+        InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 30, compass, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "compass", "nonsense")});
         assertArrayEquals(new double[] {40}, reading(core, 0, "compass"), 1e-12);
         assertEquals(List.of("no sensor named nonsense on a"), core.response(0).notices());

@@ -1,0 +1,207 @@
+package robosim.environment.net;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.environment.core.InProcessGeometry;
+import robosim.protocol.GeometryStepRequest;
+import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.GeometryWorld;
+
+/**
+ * Where the loop's steps are resolved, and what happens when that fails: the attached Geometry process
+ * (through its {@link GeometryClientWorker}, asynchronously: the answer comes back as an event), or the
+ * geometry library in-process ({@code --no-geometry}, or after a loss under
+ * {@link ClientWorkerCoordinator.GeometryLoss#IN_PROCESS}). Owns the Geometry timeout and the failover.
+ * Loop thread only.
+ */
+final class GeometryLink {
+    private static final Logger LOG = LoggerFactory.getLogger(GeometryLink.class);
+
+    private final Settings settings;
+    private GeometryWorld world;
+    private InProcessGeometry inProcess;
+    /** The Geometry process that takes steps now, or null. */
+    private GeometryClientWorker attached;
+    /** A Geometry process that has said hello and is being sent the world (or waits for the start). */
+    private GeometryClientWorker joining;
+    /** The request in flight to {@link #attached}, or waiting for a Geometry process (WAIT), or null. */
+    private GeometryStepRequest outstanding;
+    private long sentNanos;
+    private int losses;
+    private int attaches;
+    private boolean started;
+
+    GeometryLink(Settings settings) {
+        this.settings = settings;
+    }
+
+    /** A Geometry process said hello: null if it may take over, else why not. */
+    String join(GeometryClientWorker worker) {
+        if (settings.inProcessGeometry()) {
+            return "this Environment resolves geometry in-process (--no-geometry)";
+        }
+        if (joining != null) {
+            return world == null ? "a Geometry process is already attached" : "another Geometry process is attaching";
+        }
+        joining = worker;
+        if (world != null) {
+            worker.sendWorld(world);
+        }
+        return null;
+    }
+
+    /** True when the run may start: geometry in-process, or a Geometry process ready to be sent the world. */
+    boolean canStart() {
+        return settings.inProcessGeometry() || joining != null;
+    }
+
+    /** The run starts with this world: a waiting Geometry process is sent it (it answers {@link #ready}). */
+    void start(GeometryWorld startWorld) {
+        this.world = startWorld;
+        if (settings.inProcessGeometry()) {
+            inProcess = new InProcessGeometry(startWorld);
+        } else if (joining != null) {
+            joining.sendWorld(startWorld);
+        }
+    }
+
+    /** True once steps can be resolved (in-process, or a Geometry process has the world). */
+    boolean ready() {
+        return inProcess != null || attached != null;
+    }
+
+    /**
+     * A Geometry process has the world and takes over (a mid-run one replaces the one it follows, which
+     * is dropped). Returns the answer to a step that waited for it, if any resolves at once (never: it
+     * is sent and answers later), so the caller only needs to know the link is ready.
+     */
+    void attached(GeometryClientWorker worker) {
+        if (worker != joining) {
+            return;
+        }
+        joining = null;
+        if (attached != null) {
+            LOG.warn("a new Geometry process attaches while one is attached: it replaces the old one");
+            attached.drop();
+        }
+        if (started) {
+            attaches++;
+            LOG.warn("a new Geometry process attached: geometry is resolved there again");
+        } else {
+            LOG.info("Geometry process attached");
+        }
+        started = true;
+        attached = worker;
+        inProcess = null;
+        if (outstanding != null) {
+            sentNanos = System.nanoTime();
+            worker.resolve(outstanding);
+        }
+    }
+
+    /**
+     * Resolves {@code request}: returns the answer at once when geometry is in-process, else sends it to
+     * the Geometry process and returns null (the answer comes as an event, see {@link #answer}).
+     */
+    GeometryStepResponse resolve(GeometryStepRequest request) {
+        outstanding = request;
+        if (attached != null) {
+            sentNanos = System.nanoTime();
+            attached.resolve(request);
+            return null;
+        }
+        if (inProcess != null) {
+            outstanding = null;
+            return inProcess.resolve(request);
+        }
+        return null; // WAIT: a Geometry process that attaches gets it
+    }
+
+    /** An answer: the step's, if it comes from the process it was sent to; else null (stale). */
+    GeometryStepResponse answer(GeometryClientWorker from, GeometryStepResponse answer) {
+        if (from != attached || outstanding == null) {
+            return null;
+        }
+        outstanding = null;
+        return answer;
+    }
+
+    /**
+     * The Geometry process {@code worker} is lost (it left, failed, gave a bad answer or timed out).
+     * Returns the answer to the outstanding step if the loss policy resolves it at once (IN_PROCESS),
+     * else null (no step outstanding, or WAIT: the step waits for a new Geometry process).
+     */
+    GeometryStepResponse lost(GeometryClientWorker worker, String why, long step) {
+        worker.drop();
+        if (worker == joining) {
+            joining = null;
+            LOG.warn("Geometry process left before the start ({}); waiting for another", why);
+            return null;
+        }
+        if (worker != attached) {
+            return null;
+        }
+        attached = null;
+        losses++;
+        if (settings.onGeometryLoss() == ClientWorkerCoordinator.GeometryLoss.IN_PROCESS && world != null) {
+            LOG.warn("Geometry process lost in step {} ({}); going on with in-process geometry (same results); "
+                    + "a new Geometry process may attach", step, why);
+            inProcess = new InProcessGeometry(world);
+            if (outstanding != null) {
+                GeometryStepRequest retry = outstanding;
+                outstanding = null;
+                return inProcess.resolve(retry);
+            }
+            return null;
+        }
+        LOG.warn("Geometry process lost in step {} ({}); the step waits for a new Geometry process", step, why);
+        return null;
+    }
+
+    /** The attached Geometry process if it has taken longer than the Geometry timeout over a step, else null. */
+    GeometryClientWorker overdue(long now) {
+        long limit = settings.geometryTimeoutMs();
+        if (attached == null || outstanding == null || limit <= 0) {
+            return null;
+        }
+        return now - sentNanos > limit * 1_000_000L ? attached : null;
+    }
+
+    /** When the outstanding step's answer is due at the latest (ns), or {@code Long.MAX_VALUE}. */
+    long answerDueNanos() {
+        long limit = settings.geometryTimeoutMs();
+        return attached == null || outstanding == null || limit <= 0 ? Long.MAX_VALUE : sentNanos + limit * 1_000_000L;
+    }
+
+    /** Where collision and sonar are resolved now, for the status. */
+    String where(boolean ended) {
+        if (settings.inProcessGeometry()) {
+            return "in-process";
+        }
+        if (attached != null || (joining != null && world == null)) {
+            return "attached"; // (before the start: one has said hello and waits for the world)
+        }
+        if (ended) {
+            return "none";
+        }
+        return inProcess != null ? "in-process" : "waiting";
+    }
+
+    /** The end: every Geometry process is told. */
+    void end(robosim.protocol.SimulationEnd end) {
+        if (attached != null) {
+            attached.end(end);
+        }
+        if (joining != null) {
+            joining.end(end);
+        }
+    }
+
+    int losses() {
+        return losses;
+    }
+
+    int attaches() {
+        return attaches;
+    }
+}

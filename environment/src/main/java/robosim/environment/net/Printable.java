@@ -1,0 +1,16 @@
+package robosim.environment.net;
+
+/** Text from the network made safe for one log line: every control character (a line break) shown as '?'. */
+final class Printable {
+    private Printable() {
+    }
+
+    static String of(String text) {
+        if (text == null) {
+            return "";
+        }
+        StringBuilder out = new StringBuilder(text.length());
+        text.codePoints().forEach(c -> out.appendCodePoint(Character.isISOControl(c) ? '?' : c));
+        return out.toString();
+    }
+}

@@ -1,0 +1,107 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepResponse;
+
+/**
+ * {@code TWO_THREADS}: the second thread of a robot, {@code robot-writer[name]}, which writes what the
+ * loop queues (a response with the next step number, or the end), in order, so responses go out in
+ * parallel and the loop never writes to that socket. A write that fails closes the connection; the
+ * robot's reading thread then fails and reports the departure.
+ */
+final class RobotWriter {
+    /** What to send next: a response with the next step, or the end alone. */
+    private record Outgoing(StepResponse response, long nextStep, SimulationEnd end, boolean midStep) {
+    }
+
+    private static final Outgoing STOP = new Outgoing(null, 0, null, false);
+
+    private final RobotClientWorker worker;
+    private final ObjectConnection connection;
+    private final boolean stepMessages;
+    /** Lock-step: at most one response is ever outstanding, plus the end and the stop. */
+    private final BlockingQueue<Outgoing> outgoing = new ArrayBlockingQueue<>(4);
+    private final Thread thread;
+
+    RobotWriter(RobotClientWorker worker, ObjectConnection connection, boolean stepMessages, String robotName) {
+        this.worker = worker;
+        this.connection = connection;
+        this.stepMessages = stepMessages;
+        this.thread = new Thread(this::writeLoop, "robot-writer[" + Printable.of(robotName) + "]");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    void send(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
+        enqueue(new Outgoing(response, nextStep, end, true));
+    }
+
+    void sendEnd(SimulationEnd end, boolean midStep) throws IOException {
+        enqueue(new Outgoing(null, 0, end, midStep));
+    }
+
+    private void enqueue(Outgoing o) throws IOException {
+        if (!outgoing.offer(o)) {
+            throw new IOException("its writer has fallen behind (" + outgoing.size() + " writes waiting)");
+        }
+    }
+
+    /** The reading thread is done: lets the writer send what it holds (at most a few seconds), then stops it. */
+    void stop() throws InterruptedException {
+        outgoing.offer(STOP);
+        thread.join(TimeUnit.SECONDS.toMillis(5));
+        thread.interrupt();
+    }
+
+    private void writeLoop() {
+        try {
+            while (true) {
+                Outgoing o = outgoing.take();
+                if (o == STOP) {
+                    return;
+                }
+                if (o.response() == null) {
+                    writeEnd(connection, o.end(), o.midStep());
+                } else {
+                    writeResponse(connection, stepMessages, o.response(), o.nextStep(), o.end());
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        } catch (IOException | RuntimeException e) {
+            worker.drop();
+        }
+    }
+
+    /** A response, then the next step number (unless step messages are off) or the end, in one flush. */
+    static void writeResponse(ObjectConnection c, boolean stepMessages, StepResponse response, long nextStep,
+            SimulationEnd end) throws IOException {
+        c.write(response);
+        if (end == null) {
+            if (stepMessages) {
+                c.writeStep(nextStep);
+            }
+        } else {
+            if (stepMessages) {
+                c.writeStep(Protocol.END_OF_SIMULATION);
+            }
+            c.write(end);
+        }
+        c.flush();
+    }
+
+    /** The end out of turn; {@code midStep}: the robot will read an object next, not a step number. */
+    static void writeEnd(ObjectConnection c, SimulationEnd end, boolean midStep) throws IOException {
+        if (!midStep) {
+            c.writeStep(Protocol.END_OF_SIMULATION);
+        }
+        c.write(end);
+        c.flush();
+    }
+}

@@ -1,0 +1,56 @@
+package robosim.environment.net;
+
+import java.util.List;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+
+/** Every added {@link ClientWorkerCoordinator.RunListener}, told in turn; one that throws is logged, not fatal. */
+final class RunListeners implements ClientWorkerCoordinator.RunListener {
+    private static final Logger LOG = LoggerFactory.getLogger(RunListeners.class);
+
+    private final List<ClientWorkerCoordinator.RunListener> all;
+
+    RunListeners(List<ClientWorkerCoordinator.RunListener> all) {
+        this.all = all;
+    }
+
+    private void each(java.util.function.Consumer<ClientWorkerCoordinator.RunListener> call) {
+        for (ClientWorkerCoordinator.RunListener l : all) {
+            try {
+                call.accept(l);
+            } catch (RuntimeException e) {
+                LOG.error("a run listener failed", e);
+            }
+        }
+    }
+
+    @Override
+    public void started(int robots) {
+        each(l -> l.started(robots));
+    }
+
+    @Override
+    public void robotLeft(ClientWorkerCoordinator.Departure departure) {
+        each(l -> l.robotLeft(departure));
+    }
+
+    @Override
+    public void geometryLost(long step) {
+        each(l -> l.geometryLost(step));
+    }
+
+    @Override
+    public void geometryAttached(long step) {
+        each(l -> l.geometryAttached(step));
+    }
+
+    @Override
+    public void viewerDropped(String viewer, String why) {
+        each(l -> l.viewerDropped(viewer, why));
+    }
+
+    @Override
+    public void ended(ClientWorkerCoordinator.Summary summary) {
+        each(l -> l.ended(summary));
+    }
+}

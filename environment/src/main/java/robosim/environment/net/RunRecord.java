@@ -1,0 +1,77 @@
+package robosim.environment.net;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+
+/**
+ * What the loop publishes about its run for other threads (the control port's status, the summary):
+ * written by the loop thread only, read by anyone, never locked. Counts are as of the last step out.
+ */
+final class RunRecord {
+    private static final long RATE_WINDOW_NANOS = 500_000_000L;
+
+    volatile String phase = "WAITING";
+    volatile long stepsComputed;
+    volatile long stepsReleased;
+    volatile double recentRate;
+    volatile long startNanos;
+    volatile long endNanos;
+    volatile String endReason = "";
+    volatile boolean completed;
+    volatile long messagesDelivered;
+    volatile long messagesOutOfRange;
+    volatile long messagesRefused;
+    volatile int geometryLosses;
+    volatile int geometryAttaches;
+    volatile String geometry = "waiting";
+    /** A robot that has said hello, and whether it takes part (waits for the start, or has not left). */
+    record Member(String name, RobotClientWorker worker, boolean takesPart) {
+        /** Its connection is open and it takes part; read when asked, so a connection closed after the end counts. */
+        boolean connected() {
+            return takesPart && !worker.closed();
+        }
+    }
+
+    volatile List<Member> roster = List.of();
+    final List<ClientWorkerCoordinator.Departure> departures = new CopyOnWriteArrayList<>();
+    private long rateMarkNanos;
+    private long rateMarkSteps;
+
+    /** The run begins (step 0 goes out) at {@code now}. */
+    void begin(long now) {
+        startNanos = now;
+        rateMarkNanos = now;
+        rateMarkSteps = stepsReleased;
+    }
+
+    /** A step's responses went out at {@code now}; the rate is the steps per second over the last half second. */
+    void released(long steps, long now) {
+        stepsReleased = steps;
+        if (now - rateMarkNanos >= RATE_WINDOW_NANOS) {
+            recentRate = (steps - rateMarkSteps) * 1e9 / (now - rateMarkNanos);
+            rateMarkNanos = now;
+            rateMarkSteps = steps;
+        }
+    }
+
+    /** A hold ended at {@code now}: the rate counts from here (the hold is not a slow step). */
+    void resumed(long now) {
+        rateMarkNanos = now;
+        rateMarkSteps = stepsReleased;
+    }
+
+    void messages(long delivered, long outOfRange, long refused) {
+        messagesDelivered = delivered;
+        messagesOutOfRange = outOfRange;
+        messagesRefused = refused;
+    }
+
+    ClientWorkerCoordinator.Summary summary(int robots) {
+        long start = startNanos;
+        long end = endNanos;
+        double wall = start == 0 ? 0 : ((end == 0 ? System.nanoTime() : end) - start) / 1e9;
+        return new ClientWorkerCoordinator.Summary(stepsComputed, robots, wall, endReason, completed, messagesDelivered,
+                messagesOutOfRange, messagesRefused, departures.size(), geometryLosses, geometryAttaches,
+                List.copyOf(departures));
+    }
+}

@@ -1,0 +1,62 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.List;
+
+/**
+ * {@code SEQUENTIAL}, the original's loop: one thread, {@code stepper}, reads every robot's request in
+ * world order, from step 1 on (each robot's worker reads its step-0 request, so a robot that leaves
+ * before the start is noticed), and hands each to the {@link SimulationLoop}. A read blocks until that
+ * robot has had its response and answered, which is what orders the steps; a robot whose read fails or
+ * who breaks the protocol is dropped and skipped from then on. The thread ends with the simulation.
+ */
+final class SequentialReader implements Runnable {
+    private final ClientWorkerCoordinator coordinator;
+    private final List<RobotClientWorker> robots;
+
+    private SequentialReader(ClientWorkerCoordinator coordinator, List<RobotClientWorker> robots) {
+        this.coordinator = coordinator;
+        this.robots = robots;
+    }
+
+    /** Starts the {@code stepper} thread over {@code robots}, in world order. */
+    static void start(ClientWorkerCoordinator coordinator, List<RobotClientWorker> robots) {
+        Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(robots)), "stepper");
+        t.setDaemon(true);
+        t.start();
+    }
+
+    @Override
+    public void run() {
+        try {
+            readAll();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    private void readAll() throws InterruptedException {
+        for (long k = 1; !coordinator.isOver(); k++) {
+            boolean anyone = false;
+            for (RobotClientWorker robot : robots) {
+                if (robot.dropped() || coordinator.isOver()) {
+                    continue;
+                }
+                anyone = true;
+                try {
+                    if (k == 1) {
+                        robot.awaitFirstRead();
+                    }
+                    coordinator.post(new LoopEvent.Request(robot, robot.readRequest(k)), () -> { });
+                } catch (IOException e) {
+                    robot.drop();
+                    coordinator.post(new LoopEvent.RobotLeaves(robot, e.getMessage() == null ? e.toString()
+                            : e.getMessage()), () -> { });
+                }
+            }
+            if (!anyone) {
+                return;
+            }
+        }
+    }
+}

@@ -1,0 +1,213 @@
+package robosim.environment.net;
+
+import java.net.InetAddress;
+import robosim.protocol.ObjectConnection;
+
+/**
+ * How one simulation runs, in three named groups: where it listens ({@link Ports}), how long it waits
+ * ({@link Timeouts}) and the run's shape ({@link Shape}: design, geometry, steps, pace). Build one with
+ * {@link #builder()}; every value has a default a user would expect: loopback, the paper's ports, the
+ * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped.
+ */
+public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
+    /** Default step and Geometry timeouts, ms. */
+    public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
+    public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
+    /** A viewer whose worker cannot finish one write in this long is dropped, ms. */
+    public static final long DEFAULT_VIEWER_WRITE_TIMEOUT_MS = 10_000;
+
+    /** Listening: the address and the robot, viewer and Geometry ports (0: a free one). */
+    public record Ports(InetAddress bind, int robot, int viewer, int geometry) {
+    }
+
+    /**
+     * Waiting, ms (0 or less: never): for a client's hello; for a robot's request after its step went
+     * out; for Geometry's answer to a step; for a viewer to take one write.
+     */
+    public record Timeouts(int handshakeMs, long stepMs, long geometryMs, long viewerWriteMs) {
+    }
+
+    /**
+     * The run: the coordinator design; geometry in-process ({@code --no-geometry}) or a Geometry process
+     * and what to do when it is lost; steps to run (0: until stopped); the pace ({@code speed} times real
+     * time, 0 as fast as possible); the step number after every response ({@code stepMessages}, else only
+     * step 0 and robots count on); the object streams' reset interval.
+     */
+    public record Shape(ClientWorkerCoordinator.Design design, boolean inProcessGeometry,
+            ClientWorkerCoordinator.GeometryLoss onGeometryLoss, long maxSteps, double speed, boolean stepMessages,
+            int resetEvery) {
+    }
+
+    public static Builder builder() {
+        return new Builder();
+    }
+
+    public Builder toBuilder() {
+        Builder b = new Builder();
+        b.ports(bind(), robotPort(), viewerPort(), geometryPort());
+        b.handshakeTimeoutMs = timeouts.handshakeMs();
+        b.stepTimeoutMs = timeouts.stepMs();
+        b.geometryTimeoutMs = timeouts.geometryMs();
+        b.viewerWriteTimeoutMs = timeouts.viewerWriteMs();
+        b.design = shape.design();
+        b.inProcessGeometry = shape.inProcessGeometry();
+        b.onGeometryLoss = shape.onGeometryLoss();
+        b.maxSteps = shape.maxSteps();
+        b.speed = shape.speed();
+        b.stepMessages = shape.stepMessages();
+        b.resetEvery = shape.resetEvery();
+        return b;
+    }
+
+    public InetAddress bind() {
+        return ports.bind();
+    }
+
+    public int robotPort() {
+        return ports.robot();
+    }
+
+    public int viewerPort() {
+        return ports.viewer();
+    }
+
+    public int geometryPort() {
+        return ports.geometry();
+    }
+
+    public int handshakeTimeoutMs() {
+        return timeouts.handshakeMs();
+    }
+
+    public long stepTimeoutMs() {
+        return timeouts.stepMs();
+    }
+
+    public long geometryTimeoutMs() {
+        return timeouts.geometryMs();
+    }
+
+    public long viewerWriteTimeoutMs() {
+        return timeouts.viewerWriteMs();
+    }
+
+    public ClientWorkerCoordinator.Design design() {
+        return shape.design();
+    }
+
+    public boolean inProcessGeometry() {
+        return shape.inProcessGeometry();
+    }
+
+    public ClientWorkerCoordinator.GeometryLoss onGeometryLoss() {
+        return shape.onGeometryLoss();
+    }
+
+    public long maxSteps() {
+        return shape.maxSteps();
+    }
+
+    public double speed() {
+        return shape.speed();
+    }
+
+    public boolean stepMessages() {
+        return shape.stepMessages();
+    }
+
+    public int resetEvery() {
+        return shape.resetEvery();
+    }
+
+    /** Builds {@link Settings}; each setter changes one value. */
+    public static final class Builder {
+        private InetAddress bind = InetAddress.getLoopbackAddress();
+        private int robotPort = 8000;
+        private int viewerPort = 3000;
+        private int geometryPort = 10000;
+        private int handshakeTimeoutMs = 10_000;
+        private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
+        private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
+        private long viewerWriteTimeoutMs = DEFAULT_VIEWER_WRITE_TIMEOUT_MS;
+        private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.THREADS;
+        private boolean inProcessGeometry;
+        private ClientWorkerCoordinator.GeometryLoss onGeometryLoss = ClientWorkerCoordinator.GeometryLoss.IN_PROCESS;
+        private long maxSteps;
+        private double speed;
+        private boolean stepMessages = true;
+        private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
+
+        private Builder() {
+        }
+
+        /** Where to listen: the address and the robot, viewer and Geometry ports (0: a free one). */
+        public Builder ports(InetAddress bindTo, int robot, int viewer, int geometry) {
+            this.bind = bindTo;
+            this.robotPort = robot;
+            this.viewerPort = viewer;
+            this.geometryPort = geometry;
+            return this;
+        }
+
+        public Builder handshakeTimeoutMs(int ms) {
+            this.handshakeTimeoutMs = ms;
+            return this;
+        }
+
+        public Builder stepTimeoutMs(long ms) {
+            this.stepTimeoutMs = ms;
+            return this;
+        }
+
+        public Builder geometryTimeoutMs(long ms) {
+            this.geometryTimeoutMs = ms;
+            return this;
+        }
+
+        public Builder viewerWriteTimeoutMs(long ms) {
+            this.viewerWriteTimeoutMs = ms;
+            return this;
+        }
+
+        public Builder design(ClientWorkerCoordinator.Design d) {
+            this.design = d;
+            return this;
+        }
+
+        public Builder inProcessGeometry(boolean on) {
+            this.inProcessGeometry = on;
+            return this;
+        }
+
+        public Builder onGeometryLoss(ClientWorkerCoordinator.GeometryLoss policy) {
+            this.onGeometryLoss = policy;
+            return this;
+        }
+
+        public Builder maxSteps(long steps) {
+            this.maxSteps = steps;
+            return this;
+        }
+
+        public Builder speed(double timesRealTime) {
+            this.speed = timesRealTime;
+            return this;
+        }
+
+        public Builder stepMessages(boolean on) {
+            this.stepMessages = on;
+            return this;
+        }
+
+        public Builder resetEvery(int messages) {
+            this.resetEvery = messages;
+            return this;
+        }
+
+        public Settings build() {
+            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort),
+                    new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, viewerWriteTimeoutMs),
+                    new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery));
+        }
+    }
+}

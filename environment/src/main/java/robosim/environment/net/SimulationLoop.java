@@ -1,0 +1,181 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.BlockingQueue;
+import java.util.concurrent.TimeUnit;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.environment.core.WorldSpec;
+import robosim.protocol.RobotProperties;
+
+/**
+ * The one owner of simulation time, on its own thread, {@code simulation-loop}: the only code that
+ * advances the step. It takes events from one bounded queue ({@link LoopEvent}) and, per step, gathers
+ * every robot's request, prepares the step in the core, has it resolved through the
+ * {@link GeometryLink} (the Geometry worker does the round trip and posts the answer back), completes
+ * it, and at the release point (pause, step N, pace, a full recording viewer) sends every robot its
+ * response and the next step number, offers the poses to the viewers and checks for the end. It
+ * blocks only on its queue, with a timeout for the next deadline (pace, step timeout, Geometry timeout,
+ * viewer write timeout); it holds no lock, ever. Its run-time decisions live in {@link StepCycle}.
+ */
+final class SimulationLoop implements Runnable {
+    private static final Logger LOG = LoggerFactory.getLogger(SimulationLoop.class);
+
+    private final ClientWorkerCoordinator coordinator;
+    private final Settings settings;
+    private final WorldSpec spec;
+    private final BlockingQueue<LoopEvent> events;
+    private final Handshakes handshakes;
+    private final StepCycle cycle;
+    private final RobotClientWorker[] robots;
+    private final RobotProperties[] properties;
+    private final long tickNanos;
+    private int registered;
+    private long nextTick;
+    /** Who is connected or has left changed since the status last saw it. */
+    private boolean rosterChanged;
+
+    SimulationLoop(ClientWorkerCoordinator coordinator, BlockingQueue<LoopEvent> events, Handshakes handshakes,
+            StepCycle cycle) {
+        this.coordinator = coordinator;
+        this.settings = coordinator.settings();
+        this.spec = coordinator.spec();
+        this.events = events;
+        this.handshakes = handshakes;
+        this.cycle = cycle;
+        int n = spec.robots().size();
+        this.robots = cycle.robots();
+        this.properties = cycle.registered();
+        this.tickNanos = tick(settings);
+    }
+
+    /** How often deadlines are checked: a quarter of the shortest one, between 5 and 100 ms. */
+    private static long tick(Settings s) {
+        long shortest = Long.MAX_VALUE;
+        for (long ms : new long[] {s.stepTimeoutMs(), s.geometryTimeoutMs(), s.viewerWriteTimeoutMs()}) {
+            if (ms > 0) {
+                shortest = Math.min(shortest, ms);
+            }
+        }
+        return TimeUnit.MILLISECONDS.toNanos(Math.max(5, Math.min(100, shortest / 4)));
+    }
+
+    @Override
+    public void run() {
+        try {
+            cycle.advance(System.nanoTime());
+            cycle.publishPhase();
+            while (!cycle.ended()) {
+                long now = System.nanoTime();
+                LoopEvent e = events.poll(Math.max(0, Math.min(nextTick, cycle.paceDue()) - now), TimeUnit.NANOSECONDS);
+                if (e != null) {
+                    handle(e);
+                }
+                now = System.nanoTime();
+                if (now - nextTick >= 0) {
+                    cycle.tick(now);
+                    nextTick = now + tickNanos;
+                }
+                cycle.advance(now);
+                cycle.publishPhase();
+                if (rosterChanged || cycle.takeRosterChange()) {
+                    rosterChanged = false;
+                    publishRoster();
+                }
+            }
+        } catch (InterruptedException e) {
+            cycle.finish("the Environment was interrupted", false);
+        } catch (RuntimeException | Error e) {
+            LOG.error("the simulation loop failed", e);
+            cycle.finish("the simulation loop failed: " + e, false);
+        } finally {
+            cycle.publishPhase();
+            publishRoster();
+            coordinator.loopEnded();
+        }
+    }
+
+    private void handle(LoopEvent e) {
+        if (e instanceof LoopEvent.Request r) {
+            cycle.request(r.worker(), r.request());
+        } else if (e instanceof LoopEvent.RobotJoins j) {
+            j.verdict().complete(register(j));
+            rosterChanged = true;
+        } else if (e instanceof LoopEvent.RobotLeaves l) {
+            leave(l.worker(), l.why());
+            rosterChanged = true;
+        } else if (e instanceof LoopEvent.GeometryJoins g) {
+            g.verdict().complete(cycle.ended() ? "the simulation is over" : cycle.geometry().join(g.worker()));
+        } else if (e instanceof LoopEvent.GeometryReady g) {
+            cycle.geometryReady(g.worker());
+        } else if (e instanceof LoopEvent.GeometryAnswer a) {
+            cycle.geometryAnswer(a.worker(), a.answer());
+        } else if (e instanceof LoopEvent.GeometryLeaves g) {
+            cycle.geometryLost(g.worker(), g.why());
+        } else if (e instanceof LoopEvent.ViewerJoins v) {
+            cycle.addViewer(v.viewer(), v.snapshot());
+        } else if (e instanceof LoopEvent.Pause p) {
+            cycle.pause(p.held());
+        } else if (e instanceof LoopEvent.Resume) {
+            cycle.resume();
+        } else if (e instanceof LoopEvent.StepN s) {
+            cycle.stepN(s.n(), s.done());
+        } else if (e instanceof LoopEvent.Stop s) {
+            cycle.finish(s.reason(), false);
+        }
+        // ViewerHasRoom: nothing to do but try the release again (advance)
+    }
+
+    /** A robot's hello, already checked against the file: null (its welcome is sent) or the refusal. */
+    private String register(LoopEvent.RobotJoins j) {
+        int index = j.index();
+        if (!cycle.waiting()) {
+            return "the simulation is " + (cycle.ended() ? "over" : "already running");
+        }
+        if (robots[index] != null) {
+            return "robot " + j.hello().name() + " is already connected";
+        }
+        try {
+            j.worker().welcome(handshakes.welcome(index));
+        } catch (IOException e) {
+            return "its welcome could not be sent: " + e.getMessage();
+        }
+        robots[index] = j.worker();
+        properties[index] = j.hello().properties();
+        registered++;
+        LOG.info("robot {} connected ({} of {})", spec.robots().get(index).name(), registered, robots.length);
+        cycle.everyoneHere(registered == robots.length);
+        return null;
+    }
+
+    private void leave(RobotClientWorker worker, String why) {
+        int i = worker.index();
+        if (i < 0 || robots[i] != worker) {
+            return;
+        }
+        if (cycle.waiting()) {
+            robots[i] = null;
+            properties[i] = null;
+            registered--;
+            cycle.everyoneHere(false);
+            LOG.warn("robot {} left before the start ({}); waiting for it again", spec.robots().get(i).name(),
+                    Printable.of(why));
+        } else {
+            cycle.leave(i, why);
+        }
+    }
+
+    /** Publishes the robots that have said hello and whether each takes part, for the status. */
+    private void publishRoster() {
+        List<RunRecord.Member> members = new ArrayList<>();
+        for (int i = 0; i < robots.length; i++) {
+            if (robots[i] != null) {
+                members.add(new RunRecord.Member(spec.robots().get(i).name(), robots[i],
+                        cycle.waiting() || cycle.present(i)));
+            }
+        }
+        cycle.record().roster = List.copyOf(members);
+    }
+}

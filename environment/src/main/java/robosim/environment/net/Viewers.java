@@ -1,0 +1,95 @@
+package robosim.environment.net;
+
+import java.util.List;
+import java.util.concurrent.CopyOnWriteArrayList;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RunState;
+import robosim.protocol.SimulationEnd;
+
+/**
+ * The viewers of a run, as the loop sees them: it offers each step's poses and every change of run
+ * state to their {@link ViewerQueue}s and never waits on one. A viewer whose worker has not finished a
+ * write within the viewer write timeout is dropped with a logged reason. Joins, publication and drops
+ * happen on the loop thread; a viewer whose worker ends removes itself (also after the run); the list is
+ * safe for both.
+ */
+final class Viewers {
+    private static final Logger LOG = LoggerFactory.getLogger(Viewers.class);
+
+    private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
+    private final long writeTimeoutNanos;
+    private final ClientWorkerCoordinator.RunListener listener;
+
+    Viewers(long writeTimeoutMs, ClientWorkerCoordinator.RunListener listener) {
+        this.writeTimeoutNanos = writeTimeoutMs <= 0 ? Long.MAX_VALUE : writeTimeoutMs * 1_000_000L;
+        this.listener = listener;
+    }
+
+    void add(ViewerClientWorker viewer) {
+        viewers.add(viewer);
+        LOG.info("{} connected ({} viewer(s))", viewer.viewerName(), viewers.size());
+    }
+
+    void remove(ViewerClientWorker viewer, String why) {
+        if (viewers.remove(viewer)) {
+            LOG.info("{} disconnected: {}", viewer.viewerName(), Printable.of(why));
+        }
+    }
+
+    boolean isEmpty() {
+        return viewers.isEmpty();
+    }
+
+    int count() {
+        return viewers.size();
+    }
+
+    /** A copy of the viewers now, for waiting on them after the end (any thread). */
+    List<ViewerClientWorker> all() {
+        return List.copyOf(viewers);
+    }
+
+    /** True if every recording viewer can take one more update now (the others always can). */
+    boolean haveRoom() {
+        for (ViewerClientWorker v : viewers) {
+            if (!v.queue().hasRoom()) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    void publish(PoseUpdate update) {
+        for (ViewerClientWorker v : viewers) {
+            v.queue().offer(update);
+        }
+    }
+
+    void announce(RunState state) {
+        for (ViewerClientWorker v : viewers) {
+            v.queue().state(state);
+        }
+    }
+
+    void end(SimulationEnd end) {
+        for (ViewerClientWorker v : viewers) {
+            v.queue().end(end);
+        }
+    }
+
+    /** Drops every viewer stuck in one write for longer than the write timeout. */
+    void dropStuck(long now) {
+        for (ViewerClientWorker v : viewers) {
+            long writing = v.writingFor(now);
+            if (writing > writeTimeoutNanos && viewers.remove(v)) {
+                String why = "did not take a write within " + writeTimeoutNanos / 1_000_000 + " ms";
+                LOG.warn("{} dropped: {}", v.viewerName(), why);
+                v.queue().close();
+                v.drop();
+                listener.viewerDropped(v.viewerName(), why);
+            }
+        }
+    }
+}
