@@ -11,6 +11,7 @@ final class RunEvents implements ClientWorkerCoordinator.RunListener {
     final CountDownLatch geometryLost = new CountDownLatch(1);
     final CountDownLatch geometryAttached = new CountDownLatch(1);
     final CountDownLatch viewerDropped = new CountDownLatch(1);
+    final CountDownLatch heldForViewer = new CountDownLatch(1);
     final List<String> droppedViewers = new CopyOnWriteArrayList<>();
     /** The names of the threads the listener was called on. */
     final List<String> threads = new CopyOnWriteArrayList<>();
@@ -36,6 +37,12 @@ final class RunEvents implements ClientWorkerCoordinator.RunListener {
     public void geometryAttached(long step) {
         threads.add(Thread.currentThread().getName());
         geometryAttached.countDown();
+    }
+
+    @Override
+    public void heldForViewer(long step) {
+        threads.add(Thread.currentThread().getName());
+        heldForViewer.countDown();
     }
 
     @Override

@@ -107,7 +107,7 @@ abstract class ClientWorker implements Runnable {
     private volatile boolean dropped;
 
     /** Closes the connection, so this worker's blocked read or write ends. Any thread. */
-    final void drop() {
+    public final void drop() {
         dropped = true;
         ObjectConnection c = connection;
         if (c != null) {

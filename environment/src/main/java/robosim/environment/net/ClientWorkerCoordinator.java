@@ -104,6 +104,10 @@ public final class ClientWorkerCoordinator implements Closeable {
         default void viewerDropped(String viewer, String why) {
         }
 
+        /** A step is held because a recording viewer has fallen its whole backlog behind. */
+        default void heldForViewer(long step) {
+        }
+
         default void ended(Summary summary) {
         }
     }
@@ -149,12 +153,17 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Binds the three ports and starts accepting; a port in use is a {@link java.net.BindException} naming it. */
     public void start() throws IOException {
         listeners.bind();
-        loop = new Thread(new SimulationLoop(this, events, handshakes, cycle), "simulation-loop");
-        loop.setDaemon(true);
-        loop.start();
+        startLoop();
         listeners.accept();
         LOG.info("waiting for {} robot(s){}", robotNames.size(),
                 settings.inProcessGeometry() ? "" : " and a Geometry process");
+    }
+
+    /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
+    void startLoop() {
+        loop = new Thread(new SimulationLoop(this, events, handshakes, cycle), "simulation-loop");
+        loop.setDaemon(true);
+        loop.start();
     }
 
     /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */

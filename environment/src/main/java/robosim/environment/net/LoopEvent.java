@@ -13,16 +13,16 @@ import robosim.protocol.WorldSnapshot;
  */
 sealed interface LoopEvent {
     /** A robot said hello (already checked against the file); the verdict is null (welcome sent) or a refusal. */
-    record RobotJoins(RobotClientWorker worker, RobotHello hello, int index, CompletableFuture<String> verdict)
+    record RobotJoins(RobotPeer worker, RobotHello hello, int index, CompletableFuture<String> verdict)
             implements LoopEvent {
     }
 
     /** A robot's request for the step it was last given. */
-    record Request(RobotClientWorker worker, StepRequest request) implements LoopEvent {
+    record Request(RobotPeer worker, StepRequest request) implements LoopEvent {
     }
 
     /** A robot's connection has closed or failed, or it broke the protocol. */
-    record RobotLeaves(RobotClientWorker worker, String why) implements LoopEvent {
+    record RobotLeaves(RobotPeer worker, String why) implements LoopEvent {
     }
 
     /** A Geometry process said hello; the verdict is null (accepted) or a refusal. */

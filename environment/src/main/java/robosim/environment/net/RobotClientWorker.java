@@ -21,7 +21,7 @@ import robosim.protocol.StepResponse;
  * {@link RobotWriter} ({@code TWO_THREADS}); a request for a step this robot was not given, or with a
  * non-finite action, drops this robot alone.
  */
-final class RobotClientWorker extends ClientWorker {
+final class RobotClientWorker extends ClientWorker implements RobotPeer {
     private volatile int index = -1;
     /** The last step number the loop has handed this robot (-1 before the first). */
     private volatile long given = -1;
@@ -83,11 +83,13 @@ final class RobotClientWorker extends ClientWorker {
     }
 
     /** True once the connection has closed (the robot left, was dropped, or the run ended). */
-    boolean closed() {
+    @Override
+    public boolean closed() {
         return exitedFlag;
     }
 
-    int index() {
+    @Override
+    public int index() {
         return index;
     }
 
@@ -116,7 +118,8 @@ final class RobotClientWorker extends ClientWorker {
     }
 
     /** Loop thread: sends the welcome; in TWO_THREADS starts the writer thread. */
-    void welcome(RobotWelcome welcome) throws IOException {
+    @Override
+    public void welcome(RobotWelcome welcome) throws IOException {
         stepMessages = welcome.stepMessages();
         connection.write(welcome);
         connection.flush();
@@ -126,7 +129,8 @@ final class RobotClientWorker extends ClientWorker {
     }
 
     /** Loop thread: sends the first step number. */
-    void begin(long firstStep) throws IOException {
+    @Override
+    public void begin(long firstStep) throws IOException {
         given = firstStep;
         connection.writeStep(firstStep);
         connection.flush();
@@ -136,7 +140,8 @@ final class RobotClientWorker extends ClientWorker {
      * Loop thread: this robot's response and then the next step number (unless step messages are
      * off), or the end, in one flush; in TWO_THREADS queued to the writer instead.
      */
-    void deliver(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
+    @Override
+    public void deliver(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
         if (end == null) {
             given = nextStep;
         }
@@ -152,7 +157,8 @@ final class RobotClientWorker extends ClientWorker {
      * Loop thread: ends the simulation for this robot out of turn. {@code midStep}: it has been given
      * a step number and will read an object next; otherwise it is waiting for a step number.
      */
-    void end(SimulationEnd end, boolean midStep) {
+    @Override
+    public void end(SimulationEnd end, boolean midStep) {
         try {
             RobotWriter w = writer;
             if (w != null) {
@@ -167,7 +173,8 @@ final class RobotClientWorker extends ClientWorker {
     }
 
     /** True once this robot has been given a step number. */
-    boolean begun() {
+    @Override
+    public boolean begun() {
         return given >= 0;
     }
 

@@ -16,6 +16,8 @@ final class RunControl {
 
     private final double speed;
     private final long stepMs;
+    /** Publishes the run's state for the status; run before any caller is answered, so it sees the change. */
+    private final Runnable publish;
     private boolean paused;
     private long budget;
     private boolean holding;
@@ -24,9 +26,10 @@ final class RunControl {
     private final List<CompletableFuture<Void>> pauseWaiters = new ArrayList<>();
     private final List<StepWaiter> stepWaiters = new ArrayList<>();
 
-    RunControl(double speed, long stepMs) {
+    RunControl(double speed, long stepMs, Runnable publish) {
         this.speed = speed;
         this.stepMs = stepMs;
+        this.publish = publish;
     }
 
     /** Before the start: nothing moves until {@link #resume} or {@link #stepN}. */
@@ -53,6 +56,7 @@ final class RunControl {
         paused = true;
         budget = 0;
         if (holding || !running) {
+            publish.run();
             held.complete(null);
         } else {
             pauseWaiters.add(held);
@@ -69,6 +73,7 @@ final class RunControl {
         paused = true;
         budget += n;
         if (!running) {
+            publish.run();
             done.complete(released);
         } else {
             stepWaiters.add(new StepWaiter(released + n, done));
@@ -78,6 +83,7 @@ final class RunControl {
     /** The hold has taken effect (or the run waits before step 0): pause callers are answered. */
     void held(long released) {
         holding = true;
+        publish.run();
         for (CompletableFuture<Void> w : pauseWaiters) {
             w.complete(null);
         }
@@ -113,6 +119,7 @@ final class RunControl {
 
     /** Answers the step N callers whose steps are out; {@code over}: every caller is answered. */
     void settle(long released, boolean over) {
+        publish.run();
         stepWaiters.removeIf(w -> {
             if (over || !paused || released >= w.target()) {
                 w.done().complete(released);

@@ -50,6 +50,11 @@ final class RunListeners implements ClientWorkerCoordinator.RunListener {
     }
 
     @Override
+    public void heldForViewer(long step) {
+        each(l -> l.heldForViewer(step));
+    }
+
+    @Override
     public void ended(ClientWorkerCoordinator.Summary summary) {
         each(l -> l.ended(summary));
     }

@@ -25,7 +25,7 @@ final class RunRecord {
     volatile int geometryAttaches;
     volatile String geometry = "waiting";
     /** A robot that has said hello, and whether it takes part (waits for the start, or has not left). */
-    record Member(String name, RobotClientWorker worker, boolean takesPart) {
+    record Member(String name, RobotPeer worker, boolean takesPart) {
         /** Its connection is open and it takes part; read when asked, so a connection closed after the end counts. */
         boolean connected() {
             return takesPart && !worker.closed();

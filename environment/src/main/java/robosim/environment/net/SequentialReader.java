@@ -19,9 +19,13 @@ final class SequentialReader implements Runnable {
         this.robots = robots;
     }
 
-    /** Starts the {@code stepper} thread over {@code robots}, in world order. */
-    static void start(ClientWorkerCoordinator coordinator, List<RobotClientWorker> robots) {
-        Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(robots)), "stepper");
+    /** Starts the {@code stepper} thread over {@code robots} (workers over sockets), in world order. */
+    static void start(ClientWorkerCoordinator coordinator, RobotPeer[] robots) {
+        List<RobotClientWorker> workers = new java.util.ArrayList<>();
+        for (RobotPeer r : robots) {
+            workers.add((RobotClientWorker) r);
+        }
+        Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(workers)), "stepper");
         t.setDaemon(true);
         t.start();
     }

@@ -29,7 +29,7 @@ final class SimulationLoop implements Runnable {
     private final BlockingQueue<LoopEvent> events;
     private final Handshakes handshakes;
     private final StepCycle cycle;
-    private final RobotClientWorker[] robots;
+    private final RobotPeer[] robots;
     private final RobotProperties[] properties;
     private final long tickNanos;
     private int registered;
@@ -150,7 +150,7 @@ final class SimulationLoop implements Runnable {
         return null;
     }
 
-    private void leave(RobotClientWorker worker, String why) {
+    private void leave(RobotPeer worker, String why) {
         int i = worker.index();
         if (i < 0 || robots[i] != worker) {
             return;

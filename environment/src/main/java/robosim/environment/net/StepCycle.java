@@ -37,7 +37,7 @@ final class StepCycle {
     private final GeometryLink geometry;
     private final RunControl control;
     private final Viewers viewers;
-    private final RobotClientWorker[] robots;
+    private final RobotPeer[] robots;
     private final long stepTimeoutNanos;
     private StepRequest[] requests;
     private StepRequest[] inFlight;
@@ -49,6 +49,8 @@ final class StepCycle {
     private boolean beginPending;
     private boolean robotsTold;
     private boolean rosterChanged;
+    /** The computed step waits for a full recording viewer. */
+    private boolean heldForViewer;
     private int arrived;
     private int activeCount;
     /** Steps computed so far: the step being collected or resolved is this one. */
@@ -62,17 +64,17 @@ final class StepCycle {
         this.spec = coordinator.spec();
         this.listener = listener;
         int n = spec.robots().size();
-        this.robots = new RobotClientWorker[n];
+        this.robots = new RobotPeer[n];
         this.registered = new RobotProperties[n];
         this.requests = new StepRequest[n];
         this.inFlight = new StepRequest[n];
         this.geometry = new GeometryLink(settings);
-        this.control = new RunControl(settings.speed(), spec.timeStepMs());
+        this.control = new RunControl(settings.speed(), spec.timeStepMs(), this::publishPhase);
         this.viewers = new Viewers(settings.viewerWriteTimeoutMs(), listener);
         this.stepTimeoutNanos = settings.stepTimeoutMs() <= 0 ? Long.MAX_VALUE : settings.stepTimeoutMs() * 1_000_000L;
     }
 
-    RobotClientWorker[] robots() {
+    RobotPeer[] robots() {
         return robots;
     }
 
@@ -209,7 +211,7 @@ final class StepCycle {
             }
         }
         if (settings.design() == ClientWorkerCoordinator.Design.SEQUENTIAL) {
-            SequentialReader.start(coordinator, Arrays.asList(robots));
+            SequentialReader.start(coordinator, robots);
         }
         coordinator.started();
         listener.started(robots.length);
@@ -218,7 +220,7 @@ final class StepCycle {
 
     // ---- collecting, resolving -----------------------------------------------------------------------
 
-    void request(RobotClientWorker worker, StepRequest request) {
+    void request(RobotPeer worker, StepRequest request) {
         int i = worker.index();
         if (i < 0 || robots[i] != worker || core == null || !core.present(i) || phase == Phase.ENDED) {
             return; // gone already, or the run is over: nothing to do with it
@@ -322,7 +324,17 @@ final class StepCycle {
         if (settings.speed() > 0 && control.paceDue(step) - now > 0) {
             return false;
         }
-        return viewers.haveRoom();
+        if (!viewers.haveRoom()) {
+            if (!heldForViewer) {
+                heldForViewer = true;
+                LOG.debug("step {} waits for a recording viewer that is {} updates behind", step - 1,
+                        ViewerQueue.RECORDING_BACKLOG);
+                listener.heldForViewer(step - 1);
+            }
+            return false;
+        }
+        heldForViewer = false;
+        return true;
     }
 
     /** Every robot's response with the next step number (or the end), then the poses to every viewer. */

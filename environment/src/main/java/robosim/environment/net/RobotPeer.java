@@ -1,0 +1,36 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepResponse;
+
+/**
+ * One robot as the {@link SimulationLoop} sees it: where its welcome, step numbers, responses and end
+ * go. {@link RobotClientWorker} is the one over a socket; the loop never reads from a robot, it is
+ * handed requests as events.
+ */
+interface RobotPeer {
+    /** Its place in the world's robot list (-1 before it has said hello). */
+    int index();
+
+    void welcome(RobotWelcome welcome) throws IOException;
+
+    /** Sends the first step number. */
+    void begin(long firstStep) throws IOException;
+
+    /** Its response and then the next step number, or the end ({@code end} not null). */
+    void deliver(StepResponse response, long nextStep, SimulationEnd end) throws IOException;
+
+    /** The end out of turn; {@code midStep}: it has a step number and reads an object next. */
+    void end(SimulationEnd end, boolean midStep);
+
+    /** True once it has been given a step number. */
+    boolean begun();
+
+    /** True once its connection has closed. */
+    boolean closed();
+
+    /** Closes its connection (any thread). */
+    void drop();
+}

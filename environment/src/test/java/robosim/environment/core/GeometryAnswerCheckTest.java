@@ -1,0 +1,78 @@
+package robosim.environment.core;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.util.List;
+import java.util.function.Consumer;
+import org.junit.jupiter.api.Test;
+import robosim.protocol.Arena;
+import robosim.protocol.GeometryStepRequest;
+import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotModels;
+import robosim.protocol.StepRequest;
+
+/** The core takes nothing from Geometry on trust: a bad answer is refused and changes nothing. */
+class GeometryAnswerCheckTest {
+    private static final WorldSpec TWO = new WorldSpec("mem", "two", 500, 1, new Arena(0, 0, 10_000, 10_000),
+            List.of(), List.of(new WorldSpec.RobotSpec("a", "ArRobot", "", 1000, 1000, 0),
+                    new WorldSpec.RobotSpec("b", "ArRobot", "", 1000, 5000, 0)), 0, 8192, List.of());
+
+    private static SimulationCore core() {
+        return new SimulationCore(TWO, List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT));
+    }
+
+    private static StepRequest[] moveBoth(long k) {
+        return new StepRequest[] {new StepRequest(k, 200, 0, true, List.of()), new StepRequest(k, 200, 0, false, List.of())};
+    }
+
+    /** A correct answer to {@code asked}, from the real geometry, changed by {@code tamper}. */
+    private static GeometryStepResponse answer(SimulationCore core, GeometryStepRequest asked,
+            Consumer<GeometryStepResponse> tamper) {
+        GeometryStepResponse good = new InProcessGeometry(core.map().geometryWorld()).resolve(asked);
+        GeometryStepResponse copy = new GeometryStepResponse(2, 16);
+        copy.begin(good.step());
+        for (int i = 0; i < 2; i++) {
+            copy.setMotion(i, good.movedMm(i), good.turnedDeg(i), good.contactKind(i), good.contactIndex(i));
+        }
+        for (int r = 0; r < good.rangeCount(); r++) {
+            copy.addRange(good.rangeMm(r));
+        }
+        tamper.accept(copy);
+        return copy;
+    }
+
+    private static void refused(Consumer<GeometryStepResponse> tamper, String what) throws Exception {
+        SimulationCore core = core();
+        GeometryStepRequest asked = core.prepare(0, moveBoth(0));
+        ProtocolException e = assertThrows(ProtocolException.class, () -> core.complete(answer(core, asked, tamper)));
+        assertTrue(e.getMessage().contains(what), e.getMessage());
+        core.complete(answer(core, asked, g -> { })); // the step is still there to complete with a good answer
+        assertEquals(1200, core.response(0).xMm(), 1e-9);
+    }
+
+    @Test
+    void aContactWithARobotThatDoesNotExistIsRefused() throws Exception {
+        refused(g -> g.setMotion(0, 0, 0, GeometryStepResponse.CONTACT_ROBOT, 99_999), "index 99999");
+    }
+
+    @Test
+    void aMotionLongerThanAskedOrNotFiniteIsRefused() throws Exception {
+        refused(g -> g.setMotion(1, 5000, 0, GeometryStepResponse.CONTACT_NONE, -1), "asked 200.0 mm");
+        refused(g -> g.setMotion(1, Double.NaN, 0, GeometryStepResponse.CONTACT_NONE, -1), "NaN");
+    }
+
+    @Test
+    void theWrongStepOrTooFewSonarRangesOrANegativeRangeAreRefused() throws Exception {
+        refused(g -> g.begin(7), "step 7");
+        refused(g -> g.begin(0), "0 sonar ranges, expected " + RobotModels.AR_ROBOT.sonars().size());
+        refused(g -> {
+            g.begin(0);
+            for (int s = 0; s < RobotModels.AR_ROBOT.sonars().size(); s++) {
+                g.addRange(-1);
+            }
+        }, "sonar range -1.0 mm");
+    }
+}
