@@ -15,6 +15,8 @@ import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunSummary;
+import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
@@ -177,7 +179,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         announceStart(host.current());
         try {
             return host.run(s -> {
-                for (ClientWorkerCoordinator.Departure d : s.departures()) {
+                for (Departure d : s.departures()) {
                     System.out.println("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
                 }
                 System.out.println(summaryLine(s));
@@ -232,7 +234,7 @@ public final class EnvironmentMain implements Callable<Integer> {
     }
 
     /** The summary line, also used by the headless runner. */
-    public static String summaryLine(ClientWorkerCoordinator.Summary s) {
+    public static String summaryLine(RunSummary s) {
         double wall = Math.max(s.wallSeconds(), 1e-9);
         return String.format(java.util.Locale.ROOT,
                 "summary steps=%d robots=%d wall_s=%.3f steps_per_s=%.1f robot_steps_per_s=%.1f messages=%d"

@@ -61,10 +61,6 @@ public final class GeometryEngine {
         this.grid = new RobotGrid(this.robots, maxRadius);
     }
 
-    public StaticWorld world() {
-        return world;
-    }
-
     public int robotCount() {
         return robots;
     }

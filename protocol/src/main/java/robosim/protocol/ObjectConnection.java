@@ -36,7 +36,6 @@ public final class ObjectConnection implements Closeable {
     private final MessageBudgetInputStream budget;
     private final ProtocolFilter filter;
     private final int resetEvery;
-    private final String peer;
     private int sinceReset;
 
     /**
@@ -56,7 +55,6 @@ public final class ObjectConnection implements Closeable {
         }
         this.socket = socket;
         this.resetEvery = resetEvery;
-        this.peer = String.valueOf(socket.getRemoteSocketAddress());
         try {
             socket.setTcpNoDelay(true);
             out = new ObjectOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER_BYTES));
@@ -152,11 +150,6 @@ public final class ObjectConnection implements Closeable {
     /** Sets the read timeout in milliseconds (0 = none). */
     public void setReadTimeoutMs(int ms) throws IOException {
         socket.setSoTimeout(ms);
-    }
-
-    /** The remote address, for log lines. */
-    public String peer() {
-        return peer;
     }
 
     public boolean isClosed() {

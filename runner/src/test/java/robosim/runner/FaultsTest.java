@@ -26,6 +26,7 @@ import org.junit.jupiter.params.provider.EnumSource;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.geometry.GeometryClient;
@@ -136,7 +137,7 @@ class FaultsTest {
             assertEquals("completed 100 steps", r2.get(LONG, TimeUnit.SECONDS));
             assertEquals("completed 100 steps", r3.get(LONG, TimeUnit.SECONDS));
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
-            ClientWorkerCoordinator.Summary s = env.summary();
+            RunSummary s = env.summary();
             assertTrue(s.completed(), s.reason());
             assertEquals(1, s.robotsLeft());
             viewer.awaitEnd(LONG, TimeUnit.SECONDS); // every update sent has been taken by the listener

@@ -11,6 +11,8 @@ import robosim.api.RobotControl;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunSummary;
+import robosim.environment.net.RunListener;
 import robosim.environment.net.Settings;
 import robosim.geometry.GeometryClient;
 import robosim.hardware.HardwareSimulator;
@@ -31,7 +33,7 @@ final class InJvmSimulation {
     final List<PoseUpdate> updates = new ArrayList<>();
     /** The last update each extra live viewer saw. */
     final List<PoseUpdate> liveLast = new ArrayList<>();
-    ClientWorkerCoordinator.Summary summary;
+    RunSummary summary;
     int viewersAtEnd;
     private int liveViewers;
     private int frozenViewers;
@@ -40,10 +42,10 @@ final class InJvmSimulation {
 
     /** The coordinator design; null: the Environment's default. */
     private ClientWorkerCoordinator.Design design;
-    private final List<ClientWorkerCoordinator.RunListener> listeners = new ArrayList<>();
+    private final List<RunListener> listeners = new ArrayList<>();
 
     /** Adds a listener to the Environment of the next run. */
-    InJvmSimulation listen(ClientWorkerCoordinator.RunListener listener) {
+    InJvmSimulation listen(RunListener listener) {
         listeners.add(listener);
         return this;
     }
@@ -116,7 +118,7 @@ final class InJvmSimulation {
             settings.design(design);
         }
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, settingsHook.apply(settings).build());
-        for (ClientWorkerCoordinator.RunListener l : listeners) {
+        for (RunListener l : listeners) {
             env.listen(l);
         }
         env.start();

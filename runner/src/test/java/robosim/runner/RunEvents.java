@@ -4,9 +4,11 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Departure;
+import robosim.environment.net.RunListener;
 
 /** Test fixture: what a run told its listener, with latches to wait on the first of each event. */
-final class RunEvents implements ClientWorkerCoordinator.RunListener {
+final class RunEvents implements RunListener {
     final CountDownLatch started = new CountDownLatch(1);
     final CountDownLatch geometryLost = new CountDownLatch(1);
     final CountDownLatch geometryAttached = new CountDownLatch(1);
@@ -23,7 +25,7 @@ final class RunEvents implements ClientWorkerCoordinator.RunListener {
     }
 
     @Override
-    public void robotLeft(ClientWorkerCoordinator.Departure departure) {
+    public void robotLeft(Departure departure) {
         threads.add(Thread.currentThread().getName());
     }
 

@@ -18,6 +18,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunStatus;
 import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
@@ -80,7 +81,7 @@ class StuckViewerTest {
             List<CompletableFuture<String>> robots = robots(env);
             assertTrue(events.heldForViewer.await(LONG_S, TimeUnit.SECONDS), "the viewer fell a whole backlog behind");
             long t0 = System.nanoTime();
-            ClientWorkerCoordinator.Status status = env.status();
+            RunStatus status = env.status();
             long statusMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
             assertEquals("RUNNING", status.state(), "held for a viewer is not a pause");
             assertTrue(statusMs < 1000, "status took " + statusMs + " ms");

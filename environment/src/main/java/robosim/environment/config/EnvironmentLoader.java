@@ -17,7 +17,6 @@ import java.util.Set;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
-import org.locationtech.jts.geom.Polygon;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.Arena;
@@ -92,13 +91,13 @@ public final class EnvironmentLoader {
         EnvironmentFile.ArenaXml a = xml.arena;
         double ax = orZero(a.x);
         double ay = orZero(a.y);
-        double w = required(where, "<arena>", "width", a.width);
-        double h = required(where, "<arena>", "height", a.height);
+        double w = ObstacleReader.required(where, "<arena>", "width", a.width);
+        double h = ObstacleReader.required(where, "<arena>", "height", a.height);
         if (!(w > 0) || !(h > 0) || !Double.isFinite(ax) || !Double.isFinite(ay)) {
             throw new EnvironmentFileException(where + ": <arena> width and height must be > 0 m, got " + w + " x " + h);
         }
         Arena arena = new Arena(ax * MM_PER_M, ay * MM_PER_M, (ax + w) * MM_PER_M, (ay + h) * MM_PER_M);
-        List<ObstacleShape> obstacles = obstacles(where, xml);
+        List<ObstacleShape> obstacles = ObstacleReader.obstacles(where, xml);
         java.util.Set<String> taggable = new java.util.HashSet<>();
         for (int o = 0; o < xml.obstacles.all.size(); o++) {
             Object x = xml.obstacles.all.get(o);
@@ -129,9 +128,9 @@ public final class EnvironmentLoader {
         List<WorldSpec.HeatSource> heat = new ArrayList<>();
         for (EnvironmentFile.HeatXml src : xml.heatSources) {
             String el = "<heat name=\"" + (src.name == null ? "heat" + (heat.size() + 1) : src.name) + "\">";
-            double hx = required(where, el, "x", src.x);
-            double hy = required(where, el, "y", src.y);
-            double intensity = required(where, el, "intensity", src.intensity);
+            double hx = ObstacleReader.required(where, el, "x", src.x);
+            double hy = ObstacleReader.required(where, el, "y", src.y);
+            double intensity = ObstacleReader.required(where, el, "intensity", src.intensity);
             if (!(intensity >= 0)) {
                 throw new EnvironmentFileException(where + ": " + el + " intensity must be >= 0, got " + intensity);
             }
@@ -174,93 +173,6 @@ public final class EnvironmentLoader {
         return v == null ? 0 : v;
     }
 
-    private static double required(String where, String element, String attribute, Double v)
-            throws EnvironmentFileException {
-        if (v == null) {
-            throw new EnvironmentFileException(where + ": " + element + " needs the attribute " + attribute);
-        }
-        if (!Double.isFinite(v)) {
-            throw new EnvironmentFileException(where + ": " + element + " " + attribute + " must be a finite number, got "
-                    + v);
-        }
-        return v;
-    }
-
-    private List<ObstacleShape> obstacles(String where, EnvironmentFile xml) throws EnvironmentFileException {
-        List<ObstacleShape> out = new ArrayList<>();
-        Set<String> names = new HashSet<>();
-        for (Object o : xml.obstacles.all) {
-            ObstacleShape shape;
-            if (o instanceof EnvironmentFile.RectangleXml r) {
-                String el = "<rectangle name=\"" + nameOr(r.name, out.size()) + "\">";
-                double x = required(where, el, "x", r.x);
-                double y = required(where, el, "y", r.y);
-                double w = required(where, el, "width", r.width);
-                double h = required(where, el, "height", r.height);
-                if (!(w > 0) || !(h > 0)) {
-                    throw new EnvironmentFileException(where + ": " + el + " width and height must be > 0 m, got "
-                            + w + " x " + h);
-                }
-                shape = ObstacleShape.rectangle(nameOr(r.name, out.size()), x * MM_PER_M, y * MM_PER_M, w * MM_PER_M,
-                        h * MM_PER_M);
-            } else {
-                EnvironmentFile.PolygonXml p = (EnvironmentFile.PolygonXml) o;
-                String el = "<polygon name=\"" + nameOr(p.name, out.size()) + "\">";
-                shape = new ObstacleShape(nameOr(p.name, out.size()), points(where, el, p.points));
-                if (!toPolygon(shape).isValid()) {
-                    throw new EnvironmentFileException(where + ": " + el + " points do not form a simple polygon"
-                            + " (edges cross or repeat)");
-                }
-            }
-            if (!names.add(shape.name())) {
-                throw new EnvironmentFileException(where + ": obstacle name \"" + shape.name() + "\" is used twice");
-            }
-            out.add(shape);
-        }
-        return out;
-    }
-
-    private static String nameOr(String name, int index) {
-        return name == null || name.isBlank() ? "obstacle" + (index + 1) : name;
-    }
-
-    private static double[] points(String where, String el, String text) throws EnvironmentFileException {
-        if (text == null || text.isBlank()) {
-            throw new EnvironmentFileException(where + ": " + el + " needs points=\"x1,y1 x2,y2 x3,y3 ...\" (metres)");
-        }
-        String[] pairs = text.trim().split("\\s+");
-        if (pairs.length < 3) {
-            throw new EnvironmentFileException(where + ": " + el + " needs at least 3 points, got " + pairs.length);
-        }
-        double[] xy = new double[pairs.length * 2];
-        for (int i = 0; i < pairs.length; i++) {
-            String[] c = pairs[i].split(",");
-            try {
-                if (c.length != 2) {
-                    throw new NumberFormatException();
-                }
-                xy[2 * i] = Double.parseDouble(c[0]) * MM_PER_M;
-                xy[2 * i + 1] = Double.parseDouble(c[1]) * MM_PER_M;
-                if (!Double.isFinite(xy[2 * i]) || !Double.isFinite(xy[2 * i + 1])) {
-                    throw new NumberFormatException();
-                }
-            } catch (NumberFormatException e) {
-                throw new EnvironmentFileException(where + ": " + el + " point '" + pairs[i]
-                        + "' is not of the form x,y (metres)");
-            }
-        }
-        return xy;
-    }
-
-    Polygon toPolygon(ObstacleShape shape) {
-        Coordinate[] ring = new Coordinate[shape.vertexCount() + 1];
-        for (int v = 0; v < shape.vertexCount(); v++) {
-            ring[v] = new Coordinate(shape.x(v), shape.y(v));
-        }
-        ring[shape.vertexCount()] = ring[0];
-        return jts.createPolygon(ring);
-    }
-
     private List<RobotSpec> robots(String where, EnvironmentFile xml, Arena arena, List<ObstacleShape> obstacles)
             throws EnvironmentFileException {
         if (xml.robots.isEmpty()) {
@@ -268,7 +180,7 @@ public final class EnvironmentLoader {
         }
         List<Geometry> walls = new ArrayList<>();
         for (ObstacleShape o : obstacles) {
-            walls.add(toPolygon(o));
+            walls.add(ObstacleReader.toPolygon(o));
         }
         List<RobotSpec> out = new ArrayList<>();
         Set<String> names = new HashSet<>();
@@ -298,7 +210,7 @@ public final class EnvironmentLoader {
                 throw new EnvironmentFileException(where + ": " + el + " a robot of type class " + r.type
                         + " needs radius=\"...\" (metres)");
             }
-            double radiusMm = r.radius == null ? props.radiusMm() : required(where, el, "radius", r.radius) * MM_PER_M;
+            double radiusMm = r.radius == null ? props.radiusMm() : ObstacleReader.required(where, el, "radius", r.radius) * MM_PER_M;
             if (!(radiusMm > 0)) {
                 throw new EnvironmentFileException(where + ": " + el + " radius must be > 0 m, got " + r.radius);
             }
@@ -310,8 +222,8 @@ public final class EnvironmentLoader {
                 throw new EnvironmentFileException(where + ": " + el + " sonars must be in 0.."
                         + robosim.protocol.Limits.MAX_SONARS + ", got " + r.sonars);
             }
-            double x = required(where, el, "x", r.x) * MM_PER_M;
-            double y = required(where, el, "y", r.y) * MM_PER_M;
+            double x = ObstacleReader.required(where, el, "x", r.x) * MM_PER_M;
+            double y = ObstacleReader.required(where, el, "y", r.y) * MM_PER_M;
             double heading = r.heading == null ? 0 : r.heading;
             if (!Double.isFinite(heading)) {
                 throw new EnvironmentFileException(where + ": " + el + " heading must be a finite number");

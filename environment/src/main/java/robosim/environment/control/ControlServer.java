@@ -32,6 +32,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunStatus;
 
 /**
  * The control port (netty): one request per line, one JSON object per line in reply
@@ -206,7 +207,7 @@ public final class ControlServer implements Closeable {
         }
 
         private ObjectNode status() {
-            ClientWorkerCoordinator.Status s = host.current().status();
+            RunStatus s = host.current().status();
             ObjectNode n = ok(null);
             n.put("state", s.state());
             n.put("step", s.step());

@@ -10,6 +10,7 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
 
 /**
@@ -89,7 +90,7 @@ public final class EnvironmentHost {
      * Waits for each simulation to end and reports it; returns the exit code when the host is done:
      * at the first end unless it keeps running, else at {@code shutdown}.
      */
-    public int run(Consumer<ClientWorkerCoordinator.Summary> ended) throws InterruptedException {
+    public int run(Consumer<RunSummary> ended) throws InterruptedException {
         while (true) {
             ClientWorkerCoordinator c;
             synchronized (this) {
@@ -97,7 +98,7 @@ public final class EnvironmentHost {
             }
             c.awaitEnd();
             c.awaitViewersDone(5000);
-            ClientWorkerCoordinator.Summary summary = c.summary();
+            RunSummary summary = c.summary();
             ended.accept(summary);
             synchronized (this) {
                 while (replacing) {

@@ -64,54 +64,6 @@ public final class ClientWorkerCoordinator implements Closeable {
      */
     public enum GeometryLoss { IN_PROCESS, WAIT }
 
-    /** How a run went; {@code departures} says, for each robot that left mid-run, when and why. */
-    public record Summary(long steps, int robots, double wallSeconds, String reason, boolean completed,
-            long messagesDelivered, long messagesOutOfRange, long messagesRefused, int robotsLeft,
-            int geometryLosses, int geometryAttaches, List<Departure> departures) {
-    }
-
-    /** A robot that left the run at {@code step}, and why (network text already made safe to print). */
-    public record Departure(String robot, long step, String why) {
-    }
-
-    /**
-     * What the control port reports.
-     *
-     * @param state {@code WAITING}, {@code RUNNING}, {@code PAUSED} or {@code ENDED}
-     * @param connected robots whose connection is open and who take part (or wait for the start)
-     * @param left robots that were in this simulation and whose connection has closed or who were removed
-     * @param geometry {@code in-process} (no Geometry process: {@code --no-geometry}, or going on without
-     *     a lost one), {@code attached}, {@code waiting} (for a Geometry process) or {@code none} (ended)
-     */
-    public record Status(String state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
-            List<String> left, String geometry, String reason) {
-    }
-
-    /** Told, on the loop thread, what happens in the run; must not block. */
-    public interface RunListener {
-        default void started(int robots) {
-        }
-
-        default void robotLeft(Departure departure) {
-        }
-
-        default void geometryLost(long step) {
-        }
-
-        default void geometryAttached(long step) {
-        }
-
-        default void viewerDropped(String viewer, String why) {
-        }
-
-        /** A step is held because a recording viewer has fallen its whole backlog behind. */
-        default void heldForViewer(long step) {
-        }
-
-        default void ended(Summary summary) {
-        }
-    }
-
     private final WorldSpec spec;
     private final Settings settings;
     private final List<String> robotNames;
@@ -299,7 +251,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     /** What the control port reports: published by the loop, read without waiting for it. */
-    public Status status() {
+    public RunStatus status() {
         RunRecord r = cycle.record();
         String state = r.phase;
         List<String> connected = new java.util.ArrayList<>();
@@ -311,11 +263,11 @@ public final class ClientWorkerCoordinator implements Closeable {
                 left.add(m.name());
             }
         }
-        return new Status(state, r.stepsReleased, "RUNNING".equals(state) ? r.recentRate : 0, robotNames,
+        return new RunStatus(state, r.stepsReleased, "RUNNING".equals(state) ? r.recentRate : 0, robotNames,
                 List.copyOf(connected), List.copyOf(left), r.geometry, r.endReason);
     }
 
-    public Summary summary() {
+    public RunSummary summary() {
         return cycle.record().summary(robotNames.size());
     }
 

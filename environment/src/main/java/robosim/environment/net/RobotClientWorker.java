@@ -3,7 +3,6 @@ package robosim.environment.net;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.CompletableFuture;
-import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;

@@ -4,18 +4,18 @@ import java.util.List;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
-/** Every added {@link ClientWorkerCoordinator.RunListener}, told in turn; one that throws is logged, not fatal. */
-final class RunListeners implements ClientWorkerCoordinator.RunListener {
+/** Every added {@link RunListener}, told in turn; one that throws is logged, not fatal. */
+final class RunListeners implements RunListener {
     private static final Logger LOG = LoggerFactory.getLogger(RunListeners.class);
 
-    private final List<ClientWorkerCoordinator.RunListener> all;
+    private final List<RunListener> all;
 
-    RunListeners(List<ClientWorkerCoordinator.RunListener> all) {
+    RunListeners(List<RunListener> all) {
         this.all = all;
     }
 
-    private void each(java.util.function.Consumer<ClientWorkerCoordinator.RunListener> call) {
-        for (ClientWorkerCoordinator.RunListener l : all) {
+    private void each(java.util.function.Consumer<RunListener> call) {
+        for (RunListener l : all) {
             try {
                 call.accept(l);
             } catch (RuntimeException e) {
@@ -30,7 +30,7 @@ final class RunListeners implements ClientWorkerCoordinator.RunListener {
     }
 
     @Override
-    public void robotLeft(ClientWorkerCoordinator.Departure departure) {
+    public void robotLeft(Departure departure) {
         each(l -> l.robotLeft(departure));
     }
 
@@ -55,7 +55,7 @@ final class RunListeners implements ClientWorkerCoordinator.RunListener {
     }
 
     @Override
-    public void ended(ClientWorkerCoordinator.Summary summary) {
+    public void ended(RunSummary summary) {
         each(l -> l.ended(summary));
     }
 }

@@ -33,7 +33,7 @@ final class RunRecord {
     }
 
     volatile List<Member> roster = List.of();
-    final List<ClientWorkerCoordinator.Departure> departures = new CopyOnWriteArrayList<>();
+    final List<Departure> departures = new CopyOnWriteArrayList<>();
     private long rateMarkNanos;
     private long rateMarkSteps;
 
@@ -66,11 +66,11 @@ final class RunRecord {
         messagesRefused = refused;
     }
 
-    ClientWorkerCoordinator.Summary summary(int robots) {
+    RunSummary summary(int robots) {
         long start = startNanos;
         long end = endNanos;
         double wall = start == 0 ? 0 : ((end == 0 ? System.nanoTime() : end) - start) / 1e9;
-        return new ClientWorkerCoordinator.Summary(stepsComputed, robots, wall, endReason, completed, messagesDelivered,
+        return new RunSummary(stepsComputed, robots, wall, endReason, completed, messagesDelivered,
                 messagesOutOfRange, messagesRefused, departures.size(), geometryLosses, geometryAttaches,
                 List.copyOf(departures));
     }

@@ -117,11 +117,11 @@ final class SimulationLoop implements Runnable {
         } else if (e instanceof LoopEvent.ViewerJoins v) {
             cycle.addViewer(v.viewer(), v.snapshot());
         } else if (e instanceof LoopEvent.Pause p) {
-            cycle.pause(p.held());
+            cycle.control().pause(p.held(), cycle.running());
         } else if (e instanceof LoopEvent.Resume) {
-            cycle.resume();
+            cycle.control().resume(cycle.released());
         } else if (e instanceof LoopEvent.StepN s) {
-            cycle.stepN(s.n(), s.done());
+            cycle.control().stepN(s.n(), s.done(), cycle.released(), cycle.running());
         } else if (e instanceof LoopEvent.Stop s) {
             cycle.finish(s.reason(), false);
         }

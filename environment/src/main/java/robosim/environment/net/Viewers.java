@@ -20,9 +20,9 @@ final class Viewers {
 
     private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
     private final long writeTimeoutNanos;
-    private final ClientWorkerCoordinator.RunListener listener;
+    private final RunListener listener;
 
-    Viewers(long writeTimeoutMs, ClientWorkerCoordinator.RunListener listener) {
+    Viewers(long writeTimeoutMs, RunListener listener) {
         this.writeTimeoutNanos = writeTimeoutMs <= 0 ? Long.MAX_VALUE : writeTimeoutMs * 1_000_000L;
         this.listener = listener;
     }

@@ -39,18 +39,18 @@ class SimulationLoopTest {
                     new RobotSpec("c", "ArRobot", "", 2000, 10_000, 0, THREAD, 0)), 0, 8192, List.of());
 
     /** The names of the threads the listener was called on, and the departures it was told. */
-    private static final class Heard implements ClientWorkerCoordinator.RunListener {
+    private static final class Heard implements RunListener {
         final List<String> threads = new CopyOnWriteArrayList<>();
-        final List<ClientWorkerCoordinator.Departure> left = new CopyOnWriteArrayList<>();
+        final List<Departure> left = new CopyOnWriteArrayList<>();
 
         @Override
-        public void robotLeft(ClientWorkerCoordinator.Departure d) {
+        public void robotLeft(Departure d) {
             threads.add(Thread.currentThread().getName());
             left.add(d);
         }
 
         @Override
-        public void ended(ClientWorkerCoordinator.Summary s) {
+        public void ended(RunSummary s) {
             threads.add(Thread.currentThread().getName());
         }
     }
@@ -96,7 +96,7 @@ class SimulationLoopTest {
             }
             assertEquals("completed 20 steps", r.ends.poll(LONG_S, TimeUnit.SECONDS).reason());
         }
-        ClientWorkerCoordinator.Summary s = coordinator.summary();
+        RunSummary s = coordinator.summary();
         assertTrue(s.completed(), s.reason());
         assertEquals(20, s.steps());
         assertEquals(Set.of("simulation-loop"), ThreadRecordingSensor.THREADS);
@@ -107,11 +107,11 @@ class SimulationLoopTest {
         ThreadRecordingSensor.THREADS.clear();
         List<FakeRobot> robots = run(s -> s.maxSteps(30).stepTimeoutMs(100), 5, false);
         assertTrue(coordinator.awaitEnd(LONG_S, TimeUnit.SECONDS));
-        ClientWorkerCoordinator.Summary s = coordinator.summary();
+        RunSummary s = coordinator.summary();
         assertTrue(s.completed(), s.reason());
         assertEquals(30, s.steps());
         assertEquals(1, heard.left.size());
-        ClientWorkerCoordinator.Departure d = heard.left.get(0);
+        Departure d = heard.left.get(0);
         assertEquals("c", d.robot());
         assertEquals(5, d.step());
         assertTrue(d.why().contains("step timeout"), d.why());

@@ -1,0 +1,70 @@
+package robosim.environment.net;
+
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.RunState;
+
+/**
+ * The one point where a computed step may wait before its responses go out, and everything that may
+ * hold it there: a pause (or the end of a step N budget), the pace ({@code --speed}), and a recording
+ * viewer that is a whole backlog behind. Viewers are told when a hold by pause begins and ends; nothing
+ * here waits - the loop asks again after its next event or deadline. Loop thread only.
+ */
+final class ReleasePoint {
+    private static final Logger LOG = LoggerFactory.getLogger(ReleasePoint.class);
+
+    private final RunControl control;
+    private final Viewers viewers;
+    private final RunRecord record;
+    private final RunListener listener;
+    private final boolean paced;
+    /** The computed step waits for a full recording viewer. */
+    private boolean heldForViewer;
+
+    ReleasePoint(RunControl control, Viewers viewers, RunRecord record, RunListener listener,
+            double speed) {
+        this.control = control;
+        this.viewers = viewers;
+        this.record = record;
+        this.listener = listener;
+        this.paced = speed > 0;
+    }
+
+    /**
+     * True if step {@code steps - 1}, computed, may go out now; {@code released}: the steps out so far.
+     * False while a pause, the pace or a full recording viewer holds it.
+     */
+    boolean mayRelease(long now, long steps, long released) {
+        if (control.holdWanted()) {
+            if (!control.holding()) {
+                control.held(released);
+                viewers.announce(new RunState(released, RunState.Phase.PAUSED));
+            }
+            return false;
+        }
+        if (control.holding()) {
+            control.unheld(now, steps - 1); // pace on from here: no rush to catch up the pause
+            record.resumed(now);
+            viewers.announce(new RunState(released, RunState.Phase.RUNNING));
+        }
+        if (paced && control.paceDue(steps) - now > 0) {
+            return false;
+        }
+        if (!viewers.haveRoom()) {
+            if (!heldForViewer) {
+                heldForViewer = true;
+                LOG.debug("step {} waits for a recording viewer that is {} updates behind", steps - 1,
+                        ViewerQueue.RECORDING_BACKLOG);
+                listener.heldForViewer(steps - 1);
+            }
+            return false;
+        }
+        heldForViewer = false;
+        return true;
+    }
+
+    /** When step {@code steps - 1} may go out by the pace (ns), if it waits for the pace; else far in the future. */
+    long paceDue(long steps) {
+        return paced && !control.holdWanted() ? control.paceDue(steps) : Long.MAX_VALUE;
+    }
+}

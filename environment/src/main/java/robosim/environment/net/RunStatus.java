@@ -1,0 +1,16 @@
+package robosim.environment.net;
+
+import java.util.List;
+
+/**
+ * What the control port reports.
+ *
+ * @param state {@code WAITING}, {@code RUNNING}, {@code PAUSED} or {@code ENDED}
+ * @param connected robots whose connection is open and who take part (or wait for the start)
+ * @param left robots that were in this simulation and whose connection has closed or who were removed
+ * @param geometry {@code in-process} (no Geometry process: {@code --no-geometry}, or going on without
+ *     a lost one), {@code attached}, {@code waiting} (for a Geometry process) or {@code none} (ended)
+ */
+public record RunStatus(String state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
+        List<String> left, String geometry, String reason) {
+}
