@@ -4,12 +4,9 @@ import java.io.EOFException;
 import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
-import java.util.ArrayDeque;
-import java.util.ArrayList;
 import java.util.List;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import robosim.api.Message;
 import robosim.api.RobotControl;
 import robosim.protocol.CommEvent;
 import robosim.protocol.ObjectConnection;
@@ -33,35 +30,19 @@ import robosim.protocol.StepResponse;
 public final class HardwareSimulator {
     private static final Logger LOG = LoggerFactory.getLogger(HardwareSimulator.class);
 
-    final String name;
-    final RobotType type;
-    final ControlLink link = new ControlLink();
+    private final String name;
+    private final RobotType type;
+    private final RobotState state;
+    private final ControlLink link = new ControlLink();
     private ObjectConnection connection;
     private RobotWelcome welcome;
     private long steps;
     private String endReason = "";
 
-    // robot state: written by the simulator thread, read by the control thread, handed over by the link
-    double xMm;
-    double yMm;
-    double headingDeg;
-    double[] sonarMm;
-    String lastContact = "";
-    double velocityMmPerS;
-    double rotVelocityDegPerS;
-    final ArrayDeque<Message> inbox = new ArrayDeque<>();
-    /** Newest plug-in sensor readings by name. */
-    final java.util.Map<String, double[]> readings = new java.util.HashMap<>();
-    final List<CommEvent> outbox = new ArrayList<>();
-    private final java.util.Set<String> seenNotices = new java.util.HashSet<>();
-
     public HardwareSimulator(String name, RobotType type) {
         this.name = name;
         this.type = type;
-        this.velocityMmPerS = Math.min(type.defaultVelocityMmPerS(), type.properties().maxSpeedMmPerS());
-        this.rotVelocityDegPerS = Math.min(type.defaultRotVelocityDegPerS(), type.properties().maxTurnDegPerS());
-        this.sonarMm = new double[type.properties().sonars().size()];
-        java.util.Arrays.fill(sonarMm, Double.NaN);
+        this.state = new RobotState(name, type);
     }
 
     /**
@@ -78,9 +59,7 @@ public final class HardwareSimulator {
             connection.close();
             throw new ProtocolException("the Environment refused robot " + name + ": " + welcome.reason());
         }
-        xMm = welcome.xMm();
-        yMm = welcome.yMm();
-        headingDeg = welcome.headingDeg();
+        state.place(welcome.xMm(), welcome.yMm(), welcome.headingDeg());
     }
 
     /**
@@ -107,7 +86,8 @@ public final class HardwareSimulator {
                 return endReason;
             }
             if (exchange == Exchange.SEND_RECEIVE) {
-                return runSendReceive();
+                SendReceiveExchange.run(this);
+                return endReason;
             }
             do {
                 send();
@@ -123,7 +103,7 @@ public final class HardwareSimulator {
     static final long CONTROL_GRACE_MS = 2000;
 
     /** Waits up to {@code ms} for the control thread to end after {@link #finish}; true if it did. */
-    private boolean awaitControlCode(long ms) throws InterruptedException {
+    boolean awaitControlCode(long ms) throws InterruptedException {
         Thread t = controlThread;
         if (t == null) {
             return true;
@@ -134,115 +114,13 @@ public final class HardwareSimulator {
 
     /**
      * Runs many robots' exchanges on the calling thread (each robot's control code still has its own
-     * thread): each step it sends every robot's request in the given order, then reads every
-     * response in the same order. Returns when every robot's simulation is over.
+     * thread); see {@link SharedExchange}. Returns when every robot's simulation is over.
      *
      * @param sims connected simulators, in world order (the order the Environment writes in)
      */
     public static void runShared(List<HardwareSimulator> sims, List<RobotControl> controls)
             throws IOException, InterruptedException {
-        List<HardwareSimulator> running = new ArrayList<>();
-        try {
-            for (int i = 0; i < sims.size(); i++) {
-                HardwareSimulator sim = sims.get(i);
-                if (sim.begin(controls.get(i))) {
-                    running.add(sim);
-                } else {
-                    sim.finish();
-                }
-            }
-            while (!running.isEmpty()) {
-                sendShared(running);
-                for (int i = 0; i < running.size(); i++) {
-                    HardwareSimulator sim = running.get(i);
-                    if (sim == null) {
-                        continue;
-                    }
-                    boolean more;
-                    try {
-                        more = sim.receive();
-                    } catch (IOException e) {
-                        LOG.warn("{}: {}; the other robots of this process go on", sim.name, e.getMessage());
-                        sim.endReason = "connection lost: " + e.getMessage();
-                        more = false;
-                    }
-                    if (!more) {
-                        sim.finish();
-                        running.set(i, null);
-                    }
-                }
-                running.removeIf(java.util.Objects::isNull);
-            }
-        } finally {
-            for (HardwareSimulator sim : sims) {
-                sim.finish();
-            }
-            long deadline = System.nanoTime() + java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(CONTROL_GRACE_MS);
-            for (HardwareSimulator sim : sims) {
-                sim.awaitControlCode(java.util.concurrent.TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
-            }
-        }
-    }
-
-    /** How long the shared exchange waits for one control code before looking whether the step went on. */
-    private static final long SHARED_LOOK_NANOS = java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(50);
-
-    /**
-     * The shared exchange's send phase: sends each robot's request as soon as its control code has
-     * blocked, those that are ready first. A control code that does not yield holds up only its own
-     * robot: if, while waiting for it, a response arrives for a robot already sent, the Environment has
-     * gone on without it (its step timeout dropped it), and it is finished here too.
-     */
-    private static void sendShared(List<HardwareSimulator> running) throws InterruptedException {
-        List<HardwareSimulator> sent = new ArrayList<>(running.size());
-        List<Integer> late = new ArrayList<>();
-        for (int i = 0; i < running.size(); i++) {
-            HardwareSimulator sim = running.get(i);
-            if (sim.link.awaitControlFor(0)) {
-                if (sendOrFinish(sim)) {
-                    sent.add(sim);
-                } else {
-                    running.set(i, null);
-                }
-            } else {
-                late.add(i);
-            }
-        }
-        for (int i : late) {
-            HardwareSimulator sim = running.get(i);
-            while (!sim.link.awaitControlFor(SHARED_LOOK_NANOS)) {
-                if (sent.stream().anyMatch(s -> s.connection.hasInput())) {
-                    LOG.warn("{}: its control code has not yielded and the Environment went on without it; "
-                            + "the other robots of this process go on", sim.name);
-                    sim.endReason = "its control code did not yield in time";
-                    sim.finish();
-                    running.set(i, null);
-                    sim = null;
-                    break;
-                }
-            }
-            if (sim != null) {
-                if (sendOrFinish(sim)) {
-                    sent.add(sim);
-                } else {
-                    running.set(i, null);
-                }
-            }
-        }
-    }
-
-    /** Sends one robot's request; on a failed connection finishes that robot alone and returns false. */
-    private static boolean sendOrFinish(HardwareSimulator sim) throws InterruptedException {
-        try {
-            sim.send();
-            return true;
-        } catch (IOException e) {
-            // this robot's connection failed (the Environment dropped it): only it stops
-            LOG.warn("{}: {}; the other robots of this process go on", sim.name, e.getMessage());
-            sim.endReason = "connection lost: " + e.getMessage();
-            sim.finish();
-            return false;
-        }
+        SharedExchange.run(sims, controls);
     }
 
     // ---- the exchange, one step at a time -----------------------------------------------------
@@ -255,11 +133,12 @@ public final class HardwareSimulator {
     private List<String> sensorsWanted = List.of();
 
     /** Starts the control thread and reads the first step number; false if the simulation ended first. */
-    private boolean begin(RobotControl control) throws IOException {
+    boolean begin(RobotControl control) throws IOException {
         if (welcome == null) {
             throw new IllegalStateException("connect first");
         }
-        SimulatedRobot api = new SimulatedRobot(this, welcome.robotNames(), welcome.timeStepMs(), welcome.sensors());
+        SimulatedRobot api = new SimulatedRobot(state, link, welcome.robotNames(), welcome.timeStepMs(),
+                welcome.sensors());
         controlThread = new Thread(() -> runControl(control, api), "control[" + name + "]");
         controlThread.setDaemon(true);
         controlThread.start();
@@ -287,7 +166,7 @@ public final class HardwareSimulator {
     }
 
     /** Waits for the control code to block, then sends this step's request. */
-    private void send() throws IOException, InterruptedException {
+    void send() throws IOException, InterruptedException {
         Command command = link.awaitControl();
         double move = 0;
         double turn = 0;
@@ -299,8 +178,7 @@ public final class HardwareSimulator {
             tag = command.plannedTag;
         }
         current = command;
-        List<CommEvent> messages = outbox.isEmpty() ? List.of() : List.copyOf(outbox);
-        outbox.clear();
+        List<CommEvent> messages = state.takeOutbox();
         connection.write(new StepRequest(nextStep, move, turn, sonarWanted, messages, sensorsWanted, tag));
         connection.flush();
     }
@@ -309,7 +187,7 @@ public final class HardwareSimulator {
      * Reads the response to the request just sent, applies it and reads the next step number (or,
      * with step messages off, counts on); false (with the reason kept) at the end of the simulation.
      */
-    private boolean receive() throws IOException {
+    boolean receive() throws IOException {
         Externalizable answer;
         try {
             answer = connection.read(Externalizable.class);
@@ -324,7 +202,7 @@ public final class HardwareSimulator {
         if (!(answer instanceof StepResponse r)) {
             throw new ProtocolException("expected a StepResponse, got a " + answer.getClass().getSimpleName());
         }
-        boolean arrived = apply(r);
+        boolean arrived = state.apply(r);
         steps++;
         Command command = current;
         current = null;
@@ -338,74 +216,8 @@ public final class HardwareSimulator {
         return true;
     }
 
-    /** SEND_RECEIVE: the calling thread sends, a receiver thread reads; a baton passes between them. */
-    private String runSendReceive() throws IOException, InterruptedException {
-        Baton sent = new Baton();
-        Baton received = new Baton();
-        Throwable[] failure = new Throwable[1];
-        Thread receiver = new Thread(() -> {
-            try {
-                while (sent.take()) {
-                    received.give(receive());
-                }
-            } catch (IOException | RuntimeException | InterruptedException e) {
-                failure[0] = e;
-                received.give(false);
-            }
-        }, "receiver[" + name + "]");
-        receiver.setDaemon(true);
-        receiver.start();
-        try {
-            do {
-                send();
-                sent.give(true);
-            } while (received.take());
-        } finally {
-            sent.give(false);
-            receiver.join(5000);
-        }
-        if (failure[0] instanceof IOException e) {
-            throw e;
-        } else if (failure[0] instanceof RuntimeException e) {
-            throw e;
-        }
-        return endReason;
-    }
-
-    /** A one-slot hand-over of a boolean between the sending and the receiving thread. */
-    private static final class Baton {
-        private final java.util.concurrent.locks.ReentrantLock lock = new java.util.concurrent.locks.ReentrantLock();
-        private final java.util.concurrent.locks.Condition full = lock.newCondition();
-        private boolean has;
-        private boolean value;
-
-        void give(boolean v) {
-            lock.lock();
-            try {
-                value = v;
-                has = true;
-                full.signal();
-            } finally {
-                lock.unlock();
-            }
-        }
-
-        boolean take() throws InterruptedException {
-            lock.lock();
-            try {
-                while (!has) {
-                    full.await();
-                }
-                has = false;
-                return value;
-            } finally {
-                lock.unlock();
-            }
-        }
-    }
-
     /** Stops the control code and closes the connection (idempotent). */
-    private void finish() {
+    void finish() {
         link.shutdown();
         if (controlThread != null) {
             controlThread.interrupt();
@@ -413,33 +225,6 @@ public final class HardwareSimulator {
         if (connection != null) {
             connection.close();
         }
-    }
-
-    private boolean apply(StepResponse r) {
-        xMm = r.xMm();
-        yMm = r.yMm();
-        headingDeg = r.headingDeg();
-        if (r.sonarMm().length > 0) {
-            sonarMm = r.sonarMm();
-        }
-        if (r.movedMm() != 0 || r.turnedDeg() != 0 || !r.contact().isEmpty()) {
-            lastContact = r.contact();
-        }
-        for (robosim.protocol.SensorReading reading : r.readings()) {
-            readings.put(reading.name(), reading.values());
-        }
-        for (CommEvent e : r.inbox()) {
-            inbox.addLast(new Message(e.from(), e.payload()));
-        }
-        for (String notice : r.notices()) {
-            // the same notice every step (e.g. messages to a robot that has left) is logged once
-            if (seenNotices.size() < 1000 && seenNotices.add(notice)) {
-                LOG.warn("{}: {} (repeats are logged at debug level)", name, notice);
-            } else {
-                LOG.debug("{}: {}", name, notice);
-            }
-        }
-        return !r.inbox().isEmpty();
     }
 
     private void runControl(RobotControl control, SimulatedRobot api) {
@@ -453,6 +238,21 @@ public final class HardwareSimulator {
         } finally {
             link.controlFinished();
         }
+    }
+
+    ControlLink link() {
+        return link;
+    }
+
+    /** True if the Environment has sent something this robot has not read yet. */
+    boolean hasInput() {
+        return connection.hasInput();
+    }
+
+    /** Ends this robot's run here, for {@code why} (its exchange failed or its control code did not yield). */
+    void endedHere(String why) {
+        endReason = why;
+        finish();
     }
 
     /** Steps this robot has taken. */

@@ -9,23 +9,21 @@ import robosim.protocol.SonarSpec;
 
 /** The {@link Robot} the control code gets: blocking calls become {@link Command}s on the link. */
 final class SimulatedRobot implements Robot {
-    private final HardwareSimulator sim;
+    private final RobotState state;
+    private final ControlLink link;
     private final List<String> robotNames;
     private final long stepMs;
     private final double[] sonarAngles;
 
     private final List<String> sensorNames;
 
-    SimulatedRobot(HardwareSimulator sim, List<String> robotNames, long stepMs) {
-        this(sim, robotNames, stepMs, List.of());
-    }
-
-    SimulatedRobot(HardwareSimulator sim, List<String> robotNames, long stepMs, List<String> sensorNames) {
-        this.sim = sim;
+    SimulatedRobot(RobotState state, ControlLink link, List<String> robotNames, long stepMs, List<String> sensorNames) {
+        this.state = state;
+        this.link = link;
         this.sensorNames = List.copyOf(sensorNames);
         this.robotNames = List.copyOf(robotNames);
         this.stepMs = stepMs;
-        List<SonarSpec> sonars = sim.type.properties().sonars();
+        List<SonarSpec> sonars = state.type().properties().sonars();
         this.sonarAngles = new double[sonars.size()];
         for (int i = 0; i < sonarAngles.length; i++) {
             sonarAngles[i] = sonars.get(i).angleDeg();
@@ -34,7 +32,7 @@ final class SimulatedRobot implements Robot {
 
     @Override
     public String name() {
-        return sim.name;
+        return state.name();
     }
 
     @Override
@@ -53,8 +51,8 @@ final class SimulatedRobot implements Robot {
         if (mm == 0) {
             return 0;
         }
-        Command c = Command.move(mm, sim.velocityMmPerS);
-        sim.link.execute(c);
+        Command c = Command.move(mm, state.velocityMmPerS());
+        link.execute(c);
         return c.result;
     }
 
@@ -64,8 +62,8 @@ final class SimulatedRobot implements Robot {
         if (deg == 0) {
             return 0;
         }
-        Command c = Command.turn(deg, sim.rotVelocityDegPerS);
-        sim.link.execute(c);
+        Command c = Command.turn(deg, state.rotVelocityDegPerS());
+        link.execute(c);
         return c.result;
     }
 
@@ -80,12 +78,12 @@ final class SimulatedRobot implements Robot {
         if (!(mmPerS > 0)) {
             throw new IllegalArgumentException("velocity must be > 0 mm/s, got " + mmPerS);
         }
-        sim.velocityMmPerS = Math.min(mmPerS, sim.type.properties().maxSpeedMmPerS());
+        state.velocityMmPerS(mmPerS);
     }
 
     @Override
     public double velocity() {
-        return sim.velocityMmPerS;
+        return state.velocityMmPerS();
     }
 
     @Override
@@ -93,24 +91,24 @@ final class SimulatedRobot implements Robot {
         if (!(degPerS > 0)) {
             throw new IllegalArgumentException("rotational velocity must be > 0 deg/s, got " + degPerS);
         }
-        sim.rotVelocityDegPerS = Math.min(degPerS, sim.type.properties().maxTurnDegPerS());
+        state.rotVelocityDegPerS(degPerS);
     }
 
     @Override
     public double rotVelocity() {
-        return sim.rotVelocityDegPerS;
+        return state.rotVelocityDegPerS();
     }
 
     @Override
     public String tag() throws InterruptedException {
         Command c = Command.tag();
-        sim.link.execute(c);
+        link.execute(c);
         return c.text;
     }
 
     @Override
     public void sleep(long ms) throws InterruptedException {
-        sim.link.execute(Command.idle(stepsFor(ms), false));
+        link.execute(Command.idle(stepsFor(ms), false));
     }
 
     private long stepsFor(long ms) {
@@ -123,7 +121,7 @@ final class SimulatedRobot implements Robot {
 
     @Override
     public double[] sonarRanges() {
-        return sim.sonarMm.clone();
+        return state.sonarMm();
     }
 
     @Override
@@ -139,31 +137,31 @@ final class SimulatedRobot implements Robot {
     @Override
     public double[] sensor(String name) {
         if (!sensorNames.contains(name)) {
-            throw new IllegalArgumentException("no sensor named " + name + " on " + sim.name + " (it has "
+            throw new IllegalArgumentException("no sensor named " + name + " on " + state.name() + " (it has "
                     + sensorNames + ")");
         }
-        double[] values = sim.readings.get(name);
+        double[] values = state.reading(name);
         return values == null ? new double[0] : values.clone();
     }
 
     @Override
     public double xMm() {
-        return sim.xMm;
+        return state.xMm();
     }
 
     @Override
     public double yMm() {
-        return sim.yMm;
+        return state.yMm();
     }
 
     @Override
     public double headingDeg() {
-        return sim.headingDeg;
+        return state.headingDeg();
     }
 
     @Override
     public String lastContact() {
-        return sim.lastContact;
+        return state.lastContact();
     }
 
     @Override
@@ -176,7 +174,7 @@ final class SimulatedRobot implements Robot {
             throw new IllegalArgumentException("a message of " + bytes + " bytes is more than the wire's limit of "
                     + Limits.MAX_UTF_BYTES);
         }
-        sim.outbox.add(new CommEvent(sim.name, to, text));
+        state.send(to, text);
     }
 
     @Override
@@ -186,14 +184,14 @@ final class SimulatedRobot implements Robot {
 
     @Override
     public Message receive() {
-        return sim.inbox.pollFirst();
+        return state.nextMessage();
     }
 
     @Override
     public Message waitForMessage(long timeoutMs) throws InterruptedException {
-        if (sim.inbox.isEmpty()) {
-            sim.link.execute(Command.idle(stepsFor(timeoutMs), true));
+        if (!state.hasMessage()) {
+            link.execute(Command.idle(stepsFor(timeoutMs), true));
         }
-        return sim.inbox.pollFirst();
+        return state.nextMessage();
     }
 }

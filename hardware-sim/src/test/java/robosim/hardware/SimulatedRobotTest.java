@@ -22,22 +22,22 @@ class SimulatedRobotTest {
         };
         ScriptedEnvironment.run(control, 125, 3);
         assertArrayEquals(new long[] {125, 125}, seen, "before the first step and after it");
-        HardwareSimulator sim = new HardwareSimulator("r1", new Scout());
-        assertEquals(40, new SimulatedRobot(sim, List.of("r1"), 40).stepMs());
+        RobotState state = new RobotState("r1", new Scout());
+        assertEquals(40, new SimulatedRobot(state, new ControlLink(), List.of("r1"), 40, List.of()).stepMs());
     }
 
     @Test
     void sendQueuesBroadcastAddressesEveryoneAndOversizedTextIsRefusedAtOnce() {
-        HardwareSimulator sim = new HardwareSimulator("r1", new ArRobot());
-        SimulatedRobot robot = new SimulatedRobot(sim, List.of("r1", "r2"), 500);
+        RobotState state = new RobotState("r1", new ArRobot());
+        SimulatedRobot robot = new SimulatedRobot(state, new ControlLink(), List.of("r1", "r2"), 500, List.of());
         robot.send("r2", "hi");
         robot.broadcast("all");
         assertEquals(List.of(new CommEvent("r1", "r2", "hi"), new CommEvent("r1", CommEvent.EVERYONE, "all")),
-                sim.outbox);
+                state.takeOutbox());
         IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
                 () -> robot.send("r2", "x".repeat(70_000)));
         assertTrue(e.getMessage().startsWith("a message of 70000 bytes is more than the wire's limit of 65535"),
                 e.getMessage());
-        assertEquals(2, sim.outbox.size(), "nothing half-sent");
+        assertEquals(List.of(), state.takeOutbox(), "nothing half-sent");
     }
 }

@@ -53,15 +53,11 @@ public final class EnvironmentHost {
         current = newSession(spec, startPaused);
     }
 
+    /**
+     * Under this host's lock: opens the next simulation on the same ports. The previous one's ports
+     * must be free already ({@link #release}, called without the lock).
+     */
     private ClientWorkerCoordinator newSession(WorldSpec s, boolean paused) throws IOException {
-        if (current != null) {
-            try {
-                current.awaitServersClosed(5000); // its ports are ours again
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IOException("interrupted while the previous simulation closed its ports");
-            }
-        }
         ClientWorkerCoordinator c = new ClientWorkerCoordinator(s, settings);
         if (paused) {
             c.startPaused();
@@ -122,17 +118,39 @@ public final class EnvironmentHost {
     }
 
     /** {@code start}: resumes a paused simulation, or runs the current file again once it has ended. */
-    public synchronized String start() throws IOException {
-        if (current.status().state().equals("ENDED")) {
+    public String start() throws IOException {
+        ClientWorkerCoordinator c = current();
+        if (!c.status().state().equals("ENDED")) {
+            c.resume();
+            return "running";
+        }
+        release(c);
+        synchronized (this) {
             if (shutdown) {
                 return "the Environment is shutting down";
+            }
+            if (current != c) {
+                return "a new simulation is already waiting for its robots";
             }
             current = newSession(spec, false);
             notifyAll();
             return "started a new simulation of " + file;
         }
-        current.resume();
-        return "running";
+    }
+
+    /**
+     * Without the lock: lets an ended simulation's viewers take its end (so a viewer sees why, not a
+     * broken connection), then closes it and waits until its ports are free for the next one.
+     */
+    private static void release(ClientWorkerCoordinator ended) throws IOException {
+        try {
+            ended.awaitViewersDone(5000);
+            ended.close();
+            ended.awaitServersClosed(5000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted while the previous simulation closed its ports");
+        }
     }
 
     /** {@code load FILE}: checks the file first; a bad one changes nothing. */
@@ -148,8 +166,8 @@ public final class EnvironmentHost {
         }
         try {
             old.stop("a new environment file was loaded: " + newFile);
+            release(old);
             synchronized (this) {
-                old.close();
                 file = newFile;
                 spec = loaded;
                 current = newSession(loaded, false);
