@@ -53,6 +53,11 @@ import robosim.protocol.WorldSnapshot;
  */
 class FaultsTest {
     private static final long LONG = 60;
+    /**
+     * The step timeout where a test needs one: long enough that a robot which answers is never late
+     * on a loaded machine, short enough for the suite.
+     */
+    private static final long STEP_TIMEOUT_MS = 2000;
 
     private static WorldSpec three() throws Exception {
         return new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml"));
@@ -151,7 +156,7 @@ class FaultsTest {
     @ParameterizedTest
     @EnumSource(ClientWorkerCoordinator.Design.class)
     void aRobotThatFallsSilentIsDroppedAfterTheStepTimeout(ClientWorkerCoordinator.Design design) throws Exception {
-        try (ClientWorkerCoordinator env = start(builder(true, 60).design(design).stepTimeoutMs(300).build())) {
+        try (ClientWorkerCoordinator env = start(builder(true, 60).design(design).stepTimeoutMs(STEP_TIMEOUT_MS).build())) {
             int[] ports = env.ports();
             CompletableFuture<ObjectConnection> r1 = CompletableFuture.supplyAsync(() -> {
                 try {
@@ -182,7 +187,7 @@ class FaultsTest {
     void aStuckControlCodeInASharedProcessCostsOnlyItsOwnRobot() throws Exception {
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
                 .exchange(InJvmSimulation.Exchange.SHARED)
-                .settings(s -> s.stepTimeoutMs(300))
+                .settings(s -> s.stepTimeoutMs(STEP_TIMEOUT_MS))
                 .run(200, true, () -> robot -> {
                     if (robot.name().equals("robot3")) {
                         for (int i = 0; i < 20; i++) {

@@ -88,10 +88,10 @@ class HeadlessRunnerTest {
     @Test
     void theStepTimeoutReachesTheEnvironmentAndItsRemovalIsNamed() {
         Run r = headless("--env", "src/test/resources/one-stuck.xml", "--steps", "60", "--no-geometry",
-                "--robots-in-one-process", "--step-timeout-ms", "400", "--timeout-s", "120");
+                "--robots-in-one-process", "--step-timeout-ms", "2000", "--timeout-s", "120");
         assertEquals(HeadlessRunner.EXIT_ROBOTS_REMOVED, r.code(), r.all());
         String removed = r.out().get(r.out().size() - 2);
-        assertTrue(Pattern.matches("removed robot=r2 step=\\d+ reason=sent no request for step \\d+ within 400 ms "
+        assertTrue(Pattern.matches("removed robot=r2 step=\\d+ reason=sent no request for step \\d+ within 2000 ms "
                 + "\\(step timeout\\)", removed), r.all());
     }
 }

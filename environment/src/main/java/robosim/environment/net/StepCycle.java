@@ -155,6 +155,11 @@ final class StepCycle extends RunLifecycle {
         control.releasing();
         boolean last = settings.maxSteps() > 0 && step >= settings.maxSteps();
         SimulationEnd end = last ? new SimulationEnd(step - 1, "completed " + step + " steps") : null;
+        if (last) {
+            // the outcome is on record before any robot hears of it
+            record.endReason = end.reason();
+            record.completed = true;
+        }
         for (int i = 0; i < robots.length; i++) {
             if (!core.present(i)) {
                 continue;
