@@ -1,7 +1,9 @@
 /**
- * The simulation core: plain objects, no sockets, no threads. {@link robosim.environment.core.WorldSpec}
- * is the loaded file; {@link robosim.environment.core.SimulationCore} owns the world state
+ * The simulation core: plain objects, no sockets, no threads, and it never calls out.
+ * {@link robosim.environment.core.WorldSpec} is the loaded file;
+ * {@link robosim.environment.core.SimulationCore} owns the world state
  * ({@link robosim.environment.core.EnvironmentMap}) and turns one step's requests into that step's
- * responses. Called by exactly one thread at a time (the thread that releases the step).
+ * Geometry request ({@code prepare}) and, from Geometry's checked answer, into the step's responses
+ * ({@code complete}). Called only by the Environment's {@code simulation-loop} thread.
  */
 package robosim.environment.core;

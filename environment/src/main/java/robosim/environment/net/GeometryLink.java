@@ -187,9 +187,11 @@ final class GeometryLink {
         return inProcess != null ? "in-process" : "waiting";
     }
 
-    /** The end: every Geometry process is told. */
+    /** The end: every Geometry process is told; one in the middle of a round trip nobody will read is cut off. */
     void end(robosim.protocol.SimulationEnd end) {
-        if (attached != null) {
+        if (attached != null && outstanding != null) {
+            attached.drop();
+        } else if (attached != null) {
             attached.end(end);
         }
         if (joining != null) {

@@ -1,7 +1,18 @@
 /**
- * The Environment's client interface: sockets and threads only, no world logic. The
- * {@link robosim.environment.net.ClientWorkerCoordinator} owns the listening sockets and one thread
- * per connected client ({@code robot-worker[name]}, {@code viewer-worker[n]}, {@code geometry-worker}),
- * gathers each step's requests and calls the core on the thread of the last robot worker to arrive.
+ * The Environment's client interface: sockets and threads only, no world logic. One thread,
+ * {@code simulation-loop} ({@link robosim.environment.net.SimulationLoop}), owns simulation time; every
+ * other thread posts events to it. The threads of this package, each named:
+ * <ul>
+ * <li>{@code simulation-loop}: every step (gather, core, Geometry link, responses, viewers, pace, pause,
+ *     deadlines, the end); blocks only on its event queue, timed to its next deadline.</li>
+ * <li>{@code robot-worker[name]} (one per robot): the handshake, then reads its robot's requests; blocks
+ *     in its socket read.</li>
+ * <li>{@code robot-writer[name]} ({@code TWO_THREADS}): writes what the loop queues for its robot.</li>
+ * <li>{@code stepper} ({@code SEQUENTIAL}): reads every robot's request in world order.</li>
+ * <li>{@code geometry-worker}: the Geometry connection - the world, each step's round trip, the end.</li>
+ * <li>{@code viewer-worker[n]} (one per viewer): the snapshot, then its bounded, coalescing queue.</li>
+ * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}: accept connections.</li>
+ * </ul>
+ * No lock is held across a socket read or write, a sleep or a wait.
  */
 package robosim.environment.net;
