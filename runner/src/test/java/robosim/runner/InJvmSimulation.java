@@ -219,7 +219,7 @@ final class InJvmSimulation {
             // the viewers that took the end leave on their own; wait for their workers (the frozen one never
             // finishes, so this returns after the timeout at the latest)
             env.awaitViewersDone(frozenViewers > 0 ? 3000 : 30_000);
-            viewersAtEnd = env.viewerCount();
+            viewersAtEnd = env.status().viewers();
             for (Socket f : frozen) {
                 f.close();
             }

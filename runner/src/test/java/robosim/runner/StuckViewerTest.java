@@ -83,12 +83,12 @@ class StuckViewerTest {
             long t0 = System.nanoTime();
             RunStatus status = env.status();
             long statusMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0);
-            assertEquals("RUNNING", status.state(), "held for a viewer is not a pause");
+            assertEquals(RunStatus.State.RUNNING, status.state(), "held for a viewer is not a pause");
             assertTrue(statusMs < 1000, "status took " + statusMs + " ms");
             long t1 = System.nanoTime();
             env.stop("stopped while a viewer was stuck");
             long stopMs = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t1);
-            assertEquals("ENDED", env.status().state());
+            assertEquals(RunStatus.State.ENDED, env.status().state());
             assertTrue(stopMs < 1000, "stop took " + stopMs + " ms");
             for (CompletableFuture<String> r : robots) {
                 assertEquals("stopped while a viewer was stuck", r.get(LONG_S, TimeUnit.SECONDS));

@@ -209,7 +209,7 @@ public final class ControlServer implements Closeable {
         private ObjectNode status() {
             RunStatus s = host.current().status();
             ObjectNode n = ok(null);
-            n.put("state", s.state());
+            n.put("state", s.state().name());
             n.put("step", s.step());
             n.put("steps_per_s", Math.round(s.stepsPerSecond() * 10) / 10.0);
             n.put("file", String.valueOf(host.file()));
@@ -217,6 +217,7 @@ public final class ControlServer implements Closeable {
             n.putPOJO("connected", s.connected());
             n.putPOJO("left", s.left());
             n.put("geometry", s.geometry());
+            n.put("viewers", s.viewers());
             if (!s.reason().isEmpty()) {
                 n.put("reason", s.reason());
             }

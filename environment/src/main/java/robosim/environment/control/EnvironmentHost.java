@@ -10,6 +10,7 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.RunStatus;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
 
@@ -120,7 +121,7 @@ public final class EnvironmentHost {
     /** {@code start}: resumes a paused simulation, or runs the current file again once it has ended. */
     public String start() throws IOException {
         ClientWorkerCoordinator c = current();
-        if (!c.status().state().equals("ENDED")) {
+        if (c.status().state() != RunStatus.State.ENDED) {
             c.resume();
             return "running";
         }

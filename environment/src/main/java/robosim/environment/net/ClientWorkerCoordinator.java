@@ -253,18 +253,18 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** What the control port reports: published by the loop, read without waiting for it. */
     public RunStatus status() {
         RunRecord r = cycle.record();
-        String state = r.phase;
+        RunStatus.State state = r.phase;
         List<String> connected = new java.util.ArrayList<>();
         List<String> left = new java.util.ArrayList<>();
         for (RunRecord.Member m : r.roster) {
             if (m.connected()) {
                 connected.add(m.name());
-            } else if (!"WAITING".equals(state)) {
+            } else if (state != RunStatus.State.WAITING) {
                 left.add(m.name());
             }
         }
-        return new RunStatus(state, r.stepsReleased, "RUNNING".equals(state) ? r.recentRate : 0, robotNames,
-                List.copyOf(connected), List.copyOf(left), r.geometry, r.endReason);
+        return new RunStatus(state, r.stepsReleased, state == RunStatus.State.RUNNING ? r.recentRate : 0, robotNames,
+                List.copyOf(connected), List.copyOf(left), r.geometry, r.endReason, cycle.viewers().count());
     }
 
     public RunSummary summary() {
@@ -298,11 +298,6 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** After the end: waits until the listening sockets are really released, so a next simulation can bind them. */
     public void awaitServersClosed(long timeoutMs) throws InterruptedException {
         listeners.awaitClosed(timeoutMs);
-    }
-
-    /** Viewers connected now. */
-    public int viewerCount() {
-        return cycle.viewers().count();
     }
 
     @Override

@@ -31,7 +31,6 @@ final class GeometryClientWorker extends ClientWorker {
 
     /** At most the world, one step and the end are ever outstanding. */
     private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
-    private volatile long busySince;
 
     GeometryClientWorker(ClientWorkerCoordinator coordinator, Socket socket) {
         super(coordinator, socket, "geometry-worker");
@@ -63,15 +62,9 @@ final class GeometryClientWorker extends ClientWorker {
                 connection.flush();
                 coordinator.post(new LoopEvent.GeometryReady(this), () -> { });
             } else if (task instanceof Resolve r) {
-                busySince = System.nanoTime();
-                GeometryStepResponse answer;
-                try {
-                    connection.write(r.request());
-                    connection.flush();
-                    answer = connection.read(GeometryStepResponse.class);
-                } finally {
-                    busySince = 0;
-                }
+                connection.write(r.request());
+                connection.flush();
+                GeometryStepResponse answer = connection.read(GeometryStepResponse.class);
                 coordinator.post(new LoopEvent.GeometryAnswer(this, answer), () -> { });
             } else {
                 connection.write(((End) task).end());
@@ -96,12 +89,6 @@ final class GeometryClientWorker extends ClientWorker {
         if (!tasks.offer(new End(end))) {
             drop();
         }
-    }
-
-    /** How long the current step's round trip has taken so far, ns; 0 if none is under way. */
-    long busyFor(long now) {
-        long since = busySince;
-        return since == 0 ? 0 : now - since;
     }
 
     @Override

@@ -167,12 +167,6 @@ final class GeometryLink {
         return now - sentNanos > limit * 1_000_000L ? attached : null;
     }
 
-    /** When the outstanding step's answer is due at the latest (ns), or {@code Long.MAX_VALUE}. */
-    long answerDueNanos() {
-        long limit = settings.geometryTimeoutMs();
-        return attached == null || outstanding == null || limit <= 0 ? Long.MAX_VALUE : sentNanos + limit * 1_000_000L;
-    }
-
     /** Where collision and sonar are resolved now, for the status. */
     String where(boolean ended) {
         if (settings.inProcessGeometry()) {

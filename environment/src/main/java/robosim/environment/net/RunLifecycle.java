@@ -231,11 +231,11 @@ abstract class RunLifecycle {
     }
 
     /** The status's name for the run's state now. */
-    private String statusPhase() {
+    private RunStatus.State statusPhase() {
         return switch (phase) {
-            case WAITING -> "WAITING";
-            case ENDED -> "ENDED";
-            default -> control.pausedNow() || beginPending ? "PAUSED" : "RUNNING";
+            case WAITING -> RunStatus.State.WAITING;
+            case ENDED -> RunStatus.State.ENDED;
+            default -> control.pausedNow() || beginPending ? RunStatus.State.PAUSED : RunStatus.State.RUNNING;
         };
     }
 

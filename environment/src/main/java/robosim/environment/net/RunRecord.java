@@ -10,7 +10,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 final class RunRecord {
     private static final long RATE_WINDOW_NANOS = 500_000_000L;
 
-    volatile String phase = "WAITING";
+    volatile RunStatus.State phase = RunStatus.State.WAITING;
     volatile long stepsComputed;
     volatile long stepsReleased;
     volatile double recentRate;

@@ -5,12 +5,15 @@ import java.util.List;
 /**
  * What the control port reports.
  *
- * @param state {@code WAITING}, {@code RUNNING}, {@code PAUSED} or {@code ENDED}
+ * @param state where the run is
  * @param connected robots whose connection is open and who take part (or wait for the start)
  * @param left robots that were in this simulation and whose connection has closed or who were removed
  * @param geometry {@code in-process} (no Geometry process: {@code --no-geometry}, or going on without
  *     a lost one), {@code attached}, {@code waiting} (for a Geometry process) or {@code none} (ended)
+ * @param viewers viewers connected now
  */
-public record RunStatus(String state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
-        List<String> left, String geometry, String reason) {
+public record RunStatus(State state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
+        List<String> left, String geometry, String reason, int viewers) {
+    /** Waiting for its clients; running; paused (held by pause or step N); ended. */
+    public enum State { WAITING, RUNNING, PAUSED, ENDED }
 }

@@ -126,9 +126,4 @@ final class ViewerQueue {
             }
         }
     }
-
-    /** Updates waiting now. */
-    synchronized int size() {
-        return pending.size();
-    }
 }

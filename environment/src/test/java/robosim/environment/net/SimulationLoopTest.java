@@ -125,18 +125,18 @@ class SimulationLoopTest {
     void stepNRunsExactlyNStepsPauseHoldsAndStopEndsAtOnce() throws Exception {
         List<FakeRobot> robots = run(s -> s, Long.MAX_VALUE, true);
         assertEquals(3, coordinator.step(3, LONG_S, TimeUnit.SECONDS));
-        assertEquals("PAUSED", coordinator.status().state());
+        assertEquals(RunStatus.State.PAUSED, coordinator.status().state());
         assertEquals(3, coordinator.status().step());
         assertEquals(3, robots.get(0).responses.size(), "three responses out, the fourth step held");
         assertEquals(7, coordinator.step(4, LONG_S, TimeUnit.SECONDS));
         coordinator.resume();
         coordinator.pause(LONG_S, TimeUnit.SECONDS);
-        assertEquals("PAUSED", coordinator.status().state());
+        assertEquals(RunStatus.State.PAUSED, coordinator.status().state());
         long held = coordinator.status().step();
         assertTrue(held >= 7, "ran on after the resume: " + held);
         coordinator.stop("stopped by the test");
         assertTrue(coordinator.awaitEnd(LONG_S, TimeUnit.SECONDS), "stop returns once the run has ended");
-        assertEquals("ENDED", coordinator.status().state());
+        assertEquals(RunStatus.State.ENDED, coordinator.status().state());
         SimulationEnd end = robots.get(1).ends.poll(LONG_S, TimeUnit.SECONDS);
         assertEquals("stopped by the test", end.reason());
         assertEquals(held, robots.get(1).responses.size(), "nothing went out after the pause held");

@@ -22,9 +22,11 @@ class ViewerQueueTest {
         for (long k = 0; k < 5000; k++) {
             assertTrue(q.hasRoom(), "a live viewer always has room");
             q.offer(update(k));
-            assertEquals(1, q.size());
         }
         assertEquals(4999, ((PoseUpdate) q.take()).step());
+        SimulationEnd end = new SimulationEnd(4999, "done");
+        q.end(end);
+        assertSame(end, q.take(), "nothing older was held");
     }
 
     @Test

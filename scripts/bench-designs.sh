@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# Each coordinator design against the floor of its own thread shape, in one sitting, alternated:
+#   scripts/bench-designs.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+# REPS defaults to 2. For N = 10, 100, 1000 robots (test-envs/bench-N.xml: Wander Scouts, 16 sonars read
+# every step, Geometry as its own process, robots in one process), each repetition runs in turn:
+#   ../shared/bench/FloorThreads.java N S   the cheapest thread-per-client shape (a reader per socket,
+#                                           one loop thread writing every reply)
+#   headless.sh --coordinator THREADS       the default, the report's design
+#   ../shared/bench/FloorShared.java N S    the cheapest socket-per-robot shape (one thread each side)
+#   headless.sh --coordinator SEQUENTIAL    the original's loop
+# and prints each run with its ratio to its own floor of the same repetition, then the medians. Writes
+# designs.csv (one row per run, appended) into a fresh temporary directory (printed), DIR with
+# --out DIR, or docs/perf/ with --write-docs. --quick: one repetition with a fifth of the steps.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+quick=0 args=()
+for a in "$@"; do
+  if [ "$a" = --quick ]; then quick=1; else args+=("$a"); fi
+done
+robosim_script_args docs/perf "${args[@]}"
+[ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, REPS, got ${ROBOSIM_ARGS[*]} (see --help)"
+[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
+reps=${ROBOSIM_ARGS[0]:-2}
+robosim_count REPS "$reps"
+[ "$quick" = 1 ] && reps=1
+cd "$ROBOSIM_HOME"
+for f in ../shared/bench/FloorThreads.java ../shared/bench/FloorShared.java; do
+  [ -f "$f" ] || robosim_fail "$f not found (the shared floors live beside the repository)"
+done
+dir=$(robosim_out_dir)
+robosim_build_if_stale
+out=$dir/designs.csv
+sitting=$(date -u +%Y-%m-%dT%H:%MZ)
+[ -f "$out" ] || echo "sitting,variant,robots,steps,rep,steps_per_s,floor,floor_steps_per_s,ratio_to_floor" > "$out"
+
+steps_for() {
+  local s
+  case $1 in 10) s=5000 ;; 100) s=1000 ;; *) s=150 ;; esac
+  [ "$quick" = 1 ] && s=$((s / 5))
+  echo "$s"
+}
+# steps/s from a floor's "steps=S wall=Ws" words, or from headless.sh's summary line
+floor_rate() { awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+  END { sub(/s$/, "", v["wall"]); if (v["wall"] > 0) printf "%.1f", v["steps"] / v["wall"]; else if (v["steps/s"] > 0) print v["steps/s"] }'; }
+rate() { (grep -oE '(^| )steps_per_s=[0-9.]+' || true) | head -n 1 | sed -E 's/.*=//'; }
+row() { # variant robots steps rep rate floor floor_rate
+  local ratio=""
+  [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
+  echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
+  printf '%-22s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
+}
+
+for rep in $(seq "$reps"); do
+  echo "== repetition $rep of $reps"
+  for n in 10 100 1000; do
+    s=$(steps_for "$n")
+    ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
+    row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
+    r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
+      --coordinator THREADS 2>/dev/null | tail -n 1 | rate) || true
+    row "THREADS (default)" "$n" "$s" "$rep" "${r:-}" FloorThreads "$ft"
+    fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
+    row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
+    r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
+      --coordinator SEQUENTIAL 2>/dev/null | tail -n 1 | rate) || true
+    row SEQUENTIAL "$n" "$s" "$rep" "${r:-}" FloorShared "$fs"
+  done
+done
+echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"
+awk -F, -v s="$sitting" '$1 == s && $2 != "FloorThreads" && $2 != "FloorShared" {
+    k = $2 " N=" $3; n[k]++; r[k, n[k]] = $9; v[k, n[k]] = $6; order[k] = NR }
+  END { for (k in n) { m = n[k]; for (i = 1; i <= m; i++) for (j = i + 1; j <= m; j++) {
+          if (r[k, j] < r[k, i]) { t = r[k, i]; r[k, i] = r[k, j]; r[k, j] = t }
+          if (v[k, j] < v[k, i]) { t = v[k, i]; v[k, i] = v[k, j]; v[k, j] = t } }
+        mid = int((m + 1) / 2); med = (m % 2) ? r[k, mid] : (r[k, mid] + r[k, mid + 1]) / 2
+        medv = (m % 2) ? v[k, mid] : (v[k, mid] + v[k, mid + 1]) / 2
+        printf "%-28s %9.1f steps/s  ratio %.2f\n", k, medv, med } }' "$out" | sort
+echo "bench-designs: rows appended to $out"
