@@ -82,10 +82,10 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "(default: ${DEFAULT-VALUE}; 0 = wait for ever).")
     long geometryTimeoutMs;
 
-    @Option(names = "--viewer-write-timeout-ms", defaultValue = "" + Settings.DEFAULT_VIEWER_WRITE_TIMEOUT_MS,
-            description = "Drop a viewer that does not take one write within this time; nothing else waits on it "
-                    + "(default: ${DEFAULT-VALUE}; 0 = never).")
-    long viewerWriteTimeoutMs;
+    @Option(names = "--write-timeout-ms", defaultValue = "" + Settings.DEFAULT_WRITE_TIMEOUT_MS,
+            description = "Drop a robot or viewer that does not take one write within this time, so no client "
+                    + "that stops reading holds the run (default: ${DEFAULT-VALUE}; 0 = never).")
+    long writeTimeoutMs;
 
     @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS",
             description = "When the Geometry process dies or hangs mid-run: IN_PROCESS (go on with in-process "
@@ -134,7 +134,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         double pace = effectiveSpeed(speed, steps);
         if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(pace >= 0) || Double.isInfinite(pace)
-                || stepTimeoutMs < 0 || geometryTimeoutMs < 0 || viewerWriteTimeoutMs < 0) {
+                || stepTimeoutMs < 0 || geometryTimeoutMs < 0 || writeTimeoutMs < 0) {
             System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be "
                     + ">= 0");
             return 2;
@@ -142,7 +142,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         Settings settings = Settings.builder()
                 .ports(InetAddress.getByName(bind), robotPort, viewerPort, geometryPort)
                 .handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
-                .geometryTimeoutMs(geometryTimeoutMs).viewerWriteTimeoutMs(viewerWriteTimeoutMs)
+                .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
                 .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
                 .maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
         InetAddress bindAddress = InetAddress.getByName(bind);

@@ -15,6 +15,8 @@ final class RunEvents implements RunListener {
     final CountDownLatch viewerDropped = new CountDownLatch(1);
     final CountDownLatch heldForViewer = new CountDownLatch(1);
     final List<String> droppedViewers = new CopyOnWriteArrayList<>();
+    final CountDownLatch robotLeft = new CountDownLatch(1);
+    final List<Departure> departures = new CopyOnWriteArrayList<>();
     /** The names of the threads the listener was called on. */
     final List<String> threads = new CopyOnWriteArrayList<>();
 
@@ -27,6 +29,8 @@ final class RunEvents implements RunListener {
     @Override
     public void robotLeft(Departure departure) {
         threads.add(Thread.currentThread().getName());
+        departures.add(departure);
+        robotLeft.countDown();
     }
 
     @Override

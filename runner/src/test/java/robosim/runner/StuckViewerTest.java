@@ -49,10 +49,10 @@ class StuckViewerTest {
         return s;
     }
 
-    private static ClientWorkerCoordinator environment(long viewerWriteTimeoutMs, RunEvents events) throws Exception {
+    private static ClientWorkerCoordinator environment(long writeTimeoutMs, RunEvents events) throws Exception {
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(new EnvironmentLoader().load(THREE),
                 Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                        .viewerWriteTimeoutMs(viewerWriteTimeoutMs).build());
+                        .writeTimeoutMs(writeTimeoutMs).build());
         env.listen(events);
         env.start();
         return env;

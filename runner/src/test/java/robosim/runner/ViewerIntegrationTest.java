@@ -24,7 +24,7 @@ class ViewerIntegrationTest {
     void aFrozenViewerNeitherStopsTheRobotsNorGrowsTheEnvironment() throws Exception {
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
                 .withViewers(2, 1)
-                .settings(s -> s.viewerWriteTimeoutMs(0))
+                .settings(s -> s.writeTimeoutMs(0))
                 .run(STEPS, false, BackAndForth::new);
         assertTrue(sim.summary.completed(), sim.summary.reason());
         assertEquals(STEPS, sim.summary.steps());

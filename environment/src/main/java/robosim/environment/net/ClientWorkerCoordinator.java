@@ -22,8 +22,10 @@ import robosim.environment.core.WorldSpec;
  * port's calls into events for the loop. Its threads, each named, none holding a lock across a socket
  * read or write, a sleep or a wait:
  * <ul>
- * <li>{@code simulation-loop} ({@link SimulationLoop}): the one owner of time; blocks only on its event
- *     queue, timed to the next deadline.</li>
+ * <li>{@code simulation-loop} ({@link SimulationLoop}): the one owner of time; blocks on its event
+ *     queue, timed to the next deadline, and in its writes to robots (bounded by the write watchdog).</li>
+ * <li>{@code write-watchdog} ({@link WriteWatchdog}): cuts off a robot that has not taken one of the
+ *     loop's writes within the write timeout; sleeps between looks.</li>
  * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry} ({@link Listeners}): block
  *     in accept; each socket gets a worker thread.</li>
  * <li>{@code robot-worker[name]} ({@link RobotClientWorker}), one per robot: the handshake, then blocks
@@ -77,6 +79,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private volatile boolean over;
     private volatile boolean began;
     private Thread loop;
+    /** Times the loop's writes to robots; null without a write timeout. */
+    private final WriteWatchdog writeWatchdog;
 
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
         this.spec = spec;
@@ -87,6 +91,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.events = new ArrayBlockingQueue<>(2 * robotNames.size() + 1024);
         this.cycle = new StepCycle(this, new RunListeners(runListeners));
         this.listeners = new Listeners(this);
+        this.writeWatchdog = settings.writeTimeoutMs() > 0 ? new WriteWatchdog(settings.writeTimeoutMs()) : null;
     }
 
     /** Adds a listener; call before {@link #start} to hear everything. */
@@ -113,6 +118,9 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
     void startLoop() {
+        if (writeWatchdog != null) {
+            writeWatchdog.start();
+        }
         loop = new Thread(new SimulationLoop(this, events, handshakes, cycle), "simulation-loop");
         loop.setDaemon(true);
         loop.start();
@@ -181,9 +189,25 @@ public final class ClientWorkerCoordinator implements Closeable {
     void loopEnded() {
         over = true;
         listeners.close();
+        if (writeWatchdog != null) {
+            writeWatchdog.stop();
+        }
         EventRejection.drain(events, cycle);
         endedLatch.countDown();
         startedLatch.countDown();
+    }
+
+    /** A robot the loop writes to: its writes are timed by the write watchdog (when there is a write timeout). */
+    void watchWrites(WriteWatchdog.Watched robot) {
+        if (writeWatchdog != null) {
+            writeWatchdog.watch(robot);
+        }
+    }
+
+    void forgetWrites(WriteWatchdog.Watched robot) {
+        if (writeWatchdog != null) {
+            writeWatchdog.forget(robot);
+        }
     }
 
     /** A viewer's worker has ended (any thread, also after the run): it is no longer one of the run's viewers. */

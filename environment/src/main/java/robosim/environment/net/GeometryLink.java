@@ -24,9 +24,14 @@ final class GeometryLink {
     private GeometryClientWorker attached;
     /** A Geometry process that has said hello and is being sent the world (or waits for the start). */
     private GeometryClientWorker joining;
-    /** The request in flight to {@link #attached}, or waiting for a Geometry process (WAIT), or null. */
+    /**
+     * The step being resolved (sent to {@link #attached}, or waiting for a Geometry process under WAIT)
+     * until {@link #resolved}: a loss before then resolves it again.
+     */
     private GeometryStepRequest outstanding;
     private long sentNanos;
+    /** When the world went to {@link #joining}, or 0. */
+    private long joinSentNanos;
     private int losses;
     private int attaches;
     private boolean started;
@@ -45,7 +50,7 @@ final class GeometryLink {
         }
         joining = worker;
         if (world != null) {
-            worker.sendWorld(world);
+            send(worker, world);
         }
         return null;
     }
@@ -61,8 +66,13 @@ final class GeometryLink {
         if (settings.inProcessGeometry()) {
             inProcess = new InProcessGeometry(startWorld);
         } else if (joining != null) {
-            joining.sendWorld(startWorld);
+            send(joining, startWorld);
         }
+    }
+
+    private void send(GeometryClientWorker worker, GeometryWorld w) {
+        joinSentNanos = System.nanoTime();
+        worker.sendWorld(w);
     }
 
     /** True once steps can be resolved (in-process, or a Geometry process has the world). */
@@ -72,14 +82,14 @@ final class GeometryLink {
 
     /**
      * A Geometry process has the world and takes over (a mid-run one replaces the one it follows, which
-     * is dropped). Returns the answer to a step that waited for it, if any resolves at once (never: it
-     * is sent and answers later), so the caller only needs to know the link is ready.
+     * is dropped); a step waiting for it (WAIT) is sent to it now.
      */
     void attached(GeometryClientWorker worker) {
         if (worker != joining) {
             return;
         }
         joining = null;
+        joinSentNanos = 0;
         if (attached != null) {
             LOG.warn("a new Geometry process attaches while one is attached: it replaces the old one");
             attached.drop();
@@ -111,7 +121,6 @@ final class GeometryLink {
             return null;
         }
         if (inProcess != null) {
-            outstanding = null;
             return inProcess.resolve(request);
         }
         return null; // WAIT: a Geometry process that attaches gets it
@@ -119,11 +128,12 @@ final class GeometryLink {
 
     /** An answer: the step's, if it comes from the process it was sent to; else null (stale). */
     GeometryStepResponse answer(GeometryClientWorker from, GeometryStepResponse answer) {
-        if (from != attached || outstanding == null) {
-            return null;
-        }
+        return from == attached && outstanding != null ? answer : null;
+    }
+
+    /** The outstanding step is complete (its answer passed the core's check): a loss no longer redoes it. */
+    void resolved() {
         outstanding = null;
-        return answer;
     }
 
     /**
@@ -135,7 +145,8 @@ final class GeometryLink {
         worker.drop();
         if (worker == joining) {
             joining = null;
-            LOG.warn("Geometry process left before the start ({}); waiting for another", why);
+            joinSentNanos = 0;
+            LOG.warn("a Geometry process was lost before it took over ({}); waiting for another", why);
             return null;
         }
         if (worker != attached) {
@@ -147,24 +158,25 @@ final class GeometryLink {
             LOG.warn("Geometry process lost in step {} ({}); going on with in-process geometry (same results); "
                     + "a new Geometry process may attach", step, why);
             inProcess = new InProcessGeometry(world);
-            if (outstanding != null) {
-                GeometryStepRequest retry = outstanding;
-                outstanding = null;
-                return inProcess.resolve(retry);
-            }
-            return null;
+            return outstanding == null ? null : inProcess.resolve(outstanding);
         }
         LOG.warn("Geometry process lost in step {} ({}); the step waits for a new Geometry process", step, why);
         return null;
     }
 
-    /** The attached Geometry process if it has taken longer than the Geometry timeout over a step, else null. */
+    /**
+     * A Geometry process that has taken longer than the Geometry timeout over a step's answer, or over
+     * taking the world it was sent; else null.
+     */
     GeometryClientWorker overdue(long now) {
-        long limit = settings.geometryTimeoutMs();
-        if (attached == null || outstanding == null || limit <= 0) {
+        long limit = settings.geometryTimeoutMs() * 1_000_000L;
+        if (limit <= 0) {
             return null;
         }
-        return now - sentNanos > limit * 1_000_000L ? attached : null;
+        if (attached != null && outstanding != null && now - sentNanos > limit) {
+            return attached;
+        }
+        return joining != null && joinSentNanos != 0 && now - joinSentNanos > limit ? joining : null;
     }
 
     /** Where collision and sonar are resolved now, for the status. */

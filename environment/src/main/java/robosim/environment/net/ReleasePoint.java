@@ -47,7 +47,7 @@ final class ReleasePoint {
             record.resumed(now);
             viewers.announce(new RunState(released, RunState.Phase.RUNNING));
         }
-        if (paced && control.paceDue(steps) - now > 0) {
+        if (!heldForViewer && paced && control.paceDue(steps) - now > 0) {
             return false;
         }
         if (!viewers.haveRoom()) {
@@ -57,14 +57,20 @@ final class ReleasePoint {
                         ViewerQueue.RECORDING_BACKLOG);
                 listener.heldForViewer(steps - 1);
             }
-            return false;
+            return false; // the viewer's worker posts when it has room: nothing to time meanwhile
         }
-        heldForViewer = false;
+        if (heldForViewer) {
+            heldForViewer = false;
+            control.restartPace(now, steps - 1); // no rush to catch up the time held
+        }
         return true;
     }
 
-    /** When step {@code steps - 1} may go out by the pace (ns), if it waits for the pace; else far in the future. */
+    /**
+     * When step {@code steps - 1} may go out by the pace (ns), if it waits for the pace; else far in the
+     * future (not paced, paused, or held for a viewer, which says itself when it has room).
+     */
     long paceDue(long steps) {
-        return paced && !control.holdWanted() ? control.paceDue(steps) : Long.MAX_VALUE;
+        return paced && !control.holdWanted() && !heldForViewer ? control.paceDue(steps) : Long.MAX_VALUE;
     }
 }

@@ -20,7 +20,7 @@ import robosim.protocol.StepResponse;
  * {@link RobotWriter} ({@code TWO_THREADS}); a request for a step this robot was not given, or with a
  * non-finite action, drops this robot alone.
  */
-final class RobotClientWorker extends ClientWorker implements RobotPeer {
+final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWatchdog.Watched {
     private volatile int index = -1;
     /** The last step number the loop has handed this robot (-1 before the first). */
     private volatile long given = -1;
@@ -120,8 +120,16 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer {
     @Override
     public void welcome(RobotWelcome welcome) throws IOException {
         stepMessages = welcome.stepMessages();
-        connection.write(welcome);
-        connection.flush();
+        writingSince = System.nanoTime();
+        try {
+            connection.write(welcome);
+            connection.flush();
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            writingSince = 0;
+        }
+        coordinator.watchWrites(this);
         if (coordinator.settings().design() == ClientWorkerCoordinator.Design.TWO_THREADS) {
             writer = new RobotWriter(this, connection, stepMessages, robotName);
         }
@@ -131,8 +139,15 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer {
     @Override
     public void begin(long firstStep) throws IOException {
         given = firstStep;
-        connection.writeStep(firstStep);
-        connection.flush();
+        writingSince = System.nanoTime();
+        try {
+            connection.writeStep(firstStep);
+            connection.flush();
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            writingSince = 0;
+        }
     }
 
     /**
@@ -149,7 +164,14 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer {
             w.send(response, nextStep, end);
             return;
         }
-        RobotWriter.writeResponse(connection, stepMessages, response, nextStep, end);
+        writingSince = System.nanoTime();
+        try {
+            RobotWriter.writeResponse(connection, stepMessages, response, nextStep, end);
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            writingSince = 0;
+        }
     }
 
     /**
@@ -163,7 +185,12 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer {
             if (w != null) {
                 w.sendEnd(end, midStep);
             } else {
-                RobotWriter.writeEnd(connection, end, midStep);
+                writingSince = System.nanoTime();
+                try {
+                    RobotWriter.writeEnd(connection, end, midStep);
+                } finally {
+                    writingSince = 0;
+                }
             }
         } catch (IOException | RuntimeException e) {
             coordinator.log().info("{}: could not send the end of the simulation: {}", name(),
@@ -178,11 +205,39 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer {
     }
 
     private volatile boolean exitedFlag;
+    /** When the loop's current write to this robot began, or 0. */
+    private volatile long writingSince;
+    /** Why the write watchdog cut this robot off, or null. */
+    private volatile String cutOff;
+
+    @Override
+    public long writingFor(long now) {
+        long since = writingSince;
+        return since == 0 ? 0 : now - since;
+    }
+
+    @Override
+    public void cutOff(String why) {
+        cutOff = why;
+        drop();
+    }
+
+    @Override
+    public String label() {
+        return name();
+    }
+
+    /** The failure of a write: the watchdog's reason if it cut this robot off, else {@code e} itself. */
+    private IOException cutOffOr(IOException e) {
+        String why = cutOff;
+        return why == null ? e : new IOException(why, e);
+    }
 
     @Override
     protected void exited(String why) {
         exitedFlag = true;
         firstRead.countDown();
+        coordinator.forgetWrites(this);
         if (index >= 0) {
             coordinator.post(new LoopEvent.RobotLeaves(this, why), () -> { });
         }

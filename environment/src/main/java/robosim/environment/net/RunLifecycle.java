@@ -1,6 +1,7 @@
 package robosim.environment.net;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;
@@ -34,6 +35,9 @@ abstract class RunLifecycle {
     final Viewers viewers;
     final ReleasePoint releasePoint;
     final RobotPeer[] robots;
+    /** Robots that left during the step being resolved or released: they go at its end. */
+    final boolean[] leaving;
+    private final List<PendingDeparture> deferred = new ArrayList<>();
     final long stepTimeoutNanos;
     StepRequest[] requests;
     StepRequest[] inFlight;
@@ -59,12 +63,13 @@ abstract class RunLifecycle {
         this.listener = listener;
         int n = spec.robots().size();
         this.robots = new RobotPeer[n];
+        this.leaving = new boolean[n];
         this.registered = new RobotProperties[n];
         this.requests = new StepRequest[n];
         this.inFlight = new StepRequest[n];
         this.geometry = new GeometryLink(settings);
         this.control = new RunControl(settings.speed(), spec.timeStepMs(), this::publishPhase);
-        this.viewers = new Viewers(settings.viewerWriteTimeoutMs(), listener);
+        this.viewers = new Viewers(settings.writeTimeoutMs(), listener);
         this.releasePoint = new ReleasePoint(control, viewers, record, listener, settings.speed());
         this.stepTimeoutNanos = settings.stepTimeoutMs() <= 0 ? Long.MAX_VALUE : settings.stepTimeoutMs() * 1_000_000L;
     }
@@ -184,8 +189,19 @@ abstract class RunLifecycle {
         }
     }
 
-    /** Robot i no longer takes part; it stands where it is. */
+    /**
+     * Robot i no longer takes part; it stands where it is. While a step is being resolved or released
+     * (its request is already in that step) it goes at the end of that step instead, so a departure
+     * changes no step half-way and the others' poses do not depend on when its socket closed.
+     */
     void depart(int i, String why) {
+        if (phase == Phase.RESOLVING || phase == Phase.RELEASING) {
+            if (!leaving[i]) {
+                leaving[i] = true;
+                deferred.add(new PendingDeparture(i, why));
+            }
+            return;
+        }
         core.depart(i);
         activeCount--;
         rosterChanged = true;
@@ -194,12 +210,29 @@ abstract class RunLifecycle {
             arrived--;
         }
         String safe = Printable.of(why);
-        Departure d = new Departure(spec.robots().get(i).name(), step,
-                safe);
+        Departure d = new Departure(spec.robots().get(i).name(), step, safe);
         record.departures.add(d);
         LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(), step,
                 safe);
         listener.robotLeft(d);
+    }
+
+    /** The departures held back during the step just released take effect now. */
+    void departDeferred() {
+        if (deferred.isEmpty()) {
+            return;
+        }
+        List<PendingDeparture> due = List.copyOf(deferred);
+        deferred.clear();
+        for (PendingDeparture p : due) {
+            leaving[p.robot()] = false;
+            if (core.present(p.robot())) {
+                depart(p.robot(), p.why());
+            }
+        }
+    }
+
+    private record PendingDeparture(int robot, String why) {
     }
 
     // ---- viewers and run control -----------------------------------------------------------------------
@@ -247,6 +280,10 @@ abstract class RunLifecycle {
             return;
         }
         boolean started = phase != Phase.WAITING;
+        if (started && core != null) {
+            phase = Phase.COLLECTING; // between steps: the held-back departures are on record
+            departDeferred();
+        }
         phase = Phase.ENDED;
         record.endReason = reason;
         record.completed = asPlanned;
@@ -264,7 +301,7 @@ abstract class RunLifecycle {
         geometry.end(end);
         control.settle(released, true);
         rosterChanged = true;
-        LOG.info("simulation over after {} steps: {}", step, reason);
+        LOG.info("simulation over after {} steps: {}", step, Printable.of(reason));
         listener.ended(record.summary(robots.length));
     }
 

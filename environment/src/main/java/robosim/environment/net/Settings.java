@@ -13,8 +13,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
     /** Default step and Geometry timeouts, ms. */
     public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
     public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
-    /** A viewer whose worker cannot finish one write in this long is dropped, ms. */
-    public static final long DEFAULT_VIEWER_WRITE_TIMEOUT_MS = 10_000;
+    /** A robot or viewer that cannot take one write in this long is dropped, ms. */
+    public static final long DEFAULT_WRITE_TIMEOUT_MS = 10_000;
 
     /** Listening: the address and the robot, viewer and Geometry ports (0: a free one). */
     public record Ports(InetAddress bind, int robot, int viewer, int geometry) {
@@ -22,9 +22,9 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
 
     /**
      * Waiting, ms (0 or less: never): for a client's hello; for a robot's request after its step went
-     * out; for Geometry's answer to a step; for a viewer to take one write.
+     * out; for Geometry's answer to a step; for a robot or viewer to take one write.
      */
-    public record Timeouts(int handshakeMs, long stepMs, long geometryMs, long viewerWriteMs) {
+    public record Timeouts(int handshakeMs, long stepMs, long geometryMs, long writeMs) {
     }
 
     /**
@@ -48,7 +48,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         b.handshakeTimeoutMs = timeouts.handshakeMs();
         b.stepTimeoutMs = timeouts.stepMs();
         b.geometryTimeoutMs = timeouts.geometryMs();
-        b.viewerWriteTimeoutMs = timeouts.viewerWriteMs();
+        b.writeTimeoutMs = timeouts.writeMs();
         b.design = shape.design();
         b.inProcessGeometry = shape.inProcessGeometry();
         b.onGeometryLoss = shape.onGeometryLoss();
@@ -87,8 +87,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         return timeouts.geometryMs();
     }
 
-    public long viewerWriteTimeoutMs() {
-        return timeouts.viewerWriteMs();
+    public long writeTimeoutMs() {
+        return timeouts.writeMs();
     }
 
     public ClientWorkerCoordinator.Design design() {
@@ -128,7 +128,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         private int handshakeTimeoutMs = 10_000;
         private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
         private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
-        private long viewerWriteTimeoutMs = DEFAULT_VIEWER_WRITE_TIMEOUT_MS;
+        private long writeTimeoutMs = DEFAULT_WRITE_TIMEOUT_MS;
         private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.THREADS;
         private boolean inProcessGeometry;
         private ClientWorkerCoordinator.GeometryLoss onGeometryLoss = ClientWorkerCoordinator.GeometryLoss.IN_PROCESS;
@@ -164,8 +164,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
             return this;
         }
 
-        public Builder viewerWriteTimeoutMs(long ms) {
-            this.viewerWriteTimeoutMs = ms;
+        public Builder writeTimeoutMs(long ms) {
+            this.writeTimeoutMs = ms;
             return this;
         }
 
@@ -206,7 +206,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
 
         public Settings build() {
             return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort),
-                    new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, viewerWriteTimeoutMs),
+                    new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery));
         }
     }

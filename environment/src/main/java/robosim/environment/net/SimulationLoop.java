@@ -17,8 +17,10 @@ import robosim.protocol.RobotProperties;
  * {@link GeometryLink} (the Geometry worker does the round trip and posts the answer back), completes
  * it, and at the release point (pause, step N, pace, a full recording viewer) sends every robot its
  * response and the next step number, offers the poses to the viewers and checks for the end. It
- * blocks only on its queue, with a timeout for the next deadline (pace, step timeout, Geometry timeout,
- * viewer write timeout); it holds no lock, ever. Its run-time decisions live in {@link StepCycle}.
+ * blocks on its queue, with a timeout for the next deadline (pace, step timeout, Geometry timeout,
+ * viewer write timeout), and in its own writes to robots, which the {@link WriteWatchdog} cuts short
+ * past the write timeout; it holds no lock, ever. Its decisions live in {@link StepCycle} and
+ * {@link RunLifecycle}.
  */
 final class SimulationLoop implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(SimulationLoop.class);
@@ -45,7 +47,6 @@ final class SimulationLoop implements Runnable {
         this.events = events;
         this.handshakes = handshakes;
         this.cycle = cycle;
-        int n = spec.robots().size();
         this.robots = cycle.robots();
         this.properties = cycle.registered();
         this.tickNanos = tick(settings);
@@ -54,7 +55,7 @@ final class SimulationLoop implements Runnable {
     /** How often deadlines are checked: a quarter of the shortest one, between 5 and 100 ms. */
     private static long tick(Settings s) {
         long shortest = Long.MAX_VALUE;
-        for (long ms : new long[] {s.stepTimeoutMs(), s.geometryTimeoutMs(), s.viewerWriteTimeoutMs()}) {
+        for (long ms : new long[] {s.stepTimeoutMs(), s.geometryTimeoutMs(), s.writeTimeoutMs()}) {
             if (ms > 0) {
                 shortest = Math.min(shortest, ms);
             }
@@ -70,8 +71,12 @@ final class SimulationLoop implements Runnable {
             while (!cycle.ended()) {
                 long now = System.nanoTime();
                 LoopEvent e = events.poll(Math.max(0, Math.min(nextTick, cycle.paceDue()) - now), TimeUnit.NANOSECONDS);
-                if (e != null) {
+                // everything queued by now is taken before any deadline is judged (a request or an answer
+                // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
+                for (int more = e == null ? 0 : events.size(); e != null; more--) {
                     handle(e);
+                    cycle.advance(System.nanoTime());
+                    e = more > 0 ? events.poll() : null;
                 }
                 now = System.nanoTime();
                 if (now - nextTick >= 0) {

@@ -109,6 +109,7 @@ final class StepCycle extends RunLifecycle {
             }
             return;
         }
+        geometry.resolved();
         Arrays.fill(inFlight, null);
         step++;
         record.stepsComputed = step;
@@ -117,6 +118,9 @@ final class StepCycle extends RunLifecycle {
 
     void geometryReady(GeometryClientWorker worker) {
         int before = geometry.attaches();
+        if (phase == Phase.RESOLVING) {
+            control.restartPace(System.nanoTime(), step); // a step that waited for Geometry: no rush after
+        }
         geometry.attached(worker);
         if (geometry.attaches() > before) {
             record.geometryAttaches = geometry.attaches();
@@ -164,6 +168,9 @@ final class StepCycle extends RunLifecycle {
             if (!core.present(i)) {
                 continue;
             }
+            if (leaving[i]) {
+                continue; // it left during this step: it goes at the step's end, and gets nothing more
+            }
             try {
                 robots[i].deliver(core.response(i), step, end);
             } catch (IOException e) {
@@ -185,6 +192,7 @@ final class StepCycle extends RunLifecycle {
             finish(end.reason(), true);
         } else {
             phase = Phase.COLLECTING;
+            departDeferred();
         }
     }
 
@@ -193,8 +201,8 @@ final class StepCycle extends RunLifecycle {
         viewers.dropStuck(now);
         GeometryClientWorker late = geometry.overdue(now);
         if (late != null) {
-            LOG.warn("Geometry process has not answered step {} within {} ms; dropping it", step,
-                    settings.geometryTimeoutMs());
+            LOG.warn("Geometry process has not answered within {} ms (step {}); dropping it",
+                    settings.geometryTimeoutMs(), step);
             geometryLost(late, "no answer within " + settings.geometryTimeoutMs() + " ms");
         }
         if (phase == Phase.COLLECTING && now - releasedNanos > stepTimeoutNanos) {

@@ -33,10 +33,6 @@ final class ViewerQueue {
         this.intervalNanos = everyStep || maxUpdatesPerSecond <= 0 ? 0 : 1_000_000_000L / maxUpdatesPerSecond;
     }
 
-    boolean recording() {
-        return everyStep;
-    }
-
     /** Loop thread: true if one more update fits now; if not, the queue will signal room once it has some. */
     synchronized boolean hasRoom() {
         if (closed || !everyStep || pending.size() < RECORDING_BACKLOG) {

@@ -4,7 +4,8 @@
  * other thread posts events to it. The threads of this package, each named:
  * <ul>
  * <li>{@code simulation-loop}: every step (gather, core, Geometry link, responses, viewers, pace, pause,
- *     deadlines, the end); blocks only on its event queue, timed to its next deadline.</li>
+ *     deadlines, the end); blocks on its event queue, timed to its next deadline, and in its writes to
+ *     robots, which the write watchdog bounds.</li>
  * <li>{@code robot-worker[name]} (one per robot): the handshake, then reads its robot's requests; blocks
  *     in its socket read.</li>
  * <li>{@code robot-writer[name]} ({@code TWO_THREADS}): writes what the loop queues for its robot.</li>
@@ -12,6 +13,8 @@
  * <li>{@code geometry-worker}: the Geometry connection - the world, each step's round trip, the end.</li>
  * <li>{@code viewer-worker[n]} (one per viewer): the snapshot, then its bounded, coalescing queue.</li>
  * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}: accept connections.</li>
+ * <li>{@code write-watchdog}: cuts off a robot that has not taken one of the loop's writes within the
+ *     write timeout (the loop writes responses itself, so it cannot time its own writes).</li>
  * </ul>
  * No lock is held across a socket read or write, a sleep or a wait.
  */
