@@ -281,6 +281,62 @@ class FaultsTest {
         InJvmSimulation.assertSamePoses(reference, sim);
     }
 
+    /** Runs three robots for 100 steps (geometry in-process, or from {@code geometry}); the last poses seen. */
+    private static PoseUpdate lastPoses(boolean inProcess, java.util.function.IntFunction<CompletableFuture<?>> geometry,
+            int[] losses) throws Exception {
+        try (ClientWorkerCoordinator env = start(settings(inProcess, 100))) {
+            int[] ports = env.ports();
+            List<PoseUpdate> seen = new CopyOnWriteArrayList<>();
+            ViewerClient viewer = record(ports[1], seen);
+            CompletableFuture<?> g = inProcess ? CompletableFuture.completedFuture(null) : geometry.apply(ports[2]);
+            List<CompletableFuture<String>> robots = List.of(robot("r1", new ArRobot(), ports[0]),
+                    robot("r2", new ArRobot(), ports[0]), robot("r3", new Scout(), ports[0]));
+            for (CompletableFuture<String> r : robots) {
+                assertEquals("completed 100 steps", r.get(LONG, TimeUnit.SECONDS));
+            }
+            g.get(LONG, TimeUnit.SECONDS);
+            assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
+            viewer.awaitEnd(LONG, TimeUnit.SECONDS);
+            losses[0] = env.summary().geometryLosses();
+            assertTrue(env.summary().completed(), env.summary().reason());
+            return seen.get(seen.size() - 1);
+        }
+    }
+
+    @Test
+    void aGeometryProcessThatAnswersNonsenseIsLostAndTheStepIsResolvedAgainInProcess() throws Exception {
+        int[] none = new int[1];
+        PoseUpdate reference = lastPoses(true, null, none);
+        int[] losses = new int[1];
+        PoseUpdate faulty = lastPoses(false, port -> CompletableFuture.runAsync(() -> {
+            // a Geometry process that answers truly until step 50, then names a robot that does not exist
+            try (ObjectConnection g = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 64)) {
+                g.write(new GeometryHello());
+                g.flush();
+                robosim.environment.core.InProcessGeometry engine = new robosim.environment.core.InProcessGeometry(
+                        g.read(robosim.protocol.GeometryWorld.class));
+                while (true) {
+                    robosim.protocol.GeometryStepRequest q = g.read(robosim.protocol.GeometryStepRequest.class);
+                    robosim.protocol.GeometryStepResponse a = engine.resolve(q);
+                    if (q.step() == 50) {
+                        a.setMotion(0, 0, 0, robosim.protocol.GeometryStepResponse.CONTACT_ROBOT, 99_999);
+                    }
+                    g.write(a);
+                    g.flush();
+                }
+            } catch (IOException e) {
+                // dropped by the Environment after its bad answer: expected
+            }
+        }), losses);
+        assertEquals(1, losses[0], "the lying Geometry process was lost once");
+        assertEquals(reference.step(), faulty.step());
+        for (int i = 0; i < reference.count(); i++) {
+            assertEquals(reference.xMm(i), faulty.xMm(i), 0, "the same poses, bit for bit");
+            assertEquals(reference.yMm(i), faulty.yMm(i), 0);
+            assertEquals(reference.headingDeg(i), faulty.headingDeg(i), 0);
+        }
+    }
+
     @Test
     void aViewerThatDisconnectsMidRunChangesNothing() throws Exception {
         InJvmSimulation reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))

@@ -55,16 +55,16 @@ abstract class ClientWorker implements Runnable {
             serve();
         } catch (SocketTimeoutException e) {
             why = "timed out waiting for the client";
-            LOG.warn("{} dropped: {}", name, why);
+            LOG.warn("{} dropped: {}", name, Printable.of(why));
         } catch (ProtocolException e) {
             why = e.getMessage();
-            LOG.warn("{} dropped: {}", name, why);
+            LOG.warn("{} dropped: {}", name, Printable.of(why));
         } catch (EOFException e) {
             why = "the client closed the connection";
-            LOG.debug("{}: {}", name, why);
+            LOG.debug("{}: {}", name, Printable.of(why));
         } catch (IOException e) {
             why = "connection lost: " + e.getMessage();
-            LOG.info("{}: {}", name, why);
+            LOG.info("{}: {}", name, Printable.of(why));
         } catch (InterruptedException e) {
             why = "interrupted";
             Thread.currentThread().interrupt();
