@@ -5,9 +5,11 @@
 # every step, Geometry as its own process, robots in one process), each repetition runs in turn:
 #   ../shared/bench/FloorThreads.java N S   the cheapest thread-per-client shape (a reader per socket,
 #                                           one loop thread writing every reply)
-#   headless.sh --coordinator THREADS       the default, the report's design
+#   headless.sh --coordinator THREADS       the default, the report's design, with and without
+#                                           --no-geometry (the Geometry process's round trip, which the
+#                                           floors do not have)
 #   ../shared/bench/FloorShared.java N S    the cheapest socket-per-robot shape (one thread each side)
-#   headless.sh --coordinator SEQUENTIAL    the original's loop
+#   headless.sh --coordinator SEQUENTIAL    the original's loop, with and without --no-geometry
 # and prints each run with its ratio to its own floor of the same repetition, then the medians. Writes
 # designs.csv (one row per run, appended) into a fresh temporary directory (printed), DIR with
 # --out DIR, or docs/perf/ with --write-docs. --quick: one repetition with a fifth of the steps.
@@ -47,7 +49,7 @@ row() { # variant robots steps rep rate floor floor_rate
   local ratio=""
   [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
   echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
-  printf '%-22s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
+  printf '%-26s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
 }
 
 for rep in $(seq "$reps"); do
@@ -56,14 +58,18 @@ for rep in $(seq "$reps"); do
     s=$(steps_for "$n")
     ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
     row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
-    r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
-      --coordinator THREADS 2>/dev/null | tail -n 1 | rate) || true
-    row "THREADS (default)" "$n" "$s" "$rep" "${r:-}" FloorThreads "$ft"
+    for g in "" --no-geometry; do
+      r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
+        --coordinator THREADS ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
+      row "THREADS${g:+ $g}" "$n" "$s" "$rep" "${r:-}" FloorThreads "$ft"
+    done
     fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
     row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
-    r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
-      --coordinator SEQUENTIAL 2>/dev/null | tail -n 1 | rate) || true
-    row SEQUENTIAL "$n" "$s" "$rep" "${r:-}" FloorShared "$fs"
+    for g in "" --no-geometry; do
+      r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
+        --coordinator SEQUENTIAL ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
+      row "SEQUENTIAL${g:+ $g}" "$n" "$s" "$rep" "${r:-}" FloorShared "$fs"
+    done
   done
 done
 echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.RobotHello;
@@ -15,6 +16,10 @@ sealed interface LoopEvent {
     /** A robot said hello (already checked against the file); the verdict is null (welcome sent) or a refusal. */
     record RobotJoins(RobotPeer worker, RobotHello hello, int index, CompletableFuture<String> verdict)
             implements LoopEvent {
+    }
+
+    /** Several events read at once, in order (the SEQUENTIAL stepper's requests): one wake-up for all. */
+    record Batch(List<LoopEvent> events) implements LoopEvent {
     }
 
     /** A robot's request for the step it was last given. */

@@ -76,6 +76,11 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         }
     }
 
+    /** SEQUENTIAL, the stepper: true if this robot has sent something not read yet (a read would not block). */
+    boolean hasInput() {
+        return connection.hasInput();
+    }
+
     /** SEQUENTIAL, the stepper: waits until this worker is done with the step-0 request. */
     void awaitFirstRead() throws InterruptedException {
         firstRead.await();

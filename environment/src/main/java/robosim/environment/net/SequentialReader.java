@@ -1,6 +1,7 @@
 package robosim.environment.net;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
 
 /**
@@ -39,7 +40,13 @@ final class SequentialReader implements Runnable {
         }
     }
 
+    /**
+     * Reads step after step. What it has read is handed over in one batch, just before a read that would
+     * block (and at the end of the step): the loop wakes once for all the requests that were already
+     * there, and always knows which robot the stepper waits for (the first without a request).
+     */
     private void readAll() throws InterruptedException {
+        List<LoopEvent> batch = new ArrayList<>();
         for (long k = 1; !coordinator.isOver(); k++) {
             boolean anyone = false;
             for (RobotClientWorker robot : robots) {
@@ -51,16 +58,26 @@ final class SequentialReader implements Runnable {
                     if (k == 1) {
                         robot.awaitFirstRead();
                     }
-                    coordinator.post(new LoopEvent.Request(robot, robot.readRequest(k)), () -> { });
+                    if (!batch.isEmpty() && !robot.hasInput()) {
+                        handOver(batch);
+                    }
+                    batch.add(new LoopEvent.Request(robot, robot.readRequest(k)));
                 } catch (IOException e) {
                     robot.drop();
-                    coordinator.post(new LoopEvent.RobotLeaves(robot, e.getMessage() == null ? e.toString()
-                            : e.getMessage()), () -> { });
+                    batch.add(new LoopEvent.RobotLeaves(robot, e.getMessage() == null ? e.toString() : e.getMessage()));
                 }
             }
+            handOver(batch);
             if (!anyone) {
                 return;
             }
+        }
+    }
+
+    private void handOver(List<LoopEvent> batch) {
+        if (!batch.isEmpty()) {
+            coordinator.post(new LoopEvent.Batch(List.copyOf(batch)), () -> { });
+            batch.clear();
         }
     }
 }

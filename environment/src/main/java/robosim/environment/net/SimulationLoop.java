@@ -105,6 +105,10 @@ final class SimulationLoop implements Runnable {
     private void handle(LoopEvent e) {
         if (e instanceof LoopEvent.Request r) {
             cycle.request(r.worker(), r.request());
+        } else if (e instanceof LoopEvent.Batch b) {
+            for (LoopEvent each : b.events()) {
+                handle(each);
+            }
         } else if (e instanceof LoopEvent.RobotJoins j) {
             j.verdict().complete(register(j));
             rosterChanged = true;
