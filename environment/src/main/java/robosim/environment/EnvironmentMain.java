@@ -15,6 +15,8 @@ import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.GeometryLoss;
+import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
@@ -68,7 +70,7 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "per robot, the simulation loop writes every response), SEQUENTIAL (the original's loop: one "
                     + "thread reads every robot in turn) or TWO_THREADS (a reading and a writing thread per robot). "
                     + "Measured against each other in docs/PERFORMANCE.md.")
-    ClientWorkerCoordinator.Design design;
+    CoordinatorDesign design;
 
     @Option(names = "--step-timeout-ms", defaultValue = ""
             + Settings.DEFAULT_STEP_TIMEOUT_MS,
@@ -91,7 +93,7 @@ public final class EnvironmentMain implements Callable<Integer> {
             description = "When the Geometry process dies or hangs mid-run: IN_PROCESS (go on with in-process "
                     + "geometry, same results; the default) or WAIT (hold the step until a new Geometry process "
                     + "attaches). Either way a new Geometry process may attach and takes over.")
-    ClientWorkerCoordinator.GeometryLoss onGeometryLoss;
+    GeometryLoss onGeometryLoss;
 
     @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
             description = "The control port for the Control Panel (default: ${DEFAULT-VALUE}; 0 = any free port; "

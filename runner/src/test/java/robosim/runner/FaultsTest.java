@@ -26,6 +26,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.GeometryLoss;
+import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
@@ -122,8 +124,8 @@ class FaultsTest {
     }
 
     @ParameterizedTest
-    @EnumSource(ClientWorkerCoordinator.Design.class)
-    void aRobotThatDisconnectsMidRunIsRemovedViewersAreToldAndTheOthersGoOn(ClientWorkerCoordinator.Design design)
+    @EnumSource(CoordinatorDesign.class)
+    void aRobotThatDisconnectsMidRunIsRemovedViewersAreToldAndTheOthersGoOn(CoordinatorDesign design)
             throws Exception {
         try (ClientWorkerCoordinator env = start(builder(true, 100).design(design).build())) {
             int[] ports = env.ports();
@@ -154,8 +156,8 @@ class FaultsTest {
     }
 
     @ParameterizedTest
-    @EnumSource(ClientWorkerCoordinator.Design.class)
-    void aRobotThatFallsSilentIsDroppedAfterTheStepTimeout(ClientWorkerCoordinator.Design design) throws Exception {
+    @EnumSource(CoordinatorDesign.class)
+    void aRobotThatFallsSilentIsDroppedAfterTheStepTimeout(CoordinatorDesign design) throws Exception {
         try (ClientWorkerCoordinator env = start(builder(true, 60).design(design).stepTimeoutMs(STEP_TIMEOUT_MS).build())) {
             int[] ports = env.ports();
             CompletableFuture<ObjectConnection> r1 = CompletableFuture.supplyAsync(() -> {
@@ -222,7 +224,7 @@ class FaultsTest {
     @Test
     void whenGeometryDiesTheRunGoesOnInProcessWithTheSamePosesAndANewGeometryTakesOver() throws Exception {
         // paced at 200x real time, so the run is still going when the new Geometry process attaches
-        geometryKilledAtStep50(400, s -> s.speed(200).onGeometryLoss(ClientWorkerCoordinator.GeometryLoss.IN_PROCESS),
+        geometryKilledAtStep50(400, s -> s.speed(200).onGeometryLoss(GeometryLoss.IN_PROCESS),
                 (env, ports, events) -> {
                     CompletableFuture<String> second = CompletableFuture.supplyAsync(() -> {
                         try {
@@ -238,7 +240,7 @@ class FaultsTest {
 
     @Test
     void withTheWaitSettingTheStepWaitsForANewGeometryProcess() throws Exception {
-        geometryKilledAtStep50(300, s -> s.onGeometryLoss(ClientWorkerCoordinator.GeometryLoss.WAIT),
+        geometryKilledAtStep50(300, s -> s.onGeometryLoss(GeometryLoss.WAIT),
                 (env, ports, events) -> new GeometryClient(new Socket(InetAddress.getLoopbackAddress(), ports[2]), 64)
                         .run());
     }

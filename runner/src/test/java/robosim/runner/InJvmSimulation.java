@@ -11,6 +11,7 @@ import robosim.api.RobotControl;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.RunListener;
 import robosim.environment.net.Settings;
@@ -41,7 +42,7 @@ final class InJvmSimulation {
     private java.util.function.BiConsumer<PoseUpdate, Integer> onUpdate = (u, port) -> { };
 
     /** The coordinator design; null: the Environment's default. */
-    private ClientWorkerCoordinator.Design design;
+    private CoordinatorDesign design;
     private final List<RunListener> listeners = new ArrayList<>();
 
     /** Adds a listener to the Environment of the next run. */
@@ -50,7 +51,7 @@ final class InJvmSimulation {
         return this;
     }
 
-    InJvmSimulation design(ClientWorkerCoordinator.Design d) {
+    InJvmSimulation design(CoordinatorDesign d) {
         this.design = d;
         return this;
     }

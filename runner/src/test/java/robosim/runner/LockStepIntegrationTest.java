@@ -8,7 +8,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.CoordinatorDesign;
 import robosim.examples.Wander;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.PoseUpdate;
@@ -56,7 +56,7 @@ class LockStepIntegrationTest {
         "THREADS, SHARED, false",
         "TWO_THREADS, SEND_RECEIVE, false",
     })
-    void everyDesignAndSettingGivesTheSamePosesAndMessages(ClientWorkerCoordinator.Design design,
+    void everyDesignAndSettingGivesTheSamePosesAndMessages(CoordinatorDesign design,
             InJvmSimulation.Exchange exchange, boolean stepMessages) throws Exception {
         InJvmSimulation variant = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
                 .design(design).exchange(exchange).stepMessages(stepMessages)
@@ -77,10 +77,10 @@ class LockStepIntegrationTest {
     void wanderingRobotsTakeTheSamePathsUnderEveryThreading() throws Exception {
         InJvmSimulation a = new InJvmSimulation(InJvmSimulation.env("maze.xml")).run(600, false, Wander::new);
         InJvmSimulation b = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
-                .design(ClientWorkerCoordinator.Design.THREADS).exchange(InJvmSimulation.Exchange.SHARED)
+                .design(CoordinatorDesign.THREADS).exchange(InJvmSimulation.Exchange.SHARED)
                 .stepMessages(false).run(600, false, Wander::new);
         InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
-                .design(ClientWorkerCoordinator.Design.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)
+                .design(CoordinatorDesign.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)
                 .run(600, false, Wander::new);
         InJvmSimulation.assertSamePoses(a, b);
         InJvmSimulation.assertSamePoses(a, c);

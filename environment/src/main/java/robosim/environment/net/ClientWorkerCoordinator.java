@@ -49,23 +49,6 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** How long {@link #stop} waits for the loop to end the run, ms. */
     private static final long STOP_WAIT_MS = 5_000;
 
-    /**
-     * How robots' requests are read and responses written, the report's coordinator designs:
-     * {@code THREADS} (the default, the paper's design): one thread per robot reads its requests, the
-     * loop writes every response; {@code SEQUENTIAL}, the original's loop: one {@code stepper} thread
-     * reads every robot's request in world order; {@code TWO_THREADS}: per robot one thread reads and one
-     * ({@code robot-writer[name]}) writes what the loop queues.
-     */
-    public enum Design { THREADS, SEQUENTIAL, TWO_THREADS }
-
-    /**
-     * What the Environment does when its Geometry process dies, hangs or answers nonsense mid-run:
-     * {@code IN_PROCESS} (the default) resolves that step, and every later one, with the same geometry
-     * library in-process (same results, bit for bit) until a new Geometry process attaches; {@code WAIT}
-     * holds the step until a new Geometry process attaches.
-     */
-    public enum GeometryLoss { IN_PROCESS, WAIT }
-
     private final WorldSpec spec;
     private final Settings settings;
     private final List<String> robotNames;
@@ -79,7 +62,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     private volatile boolean over;
     private volatile boolean began;
     private Thread loop;
-    /** Times the loop's writes to robots; null without a write timeout. */
+    /** Times the loop's writes to robots (does nothing without a write timeout). */
     private final WriteWatchdog writeWatchdog;
 
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
@@ -91,7 +74,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.events = new ArrayBlockingQueue<>(2 * robotNames.size() + 1024);
         this.cycle = new StepCycle(this, new RunListeners(runListeners));
         this.listeners = new Listeners(this);
-        this.writeWatchdog = settings.writeTimeoutMs() > 0 ? new WriteWatchdog(settings.writeTimeoutMs()) : null;
+        this.writeWatchdog = new WriteWatchdog(settings.writeTimeoutMs());
     }
 
     /** Adds a listener; call before {@link #start} to hear everything. */
@@ -118,9 +101,7 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
     void startLoop() {
-        if (writeWatchdog != null) {
-            writeWatchdog.start();
-        }
+        writeWatchdog.start();
         loop = new Thread(new SimulationLoop(this, events, handshakes, cycle), "simulation-loop");
         loop.setDaemon(true);
         loop.start();
@@ -189,25 +170,15 @@ public final class ClientWorkerCoordinator implements Closeable {
     void loopEnded() {
         over = true;
         listeners.close();
-        if (writeWatchdog != null) {
-            writeWatchdog.stop();
-        }
+        writeWatchdog.stop();
         EventRejection.drain(events, cycle);
         endedLatch.countDown();
         startedLatch.countDown();
     }
 
-    /** A robot the loop writes to: its writes are timed by the write watchdog (when there is a write timeout). */
-    void watchWrites(WriteWatchdog.Watched robot) {
-        if (writeWatchdog != null) {
-            writeWatchdog.watch(robot);
-        }
-    }
-
-    void forgetWrites(WriteWatchdog.Watched robot) {
-        if (writeWatchdog != null) {
-            writeWatchdog.forget(robot);
-        }
+    /** Times the loop's writes to each robot. */
+    WriteWatchdog writeWatchdog() {
+        return writeWatchdog;
     }
 
     /** A viewer's worker has ended (any thread, also after the run): it is no longer one of the run's viewers. */

@@ -11,7 +11,7 @@ import robosim.protocol.GeometryWorld;
  * Where the loop's steps are resolved, and what happens when that fails: the attached Geometry process
  * (through its {@link GeometryClientWorker}, asynchronously: the answer comes back as an event), or the
  * geometry library in-process ({@code --no-geometry}, or after a loss under
- * {@link ClientWorkerCoordinator.GeometryLoss#IN_PROCESS}). Owns the Geometry timeout and the failover.
+ * {@link GeometryLoss#IN_PROCESS}). Owns the Geometry timeout and the failover.
  * Loop thread only.
  */
 final class GeometryLink {
@@ -154,7 +154,7 @@ final class GeometryLink {
         }
         attached = null;
         losses++;
-        if (settings.onGeometryLoss() == ClientWorkerCoordinator.GeometryLoss.IN_PROCESS && world != null) {
+        if (settings.onGeometryLoss() == GeometryLoss.IN_PROCESS && world != null) {
             LOG.warn("Geometry process lost in step {} ({}); going on with in-process geometry (same results); "
                     + "a new Geometry process may attach", step, why);
             inProcess = new InProcessGeometry(world);

@@ -56,7 +56,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         rename("robot-worker[" + Printable.of(robotName) + "]");
         connection.setReadTimeoutMs(0);
         try {
-            if (coordinator.settings().design() == ClientWorkerCoordinator.Design.SEQUENTIAL) {
+            if (coordinator.settings().design() == CoordinatorDesign.SEQUENTIAL) {
                 try {
                     coordinator.post(new LoopEvent.Request(this, readRequest(0)), () -> { });
                 } finally {
@@ -134,8 +134,8 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         } finally {
             writingSince = 0;
         }
-        coordinator.watchWrites(this);
-        if (coordinator.settings().design() == ClientWorkerCoordinator.Design.TWO_THREADS) {
+        coordinator.writeWatchdog().watch(this);
+        if (coordinator.settings().design() == CoordinatorDesign.TWO_THREADS) {
             writer = new RobotWriter(this, connection, stepMessages, robotName);
         }
     }
@@ -242,7 +242,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     protected void exited(String why) {
         exitedFlag = true;
         firstRead.countDown();
-        coordinator.forgetWrites(this);
+        coordinator.writeWatchdog().forget(this);
         if (index >= 0) {
             coordinator.post(new LoopEvent.RobotLeaves(this, why), () -> { });
         }

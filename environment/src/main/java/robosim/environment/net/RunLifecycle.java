@@ -3,7 +3,6 @@ package robosim.environment.net;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.core.SimulationCore;
@@ -12,7 +11,6 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
-import robosim.protocol.WorldSnapshot;
 
 /**
  * The life of one run, as the {@link SimulationLoop} drives it: waiting for every client, starting (the
@@ -172,7 +170,7 @@ abstract class RunLifecycle {
                 depart(i, "could not send it the first step: " + e.getMessage());
             }
         }
-        if (settings.design() == ClientWorkerCoordinator.Design.SEQUENTIAL) {
+        if (settings.design() == CoordinatorDesign.SEQUENTIAL) {
             SequentialReader.start(coordinator, robots);
         }
         coordinator.started();
@@ -237,21 +235,6 @@ abstract class RunLifecycle {
 
     // ---- viewers and run control -----------------------------------------------------------------------
 
-    void addViewer(ViewerClientWorker viewer, CompletableFuture<WorldSnapshot> snapshot) {
-        viewers.add(viewer);
-        snapshot.complete(snapshot());
-        if (phase == Phase.ENDED) {
-            viewer.queue().end(endMessage());
-        } else {
-            viewer.queue().state(new RunState(released, phase == Phase.WAITING ? RunState.Phase.WAITING
-                    : control.holding() ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
-        }
-    }
-
-    /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
-    private WorldSnapshot snapshot() {
-        return core != null ? core.map().snapshot(step - 1) : StartSnapshot.of(spec, registered);
-    }
 
     /** True from the start until the end: a pause or step N acts on this run. */
     boolean running() {

@@ -33,8 +33,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
      * time, 0 as fast as possible); the step number after every response ({@code stepMessages}, else only
      * step 0 and robots count on); the object streams' reset interval.
      */
-    public record Shape(ClientWorkerCoordinator.Design design, boolean inProcessGeometry,
-            ClientWorkerCoordinator.GeometryLoss onGeometryLoss, long maxSteps, double speed, boolean stepMessages,
+    public record Shape(CoordinatorDesign design, boolean inProcessGeometry,
+            GeometryLoss onGeometryLoss, long maxSteps, double speed, boolean stepMessages,
             int resetEvery) {
     }
 
@@ -91,7 +91,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         return timeouts.writeMs();
     }
 
-    public ClientWorkerCoordinator.Design design() {
+    public CoordinatorDesign design() {
         return shape.design();
     }
 
@@ -99,7 +99,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         return shape.inProcessGeometry();
     }
 
-    public ClientWorkerCoordinator.GeometryLoss onGeometryLoss() {
+    public GeometryLoss onGeometryLoss() {
         return shape.onGeometryLoss();
     }
 
@@ -129,9 +129,9 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
         private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
         private long writeTimeoutMs = DEFAULT_WRITE_TIMEOUT_MS;
-        private ClientWorkerCoordinator.Design design = ClientWorkerCoordinator.Design.THREADS;
+        private CoordinatorDesign design = CoordinatorDesign.THREADS;
         private boolean inProcessGeometry;
-        private ClientWorkerCoordinator.GeometryLoss onGeometryLoss = ClientWorkerCoordinator.GeometryLoss.IN_PROCESS;
+        private GeometryLoss onGeometryLoss = GeometryLoss.IN_PROCESS;
         private long maxSteps;
         private double speed;
         private boolean stepMessages = true;
@@ -169,7 +169,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
             return this;
         }
 
-        public Builder design(ClientWorkerCoordinator.Design d) {
+        public Builder design(CoordinatorDesign d) {
             this.design = d;
             return this;
         }
@@ -179,7 +179,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
             return this;
         }
 
-        public Builder onGeometryLoss(ClientWorkerCoordinator.GeometryLoss policy) {
+        public Builder onGeometryLoss(GeometryLoss policy) {
             this.onGeometryLoss = policy;
             return this;
         }

@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import java.io.IOException;
 import java.util.Arrays;
+import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.GeometryStepRequest;
@@ -9,6 +10,8 @@ import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
+import robosim.protocol.WorldSnapshot;
+import robosim.protocol.RunState;
 
 /**
  * The step as the {@link SimulationLoop} runs it, one phase after another: collecting every robot's
@@ -206,7 +209,7 @@ final class StepCycle extends RunLifecycle {
             geometryLost(late, "no answer within " + settings.geometryTimeoutMs() + " ms");
         }
         if (phase == Phase.COLLECTING && now - releasedNanos > stepTimeoutNanos) {
-            boolean sequential = settings.design() == ClientWorkerCoordinator.Design.SEQUENTIAL;
+            boolean sequential = settings.design() == CoordinatorDesign.SEQUENTIAL;
             for (int i = 0; i < robots.length; i++) {
                 if (core.present(i) && requests[i] == null) {
                     robots[i].drop();
@@ -220,4 +223,20 @@ final class StepCycle extends RunLifecycle {
         }
     }
 
+    /** A viewer joins: it gets the snapshot it starts from, then the run's state (or its end). */
+    void addViewer(ViewerClientWorker viewer, CompletableFuture<WorldSnapshot> snapshot) {
+        viewers.add(viewer);
+        snapshot.complete(snapshot());
+        if (phase == Phase.ENDED) {
+            viewer.queue().end(endMessage());
+        } else {
+            viewer.queue().state(new RunState(released, phase == Phase.WAITING ? RunState.Phase.WAITING
+                    : control.holding() ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
+        }
+    }
+
+    /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
+    private WorldSnapshot snapshot() {
+        return core != null ? core.map().snapshot(step - 1) : StartSnapshot.of(spec, registered);
+    }
 }

@@ -37,19 +37,25 @@ final class WriteWatchdog {
 
     WriteWatchdog(long limitMs) {
         this.limitNanos = TimeUnit.MILLISECONDS.toNanos(limitMs);
-        this.periodMs = Math.max(5, Math.min(250, limitMs / 4));
+        this.periodMs = Math.max(5, Math.min(250, limitMs / 4)); // (limitMs <= 0: never started)
     }
 
+    /** Times {@code w}'s writes from now on (unless there is no write timeout). */
     void watch(Watched w) {
-        watched.add(w);
+        if (limitNanos > 0) {
+            watched.add(w);
+        }
     }
 
     void forget(Watched w) {
         watched.remove(w);
     }
 
-    /** Starts the {@code write-watchdog} thread. */
+    /** Starts the {@code write-watchdog} thread, if there is a write timeout. */
     void start() {
+        if (limitNanos <= 0) {
+            return;
+        }
         timer = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "write-watchdog");
             t.setDaemon(true);
