@@ -52,24 +52,25 @@ row() { # variant robots steps rep rate floor floor_rate
   printf '%-26s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
 }
 
+designs() { # design robots steps rep floor floor_rate: the design with and without the Geometry process
+  local g r
+  for g in "" --no-geometry; do
+    r=$(scripts/headless.sh --env "test-envs/bench-$2.xml" --steps "$3" --robots-in-one-process \
+      --coordinator "$1" ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
+    row "$1${g:+ $g}" "$2" "$3" "$4" "${r:-}" "$5" "$6"
+  done
+}
+
 for rep in $(seq "$reps"); do
   echo "== repetition $rep of $reps"
   for n in 10 100 1000; do
     s=$(steps_for "$n")
     ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
     row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
-    for g in "" --no-geometry; do
-      r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
-        --coordinator THREADS ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
-      row "THREADS${g:+ $g}" "$n" "$s" "$rep" "${r:-}" FloorThreads "$ft"
-    done
+    designs THREADS "$n" "$s" "$rep" FloorThreads "$ft"
     fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
     row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
-    for g in "" --no-geometry; do
-      r=$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process \
-        --coordinator SEQUENTIAL ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
-      row "SEQUENTIAL${g:+ $g}" "$n" "$s" "$rep" "${r:-}" FloorShared "$fs"
-    done
+    designs SEQUENTIAL "$n" "$s" "$rep" FloorShared "$fs"
   done
 done
 echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"
