@@ -129,24 +129,30 @@ robosim_classpath() {
 }
 
 # Runs main class $1 with the other arguments (less --classpath) on RoboSim's class path. With -h or
-# --help it adds the options this library takes to the main class's usage.
+# --help it prints the main class's usage and the options this library takes, and builds nothing: the
+# jars there are (even if older than the sources), or, before the first build, this script's own header.
 robosim_java() {
   local main=$1 a
   shift
   robosim_take_classpath "$@"
   robosim_check_java_opts
-  robosim_build_if_stale
   for a in "${ROBOSIM_ARGS[@]}"; do
     case $a in
       --) break ;;
       -h|--help)
-        # shellcheck disable=SC2086
-        java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
+        if [ -n "$(robosim_runner_jar)" ] && [ -d "$ROBOSIM_LIB" ]; then
+          # shellcheck disable=SC2086
+          java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
+        else
+          robosim_usage
+          echo "(RoboSim is not built yet: its full usage is printed once it is, e.g. after ./mvnw package -DskipTests.)"
+        fi
         echo "This script also takes --classpath PATH[:PATH...] (anywhere, or ROBOSIM_CLASSPATH): entries added"
         echo "after RoboSim's own jars to every process it starts. JVM options: ROBOSIM_JAVA_OPTS."
         exit 0 ;;
     esac
   done
+  robosim_build_if_stale
   # shellcheck disable=SC2086
   exec java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}"
 }

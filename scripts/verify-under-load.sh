@@ -41,8 +41,9 @@ for i in $(seq 1 "$runs"); do
   else
     result=RED
   fi
-  tests=$(grep -E '^\[(INFO|ERROR|WARNING)\] Tests run: [0-9]+, Failures' "$logs/run-$i.log" | grep -v ' -- in ' \
-    | awk -F'[ ,]+' '{ run += $4; failed += $6 + $8 } END { printf "%d tests, %d failed", run, failed }')
+  # (a run that never reached the tests, e.g. a compile error, has no such lines: 0 tests)
+  tests=$(awk -F'[ ,]+' '/^\[(INFO|ERROR|WARNING)\] Tests run: [0-9]+, Failures/ && !/ -- in / {
+      run += $4; failed += $6 + $8 } END { printf "%d tests, %d failed", run, failed }' "$logs/run-$i.log")
   echo "run $i/$runs: $result in $(( $(date +%s) - start )) s ($tests)"
   if [ "$result" = RED ]; then
     grep -E '<<< (FAILURE|ERROR)!' "$logs/run-$i.log" | head -n 10 || true

@@ -38,6 +38,10 @@ public final class GeometryMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (Connector.badPort(port) != null) {
+            System.err.println("geometry: " + host + ":" + port + ": " + Connector.badPort(port));
+            return 2;
+        }
         Socket socket;
         try {
             socket = Connector.connect(host, port, connectTimeoutS * 1000L, System.err::println);

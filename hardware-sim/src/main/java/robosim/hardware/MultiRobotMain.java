@@ -50,6 +50,10 @@ public final class MultiRobotMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (robosim.protocol.Connector.badPort(port) != null) {
+            System.err.println("robots: " + host + ":" + port + ": " + robosim.protocol.Connector.badPort(port));
+            return 2;
+        }
         List<String[]> parsed = new ArrayList<>();
         for (String r : robots) {
             String[] p = r.split(":", 3);

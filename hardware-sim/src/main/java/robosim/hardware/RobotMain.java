@@ -48,6 +48,10 @@ public final class RobotMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
+        if (robosim.protocol.Connector.badPort(port) != null) {
+            System.err.println("robot " + name + ": " + host + ":" + port + ": " + robosim.protocol.Connector.badPort(port));
+            return 2;
+        }
         RobotControl control;
         RobotType robotType;
         try {

@@ -21,6 +21,11 @@ public final class Connector {
     private Connector() {
     }
 
+    /** Null if {@code port} can be connected to, else what is wrong with it, for a one-line error. */
+    public static String badPort(int port) {
+        return port >= 1 && port <= 65535 ? null : "port " + port + " is not a TCP port (1..65535)";
+    }
+
     /** As {@link #connect(String, int, long, Consumer)}, silently. */
     public static Socket connect(String host, int port, long timeoutMs) throws IOException, InterruptedException {
         return connect(host, port, timeoutMs, line -> { });

@@ -66,14 +66,10 @@ final class ChildProcesses implements AutoCloseable {
     }
 
     /**
-     * Starts {@code mainClass} with {@code args}. Its stderr is copied to ours; its stdout lines go to
+     * Starts {@code mainClass} with {@code args}, and JVM options for this child before the common ones
+     * (which may override them). Its stderr is copied to ours; its stdout lines go to
      * {@code stdoutLines} (on a pipe thread), or to our stderr when null.
      */
-    Process start(String name, String mainClass, List<String> args, Consumer<String> stdoutLines) throws IOException {
-        return start(name, List.of(), mainClass, args, stdoutLines);
-    }
-
-    /** As above, with JVM options for this child before the common ones (which may override them). */
     Process start(String name, List<String> ownOptions, String mainClass, List<String> args,
             Consumer<String> stdoutLines) throws IOException {
         return startChild(name, ownOptions, mainClass, args, stdoutLines).process;

@@ -56,6 +56,20 @@ class ConnectionErrorsTest {
     }
 
     @Test
+    void aPortOutOfRangeIsOneLineAndExit2ForRobotsAndGeometry() {
+        Run robot = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "localhost", "99999");
+        assertEquals(2, robot.code(), robot.err().toString());
+        assertEquals(List.of("robot r1: localhost:99999: port 99999 is not a TCP port (1..65535)"), robot.err());
+        Run robots = run(new robosim.hardware.MultiRobotMain(), "--robot", "r1:ArRobot:robosim.examples.BackAndForth",
+                "localhost", "70000");
+        assertEquals(2, robots.code(), robots.err().toString());
+        assertEquals(List.of("robots: localhost:70000: port 70000 is not a TCP port (1..65535)"), robots.err());
+        Run geometry = run(new GeometryMain(), "localhost", "-1");
+        assertEquals(2, geometry.code(), geometry.err().toString());
+        assertEquals(List.of("geometry: localhost:-1: port -1 is not a TCP port (1..65535)"), geometry.err());
+    }
+
+    @Test
     void aRobotWaitingForAnEnvironmentThatNeverComesSaysWhatItWaitsForThenGivesUpInOneLine() throws Exception {
         try (Socket reserved = new Socket()) {
             reserved.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0)); // bound, never listening

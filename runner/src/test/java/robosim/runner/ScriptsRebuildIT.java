@@ -44,6 +44,12 @@ class ScriptsRebuildIT {
                 robosim_build_if_stale
                 echo ready
                 """);
+        script("scripts/javaprobe.sh", """
+                #!/usr/bin/env bash
+                # A probe that starts a Java main: scripts/javaprobe.sh [--help]
+                source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+                robosim_java robosim.NoSuchMain "$@"
+                """);
         script("mvnw", """
                 #!/usr/bin/env bash
                 echo "$*" >> mvnw.calls
@@ -119,6 +125,21 @@ class ScriptsRebuildIT {
         ScriptRun run = probe(Map.of());
         assertTrue(run.stderr().startsWith("RoboSim is not built yet: rebuilding"), run.stderr());
         assertEquals("ready\n", run.stdout());
+    }
+
+    @Test
+    void helpBuildsNothingEvenWhenTheBuildIsStaleOrMissing() throws Exception {
+        touch("alpha/src/main/java/A.java");
+        ScriptRun stale = ScriptRun.of(repo, Map.of(), logs, repo.resolve("scripts/javaprobe.sh").toString(), "--help");
+        assertFalse(stale.stderr().contains("rebuilding"), stale.stderr());
+        Files.delete(repo.resolve("runner/target/runner-0.1.jar"));
+        ScriptRun missing = ScriptRun.of(repo, Map.of(), logs, repo.resolve("scripts/javaprobe.sh").toString(), "-h");
+        assertEquals(0, missing.exit(), missing.stderr());
+        assertTrue(missing.stdout().startsWith("A probe that starts a Java main: scripts/javaprobe.sh [--help]"),
+                missing.stdout());
+        assertTrue(missing.stdout().contains("(RoboSim is not built yet: its full usage is printed once it is"),
+                missing.stdout());
+        assertFalse(Files.exists(repo.resolve("mvnw.calls")), "no build for --help");
     }
 
     @Test
