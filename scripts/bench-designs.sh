@@ -10,6 +10,10 @@
 #                                           floors do not have)
 #   ../shared/bench/FloorShared.java N S    the cheapest socket-per-robot shape (one thread each side)
 #   headless.sh --coordinator SEQUENTIAL    the original's loop, with and without --no-geometry
+# and, for each design, where the time goes: the Environment alone driven by the floors' client shape
+# (robosim.bench.BareRobots: one thread owns every robot's socket, no control code), with requests that
+# ask for nothing ("bare still": the coordination alone), with the workload's move and 16 sonars
+# in-process ("bare --no-geometry"), and with the Geometry process ("bare").
 # and prints each run with its ratio to its own floor of the same repetition, then the medians. Writes
 # designs.csv (one row per run, appended) into a fresh temporary directory (printed), DIR with
 # --out DIR, or docs/perf/ with --write-docs. --quick: one repetition with a fifth of the steps.
@@ -61,6 +65,33 @@ designs() { # design robots steps rep floor floor_rate: the design with and with
   done
 }
 
+bench_jar=$(ls bench-jmh/target/bench-jmh-*.jar 2>/dev/null | head -n 1 || true)
+[ -n "$bench_jar" ] || { ./mvnw -q -B -ntp package -DskipTests -pl protocol,bench-jmh >&2; bench_jar=$(ls bench-jmh/target/bench-jmh-*.jar | head -n 1); }
+bare() { # design robots steps rep floor floor_rate still|sonar --no-geometry|"": the Environment, bare clients
+  local log=$dir/bare-environment.log port gport gpid="" r variant
+  scripts/environment.sh --robot-port 0 --viewer-port 0 --geometry-port 0 --control-port -1 \
+    --coordinator "$1" --steps "$3" ${8:+"$8"} "test-envs/bench-$2.xml" > "$log" 2>&1 &
+  local epid=$!
+  for _ in $(seq 300); do grep -q '^listening' "$log" && break; sleep 0.1; done
+  port=$(grep -oE '^listening robots=[0-9]+' "$log" | cut -d= -f2)
+  if [ -z "$8" ]; then
+    gport=$(grep -oE 'geometry=[0-9]+' "$log" | cut -d= -f2)
+    scripts/geometry.sh 127.0.0.1 "$gport" > /dev/null 2>&1 & gpid=$!
+  fi
+  r=$(java -cp "bench-jmh/target/lib/*:$bench_jar" robosim.bench.BareRobots "$port" "$2" \
+    $([ "$7" = still ] && echo still) | floor_rate) || true
+  wait "$epid" || true
+  [ -z "$gpid" ] || wait "$gpid" || true
+  variant="$1 bare"
+  [ "$7" = still ] && variant="$variant still"
+  row "$variant${8:+ $8}" "$2" "$3" "$4" "${r:-}" "$5" "$6"
+}
+bare_rows() { # design robots steps rep floor floor_rate
+  bare "$@" still --no-geometry
+  bare "$@" sonar --no-geometry
+  bare "$@" sonar ""
+}
+
 for rep in $(seq "$reps"); do
   echo "== repetition $rep of $reps"
   for n in 10 100 1000; do
@@ -68,9 +99,11 @@ for rep in $(seq "$reps"); do
     ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
     row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
     designs THREADS "$n" "$s" "$rep" FloorThreads "$ft"
+    bare_rows THREADS "$n" "$s" "$rep" FloorThreads "$ft"
     fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
     row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
     designs SEQUENTIAL "$n" "$s" "$rep" FloorShared "$fs"
+    bare_rows SEQUENTIAL "$n" "$s" "$rep" FloorShared "$fs"
   done
 done
 echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"
