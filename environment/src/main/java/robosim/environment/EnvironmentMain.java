@@ -12,6 +12,7 @@ import picocli.CommandLine.Parameters;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
+import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
@@ -27,7 +28,8 @@ import robosim.protocol.Protocol;
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
  * {@code listening robots=P viewers=P geometry=P} when its ports are bound and, when the run ends,
  * {@code summary steps=... robots=... wall_s=... steps_per_s=... robot_steps_per_s=...} as its last
- * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option or port).
+ * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option or port), 3 the
+ * run completed but lost a robot (it left or was removed).
  */
 @Command(name = "environment.sh", mixinStandardHelpOptions = true,
         description = "Loads an environment file, waits for every robot it names (and a Geometry process), "
@@ -122,8 +124,19 @@ public final class EnvironmentMain implements Callable<Integer> {
     int resetEvery;
 
     @Option(names = "--handshake-timeout-ms", defaultValue = "10000",
-            description = "Drop a client that has not said hello within this time (default: ${DEFAULT-VALUE}).")
+            description = "Drop a client whose hello is not accepted within this time from its connection, "
+                    + "however slowly it sends (default: ${DEFAULT-VALUE}).")
     int handshakeTimeoutMs;
+
+    @Option(names = "--env-dir", paramLabel = "DIR",
+            description = "A directory whose environment files the control port's load may read; repeat for "
+                    + "more (default: the directory of FILE.xml). Nothing outside them is read.")
+    java.util.List<Path> envDirs;
+
+    @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,
+            description = "Connections each port holds at once beyond the robots the file names; one more is "
+                    + "closed at once (default: ${DEFAULT-VALUE}).")
+    int maxConnections;
 
     @Override
     public Integer call() throws Exception {
@@ -141,9 +154,13 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + ">= 0");
             return 2;
         }
+        if (maxConnections < 1) {
+            System.err.println("environment: --max-connections must be >= 1, got " + maxConnections);
+            return 2;
+        }
         Settings settings = Settings.builder()
                 .ports(InetAddress.getByName(bind), robotPort, viewerPort, geometryPort)
-                .handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
+                .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
                 .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
                 .maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
@@ -154,13 +171,20 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "token with --control-token or ROBOSIM_CONTROL_TOKEN (or turn the port off with --control-port -1)");
             return 2;
         }
+        EnvironmentDirectories directories;
+        try {
+            directories = envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs);
+        } catch (IOException e) {
+            System.err.println("environment: " + e.getMessage());
+            return 2;
+        }
         boolean stay = keepRunning != null ? keepRunning : steps == 0;
         EnvironmentHost host = new EnvironmentHost(file, spec, settings, stay, startPaused);
         ControlServer control = null;
         try {
             host.open();
             if (controlPort >= 0) {
-                control = new ControlServer(host, token);
+                control = new ControlServer(host, token, directories);
                 control.start(bindAddress, controlPort);
             }
         } catch (BindException e) {

@@ -27,6 +27,12 @@ public final class Limits {
     public static final int MAX_UTF_BYTES = 65_535;
     /** Bytes one message may occupy on the wire (checked by {@link ObjectConnection}). */
     public static final int MAX_MESSAGE_BYTES = 64 * 1024 * 1024;
+    /**
+     * Bytes a client may send before its hello is accepted (the stream header and the hello itself): a
+     * stranger gets this much of the Environment's attention, not {@link #MAX_MESSAGE_BYTES}. The largest
+     * legitimate hello, a robot with 64 sonars and 64 plug-in sensors, is under 8 KiB.
+     */
+    public static final int MAX_HELLO_BYTES = 16 * 1024;
 
     private Limits() {
     }

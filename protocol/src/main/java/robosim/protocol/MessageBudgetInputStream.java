@@ -10,12 +10,17 @@ import java.io.InputStream;
  * a little ahead, so the bound is approximate by at most one buffer.
  */
 final class MessageBudgetInputStream extends FilterInputStream {
-    private final long budget;
+    private volatile long budget;
     private long used;
 
     MessageBudgetInputStream(InputStream in, long budget) {
         super(in);
         this.budget = budget;
+    }
+
+    /** The budget of each message from now on (the reading thread, or before it reads). */
+    void budget(long bytes) {
+        budget = bytes;
     }
 
     void startMessage() {

@@ -147,6 +147,19 @@ public final class ObjectConnection implements Closeable {
         }
     }
 
+    /**
+     * The most bytes one message may take from now on (at most {@link Limits#MAX_MESSAGE_BYTES}, the
+     * default): a server lowers it to {@link Limits#MAX_HELLO_BYTES} until a client's hello is accepted.
+     * Called by the reading thread, or before anything is read.
+     */
+    public void limitMessageBytes(long bytes) {
+        if (bytes <= 0 || bytes > Limits.MAX_MESSAGE_BYTES) {
+            throw new IllegalArgumentException("message byte limit must be in [1, " + Limits.MAX_MESSAGE_BYTES
+                    + "], got " + bytes);
+        }
+        budget.budget(bytes);
+    }
+
     /** Sets the read timeout in milliseconds (0 = none). */
     public void setReadTimeoutMs(int ms) throws IOException {
         socket.setSoTimeout(ms);

@@ -31,7 +31,7 @@ import robosim.environment.core.WorldSpec;
                 + "as separate processes, runs the given number of steps, stops them all and prints a summary.")
 public final class HeadlessRunner implements Callable<Integer> {
     /** The exit code of a run that completed without some of its robots (each is named before the summary). */
-    static final int EXIT_ROBOTS_REMOVED = 3;
+    static final int EXIT_ROBOTS_REMOVED = robosim.environment.control.EnvironmentHost.EXIT_ROBOTS_REMOVED;
 
     @Option(names = "--env", required = true, paramLabel = "FILE", description = "The environment file.")
     Path env;

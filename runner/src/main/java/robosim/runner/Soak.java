@@ -350,9 +350,8 @@ public final class Soak implements Callable<Integer> {
         int problems = 0;
         for (int i = 0; i < robots; i++) {
             String line = ringLines.get("ring" + i);
-            boolean alive = i / per != killed;
             if (line == null) {
-                if (alive) {
+                if (ringAlive(i, per, killed)) {
                     ok &= check(false, "ring" + i + " (alive) reported nothing");
                 }
                 continue;
@@ -362,12 +361,17 @@ public final class Soak implements Callable<Integer> {
             if (!line.contains("problems=0")) {
                 ok &= check(false, line);
             }
-            int prev = (i + robots - 1) % robots;
-            if (alive && prev / per != killed) {
+            // who this robot listens to, as it says itself: a ring robot, or a robot that never sends
+            String from = f.get("from");
+            long received = Long.parseLong(f.get("received"));
+            int sender = from.startsWith("ring") ? Integer.parseInt(from.substring(4)) : -1;
+            if (sender < 0 && received != 0) {
+                ok &= check(false, "ring" + i + " received " + received + " messages from " + from + ", which sends none");
+            } else if (sender >= 0 && ringAlive(i, per, killed) && ringAlive(sender, per, killed)) {
                 pairs++;
-                delivered += Long.parseLong(f.get("received"));
-                if (Long.parseLong(f.get("received")) != steps) {
-                    ok &= check(false, "ring" + i + " received " + f.get("received") + " of " + steps + " messages");
+                delivered += received;
+                if (received != steps) {
+                    ok &= check(false, "ring" + i + " received " + received + " of " + steps + " messages from " + from);
                 }
             }
         }
@@ -384,6 +388,11 @@ public final class Soak implements Callable<Integer> {
         }
         System.out.println(ok ? "soak: PASS" : "soak: FAIL");
         return ok ? 0 : 1;
+    }
+
+    /** True if ring robot {@code i} was there to the end (its process was not the one killed). */
+    private static boolean ringAlive(int i, int per, int killed) {
+        return i / per != killed;
     }
 
     private static boolean check(boolean holds, String what) {

@@ -11,6 +11,7 @@ import java.util.concurrent.TimeUnit;
 import robosim.control.ControlClient;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
+import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.Settings;
@@ -38,7 +39,9 @@ final class ControlFixture implements AutoCloseable {
                 .resetEvery(64).speed(speed).build();
         host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
         host.open();
-        control = new ControlServer(host, token);
+        // load may read the tests' files and the bundled environments
+        control = new ControlServer(host, token, new EnvironmentDirectories(
+                List.of(file.toAbsolutePath().getParent(), InJvmSimulation.env("test.xml").getParent())));
         control.start(InetAddress.getLoopbackAddress(), 0);
         running = CompletableFuture.supplyAsync(() -> {
             try {

@@ -75,7 +75,7 @@ class ControlPortTest {
 
     @Test
     void loadingANewFileEndsTheRunningOneAndWaitsForTheNewRobots() throws Exception {
-        Path other = InJvmSimulation.env("test.xml").toAbsolutePath();
+        Path other = InJvmSimulation.env("test.xml").toRealPath();
         try (ControlFixture f = new ControlFixture(THREE, null); ControlClient c = f.client(null)) {
             List<CompletableFuture<String>> robots = f.robots();
             ok(c, "step 5");
@@ -111,7 +111,7 @@ class ControlPortTest {
             assertError(c, "step", "positive whole number");
             assertError(c, "step -4", "positive whole number");
             assertError(c, "step 1e99", "positive whole number");
-            assertError(c, "load /no/such/file.xml", "/no/such/file.xml");
+            assertError(c, "load /no/such/file.xml", "/no/such/file.xml: outside the environment directories");
             assertError(c, "load", "load needs a file");
             // bytes that are not text, and a line far over the limit: an error, then the connection closes
             try (Socket raw = new Socket(InetAddress.getLoopbackAddress(), f.control.port())) {

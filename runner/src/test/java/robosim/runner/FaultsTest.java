@@ -305,13 +305,18 @@ class FaultsTest {
         }
     }
 
-    @Test
-    void aGeometryProcessThatAnswersNonsenseIsLostAndTheStepIsResolvedAgainInProcess() throws Exception {
+    /** What a lying Geometry process answers at step 50. */
+    enum Forgery { ROBOT_INDEX_OUT_OF_RANGE, NAN_MOTION, LONGER_THAN_ASKED }
+
+    @ParameterizedTest
+    @EnumSource(Forgery.class)
+    void aGeometryProcessThatAnswersNonsenseIsLostAndTheStepIsResolvedAgainInProcess(Forgery forgery)
+            throws Exception {
         int[] none = new int[1];
         PoseUpdate reference = lastPoses(true, null, none);
         int[] losses = new int[1];
         PoseUpdate faulty = lastPoses(false, port -> CompletableFuture.runAsync(() -> {
-            // a Geometry process that answers truly until step 50, then names a robot that does not exist
+            // a Geometry process that answers truly until step 50, then lies
             try (ObjectConnection g = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 64)) {
                 g.write(new GeometryHello());
                 g.flush();
@@ -321,7 +326,12 @@ class FaultsTest {
                     robosim.protocol.GeometryStepRequest q = g.read(robosim.protocol.GeometryStepRequest.class);
                     robosim.protocol.GeometryStepResponse a = engine.resolve(q);
                     if (q.step() == 50) {
-                        a.setMotion(0, 0, 0, robosim.protocol.GeometryStepResponse.CONTACT_ROBOT, 99_999);
+                        switch (forgery) {
+                            case ROBOT_INDEX_OUT_OF_RANGE ->
+                                a.setMotion(0, 0, 0, robosim.protocol.GeometryStepResponse.CONTACT_ROBOT, 99_999);
+                            case NAN_MOTION -> a.setMotion(0, Double.NaN, 0, a.contactKind(0), a.contactIndex(0));
+                            case LONGER_THAN_ASKED -> a.setMotion(0, 1e9, 0, a.contactKind(0), a.contactIndex(0));
+                        }
                     }
                     g.write(a);
                     g.flush();

@@ -35,13 +35,17 @@ public final class EnvironmentLoader {
             .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
             .build();
 
+    /** The largest environment file, bytes (a 1000-robot world is about 100 KB). */
+    public static final int MAX_FILE_BYTES = 16 * 1024 * 1024;
+
     private final GeometryFactory jts = new GeometryFactory();
 
+    /** Loads and checks {@code file}: a regular file of at most {@link #MAX_FILE_BYTES}. */
     public WorldSpec load(Path file) throws EnvironmentFileException {
         String where = file.toString();
         EnvironmentFile xml;
         try {
-            xml = MAPPER.readValue(Files.readAllBytes(file), EnvironmentFile.class);
+            xml = MAPPER.readValue(read(file, where), EnvironmentFile.class);
         } catch (NoSuchFileException e) {
             throw new EnvironmentFileException(where + ": file not found");
         } catch (UnrecognizedPropertyException e) {
@@ -60,6 +64,27 @@ public final class EnvironmentLoader {
             throw new EnvironmentFileException(where + ": empty file");
         }
         return check(where, xml);
+    }
+
+    /** The bytes of a regular file no larger than the cap (a FIFO or a device is never opened). */
+    private static byte[] read(Path file, String where) throws IOException, EnvironmentFileException {
+        if (!Files.exists(file)) {
+            throw new NoSuchFileException(where);
+        }
+        if (!Files.isRegularFile(file)) {
+            throw new EnvironmentFileException(where + ": not a regular file");
+        }
+        byte[] bytes = new byte[0];
+        if (Files.size(file) <= MAX_FILE_BYTES) {
+            try (java.io.InputStream in = Files.newInputStream(file)) {
+                bytes = in.readNBytes(MAX_FILE_BYTES + 1); // (bounded again: it may have grown)
+            }
+        }
+        if (bytes.length > MAX_FILE_BYTES || Files.size(file) > MAX_FILE_BYTES) {
+            throw new EnvironmentFileException(where + ": larger than the " + MAX_FILE_BYTES
+                    + " bytes an environment file may have");
+        }
+        return bytes;
     }
 
     private static String at(JsonLocation location) {

@@ -1,6 +1,5 @@
 package robosim.environment.control;
 
-import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import io.netty.bootstrap.ServerBootstrap;
 import io.netty.channel.Channel;
@@ -16,56 +15,61 @@ import io.netty.handler.codec.LineBasedFrameDecoder;
 import io.netty.handler.codec.TooLongFrameException;
 import io.netty.handler.codec.string.StringDecoder;
 import io.netty.handler.codec.string.StringEncoder;
-import io.netty.handler.timeout.ReadTimeoutHandler;
+import io.netty.handler.timeout.IdleStateEvent;
+import io.netty.handler.timeout.IdleStateHandler;
 import java.io.Closeable;
 import java.io.IOException;
 import java.net.BindException;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
-import java.nio.file.Path;
-import java.security.MessageDigest;
+import java.util.ArrayDeque;
+import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.ThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import robosim.environment.config.EnvironmentFileException;
-import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.RunStatus;
 
 /**
- * The control port (netty): one request per line, one JSON object per line in reply
- * ({@code {"ok":true,...}} or {@code {"ok":false,"error":"..."}}). Requests: {@code token SECRET},
- * {@code status}, {@code start}, {@code stop}, {@code pause}, {@code resume}, {@code step N},
- * {@code load FILE}, {@code shutdown}. Requests that wait (step, pause, stop, load) run on one
- * {@code control} thread, in order, never on netty's I/O thread. A malformed request gets an error
- * reply; a line over {@link #MAX_LINE} bytes gets one and the connection is closed; the simulation
- * is never touched by a bad request. With a token set, every request before a correct
- * {@code token} line is refused.
+ * The control port (netty): one request per line, one JSON reply per line, always in the order of the
+ * connection's requests ({@link ControlRequests} says what each does). Requests that wait (step, pause,
+ * start, load) run on one {@code control} thread, the others on {@code control-quick}, never on netty's
+ * I/O thread ({@code control-io}); a connection has one request in hand at a time and at most
+ * {@link #MAX_PIPELINED} queued behind it. Bounded: {@link #MAX_LINE} bytes a line (a longer one gets an
+ * error and the connection is closed), {@link #MAX_CONNECTIONS} connections at once (one more is closed
+ * at once), a connection with nothing in hand that sends nothing for {@link #IDLE_MINUTES} minutes is
+ * closed. With a token set, every request before a correct {@code token} line is refused.
  */
 public final class ControlServer implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ControlServer.class);
     /** The longest request line, bytes. */
     public static final int MAX_LINE = 4096;
-    /** How long a waiting request (step N) may take before it answers anyway, s. */
-    private static final long WAIT_S = 600;
-    private static final ObjectMapper JSON = new ObjectMapper();
+    /** Connections the port holds at once. */
+    public static final int MAX_CONNECTIONS = 64;
+    /** Requests one connection may have queued behind the one in hand; one more closes it. */
+    public static final int MAX_PIPELINED = 32;
+    /** A connection with nothing in hand is closed after this long without a request, minutes. */
+    public static final int IDLE_MINUTES = 5;
 
-    private final EnvironmentHost host;
-    private final String token;
+    private final ControlRequests requests;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
             (java.util.concurrent.ThreadFactory) r -> named(r, "control-io"));
-    /** Requests that wait (step N, pause, start, load), one at a time, in arrival order. */
-    private final ExecutorService worker = Executors.newSingleThreadExecutor(r -> named(r, "control"));
+    /** Requests that wait, one at a time (at most one per connection is ever queued). */
+    private final ExecutorService worker = single("control");
     /** Requests that answer at once (status, resume, stop, shutdown), so a long step never holds them up. */
-    private final ExecutorService quick = Executors.newSingleThreadExecutor(r -> named(r, "control-quick"));
+    private final ExecutorService quick = single("control-quick");
+    private final AtomicInteger connections = new AtomicInteger();
     private Channel server;
 
-    /** @param token required before any other request, or null for none (loopback only) */
-    public ControlServer(EnvironmentHost host, String token) {
-        this.host = host;
-        this.token = token == null || token.isEmpty() ? null : token;
+    /**
+     * @param token required before any other request, or null for none (loopback only)
+     * @param directories where {@code load} may read files
+     */
+    public ControlServer(EnvironmentHost host, String token, EnvironmentDirectories directories) {
+        this.requests = new ControlRequests(host, token == null || token.isEmpty() ? null : token, directories);
     }
 
     private static Thread named(Runnable r, String name) {
@@ -74,13 +78,26 @@ public final class ControlServer implements Closeable {
         return t;
     }
 
+    private static ExecutorService single(String name) {
+        return new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS, new ArrayBlockingQueue<>(MAX_CONNECTIONS),
+                r -> named(r, name));
+    }
+
     /** Binds; a port in use is a {@link BindException} naming it. */
     public void start(InetAddress bind, int port) throws IOException {
         ServerBootstrap b = new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
                 .childHandler(new ChannelInitializer<SocketChannel>() {
                     @Override
                     protected void initChannel(SocketChannel ch) {
-                        ch.pipeline().addLast(new ReadTimeoutHandler(1, TimeUnit.HOURS),
+                        if (connections.incrementAndGet() > MAX_CONNECTIONS) {
+                            connections.decrementAndGet();
+                            LOG.warn("control port: {} closed at once: {} connections already", ch.remoteAddress(),
+                                    MAX_CONNECTIONS);
+                            ch.close();
+                            return;
+                        }
+                        ch.closeFuture().addListener(f -> connections.decrementAndGet());
+                        ch.pipeline().addLast(new IdleStateHandler(IDLE_MINUTES, 0, 0, TimeUnit.MINUTES),
                                 new LineBasedFrameDecoder(MAX_LINE, true, true),
                                 new StringDecoder(StandardCharsets.UTF_8), new StringEncoder(StandardCharsets.UTF_8),
                                 new Handler());
@@ -111,9 +128,12 @@ public final class ControlServer implements Closeable {
         quick.shutdownNow();
     }
 
-    /** One per connection: holds whether it has given the token. */
+    /** One per connection; its fields are touched on the I/O thread only. */
     private final class Handler extends SimpleChannelInboundHandler<String> {
-        private boolean authorised = token == null;
+        private final ControlRequests.Caller caller = requests.caller();
+        private final ArrayDeque<String> pending = new ArrayDeque<>();
+        /** A request of this connection is being handled; its reply goes out before the next starts. */
+        private boolean inHand;
 
         @Override
         protected void channelRead0(ChannelHandlerContext ctx, String line) {
@@ -121,114 +141,62 @@ public final class ControlServer implements Closeable {
             if (request.isEmpty()) {
                 return;
             }
-            String verb = request.split("\\s+", 2)[0].toLowerCase(java.util.Locale.ROOT);
-            if (!authorised && !verb.equals("token")) {
-                reply(ctx, error("a token is required first: token SECRET")); // on the I/O thread: no queueing
+            if (pending.size() >= MAX_PIPELINED) {
+                LOG.warn("control port: {} sent more than {} requests ahead of its replies; closing",
+                        ctx.channel().remoteAddress(), MAX_PIPELINED);
+                pending.clear();
+                ctx.close();
                 return;
             }
-            // one request at a time per connection: read no more until this one is answered
-            ctx.channel().config().setAutoRead(false);
-            boolean waits = verb.equals("step") || verb.equals("pause") || verb.equals("start") || verb.equals("load");
-            (waits ? worker : quick).execute(() -> {
-                reply(ctx, handle(request));
+            pending.add(request);
+            ctx.channel().config().setAutoRead(false); // read on once this connection's requests are answered
+            next(ctx);
+        }
+
+        /** Starts the next request of this connection, if none is in hand. */
+        private void next(ChannelHandlerContext ctx) {
+            while (!inHand && !pending.isEmpty()) {
+                String request = pending.poll();
+                String verb = ControlRequests.verb(request);
+                if (!caller.authorised && !verb.equals("token")) {
+                    reply(ctx, ControlRequests.error("a token is required first: token SECRET"));
+                    continue;
+                }
+                inHand = true;
+                try {
+                    (ControlRequests.waits(verb) ? worker : quick).execute(() -> {
+                        ObjectNode answer = requests.handle(caller, request);
+                        ctx.executor().execute(() -> answered(ctx, answer));
+                    });
+                } catch (RejectedExecutionException e) {
+                    inHand = false;
+                    reply(ctx, ControlRequests.error("the Environment is shutting down"));
+                }
+            }
+            if (!inHand && pending.isEmpty() && ctx.channel().isActive()) {
                 ctx.channel().config().setAutoRead(true);
-            });
-        }
-
-        private ObjectNode handle(String request) {
-            String[] w = request.split("\\s+", 2);
-            String verb = w[0].toLowerCase(java.util.Locale.ROOT);
-            String arg = w.length > 1 ? w[1].strip() : "";
-            try {
-                if (verb.equals("token")) {
-                    authorised = token == null || MessageDigest.isEqual(token.getBytes(StandardCharsets.UTF_8),
-                            arg.getBytes(StandardCharsets.UTF_8));
-                    if (!authorised) {
-                        LOG.warn("control port: a wrong token was given");
-                    }
-                    return authorised ? ok("authorised") : error("wrong token");
-                }
-                if (!authorised) {
-                    return error("a token is required first: token SECRET");
-                }
-                return switch (verb) {
-                    case "status" -> status();
-                    case "start" -> ok(host.start());
-                    case "resume" -> {
-                        host.current().resume();
-                        yield ok("running");
-                    }
-                    case "pause" -> {
-                        host.current().pause(WAIT_S, TimeUnit.SECONDS);
-                        yield ok("paused at step " + host.current().status().step());
-                    }
-                    case "step" -> {
-                        long n = steps(arg);
-                        long at = host.current().step(n, WAIT_S, TimeUnit.SECONDS);
-                        yield ok("paused at step " + at);
-                    }
-                    case "stop" -> ok(host.stop());
-                    case "load" -> {
-                        if (arg.isEmpty()) {
-                            yield error("load needs a file: load FILE");
-                        }
-                        yield ok(host.load(Path.of(arg)));
-                    }
-                    case "shutdown" -> ok(host.shutdown());
-                    default -> error("unknown request \"" + abbreviate(verb) + "\" (requests: status, start, stop, "
-                            + "pause, resume, step N, load FILE, shutdown, token SECRET)");
-                };
-            } catch (EnvironmentFileException e) {
-                return error(e.getMessage());
-            } catch (IllegalArgumentException e) {
-                return error(e.getMessage());
-            } catch (IOException e) {
-                return error(e.getMessage());
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return error("interrupted");
-            } catch (RuntimeException e) {
-                LOG.warn("control port: {} failed", abbreviate(request), e);
-                return error("failed: " + e);
             }
         }
 
-        private long steps(String arg) {
-            try {
-                long n = Long.parseLong(arg);
-                if (n < 1) {
-                    throw new NumberFormatException();
-                }
-                return n;
-            } catch (NumberFormatException e) {
-                throw new IllegalArgumentException("step needs a positive whole number of steps, got \""
-                        + abbreviate(arg) + "\"");
-            }
+        private void answered(ChannelHandlerContext ctx, ObjectNode answer) {
+            reply(ctx, answer);
+            inHand = false;
+            next(ctx);
         }
 
-        private ObjectNode status() {
-            RunStatus s = host.current().status();
-            ObjectNode n = ok(null);
-            n.put("state", s.state().name());
-            n.put("step", s.step());
-            n.put("steps_per_s", Math.round(s.stepsPerSecond() * 10) / 10.0);
-            n.put("file", String.valueOf(host.file()));
-            n.putPOJO("robots", s.robots());
-            n.putPOJO("connected", s.connected());
-            n.putPOJO("left", s.left());
-            n.put("geometry", s.geometry());
-            n.put("viewers", s.viewers());
-            if (!s.reason().isEmpty()) {
-                n.put("reason", s.reason());
+        @Override
+        public void userEventTriggered(ChannelHandlerContext ctx, Object event) {
+            if (event instanceof IdleStateEvent && !inHand && pending.isEmpty()) {
+                LOG.info("control port: {} idle for {} minutes; closing", ctx.channel().remoteAddress(), IDLE_MINUTES);
+                ctx.close();
             }
-            return n;
         }
 
         @Override
         public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
             if (cause instanceof TooLongFrameException) {
                 LOG.warn("control port: {} sent a line over {} bytes; closing", ctx.channel().remoteAddress(), MAX_LINE);
-                ctx.writeAndFlush(error("request longer than " + MAX_LINE + " bytes").toString() + "\n")
+                ctx.writeAndFlush(ControlRequests.error("request longer than " + MAX_LINE + " bytes").toString() + "\n")
                         .addListener(ChannelFutureListener.CLOSE);
             } else {
                 LOG.info("control port: {} dropped: {}", ctx.channel().remoteAddress(), cause.toString());
@@ -241,26 +209,5 @@ public final class ControlServer implements Closeable {
         if (ctx.channel().isActive()) {
             ctx.writeAndFlush(n.toString() + "\n");
         }
-    }
-
-    private static ObjectNode ok(String message) {
-        ObjectNode n = JSON.createObjectNode();
-        n.put("ok", true);
-        if (message != null) {
-            n.put("message", message);
-        }
-        return n;
-    }
-
-    private static ObjectNode error(String message) {
-        ObjectNode n = JSON.createObjectNode();
-        n.put("ok", false);
-        n.put("error", message);
-        return n;
-    }
-
-    private static String abbreviate(String s) {
-        String clean = s.replaceAll("\\p{Cntrl}", "?");
-        return clean.length() > 40 ? clean.substring(0, 40) + "..." : clean;
     }
 }

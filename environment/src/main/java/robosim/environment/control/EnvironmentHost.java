@@ -105,7 +105,7 @@ public final class EnvironmentHost {
                     continue; // a new file was loaded: its simulation is already waiting for clients
                 }
                 if (shutdown || !keepRunning) {
-                    return shutdown || summary.completed() ? 0 : 1;
+                    return shutdown ? 0 : exitCode(summary);
                 }
                 LOG.info("simulation over; waiting for start, load or shutdown on the control port");
                 while (current == c && !shutdown) {
@@ -117,6 +117,20 @@ public final class EnvironmentHost {
             }
         }
     }
+
+    /**
+     * The exit code of a run that ends the Environment: 0 when it completed with every robot, 1 when it
+     * did not complete, {@link #EXIT_ROBOTS_REMOVED} when it completed without one robot or more.
+     */
+    static int exitCode(RunSummary summary) {
+        if (!summary.completed()) {
+            return 1;
+        }
+        return summary.departures().isEmpty() ? 0 : EXIT_ROBOTS_REMOVED;
+    }
+
+    /** The exit code of a completed run that lost a robot (it left, or was removed). */
+    public static final int EXIT_ROBOTS_REMOVED = 3;
 
     /** {@code start}: resumes a paused simulation, or runs the current file again once it has ended. */
     public String start() throws IOException {

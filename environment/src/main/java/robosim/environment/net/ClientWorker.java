@@ -3,16 +3,19 @@ package robosim.environment.net;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.Socket;
-import java.net.SocketTimeoutException;
+import java.util.concurrent.Future;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.ProtocolException;
 
 /**
  * One connected client, served by one named thread. The base class owns the connection's life and
  * the one failure policy: a protocol fault or a broken connection drops this client with a logged
- * reason; the simulation goes on.
+ * reason; the simulation goes on. Until its hello is accepted ({@link #handshakeDone}) a client is a
+ * stranger: it may send at most {@link Limits#MAX_HELLO_BYTES} per message, and its connection is
+ * closed at the handshake deadline however slowly its bytes trickle in.
  */
 abstract class ClientWorker implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorker.class);
@@ -21,6 +24,9 @@ abstract class ClientWorker implements Runnable {
     private final Socket socket;
     private volatile String name;
     protected volatile ObjectConnection connection;
+    private Runnable release = () -> { };
+    private volatile Future<?> deadline;
+    private volatile String expired;
 
     ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name) {
         this.coordinator = coordinator;
@@ -33,6 +39,33 @@ abstract class ClientWorker implements Runnable {
         t.setDaemon(true);
         t.setUncaughtExceptionHandler((th, e) -> LOG.error("{} failed", th.getName(), e));
         t.start();
+    }
+
+    /**
+     * Accept thread, before {@link #start}: {@code release} runs once when the connection is closed (it
+     * frees the port's place); {@code handshakeDeadline} (or null for none) fires {@link #handshakeExpired}.
+     */
+    final void admit(Runnable onClose, Future<?> handshakeDeadline) {
+        this.release = onClose;
+        this.deadline = handshakeDeadline;
+    }
+
+    /** The {@code handshake-deadlines} thread: the hello was not accepted in time; the connection is closed. */
+    final void handshakeExpired(int ms) {
+        expired = "no hello accepted within " + ms + " ms";
+        drop();
+    }
+
+    /**
+     * This client's hello is accepted: no deadline from now on, and messages up to
+     * {@link Limits#MAX_MESSAGE_BYTES}.
+     */
+    protected final void handshakeDone() {
+        Future<?> d = deadline;
+        if (d != null) {
+            d.cancel(false);
+        }
+        connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
     }
 
     protected final String name() {
@@ -49,26 +82,24 @@ abstract class ClientWorker implements Runnable {
     public final void run() {
         String why = "finished";
         try {
-            socket.setSoTimeout(coordinator.settings().handshakeTimeoutMs());
             configure(socket);
-            connection = new ObjectConnection(socket, coordinator.settings().resetEvery());
+            ObjectConnection c = new ObjectConnection(socket, coordinator.settings().resetEvery());
+            c.limitMessageBytes(Limits.MAX_HELLO_BYTES);
+            connection = c;
+            if (dropped) {
+                c.close(); // dropped (the deadline) while the streams were being opened
+            }
             serve();
-        } catch (SocketTimeoutException e) {
-            why = "timed out waiting for the client";
-            LOG.warn("{} dropped: {}", name, Printable.of(why));
-        } catch (ProtocolException e) {
-            why = e.getMessage();
-            LOG.warn("{} dropped: {}", name, Printable.of(why));
-        } catch (EOFException e) {
-            why = "the client closed the connection";
-            LOG.debug("{}: {}", name, Printable.of(why));
         } catch (IOException e) {
-            why = "connection lost: " + e.getMessage();
-            LOG.info("{}: {}", name, Printable.of(why));
+            why = failed(e);
         } catch (InterruptedException e) {
             why = "interrupted";
             Thread.currentThread().interrupt();
         } finally {
+            Future<?> d = deadline;
+            if (d != null) {
+                d.cancel(false);
+            }
             if (connection != null) {
                 connection.close();
             } else {
@@ -78,8 +109,28 @@ abstract class ClientWorker implements Runnable {
                     // already gone
                 }
             }
+            release.run();
             exited(why);
         }
+    }
+
+    /** Why the session ended on {@code e}, logged: a protocol fault or a missed deadline is a warning. */
+    private String failed(IOException e) {
+        String why;
+        if (expired != null) {
+            why = expired;
+            LOG.warn("{} dropped: {}", name, why);
+        } else if (e instanceof ProtocolException) {
+            why = e.getMessage();
+            LOG.warn("{} dropped: {}", name, Printable.of(why));
+        } else if (e instanceof EOFException) {
+            why = "the client closed the connection";
+            LOG.debug("{}: {}", name, why);
+        } else {
+            why = "connection lost: " + e.getMessage();
+            LOG.info("{}: {}", name, Printable.of(why));
+        }
+        return why;
     }
 
     /**

@@ -27,7 +27,9 @@ import robosim.environment.core.WorldSpec;
  * <li>{@code write-watchdog} ({@link WriteWatchdog}): cuts off a robot that has not taken one of the
  *     loop's writes within the write timeout; sleeps between looks.</li>
  * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry} ({@link Listeners}): block
- *     in accept; each socket gets a worker thread.</li>
+ *     in accept; each socket gets a worker thread (one over the port's cap is closed at once).</li>
+ * <li>{@code handshake-deadlines} ({@link Listeners}): closes a connection whose hello is not accepted
+ *     within the handshake timeout; sleeps until the next deadline.</li>
  * <li>{@code robot-worker[name]} ({@link RobotClientWorker}), one per robot: the handshake, then blocks
  *     in its socket read and posts each request (in {@code SEQUENTIAL} only the step-0 one; it then
  *     waits for the end).</li>

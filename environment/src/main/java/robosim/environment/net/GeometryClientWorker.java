@@ -54,7 +54,7 @@ final class GeometryClientWorker extends ClientWorker {
             connection.flush();
             return;
         }
-        connection.setReadTimeoutMs(0);
+        handshakeDone();
         while (true) {
             Object task = tasks.take();
             if (task instanceof SendWorld w) {

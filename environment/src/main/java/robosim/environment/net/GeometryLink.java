@@ -40,10 +40,17 @@ final class GeometryLink {
         this.settings = settings;
     }
 
-    /** A Geometry process said hello: null if it may take over, else why not. */
+    /**
+     * A Geometry process said hello: null if it may take over, else why not. Geometry is attached once: a
+     * hello while one is live is refused (nobody takes over a live Geometry process's world); a new one
+     * is let in only once the live one is lost.
+     */
     String join(GeometryClientWorker worker) {
         if (settings.inProcessGeometry()) {
             return "this Environment resolves geometry in-process (--no-geometry)";
+        }
+        if (attached != null) {
+            return "a Geometry process is already attached (another may attach only once it is lost)";
         }
         if (joining != null) {
             return world == null ? "a Geometry process is already attached" : "another Geometry process is attaching";
@@ -81,8 +88,8 @@ final class GeometryLink {
     }
 
     /**
-     * A Geometry process has the world and takes over (a mid-run one replaces the one it follows, which
-     * is dropped); a step waiting for it (WAIT) is sent to it now.
+     * A Geometry process has the world and takes over (mid-run: after the one before it was lost); a step
+     * waiting for it (WAIT) is sent to it now.
      */
     void attached(GeometryClientWorker worker) {
         if (worker != joining) {
@@ -90,10 +97,6 @@ final class GeometryLink {
         }
         joining = null;
         joinSentNanos = 0;
-        if (attached != null) {
-            LOG.warn("a new Geometry process attaches while one is attached: it replaces the old one");
-            attached.drop();
-        }
         if (started) {
             attaches++;
             LOG.warn("a new Geometry process attached: geometry is resolved there again");

@@ -9,26 +9,53 @@ import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import java.util.function.Function;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The listening sockets (robots, viewers, and Geometry unless it is in-process) and their
- * {@code accept-*} threads, which hand each accepted socket to a new worker thread.
+ * The listening sockets (robots, viewers, and Geometry unless it is in-process), their {@code accept-*}
+ * threads, which hand each accepted socket to a new worker thread, and what bounds a stranger: a cap on
+ * the connections each port holds at once (one more is closed at once, with a logged line at most once
+ * a second per port), and a deadline on every handshake, kept by the {@code handshake-deadlines} thread,
+ * which closes a connection whose hello has not been accepted in time however slowly it trickles in.
  */
 final class Listeners {
     private static final Logger LOG = LoggerFactory.getLogger(Listeners.class);
 
+    /** One port's connections, against its cap. */
+    private static final class Held {
+        final String what;
+        final int cap;
+        final AtomicInteger open = new AtomicInteger();
+        /** accept thread only */
+        long lastLogNanos;
+        int refusedSinceLog;
+
+        Held(String what, int cap) {
+            this.what = what;
+            this.cap = cap;
+        }
+    }
+
     private final ClientWorkerCoordinator coordinator;
     private final List<ServerSocket> servers = new ArrayList<>();
     private final List<Thread> acceptors = new ArrayList<>();
+    private final ScheduledThreadPoolExecutor deadlines;
     private int serial;
 
     Listeners(ClientWorkerCoordinator coordinator) {
         this.coordinator = coordinator;
+        this.deadlines = new ScheduledThreadPoolExecutor(1, r -> {
+            Thread t = new Thread(r, "handshake-deadlines");
+            t.setDaemon(true);
+            return t;
+        });
+        deadlines.setRemoveOnCancelPolicy(true); // a handshake done in time leaves nothing queued
     }
 
     /** Binds every port; one in use is a {@link BindException} naming it (and nothing stays bound). */
@@ -62,22 +89,34 @@ final class Listeners {
 
     /** Starts one {@code accept-*} thread per listening socket. */
     void accept() {
-        acceptOn(servers.get(0), "accept-robots", s -> new RobotClientWorker(coordinator, s, ++serial));
-        acceptOn(servers.get(1), "accept-viewers", s -> new ViewerClientWorker(coordinator, s, ++serial));
+        int cap = coordinator.settings().maxConnections();
+        acceptOn(servers.get(0), new Held("robot", coordinator.spec().robots().size() + cap),
+                s -> new RobotClientWorker(coordinator, s, ++serial));
+        acceptOn(servers.get(1), new Held("viewer", cap), s -> new ViewerClientWorker(coordinator, s, ++serial));
         if (servers.size() > 2) {
-            acceptOn(servers.get(2), "accept-geometry", s -> new GeometryClientWorker(coordinator, s));
+            acceptOn(servers.get(2), new Held("geometry", cap), s -> new GeometryClientWorker(coordinator, s));
         }
     }
 
-    private void acceptOn(ServerSocket server, String threadName, Function<Socket, ClientWorker> factory) {
+    private void acceptOn(ServerSocket server, Held held, Function<Socket, ClientWorker> factory) {
+        String threadName = "accept-" + held.what + (held.what.equals("geometry") ? "" : "s");
         Thread t = new Thread(() -> {
             while (!server.isClosed()) {
                 try {
                     Socket s = server.getChannel().accept().socket();
+                    if (held.open.incrementAndGet() > held.cap) {
+                        held.open.decrementAndGet();
+                        s.close();
+                        refused(held);
+                        continue;
+                    }
                     ClientWorker w;
                     synchronized (this) {
                         w = factory.apply(s);
                     }
+                    int ms = coordinator.settings().handshakeTimeoutMs();
+                    w.admit(held.open::decrementAndGet, ms <= 0 ? null
+                            : deadlines.schedule(() -> w.handshakeExpired(ms), ms, TimeUnit.MILLISECONDS));
                     w.start();
                 } catch (IOException e) {
                     if (!server.isClosed()) {
@@ -92,6 +131,18 @@ final class Listeners {
         t.start();
     }
 
+    /** One connection over a port's cap was closed: says so at most once a second per port. */
+    private static void refused(Held held) {
+        held.refusedSinceLog++;
+        long now = System.nanoTime();
+        if (now - held.lastLogNanos >= TimeUnit.SECONDS.toNanos(1) || held.lastLogNanos == 0) {
+            LOG.warn("{} port: {} connection(s) closed at once: it holds at most {} at a time (--max-connections)",
+                    held.what, held.refusedSinceLog, held.cap);
+            held.refusedSinceLog = 0;
+            held.lastLogNanos = now;
+        }
+    }
+
     /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */
     int[] ports() {
         return new int[] {servers.get(0).getLocalPort(), servers.get(1).getLocalPort(),
@@ -99,6 +150,7 @@ final class Listeners {
     }
 
     void close() {
+        deadlines.shutdown(); // (handshakes still under way keep their deadlines)
         for (ServerSocket s : servers) {
             try {
                 s.close();

@@ -54,7 +54,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         }
         index = wanted;
         rename("robot-worker[" + Printable.of(robotName) + "]");
-        connection.setReadTimeoutMs(0);
+        handshakeDone();
         try {
             if (coordinator.settings().design() == CoordinatorDesign.SEQUENTIAL) {
                 try {

@@ -16,12 +16,19 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
     /** A robot or viewer that cannot take one write in this long is dropped, ms. */
     public static final long DEFAULT_WRITE_TIMEOUT_MS = 10_000;
 
-    /** Listening: the address and the robot, viewer and Geometry ports (0: a free one). */
-    public record Ports(InetAddress bind, int robot, int viewer, int geometry) {
+    /** Connections each port holds at once, beyond the robots the file names, by default. */
+    public static final int DEFAULT_MAX_CONNECTIONS = 64;
+
+    /**
+     * Listening: the address and the robot, viewer and Geometry ports (0: a free one), and how many
+     * connections each port holds at once beyond the robots the file names (one more is closed at once).
+     */
+    public record Ports(InetAddress bind, int robot, int viewer, int geometry, int maxConnections) {
     }
 
     /**
-     * Waiting, ms (0 or less: never): for a client's hello; for a robot's request after its step went
+     * Waiting, ms (0 or less: never): for a client's hello (a deadline from the connection, not a
+     * per-read timeout); for a robot's request after its step went
      * out; for Geometry's answer to a step; for a robot or viewer to take one write.
      */
     public record Timeouts(int handshakeMs, long stepMs, long geometryMs, long writeMs) {
@@ -45,6 +52,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
     public Builder toBuilder() {
         Builder b = new Builder();
         b.ports(bind(), robotPort(), viewerPort(), geometryPort());
+        b.maxConnections = ports.maxConnections();
         b.handshakeTimeoutMs = timeouts.handshakeMs();
         b.stepTimeoutMs = timeouts.stepMs();
         b.geometryTimeoutMs = timeouts.geometryMs();
@@ -73,6 +81,10 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
 
     public int geometryPort() {
         return ports.geometry();
+    }
+
+    public int maxConnections() {
+        return ports.maxConnections();
     }
 
     public int handshakeTimeoutMs() {
@@ -125,6 +137,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         private int robotPort = 8000;
         private int viewerPort = 3000;
         private int geometryPort = 10000;
+        private int maxConnections = DEFAULT_MAX_CONNECTIONS;
         private int handshakeTimeoutMs = 10_000;
         private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
         private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
@@ -146,6 +159,11 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
             this.robotPort = robot;
             this.viewerPort = viewer;
             this.geometryPort = geometry;
+            return this;
+        }
+
+        public Builder maxConnections(int perPort) {
+            this.maxConnections = perPort;
             return this;
         }
 
@@ -205,7 +223,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         }
 
         public Settings build() {
-            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort),
+            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery));
         }

@@ -54,7 +54,7 @@ final class ViewerClientWorker extends ClientWorker {
         coordinator.post(new LoopEvent.ViewerJoins(this, snapshot),
                 () -> snapshot.completeExceptionally(new IOException("the simulation is over")));
         WorldSnapshot first = awaitVerdict(snapshot);
-        connection.setReadTimeoutMs(0);
+        handshakeDone();
         send(first);
         while (true) {
             Object next = queue.take();

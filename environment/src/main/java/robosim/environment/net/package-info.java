@@ -12,7 +12,10 @@
  * <li>{@code stepper} ({@code SEQUENTIAL}): reads every robot's request in world order.</li>
  * <li>{@code geometry-worker}: the Geometry connection - the world, each step's round trip, the end.</li>
  * <li>{@code viewer-worker[n]} (one per viewer): the snapshot, then its bounded, coalescing queue.</li>
- * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}: accept connections.</li>
+ * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}: accept connections, and
+ *     close at once one over the port's cap.</li>
+ * <li>{@code handshake-deadlines}: closes a connection whose hello is not accepted within the handshake
+ *     timeout of its arrival, however slowly it sends.</li>
  * <li>{@code write-watchdog}: cuts off a robot that has not taken one of the loop's writes within the
  *     write timeout (the loop writes responses itself, so it cannot time its own writes).</li>
  * </ul>

@@ -12,13 +12,15 @@ public final class RobotSensors {
 
     /**
      * A configured sensor of {@code type}. Anything wrong (unknown type, not a RobotSensor, a bad or
-     * unknown attribute) is an IllegalArgumentException whose message says what.
+     * unknown attribute) is an IllegalArgumentException whose message says what. A class named in a file
+     * is checked to be a {@link RobotSensor} before it is initialised: a class that is not one never runs
+     * its static initialiser.
      */
     public static RobotSensor create(String type, Map<String, String> attributes) {
         Class<? extends RobotSensor> c = BUILT_IN.get(type);
         if (c == null) {
             try {
-                c = Class.forName(type).asSubclass(RobotSensor.class);
+                c = Class.forName(type, false, RobotSensors.class.getClassLoader()).asSubclass(RobotSensor.class);
             } catch (ClassNotFoundException e) {
                 throw new IllegalArgumentException("type \"" + type + "\" is neither laser, heat, bump nor a class on "
                         + "the class path");

@@ -2,6 +2,7 @@ package robosim.environment.sensors;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNotEquals;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
@@ -150,5 +151,13 @@ class SensorsTest {
         assertEquals("attribute rangeM value 'far' is not a number",
                 assertThrows(IllegalArgumentException.class, () -> RobotSensors.create("laser", Map.of("rangeM", "far")))
                         .getMessage());
+    }
+
+    @Test
+    void aClassThatIsNotASensorIsRefusedBeforeItIsInitialised() {
+        assertEquals("class robosim.environment.sensors.NotASensor does not extend " + RobotSensor.class.getName(),
+                assertThrows(IllegalArgumentException.class,
+                        () -> RobotSensors.create("robosim.environment.sensors.NotASensor", Map.of())).getMessage());
+        assertFalse(NotASensor.Initialised.notASensor, "its static initialiser ran");
     }
 }

@@ -1,0 +1,22 @@
+package robosim.environment.sensors;
+
+/**
+ * Named as a sensor type in a test: not a {@link RobotSensor}, with a static initialiser that must never
+ * run (it says so in {@link Initialised}, which can be read without initialising this class).
+ */
+public final class NotASensor {
+    static {
+        Initialised.notASensor = true;
+    }
+
+    private NotASensor() {
+    }
+
+    /** What ran its static initialiser. */
+    static final class Initialised {
+        static volatile boolean notASensor;
+
+        private Initialised() {
+        }
+    }
+}
