@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Fuzzes the message decoding for longer than the build does (the build fuzzes for 20 s):
+# Fuzzes the message decoding for longer than the build does (the build fuzzes for 10 s):
 #   scripts/fuzz.sh [DURATION] [--help]     e.g. scripts/fuzz.sh 30m   (default 5m)
 # Jazzer (coverage-guided, libFuzzer) feeds bytes through ObjectConnection exactly as every process
 # reads its peers. A finding fails the run and is saved as a regression input under
@@ -18,5 +18,11 @@ done
 duration=${duration:-5m}
 [[ "$duration" =~ ^[0-9]+[smh]?$ ]] || robosim_fail "DURATION must look like 90s, 30m or 2h, got $duration"
 cd "$ROBOSIM_HOME"
-exec ./mvnw -B -ntp -pl protocol test -Dfuzz.duration="$duration" -Dtest=MessageDecodingFuzzTest \
+case $duration in
+  *h) seconds=$(( ${duration%h} * 3600 )) ;;
+  *m) seconds=$(( ${duration%m} * 60 )) ;;
+  *) seconds=${duration%s} ;;
+esac
+echo "fuzz: fuzzing for $seconds s" >&2
+exec ./mvnw -B -ntp -pl protocol test -Dfuzz.seconds="$seconds" -Dtest=MessageDecodingFuzzTest \
   -Dsurefire.failIfNoSpecifiedTests=false
