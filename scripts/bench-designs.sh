@@ -14,22 +14,13 @@
 # (robosim.bench.BareRobots: one thread owns every robot's socket, no control code), with requests that
 # ask for nothing ("bare still": the coordination alone), with the workload's move and 16 sonars
 # in-process ("bare --no-geometry"), and with the Geometry process ("bare").
-# and prints each run with its ratio to its own floor of the same repetition, then the medians. Writes
+# It prints each run with its ratio to its own floor of the same repetition, then the medians. Writes
 # designs.csv (one row per run, appended) into a fresh temporary directory (printed), DIR with
 # --out DIR, or docs/perf/ with --write-docs. --quick: one repetition with a fifth of the steps.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-quick=0 args=()
-for a in "$@"; do
-  if [ "$a" = --quick ]; then quick=1; else args+=("$a"); fi
-done
-robosim_script_args docs/perf "${args[@]}"
-[ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, REPS, got ${ROBOSIM_ARGS[*]} (see --help)"
-[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
-reps=${ROBOSIM_ARGS[0]:-2}
-robosim_count REPS "$reps"
-[ "$quick" = 1 ] && reps=1
-cd "$ROBOSIM_HOME"
+robosim_bench_args 2 docs/perf "$@"
+reps=$BENCH_REPS quick=$BENCH_QUICK
 for f in ../shared/bench/FloorThreads.java ../shared/bench/FloorShared.java; do
   [ -f "$f" ] || robosim_fail "$f not found (the shared floors live beside the repository)"
 done

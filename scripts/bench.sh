@@ -18,17 +18,8 @@
 #   designs    bench-100.xml, robots in one process: each coordinator design and robot exchange threading
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-quick=0 args=()
-for a in "$@"; do
-  if [ "$a" = --quick ]; then quick=1; else args+=("$a"); fi
-done
-robosim_script_args docs/perf "${args[@]}"
-[ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, REPS, got ${ROBOSIM_ARGS[*]} (see --help)"
-[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
-reps=${ROBOSIM_ARGS[0]:-3}
-robosim_count REPS "$reps"
-[ "$quick" = 1 ] && reps=1
-cd "$ROBOSIM_HOME"
+robosim_bench_args 3 docs/perf "$@"
+reps=$BENCH_REPS quick=$BENCH_QUICK
 floor=../shared/bench/Floor.java
 [ -f "$floor" ] || robosim_fail "$floor not found (the shared floor lives beside the repository)"
 dir=$(robosim_out_dir)

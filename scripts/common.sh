@@ -196,6 +196,24 @@ robosim_count() {
   [[ "$2" =~ ^[1-9][0-9]*$ ]] || robosim_fail "$1 must be a whole number >= 1, got '$2'"
 }
 
+# A benchmark's arguments: [REPS] [--quick] and robosim_script_args' own (docs directory $2), nothing
+# after --. Sets BENCH_REPS (default $1; 1 with --quick) and BENCH_QUICK (0 or 1) and cds to the home.
+robosim_bench_args() {
+  local default=$1 docs=$2 a args=()
+  shift 2
+  BENCH_QUICK=0
+  for a in "$@"; do
+    if [ "$a" = --quick ]; then BENCH_QUICK=1; else args+=("$a"); fi
+  done
+  robosim_script_args "$docs" "${args[@]}"
+  [ ${#ROBOSIM_ARGS[@]} -le 1 ] || robosim_fail "takes at most one argument, REPS, got ${ROBOSIM_ARGS[*]} (see --help)"
+  [ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
+  BENCH_REPS=${ROBOSIM_ARGS[0]:-$default}
+  robosim_count REPS "$BENCH_REPS"
+  [ "$BENCH_QUICK" = 1 ] && BENCH_REPS=1
+  cd "$ROBOSIM_HOME"
+}
+
 # Where a benchmark or screenshot script writes (after robosim_script_args): the docs/ directory with
 # --write-docs, DIR with --out DIR (relative to where the user started the script), else a fresh
 # temporary directory. Makes it, says where on stderr, and prints it.
