@@ -23,6 +23,7 @@ import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
+import robosim.protocol.SharedSecret;
 
 /**
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
@@ -158,12 +159,6 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: --max-connections must be >= 1, got " + maxConnections);
             return 2;
         }
-        Settings settings = Settings.builder()
-                .ports(InetAddress.getByName(bind), robotPort, viewerPort, geometryPort)
-                .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
-                .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
-                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
-                .maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
         InetAddress bindAddress = InetAddress.getByName(bind);
         String token = controlToken != null ? controlToken : System.getenv("ROBOSIM_CONTROL_TOKEN");
         if (controlPort >= 0 && !bindAddress.isLoopbackAddress() && (token == null || token.isBlank())) {
@@ -171,6 +166,25 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "token with --control-token or ROBOSIM_CONTROL_TOKEN (or turn the port off with --control-port -1)");
             return 2;
         }
+        SharedSecret secret;
+        try {
+            secret = SharedSecret.fromEnvironment();
+        } catch (IOException e) {
+            System.err.println("environment: " + e.getMessage());
+            return 2;
+        }
+        if (secret == null && !bindAddress.isLoopbackAddress()) {
+            System.err.println("environment: --bind " + bind + " opens the robot, viewer and geometry ports beyond this "
+                    + "machine: give every process a shared secret with ROBOSIM_SECRET_FILE (scripts/make-keys.sh "
+                    + "makes one) or ROBOSIM_SECRET");
+            return 2;
+        }
+        Settings settings = Settings.builder()
+                .ports(bindAddress, robotPort, viewerPort, geometryPort).secret(secret)
+                .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
+                .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
+                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
+                .maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
         EnvironmentDirectories directories;
         try {
             directories = envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs);

@@ -72,6 +72,16 @@ class EnvironmentMainTest {
                 + "give a token with --control-token"), r.err());
     }
 
+    @Test
+    void listeningBeyondLoopbackNeedsASharedSecret() throws Exception {
+        Result r = run("../test-envs/test.xml", "--bind", "0.0.0.0", "--robot-port", "0", "--viewer-port", "0",
+                "--geometry-port", "0", "--control-port", "-1");
+        assertEquals(2, r.code());
+        assertEquals("environment: --bind 0.0.0.0 opens the robot, viewer and geometry ports beyond this machine: give "
+                + "every process a shared secret with ROBOSIM_SECRET_FILE (scripts/make-keys.sh makes one) or "
+                + "ROBOSIM_SECRET", r.err().strip());
+    }
+
     @org.junit.jupiter.params.ParameterizedTest
     @org.junit.jupiter.params.provider.CsvSource(delimiter = '|', value = {
         "f.xml|1.0", "f.xml --steps 500|0.0", "f.xml --speed 0|0.0", "f.xml --speed 2.5|2.5",

@@ -12,6 +12,7 @@ import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.GeometryWorld;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.ProtocolException;
+import robosim.protocol.SharedSecret;
 import robosim.protocol.SimulationEnd;
 
 /**
@@ -23,9 +24,16 @@ public final class GeometryClient {
 
     private final ObjectConnection connection;
     private long steps;
+    private final SharedSecret secret;
 
     public GeometryClient(Socket socket, int resetEvery) throws IOException {
+        this(socket, resetEvery, SharedSecret.fromEnvironment());
+    }
+
+    /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
+    public GeometryClient(Socket socket, int resetEvery, SharedSecret secret) throws IOException {
         this.connection = new ObjectConnection(socket, resetEvery);
+        this.secret = secret;
     }
 
     /** Runs the session; returns the Environment's reason for ending it. */
@@ -33,7 +41,7 @@ public final class GeometryClient {
         try (connection) {
             connection.write(new GeometryHello());
             connection.flush();
-            Externalizable first = connection.read(Externalizable.class);
+            Externalizable first = SharedSecret.answerChallenge(connection, secret, "geometry");
             if (first instanceof SimulationEnd end) {
                 return "refused by the Environment: " + end.reason();
             }

@@ -14,6 +14,7 @@ import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;
+import robosim.protocol.SharedSecret;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -51,10 +52,20 @@ public final class HardwareSimulator {
      * @throws ProtocolException naming the Environment's reason if the robot is refused
      */
     public void connect(Socket socket, int resetEvery) throws IOException {
+        connect(socket, resetEvery, SharedSecret.fromEnvironment());
+    }
+
+    /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
+    public void connect(Socket socket, int resetEvery, SharedSecret secret) throws IOException {
         connection = new ObjectConnection(socket, resetEvery);
         connection.write(new RobotHello(name, type.properties()));
         connection.flush();
-        welcome = connection.read(RobotWelcome.class);
+        Externalizable answer = SharedSecret.answerChallenge(connection, secret, "robot");
+        if (!(answer instanceof RobotWelcome w)) {
+            connection.close();
+            throw new ProtocolException("expected a RobotWelcome, got a " + answer.getClass().getSimpleName());
+        }
+        welcome = w;
         if (!welcome.isAccepted()) {
             connection.close();
             throw new ProtocolException("the Environment refused robot " + name + ": " + welcome.reason());

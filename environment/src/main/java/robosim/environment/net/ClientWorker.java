@@ -6,9 +6,12 @@ import java.net.Socket;
 import java.util.concurrent.Future;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.protocol.Challenge;
 import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
+import robosim.protocol.Proof;
 import robosim.protocol.ProtocolException;
+import robosim.protocol.SharedSecret;
 
 /**
  * One connected client, served by one named thread. The base class owns the connection's life and
@@ -66,6 +69,23 @@ abstract class ClientWorker implements Runnable {
             d.cancel(false);
         }
         connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
+    }
+
+    /**
+     * With a shared secret, right after the client's hello: challenges it (a fresh nonce) and reads its
+     * proof, still under the handshake deadline and the stranger's byte cap. Null if it proved the secret
+     * for {@code role} (or there is none), else the refusal.
+     */
+    protected final String authenticate(String role) throws IOException {
+        SharedSecret secret = coordinator.settings().secret();
+        if (secret == null) {
+            return null;
+        }
+        byte[] nonce = SharedSecret.nonce();
+        connection.write(new Challenge(nonce));
+        connection.flush();
+        Proof proof = connection.read(Proof.class);
+        return secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
     }
 
     protected final String name() {

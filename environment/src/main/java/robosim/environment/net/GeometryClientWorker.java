@@ -39,11 +39,12 @@ final class GeometryClientWorker extends ClientWorker {
     @Override
     protected void serve() throws IOException, InterruptedException {
         GeometryHello hello = connection.read(GeometryHello.class);
-        String refusal;
-        if (hello.protocolVersion() != Protocol.VERSION) {
+        String refusal = authenticate("geometry");
+        if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                     + Protocol.VERSION + ")";
-        } else {
+        }
+        if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
             coordinator.post(new LoopEvent.GeometryJoins(this, verdict), () -> verdict.complete("the simulation is over"));
             refusal = awaitVerdict(verdict);

@@ -39,7 +39,10 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         RobotHello hello = connection.read(RobotHello.class);
         int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
         robotName = String.valueOf(hello.name());
-        String refusal = coordinator.handshakes().check(hello, wanted);
+        String refusal = authenticate("robot");
+        if (refusal == null) {
+            refusal = coordinator.handshakes().check(hello, wanted);
+        }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
             coordinator.post(new LoopEvent.RobotJoins(this, hello, wanted, verdict),

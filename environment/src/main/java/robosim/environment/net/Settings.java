@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import java.net.InetAddress;
 import robosim.protocol.ObjectConnection;
+import robosim.protocol.SharedSecret;
 
 /**
  * How one simulation runs, in three named groups: where it listens ({@link Ports}), how long it waits
@@ -20,10 +21,12 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
     public static final int DEFAULT_MAX_CONNECTIONS = 64;
 
     /**
-     * Listening: the address and the robot, viewer and Geometry ports (0: a free one), and how many
-     * connections each port holds at once beyond the robots the file names (one more is closed at once).
+     * Listening: the address and the robot, viewer and Geometry ports (0: a free one), how many
+     * connections each port holds at once beyond the robots the file names (one more is closed at once),
+     * and the secret every client must prove in its handshake (null: none, loopback only).
      */
-    public record Ports(InetAddress bind, int robot, int viewer, int geometry, int maxConnections) {
+    public record Ports(InetAddress bind, int robot, int viewer, int geometry, int maxConnections,
+            SharedSecret secret) {
     }
 
     /**
@@ -53,6 +56,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         Builder b = new Builder();
         b.ports(bind(), robotPort(), viewerPort(), geometryPort());
         b.maxConnections = ports.maxConnections();
+        b.secret = ports.secret();
         b.handshakeTimeoutMs = timeouts.handshakeMs();
         b.stepTimeoutMs = timeouts.stepMs();
         b.geometryTimeoutMs = timeouts.geometryMs();
@@ -85,6 +89,10 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
 
     public int maxConnections() {
         return ports.maxConnections();
+    }
+
+    public SharedSecret secret() {
+        return ports.secret();
     }
 
     public int handshakeTimeoutMs() {
@@ -138,6 +146,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         private int viewerPort = 3000;
         private int geometryPort = 10000;
         private int maxConnections = DEFAULT_MAX_CONNECTIONS;
+        private SharedSecret secret;
         private int handshakeTimeoutMs = 10_000;
         private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
         private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
@@ -164,6 +173,12 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
 
         public Builder maxConnections(int perPort) {
             this.maxConnections = perPort;
+            return this;
+        }
+
+        /** The secret every client must prove in its handshake (null: none). */
+        public Builder secret(SharedSecret s) {
+            this.secret = s;
             return this;
         }
 
@@ -223,7 +238,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         }
 
         public Settings build() {
-            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections),
+            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, secret),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery));
         }

@@ -41,9 +41,12 @@ final class ViewerClientWorker extends ClientWorker {
     @Override
     protected void serve() throws IOException, InterruptedException {
         ViewerHello hello = connection.read(ViewerHello.class);
-        if (hello.protocolVersion() != Protocol.VERSION) {
-            String refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "
+        String refusal = authenticate("viewer");
+        if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
+            refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "
                     + "speaks " + Protocol.VERSION + ")";
+        }
+        if (refusal != null) {
             coordinator.log().warn("{} refused: {}", name(), refusal);
             connection.write(new SimulationEnd(-1, refusal));
             connection.flush();
