@@ -34,6 +34,7 @@ public final class ObjectConnection implements Closeable {
     private final ObjectOutputStream out;
     private final ObjectInputStream in;
     private final MessageBudgetInputStream budget;
+    private final BufferedInputStream buffered;
     private final ProtocolFilter filter;
     private final int resetEvery;
     private int sinceReset;
@@ -59,8 +60,8 @@ public final class ObjectConnection implements Closeable {
             socket.setTcpNoDelay(true);
             out = new ObjectOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER_BYTES));
             out.flush();
-            budget = new MessageBudgetInputStream(new BufferedInputStream(socket.getInputStream(), BUFFER_BYTES),
-                    Limits.MAX_MESSAGE_BYTES);
+            buffered = new BufferedInputStream(socket.getInputStream(), BUFFER_BYTES);
+            budget = new MessageBudgetInputStream(buffered, Limits.MAX_MESSAGE_BYTES);
             budget.startMessage();
             try {
                 in = new ObjectInputStream(budget);
@@ -158,6 +159,35 @@ public final class ObjectConnection implements Closeable {
                     + "], got " + bytes);
         }
         budget.budget(bytes);
+    }
+
+    /**
+     * For a connection on which nothing is expected now: waits up to {@code ms} for the peer to close it
+     * (end of stream or reset) and says whether it did. Reads nothing: a byte that comes instead is left
+     * for the next read. The reading thread only.
+     */
+    public boolean closedByPeerWithin(int ms) throws IOException {
+        if (hasInput()) {
+            return false;
+        }
+        int before = socket.getSoTimeout();
+        socket.setSoTimeout(Math.max(1, ms));
+        try {
+            buffered.mark(1);
+            if (buffered.read() < 0) {
+                return true;
+            }
+            buffered.reset();
+            return false;
+        } catch (java.net.SocketTimeoutException e) {
+            return false;
+        } catch (IOException e) {
+            return true;
+        } finally {
+            if (!socket.isClosed()) {
+                socket.setSoTimeout(before);
+            }
+        }
     }
 
     /** Sets the read timeout in milliseconds (0 = none). */

@@ -135,6 +135,46 @@ class AttacksTest {
     }
 
     @Test
+    void aGeometryProcessThatDiesWhileTheRunWaitsIsNoticedAndANewOneMayAttach() throws Exception {
+        RunEvents events = new RunEvents();
+        try (ClientWorkerCoordinator env = start(settings().maxSteps(10))) {
+            env.listen(events);
+            int[] ports = env.ports();
+            Socket first = socket(ports[2]);
+            Thread geometry = new Thread(() -> {
+                try {
+                    new robosim.geometry.GeometryClient(first, 64).run();
+                } catch (IOException e) {
+                    // closed under it below: expected
+                }
+            }, "test-geometry-1");
+            geometry.start();
+            List<ObjectConnection> robots = robots(ports[0]);
+            step(robots, 0, 5);
+            // the robots hold step 5 back, so the Environment waits and its Geometry worker is idle
+            first.close();
+            assertTrue(events.geometryLost.await(LONG_S, TimeUnit.SECONDS), "the idle worker noticed the loss");
+            java.util.concurrent.CompletableFuture<String> second = java.util.concurrent.CompletableFuture.supplyAsync(() -> {
+                try {
+                    return new robosim.geometry.GeometryClient(socket(ports[2]), 64).run();
+                } catch (IOException e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            assertTrue(events.geometryAttached.await(LONG_S, TimeUnit.SECONDS), "a new Geometry process attached");
+            step(robots, 5, 10);
+            assertTrue(env.awaitEnd(LONG_S, TimeUnit.SECONDS));
+            assertEquals(1, env.summary().geometryLosses());
+            assertEquals(1, env.summary().geometryAttaches());
+            String secondEnd = second.get(LONG_S, TimeUnit.SECONDS);
+            assertFalse(secondEnd.startsWith("refused"), "the new one served to the end: " + secondEnd);
+            for (ObjectConnection r : robots) {
+                r.close();
+            }
+        }
+    }
+
+    @Test
     void aHandshakeTrickledInIsDroppedAtTheDeadline() throws Exception {
         try (ClientWorkerCoordinator env = start(settings().handshakeTimeoutMs(1000))) {
             try (Socket s = socket(env.ports()[0])) {
@@ -187,7 +227,9 @@ class AttacksTest {
 
     @Test
     void connectionsOverThePortsCapAreClosedAtOnceAndTheRunStillGoesThrough() throws Exception {
-        try (ClientWorkerCoordinator env = start(settings().maxConnections(4).inProcessGeometry(true).maxSteps(5))) {
+        // a handshake deadline far beyond the test's wait: only the cap can close the fifth connection in time
+        try (ClientWorkerCoordinator env = start(settings().maxConnections(4).inProcessGeometry(true).maxSteps(5)
+                .handshakeTimeoutMs(10 * LONG_S * 1000))) {
             int[] ports = env.ports();
             List<Socket> silent = new ArrayList<>();
             for (int i = 0; i < 4; i++) {

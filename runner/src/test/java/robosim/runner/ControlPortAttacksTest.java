@@ -126,4 +126,17 @@ class ControlPortAttacksTest {
             assertTrue(served, "served again once the held connections closed");
         }
     }
+
+    @Test
+    void withATokenSetAConnectionThatDoesNotGiveItIsClosed(@TempDir Path dir) throws Exception {
+        try (ControlFixture f = new ControlFixture(three(dir), "a token for this test");
+                Socket silent = new Socket(InetAddress.getLoopbackAddress(), f.control.port())) {
+            silent.setSoTimeout(ControlFixture.TIMEOUT_MS);
+            assertEquals(-1, silent.getInputStream().read(), "closed " + ControlServer.TOKEN_DEADLINE_S
+                    + " s after connecting without the token");
+            try (ControlClient c = f.client("a token for this test")) {
+                assertTrue(c.request("status").path("ok").asBoolean(), "one that gives it is served");
+            }
+        }
+    }
 }

@@ -391,7 +391,7 @@ class FaultsTest {
     })
     void badInputIsRefusedAndTheSimulationRunsOn(String port, Bad bad) throws Exception {
         Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(false).maxSteps(30)
-                .resetEvery(64).handshakeTimeoutMs(1500).build();
+                .resetEvery(64).handshakeTimeoutMs(5000).build();
         try (ClientWorkerCoordinator env = start(s)) {
             int[] ports = env.ports();
             int p = switch (port) {

@@ -37,11 +37,13 @@ import org.slf4j.LoggerFactory;
  * The control port (netty): one request per line, one JSON reply per line, always in the order of the
  * connection's requests ({@link ControlRequests} says what each does). Requests that wait (step, pause,
  * start, load) run on one {@code control} thread, the others on {@code control-quick}, never on netty's
- * I/O thread ({@code control-io}); a connection has one request in hand at a time and at most
- * {@link #MAX_PIPELINED} queued behind it. Bounded: {@link #MAX_LINE} bytes a line (a longer one gets an
+ * I/O thread ({@code control-io}); a connection has one request in hand at a time, the next starts once
+ * its reply has left, and at most {@link #MAX_PIPELINED} wait behind it; nothing more is read from a
+ * client that does not take its replies. Bounded: {@link #MAX_LINE} bytes a line (a longer one gets an
  * error and the connection is closed), {@link #MAX_CONNECTIONS} connections at once (one more is closed
- * at once), a connection with nothing in hand that sends nothing for {@link #IDLE_MINUTES} minutes is
- * closed. With a token set, every request before a correct {@code token} line is refused.
+ * at once), a connection with nothing in hand that sends no whole request for {@link #IDLE_MINUTES}
+ * minutes is closed. With a token set, every request before a correct {@code token} line is refused,
+ * and a connection that has not given it within {@link #TOKEN_DEADLINE_S} seconds is closed.
  */
 public final class ControlServer implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ControlServer.class);
@@ -51,8 +53,10 @@ public final class ControlServer implements Closeable {
     public static final int MAX_CONNECTIONS = 64;
     /** Requests one connection may have queued behind the one in hand; one more closes it. */
     public static final int MAX_PIPELINED = 32;
-    /** A connection with nothing in hand is closed after this long without a request, minutes. */
+    /** A connection with nothing in hand is closed after this long without a whole request, minutes. */
     public static final int IDLE_MINUTES = 5;
+    /** With a token set, a connection that has not given it this long after connecting is closed, s. */
+    public static final int TOKEN_DEADLINE_S = 10;
 
     private final ControlRequests requests;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
@@ -62,6 +66,8 @@ public final class ControlServer implements Closeable {
     /** Requests that answer at once (status, resume, stop, shutdown), so a long step never holds them up. */
     private final ExecutorService quick = single("control-quick");
     private final AtomicInteger connections = new AtomicInteger();
+    private final AtomicInteger refusedSinceLog = new AtomicInteger();
+    private final java.util.concurrent.atomic.AtomicLong lastCapLog = new java.util.concurrent.atomic.AtomicLong();
     private Channel server;
 
     /**
@@ -91,16 +97,15 @@ public final class ControlServer implements Closeable {
                     protected void initChannel(SocketChannel ch) {
                         if (connections.incrementAndGet() > MAX_CONNECTIONS) {
                             connections.decrementAndGet();
-                            LOG.warn("control port: {} closed at once: {} connections already", ch.remoteAddress(),
-                                    MAX_CONNECTIONS);
+                            refusedOverCap();
                             ch.close();
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
-                        ch.pipeline().addLast(new IdleStateHandler(IDLE_MINUTES, 0, 0, TimeUnit.MINUTES),
-                                new LineBasedFrameDecoder(MAX_LINE, true, true),
+                        // (the idle clock after the decoders: only a whole request line resets it)
+                        ch.pipeline().addLast(new LineBasedFrameDecoder(MAX_LINE, true, true),
                                 new StringDecoder(StandardCharsets.UTF_8), new StringEncoder(StandardCharsets.UTF_8),
-                                new Handler());
+                                new IdleStateHandler(IDLE_MINUTES, 0, 0, TimeUnit.MINUTES), new Handler());
                     }
                 });
         try {
@@ -111,6 +116,17 @@ public final class ControlServer implements Closeable {
                 throw new BindException("control port " + port + " is already in use");
             }
             throw new IOException("cannot listen on control port " + port + ": " + e.getMessage(), e);
+        }
+    }
+
+    /** One connection over the cap was closed: says so at most once a second. */
+    private void refusedOverCap() {
+        int n = refusedSinceLog.incrementAndGet();
+        long now = System.nanoTime();
+        long last = lastCapLog.get();
+        if ((last == 0 || now - last >= TimeUnit.SECONDS.toNanos(1)) && lastCapLog.compareAndSet(last, now)) {
+            refusedSinceLog.addAndGet(-n);
+            LOG.warn("control port: {} connection(s) closed at once: it holds at most {} at a time", n, MAX_CONNECTIONS);
         }
     }
 
@@ -132,8 +148,22 @@ public final class ControlServer implements Closeable {
     private final class Handler extends SimpleChannelInboundHandler<String> {
         private final ControlRequests.Caller caller = requests.caller();
         private final ArrayDeque<String> pending = new ArrayDeque<>();
-        /** A request of this connection is being handled; its reply goes out before the next starts. */
+        /** A request of this connection is being handled or answered; the next starts once its reply is out. */
         private boolean inHand;
+
+        @Override
+        public void channelActive(ChannelHandlerContext ctx) {
+            if (!caller.authorised) {
+                ctx.executor().schedule(() -> {
+                    if (!caller.authorised && ctx.channel().isActive()) {
+                        LOG.info("control port: {} gave no token within {} s; closing", ctx.channel().remoteAddress(),
+                                TOKEN_DEADLINE_S);
+                        ctx.close();
+                    }
+                }, TOKEN_DEADLINE_S, TimeUnit.SECONDS);
+            }
+            ctx.fireChannelActive();
+        }
 
         @Override
         protected void channelRead0(ChannelHandlerContext ctx, String line) {
@@ -153,41 +183,72 @@ public final class ControlServer implements Closeable {
             next(ctx);
         }
 
-        /** Starts the next request of this connection, if none is in hand. */
+        /** Starts the next request of this connection, if none is in hand; reads on when none is left. */
         private void next(ChannelHandlerContext ctx) {
-            while (!inHand && !pending.isEmpty()) {
-                String request = pending.poll();
-                String verb = ControlRequests.verb(request);
-                if (!caller.authorised && !verb.equals("token")) {
-                    reply(ctx, ControlRequests.error("a token is required first: token SECRET"));
-                    continue;
-                }
-                inHand = true;
-                try {
-                    (ControlRequests.waits(verb) ? worker : quick).execute(() -> {
-                        ObjectNode answer = requests.handle(caller, request);
-                        ctx.executor().execute(() -> answered(ctx, answer));
-                    });
-                } catch (RejectedExecutionException e) {
-                    inHand = false;
-                    reply(ctx, ControlRequests.error("the Environment is shutting down"));
-                }
+            if (inHand) {
+                return;
             }
-            if (!inHand && pending.isEmpty() && ctx.channel().isActive()) {
+            String request = pending.poll();
+            if (request == null) {
+                resumeReading(ctx);
+                return;
+            }
+            inHand = true;
+            String verb = ControlRequests.verb(request);
+            if (!caller.authorised && !verb.equals("token")) {
+                answered(ctx, ControlRequests.error("a token is required first: token SECRET"));
+                return;
+            }
+            ExecutorService runner = ControlRequests.waits(verb) ? worker : quick;
+            try {
+                runner.execute(() -> {
+                    ObjectNode answer;
+                    try {
+                        answer = requests.handle(caller, request);
+                    } catch (Throwable t) { // the connection's turn must end whatever happens
+                        answer = ControlRequests.error("failed: " + t);
+                    }
+                    ObjectNode a = answer;
+                    ctx.executor().execute(() -> answered(ctx, a));
+                });
+            } catch (RejectedExecutionException e) {
+                answered(ctx, ControlRequests.error(runner.isShutdown() ? "the Environment is shutting down"
+                        : "the Environment is busy; try again"));
+            }
+        }
+
+        /** Writes the reply; the next request of this connection starts once it has left (no reply piles up). */
+        private void answered(ChannelHandlerContext ctx, ObjectNode answer) {
+            if (!ctx.channel().isActive()) {
+                pending.clear();
+                return;
+            }
+            ctx.writeAndFlush(answer.toString() + "\n").addListener(f -> {
+                inHand = false;
+                next(ctx);
+            });
+        }
+
+        /** Reads on, but only while replies can leave: a client that does not read them gets no more read. */
+        private void resumeReading(ChannelHandlerContext ctx) {
+            if (ctx.channel().isActive() && ctx.channel().isWritable()) {
                 ctx.channel().config().setAutoRead(true);
             }
         }
 
-        private void answered(ChannelHandlerContext ctx, ObjectNode answer) {
-            reply(ctx, answer);
-            inHand = false;
-            next(ctx);
+        @Override
+        public void channelWritabilityChanged(ChannelHandlerContext ctx) {
+            if (!inHand && pending.isEmpty()) {
+                resumeReading(ctx);
+            }
+            ctx.fireChannelWritabilityChanged();
         }
 
         @Override
         public void userEventTriggered(ChannelHandlerContext ctx, Object event) {
             if (event instanceof IdleStateEvent && !inHand && pending.isEmpty()) {
-                LOG.info("control port: {} idle for {} minutes; closing", ctx.channel().remoteAddress(), IDLE_MINUTES);
+                LOG.info("control port: {} sent no request for {} minutes; closing", ctx.channel().remoteAddress(),
+                        IDLE_MINUTES);
                 ctx.close();
             }
         }
@@ -205,9 +266,4 @@ public final class ControlServer implements Closeable {
         }
     }
 
-    private static void reply(ChannelHandlerContext ctx, ObjectNode n) {
-        if (ctx.channel().isActive()) {
-            ctx.writeAndFlush(n.toString() + "\n");
-        }
-    }
 }

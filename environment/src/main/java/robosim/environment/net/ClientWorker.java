@@ -4,6 +4,7 @@ import java.io.EOFException;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.Future;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.Challenge;
@@ -18,7 +19,8 @@ import robosim.protocol.SharedSecret;
  * the one failure policy: a protocol fault or a broken connection drops this client with a logged
  * reason; the simulation goes on. Until its hello is accepted ({@link #handshakeDone}) a client is a
  * stranger: it may send at most {@link Limits#MAX_HELLO_BYTES} per message, and its connection is
- * closed at the handshake deadline however slowly its bytes trickle in.
+ * closed if its hello (and proof) are not in by the handshake deadline, however slowly its bytes
+ * trickle in ({@link #heardHello}).
  */
 abstract class ClientWorker implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorker.class);
@@ -30,6 +32,11 @@ abstract class ClientWorker implements Runnable {
     private Runnable release = () -> { };
     private volatile Future<?> deadline;
     private volatile String expired;
+    /** The handshake clock: running, stopped (the hello is in), or expired; whichever comes first wins. */
+    private final AtomicInteger clock = new AtomicInteger(CLOCK_RUNNING);
+    private static final int CLOCK_RUNNING = 0;
+    private static final int CLOCK_STOPPED = 1;
+    private static final int CLOCK_EXPIRED = 2;
 
     ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name) {
         this.coordinator = coordinator;
@@ -53,39 +60,46 @@ abstract class ClientWorker implements Runnable {
         this.deadline = handshakeDeadline;
     }
 
-    /** The {@code handshake-deadlines} thread: the hello was not accepted in time; the connection is closed. */
+    /**
+     * The {@code handshake-deadlines} thread: the client has not sent its hello (and proof) in time; its
+     * connection is closed, unless the hello came in first.
+     */
     final void handshakeExpired(int ms) {
-        expired = "no hello accepted within " + ms + " ms";
-        drop();
+        if (clock.compareAndSet(CLOCK_RUNNING, CLOCK_EXPIRED)) {
+            expired = "no hello within " + ms + " ms";
+            drop();
+        }
     }
 
     /**
-     * This client's hello is accepted: no deadline from now on, and messages up to
-     * {@link Limits#MAX_MESSAGE_BYTES}.
+     * Right after the client's hello: with a shared secret, challenges it (a fresh nonce) and reads its
+     * proof, still under the handshake deadline and the stranger's byte cap; then stops the handshake
+     * clock (what follows, the loop's verdict, is the Environment's own time, not the client's). Null if
+     * the client proved the secret for {@code role} (or there is none), else the refusal.
      */
-    protected final void handshakeDone() {
+    protected final String heardHello(String role) throws IOException {
+        SharedSecret secret = coordinator.settings().secret();
+        String refusal = null;
+        if (secret != null) {
+            byte[] nonce = SharedSecret.nonce();
+            connection.write(new Challenge(nonce));
+            connection.flush();
+            Proof proof = connection.read(Proof.class);
+            refusal = secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
+        }
+        if (!clock.compareAndSet(CLOCK_RUNNING, CLOCK_STOPPED)) {
+            throw new IOException(expired); // (the deadline closed the connection just before)
+        }
         Future<?> d = deadline;
         if (d != null) {
             d.cancel(false);
         }
-        connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
+        return refusal;
     }
 
-    /**
-     * With a shared secret, right after the client's hello: challenges it (a fresh nonce) and reads its
-     * proof, still under the handshake deadline and the stranger's byte cap. Null if it proved the secret
-     * for {@code role} (or there is none), else the refusal.
-     */
-    protected final String authenticate(String role) throws IOException {
-        SharedSecret secret = coordinator.settings().secret();
-        if (secret == null) {
-            return null;
-        }
-        byte[] nonce = SharedSecret.nonce();
-        connection.write(new Challenge(nonce));
-        connection.flush();
-        Proof proof = connection.read(Proof.class);
-        return secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
+    /** This client's hello is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}. */
+    protected final void handshakeDone() {
+        connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
     }
 
     protected final String name() {

@@ -5,6 +5,7 @@ import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
 import robosim.protocol.GeometryHello;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
@@ -16,7 +17,8 @@ import robosim.protocol.SimulationEnd;
  * Serves the Geometry process on its own thread, {@code geometry-worker}, which owns that connection:
  * after the handshake it does what the {@link GeometryLink} asks, one task at a time - send the world,
  * do a step's round trip (write the request, read the answer) and hand the answer to the loop, send
- * the end. The simulation loop never touches this socket, so a Geometry process that hangs holds up
+ * the end - and while idle looks a few times a second whether its process has closed the connection
+ * (then it is lost at once, and a new Geometry process may attach). The simulation loop never touches this socket, so a Geometry process that hangs holds up
  * nobody but the step that waits for it, and only until the Geometry timeout.
  */
 final class GeometryClientWorker extends ClientWorker {
@@ -29,6 +31,9 @@ final class GeometryClientWorker extends ClientWorker {
     private record End(SimulationEnd end) {
     }
 
+    /** How often an idle worker looks whether its Geometry process is still there, ms. */
+    private static final long IDLE_LOOK_MS = 250;
+
     /** At most the world, one step and the end are ever outstanding. */
     private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
 
@@ -39,7 +44,7 @@ final class GeometryClientWorker extends ClientWorker {
     @Override
     protected void serve() throws IOException, InterruptedException {
         GeometryHello hello = connection.read(GeometryHello.class);
-        String refusal = authenticate("geometry");
+        String refusal = heardHello("geometry");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                     + Protocol.VERSION + ")";
@@ -57,7 +62,15 @@ final class GeometryClientWorker extends ClientWorker {
         }
         handshakeDone();
         while (true) {
-            Object task = tasks.take();
+            Object task = tasks.poll(IDLE_LOOK_MS, TimeUnit.MILLISECONDS);
+            if (task == null) {
+                // idle (paused, or a step still gathering): notice a Geometry process that has gone, so a
+                // new one may attach at once instead of being refused as a second one
+                if (connection.closedByPeerWithin(1)) {
+                    throw new java.io.EOFException("the Geometry process closed the connection");
+                }
+                continue;
+            }
             if (task instanceof SendWorld w) {
                 connection.write(w.world());
                 connection.flush();

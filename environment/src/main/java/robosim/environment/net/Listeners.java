@@ -110,14 +110,22 @@ final class Listeners {
                         refused(held);
                         continue;
                     }
-                    ClientWorker w;
-                    synchronized (this) {
-                        w = factory.apply(s);
+                    try {
+                        ClientWorker w;
+                        synchronized (this) {
+                            w = factory.apply(s);
+                        }
+                        int ms = coordinator.settings().handshakeTimeoutMs();
+                        w.admit(held.open::decrementAndGet, ms <= 0 ? null
+                                : deadlines.schedule(() -> w.handshakeExpired(ms), ms, TimeUnit.MILLISECONDS));
+                        w.start();
+                    } catch (RuntimeException e) { // closing (the deadline timer is shut), or out of threads
+                        held.open.decrementAndGet();
+                        s.close();
+                        if (!server.isClosed()) {
+                            LOG.warn("{}: could not serve a connection: {}", threadName, e.toString());
+                        }
                     }
-                    int ms = coordinator.settings().handshakeTimeoutMs();
-                    w.admit(held.open::decrementAndGet, ms <= 0 ? null
-                            : deadlines.schedule(() -> w.handshakeExpired(ms), ms, TimeUnit.MILLISECONDS));
-                    w.start();
                 } catch (IOException e) {
                     if (!server.isClosed()) {
                         LOG.warn("{}: accept failed: {}", threadName, e.getMessage());
@@ -150,7 +158,6 @@ final class Listeners {
     }
 
     void close() {
-        deadlines.shutdown(); // (handshakes still under way keep their deadlines)
         for (ServerSocket s : servers) {
             try {
                 s.close();
@@ -158,6 +165,7 @@ final class Listeners {
                 // closing anyway
             }
         }
+        deadlines.shutdown(); // (handshakes still under way keep their deadlines)
     }
 
     /** Closes the sockets and waits until the accept threads have left them, so the ports are free. */

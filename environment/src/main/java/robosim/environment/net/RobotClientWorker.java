@@ -39,7 +39,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         RobotHello hello = connection.read(RobotHello.class);
         int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
         robotName = String.valueOf(hello.name());
-        String refusal = authenticate("robot");
+        String refusal = heardHello("robot");
         if (refusal == null) {
             refusal = coordinator.handshakes().check(hello, wanted);
         }

@@ -41,7 +41,7 @@ final class ViewerClientWorker extends ClientWorker {
     @Override
     protected void serve() throws IOException, InterruptedException {
         ViewerHello hello = connection.read(ViewerHello.class);
-        String refusal = authenticate("viewer");
+        String refusal = heardHello("viewer");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "
                     + "speaks " + Protocol.VERSION + ")";
