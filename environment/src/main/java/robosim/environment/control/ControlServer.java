@@ -168,8 +168,8 @@ public final class ControlServer implements Closeable {
         @Override
         protected void channelRead0(ChannelHandlerContext ctx, String line) {
             String request = line.strip();
-            if (request.isEmpty()) {
-                return;
+            if (request.isEmpty() || !ctx.channel().isActive()) {
+                return; // (lines already decoded when the connection was closed below)
             }
             if (pending.size() >= MAX_PIPELINED) {
                 LOG.warn("control port: {} sent more than {} requests ahead of its replies; closing",
