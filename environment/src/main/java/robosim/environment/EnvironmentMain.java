@@ -173,6 +173,11 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: " + e.getMessage());
             return 2;
         }
+        if (handshakeTimeoutMs == 0 && !bindAddress.isLoopbackAddress()) {
+            System.err.println("environment: --bind " + bind + " needs a handshake deadline: --handshake-timeout-ms 0 "
+                    + "would let a stranger hold a connection for ever");
+            return 2;
+        }
         if (secret == null && !bindAddress.isLoopbackAddress()) {
             System.err.println("environment: --bind " + bind + " opens the robot, viewer and geometry ports beyond this "
                     + "machine: give every process a shared secret with ROBOSIM_SECRET_FILE (scripts/make-keys.sh "

@@ -60,7 +60,13 @@ public final class HardwareSimulator {
         connection = new ObjectConnection(socket, resetEvery);
         connection.write(new RobotHello(name, type.properties()));
         connection.flush();
-        Externalizable answer = SharedSecret.answerChallenge(connection, secret, "robot");
+        Externalizable answer;
+        try {
+            answer = SharedSecret.answerChallenge(connection, secret, "robot");
+        } catch (IOException e) {
+            connection.close(); // (e.g. asked for a secret this process does not have)
+            throw e;
+        }
         if (!(answer instanceof RobotWelcome w)) {
             connection.close();
             throw new ProtocolException("expected a RobotWelcome, got a " + answer.getClass().getSimpleName());

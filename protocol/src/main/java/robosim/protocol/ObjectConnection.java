@@ -182,6 +182,9 @@ public final class ObjectConnection implements Closeable {
         } catch (java.net.SocketTimeoutException e) {
             return false;
         } catch (IOException e) {
+            if (socket.isClosed()) {
+                throw e; // closed on this side (dropped), not by the peer
+            }
             return true;
         } finally {
             if (!socket.isClosed()) {

@@ -1,7 +1,6 @@
 package robosim.runner;
 
 import java.io.IOException;
-import java.io.ObjectOutputStream;
 import java.net.Socket;
 import java.util.ArrayList;
 import java.util.List;
@@ -49,9 +48,13 @@ final class ExtraViewers implements AutoCloseable {
             throw new IOException("cannot connect to the viewer port " + port);
         }
         s.setReceiveBufferSize(4096);
-        ObjectOutputStream out = new ObjectOutputStream(s.getOutputStream());
-        out.writeObject(new ViewerHello(false));
-        out.flush();
+        robosim.protocol.ObjectConnection c = new robosim.protocol.ObjectConnection(s, 256);
+        c.write(new ViewerHello(false));
+        c.flush();
+        robosim.protocol.SharedSecret secret = robosim.protocol.SharedSecret.fromEnvironment();
+        if (secret != null) { // prove it (and take the snapshot), then never read again
+            robosim.protocol.SharedSecret.answerChallenge(c, secret, "viewer");
+        }
         return s;
     }
 

@@ -22,13 +22,7 @@ import java.util.regex.Pattern;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
-import robosim.protocol.ObjectConnection;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
-import robosim.protocol.RobotWelcome;
-import robosim.protocol.StepRequest;
-import robosim.protocol.StepResponse;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldSnapshot;
@@ -115,10 +109,10 @@ public final class Soak implements Callable<Integer> {
             for (int v = 0; v < silentRobots; v++) {
                 long at = between(random, 0.05, 0.95);
                 String name = "silent" + v;
-                silent.add(CompletableFuture.runAsync(() -> silentRobot(name, robotPort, at)));
+                silent.add(CompletableFuture.runAsync(() -> SoakClients.silentRobot(name, robotPort, at, faults::add)));
                 faults.add(String.format(Locale.ROOT, "robot %s falls silent at step %d", name, at));
             }
-            Socket frozen = frozenViewer(viewerPort);
+            Socket frozen = SoakClients.frozenViewer(viewerPort);
             faults.add("a viewer that never reads, connected for the whole run");
             int killed = random.nextInt(robotProcesses);
             long killAt = between(random, 0.2, 0.8);
@@ -273,39 +267,6 @@ public final class Soak implements Callable<Integer> {
         });
     }
 
-    /** A robot driven by hand that answers until step {@code silentAt}, then says nothing. */
-    private void silentRobot(String name, int port, long silentAt) {
-        try (ObjectConnection c = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 256)) {
-            c.write(new RobotHello(name, RobotModels.AR_ROBOT));
-            c.flush();
-            if (!c.read(RobotWelcome.class).isAccepted()) {
-                faults.add(name + " was refused");
-                return;
-            }
-            for (long k = c.readStep(); k >= 0 && k < silentAt; k = c.readStep()) {
-                c.write(new StepRequest(k, 0, 0, false, List.of()));
-                c.flush();
-                c.read(StepResponse.class);
-            }
-            // silent from here: the Environment's step timeout must drop us and close the connection
-            c.setReadTimeoutMs(0);
-            while (true) {
-                c.readStep();
-            }
-        } catch (IOException expected) {
-            // dropped, or the end
-        }
-    }
-
-    private static Socket frozenViewer(int port) throws IOException {
-        Socket s = new Socket(InetAddress.getLoopbackAddress(), port);
-        s.setReceiveBufferSize(4096);
-        ObjectConnection c = new ObjectConnection(s, 256);
-        c.write(new ViewerHello(false));
-        c.flush();
-        return s; // never read again
-    }
-
     /** At step k: a full GC in the Environment and its old generation, KB (-1 if it could not be read). */
     private long heapAt(long k, long pid) throws Exception {
         awaitStep(k);
@@ -313,19 +274,12 @@ public final class Soak implements Callable<Integer> {
             return -1;
         }
         long at = step.get();
-        run("jcmd", Long.toString(pid), "GC.run");
+        SoakClients.run("jcmd", Long.toString(pid), "GC.run");
         Matcher m = Pattern.compile("tenured generation\\s+total \\d+K, used (\\d+)K")
-                .matcher(run("jcmd", Long.toString(pid), "GC.heap_info"));
+                .matcher(SoakClients.run("jcmd", Long.toString(pid), "GC.heap_info"));
         long kb = m.find() ? Long.parseLong(m.group(1)) : -1;
         faults.add("Environment heap read at step " + at + ": " + kb + " KB");
         return kb;
-    }
-
-    private static String run(String... cmd) throws IOException, InterruptedException {
-        Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        p.waitFor();
-        return out;
     }
 
     public static void main(String[] args) {

@@ -13,7 +13,6 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
-import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;

@@ -17,6 +17,7 @@ import io.netty.handler.codec.string.StringDecoder;
 import io.netty.handler.codec.string.StringEncoder;
 import io.netty.handler.timeout.IdleStateEvent;
 import io.netty.handler.timeout.IdleStateHandler;
+import io.netty.handler.timeout.WriteTimeoutHandler;
 import java.io.Closeable;
 import java.io.IOException;
 import java.net.BindException;
@@ -42,8 +43,9 @@ import org.slf4j.LoggerFactory;
  * client that does not take its replies. Bounded: {@link #MAX_LINE} bytes a line (a longer one gets an
  * error and the connection is closed), {@link #MAX_CONNECTIONS} connections at once (one more is closed
  * at once), a connection with nothing in hand that sends no whole request for {@link #IDLE_MINUTES}
- * minutes is closed. With a token set, every request before a correct {@code token} line is refused,
- * and a connection that has not given it within {@link #TOKEN_DEADLINE_S} seconds is closed.
+ * minutes is closed, and so is one that does not take a reply within {@link #WRITE_TIMEOUT_S} seconds.
+ * With a token set, every request before a correct {@code token} line is refused, and a connection that
+ * has not given it within {@link #TOKEN_DEADLINE_S} seconds is closed.
  */
 public final class ControlServer implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ControlServer.class);
@@ -55,6 +57,8 @@ public final class ControlServer implements Closeable {
     public static final int MAX_PIPELINED = 32;
     /** A connection with nothing in hand is closed after this long without a whole request, minutes. */
     public static final int IDLE_MINUTES = 5;
+    /** A reply the client does not take within this long closes its connection, s. */
+    public static final int WRITE_TIMEOUT_S = 30;
     /** With a token set, a connection that has not given it this long after connecting is closed, s. */
     public static final int TOKEN_DEADLINE_S = 10;
 
@@ -103,7 +107,8 @@ public final class ControlServer implements Closeable {
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
                         // (the idle clock after the decoders: only a whole request line resets it)
-                        ch.pipeline().addLast(new LineBasedFrameDecoder(MAX_LINE, true, true),
+                        ch.pipeline().addLast(new WriteTimeoutHandler(WRITE_TIMEOUT_S),
+                                new LineBasedFrameDecoder(MAX_LINE, true, true),
                                 new StringDecoder(StandardCharsets.UTF_8), new StringEncoder(StandardCharsets.UTF_8),
                                 new IdleStateHandler(IDLE_MINUTES, 0, 0, TimeUnit.MINUTES), new Handler());
                     }
@@ -151,10 +156,21 @@ public final class ControlServer implements Closeable {
         /** A request of this connection is being handled or answered; the next starts once its reply is out. */
         private boolean inHand;
 
+        /** The token deadline, while it runs. */
+        private java.util.concurrent.Future<?> tokenDeadline;
+
+        @Override
+        public void channelInactive(ChannelHandlerContext ctx) {
+            if (tokenDeadline != null) {
+                tokenDeadline.cancel(false);
+            }
+            ctx.fireChannelInactive();
+        }
+
         @Override
         public void channelActive(ChannelHandlerContext ctx) {
             if (!caller.authorised) {
-                ctx.executor().schedule(() -> {
+                tokenDeadline = ctx.executor().schedule(() -> {
                     if (!caller.authorised && ctx.channel().isActive()) {
                         LOG.info("control port: {} gave no token within {} s; closing", ctx.channel().remoteAddress(),
                                 TOKEN_DEADLINE_S);

@@ -133,7 +133,7 @@ public final class EnvironmentHost {
     public static final int EXIT_ROBOTS_REMOVED = 3;
 
     /** {@code start}: resumes a paused simulation, or runs the current file again once it has ended. */
-    public String start() throws IOException {
+    public String start() throws IOException, InterruptedException {
         ClientWorkerCoordinator c = current();
         if (c.status().state() != RunStatus.State.ENDED) {
             c.resume();

@@ -102,6 +102,11 @@ abstract class ClientWorker implements Runnable {
         connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
     }
 
+    /** Logs that this client was refused, and why (network text escaped). */
+    protected final void logRefused(String why) {
+        LOG.warn("{} refused: {}", name, Printable.of(why));
+    }
+
     protected final String name() {
         return name;
     }

@@ -128,10 +128,6 @@ public final class ClientWorkerCoordinator implements Closeable {
         return handshakes;
     }
 
-    Logger log() {
-        return LOG;
-    }
-
     /**
      * Hands {@code event} to the loop; if the run is over (or the loop's queue stays full), runs
      * {@code rejected} instead, so whoever waits on the event's answer is answered.
@@ -205,9 +201,11 @@ public final class ClientWorkerCoordinator implements Closeable {
         await(held, timeout, unit);
     }
 
-    /** Resumes a paused run (or lets it begin when every client is there). */
-    public void resume() {
-        post(new LoopEvent.Resume(), () -> { });
+    /** Resumes a paused run (or lets it begin when every client is there); returns once the status says so. */
+    public void resume() throws InterruptedException {
+        CompletableFuture<Void> applied = new CompletableFuture<>();
+        post(new LoopEvent.Resume(applied), () -> applied.complete(null));
+        await(applied, STOP_WAIT_MS, TimeUnit.MILLISECONDS);
     }
 
     /**
@@ -284,12 +282,7 @@ public final class ClientWorkerCoordinator implements Closeable {
      * recording viewer may still be writing its backlog), so a process that exits next loses nothing.
      */
     public void awaitViewersDone(long timeoutMs) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        for (ViewerClientWorker v : cycle.viewers().all()) {
-            if (!v.awaitDone(Math.max(0, deadline - System.nanoTime()))) {
-                LOG.warn("{} did not take the end of the simulation within {} ms", v.viewerName(), timeoutMs);
-            }
-        }
+        cycle.viewers().awaitDone(timeoutMs);
     }
 
     /** After the end: waits until the listening sockets are really released, so a next simulation can bind them. */

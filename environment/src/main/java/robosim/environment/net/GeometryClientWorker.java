@@ -55,7 +55,7 @@ final class GeometryClientWorker extends ClientWorker {
             refusal = awaitVerdict(verdict);
         }
         if (refusal != null) {
-            coordinator.log().warn("{} refused: {}", name(), refusal);
+            logRefused(refusal);
             connection.write(new SimulationEnd(-1, refusal));
             connection.flush();
             return;

@@ -110,16 +110,21 @@ final class Listeners {
                         refused(held);
                         continue;
                     }
+                    java.util.concurrent.Future<?> deadline = null;
                     try {
                         ClientWorker w;
                         synchronized (this) {
                             w = factory.apply(s);
                         }
                         int ms = coordinator.settings().handshakeTimeoutMs();
-                        w.admit(held.open::decrementAndGet, ms <= 0 ? null
-                                : deadlines.schedule(() -> w.handshakeExpired(ms), ms, TimeUnit.MILLISECONDS));
+                        deadline = ms <= 0 ? null
+                                : deadlines.schedule(() -> w.handshakeExpired(ms), ms, TimeUnit.MILLISECONDS);
+                        w.admit(held.open::decrementAndGet, deadline);
                         w.start();
-                    } catch (RuntimeException e) { // closing (the deadline timer is shut), or out of threads
+                    } catch (RuntimeException | OutOfMemoryError e) { // closing (the timer is shut); out of threads
+                        if (deadline != null) {
+                            deadline.cancel(false);
+                        }
                         held.open.decrementAndGet();
                         s.close();
                         if (!server.isClosed()) {

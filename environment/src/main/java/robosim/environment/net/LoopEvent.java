@@ -58,7 +58,8 @@ sealed interface LoopEvent {
     record Pause(CompletableFuture<Void> held) implements LoopEvent {
     }
 
-    record Resume() implements LoopEvent {
+    /** Run on; {@code applied} completes once the run's state says so (a status right after sees it). */
+    record Resume(CompletableFuture<Void> applied) implements LoopEvent {
     }
 
     /** Run {@code n} more steps, then hold; {@code done} completes with the steps released so far. */

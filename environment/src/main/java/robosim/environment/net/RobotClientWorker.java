@@ -21,6 +21,7 @@ import robosim.protocol.StepResponse;
  * non-finite action, drops this robot alone.
  */
 final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWatchdog.Watched {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(RobotClientWorker.class);
     private volatile int index = -1;
     /** The last step number the loop has handed this robot (-1 before the first). */
     private volatile long given = -1;
@@ -50,7 +51,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
             refusal = awaitVerdict(verdict);
         }
         if (refusal != null) {
-            coordinator.log().warn("{} refused: {}", name(), Printable.of(refusal));
+            logRefused(refusal);
             connection.write(RobotWelcome.refused(refusal));
             connection.flush();
             return;
@@ -201,7 +202,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
                 }
             }
         } catch (IOException | RuntimeException e) {
-            coordinator.log().info("{}: could not send the end of the simulation: {}", name(),
+            LOG.info("{}: could not send the end of the simulation: {}", name(),
                     Printable.of(String.valueOf(e.getMessage())));
         }
     }

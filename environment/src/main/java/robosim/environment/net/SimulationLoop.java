@@ -127,8 +127,11 @@ final class SimulationLoop implements Runnable {
             cycle.addViewer(v.viewer(), v.snapshot());
         } else if (e instanceof LoopEvent.Pause p) {
             cycle.control().pause(p.held(), cycle.running());
-        } else if (e instanceof LoopEvent.Resume) {
+        } else if (e instanceof LoopEvent.Resume r) {
             cycle.control().resume(cycle.released());
+            cycle.advance(System.nanoTime()); // (a run that may begin now begins before the answer)
+            cycle.publishPhase();
+            r.applied().complete(null);
         } else if (e instanceof LoopEvent.StepN s) {
             cycle.control().stepN(s.n(), s.done(), cycle.released(), cycle.running());
         } else if (e instanceof LoopEvent.Stop s) {

@@ -47,7 +47,7 @@ final class ViewerClientWorker extends ClientWorker {
                     + "speaks " + Protocol.VERSION + ")";
         }
         if (refusal != null) {
-            coordinator.log().warn("{} refused: {}", name(), refusal);
+            logRefused(refusal);
             connection.write(new SimulationEnd(-1, refusal));
             connection.flush();
             return;

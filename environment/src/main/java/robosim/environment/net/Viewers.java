@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.PoseUpdate;
@@ -89,6 +90,16 @@ final class Viewers {
                 v.queue().close();
                 v.drop();
                 listener.viewerDropped(v.viewerName(), why);
+            }
+        }
+    }
+
+    /** After the end: waits up to {@code timeoutMs} for every viewer worker to send what it holds. */
+    void awaitDone(long timeoutMs) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
+        for (ViewerClientWorker v : all()) {
+            if (!v.awaitDone(Math.max(0, deadline - System.nanoTime()))) {
+                LOG.warn("{} did not take the end of the simulation within {} ms", v.viewerName(), timeoutMs);
             }
         }
     }
