@@ -196,6 +196,21 @@ robosim_count() {
   [[ "$2" =~ ^[1-9][0-9]*$ ]] || robosim_fail "$1 must be a whole number >= 1, got '$2'"
 }
 
+# A script that takes one positional argument ($1 says what, e.g. FILE) and --help: sets ROBOSIM_ONE
+# to it (empty if none was given); an unknown option or a second argument is one line and exit 2.
+robosim_one_arg() {
+  local what=$1 a
+  shift
+  ROBOSIM_ONE=""
+  for a in "$@"; do
+    case $a in
+      -h|--help) robosim_usage; exit 0 ;;
+      -?*) robosim_fail "unknown option $a (see --help)" ;;
+      *) [ -z "$ROBOSIM_ONE" ] || robosim_fail "takes one $what, got $ROBOSIM_ONE and $a (see --help)"; ROBOSIM_ONE=$a ;;
+    esac
+  done
+}
+
 # A benchmark's arguments: [REPS] [--quick] and robosim_script_args' own (docs directory $2), nothing
 # after --. Sets BENCH_REPS (default $1; 1 with --quick) and BENCH_QUICK (0 or 1) and cds to the home.
 robosim_bench_args() {

@@ -7,14 +7,8 @@
 # the growing corpus stays in protocol/.cifuzz-corpus/ between runs.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-duration=""
-for a in "$@"; do
-  case $a in
-    -h|--help) robosim_usage; exit 0 ;;
-    -?*) robosim_fail "unknown option $a (see --help)" ;;
-    *) [ -z "$duration" ] || robosim_fail "takes one DURATION, got $duration and $a"; duration=$a ;;
-  esac
-done
+robosim_one_arg DURATION "$@"
+duration=$ROBOSIM_ONE
 duration=${duration:-5m}
 [[ "$duration" =~ ^[0-9]+[smh]?$ ]] || robosim_fail "DURATION must look like 90s, 30m or 2h, got $duration"
 cd "$ROBOSIM_HOME"

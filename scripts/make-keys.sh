@@ -9,14 +9,8 @@
 # machines by a secure channel (scp).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-file=""
-for a in "$@"; do
-  case $a in
-    -h|--help) robosim_usage; exit 0 ;;
-    -?*) robosim_fail "unknown option $a (see --help)" ;;
-    *) [ -z "$file" ] || robosim_fail "takes one FILE, got $file and $a (see --help)"; file=$a ;;
-  esac
-done
+robosim_one_arg FILE "$@"
+file=$ROBOSIM_ONE
 [ -n "$file" ] || robosim_fail "needs a FILE to write the secret into (see --help)"
 file=$(robosim_abs "$file")
 [ ! -e "$file" ] || robosim_fail "$file already exists: not overwritten (remove it first to make a new secret)"
