@@ -31,7 +31,8 @@ abstract class ClientWorker implements Runnable {
     protected volatile ObjectConnection connection;
     private Runnable release = () -> { };
     private volatile Future<?> deadline;
-    private volatile String expired;
+    /** The handshake timeout, for the reason given when it expires. */
+    private volatile int deadlineMs;
     /** The handshake clock: running, stopped (the hello is in), or expired; whichever comes first wins. */
     private final AtomicInteger clock = new AtomicInteger(CLOCK_RUNNING);
     private static final int CLOCK_RUNNING = 0;
@@ -65,8 +66,8 @@ abstract class ClientWorker implements Runnable {
      * connection is closed, unless the hello came in first.
      */
     final void handshakeExpired(int ms) {
+        deadlineMs = ms;
         if (clock.compareAndSet(CLOCK_RUNNING, CLOCK_EXPIRED)) {
-            expired = "no hello within " + ms + " ms";
             drop();
         }
     }
@@ -88,13 +89,18 @@ abstract class ClientWorker implements Runnable {
             refusal = secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
         }
         if (!clock.compareAndSet(CLOCK_RUNNING, CLOCK_STOPPED)) {
-            throw new IOException(expired); // (the deadline closed the connection just before)
+            throw new IOException(expired()); // (the deadline closed the connection just before)
         }
         Future<?> d = deadline;
         if (d != null) {
             d.cancel(false);
         }
         return refusal;
+    }
+
+    /** Why the connection was closed at the handshake deadline, or null if it was not. */
+    private String expired() {
+        return clock.get() == CLOCK_EXPIRED ? "no hello within " + deadlineMs + " ms" : null;
     }
 
     /** This client's hello is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}. */
@@ -156,8 +162,8 @@ abstract class ClientWorker implements Runnable {
     /** Why the session ended on {@code e}, logged: a protocol fault or a missed deadline is a warning. */
     private String failed(IOException e) {
         String why;
-        if (expired != null) {
-            why = expired;
+        if (expired() != null) {
+            why = expired();
             LOG.warn("{} dropped: {}", name, why);
         } else if (e instanceof ProtocolException) {
             why = e.getMessage();
