@@ -29,8 +29,7 @@ import robosim.protocol.SharedSecret;
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
  * {@code listening robots=P viewers=P geometry=P} when its ports are bound and, when the run ends,
  * {@code summary steps=... robots=... wall_s=... steps_per_s=... robot_steps_per_s=...} as its last
- * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option or port), 3 the
- * run completed but lost a robot (it left or was removed).
+ * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option, port), 3 it lost a robot.
  */
 @Command(name = "environment.sh", mixinStandardHelpOptions = true,
         description = "Loads an environment file, waits for every robot it names (and a Geometry process), "

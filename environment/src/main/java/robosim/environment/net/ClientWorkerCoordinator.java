@@ -42,7 +42,7 @@ import robosim.environment.core.WorldSpec;
  * <li>{@code viewer-worker[n]} ({@link ViewerClientWorker}), one per viewer: blocks on its
  *     {@link ViewerQueue} and in its socket write (under the viewer write deadline).</li>
  * </ul>
- * Callers of {@link #pause}, {@link #step}, {@link #stop} wait on futures the loop completes.
+ * Callers of {@link #pause}, {@link #resume}, {@link #step}, {@link #stop} wait on futures the loop completes.
  */
 public final class ClientWorkerCoordinator implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorkerCoordinator.class);
@@ -113,8 +113,6 @@ public final class ClientWorkerCoordinator implements Closeable {
     public int[] ports() {
         return listeners.ports();
     }
-
-    // ---- for the workers and the loop ------------------------------------------------------------------
 
     Settings settings() {
         return settings;
