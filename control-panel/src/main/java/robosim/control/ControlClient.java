@@ -11,6 +11,8 @@ import java.io.Writer;
 import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
+import robosim.protocol.LineProof;
+import robosim.protocol.SimulationKeys;
 
 /**
  * A client of the Environment's control port: one request line out, one JSON reply line back.
@@ -18,23 +20,42 @@ import java.nio.charset.StandardCharsets;
  */
 public final class ControlClient implements Closeable {
     private static final ObjectMapper JSON = new ObjectMapper();
+    /** The TCP socket, under {@link #socket} when it is TLS. */
+    private final Socket transport;
     private final Socket socket;
     private final BufferedReader in;
     private final Writer out;
 
-    /** Connects (and gives the token first, if there is one). */
-    public ControlClient(String host, int port, String token, int timeoutMs) throws IOException {
-        socket = new Socket();
-        socket.connect(new InetSocketAddress(host, port), timeoutMs);
-        socket.setSoTimeout(timeoutMs);
-        in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.UTF_8));
-        out = new OutputStreamWriter(socket.getOutputStream(), StandardCharsets.UTF_8);
-        if (token != null && !token.isEmpty()) {
-            JsonNode r = request("token " + token);
-            if (!r.path("ok").asBoolean()) {
-                close();
-                throw new IOException("the Environment refused the token: " + r.path("error").asText());
+    /**
+     * Connects; with {@code keys}, over TLS when they hold the simulation's key pair, and proves the
+     * shared secret before anything else (null: neither).
+     */
+    public ControlClient(String host, int port, SimulationKeys keys, int timeoutMs) throws IOException {
+        transport = new Socket();
+        try {
+            transport.connect(new InetSocketAddress(host, port), timeoutMs);
+            transport.setSoTimeout(timeoutMs);
+            socket = keys == null || keys.tls() == null ? transport : keys.tls().client(transport);
+            in = new BufferedReader(new InputStreamReader(socket.getInputStream(), StandardCharsets.UTF_8));
+            out = new OutputStreamWriter(socket.getOutputStream(), StandardCharsets.UTF_8);
+            if (keys != null) {
+                prove(keys);
             }
+        } catch (IOException | RuntimeException e) {
+            transport.close();
+            throw e;
+        }
+    }
+
+    private void prove(SimulationKeys keys) throws IOException {
+        JsonNode challenge = request(LineProof.CHALLENGE);
+        String nonce = challenge.path("nonce").asText();
+        if (!challenge.path("ok").asBoolean() || nonce.isEmpty()) {
+            throw new IOException("the Environment gave no challenge: " + challenge.path("error").asText());
+        }
+        JsonNode r = request(LineProof.answer(keys, "control", nonce));
+        if (!r.path("ok").asBoolean()) {
+            throw new IOException("the Environment refused the proof of the shared secret: " + r.path("error").asText());
         }
     }
 
@@ -59,6 +80,7 @@ public final class ControlClient implements Closeable {
 
     @Override
     public void close() throws IOException {
+        transport.close();
         socket.close();
     }
 }

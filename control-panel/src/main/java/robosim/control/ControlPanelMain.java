@@ -11,6 +11,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.SimulationKeys;
 
 /**
  * The Control Panel: with no request, a window; with one, a command line for scripts:
@@ -32,23 +33,25 @@ public final class ControlPanelMain implements Callable<Integer> {
             description = "status, start, stop, pause, resume, step N, load FILE or shutdown; none opens the window.")
     List<String> request;
 
-    @Option(names = "--token", description = "The control token, if the Environment was started with one "
-            + "(default: the environment variable ROBOSIM_CONTROL_TOKEN).")
-    String token;
-
     @Option(names = "--timeout-s", defaultValue = "600",
             description = "How long to wait for a reply (step N waits for its steps; default: ${DEFAULT-VALUE}).")
     int timeoutS;
 
     @Override
     public Integer call() throws Exception {
-        String tok = token != null ? token : System.getenv("ROBOSIM_CONTROL_TOKEN");
+        SimulationKeys keys;
+        try {
+            keys = SimulationKeys.fromEnvironment();
+        } catch (IOException e) {
+            System.err.println("control-panel: " + e.getMessage());
+            return 2;
+        }
         if (request == null || request.isEmpty()) {
             if (java.awt.GraphicsEnvironment.isHeadless()) {
                 System.err.println("control-panel: no display for the window; give a request instead (see --help)");
                 return 2;
             }
-            ControlPanelWindow.open(host, port, tok);
+            ControlPanelWindow.open(host, port, keys);
             windowOpened = true;
             return 0;
         }
@@ -57,7 +60,7 @@ public final class ControlPanelMain implements Callable<Integer> {
             // the Environment opens the file: give it an absolute path
             line = "load " + Path.of(request.get(1)).toAbsolutePath().normalize();
         }
-        try (ControlClient c = new ControlClient(host, port, tok, timeoutS * 1000)) {
+        try (ControlClient c = new ControlClient(host, port, keys, timeoutS * 1000)) {
             JsonNode reply = c.request(line);
             print(reply);
             return reply.path("ok").asBoolean() ? 0 : 1;

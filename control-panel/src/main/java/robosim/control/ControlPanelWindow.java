@@ -19,6 +19,7 @@ import javax.swing.SpinnerNumberModel;
 import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
+import robosim.protocol.SimulationKeys;
 
 /**
  * The Control Panel window: Load..., Start, Stop, Pause, Resume and Step N buttons, and a live status
@@ -29,7 +30,7 @@ import javax.swing.WindowConstants;
 public final class ControlPanelWindow {
     private final String host;
     private final int port;
-    private final String token;
+    private final SimulationKeys keys;
     private final ExecutorService io = Executors.newSingleThreadExecutor(r -> {
         Thread t = new Thread(r, "control-panel-io");
         t.setDaemon(true);
@@ -41,15 +42,15 @@ public final class ControlPanelWindow {
     private ControlClient client;
     private volatile boolean busy;
 
-    private ControlPanelWindow(String host, int port, String token) {
+    private ControlPanelWindow(String host, int port, SimulationKeys keys) {
         this.host = host;
         this.port = port;
-        this.token = token;
+        this.keys = keys;
     }
 
     /** Opens the window for the Environment at host:port. */
-    public static ControlPanelWindow open(String host, int port, String token) throws Exception {
-        ControlPanelWindow w = new ControlPanelWindow(host, port, token);
+    public static ControlPanelWindow open(String host, int port, SimulationKeys keys) throws Exception {
+        ControlPanelWindow w = new ControlPanelWindow(host, port, keys);
         SwingUtilities.invokeAndWait(w::build);
         return w;
     }
@@ -145,7 +146,7 @@ public final class ControlPanelWindow {
 
     private ControlClient client() throws IOException {
         if (client == null) {
-            client = new ControlClient(host, port, token, 600_000);
+            client = new ControlClient(host, port, keys, 600_000);
         }
         return client;
     }

@@ -23,7 +23,7 @@ import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
-import robosim.protocol.SharedSecret;
+import robosim.protocol.SimulationKeys;
 
 /**
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
@@ -102,10 +102,6 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "-1 = none).")
     int controlPort;
 
-    @Option(names = "--control-token", description = "A secret the control port asks for before any request "
-            + "(default: the environment variable ROBOSIM_CONTROL_TOKEN; required when --bind is not loopback).")
-    String controlToken;
-
     @Option(names = "--start-paused", description = "Once every client is there, wait for start (or step N) "
             + "from the control port.")
     boolean startPaused;
@@ -159,15 +155,9 @@ public final class EnvironmentMain implements Callable<Integer> {
             return 2;
         }
         InetAddress bindAddress = InetAddress.getByName(bind);
-        String token = controlToken != null ? controlToken : System.getenv("ROBOSIM_CONTROL_TOKEN");
-        if (controlPort >= 0 && !bindAddress.isLoopbackAddress() && (token == null || token.isBlank())) {
-            System.err.println("environment: --bind " + bind + " opens the control port beyond this machine: give a "
-                    + "token with --control-token or ROBOSIM_CONTROL_TOKEN (or turn the port off with --control-port -1)");
-            return 2;
-        }
-        SharedSecret secret;
+        SimulationKeys keys;
         try {
-            secret = SharedSecret.fromEnvironment();
+            keys = SimulationKeys.fromEnvironment();
         } catch (IOException e) {
             System.err.println("environment: " + e.getMessage());
             return 2;
@@ -177,14 +167,13 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "would let a stranger hold a connection for ever");
             return 2;
         }
-        if (secret == null && !bindAddress.isLoopbackAddress()) {
-            System.err.println("environment: --bind " + bind + " opens the robot, viewer and geometry ports beyond this "
-                    + "machine: give every process a shared secret with ROBOSIM_SECRET_FILE (scripts/make-keys.sh "
-                    + "makes one) or ROBOSIM_SECRET");
+        if ((keys == null || keys.tls() == null) && !bindAddress.isLoopbackAddress()) {
+            System.err.println("environment: --bind " + bind + " opens every port beyond this machine: set ROBOSIM_KEYS "
+                    + "to a directory made by scripts/make-keys.sh (TLS and the shared secret) for every process");
             return 2;
         }
         Settings settings = Settings.builder()
-                .ports(bindAddress, robotPort, viewerPort, geometryPort).secret(secret)
+                .ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
                 .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
                 .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
@@ -202,7 +191,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         try {
             host.open();
             if (controlPort >= 0) {
-                control = new ControlServer(host, token, directories);
+                control = new ControlServer(host, keys, directories);
                 control.start(bindAddress, controlPort);
             }
         } catch (BindException e) {

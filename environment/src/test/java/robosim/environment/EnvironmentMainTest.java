@@ -64,25 +64,17 @@ class EnvironmentMainTest {
     }
 
     @Test
-    void listeningBeyondLoopbackNeedsAControlToken() throws Exception {
-        Result r = run("../test-envs/test.xml", "--bind", "0.0.0.0", "--robot-port", "0", "--viewer-port", "0",
-                "--geometry-port", "0", "--control-port", "0");
-        assertEquals(2, r.code());
-        assertTrue(r.err().strip().startsWith("environment: --bind 0.0.0.0 opens the control port beyond this machine: "
-                + "give a token with --control-token"), r.err());
-    }
-
-    @Test
-    void listeningBeyondLoopbackNeedsASharedSecret() throws Exception {
-        // (a developer who exported a secret, as the README says, would start a real Environment here)
-        org.junit.jupiter.api.Assumptions.assumeTrue(System.getenv("ROBOSIM_SECRET_FILE") == null
-                && System.getenv("ROBOSIM_SECRET") == null, "a shared secret is set in this shell");
-        Result r = run("../test-envs/test.xml", "--bind", "0.0.0.0", "--robot-port", "0", "--viewer-port", "0",
-                "--geometry-port", "0", "--control-port", "-1");
-        assertEquals(2, r.code());
-        assertEquals("environment: --bind 0.0.0.0 opens the robot, viewer and geometry ports beyond this machine: give "
-                + "every process a shared secret with ROBOSIM_SECRET_FILE (scripts/make-keys.sh makes one) or "
-                + "ROBOSIM_SECRET", r.err().strip());
+    void listeningBeyondLoopbackNeedsTheSimulationKeys() throws Exception {
+        // (a developer who exported keys, as the README says, would start a real Environment here)
+        org.junit.jupiter.api.Assumptions.assumeTrue(System.getenv("ROBOSIM_KEYS") == null, "keys are set in this shell");
+        for (String control : new String[] {"0", "-1"}) {
+            Result r = run("../test-envs/test.xml", "--bind", "0.0.0.0", "--robot-port", "0", "--viewer-port", "0",
+                    "--geometry-port", "0", "--control-port", control);
+            assertEquals(2, r.code());
+            assertEquals("environment: --bind 0.0.0.0 opens every port beyond this machine: set ROBOSIM_KEYS to a "
+                    + "directory made by scripts/make-keys.sh (TLS and the shared secret) for every process",
+                    r.err().strip());
+        }
     }
 
     @org.junit.jupiter.params.ParameterizedTest

@@ -12,7 +12,7 @@ import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.GeometryWorld;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.ProtocolException;
-import robosim.protocol.SharedSecret;
+import robosim.protocol.SimulationKeys;
 import robosim.protocol.SimulationEnd;
 
 /**
@@ -24,15 +24,15 @@ public final class GeometryClient {
 
     private final ObjectConnection connection;
     private long steps;
-    private final SharedSecret secret;
+    private final SimulationKeys secret;
 
     public GeometryClient(Socket socket, int resetEvery) throws IOException {
-        this(socket, resetEvery, SharedSecret.fromEnvironment());
+        this(socket, resetEvery, SimulationKeys.fromEnvironment());
     }
 
     /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
-    public GeometryClient(Socket socket, int resetEvery, SharedSecret secret) throws IOException {
-        this.connection = new ObjectConnection(socket, resetEvery);
+    public GeometryClient(Socket socket, int resetEvery, SimulationKeys secret) throws IOException {
+        this.connection = ObjectConnection.client(socket, resetEvery, secret);
         this.secret = secret;
     }
 
@@ -41,7 +41,7 @@ public final class GeometryClient {
         try (connection) {
             connection.write(new GeometryHello());
             connection.flush();
-            Externalizable first = SharedSecret.answerChallenge(connection, secret, "geometry");
+            Externalizable first = SimulationKeys.answerChallenge(connection, secret, "geometry");
             if (first instanceof SimulationEnd end) {
                 return "refused by the Environment: " + end.reason();
             }

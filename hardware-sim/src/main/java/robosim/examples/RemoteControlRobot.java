@@ -14,6 +14,7 @@ import io.netty.handler.codec.LineBasedFrameDecoder;
 import io.netty.handler.codec.TooLongFrameException;
 import io.netty.handler.codec.string.StringDecoder;
 import io.netty.handler.codec.string.StringEncoder;
+import io.netty.handler.ssl.SslHandler;
 import java.net.InetSocketAddress;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
@@ -21,11 +22,14 @@ import java.util.Locale;
 import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.api.Message;
 import robosim.api.Robot;
 import robosim.api.RobotControl;
+import robosim.protocol.LineProof;
+import robosim.protocol.SimulationKeys;
 
 /**
  * A robot a person or a program drives. Commands are text: {@code forward MM}, {@code back MM},
@@ -36,7 +40,11 @@ import robosim.api.RobotControl;
  *   one command per line; the Remote Control connects there). The file is the system property
  *   {@code robosim.robotInfo}, else the environment variable {@code ROBOSIM_ROBOT_INFO}, else
  *   {@code test-envs/RobotInfo.xml}. Each command is answered with one line when it is done:
- *   {@code done forward 750 x=... y=... heading=...}, or {@code error ...} at once;</li>
+ *   {@code done forward 750 x=... y=... heading=...}, or {@code error ...} at once. With the
+ *   simulation's keys ({@code ROBOSIM_KEYS}, see {@link SimulationKeys}) a connection proves the shared
+ *   secret first ({@code challenge}, answered {@code nonce HEX}; {@code prove HEX}, answered
+ *   {@code proven}) and speaks TLS when they hold the key pair; without TLS the link listens on loopback
+ *   only. At most {@link #MAX_CONNECTIONS} connections at once;</li>
  *   <li>as messages from other robots, answered with a message {@code done COMMAND}.</li>
  * </ul>
  * Commands run one at a time in arrival order; between them the robot stands still, checking for new
@@ -48,11 +56,30 @@ public final class RemoteControlRobot implements RobotControl {
     public static final int QUEUE = 16;
     /** The longest command line, bytes. */
     public static final int MAX_LINE = 256;
+    /** Link connections held at once; one more is closed at once. */
+    public static final int MAX_CONNECTIONS = 8;
+    /** A connection that has not proved the secret this long after connecting is closed, s. */
+    public static final int PROOF_DEADLINE_S = 10;
+    /** The role this link's proofs are made for. */
+    public static final String ROLE = "remote-control";
 
     private record Pending(String command, Channel from) {
     }
 
     private final BlockingQueue<Pending> queue = new ArrayBlockingQueue<>(QUEUE);
+    private final AtomicInteger connections = new AtomicInteger();
+    /** The simulation's keys as given, or null to take them from the environment ({@code ROBOSIM_KEYS}). */
+    private final SimulationKeys givenKeys;
+
+    /** As a robot process runs it: its keys from the environment. */
+    public RemoteControlRobot() {
+        this.givenKeys = null;
+    }
+
+    /** With these keys (for a robot in a program that holds them). */
+    public RemoteControlRobot(SimulationKeys keys) {
+        this.givenKeys = keys;
+    }
 
     @Override
     public void run(Robot robot) throws InterruptedException {
@@ -98,17 +125,41 @@ public final class RemoteControlRobot implements RobotControl {
             LOG.warn("{}: not in {}; taking commands by message only", name, file);
             return null;
         }
+        SimulationKeys keys;
+        InetSocketAddress address;
+        try {
+            keys = givenKeys != null ? givenKeys : SimulationKeys.fromEnvironment();
+            address = new InetSocketAddress(me.host(), me.port());
+        } catch (java.io.IOException | IllegalArgumentException e) {
+            LOG.error("{}: {}; taking commands by message only", name, e.getMessage());
+            return null;
+        }
+        if (!address.isUnresolved() && !address.getAddress().isLoopbackAddress() && (keys == null || keys.tls() == null)) {
+            LOG.error("{}: {} puts its link on {}, beyond this machine: set ROBOSIM_KEYS (scripts/make-keys.sh) for "
+                    + "TLS and the shared secret; taking commands by message only", name, file, me.host());
+            return null;
+        }
+        robosim.protocol.Tls tls = keys == null ? null : keys.tls();
         EventLoopGroup group = new NioEventLoopGroup(1);
         try {
             new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
                     .childHandler(new ChannelInitializer<SocketChannel>() {
                         @Override
                         protected void initChannel(SocketChannel ch) {
+                            if (connections.incrementAndGet() > MAX_CONNECTIONS) {
+                                connections.decrementAndGet();
+                                ch.close();
+                                return;
+                            }
+                            ch.closeFuture().addListener(f -> connections.decrementAndGet());
+                            if (tls != null) {
+                                ch.pipeline().addLast(new SslHandler(tls.serverEngine()));
+                            }
                             ch.pipeline().addLast(new LineBasedFrameDecoder(MAX_LINE, true, true),
                                     new StringDecoder(StandardCharsets.UTF_8), new StringEncoder(StandardCharsets.UTF_8),
-                                    new LinkHandler());
+                                    new LinkHandler(new LineProof(keys, ROLE)));
                         }
-                    }).bind(new InetSocketAddress(me.host(), me.port())).sync();
+                    }).bind(address).sync();
         } catch (Exception e) {
             group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
             LOG.error("{}: cannot listen on {}:{} from {}: {}; taking commands by message only", name, me.host(),
@@ -121,8 +172,40 @@ public final class RemoteControlRobot implements RobotControl {
 
     /** Netty's I/O thread: checks each line and queues it for the control thread. */
     private final class LinkHandler extends SimpleChannelInboundHandler<String> {
+        private final LineProof proof;
+
+        LinkHandler(LineProof proof) {
+            this.proof = proof;
+        }
+
+        @Override
+        public void channelActive(ChannelHandlerContext ctx) {
+            if (!proof.proven()) {
+                ctx.executor().schedule(() -> {
+                    if (!proof.proven()) {
+                        ctx.close();
+                    }
+                }, PROOF_DEADLINE_S, TimeUnit.SECONDS);
+            }
+            ctx.fireChannelActive();
+        }
+
         @Override
         protected void channelRead0(ChannelHandlerContext ctx, String line) {
+            String[] w = line.strip().split("\\s+", 2);
+            if (w[0].equals(LineProof.CHALLENGE)) {
+                reply(ctx.channel(), "nonce " + proof.challenge());
+                return;
+            }
+            if (w[0].equals(LineProof.PROVE)) {
+                reply(ctx.channel(), proof.prove(w.length > 1 ? w[1] : "") ? "proven"
+                        : "error that is not the proof for the last challenge");
+                return;
+            }
+            if (!proof.proven()) {
+                reply(ctx.channel(), "error prove the shared secret first: challenge, then prove HEX");
+                return;
+            }
             String command = parse(line);
             if (command == null) {
                 reply(ctx.channel(), "error not a command: \"" + abbreviate(line.strip())

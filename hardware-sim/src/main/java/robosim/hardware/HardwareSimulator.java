@@ -14,7 +14,7 @@ import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;
-import robosim.protocol.SharedSecret;
+import robosim.protocol.SimulationKeys;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -52,17 +52,17 @@ public final class HardwareSimulator {
      * @throws ProtocolException naming the Environment's reason if the robot is refused
      */
     public void connect(Socket socket, int resetEvery) throws IOException {
-        connect(socket, resetEvery, SharedSecret.fromEnvironment());
+        connect(socket, resetEvery, SimulationKeys.fromEnvironment());
     }
 
     /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
-    public void connect(Socket socket, int resetEvery, SharedSecret secret) throws IOException {
-        connection = new ObjectConnection(socket, resetEvery);
+    public void connect(Socket socket, int resetEvery, SimulationKeys secret) throws IOException {
+        connection = ObjectConnection.client(socket, resetEvery, secret);
         connection.write(new RobotHello(name, type.properties()));
         connection.flush();
         Externalizable answer;
         try {
-            answer = SharedSecret.answerChallenge(connection, secret, "robot");
+            answer = SimulationKeys.answerChallenge(connection, secret, "robot");
         } catch (IOException e) {
             connection.close(); // (e.g. asked for a secret this process does not have)
             throw e;

@@ -6,17 +6,17 @@ import java.io.ObjectOutput;
 
 /**
  * Environment -> client, right after the client's hello when the Environment has a shared secret: a
- * fresh random nonce the client must answer with a {@link Proof} ({@link SharedSecret}).
+ * fresh random nonce the client must answer with a {@link Proof} ({@link SimulationKeys}).
  */
 public final class Challenge implements java.io.Externalizable {
-    private byte[] nonce = new byte[SharedSecret.NONCE_BYTES];
+    private byte[] nonce = new byte[SimulationKeys.NONCE_BYTES];
 
     public Challenge() {
     }
 
     public Challenge(byte[] nonce) {
-        if (nonce.length != SharedSecret.NONCE_BYTES) {
-            throw new IllegalArgumentException("a nonce has " + SharedSecret.NONCE_BYTES + " bytes, got " + nonce.length);
+        if (nonce.length != SimulationKeys.NONCE_BYTES) {
+            throw new IllegalArgumentException("a nonce has " + SimulationKeys.NONCE_BYTES + " bytes, got " + nonce.length);
         }
         this.nonce = nonce.clone();
     }

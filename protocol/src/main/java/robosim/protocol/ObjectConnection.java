@@ -31,6 +31,8 @@ public final class ObjectConnection implements Closeable {
     private static final int BUFFER_BYTES = 64 * 1024;
 
     private final Socket socket;
+    /** The TCP socket under {@link #socket} (the same socket without TLS). */
+    private final Socket transport;
     private final ObjectOutputStream out;
     private final ObjectInputStream in;
     private final MessageBudgetInputStream budget;
@@ -46,15 +48,35 @@ public final class ObjectConnection implements Closeable {
      * @param resetEvery messages between resets; 0 never resets (for measurement only)
      */
     public ObjectConnection(Socket socket, int resetEvery) throws IOException {
-        this(socket, resetEvery, new ProtocolFilter());
+        this(socket, socket, resetEvery, new ProtocolFilter());
+    }
+
+    /**
+     * The client's end over the connected {@code raw} socket: TLS first (handshake done) when {@code keys}
+     * hold the simulation's key pair, else the socket as it is.
+     */
+    public static ObjectConnection client(Socket raw, int resetEvery, SimulationKeys keys) throws IOException {
+        Tls tls = keys == null ? null : keys.tls();
+        return new ObjectConnection(tls == null ? raw : tls.client(raw), raw, resetEvery, new ProtocolFilter());
+    }
+
+    /** The Environment's end over the accepted {@code raw} socket: TLS first when {@code keys} hold a key pair. */
+    public static ObjectConnection server(Socket raw, int resetEvery, SimulationKeys keys) throws IOException {
+        Tls tls = keys == null ? null : keys.tls();
+        return new ObjectConnection(tls == null ? raw : tls.server(raw), raw, resetEvery, new ProtocolFilter());
     }
 
     ObjectConnection(Socket socket, int resetEvery, ProtocolFilter filter) throws IOException {
+        this(socket, socket, resetEvery, filter);
+    }
+
+    private ObjectConnection(Socket socket, Socket transport, int resetEvery, ProtocolFilter filter) throws IOException {
         this.filter = filter;
         if (resetEvery < 0) {
             throw new IllegalArgumentException("resetEvery must be >= 0, got " + resetEvery);
         }
         this.socket = socket;
+        this.transport = transport;
         this.resetEvery = resetEvery;
         try {
             socket.setTcpNoDelay(true);
@@ -207,8 +229,13 @@ public final class ObjectConnection implements Closeable {
         closeQuietly();
     }
 
+    /**
+     * Closes the TCP socket first: over TLS, closing only the TLS socket would wait for a write another
+     * thread has blocked (a stuck peer), where closing the socket under it ends that write at once.
+     */
     private void closeQuietly() {
         try {
+            transport.close();
             socket.close();
         } catch (IOException ignored) {
             // closing: nothing left to tell the peer

@@ -33,12 +33,12 @@ public final class ViewerClient implements Closeable {
     }
 
     private final ObjectConnection connection;
-    private final SharedSecret secret;
+    private final SimulationKeys secret;
     private final CountDownLatch done = new CountDownLatch(1);
     private volatile SimulationEnd end;
     private volatile IOException failure;
 
-    private ViewerClient(ObjectConnection connection, SharedSecret secret) {
+    private ViewerClient(ObjectConnection connection, SimulationKeys secret) {
         this.connection = connection;
         this.secret = secret;
     }
@@ -56,18 +56,18 @@ public final class ViewerClient implements Closeable {
     /** Connects and sends the given hello (for a live viewer with an update-rate cap). */
     public static ViewerClient connect(String host, int port, ViewerHello hello, long timeoutMs)
             throws IOException, InterruptedException {
-        return connect(host, port, hello, timeoutMs, SharedSecret.fromEnvironment());
+        return connect(host, port, hello, timeoutMs, SimulationKeys.fromEnvironment());
     }
 
     /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
-    public static ViewerClient connect(String host, int port, ViewerHello hello, long timeoutMs, SharedSecret secret)
+    public static ViewerClient connect(String host, int port, ViewerHello hello, long timeoutMs, SimulationKeys secret)
             throws IOException, InterruptedException {
         Socket s = Connector.connect(host, port, timeoutMs);
         if (s == null) {
             throw new IOException("cannot connect to the viewer port " + host + ":" + port);
         }
         try {
-            ObjectConnection c = new ObjectConnection(s, ObjectConnection.DEFAULT_RESET_EVERY);
+            ObjectConnection c = ObjectConnection.client(s, ObjectConnection.DEFAULT_RESET_EVERY, secret);
             c.write(hello);
             c.flush();
             return new ViewerClient(c, secret);
@@ -86,7 +86,7 @@ public final class ViewerClient implements Closeable {
 
     private void read(Listener listener) {
         try (connection) {
-            Externalizable first = SharedSecret.answerChallenge(connection, secret, "viewer");
+            Externalizable first = SimulationKeys.answerChallenge(connection, secret, "viewer");
             if (first instanceof SimulationEnd e) {
                 end = e;
                 listener.end(e);

@@ -39,11 +39,18 @@ public final class RemoteControlMain implements Callable<Integer> {
             System.err.println("remote-control: --step-mm must be in (0, 100000] and --turn-deg in (0, 360]");
             return 2;
         }
+        robosim.protocol.SimulationKeys keys;
+        try {
+            keys = robosim.protocol.SimulationKeys.fromEnvironment();
+        } catch (java.io.IOException e) {
+            System.err.println("remote-control: " + e.getMessage());
+            return 2;
+        }
         if (java.awt.GraphicsEnvironment.isHeadless()) {
             System.err.println("remote-control: needs a display (set DISPLAY)");
             return 2;
         }
-        RemoteControlWindow.open(robots, stepMm, turnDeg);
+        RemoteControlWindow.open(robots, stepMm, turnDeg, keys);
         windowOpened = true;
         return 0;
     }

@@ -19,6 +19,7 @@ import javax.swing.SwingUtilities;
 import javax.swing.Timer;
 import javax.swing.WindowConstants;
 import robosim.examples.RobotInfo;
+import robosim.protocol.SimulationKeys;
 
 /**
  * The Remote Control window. It drives one robot at a time: the arrows send forward / back /
@@ -35,16 +36,18 @@ public final class RemoteControlWindow {
     private final ReplyLog log = new ReplyLog(logArea, ReplyLog.MAX_LINES);
     private int current;
 
-    private RemoteControlWindow(List<RobotInfo> robots, double stepMm, double turnDeg) {
+    private RemoteControlWindow(List<RobotInfo> robots, double stepMm, double turnDeg, SimulationKeys keys) {
         this.stepMm = stepMm;
         this.turnDeg = turnDeg;
         for (RobotInfo r : robots) {
-            links.add(new RobotLink(r, line -> SwingUtilities.invokeLater(() -> log.append(r.name() + ": " + line))));
+            links.add(new RobotLink(r, line -> SwingUtilities.invokeLater(() -> log.append(r.name() + ": " + line)), keys));
         }
     }
 
-    public static RemoteControlWindow open(List<RobotInfo> robots, double stepMm, double turnDeg) throws Exception {
-        RemoteControlWindow w = new RemoteControlWindow(robots, stepMm, turnDeg);
+    /** Opens the window; {@code keys} are the simulation's (null: none, the robots' links are on loopback). */
+    public static RemoteControlWindow open(List<RobotInfo> robots, double stepMm, double turnDeg, SimulationKeys keys)
+            throws Exception {
+        RemoteControlWindow w = new RemoteControlWindow(robots, stepMm, turnDeg, keys);
         SwingUtilities.invokeAndWait(w::build);
         return w;
     }

@@ -9,22 +9,33 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.util.function.Consumer;
+import robosim.examples.RemoteControlRobot;
 import robosim.examples.RobotInfo;
+import robosim.protocol.LineProof;
+import robosim.protocol.SimulationKeys;
 
 /**
  * The link to one {@code RemoteControlRobot}: connects (again and again, while the window is open),
- * sends command lines, and hands each reply line to a listener on its reader thread.
+ * sends command lines, and hands each reply line to a listener on its reader thread. With the
+ * simulation's keys it speaks TLS when they hold the key pair and proves the shared secret before its
+ * first command (see {@code RemoteControlRobot}).
  */
 public final class RobotLink implements Closeable {
     private final RobotInfo robot;
     private final Consumer<String> replies;
-    private volatile Socket socket;
+    private final SimulationKeys keys;
+    /** The TCP socket (TLS runs over it when the keys hold a key pair). */
+    private volatile Socket transport;
+    /** The last failure to link told to the listener, so a robot that keeps refusing is told once. */
+    private String lastFailure = "";
     private volatile OutputStream out;
     private volatile boolean closed;
 
-    public RobotLink(RobotInfo robot, Consumer<String> replies) {
+    /** @param keys the simulation's keys (null: none, the robot's link is on loopback) */
+    public RobotLink(RobotInfo robot, Consumer<String> replies, SimulationKeys keys) {
         this.robot = robot;
         this.replies = replies;
+        this.keys = keys;
     }
 
     public RobotInfo robot() {
@@ -32,7 +43,7 @@ public final class RobotLink implements Closeable {
     }
 
     public boolean connected() {
-        Socket s = socket;
+        Socket s = transport;
         return s != null && s.isConnected() && !s.isClosed();
     }
 
@@ -41,34 +52,82 @@ public final class RobotLink implements Closeable {
         if (connected() || closed) {
             return connected();
         }
+        Socket raw = new Socket();
         try {
-            Socket s = new Socket();
-            s.connect(new InetSocketAddress(robot.host(), robot.port()), 1000);
-            s.setTcpNoDelay(true);
-            out = s.getOutputStream();
-            socket = s;
-            Thread reader = new Thread(() -> read(s), "link[" + robot.name() + "]");
+            raw.connect(new InetSocketAddress(robot.host(), robot.port()), 1000);
+        } catch (IOException e) {
+            closeQuietly(raw);
+            return false; // not listening (yet): the window keeps trying
+        }
+        try {
+            raw.setTcpNoDelay(true);
+            raw.setSoTimeout(PROOF_TIMEOUT_MS);
+            Socket s = keys == null || keys.tls() == null ? raw : keys.tls().client(raw);
+            BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
+            OutputStream o = s.getOutputStream();
+            if (keys != null) {
+                prove(in, o);
+            }
+            raw.setSoTimeout(0);
+            out = o;
+            transport = raw;
+            lastFailure = "";
+            Thread reader = new Thread(() -> read(in, raw), "link[" + robot.name() + "]");
             reader.setDaemon(true);
             reader.start();
             return true;
         } catch (IOException e) {
+            closeQuietly(raw);
+            String failure = "error cannot link to " + robot.host() + ":" + robot.port() + ": " + e.getMessage();
+            if (!failure.equals(lastFailure)) {
+                lastFailure = failure;
+                replies.accept(failure);
+            }
             return false;
         }
     }
 
-    private void read(Socket s) {
-        try (BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8))) {
+    /** How long the robot may take to answer the challenge and the proof, ms. */
+    private static final int PROOF_TIMEOUT_MS = 5000;
+
+    private void prove(BufferedReader in, OutputStream o) throws IOException {
+        o.write((LineProof.CHALLENGE + "\n").getBytes(StandardCharsets.UTF_8));
+        o.flush();
+        String challenge = in.readLine();
+        if (challenge == null || !challenge.startsWith("nonce ")) {
+            throw new IOException("the robot gave no challenge" + (challenge == null ? "" : ": " + abbreviate(challenge)));
+        }
+        o.write((LineProof.answer(keys, RemoteControlRobot.ROLE, challenge.substring(6).strip()) + "\n")
+                .getBytes(StandardCharsets.UTF_8));
+        o.flush();
+        String answer = in.readLine();
+        if (!"proven".equals(answer)) {
+            throw new IOException("the robot refused the proof" + (answer == null ? "" : ": " + abbreviate(answer)));
+        }
+    }
+
+    private static String abbreviate(String s) {
+        String clean = s.replaceAll("\\p{Cntrl}", "?");
+        return clean.length() > 80 ? clean.substring(0, 80) + "..." : clean;
+    }
+
+    private void read(BufferedReader in, Socket raw) {
+        try (in) {
             for (String line = in.readLine(); line != null; line = in.readLine()) {
                 replies.accept(line);
             }
         } catch (IOException ignored) {
             // the robot went away: connected() turns false
         } finally {
-            try {
-                s.close();
-            } catch (IOException ignored) {
-                // closing
-            }
+            closeQuietly(raw);
+        }
+    }
+
+    private static void closeQuietly(Socket s) {
+        try {
+            s.close();
+        } catch (IOException ignored) {
+            // closing
         }
     }
 
@@ -94,14 +153,10 @@ public final class RobotLink implements Closeable {
 
     private void close(boolean forGood) {
         closed |= forGood;
-        Socket s = socket;
-        socket = null;
+        Socket s = transport;
+        transport = null;
         if (s != null) {
-            try {
-                s.close();
-            } catch (IOException ignored) {
-                // closing
-            }
+            closeQuietly(s);
         }
     }
 }

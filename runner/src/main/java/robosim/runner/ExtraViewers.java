@@ -48,12 +48,12 @@ final class ExtraViewers implements AutoCloseable {
             throw new IOException("cannot connect to the viewer port " + port);
         }
         s.setReceiveBufferSize(4096);
-        robosim.protocol.ObjectConnection c = new robosim.protocol.ObjectConnection(s, 256);
+        robosim.protocol.SimulationKeys secret = robosim.protocol.SimulationKeys.fromEnvironment();
+        robosim.protocol.ObjectConnection c = robosim.protocol.ObjectConnection.client(s, 256, secret);
         c.write(new ViewerHello(false));
         c.flush();
-        robosim.protocol.SharedSecret secret = robosim.protocol.SharedSecret.fromEnvironment();
         if (secret != null) { // prove it (and take the snapshot), then never read again
-            robosim.protocol.SharedSecret.answerChallenge(c, secret, "viewer");
+            robosim.protocol.SimulationKeys.answerChallenge(c, secret, "viewer");
         }
         return s;
     }

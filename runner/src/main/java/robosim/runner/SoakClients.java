@@ -10,7 +10,7 @@ import robosim.protocol.ObjectConnection;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
-import robosim.protocol.SharedSecret;
+import robosim.protocol.SimulationKeys;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 import robosim.protocol.ViewerHello;
@@ -22,10 +22,11 @@ final class SoakClients {
 
     /** A robot driven by hand that answers until step {@code silentAt}, then says nothing. */
     static void silentRobot(String name, int port, long silentAt, Consumer<String> faults) {
-        try (ObjectConnection c = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 256)) {
+        try (ObjectConnection c = ObjectConnection.client(new Socket(InetAddress.getLoopbackAddress(), port), 256,
+                SimulationKeys.fromEnvironment())) {
             c.write(new RobotHello(name, RobotModels.AR_ROBOT));
             c.flush();
-            java.io.Externalizable welcome = SharedSecret.answerChallenge(c, SharedSecret.fromEnvironment(), "robot");
+            java.io.Externalizable welcome = SimulationKeys.answerChallenge(c, SimulationKeys.fromEnvironment(), "robot");
             if (!(welcome instanceof RobotWelcome w) || !w.isAccepted()) {
                 faults.accept(name + " was refused");
                 return;
@@ -49,12 +50,12 @@ final class SoakClients {
     static Socket frozenViewer(int port) throws IOException {
         Socket s = new Socket(InetAddress.getLoopbackAddress(), port);
         s.setReceiveBufferSize(4096);
-        ObjectConnection c = new ObjectConnection(s, 256);
+        SimulationKeys secret = SimulationKeys.fromEnvironment();
+        ObjectConnection c = ObjectConnection.client(s, 256, secret);
         c.write(new ViewerHello(false));
         c.flush();
-        SharedSecret secret = SharedSecret.fromEnvironment();
         if (secret != null) { // prove it (and take the snapshot), then never read again
-            SharedSecret.answerChallenge(c, secret, "viewer");
+            SimulationKeys.answerChallenge(c, secret, "viewer");
         }
         return s; // never read again
     }

@@ -17,6 +17,7 @@ import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
+import robosim.protocol.SimulationKeys;
 
 /** An Environment host with its control port, on ephemeral ports; paused until told. */
 final class ControlFixture implements AutoCloseable {
@@ -28,18 +29,19 @@ final class ControlFixture implements AutoCloseable {
     /** Every robot's socket, in file order, for each call of {@link #robots}: a test may close one. */
     final List<Socket> sockets = new ArrayList<>();
 
-    ControlFixture(Path file, String token) throws Exception {
-        this(file, token, 0);
+    /** @param keys the simulation's keys (null: none) */
+    ControlFixture(Path file, SimulationKeys keys) throws Exception {
+        this(file, keys, 0);
     }
 
     /** @param speed the run's pace in times real time (0: as fast as possible) */
-    ControlFixture(Path file, String token, double speed) throws Exception {
+    ControlFixture(Path file, SimulationKeys keys, double speed) throws Exception {
         Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
                 .resetEvery(64).speed(speed).build();
         host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
         host.open();
         // load may read the tests' files and the bundled environments
-        control = new ControlServer(host, token, new EnvironmentDirectories(
+        control = new ControlServer(host, keys, new EnvironmentDirectories(
                 List.of(file.toAbsolutePath().getParent(), InJvmSimulation.env("test.xml").getParent())));
         control.start(InetAddress.getLoopbackAddress(), 0);
         running = CompletableFuture.supplyAsync(() -> {
@@ -51,8 +53,8 @@ final class ControlFixture implements AutoCloseable {
         });
     }
 
-    ControlClient client(String token) throws IOException {
-        return new ControlClient("127.0.0.1", control.port(), token, TIMEOUT_MS);
+    ControlClient client(SimulationKeys keys) throws IOException {
+        return new ControlClient("127.0.0.1", control.port(), keys, TIMEOUT_MS);
     }
 
     /** Connects every robot of the current file, each running BackAndForth; their end reasons. */

@@ -21,6 +21,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.control.ControlClient;
+import robosim.protocol.SimulationKeys;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
 
@@ -128,13 +129,15 @@ class ControlPortAttacksTest {
     }
 
     @Test
-    void withATokenSetAConnectionThatDoesNotGiveItIsClosed(@TempDir Path dir) throws Exception {
-        try (ControlFixture f = new ControlFixture(three(dir), "a token for this test");
-                Socket silent = new Socket(InetAddress.getLoopbackAddress(), f.control.port())) {
-            silent.setSoTimeout(ControlFixture.TIMEOUT_MS);
-            assertEquals(-1, silent.getInputStream().read(), "closed " + ControlServer.TOKEN_DEADLINE_S
-                    + " s after connecting without the token");
-            try (ControlClient c = f.client("a token for this test")) {
+    void withKeysAConnectionThatDoesNotProveTheSecretIsClosed(@TempDir Path dir) throws Exception {
+        SimulationKeys keys = TestKeys.keys(dir, "keys");
+        try (ControlFixture f = new ControlFixture(three(dir), keys);
+                Socket raw = new Socket(InetAddress.getLoopbackAddress(), f.control.port());
+                Socket silent = keys.tls().client(raw)) {
+            raw.setSoTimeout(ControlFixture.TIMEOUT_MS);
+            assertEquals(-1, silent.getInputStream().read(), "closed " + ControlServer.PROOF_DEADLINE_S
+                    + " s after connecting (over TLS) without proving the secret");
+            try (ControlClient c = f.client(keys)) {
                 assertTrue(c.request("status").path("ok").asBoolean(), "one that gives it is served");
             }
         }

@@ -2,6 +2,8 @@ package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -18,7 +20,9 @@ import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import robosim.control.ControlClient;
+import robosim.protocol.SimulationKeys;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
 
@@ -147,17 +151,41 @@ class ControlPortTest {
     }
 
     @Test
-    void withATokenEveryRequestWaitsForIt() throws Exception {
-        try (ControlFixture f = new ControlFixture(THREE, "s3cret")) {
-            try (ControlClient raw = f.client(null)) {
-                assertTrue(raw.request("status").path("error").asText().contains("a token is required first"));
-                assertTrue(raw.request("token guess").path("error").asText().contains("wrong token"));
-                JsonNode still = raw.request("status");
-                assertFalse(still.path("ok").asBoolean(), "no status without the token: " + still);
-                assertTrue(raw.request("stop").path("error").asText().contains("a token is required first"));
+    void withKeysEveryRequestWaitsForTheProofOverTls(@TempDir Path dir) throws Exception {
+        SimulationKeys keys = TestKeys.keys(dir, "keys");
+        try (ControlFixture f = new ControlFixture(THREE, keys)) {
+            // no keys at all: TLS never lets it in
+            IOException plain = assertThrows(IOException.class, () -> {
+                try (ControlClient c = f.client(null)) {
+                    c.request("status");
+                }
+            });
+            assertNotNull(plain.getMessage());
+            // another simulation's keys: refused at TLS (its key pair is not this one)
+            IOException other = assertThrows(IOException.class, () -> f.client(TestKeys.keys(dir, "other")).close());
+            assertTrue(other.getMessage().contains("TLS handshake with 127.0.0.1:" + f.control.port() + " failed"),
+                    other.getMessage());
+            // this simulation's key pair but no proof yet: nothing but challenge and prove is served
+            try (Socket raw = new Socket(InetAddress.getLoopbackAddress(), f.control.port());
+                    Socket tls = keys.tls().client(raw)) {
+                raw.setSoTimeout(ControlFixture.TIMEOUT_MS);
+                java.io.BufferedReader in = new java.io.BufferedReader(
+                        new java.io.InputStreamReader(tls.getInputStream(), StandardCharsets.UTF_8));
+                OutputStream out = tls.getOutputStream();
+                out.write("status\nprove 00\nchallenge\nprove ".getBytes(StandardCharsets.UTF_8));
+                out.write(("00".repeat(32) + "\nstop\n").getBytes(StandardCharsets.UTF_8));
+                out.flush();
+                assertTrue(in.readLine().contains("prove the shared secret first"));
+                assertTrue(in.readLine().contains("not the proof for the last challenge"));
+                assertTrue(in.readLine().contains("\"nonce\""));
+                assertTrue(in.readLine().contains("not the proof for the last challenge"), "a wrong proof");
+                assertTrue(in.readLine().contains("prove the shared secret first"), "still not proven: no stop");
             }
-            try (ControlClient c = f.client("s3cret")) {
+            try (ControlClient c = f.client(keys)) {
                 assertEquals("WAITING", ok(c, "status").path("state").asText());
+                JsonNode challenge = c.request("challenge");
+                assertEquals(64, challenge.path("nonce").asText().length(), challenge.toString());
+                assertError(c, "prove " + "00".repeat(32), "not the proof");
             }
         }
     }

@@ -88,7 +88,7 @@ class RemoteControlTest {
             // a robot sends its first request only once its control code has started, and so its listener:
             // after the first step every link is up
             assertTrue(firstStep.await(LONG, TimeUnit.SECONDS));
-            try (RobotLink link = new RobotLink(rc1, replies::add)) {
+            try (RobotLink link = new RobotLink(rc1, replies::add, null)) {
                 assertTrue(link.ensureConnected(), "rc1 listens on its RobotInfo port");
                 assertTrue(link.send("forward 750"));
                 String done = replies.poll(LONG, TimeUnit.SECONDS);
@@ -122,7 +122,7 @@ class RemoteControlTest {
                 String line = in.readLine();
                 assertTrue(line != null && line.startsWith("error line longer than"), line);
             }
-            try (RobotLink link = new RobotLink(rc1, replies::add)) {
+            try (RobotLink link = new RobotLink(rc1, replies::add, null)) {
                 assertTrue(link.ensureConnected());
                 assertTrue(link.send("left 90"));
                 String done = replies.poll(LONG, TimeUnit.SECONDS);

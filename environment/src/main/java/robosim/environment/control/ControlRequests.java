@@ -3,18 +3,19 @@ package robosim.environment.control;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.net.RunStatus;
+import robosim.protocol.LineProof;
+import robosim.protocol.SimulationKeys;
 
 /**
  * What each control-port request does, and its JSON reply ({@code {"ok":true,...}} or
- * {@code {"ok":false,"error":"..."}}): {@code token SECRET}, {@code status}, {@code start}, {@code stop},
+ * {@code {"ok":false,"error":"..."}}): {@code challenge} and {@code prove HEX} (the shared secret's
+ * {@link LineProof}, required first when the Environment has keys), {@code status}, {@code start}, {@code stop},
  * {@code pause}, {@code resume}, {@code step N}, {@code load FILE} (only under the
  * {@link EnvironmentDirectories}), {@code shutdown}. Called by the control threads, one request of a
  * connection at a time; a bad request gets an error reply and never touches the simulation.
@@ -25,25 +26,42 @@ final class ControlRequests {
     /** How long a waiting request (step N, pause) may take before it answers anyway, s. */
     private static final long WAIT_S = 600;
 
-    /** One connection's standing: whether it has given the token. */
+    /** The role the control port's proofs are made for. */
+    static final String ROLE = "control";
+    /** The reply to a request made before the proof. */
+    static final String PROVE_FIRST = "prove the shared secret first: challenge, then prove HEX (the Control "
+            + "Panel does it when ROBOSIM_KEYS or ROBOSIM_SECRET_FILE is set)";
+
+    /** One connection's standing: whether it has proved the shared secret (one control thread at a time). */
     static final class Caller {
-        volatile boolean authorised;
+        private final LineProof proof;
+
+        Caller(LineProof proof) {
+            this.proof = proof;
+        }
+
+        synchronized boolean proven() {
+            return proof.proven();
+        }
     }
 
     private final EnvironmentHost host;
-    private final String token;
+    private final SimulationKeys keys;
     private final EnvironmentDirectories directories;
 
-    ControlRequests(EnvironmentHost host, String token, EnvironmentDirectories directories) {
+    ControlRequests(EnvironmentHost host, SimulationKeys keys, EnvironmentDirectories directories) {
         this.host = host;
-        this.token = token;
+        this.keys = keys;
         this.directories = directories;
     }
 
     Caller caller() {
-        Caller c = new Caller();
-        c.authorised = token == null;
-        return c;
+        return new Caller(new LineProof(keys, ROLE));
+    }
+
+    /** True for the requests a caller may make before it has proved the secret. */
+    static boolean beforeProof(String verb) {
+        return verb.equals(LineProof.CHALLENGE) || verb.equals(LineProof.PROVE);
     }
 
     /** The request's verb, lower case. */
@@ -61,16 +79,25 @@ final class ControlRequests {
         String verb = verb(request);
         String arg = w.length > 1 ? w[1].strip() : "";
         try {
-            if (verb.equals("token")) {
-                caller.authorised = token == null || MessageDigest.isEqual(token.getBytes(StandardCharsets.UTF_8),
-                        arg.getBytes(StandardCharsets.UTF_8));
-                if (!caller.authorised) {
-                    LOG.warn("control port: a wrong token was given");
+            if (verb.equals(LineProof.CHALLENGE)) {
+                ObjectNode n = ok(null);
+                synchronized (caller) {
+                    n.put("nonce", caller.proof.challenge());
                 }
-                return caller.authorised ? ok("authorised") : error("wrong token");
+                return n;
             }
-            if (!caller.authorised) {
-                return error("a token is required first: token SECRET");
+            if (verb.equals(LineProof.PROVE)) {
+                boolean proven;
+                synchronized (caller) {
+                    proven = caller.proof.prove(arg);
+                }
+                if (!proven) {
+                    LOG.warn("control port: a connection did not prove the shared secret");
+                }
+                return proven ? ok("proven") : error("that is not the proof for the last challenge");
+            }
+            if (!caller.proven()) {
+                return error(PROVE_FIRST);
             }
             return switch (verb) {
                 case "status" -> status();
@@ -97,7 +124,7 @@ final class ControlRequests {
                 }
                 case "shutdown" -> ok(host.shutdown());
                 default -> error("unknown request \"" + abbreviate(verb) + "\" (requests: status, start, stop, "
-                        + "pause, resume, step N, load FILE, shutdown, token SECRET)");
+                        + "pause, resume, step N, load FILE, shutdown, challenge, prove HEX)");
             };
         } catch (EnvironmentFileException | IllegalArgumentException | IOException e) {
             return error(abbreviate(e.getMessage(), 400));

@@ -15,6 +15,7 @@ import io.netty.handler.codec.LineBasedFrameDecoder;
 import io.netty.handler.codec.TooLongFrameException;
 import io.netty.handler.codec.string.StringDecoder;
 import io.netty.handler.codec.string.StringEncoder;
+import io.netty.handler.ssl.SslHandler;
 import io.netty.handler.timeout.IdleStateEvent;
 import io.netty.handler.timeout.IdleStateHandler;
 import io.netty.handler.timeout.WriteTimeoutHandler;
@@ -33,6 +34,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.protocol.SimulationKeys;
 
 /**
  * The control port (netty): one request per line, one JSON reply per line, always in the order of the
@@ -44,8 +46,10 @@ import org.slf4j.LoggerFactory;
  * error and the connection is closed), {@link #MAX_CONNECTIONS} connections at once (one more is closed
  * at once), a connection with nothing in hand that sends no whole request for {@link #IDLE_MINUTES}
  * minutes is closed, and so is one that does not take a reply within {@link #WRITE_TIMEOUT_S} seconds.
- * With a token set, every request before a correct {@code token} line is refused, and a connection that
- * has not given it within {@link #TOKEN_DEADLINE_S} seconds is closed.
+ * With keys, every request before the shared secret's proof ({@code challenge}, then {@code prove HEX}) is
+ * refused, and a connection that has not proved it within {@link #PROOF_DEADLINE_S} seconds is closed; when
+ * the keys hold the simulation's key pair the port speaks only TLS (mutual, the key pair pinned: see
+ * {@link robosim.protocol.Tls}).
  */
 public final class ControlServer implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ControlServer.class);
@@ -59,10 +63,12 @@ public final class ControlServer implements Closeable {
     public static final int IDLE_MINUTES = 5;
     /** A reply the client does not take within this long closes its connection, s. */
     public static final int WRITE_TIMEOUT_S = 30;
-    /** With a token set, a connection that has not given it this long after connecting is closed, s. */
-    public static final int TOKEN_DEADLINE_S = 10;
+    /** With keys, a connection that has not proved the secret this long after connecting is closed, s. */
+    public static final int PROOF_DEADLINE_S = 10;
 
     private final ControlRequests requests;
+    /** TLS for every connection, or null (keys without a key pair, or none: loopback only). */
+    private final robosim.protocol.Tls tls;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
             (java.util.concurrent.ThreadFactory) r -> named(r, "control-io"));
     /** Requests that wait, one at a time (at most one per connection is ever queued). */
@@ -75,11 +81,13 @@ public final class ControlServer implements Closeable {
     private Channel server;
 
     /**
-     * @param token required before any other request, or null for none (loopback only)
+     * @param keys the secret every connection proves first, and TLS if they hold a key pair; null for
+     *     neither (loopback only)
      * @param directories where {@code load} may read files
      */
-    public ControlServer(EnvironmentHost host, String token, EnvironmentDirectories directories) {
-        this.requests = new ControlRequests(host, token == null || token.isEmpty() ? null : token, directories);
+    public ControlServer(EnvironmentHost host, SimulationKeys keys, EnvironmentDirectories directories) {
+        this.requests = new ControlRequests(host, keys, directories);
+        this.tls = keys == null ? null : keys.tls();
     }
 
     private static Thread named(Runnable r, String name) {
@@ -106,6 +114,9 @@ public final class ControlServer implements Closeable {
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
+                        if (tls != null) {
+                            ch.pipeline().addLast(new SslHandler(tls.serverEngine()));
+                        }
                         // (the idle clock after the decoders: only a whole request line resets it)
                         ch.pipeline().addLast(new WriteTimeoutHandler(WRITE_TIMEOUT_S),
                                 new LineBasedFrameDecoder(MAX_LINE, true, true),
@@ -156,27 +167,27 @@ public final class ControlServer implements Closeable {
         /** A request of this connection is being handled or answered; the next starts once its reply is out. */
         private boolean inHand;
 
-        /** The token deadline, while it runs. */
-        private java.util.concurrent.Future<?> tokenDeadline;
+        /** The proof deadline, while it runs. */
+        private java.util.concurrent.Future<?> proofDeadline;
 
         @Override
         public void channelInactive(ChannelHandlerContext ctx) {
-            if (tokenDeadline != null) {
-                tokenDeadline.cancel(false);
+            if (proofDeadline != null) {
+                proofDeadline.cancel(false);
             }
             ctx.fireChannelInactive();
         }
 
         @Override
         public void channelActive(ChannelHandlerContext ctx) {
-            if (!caller.authorised) {
-                tokenDeadline = ctx.executor().schedule(() -> {
-                    if (!caller.authorised && ctx.channel().isActive()) {
-                        LOG.info("control port: {} gave no token within {} s; closing", ctx.channel().remoteAddress(),
-                                TOKEN_DEADLINE_S);
+            if (!caller.proven()) {
+                proofDeadline = ctx.executor().schedule(() -> {
+                    if (!caller.proven() && ctx.channel().isActive()) {
+                        LOG.info("control port: {} did not prove the shared secret within {} s; closing",
+                                ctx.channel().remoteAddress(), PROOF_DEADLINE_S);
                         ctx.close();
                     }
-                }, TOKEN_DEADLINE_S, TimeUnit.SECONDS);
+                }, PROOF_DEADLINE_S, TimeUnit.SECONDS);
             }
             ctx.fireChannelActive();
         }
@@ -211,8 +222,8 @@ public final class ControlServer implements Closeable {
             }
             inHand = true;
             String verb = ControlRequests.verb(request);
-            if (!caller.authorised && !verb.equals("token")) {
-                answered(ctx, ControlRequests.error("a token is required first: token SECRET"));
+            if (!caller.proven() && !ControlRequests.beforeProof(verb)) {
+                answered(ctx, ControlRequests.error(ControlRequests.PROVE_FIRST));
                 return;
             }
             ExecutorService runner = ControlRequests.waits(verb) ? worker : quick;

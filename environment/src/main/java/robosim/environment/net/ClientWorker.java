@@ -12,7 +12,7 @@ import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Proof;
 import robosim.protocol.ProtocolException;
-import robosim.protocol.SharedSecret;
+import robosim.protocol.SimulationKeys;
 
 /**
  * One connected client, served by one named thread. The base class owns the connection's life and
@@ -79,10 +79,10 @@ abstract class ClientWorker implements Runnable {
      * the client proved the secret for {@code role} (or there is none), else the refusal.
      */
     protected final String heardHello(String role) throws IOException {
-        SharedSecret secret = coordinator.settings().secret();
+        SimulationKeys secret = coordinator.settings().keys();
         String refusal = null;
         if (secret != null) {
-            byte[] nonce = SharedSecret.nonce();
+            byte[] nonce = SimulationKeys.nonce();
             connection.write(new Challenge(nonce));
             connection.flush();
             Proof proof = connection.read(Proof.class);
@@ -128,7 +128,8 @@ abstract class ClientWorker implements Runnable {
         String why = "finished";
         try {
             configure(socket);
-            ObjectConnection c = new ObjectConnection(socket, coordinator.settings().resetEvery());
+            ObjectConnection c = ObjectConnection.server(socket, coordinator.settings().resetEvery(),
+                    coordinator.settings().keys());
             c.limitMessageBytes(Limits.MAX_HELLO_BYTES);
             connection = c;
             if (dropped) {

@@ -2,7 +2,7 @@ package robosim.environment.net;
 
 import java.net.InetAddress;
 import robosim.protocol.ObjectConnection;
-import robosim.protocol.SharedSecret;
+import robosim.protocol.SimulationKeys;
 
 /**
  * How one simulation runs, in three named groups: where it listens ({@link Ports}), how long it waits
@@ -23,10 +23,11 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
     /**
      * Listening: the address and the robot, viewer and Geometry ports (0: a free one), how many
      * connections each port holds at once beyond the robots the file names (one more is closed at once),
-     * and the secret every client must prove in its handshake (null: none, loopback only).
+     * and the keys every client must prove in its handshake, with TLS when they hold a key pair (null: none,
+     * loopback only).
      */
     public record Ports(InetAddress bind, int robot, int viewer, int geometry, int maxConnections,
-            SharedSecret secret) {
+            SimulationKeys keys) {
     }
 
     /**
@@ -56,7 +57,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         Builder b = new Builder();
         b.ports(bind(), robotPort(), viewerPort(), geometryPort());
         b.maxConnections = ports.maxConnections();
-        b.secret = ports.secret();
+        b.keys = ports.keys();
         b.handshakeTimeoutMs = timeouts.handshakeMs();
         b.stepTimeoutMs = timeouts.stepMs();
         b.geometryTimeoutMs = timeouts.geometryMs();
@@ -91,8 +92,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         return ports.maxConnections();
     }
 
-    public SharedSecret secret() {
-        return ports.secret();
+    public SimulationKeys keys() {
+        return ports.keys();
     }
 
     public int handshakeTimeoutMs() {
@@ -146,7 +147,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         private int viewerPort = 3000;
         private int geometryPort = 10000;
         private int maxConnections = DEFAULT_MAX_CONNECTIONS;
-        private SharedSecret secret;
+        private SimulationKeys keys;
         private int handshakeTimeoutMs = 10_000;
         private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
         private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
@@ -176,9 +177,9 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
             return this;
         }
 
-        /** The secret every client must prove in its handshake (null: none). */
-        public Builder secret(SharedSecret s) {
-            this.secret = s;
+        /** The keys every client proves in its handshake, and TLS if they hold a key pair (null: none). */
+        public Builder keys(SimulationKeys s) {
+            this.keys = s;
             return this;
         }
 
@@ -238,7 +239,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         }
 
         public Settings build() {
-            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, secret),
+            return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, keys),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery));
         }
