@@ -2,7 +2,7 @@
 # The Control Panel for a running Environment:
 #   scripts/control-panel.sh HOST [PORT]                      a window (needs a display)
 #   scripts/control-panel.sh HOST PORT status|start|stop|pause|resume|step N|load FILE|shutdown
-# Default port 8100. --token (or ROBOSIM_CONTROL_TOKEN) when the Environment asks for one; see --help.
+# Default port 8100. With the simulation's keys (ROBOSIM_KEYS) it speaks TLS and proves the secret; see --help.
 # --classpath PATH[:PATH...] (or ROBOSIM_CLASSPATH) adds entries after RoboSim's own jars.
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_java robosim.control.ControlPanelMain "$@"

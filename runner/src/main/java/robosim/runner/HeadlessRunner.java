@@ -161,7 +161,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         System.out.println("listening robots=" + bound.get("robots") + " viewers=" + bound.get("viewers")
                 + " geometry=" + bound.get("geometry") + " control=" + bound.get("control"));
         int viewerPort = Integer.parseInt(bound.get("viewers"));
-        RunWatch watch = RunWatch.connect(viewerPort, poseLog, progress, steps);
+        RunWatch watch = RunWatch.connect("127.0.0.1", viewerPort, poseLog, progress, steps, 10_000);
         ExtraViewers extras = extraViewers.connect(viewerPort);
         if (this.viewer) {
             // this Environment exits after its one run: the window keeps the last picture and stops

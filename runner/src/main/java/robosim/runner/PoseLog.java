@@ -15,6 +15,8 @@ import robosim.protocol.WorldSnapshot;
 final class PoseLog implements AutoCloseable {
     private final BufferedWriter out;
     private List<String> names = List.of();
+    /** Steps written (the {@code viewer-client} thread writes; read after the end). */
+    private volatile long steps;
 
     PoseLog(Path file) throws IOException {
         out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
@@ -32,9 +34,14 @@ final class PoseLog implements AutoCloseable {
                         Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
                         Double.toString(u.headingDeg(i))));
             }
+            steps++;
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
+    }
+
+    long steps() {
+        return steps;
     }
 
     @Override

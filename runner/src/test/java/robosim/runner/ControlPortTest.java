@@ -26,7 +26,7 @@ import robosim.protocol.SimulationKeys;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
 
-/** The control port over real sockets: start, stop, pause, resume, step N, status, load, bad input, token. */
+/** The control port over real sockets: start, stop, pause, resume, step N, status, load, bad input, keys. */
 class ControlPortTest {
     private static final Path THREE = Path.of("src/test/resources/three-robots.xml");
     private static final int TIMEOUT_MS = 60_000;

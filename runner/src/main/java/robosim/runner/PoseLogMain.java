@@ -1,0 +1,89 @@
+package robosim.runner;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.protocol.Connector;
+
+/**
+ * {@code scripts/pose-log.sh}: a recording viewer of a running Environment, on this machine or another,
+ * without a display: writes every step's poses as CSV (the {@code --pose-log} columns) until the
+ * simulation ends, then prints one line and exits 0. The simulation's keys come from the environment
+ * ({@code ROBOSIM_KEYS}), as for every other client.
+ */
+@Command(name = "pose-log.sh", mixinStandardHelpOptions = true,
+        description = "Records every step's robot poses from a running Environment's viewer port as CSV "
+                + "(step,robot,x_m,y_m,heading_deg) until the simulation ends.")
+public final class PoseLogMain implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "HOST", description = "The Environment's host.")
+    String host;
+
+    @Parameters(index = "1", paramLabel = "PORT", description = "Its viewer port (the default is 3000).")
+    int port;
+
+    @Parameters(index = "2", paramLabel = "FILE.csv", description = "Where to write the poses (not overwritten).")
+    Path file;
+
+    @Option(names = "--progress", description = "Print the step and steps/s once a second.")
+    boolean progress;
+
+    @Option(names = "--connect-timeout-s", defaultValue = "30",
+            description = "How long to keep trying to connect (default: ${DEFAULT-VALUE}).")
+    int connectTimeoutS;
+
+    @Option(names = "--timeout-s", defaultValue = "0",
+            description = "Give up if the simulation has not ended after this long (default: 0, wait for the end).")
+    long timeoutS;
+
+    @Override
+    public Integer call() throws Exception {
+        String bad = Connector.badPort(port);
+        if (bad != null) {
+            System.err.println("pose-log: " + bad);
+            return 2;
+        }
+        if (Files.exists(file)) {
+            System.err.println("pose-log: " + file + " already exists: not overwritten");
+            return 2;
+        }
+        if (file.toAbsolutePath().getParent() == null || !Files.isDirectory(file.toAbsolutePath().getParent())) {
+            System.err.println("pose-log: " + file + ": its directory does not exist");
+            return 2;
+        }
+        RunWatch watch;
+        try {
+            watch = RunWatch.connect(host, port, file, progress, 0, connectTimeoutS * 1000L);
+        } catch (IOException e) {
+            System.err.println("pose-log: " + host + ":" + port + ": " + e.getMessage());
+            return e instanceof java.net.UnknownHostException ? 2 : 1;
+        }
+        try (watch) {
+            // (a simulation that ends before its snapshot ends the connection: awaitEnd says how)
+            if (watch.awaitSnapshot(timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2)) {
+                System.out.println("pose-log: recording " + host + ":" + port + " into " + file);
+                System.out.flush();
+            }
+            String reason = watch.awaitEnd(timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2);
+            System.out.println("pose-log: " + watch.poseLogSteps() + " steps written to " + file + " (" + reason + ")");
+            return 0;
+        } catch (IOException e) {
+            System.err.println("pose-log: " + host + ":" + port + ": " + e.getMessage() + " (" + watch.poseLogSteps()
+                    + " steps written to " + file + ")");
+            return 1;
+        }
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new PoseLogMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("pose-log: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}
