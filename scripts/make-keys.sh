@@ -2,7 +2,7 @@
 # Makes a simulation's keys: the shared secret every process proves in its handshake (challenge and
 # response: the secret itself never crosses the network) and the simulation's own TLS key pair:
 #   scripts/make-keys.sh DIR [--help]
-# Creates DIR (mode 700) and writes into it
+# Creates DIR (mode 700) unless it exists, and writes into it
 #   secret           32 random bytes as 64 hex characters (mode 600)
 #   simulation.p12   a new self-signed EC key pair (P-256, 10 years) in a PKCS#12 file locked with the secret
 # and refuses to overwrite either. Then, on every machine of the simulation (the Environment, Geometry,

@@ -53,7 +53,7 @@ public final class ControlClient implements Closeable {
         if (!challenge.path("ok").asBoolean() || nonce.isEmpty()) {
             throw new IOException("the Environment gave no challenge: " + challenge.path("error").asText());
         }
-        JsonNode r = request(LineProof.answer(keys, "control", nonce));
+        JsonNode r = request(LineProof.answer(keys, LineProof.CONTROL, nonce));
         if (!r.path("ok").asBoolean()) {
             throw new IOException("the Environment refused the proof of the shared secret: " + r.path("error").asText());
         }

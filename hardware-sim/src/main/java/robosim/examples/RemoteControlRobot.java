@@ -60,8 +60,6 @@ public final class RemoteControlRobot implements RobotControl {
     public static final int MAX_CONNECTIONS = 8;
     /** A connection that has not proved the secret this long after connecting is closed, s. */
     public static final int PROOF_DEADLINE_S = 10;
-    /** The role this link's proofs are made for. */
-    public static final String ROLE = "remote-control";
 
     private record Pending(String command, Channel from) {
     }
@@ -157,7 +155,7 @@ public final class RemoteControlRobot implements RobotControl {
                             }
                             ch.pipeline().addLast(new LineBasedFrameDecoder(MAX_LINE, true, true),
                                     new StringDecoder(StandardCharsets.UTF_8), new StringEncoder(StandardCharsets.UTF_8),
-                                    new LinkHandler(new LineProof(keys, ROLE)));
+                                    new LinkHandler(new LineProof(keys, LineProof.REMOTE_CONTROL)));
                         }
                     }).bind(address).sync();
         } catch (Exception e) {

@@ -13,6 +13,10 @@ public final class LineProof {
     public static final String CHALLENGE = "challenge";
     /** What a client sends its proof after. */
     public static final String PROVE = "prove";
+    /** The role of a Control Panel's proof on the control port. */
+    public static final String CONTROL = "control";
+    /** The role of a Remote Control's proof on a robot's link. */
+    public static final String REMOTE_CONTROL = "remote-control";
     private static final HexFormat HEX = HexFormat.of();
 
     private final SimulationKeys keys;

@@ -57,7 +57,15 @@ public final class ObjectConnection implements Closeable {
      */
     public static ObjectConnection client(Socket raw, int resetEvery, SimulationKeys keys) throws IOException {
         Tls tls = keys == null ? null : keys.tls();
-        return new ObjectConnection(tls == null ? raw : tls.client(raw), raw, resetEvery, new ProtocolFilter());
+        if (tls != null) {
+            return new ObjectConnection(tls.client(raw), raw, resetEvery, new ProtocolFilter());
+        }
+        try {
+            return new ObjectConnection(raw, raw, resetEvery, new ProtocolFilter());
+        } catch (EOFException e) { // (a TLS port waits for a TLS record, then its handshake deadline closes)
+            throw new EOFException("the Environment closed the connection before its stream header: does it use the "
+                    + "simulation's keys? (set ROBOSIM_KEYS)");
+        }
     }
 
     /** The Environment's end over the accepted {@code raw} socket: TLS first when {@code keys} hold a key pair. */
@@ -160,11 +168,13 @@ public final class ObjectConnection implements Closeable {
 
     /**
      * True if the peer has sent something not read yet (or the stream has failed, which the next read
-     * will report); never blocks.
+     * will report); never blocks. Over TLS what has arrived but is not decrypted yet counts too (TLS
+     * decrypts only when read, so its own count sees nothing until then).
      */
     public boolean hasInput() {
         try {
-            return in.available() > 0 || budget.available() > 0;
+            return in.available() > 0 || budget.available() > 0
+                    || (transport != socket && transport.getInputStream().available() > 0);
         } catch (IOException e) {
             return true;
         }
@@ -204,12 +214,12 @@ public final class ObjectConnection implements Closeable {
         } catch (java.net.SocketTimeoutException e) {
             return false;
         } catch (IOException e) {
-            if (socket.isClosed()) {
+            if (transport.isClosed()) {
                 throw e; // closed on this side (dropped), not by the peer
             }
             return true;
         } finally {
-            if (!socket.isClosed()) {
+            if (!transport.isClosed()) {
                 socket.setSoTimeout(before);
             }
         }
@@ -221,7 +231,7 @@ public final class ObjectConnection implements Closeable {
     }
 
     public boolean isClosed() {
-        return socket.isClosed();
+        return transport.isClosed();
     }
 
     @Override

@@ -85,6 +85,20 @@ public final class SimulationKeys {
      * {@code ROBOSIM_SECRET_FILE} names or from {@code ROBOSIM_SECRET}, else null (none: only for loopback).
      */
     public static SimulationKeys fromEnvironment() throws IOException {
+        synchronized (SimulationKeys.class) { // once per process: the key store costs a key derivation to open
+            if (!loadedFromEnvironment) {
+                fromEnvironment = loadFromEnvironment();
+                loadedFromEnvironment = true;
+            }
+            return fromEnvironment;
+        }
+    }
+
+    /** This process's keys, once loaded (guarded by the class). */
+    private static SimulationKeys fromEnvironment;
+    private static boolean loadedFromEnvironment;
+
+    private static SimulationKeys loadFromEnvironment() throws IOException {
         String dir = System.getenv("ROBOSIM_KEYS");
         if (dir != null && !dir.isEmpty()) {
             return fromDirectory(Path.of(dir));

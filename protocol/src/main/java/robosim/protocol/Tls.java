@@ -64,6 +64,8 @@ public final class Tls {
             return new Tls(context);
         } catch (java.nio.file.NoSuchFileException e) {
             throw new IOException(p12 + ": no such file (scripts/make-keys.sh makes it)");
+        } catch (java.nio.file.AccessDeniedException e) {
+            throw new IOException(p12 + ": not readable by this user");
         } catch (GeneralSecurityException | IOException e) {
             if (e.getMessage() != null && e.getMessage().startsWith(p12.toString())) {
                 throw (IOException) e;
@@ -120,7 +122,8 @@ public final class Tls {
         } catch (IOException e) {
             raw.close();
             throw new ProtocolException("TLS handshake with " + raw.getInetAddress().getHostAddress() + ":"
-                    + raw.getPort() + " failed: " + e.getMessage() + " (does every process use the same ROBOSIM_KEYS?)");
+                    + raw.getPort() + " failed: " + e.getMessage() + (e instanceof javax.net.ssl.SSLHandshakeException
+                            ? " (does every process use the same ROBOSIM_KEYS?)" : ""));
         }
     }
 

@@ -9,7 +9,6 @@ import java.net.InetSocketAddress;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.util.function.Consumer;
-import robosim.examples.RemoteControlRobot;
 import robosim.examples.RobotInfo;
 import robosim.protocol.LineProof;
 import robosim.protocol.SimulationKeys;
@@ -27,7 +26,9 @@ public final class RobotLink implements Closeable {
     /** The TCP socket (TLS runs over it when the keys hold a key pair). */
     private volatile Socket transport;
     /** The last failure to link told to the listener, so a robot that keeps refusing is told once. */
-    private String lastFailure = "";
+    private volatile String lastFailure = "";
+    /** An attempt to link is under way. */
+    private final java.util.concurrent.atomic.AtomicBoolean connecting = new java.util.concurrent.atomic.AtomicBoolean();
     private volatile OutputStream out;
     private volatile boolean closed;
 
@@ -47,11 +48,25 @@ public final class RobotLink implements Closeable {
         return s != null && s.isConnected() && !s.isClosed();
     }
 
-    /** Tries to connect if not connected; returns whether it is. */
-    public synchronized boolean ensureConnected() {
+    /**
+     * Tries to connect if not connected; returns whether it is. One attempt at a time: a caller that
+     * comes while one is under way gets false at once (no lock is held across the network).
+     */
+    public boolean ensureConnected() {
         if (connected() || closed) {
             return connected();
         }
+        if (!connecting.compareAndSet(false, true)) {
+            return false;
+        }
+        try {
+            return connect();
+        } finally {
+            connecting.set(false);
+        }
+    }
+
+    private boolean connect() {
         Socket raw = new Socket();
         try {
             raw.connect(new InetSocketAddress(robot.host(), robot.port()), 1000);
@@ -59,16 +74,29 @@ public final class RobotLink implements Closeable {
             closeQuietly(raw);
             return false; // not listening (yet): the window keeps trying
         }
+        // the TLS handshake and the proof must be done by the deadline, however the robot trickles its bytes
+        java.util.concurrent.atomic.AtomicBoolean linked = new java.util.concurrent.atomic.AtomicBoolean();
+        java.util.concurrent.CompletableFuture.delayedExecutor(LINK_DEADLINE_MS, java.util.concurrent.TimeUnit.MILLISECONDS)
+                .execute(() -> {
+                    if (!linked.get()) {
+                        closeQuietly(raw);
+                    }
+                });
         try {
             raw.setTcpNoDelay(true);
-            raw.setSoTimeout(PROOF_TIMEOUT_MS);
             Socket s = keys == null || keys.tls() == null ? raw : keys.tls().client(raw);
             BufferedReader in = new BufferedReader(new InputStreamReader(s.getInputStream(), StandardCharsets.UTF_8));
             OutputStream o = s.getOutputStream();
             if (keys != null) {
                 prove(in, o);
             }
-            raw.setSoTimeout(0);
+            if (!linked.compareAndSet(false, true) || raw.isClosed()) {
+                throw new IOException("no answer to the proof within " + LINK_DEADLINE_MS + " ms");
+            }
+            if (closed) { // (closed for good while linking)
+                closeQuietly(raw);
+                return false;
+            }
             out = o;
             transport = raw;
             lastFailure = "";
@@ -87,8 +115,8 @@ public final class RobotLink implements Closeable {
         }
     }
 
-    /** How long the robot may take to answer the challenge and the proof, ms. */
-    private static final int PROOF_TIMEOUT_MS = 5000;
+    /** How long the robot may take to finish TLS and answer the challenge and the proof, ms. */
+    private static final int LINK_DEADLINE_MS = 20_000;
 
     private void prove(BufferedReader in, OutputStream o) throws IOException {
         o.write((LineProof.CHALLENGE + "\n").getBytes(StandardCharsets.UTF_8));
@@ -97,7 +125,7 @@ public final class RobotLink implements Closeable {
         if (challenge == null || !challenge.startsWith("nonce ")) {
             throw new IOException("the robot gave no challenge" + (challenge == null ? "" : ": " + abbreviate(challenge)));
         }
-        o.write((LineProof.answer(keys, RemoteControlRobot.ROLE, challenge.substring(6).strip()) + "\n")
+        o.write((LineProof.answer(keys, LineProof.REMOTE_CONTROL, challenge.substring(6).strip()) + "\n")
                 .getBytes(StandardCharsets.UTF_8));
         o.flush();
         String answer = in.readLine();

@@ -18,8 +18,9 @@ final class PoseLog implements AutoCloseable {
     /** Steps written (the {@code viewer-client} thread writes; read after the end). */
     private volatile long steps;
 
-    PoseLog(Path file) throws IOException {
-        out = Files.newBufferedWriter(file, StandardCharsets.UTF_8);
+    /** Writes to {@code file} as {@code options} say (none: create or replace it). */
+    PoseLog(Path file, java.nio.file.OpenOption... options) throws IOException {
+        out = Files.newBufferedWriter(file, StandardCharsets.UTF_8, options);
         out.write("step,robot,x_m,y_m,heading_deg\n");
     }
 

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
@@ -47,28 +48,30 @@ public final class PoseLogMain implements Callable<Integer> {
             System.err.println("pose-log: " + bad);
             return 2;
         }
-        if (Files.exists(file)) {
-            System.err.println("pose-log: " + file + " already exists: not overwritten");
-            return 2;
-        }
         if (file.toAbsolutePath().getParent() == null || !Files.isDirectory(file.toAbsolutePath().getParent())) {
             System.err.println("pose-log: " + file + ": its directory does not exist");
             return 2;
         }
         RunWatch watch;
         try {
-            watch = RunWatch.connect(host, port, file, progress, 0, connectTimeoutS * 1000L);
+            watch = RunWatch.connect(host, port, file, progress, 0, connectTimeoutS * 1000L,
+                    java.nio.file.StandardOpenOption.CREATE_NEW, java.nio.file.StandardOpenOption.WRITE);
+        } catch (java.nio.file.FileAlreadyExistsException e) {
+            System.err.println("pose-log: " + file + " already exists: not overwritten");
+            return 2;
         } catch (IOException e) {
+            Files.deleteIfExists(file); // (made by this run, with nothing but the header)
             System.err.println("pose-log: " + host + ":" + port + ": " + e.getMessage());
             return e instanceof java.net.UnknownHostException ? 2 : 1;
         }
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(timeoutS > 0 ? timeoutS : 100L * 365 * 86_400);
         try (watch) {
             // (a simulation that ends before its snapshot ends the connection: awaitEnd says how)
-            if (watch.awaitSnapshot(timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2)) {
+            if (watch.awaitSnapshot(secondsLeft(deadline))) {
                 System.out.println("pose-log: recording " + host + ":" + port + " into " + file);
                 System.out.flush();
             }
-            String reason = watch.awaitEnd(timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2);
+            String reason = watch.awaitEnd(secondsLeft(deadline));
             System.out.println("pose-log: " + watch.poseLogSteps() + " steps written to " + file + " (" + reason + ")");
             return 0;
         } catch (IOException e) {
@@ -76,6 +79,10 @@ public final class PoseLogMain implements Callable<Integer> {
                     + " steps written to " + file + ")");
             return 1;
         }
+    }
+
+    private static long secondsLeft(long deadline) {
+        return Math.max(0, TimeUnit.NANOSECONDS.toSeconds(deadline - System.nanoTime()));
     }
 
     public static void main(String[] args) {

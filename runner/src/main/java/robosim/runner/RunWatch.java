@@ -34,11 +34,11 @@ final class RunWatch implements AutoCloseable {
      * @param steps the run's length for the progress line (0: not known)
      */
     static RunWatch connect(String host, int viewerPort, Path poseLogFile, boolean progress, long steps,
-            long connectTimeoutMs) throws IOException, InterruptedException {
+            long connectTimeoutMs, java.nio.file.OpenOption... poseLogOptions) throws IOException, InterruptedException {
         if (poseLogFile == null && !progress) {
             return null;
         }
-        PoseLog log = poseLogFile == null ? null : new PoseLog(poseLogFile);
+        PoseLog log = poseLogFile == null ? null : new PoseLog(poseLogFile, poseLogOptions);
         ViewerClient viewer;
         try {
             viewer = ViewerClient.connect(host, viewerPort, poseLogFile != null, connectTimeoutMs);

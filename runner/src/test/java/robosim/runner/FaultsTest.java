@@ -183,12 +183,15 @@ class FaultsTest {
     /**
      * Robots sharing one exchange thread (the default for robots in one process): one control code that
      * stops yielding (stuck in a computation of its own) costs only its own robot; the others of the
-     * same process keep stepping.
+     * same process keep stepping. Over TLS too, where what has come in but is not decrypted yet counts as
+     * input (the exchange sees the Environment go on by it).
      */
-    @Test
-    void aStuckControlCodeInASharedProcessCostsOnlyItsOwnRobot() throws Exception {
+    @org.junit.jupiter.params.ParameterizedTest(name = "tls={0}")
+    @org.junit.jupiter.params.provider.ValueSource(booleans = {false, true})
+    void aStuckControlCodeInASharedProcessCostsOnlyItsOwnRobot(boolean tls, @org.junit.jupiter.api.io.TempDir
+            java.nio.file.Path dir) throws Exception {
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .exchange(InJvmSimulation.Exchange.SHARED)
+                .exchange(InJvmSimulation.Exchange.SHARED).keys(tls ? TestKeys.keys(dir, "keys") : null)
                 .settings(s -> s.stepTimeoutMs(STEP_TIMEOUT_MS))
                 .run(200, true, () -> robot -> {
                     if (robot.name().equals("robot3")) {

@@ -20,7 +20,9 @@ import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.SimulationKeys;
 import robosim.protocol.ViewerClient;
+import robosim.protocol.ViewerHello;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -64,6 +66,14 @@ final class InJvmSimulation {
 
     InJvmSimulation exchange(Exchange e) {
         this.exchange = e;
+        return this;
+    }
+
+    /** The simulation's keys, for the Environment and every client (null: none, the default). */
+    private SimulationKeys keys;
+
+    InJvmSimulation keys(SimulationKeys k) {
+        this.keys = k;
         return this;
     }
 
@@ -118,14 +128,14 @@ final class InJvmSimulation {
         if (design != null) {
             settings.design(design);
         }
-        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, settingsHook.apply(settings).build());
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, settingsHook.apply(settings.keys(keys)).build());
         for (RunListener l : listeners) {
             env.listen(l);
         }
         env.start();
         try {
             int[] ports = env.ports();
-            ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], true, 10_000);
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], new ViewerHello(true), 10_000, keys);
             viewer.start(new ViewerClient.Listener() {
                 @Override
                 public void snapshot(WorldSnapshot snapshot) {
@@ -141,7 +151,7 @@ final class InJvmSimulation {
             PoseUpdate[] lastSeen = new PoseUpdate[liveViewers];
             for (int v = 0; v < liveViewers; v++) {
                 int slot = v;
-                ViewerClient live = ViewerClient.connect("127.0.0.1", ports[1], false, 10_000);
+                ViewerClient live = ViewerClient.connect("127.0.0.1", ports[1], new ViewerHello(false), 10_000, keys);
                 live.start(new ViewerClient.Listener() {
                     @Override
                     public void snapshot(WorldSnapshot snapshot) {
@@ -165,7 +175,7 @@ final class InJvmSimulation {
                     Socket g = new Socket(InetAddress.getLoopbackAddress(), ports[2]);
                     geometrySocket = g;
                     try {
-                        return new GeometryClient(g, ObjectConnection.DEFAULT_RESET_EVERY).run();
+                        return new GeometryClient(g, ObjectConnection.DEFAULT_RESET_EVERY, keys).run();
                     } catch (java.io.IOException e) {
                         if (geometryKilled) {
                             return null;
@@ -189,7 +199,7 @@ final class InJvmSimulation {
                     for (WorldSpec.RobotSpec r : spec.robots()) {
                         HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
                         sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
-                                ObjectConnection.DEFAULT_RESET_EVERY);
+                                ObjectConnection.DEFAULT_RESET_EVERY, keys);
                         sims.add(sim);
                     }
                     HardwareSimulator.runShared(sims, controls);
@@ -204,7 +214,7 @@ final class InJvmSimulation {
                     threads.add(thread(r.name(), failures, () -> {
                         HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
                         sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
-                                ObjectConnection.DEFAULT_RESET_EVERY);
+                                ObjectConnection.DEFAULT_RESET_EVERY, keys);
                         return sim.run(c, each);
                     }));
                 }

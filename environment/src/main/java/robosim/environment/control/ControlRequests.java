@@ -26,8 +26,6 @@ final class ControlRequests {
     /** How long a waiting request (step N, pause) may take before it answers anyway, s. */
     private static final long WAIT_S = 600;
 
-    /** The role the control port's proofs are made for. */
-    static final String ROLE = "control";
     /** The reply to a request made before the proof. */
     static final String PROVE_FIRST = "prove the shared secret first: challenge, then prove HEX (the Control "
             + "Panel does it when ROBOSIM_KEYS or ROBOSIM_SECRET_FILE is set)";
@@ -56,7 +54,7 @@ final class ControlRequests {
     }
 
     Caller caller() {
-        return new Caller(new LineProof(keys, ROLE));
+        return new Caller(new LineProof(keys, LineProof.CONTROL));
     }
 
     /** True for the requests a caller may make before it has proved the secret. */
@@ -189,7 +187,7 @@ final class ControlRequests {
         return abbreviate(s, 40);
     }
 
-    private static String abbreviate(String s, int max) {
+    static String abbreviate(String s, int max) {
         String clean = String.valueOf(s).replaceAll("\\p{Cntrl}", "?");
         return clean.length() > max ? clean.substring(0, max) + "..." : clean;
     }

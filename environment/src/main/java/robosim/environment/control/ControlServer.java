@@ -287,7 +287,8 @@ public final class ControlServer implements Closeable {
                 ctx.writeAndFlush(ControlRequests.error("request longer than " + MAX_LINE + " bytes").toString() + "\n")
                         .addListener(ChannelFutureListener.CLOSE);
             } else {
-                LOG.info("control port: {} dropped: {}", ctx.channel().remoteAddress(), cause.toString());
+                LOG.info("control port: {} dropped: {}", ctx.channel().remoteAddress(),
+                        ControlRequests.abbreviate(cause.toString(), 120));
                 ctx.close();
             }
         }
