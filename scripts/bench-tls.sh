@@ -9,14 +9,9 @@
 # in the repository (bench/FloorProcesses compiles to bench/classes).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-robosim_script_args "" "$@"
-[ ${#ROBOSIM_ARGS[@]} -le 2 ] || robosim_fail "takes at most REPS and STEPS, got ${ROBOSIM_ARGS[*]} (see --help)"
-reps=${ROBOSIM_ARGS[0]:-3}; steps=${ROBOSIM_ARGS[1]:-5000}
-robosim_count REPS "$reps"; robosim_count STEPS "$steps"
+robosim_paper_bench_args "$@"
+reps=$BENCH_REPS; steps=$BENCH_STEPS
 set -- "${ROBOSIM_PASS[@]}"
-cd "$ROBOSIM_HOME"
-robosim_build_if_stale
-mkdir -p bench/classes && javac -d bench/classes bench/FloorProcesses.java
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 scripts/make-keys.sh "$tmp/keys" >/dev/null
 rate() { grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }

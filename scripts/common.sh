@@ -213,6 +213,19 @@ robosim_one_arg() {
 
 # A benchmark's arguments: [REPS] [--quick] and robosim_script_args' own (docs directory $2), nothing
 # after --. Sets BENCH_REPS (default $1; 1 with --quick) and BENCH_QUICK (0 or 1) and cds to the home.
+# For the paper-benchmark scripts: [REPS] [STEPS] (defaults 3 and 5000) into BENCH_REPS and BENCH_STEPS,
+# the options after -- into ROBOSIM_PASS; then cd to the repository, build if stale and compile
+# bench/FloorProcesses into bench/classes.
+robosim_paper_bench_args() {
+  robosim_script_args "" "$@"
+  [ ${#ROBOSIM_ARGS[@]} -le 2 ] || robosim_fail "takes at most REPS and STEPS, got ${ROBOSIM_ARGS[*]} (see --help)"
+  BENCH_REPS=${ROBOSIM_ARGS[0]:-3}; BENCH_STEPS=${ROBOSIM_ARGS[1]:-5000}
+  robosim_count REPS "$BENCH_REPS"; robosim_count STEPS "$BENCH_STEPS"
+  cd "$ROBOSIM_HOME"
+  robosim_build_if_stale
+  mkdir -p bench/classes && javac -d bench/classes bench/FloorProcesses.java
+}
+
 robosim_bench_args() {
   local default=$1 docs=$2 a args=()
   shift 2
