@@ -3,6 +3,7 @@ package robosim.environment;
 import java.io.IOException;
 import java.net.BindException;
 import java.net.InetAddress;
+import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
@@ -115,6 +116,10 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "idea; default: a step number after every response).")
     boolean noStepMessages;
 
+    @Option(names = "--record", paramLabel = "FILE", description = "Record the run into FILE (a new file; a later "
+            + "simulation of this Environment into FILE-2, FILE-3...): see scripts/record-tool.sh.")
+    Path record;
+
     @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
             description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
     int resetEvery;
@@ -172,7 +177,13 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "to a directory made by scripts/make-keys.sh (TLS and the shared secret) for every process");
             return 2;
         }
-        Settings settings = Settings.builder()
+        if (record != null && (Files.exists(record) || record.toAbsolutePath().getParent() == null
+                || !Files.isDirectory(record.toAbsolutePath().getParent()))) {
+            System.err.println("environment: --record " + record + ": " + (Files.exists(record)
+                    ? "already exists (not overwritten)" : "its directory does not exist"));
+            return 2;
+        }
+        Settings settings = Settings.builder().record(record)
                 .ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
                 .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)

@@ -30,6 +30,10 @@ final class EnvironmentOptions {
                     + "ever). A run that lost a robot exits " + HeadlessRunner.EXIT_ROBOTS_REMOVED + ".")
     Long stepTimeoutMs;
 
+    @Option(names = "--record", paramLabel = "FILE",
+            description = "Record the run into FILE, a new file (scripts/record-tool.sh reads it).")
+    Path record;
+
     /** What is wrong with these options, or null. */
     String bad() {
         if (stepTimeoutMs != null && stepTimeoutMs < 0) {
@@ -59,6 +63,10 @@ final class EnvironmentOptions {
         if (stepTimeoutMs != null) {
             envArgs.add("--step-timeout-ms");
             envArgs.add(Long.toString(stepTimeoutMs));
+        }
+        if (record != null) {
+            envArgs.add("--record");
+            envArgs.add(record.toAbsolutePath().toString());
         }
         return envArgs;
     }

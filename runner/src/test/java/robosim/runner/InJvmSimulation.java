@@ -229,7 +229,7 @@ final class InJvmSimulation {
             liveLast.addAll(java.util.Arrays.asList(lastSeen));
             // the viewers that took the end leave on their own; wait for their workers (the frozen one never
             // finishes, so this returns after the timeout at the latest)
-            env.awaitViewersDone(frozenViewers > 0 ? 3000 : 30_000);
+            env.awaitOutputDone(frozenViewers > 0 ? 3000 : 30_000);
             viewersAtEnd = env.status().viewers();
             for (Socket f : frozen) {
                 f.close();

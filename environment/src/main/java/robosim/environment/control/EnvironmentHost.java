@@ -59,6 +59,10 @@ public final class EnvironmentHost {
      * must be free already ({@link #release}, called without the lock).
      */
     private ClientWorkerCoordinator newSession(WorldSpec s, boolean paused) throws IOException {
+        sessions++;
+        if (base.record() != null && sessions > 1) { // each simulation its own recording: FILE, FILE-2, ...
+            settings = settings.toBuilder().record(numbered(base.record(), sessions)).build();
+        }
         ClientWorkerCoordinator c = new ClientWorkerCoordinator(s, settings);
         if (paused) {
             c.startPaused();
@@ -68,6 +72,17 @@ public final class EnvironmentHost {
         // later simulations listen on the same ports, even when the first ones were picked by the system
         settings = base.toBuilder().ports(base.bind(), p[0], p[1], Math.max(p[2], base.geometryPort())).build();
         return c;
+    }
+
+    /** Simulations opened so far (this host's lock). */
+    private int sessions;
+
+    /** {@code run.rec} as the n-th simulation's recording: {@code run-n.rec}. */
+    static Path numbered(Path file, int n) {
+        String name = file.getFileName().toString();
+        int dot = name.lastIndexOf('.');
+        String numbered = dot > 0 ? name.substring(0, dot) + "-" + n + name.substring(dot) : name + "-" + n;
+        return file.resolveSibling(numbered);
     }
 
     /** The ports of the current simulation: robot, viewer, geometry (-1 when in-process). */
@@ -94,7 +109,7 @@ public final class EnvironmentHost {
                 c = current;
             }
             c.awaitEnd();
-            c.awaitViewersDone(5000);
+            c.awaitOutputDone(5000);
             RunSummary summary = c.summary();
             ended.accept(summary);
             synchronized (this) {
@@ -159,7 +174,7 @@ public final class EnvironmentHost {
      */
     private static void release(ClientWorkerCoordinator ended) throws IOException {
         try {
-            ended.awaitViewersDone(5000);
+            ended.awaitOutputDone(5000);
             ended.close();
             ended.awaitServersClosed(5000);
         } catch (InterruptedException e) {

@@ -277,10 +277,16 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /**
      * After the end: waits up to {@code timeoutMs} for viewer workers to send what they hold (a
-     * recording viewer may still be writing its backlog), so a process that exits next loses nothing.
+     * recording viewer may still be writing its backlog) and for the recording to be finished, so a
+     * process that exits next loses nothing.
      */
-    public void awaitViewersDone(long timeoutMs) throws InterruptedException {
+    public void awaitOutputDone(long timeoutMs) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
         cycle.viewers().awaitDone(timeoutMs);
+        RunRecorder recorder = cycle.recorder;
+        if (recorder != null) {
+            recorder.awaitWritten(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+        }
     }
 
     /** After the end: waits until the listening sockets are really released, so a next simulation can bind them. */

@@ -53,6 +53,8 @@ abstract class RunLifecycle {
     long step;
     long released;
     long releasedNanos;
+    /** The run's recording, once it has begun ({@code --record}), else null. */
+    volatile RunRecorder recorder;
 
     RunLifecycle(ClientWorkerCoordinator coordinator, RunListener listener) {
         this.coordinator = coordinator;
@@ -156,6 +158,7 @@ abstract class RunLifecycle {
         }
         viewers.announce(new RunState(released, RunState.Phase.RUNNING));
         record.begin(now);
+        startRecording();
         control.restartPace(now, 0);
         releasedNanos = now;
         phase = Phase.COLLECTING;
@@ -176,6 +179,20 @@ abstract class RunLifecycle {
         coordinator.started();
         listener.started(robots.length);
         return true;
+    }
+
+    /** Opens the recording, if the run is recorded. */
+    abstract void startRecording();
+
+    /** The end, to the recording (which the recorder then finishes). */
+    private void recorded(SimulationEnd end) {
+        if (recorder != null) {
+            try {
+                recorder.end(end);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
     }
 
     // ---- robots leaving, deadlines --------------------------------------------------------------------
@@ -282,6 +299,7 @@ abstract class RunLifecycle {
         }
         viewers.end(end);
         geometry.end(end);
+        recorded(end);
         control.settle(released, true);
         rosterChanged = true;
         LOG.info("simulation over after {} steps: {}", step, Printable.of(reason));

@@ -8,9 +8,10 @@ import robosim.protocol.SimulationKeys;
  * How one simulation runs, in three named groups: where it listens ({@link Ports}), how long it waits
  * ({@link Timeouts}) and the run's shape ({@link Shape}: design, geometry, steps, pace). Build one with
  * {@link #builder()}; every value has a default a user would expect: loopback, the paper's ports, the
- * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped.
+ * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped; and the file the
+ * run is recorded into ({@code record}, null: none).
  */
-public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
+public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.file.Path record) {
     /** Default step and Geometry timeouts, ms. */
     public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
     public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
@@ -69,6 +70,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         b.speed = shape.speed();
         b.stepMessages = shape.stepMessages();
         b.resetEvery = shape.resetEvery();
+        b.record = record;
         return b;
     }
 
@@ -159,6 +161,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
         private double speed;
         private boolean stepMessages = true;
         private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
+        private java.nio.file.Path record;
 
         private Builder() {
         }
@@ -238,10 +241,17 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape) {
             return this;
         }
 
+        /** Records the run into this file, which must not exist yet ({@code --record}; null: no recording). */
+        public Builder record(java.nio.file.Path file) {
+            this.record = file;
+            return this;
+        }
+
         public Settings build() {
             return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, keys),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
-                    new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery));
+                    new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery),
+                    record);
         }
     }
 }

@@ -7,9 +7,11 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
+import robosim.protocol.PoseUpdate;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
 import robosim.protocol.RunState;
 
@@ -186,8 +188,12 @@ final class StepCycle extends RunLifecycle {
         record.released(released, now);
         record.messages(core.messagesDelivered(), core.messagesOutOfRange(), core.messagesUndeliverable());
         control.settle(released, false);
-        if (!viewers.isEmpty()) {
-            viewers.publish(core.viewerUpdate());
+        if (!viewers.isEmpty() || recorder != null) {
+            PoseUpdate update = core.viewerUpdate();
+            if (!viewers.isEmpty()) {
+                viewers.publish(update);
+            }
+            recorded(update);
         }
         releasedNanos = now; // robots are timed from here
         if (last) {
@@ -232,6 +238,37 @@ final class StepCycle extends RunLifecycle {
         } else {
             viewer.queue().state(new RunState(released, phase == Phase.WAITING ? RunState.Phase.WAITING
                     : control.holding() ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
+        }
+    }
+
+    // ---- the recording ---------------------------------------------------------------------------------
+
+    /** With {@code --record}: opens the recording at the start, from the world as a viewer would get it. */
+    @Override
+    void startRecording() {
+        if (settings.record() == null || recorder != null) {
+            return;
+        }
+        try {
+            recorder = new RunRecorder(settings.record(), snapshot());
+        } catch (IOException e) {
+            LOG.error("cannot record into {}: {}", settings.record(), e.toString());
+        }
+    }
+
+    /** The step just released, to the recording: the viewers' update and the responses of those still here. */
+    private void recorded(PoseUpdate update) {
+        if (recorder == null) {
+            return;
+        }
+        StepResponse[] responses = new StepResponse[robots.length];
+        for (int i = 0; i < robots.length; i++) {
+            responses[i] = core.present(i) && !leaving[i] ? core.response(i) : null;
+        }
+        try {
+            recorder.step(update, responses);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
         }
     }
 

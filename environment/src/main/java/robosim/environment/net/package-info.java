@@ -4,8 +4,8 @@
  * other thread posts events to it. The threads of this package, each named:
  * <ul>
  * <li>{@code simulation-loop}: every step (gather, core, Geometry link, responses, viewers, pace, pause,
- *     deadlines, the end); blocks on its event queue, timed to its next deadline, and in its writes to
- *     robots, which the write watchdog bounds.</li>
+ *     deadlines, the end); blocks on its event queue, timed to its next deadline, in its writes to
+ *     robots, which the write watchdog bounds, and on a full recording queue.</li>
  * <li>{@code robot-worker[name]} (one per robot): the handshake, then reads its robot's requests; blocks
  *     in its socket read.</li>
  * <li>{@code robot-writer[name]} ({@code TWO_THREADS}): writes what the loop queues for its robot.</li>
@@ -16,6 +16,8 @@
  *     close at once one over the port's cap.</li>
  * <li>{@code handshake-deadlines}: closes a connection whose hello is not accepted within the handshake
  *     timeout of its arrival, however slowly it sends.</li>
+ * <li>{@code recorder} ({@code --record}): writes the run's recording from the queue the loop fills after
+ *     each step; the loop waits for it only when the disk has fallen a whole queue behind.</li>
  * <li>{@code write-watchdog}: cuts off a robot that has not taken one of the loop's writes within the
  *     write timeout (the loop writes responses itself, so it cannot time its own writes).</li>
  * </ul>

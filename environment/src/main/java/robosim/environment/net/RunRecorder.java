@@ -1,0 +1,100 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.BlockingQueue;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingWriter;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepResponse;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * Records a run ({@code --record FILE}) on its own {@code recorder} thread: the loop hands it each step's
+ * viewer update and responses (immutable, shared) through a queue of {@link #QUEUE} steps and goes on; the
+ * thread writes them ({@link RecordingWriter}) and hands the file to the operating system whenever it has
+ * caught up, so a killed Environment leaves every step it wrote whole. Nothing is dropped: should the disk
+ * fall a whole queue behind, the loop waits for it (said in the log). A write that fails stops the
+ * recording with a logged error; the run goes on.
+ */
+final class RunRecorder {
+    private static final Logger LOG = LoggerFactory.getLogger(RunRecorder.class);
+    /** Steps the loop may be ahead of the disk. */
+    static final int QUEUE = 4096;
+
+    private record Step(PoseUpdate update, StepResponse[] responses) {
+    }
+
+    private final Path file;
+    private final RecordingWriter writer;
+    private final BlockingQueue<Object> queue = new ArrayBlockingQueue<>(QUEUE);
+    private final Thread thread;
+    private volatile boolean failed;
+    private boolean toldFull;
+
+    /** Creates the file (it must not exist) and starts the {@code recorder} thread. */
+    RunRecorder(Path file, WorldSnapshot start) throws IOException {
+        this.file = file;
+        this.writer = new RecordingWriter(file);
+        writer.snapshot(start);
+        writer.flush();
+        thread = new Thread(this::write, "recorder");
+        thread.setDaemon(true);
+        thread.start();
+    }
+
+    /** Loop thread: one released step. */
+    void step(PoseUpdate update, StepResponse[] responses) throws InterruptedException {
+        hand(new Step(update, responses));
+    }
+
+    /** Loop thread: the end; the thread finishes the file and ends. */
+    void end(SimulationEnd end) throws InterruptedException {
+        hand(end);
+    }
+
+    private void hand(Object item) throws InterruptedException {
+        if (failed) {
+            return;
+        }
+        if (!queue.offer(item)) {
+            if (!toldFull) {
+                toldFull = true;
+                LOG.warn("recording {}: the disk is {} steps behind; the run waits for it", file, QUEUE);
+            }
+            queue.put(item);
+        }
+    }
+
+    /** Waits up to {@code ms} for the file to be finished (after {@link #end}). */
+    void awaitWritten(long ms) throws InterruptedException {
+        thread.join(ms);
+    }
+
+    private void write() {
+        try (writer) {
+            while (true) {
+                Object item = queue.take();
+                if (item instanceof Step s) {
+                    writer.step(s.update(), s.responses());
+                } else {
+                    writer.end((SimulationEnd) item);
+                    LOG.info("recording {}: {} steps written", file, writer.steps());
+                    return;
+                }
+                if (queue.isEmpty()) {
+                    writer.flush();
+                }
+            }
+        } catch (IOException e) {
+            failed = true;
+            queue.clear();
+            LOG.error("recording {} stopped after {} steps: {}", file, writer.steps(), e.toString());
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+}

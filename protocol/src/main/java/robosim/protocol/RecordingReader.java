@@ -1,0 +1,209 @@
+package robosim.protocol;
+
+import java.io.ByteArrayInputStream;
+import java.io.Closeable;
+import java.io.IOException;
+import java.io.ObjectInputStream;
+import java.io.RandomAccessFile;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import java.util.zip.CRC32;
+
+/**
+ * Reads a recording ({@link RecordingFormat}): on opening, hops from frame header to frame header to
+ * index every step; then reads any step's frame directly. A file cut short (its writer was killed) is
+ * read up to its last whole frame, and says where and why it stopped. One thread at a time.
+ */
+public final class RecordingReader implements Closeable {
+    /** One robot's extras in a step: what it touched and tagged, the messages it got, its sensor readings. */
+    public record RobotExtras(int robot, String contact, String tagged, List<CommEvent> inbox,
+            List<SensorReading> readings) {
+    }
+
+    /** One recorded step. */
+    public record Step(PoseUpdate update, List<RobotExtras> extras) {
+    }
+
+    private final Path file;
+    private final RandomAccessFile in;
+    private final WorldSnapshot snapshot;
+    private long[] stepOffsets = new long[1024];
+    private long[] stepNumbers = new long[1024];
+    private int steps;
+    private SimulationEnd end;
+    private String cutShort;
+
+    /** Opens and indexes {@code file}; one line naming it and the fault if it is not a recording. */
+    public RecordingReader(Path file) throws IOException {
+        this.file = file;
+        this.in = new RandomAccessFile(file.toFile(), "r");
+        try {
+            byte[] magic = new byte[RecordingFormat.MAGIC.length];
+            in.readFully(magic);
+            if (!Arrays.equals(magic, RecordingFormat.MAGIC)) {
+                throw new IOException(file + ": not a RoboSim recording");
+            }
+            int version = in.readByte();
+            if (version != RecordingFormat.VERSION) {
+                throw new IOException(file + ": recording version " + version + ", this RoboSim reads "
+                        + RecordingFormat.VERSION);
+            }
+            byte[] first = frameAt(in.getFilePointer());
+            if (first == null || first[0] != RecordingFormat.SNAPSHOT) {
+                throw new IOException(file + ": no snapshot at the start" + (cutShort == null ? "" : " (" + cutShort + ")"));
+            }
+            snapshot = (WorldSnapshot) body(first).readObject();
+            index();
+        } catch (IOException | ClassNotFoundException | ClassCastException e) {
+            in.close();
+            throw e instanceof IOException io && io.getMessage() != null && io.getMessage().startsWith(file.toString())
+                    ? io : new IOException(file + ": damaged: " + e.getMessage());
+        }
+    }
+
+    private void index() throws IOException {
+        long at = in.getFilePointer();
+        while (at < in.length()) {
+            in.seek(at);
+            if (in.length() - at < 4 + 9 + 4) {
+                cutShort = "an incomplete frame at byte " + at;
+                return;
+            }
+            int length = in.readInt();
+            if (length < 9 || length > RecordingFormat.MAX_FRAME_BYTES || at + 4 + length + 4 > in.length()) {
+                cutShort = "an incomplete frame at byte " + at;
+                return;
+            }
+            byte type = in.readByte();
+            long step = in.readLong();
+            if (type == RecordingFormat.STEP) {
+                if (steps == stepOffsets.length) {
+                    stepOffsets = Arrays.copyOf(stepOffsets, steps * 2);
+                    stepNumbers = Arrays.copyOf(stepNumbers, steps * 2);
+                }
+                stepOffsets[steps] = at;
+                stepNumbers[steps] = step;
+                steps++;
+            } else if (type == RecordingFormat.END) {
+                byte[] frame = frameAt(at);
+                if (frame == null) {
+                    return; // (cutShort says why)
+                }
+                try {
+                    end = (SimulationEnd) body(frame).readObject();
+                } catch (ClassNotFoundException | ClassCastException e) {
+                    throw new IOException("an end frame that is not a SimulationEnd");
+                }
+                return;
+            }
+            at += 4 + length + 4;
+        }
+    }
+
+    /** The frame at {@code offset} (type, step, body), checked; null, noting why, if it is cut short or damaged. */
+    private byte[] frameAt(long offset) throws IOException {
+        in.seek(offset);
+        if (in.length() - offset < 4) {
+            cutShort = "an incomplete frame at byte " + offset;
+            return null;
+        }
+        int length = in.readInt();
+        if (length < 9 || length > RecordingFormat.MAX_FRAME_BYTES || offset + 4 + length + 4 > in.length()) {
+            cutShort = "an incomplete frame at byte " + offset;
+            return null;
+        }
+        byte[] bytes = new byte[length];
+        in.readFully(bytes);
+        int sum = in.readInt();
+        CRC32 crc = new CRC32();
+        crc.update(bytes);
+        if ((int) crc.getValue() != sum) {
+            cutShort = "a frame failing its checksum at byte " + offset;
+            return null;
+        }
+        return bytes;
+    }
+
+    private static ObjectInputStream body(byte[] frame) throws IOException {
+        ObjectInputStream o = new ObjectInputStream(new ByteArrayInputStream(frame, 9, frame.length - 9));
+        o.setObjectInputFilter(new ProtocolFilter());
+        return o;
+    }
+
+    public WorldSnapshot snapshot() {
+        return snapshot;
+    }
+
+    /** Whole steps recorded. */
+    public int steps() {
+        return steps;
+    }
+
+    /** The step number of the i-th recorded step (0-based). */
+    public long stepNumber(int i) {
+        return stepNumbers[i];
+    }
+
+    /** The end of the run, or null if the file stops before it. */
+    public SimulationEnd end() {
+        return end;
+    }
+
+    /** Why the file stops before its end (null if it has its end or simply stops after a whole frame). */
+    public String cutShort() {
+        return cutShort;
+    }
+
+    /**
+     * The i-th recorded step (0-based), read from its frame.
+     *
+     * @throws IOException naming the file if its frame is damaged
+     */
+    public Step step(int i) throws IOException {
+        byte[] frame = frameAt(stepOffsets[i]);
+        if (frame == null) {
+            throw new IOException(file + ": step " + stepNumbers[i] + ": " + cutShort);
+        }
+        try (ObjectInputStream o = body(frame)) {
+            PoseUpdate update = new PoseUpdate();
+            update.readExternal(o);
+            int n = o.readInt();
+            List<RobotExtras> extras = new ArrayList<>(n);
+            for (int k = 0; k < n; k++) {
+                int robot = o.readInt();
+                String contact = o.readUTF();
+                String tagged = o.readUTF();
+                int m = o.readInt();
+                List<CommEvent> inbox = new ArrayList<>(m);
+                for (int j = 0; j < m; j++) {
+                    inbox.add(new CommEvent(o.readUTF(), o.readUTF(), o.readUTF()));
+                }
+                int r = o.readInt();
+                List<SensorReading> readings = new ArrayList<>(r);
+                for (int j = 0; j < r; j++) {
+                    String name = o.readUTF();
+                    int k2 = o.readInt();
+                    if (k2 < 0 || k2 > frame.length / Double.BYTES) {
+                        throw new IOException(file + ": step " + stepNumbers[i] + ": damaged: " + k2 + " readings");
+                    }
+                    double[] v = new double[k2];
+                    for (int d = 0; d < v.length; d++) {
+                        v[d] = o.readDouble();
+                    }
+                    readings.add(new SensorReading(name, v));
+                }
+                extras.add(new RobotExtras(robot, contact, tagged, inbox, readings));
+            }
+            return new Step(update, extras);
+        } catch (ClassCastException | NegativeArraySizeException e) {
+            throw new IOException(file + ": step " + stepNumbers[i] + ": damaged: " + e.getMessage());
+        }
+    }
+
+    @Override
+    public void close() throws IOException {
+        in.close();
+    }
+}

@@ -1,0 +1,129 @@
+package robosim.protocol;
+
+import java.io.BufferedOutputStream;
+import java.io.ByteArrayOutputStream;
+import java.io.Closeable;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.ObjectOutputStream;
+import java.io.OutputStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardOpenOption;
+import java.util.List;
+import java.util.zip.CRC32;
+
+/**
+ * Writes a run's recording (format: {@link RecordingFormat}): the snapshot, one frame per step (the
+ * viewers' {@link PoseUpdate} as it went out, and each robot's contact, tag, delivered messages and
+ * sensor readings from its {@link StepResponse}), and the end. Every frame goes to the file whole, with
+ * its length and checksum, before the next is begun, so a process killed at any moment leaves a file
+ * readable up to its last complete frame. One thread.
+ */
+public final class RecordingWriter implements Closeable {
+    private final OutputStream out;
+    private final ByteArrayOutputStream frame = new ByteArrayOutputStream(64 * 1024);
+    private final CRC32 crc = new CRC32();
+    private long steps;
+
+    /** Creates {@code file} (it must not exist) and writes the file header. */
+    public RecordingWriter(Path file) throws IOException {
+        this.out = new BufferedOutputStream(Files.newOutputStream(file, StandardOpenOption.CREATE_NEW,
+                StandardOpenOption.WRITE), 256 * 1024);
+        out.write(RecordingFormat.MAGIC);
+        out.write(RecordingFormat.VERSION);
+    }
+
+    /** The world the run starts from (the first frame). */
+    public void snapshot(WorldSnapshot snapshot) throws IOException {
+        write(RecordingFormat.SNAPSHOT, snapshot.step(), o -> o.writeObject(snapshot));
+    }
+
+    /** One step: what the viewers got, and what each robot got beyond its pose and sonar. */
+    public void step(PoseUpdate update, StepResponse[] responses) throws IOException {
+        write(RecordingFormat.STEP, update.step(), o -> {
+            update.writeExternal(o); // (its fields only: no class description in every frame)
+            int n = 0;
+            for (StepResponse r : responses) {
+                n += r != null && hasExtras(r) ? 1 : 0;
+            }
+            o.writeInt(n);
+            for (int i = 0; i < responses.length; i++) {
+                StepResponse r = responses[i];
+                if (r != null && hasExtras(r)) {
+                    writeExtras(o, i, r);
+                }
+            }
+        });
+        steps++;
+    }
+
+    /** The end of the run (the last frame). */
+    public void end(SimulationEnd end) throws IOException {
+        write(RecordingFormat.END, end.lastStep(), o -> o.writeObject(end));
+    }
+
+    /** Steps written so far. */
+    public long steps() {
+        return steps;
+    }
+
+    /** Hands what is written to the operating system (a killed process loses nothing written before). */
+    public void flush() throws IOException {
+        out.flush();
+    }
+
+    @Override
+    public void close() throws IOException {
+        out.close();
+    }
+
+    private static boolean hasExtras(StepResponse r) {
+        return !r.contact().isEmpty() || !r.tagged().isEmpty() || !r.inbox().isEmpty() || !r.readings().isEmpty();
+    }
+
+    private static void writeExtras(ObjectOutputStream o, int robot, StepResponse r) throws IOException {
+        o.writeInt(robot);
+        o.writeUTF(r.contact());
+        o.writeUTF(r.tagged());
+        List<CommEvent> inbox = r.inbox();
+        o.writeInt(inbox.size());
+        for (CommEvent m : inbox) {
+            o.writeUTF(m.from());
+            o.writeUTF(m.to());
+            o.writeUTF(m.payload());
+        }
+        List<SensorReading> readings = r.readings();
+        o.writeInt(readings.size());
+        for (SensorReading s : readings) {
+            o.writeUTF(s.name());
+            double[] v = s.values();
+            o.writeInt(v.length);
+            for (double d : v) {
+                o.writeDouble(d);
+            }
+        }
+    }
+
+    private interface Body {
+        void write(ObjectOutputStream o) throws IOException;
+    }
+
+    /** One frame: length, type, step, the body as an object stream, CRC-32 of type, step and body. */
+    private void write(byte type, long step, Body body) throws IOException {
+        frame.reset();
+        DataOutputStream head = new DataOutputStream(frame);
+        head.writeByte(type);
+        head.writeLong(step);
+        try (ObjectOutputStream o = new ObjectOutputStream(frame)) {
+            body.write(o);
+        }
+        byte[] bytes = frame.toByteArray();
+        crc.reset();
+        crc.update(bytes);
+        DataOutputStream d = new DataOutputStream(out);
+        d.writeInt(bytes.length);
+        d.write(bytes);
+        d.writeInt((int) crc.getValue());
+    }
+}

@@ -1,0 +1,129 @@
+package robosim.protocol;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * A recording reads back as written, and a file cut at any byte (a writer killed at any moment) reads
+ * up to its last whole frame, saying where it stops.
+ */
+class RecordingTest {
+    private static final List<String> NAMES = List.of("a", "b");
+
+    private static PoseUpdate update(long k) {
+        return new PoseUpdate(k, new double[] {k, 2 * k}, new double[] {1, 2}, new double[] {0, 90},
+                new double[][] {{100 + k, 200}, {}}, List.of("a>b"), k > 5 ? List.of("b") : List.of());
+    }
+
+    private static StepResponse[] responses(long k) {
+        StepResponse a = new StepResponse(k, 0, 0, k % 3 == 0 ? "arena" : "", k, 1, 0, new double[0],
+                List.of(new CommEvent("b", "a", "hello " + k)), List.of(),
+                List.of(new SensorReading("laser", new double[] {1.5, k})));
+        return new StepResponse[] {a, null};
+    }
+
+    /** Writes steps 0..n-1 (and the end if asked); returns each frame's end offset, the header's first. */
+    private static List<Long> write(Path file, int n, boolean end) throws IOException {
+        List<Long> ends = new ArrayList<>();
+        try (RecordingWriter w = new RecordingWriter(file)) {
+            w.snapshot(new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), NAMES,
+                    List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT), update(0)));
+            w.flush();
+            ends.add(Files.size(file));
+            for (int k = 0; k < n; k++) {
+                w.step(update(k), responses(k));
+                w.flush();
+                ends.add(Files.size(file));
+            }
+            if (end) {
+                w.end(new SimulationEnd(n - 1, "completed " + n + " steps"));
+            }
+        }
+        return ends;
+    }
+
+    @Test
+    void aRecordingReadsBackAsWritten(@TempDir Path dir) throws IOException {
+        Path file = dir.resolve("run.rec");
+        write(file, 10, true);
+        try (RecordingReader r = new RecordingReader(file)) {
+            assertEquals(NAMES, r.snapshot().robotNames());
+            assertEquals(10, r.steps());
+            assertEquals("completed 10 steps", r.end().reason());
+            assertNull(r.cutShort());
+            for (int k = 0; k < 10; k++) {
+                RecordingReader.Step s = r.step(k);
+                PoseUpdate want = update(k);
+                assertEquals(k, s.update().step());
+                assertEquals(want.xMm(1), s.update().xMm(1));
+                assertArrayEquals(want.sonarMm(0), s.update().sonarMm(0));
+                assertEquals(want.departed(), s.update().departed());
+                assertEquals(1, s.extras().size(), "only robot a had anything beyond its pose");
+                RecordingReader.RobotExtras e = s.extras().get(0);
+                assertEquals(0, e.robot());
+                assertEquals(k % 3 == 0 ? "arena" : "", e.contact());
+                assertEquals(List.of(new CommEvent("b", "a", "hello " + k)), e.inbox());
+                assertEquals(List.of(new SensorReading("laser", new double[] {1.5, k})), e.readings());
+            }
+        }
+    }
+
+    @Test
+    void aFileCutAtAnyByteReadsUpToItsLastWholeFrame(@TempDir Path dir) throws IOException {
+        Path whole = dir.resolve("whole.rec");
+        List<Long> ends = write(whole, 4, false);
+        byte[] bytes = Files.readAllBytes(whole);
+        Path cut = dir.resolve("cut.rec");
+        for (int length = (int) (long) ends.get(0); length <= bytes.length; length++) {
+            Files.write(cut, Arrays.copyOf(bytes, length));
+            int whole_frames = 0;
+            for (int k = 1; k < ends.size(); k++) {
+                whole_frames += ends.get(k) <= length ? 1 : 0;
+            }
+            try (RecordingReader r = new RecordingReader(cut)) {
+                assertEquals(whole_frames, r.steps(), "cut at byte " + length);
+                assertNull(r.end());
+                boolean atAFrameEnd = ends.contains((long) length);
+                assertEquals(atAFrameEnd, r.cutShort() == null, "cut at byte " + length + ": " + r.cutShort());
+                for (int k = 0; k < r.steps(); k++) {
+                    assertEquals(k, r.step(k).update().step());
+                }
+            }
+        }
+        // cut inside the snapshot: not a recording yet, said in one line naming the file
+        Files.write(cut, Arrays.copyOf(bytes, (int) (long) ends.get(0) - 1));
+        IOException e = assertThrows(IOException.class, () -> new RecordingReader(cut).close());
+        assertTrue(e.getMessage().startsWith(cut + ": no snapshot at the start"), e.getMessage());
+    }
+
+    @Test
+    void aDamagedFrameEndsTheReadingThere(@TempDir Path dir) throws IOException {
+        Path file = dir.resolve("run.rec");
+        List<Long> ends = write(file, 5, true);
+        byte[] bytes = Files.readAllBytes(file);
+        bytes[(int) (long) ends.get(2) + 20] ^= 0x40; // inside the third step's frame
+        Files.write(file, bytes);
+        try (RecordingReader r = new RecordingReader(file)) {
+            assertEquals(5, r.steps(), "the headers still index every step");
+            assertNotNull(r.step(1));
+            IOException e = assertThrows(IOException.class, () -> r.step(2));
+            assertTrue(e.getMessage().contains("failing its checksum"), e.getMessage());
+        }
+        Files.write(file, "not a recording at all".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
+        IOException e = assertThrows(IOException.class, () -> new RecordingReader(file).close());
+        assertEquals(file + ": not a RoboSim recording", e.getMessage());
+    }
+}

@@ -1,0 +1,106 @@
+package robosim.runner;
+
+import java.io.BufferedWriter;
+import java.io.IOException;
+import java.io.OutputStreamWriter;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Parameters;
+import robosim.protocol.CommEvent;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
+
+/**
+ * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
+ * world, the steps and how the run ended (or where the file stops); {@code poses} writes every step's
+ * poses as CSV on stdout, the {@code --pose-log} columns; {@code messages} every message delivered as CSV
+ * ({@code step,from,to,text}).
+ */
+@Command(name = "record-tool.sh", mixinStandardHelpOptions = true,
+        description = "Reads a recording made with --record: summary, poses (CSV) or messages (CSV) on stdout.")
+public final class RecordToolMain implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "summary|poses|messages", description = "What to print.")
+    String what;
+
+    @Parameters(index = "1", paramLabel = "FILE", description = "The recording.")
+    Path file;
+
+    @Override
+    public Integer call() throws Exception {
+        if (!what.equals("summary") && !what.equals("poses") && !what.equals("messages")) {
+            System.err.println("record-tool: unknown request \"" + what + "\" (summary, poses or messages)");
+            return 2;
+        }
+        try (RecordingReader r = new RecordingReader(file)) {
+            BufferedWriter out = new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16);
+            switch (what) {
+                case "summary" -> summary(r, System.out);
+                case "poses" -> poses(r, out);
+                default -> messages(r, out);
+            }
+            out.flush();
+            return 0;
+        } catch (IOException e) {
+            System.err.println("record-tool: " + e.getMessage());
+            return e.getMessage() != null && e.getMessage().startsWith(file.toString()) ? 2 : 1;
+        }
+    }
+
+    private static void summary(RecordingReader r, PrintStream out) {
+        var s = r.snapshot();
+        out.println("robots=" + s.robotNames().size() + " " + String.join(",", s.robotNames()));
+        out.println("time_step_ms=" + s.timeStepMs() + " obstacles=" + s.obstacles().size());
+        out.println("steps=" + r.steps() + (r.steps() == 0 ? "" : " first=" + r.stepNumber(0) + " last="
+                + r.stepNumber(r.steps() - 1)));
+        if (r.end() != null) {
+            out.println("end=" + r.end().reason());
+        } else {
+            out.println("end=none: the file stops after step " + (r.steps() == 0 ? "-" : r.stepNumber(r.steps() - 1))
+                    + (r.cutShort() == null ? "" : " (" + r.cutShort() + ")"));
+        }
+    }
+
+    private static void poses(RecordingReader r, BufferedWriter out) throws IOException {
+        out.write("step,robot,x_m,y_m,heading_deg\n");
+        var names = r.snapshot().robotNames();
+        for (int k = 0; k < r.steps(); k++) {
+            PoseUpdate u = r.step(k).update();
+            for (int i = 0; i < u.count(); i++) {
+                out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s%n", u.step(), names.get(i),
+                        Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
+                        Double.toString(u.headingDeg(i))));
+            }
+        }
+    }
+
+    private static void messages(RecordingReader r, BufferedWriter out) throws IOException {
+        out.write("step,from,to,text\n");
+        for (int k = 0; k < r.steps(); k++) {
+            RecordingReader.Step s = r.step(k);
+            for (RecordingReader.RobotExtras e : s.extras()) {
+                for (CommEvent m : e.inbox()) {
+                    out.write(s.update().step() + "," + csv(m.from()) + "," + csv(m.to()) + "," + csv(m.payload()) + "\n");
+                }
+            }
+        }
+    }
+
+    /** A CSV field: quoted when it holds a comma, a quote or a line break. */
+    private static String csv(String s) {
+        return s.matches("[^,\"\r\n]*") ? s : "\"" + s.replace("\"", "\"\"") + "\"";
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new RecordToolMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("record-tool: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}

@@ -1,0 +1,54 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.ObjectOutputStream;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
+
+/**
+ * {@code --record}: a run's recording holds, step for step, exactly what a recording viewer got (byte for
+ * byte), every message delivered, and the end.
+ */
+class RecordingRunTest {
+    @Test
+    void theRecordingHoldsWhatTheViewersGotAndEveryMessage(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("run.rec");
+        InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> s.record(file))
+                .run(300, false, Chatter::new);
+        assertTrue(sim.summary.completed(), sim.summary.reason());
+        try (RecordingReader r = new RecordingReader(file)) {
+            assertEquals(sim.updates.size(), r.steps());
+            for (int k = 0; k < r.steps(); k++) {
+                assertArrayEquals(bytes(sim.updates.get(k)), bytes(r.step(k).update()), "step " + k);
+            }
+            long messages = 0;
+            for (int k = 0; k < r.steps(); k++) {
+                for (RecordingReader.RobotExtras e : r.step(k).extras()) {
+                    messages += e.inbox().size();
+                }
+            }
+            assertTrue(messages > 0, "Chatter robots talk");
+            assertEquals(sim.summary.messagesDelivered(), messages, "every message delivered is recorded");
+            assertEquals("completed 300 steps", r.end().reason());
+            assertNull(r.cutShort());
+        }
+    }
+
+    static byte[] bytes(PoseUpdate u) throws IOException {
+        ByteArrayOutputStream b = new ByteArrayOutputStream();
+        try (ObjectOutputStream o = new ObjectOutputStream(b)) {
+            u.writeExternal(o);
+        }
+        return b.toByteArray();
+    }
+}
