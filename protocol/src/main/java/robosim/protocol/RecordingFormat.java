@@ -11,8 +11,8 @@ import java.nio.charset.StandardCharsets;
  * {@code UTF contact}, {@code UTF tagged}, {@code int m} + m x ({@code UTF from}, {@code UTF to},
  * {@code UTF text}) messages delivered to it, {@code int r} + r x ({@code UTF sensor}, {@code int k} + k x
  * {@code double}) readings), {@link #END} (a {@link SimulationEnd}, last). The frame headers are the
- * index: a reader hops from header to header to map each step to its frame, and stops at the first
- * frame that is incomplete or fails its checksum (where a killed writer stopped).
+ * index: a reader goes from frame to frame to map each step to its frame, and stops at the first frame
+ * that is incomplete or fails its checksum (where a killed writer stopped).
  */
 public final class RecordingFormat {
     static final byte[] MAGIC = "ROBOSIMREC".getBytes(StandardCharsets.US_ASCII);

@@ -12,9 +12,10 @@ import java.util.List;
 import java.util.zip.CRC32;
 
 /**
- * Reads a recording ({@link RecordingFormat}): on opening, hops from frame header to frame header to
- * index every step; then reads any step's frame directly. A file cut short (its writer was killed) is
- * read up to its last whole frame, and says where and why it stopped. One thread at a time.
+ * Reads a recording ({@link RecordingFormat}): on opening, reads every frame once, checking its length
+ * and checksum, and notes where each step's frame is; then reads any step's frame directly. A file cut
+ * short (its writer was killed) or damaged is read up to its last good frame, and says where and why it
+ * stopped. One thread at a time.
  */
 public final class RecordingReader implements Closeable {
     /** One robot's extras in a step: what it touched and tagged, the messages it got, its sensor readings. */
@@ -56,29 +57,29 @@ public final class RecordingReader implements Closeable {
             }
             snapshot = (WorldSnapshot) body(first).readObject();
             index();
-        } catch (IOException | ClassNotFoundException | ClassCastException e) {
+        } catch (IOException | ClassNotFoundException | RuntimeException e) {
             in.close();
             throw e instanceof IOException io && io.getMessage() != null && io.getMessage().startsWith(file.toString())
-                    ? io : new IOException(file + ": damaged: " + e.getMessage());
+                    ? io : new IOException(file + ": damaged: " + e);
         }
     }
 
+    /** Reads every frame once, checking it, and notes where each step's is; stops at the first bad one. */
     private void index() throws IOException {
         long at = in.getFilePointer();
-        while (at < in.length()) {
-            in.seek(at);
-            if (in.length() - at < 4 + 9 + 4) {
-                cutShort = "an incomplete frame at byte " + at;
-                return;
+        long length = in.length();
+        while (at < length) {
+            byte[] frame = frameAt(at);
+            if (frame == null) {
+                return; // (cutShort says why)
             }
-            int length = in.readInt();
-            if (length < 9 || length > RecordingFormat.MAX_FRAME_BYTES || at + 4 + length + 4 > in.length()) {
-                cutShort = "an incomplete frame at byte " + at;
-                return;
-            }
-            byte type = in.readByte();
-            long step = in.readLong();
+            byte type = frame[0];
+            long step = java.nio.ByteBuffer.wrap(frame, 1, 8).getLong();
             if (type == RecordingFormat.STEP) {
+                if (steps > 0 && step <= stepNumbers[steps - 1]) {
+                    cutShort = "step " + step + " after step " + stepNumbers[steps - 1] + " at byte " + at;
+                    return;
+                }
                 if (steps == stepOffsets.length) {
                     stepOffsets = Arrays.copyOf(stepOffsets, steps * 2);
                     stepNumbers = Arrays.copyOf(stepNumbers, steps * 2);
@@ -87,18 +88,17 @@ public final class RecordingReader implements Closeable {
                 stepNumbers[steps] = step;
                 steps++;
             } else if (type == RecordingFormat.END) {
-                byte[] frame = frameAt(at);
-                if (frame == null) {
-                    return; // (cutShort says why)
-                }
                 try {
                     end = (SimulationEnd) body(frame).readObject();
                 } catch (ClassNotFoundException | ClassCastException e) {
                     throw new IOException("an end frame that is not a SimulationEnd");
                 }
                 return;
+            } else {
+                cutShort = "a frame of unknown type " + type + " at byte " + at;
+                return;
             }
-            at += 4 + length + 4;
+            at += 4 + frame.length + 4;
         }
     }
 
@@ -110,7 +110,11 @@ public final class RecordingReader implements Closeable {
             return null;
         }
         int length = in.readInt();
-        if (length < 9 || length > RecordingFormat.MAX_FRAME_BYTES || offset + 4 + length + 4 > in.length()) {
+        if (length < 9 || length > RecordingFormat.MAX_FRAME_BYTES) {
+            cutShort = "a damaged frame (length " + length + ") at byte " + offset;
+            return null;
+        }
+        if (offset + 4 + length + 4 > in.length()) {
             cutShort = "an incomplete frame at byte " + offset;
             return null;
         }
@@ -169,26 +173,28 @@ public final class RecordingReader implements Closeable {
         try (ObjectInputStream o = body(frame)) {
             PoseUpdate update = new PoseUpdate();
             update.readExternal(o);
-            int n = o.readInt();
+            if (update.count() != snapshot.robotNames().size()) {
+                throw new IOException(update.count() + " robots where the snapshot has " + snapshot.robotNames().size());
+            }
+            int n = count(o, update.count());
             List<RobotExtras> extras = new ArrayList<>(n);
             for (int k = 0; k < n; k++) {
                 int robot = o.readInt();
                 String contact = o.readUTF();
                 String tagged = o.readUTF();
-                int m = o.readInt();
+                if (robot < 0 || robot >= update.count()) {
+                    throw new IOException("extras for robot " + robot);
+                }
+                int m = count(o, frame.length);
                 List<CommEvent> inbox = new ArrayList<>(m);
                 for (int j = 0; j < m; j++) {
                     inbox.add(new CommEvent(o.readUTF(), o.readUTF(), o.readUTF()));
                 }
-                int r = o.readInt();
+                int r = count(o, frame.length);
                 List<SensorReading> readings = new ArrayList<>(r);
                 for (int j = 0; j < r; j++) {
                     String name = o.readUTF();
-                    int k2 = o.readInt();
-                    if (k2 < 0 || k2 > frame.length / Double.BYTES) {
-                        throw new IOException(file + ": step " + stepNumbers[i] + ": damaged: " + k2 + " readings");
-                    }
-                    double[] v = new double[k2];
+                    double[] v = new double[count(o, frame.length / Double.BYTES)];
                     for (int d = 0; d < v.length; d++) {
                         v[d] = o.readDouble();
                     }
@@ -197,9 +203,18 @@ public final class RecordingReader implements Closeable {
                 extras.add(new RobotExtras(robot, contact, tagged, inbox, readings));
             }
             return new Step(update, extras);
-        } catch (ClassCastException | NegativeArraySizeException e) {
-            throw new IOException(file + ": step " + stepNumbers[i] + ": damaged: " + e.getMessage());
+        } catch (IOException | RuntimeException e) {
+            throw new IOException(file + ": step " + stepNumbers[i] + ": damaged: " + e);
         }
+    }
+
+    /** A count from the file, at most {@code max} (which the frame's own size bounds). */
+    private static int count(ObjectInputStream o, int max) throws IOException {
+        int n = o.readInt();
+        if (n < 0 || n > max) {
+            throw new IOException("a count of " + n);
+        }
+        return n;
     }
 
     @Override

@@ -21,7 +21,7 @@ final class PoseLog implements AutoCloseable {
     /** Writes to {@code file} as {@code options} say (none: create or replace it). */
     PoseLog(Path file, java.nio.file.OpenOption... options) throws IOException {
         out = Files.newBufferedWriter(file, StandardCharsets.UTF_8, options);
-        out.write("step,robot,x_m,y_m,heading_deg\n");
+        out.write(HEADER);
     }
 
     void snapshot(WorldSnapshot s) {
@@ -30,14 +30,22 @@ final class PoseLog implements AutoCloseable {
 
     void update(PoseUpdate u) {
         try {
-            for (int i = 0; i < u.count(); i++) {
-                out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s%n", u.step(), names.get(i),
-                        Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
-                        Double.toString(u.headingDeg(i))));
-            }
+            write(u, names, out);
             steps++;
         } catch (IOException e) {
             throw new UncheckedIOException(e);
+        }
+    }
+
+    /** The header of every pose log. */
+    static final String HEADER = "step,robot,x_m,y_m,heading_deg\n";
+
+    /** One step's rows: each robot's pose, in snapshot order ({@code names}). */
+    static void write(PoseUpdate u, List<String> names, java.io.Writer out) throws IOException {
+        for (int i = 0; i < u.count(); i++) {
+            out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s%n", u.step(), names.get(i),
+                    Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
+                    Double.toString(u.headingDeg(i))));
         }
     }
 

@@ -6,13 +6,11 @@ import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
-import java.util.Locale;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 import robosim.protocol.CommEvent;
-import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 
 /**
@@ -66,15 +64,9 @@ public final class RecordToolMain implements Callable<Integer> {
     }
 
     private static void poses(RecordingReader r, BufferedWriter out) throws IOException {
-        out.write("step,robot,x_m,y_m,heading_deg\n");
-        var names = r.snapshot().robotNames();
+        out.write(PoseLog.HEADER);
         for (int k = 0; k < r.steps(); k++) {
-            PoseUpdate u = r.step(k).update();
-            for (int i = 0; i < u.count(); i++) {
-                out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s%n", u.step(), names.get(i),
-                        Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
-                        Double.toString(u.headingDeg(i))));
-            }
+            PoseLog.write(r.step(k).update(), r.snapshot().robotNames(), out);
         }
     }
 

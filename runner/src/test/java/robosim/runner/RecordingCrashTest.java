@@ -9,7 +9,6 @@ import java.net.InetAddress;
 import java.net.Socket;
 import java.nio.file.Path;
 import java.util.Map;
-import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -38,7 +37,7 @@ class RecordingCrashTest {
     void aKilledEnvironmentLeavesARecordingReadableUpToItsLastWholeStep(@TempDir Path dir) throws Exception {
         Path envFile = InJvmSimulation.env("paper-benchmark.xml");
         Path file = dir.resolve("run.rec");
-        ProcessLines env = new ProcessLines("environment", new ProcessBuilder("java", "-cp",
+        ProcessLines env = new ProcessLines("environment", new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
                 System.getProperty("java.class.path"), "robosim.environment.EnvironmentMain", envFile.toString(),
                 "--steps", "1000000", "--no-geometry", "--robot-port", "0", "--viewer-port", "0", "--control-port",
                 "-1", "--record", file.toString()));
@@ -66,13 +65,15 @@ class RecordingCrashTest {
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
                 sim.connect(new Socket(InetAddress.getLoopbackAddress(), robotPort), 64, null);
-                CompletableFuture.runAsync(() -> {
+                Thread t = new Thread(() -> {
                     try {
                         sim.run(new BackAndForth());
                     } catch (Exception expected) {
                         // the Environment is killed under it
                     }
-                });
+                }, "test-robot[" + r.name() + "]");
+                t.setDaemon(true);
+                t.start();
             }
             assertTrue(far.await(LONG_S, TimeUnit.SECONDS), "the run reached step 1500");
 

@@ -39,8 +39,13 @@ final class RunRecorder {
     RunRecorder(Path file, WorldSnapshot start) throws IOException {
         this.file = file;
         this.writer = new RecordingWriter(file);
-        writer.snapshot(start);
-        writer.flush();
+        try {
+            writer.snapshot(start);
+            writer.flush();
+        } catch (IOException | RuntimeException e) {
+            writer.close();
+            throw e;
+        }
         thread = new Thread(this::write, "recorder");
         thread.setDaemon(true);
         thread.start();
@@ -69,9 +74,15 @@ final class RunRecorder {
         }
     }
 
-    /** Waits up to {@code ms} for the file to be finished (after {@link #end}). */
-    void awaitWritten(long ms) throws InterruptedException {
+    /** False once a write has failed: the loop then hands nothing more. */
+    boolean recording() {
+        return !failed;
+    }
+
+    /** Waits up to {@code ms} for the file to be finished (after {@link #end}); false if it is not. */
+    boolean awaitWritten(long ms) throws InterruptedException {
         thread.join(ms);
+        return !thread.isAlive();
     }
 
     private void write() {
@@ -89,12 +100,17 @@ final class RunRecorder {
                     writer.flush();
                 }
             }
-        } catch (IOException e) {
-            failed = true;
-            queue.clear();
-            LOG.error("recording {} stopped after {} steps: {}", file, writer.steps(), e.toString());
         } catch (InterruptedException e) {
+            stopped("interrupted");
             Thread.currentThread().interrupt();
+        } catch (Throwable e) { // (whatever it is, the loop must never wait for this thread again)
+            stopped(e.toString());
         }
+    }
+
+    private void stopped(String why) {
+        failed = true;
+        queue.clear(); // (a loop waiting on a full queue goes on)
+        LOG.error("recording {} stopped after {} steps: {}", file, writer.steps(), why);
     }
 }

@@ -188,12 +188,15 @@ final class StepCycle extends RunLifecycle {
         record.released(released, now);
         record.messages(core.messagesDelivered(), core.messagesOutOfRange(), core.messagesUndeliverable());
         control.settle(released, false);
-        if (!viewers.isEmpty() || recorder != null) {
+        boolean recording = recorder != null && recorder.recording();
+        if (!viewers.isEmpty() || recording) {
             PoseUpdate update = core.viewerUpdate();
             if (!viewers.isEmpty()) {
                 viewers.publish(update);
             }
-            recorded(update);
+            if (recording) {
+                recorded(update);
+            }
         }
         releasedNanos = now; // robots are timed from here
         if (last) {
@@ -258,9 +261,6 @@ final class StepCycle extends RunLifecycle {
 
     /** The step just released, to the recording: the viewers' update and the responses of those still here. */
     private void recorded(PoseUpdate update) {
-        if (recorder == null) {
-            return;
-        }
         StepResponse[] responses = new StepResponse[robots.length];
         for (int i = 0; i < robots.length; i++) {
             responses[i] = core.present(i) && !leaving[i] ? core.response(i) : null;
