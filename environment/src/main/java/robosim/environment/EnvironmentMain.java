@@ -214,14 +214,7 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: cannot listen on " + bind + ": " + e.getMessage());
             return 2;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(() -> {
-            host.current().stop("the Environment was stopped");
-            try {
-                host.current().awaitOutputDone(5000); // (the recording's end, the viewers' last updates)
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "shutdown"));
+        Runtime.getRuntime().addShutdownHook(new Thread(host::stopOnSignal, "shutdown"));
         int[] ports = host.ports();
         System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
                 + " control=" + (control == null ? -1 : control.port()));

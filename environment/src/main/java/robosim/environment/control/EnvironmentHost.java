@@ -85,6 +85,20 @@ public final class EnvironmentHost {
         return file.resolveSibling(numbered);
     }
 
+    /**
+     * The JVM's {@code shutdown} hook (Ctrl-C, SIGTERM): stops the current simulation and waits (up to 5 s)
+     * for its recording's end and its viewers' last updates.
+     */
+    public void stopOnSignal() {
+        ClientWorkerCoordinator c = current();
+        c.stop("the Environment was stopped");
+        try {
+            c.awaitOutputDone(5000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
     /** The ports of the current simulation: robot, viewer, geometry (-1 when in-process). */
     public synchronized int[] ports() {
         return current.ports();

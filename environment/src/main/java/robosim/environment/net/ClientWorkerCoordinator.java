@@ -275,16 +275,11 @@ public final class ClientWorkerCoordinator implements Closeable {
         return endedLatch.await(timeout, unit);
     }
 
-    /**
-     * After the end: waits up to {@code timeoutMs} for viewer workers to send what they hold (a
-     * recording viewer may still be writing its backlog) and for the recording to be finished, so a
-     * process that exits next loses nothing.
-     */
+    /** After the end: waits up to {@code timeoutMs} each for the recording and for viewer workers to send what they hold. */
     public void awaitOutputDone(long timeoutMs) throws InterruptedException {
         RunRecorder recorder = cycle.recorder; // (its own wait: a stuck viewer takes nothing from it)
-        if (recorder != null && !recorder.awaitWritten(timeoutMs)) {
-            LOG.warn("the recording was not finished within {} ms of the end; its last steps may be missing",
-                    timeoutMs);
+        if (recorder != null) {
+            recorder.awaitWritten(timeoutMs);
         }
         cycle.viewers().awaitDone(timeoutMs);
     }

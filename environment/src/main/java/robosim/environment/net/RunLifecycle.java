@@ -158,7 +158,6 @@ abstract class RunLifecycle {
         }
         viewers.announce(new RunState(released, RunState.Phase.RUNNING));
         record.begin(now);
-        startRecording();
         control.restartPace(now, 0);
         releasedNanos = now;
         phase = Phase.COLLECTING;
@@ -179,20 +178,6 @@ abstract class RunLifecycle {
         coordinator.started();
         listener.started(robots.length);
         return true;
-    }
-
-    /** Opens the recording, if the run is recorded. */
-    abstract void startRecording();
-
-    /** The end, to the recording (which the recorder then finishes). */
-    private void recorded(SimulationEnd end) {
-        if (recorder != null) {
-            try {
-                recorder.end(end);
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }
     }
 
     // ---- robots leaving, deadlines --------------------------------------------------------------------
@@ -299,7 +284,9 @@ abstract class RunLifecycle {
         }
         viewers.end(end);
         geometry.end(end);
-        recorded(end);
+        if (recorder != null) {
+            recorder.end(end);
+        }
         control.settle(released, true);
         rosterChanged = true;
         LOG.info("simulation over after {} steps: {}", step, Printable.of(reason));

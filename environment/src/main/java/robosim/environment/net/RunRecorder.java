@@ -52,16 +52,16 @@ final class RunRecorder {
     }
 
     /** Loop thread: one released step. */
-    void step(PoseUpdate update, StepResponse[] responses) throws InterruptedException {
+    void step(PoseUpdate update, StepResponse[] responses) {
         hand(new Step(update, responses));
     }
 
     /** Loop thread: the end; the thread finishes the file and ends. */
-    void end(SimulationEnd end) throws InterruptedException {
+    void end(SimulationEnd end) {
         hand(end);
     }
 
-    private void hand(Object item) throws InterruptedException {
+    private void hand(Object item) {
         if (failed) {
             return;
         }
@@ -70,7 +70,11 @@ final class RunRecorder {
                 toldFull = true;
                 LOG.warn("recording {}: the disk is {} steps behind; the run waits for it", file, QUEUE);
             }
-            queue.put(item);
+            try {
+                queue.put(item);
+            } catch (InterruptedException e) { // (the loop is being stopped: the end says the rest)
+                Thread.currentThread().interrupt();
+            }
         }
     }
 
@@ -79,10 +83,12 @@ final class RunRecorder {
         return !failed;
     }
 
-    /** Waits up to {@code ms} for the file to be finished (after {@link #end}); false if it is not. */
-    boolean awaitWritten(long ms) throws InterruptedException {
+    /** Waits up to {@code ms} for the file to be finished (after {@link #end}); logs it if it is not. */
+    void awaitWritten(long ms) throws InterruptedException {
         thread.join(ms);
-        return !thread.isAlive();
+        if (thread.isAlive()) {
+            LOG.warn("recording {} was not finished within {} ms of the end; its last steps may be missing", file, ms);
+        }
     }
 
     private void write() {

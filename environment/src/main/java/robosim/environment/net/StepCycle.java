@@ -43,6 +43,7 @@ final class StepCycle extends RunLifecycle {
                     if (!geometry.ready() || !begin(now)) {
                         return;
                     }
+                    startRecording(); // (before step 0 is computed: the world as it starts)
                 }
                 case COLLECTING -> {
                     if (activeCount == 0) {
@@ -247,8 +248,7 @@ final class StepCycle extends RunLifecycle {
     // ---- the recording ---------------------------------------------------------------------------------
 
     /** With {@code --record}: opens the recording at the start, from the world as a viewer would get it. */
-    @Override
-    void startRecording() {
+    private void startRecording() {
         if (settings.record() == null || recorder != null) {
             return;
         }
@@ -265,11 +265,7 @@ final class StepCycle extends RunLifecycle {
         for (int i = 0; i < robots.length; i++) {
             responses[i] = core.present(i) && !leaving[i] ? core.response(i) : null;
         }
-        try {
-            recorder.step(update, responses);
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-        }
+        recorder.step(update, responses);
     }
 
     /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
