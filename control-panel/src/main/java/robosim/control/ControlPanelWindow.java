@@ -39,6 +39,7 @@ public final class ControlPanelWindow {
     private final JLabel state = new JLabel("connecting...");
     private final JTextArea detail = new JTextArea(6, 44);
     private final JLabel last = new JLabel(" ");
+    private final ReplayBar replay = new ReplayBar(this::send);
     private ControlClient client;
     private volatile boolean busy;
 
@@ -84,7 +85,10 @@ public final class ControlPanelWindow {
         JPanel root = new JPanel(new BorderLayout(6, 6));
         root.setBorder(BorderFactory.createEmptyBorder(6, 6, 6, 6));
         root.add(top, BorderLayout.CENTER);
-        root.add(buttons, BorderLayout.SOUTH);
+        JPanel bottom = new JPanel(new BorderLayout(6, 6));
+        bottom.add(buttons, BorderLayout.CENTER);
+        bottom.add(replay.panel(), BorderLayout.SOUTH);
+        root.add(bottom, BorderLayout.SOUTH);
         frame.setContentPane(root);
         frame.pack();
         frame.setLocationByPlatform(true);
@@ -126,8 +130,10 @@ public final class ControlPanelWindow {
         io.execute(() -> {
             String head;
             String body;
+            JsonNode status = null;
             try {
                 JsonNode r = client().request("status");
+                status = r;
                 head = StatusText.headline(r);
                 body = StatusText.details(r);
             } catch (IOException e) {
@@ -137,9 +143,13 @@ public final class ControlPanelWindow {
             }
             String h = head;
             String b = body;
+            JsonNode replayed = status;
             SwingUtilities.invokeLater(() -> {
                 state.setText(h);
                 detail.setText(b);
+                if (replay.show(replayed)) {
+                    SwingUtilities.getWindowAncestor(state).pack();
+                }
             });
         });
     }

@@ -6,7 +6,8 @@ import java.util.Locale;
 /**
  * The Control Panel's status lines, from one {@code status} reply: a headline (state, step, and the
  * steps per second only while running) and the details (file, robots, who is connected and who has
- * left, where geometry is resolved, why the run ended). Values from the network are shown with
+ * left, where geometry is resolved, why the run ended; for a replay, the recording's steps, the speed and
+ * the viewers). Values from the network are shown with
  * control characters replaced and long values cut, so a hostile reply cannot garble the window.
  */
 final class StatusText {
@@ -25,6 +26,12 @@ final class StatusText {
     }
 
     static String details(JsonNode status) {
+        if (status.path("replay").asBoolean(false)) {
+            return "replaying: " + clean(status.path("file").asText()) + "\nrecorded:  steps "
+                    + status.path("first_step").asLong() + " to " + status.path("last_step").asLong()
+                    + (status.path("at_end").asBoolean() ? " (at the end: seek, or stop)" : "")
+                    + "\nspeed:     x" + status.path("speed").asDouble() + "\nviewers:   " + status.path("viewers").asInt();
+        }
         return "file:      " + clean(status.path("file").asText()) + "\nrobots:    " + list(status.path("robots"))
                 + "\nconnected: " + list(status.path("connected")) + "\nleft:      " + list(status.path("left"))
                 + "\ngeometry:  " + clean(status.path("geometry").asText("?"))

@@ -34,6 +34,13 @@ class StatusTextTest {
     }
 
     @Test
+    void aReplayShowsItsRecordingSpeedAndViewers() throws Exception {
+        assertEquals("replaying: run.rec\nrecorded:  steps 0 to 4999 (at the end: seek, or stop)\nspeed:     x2.5\n"
+                + "viewers:   1", StatusText.details(status("{'replay':true,'file':'run.rec','first_step':0,"
+                + "'last_step':4999,'at_end':true,'speed':2.5,'viewers':1}")));
+    }
+
+    @Test
     void controlCharactersFromTheNetworkAreNotShown() throws Exception {
         assertEquals("RUN?NING   step 1", StatusText.headline(status("{'state':'RUN\\nNING','step':1}")));
     }

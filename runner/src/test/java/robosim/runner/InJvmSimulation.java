@@ -34,6 +34,10 @@ final class InJvmSimulation {
     final WorldSpec spec;
     final List<RobotControl> controls = new ArrayList<>();
     final List<PoseUpdate> updates = new ArrayList<>();
+    /** What the recording viewer got besides the updates: the snapshot, the run states, the end. */
+    volatile WorldSnapshot snapshot;
+    final List<robosim.protocol.RunState> states = new java.util.concurrent.CopyOnWriteArrayList<>();
+    robosim.protocol.SimulationEnd end;
     /** The last update each extra live viewer saw. */
     final List<PoseUpdate> liveLast = new ArrayList<>();
     RunSummary summary;
@@ -138,7 +142,13 @@ final class InJvmSimulation {
             ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], new ViewerHello(true), 10_000, keys);
             viewer.start(new ViewerClient.Listener() {
                 @Override
-                public void snapshot(WorldSnapshot snapshot) {
+                public void snapshot(WorldSnapshot first) {
+                    snapshot = first;
+                }
+
+                @Override
+                public void runState(robosim.protocol.RunState state) {
+                    states.add(state);
                 }
 
                 @Override
@@ -222,7 +232,7 @@ final class InJvmSimulation {
             if (!env.awaitEnd(5, TimeUnit.MINUTES)) {
                 throw new AssertionError("the simulation did not end");
             }
-            viewer.awaitEnd(1, TimeUnit.MINUTES);
+            end = viewer.awaitEnd(1, TimeUnit.MINUTES);
             for (ViewerClient live : lives) {
                 live.awaitEnd(1, TimeUnit.MINUTES);
             }

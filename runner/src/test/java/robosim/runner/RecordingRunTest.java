@@ -44,7 +44,7 @@ class RecordingRunTest {
         }
     }
 
-    static byte[] bytes(PoseUpdate u) throws IOException {
+    static byte[] bytes(java.io.Externalizable u) throws IOException {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         try (ObjectOutputStream o = new ObjectOutputStream(b)) {
             u.writeExternal(o);

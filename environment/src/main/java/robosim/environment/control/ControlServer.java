@@ -86,7 +86,12 @@ public final class ControlServer implements Closeable {
      * @param directories where {@code load} may read files
      */
     public ControlServer(EnvironmentHost host, SimulationKeys keys, EnvironmentDirectories directories) {
-        this.requests = new ControlRequests(host, keys, directories);
+        this(new EnvironmentCommands(host, directories), keys);
+    }
+
+    /** A control port serving {@code commands} (a replay's, say), with the same bounds and proof. */
+    public ControlServer(ControlCommands commands, SimulationKeys keys) {
+        this.requests = new ControlRequests(commands, keys);
         this.tls = keys == null ? null : keys.tls();
     }
 
@@ -155,9 +160,15 @@ public final class ControlServer implements Closeable {
         if (server != null) {
             server.close();
         }
-        group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
-        worker.shutdownNow();
+        worker.shutdownNow(); // (a step or pause under way answers "interrupted")
+        quick.shutdown(); // the quick requests in hand (a stop, say) answer first, briefly
+        try {
+            quick.awaitTermination(2, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
         quick.shutdownNow();
+        group.shutdownGracefully(100, 1000, TimeUnit.MILLISECONDS); // (their replies still leave)
     }
 
     /** One per connection; its fields are touched on the I/O thread only. */
@@ -223,23 +234,23 @@ public final class ControlServer implements Closeable {
             inHand = true;
             String verb = ControlRequests.verb(request);
             if (!caller.proven() && !ControlRequests.beforeProof(verb)) {
-                answered(ctx, ControlRequests.error(ControlRequests.PROVE_FIRST));
+                answered(ctx, ControlReplies.error(ControlRequests.PROVE_FIRST));
                 return;
             }
-            ExecutorService runner = ControlRequests.waits(verb) ? worker : quick;
+            ExecutorService runner = requests.waits(verb) ? worker : quick;
             try {
                 runner.execute(() -> {
                     ObjectNode answer;
                     try {
                         answer = requests.handle(caller, request);
                     } catch (Throwable t) { // the connection's turn must end whatever happens
-                        answer = ControlRequests.error("failed: " + t);
+                        answer = ControlReplies.error("failed: " + t);
                     }
                     ObjectNode a = answer;
                     ctx.executor().execute(() -> answered(ctx, a));
                 });
             } catch (RejectedExecutionException e) {
-                answered(ctx, ControlRequests.error(runner.isShutdown() ? "the Environment is shutting down"
+                answered(ctx, ControlReplies.error(runner.isShutdown() ? "the Environment is shutting down"
                         : "the Environment is busy; try again"));
             }
         }
@@ -284,11 +295,11 @@ public final class ControlServer implements Closeable {
         public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
             if (cause instanceof TooLongFrameException) {
                 LOG.warn("control port: {} sent a line over {} bytes; closing", ctx.channel().remoteAddress(), MAX_LINE);
-                ctx.writeAndFlush(ControlRequests.error("request longer than " + MAX_LINE + " bytes").toString() + "\n")
+                ctx.writeAndFlush(ControlReplies.error("request longer than " + MAX_LINE + " bytes").toString() + "\n")
                         .addListener(ChannelFutureListener.CLOSE);
             } else {
                 LOG.info("control port: {} dropped: {}", ctx.channel().remoteAddress(),
-                        ControlRequests.abbreviate(cause.toString(), 120));
+                        ControlReplies.abbreviate(cause.toString(), 120));
                 ctx.close();
             }
         }

@@ -293,7 +293,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     public void close() {
         stop("the Environment was shut down");
         listeners.close();
-        for (ViewerClientWorker v : cycle.viewers().all()) {
+        for (ViewerSink v : cycle.viewers().all()) {
             v.drop();
         }
     }

@@ -1,11 +1,11 @@
 package robosim.environment.net;
 
 /** Text from the network made safe for one log line: every control character (a line break) shown as '?'. */
-final class Printable {
+public final class Printable {
     private Printable() {
     }
 
-    static String of(String text) {
+    public static String of(String text) {
         if (text == null) {
             return "";
         }

@@ -17,7 +17,7 @@ import robosim.protocol.WorldSnapshot;
  * writes to this socket; a write this thread cannot finish within the viewer write timeout gets the
  * viewer dropped by the loop with a logged reason ({@link #writingFor}).
  */
-final class ViewerClientWorker extends ClientWorker {
+final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     /**
      * Kernel send buffer for a viewer: enough for dozens of updates, so a live viewer never waits on
      * it, while a viewer that stops reading blocks its worker after this much instead of after the
@@ -82,22 +82,24 @@ final class ViewerClientWorker extends ClientWorker {
     }
 
     /** Its queue, once it has said hello (the loop only sees joined viewers). */
-    ViewerQueue queue() {
+    @Override
+    public ViewerQueue queue() {
         return queue;
     }
 
-    /** How long its current write has taken so far, ns; 0 when it is not writing. */
-    long writingFor(long now) {
+    @Override
+    public long writingFor(long now) {
         long since = writingSince;
         return since == 0 ? 0 : now - since;
     }
 
-    String viewerName() {
+    @Override
+    public String viewerName() {
         return name();
     }
 
-    /** Waits until this worker has sent everything it holds (or its connection is gone). */
-    boolean awaitDone(long nanos) throws InterruptedException {
+    @Override
+    public boolean awaitDone(long nanos) throws InterruptedException {
         return done.await(nanos, TimeUnit.NANOSECONDS);
     }
 

@@ -13,8 +13,8 @@ import robosim.protocol.SimulationEnd;
  * n updates a second gets the newest at most every 1/n s. A change of run state is held the same way,
  * newest only; it goes out after the updates held before it, or ahead of one that waits for the rate cap.
  */
-final class ViewerQueue {
-    static final int RECORDING_BACKLOG = 1024;
+public final class ViewerQueue {
+    public static final int RECORDING_BACKLOG = 1024;
 
     private final ArrayDeque<PoseUpdate> pending = new ArrayDeque<>();
     private final boolean everyStep;
@@ -28,13 +28,13 @@ final class ViewerQueue {
     private SimulationEnd end;
     private RunState state;
 
-    ViewerQueue(boolean everyStep, int maxUpdatesPerSecond) {
+    public ViewerQueue(boolean everyStep, int maxUpdatesPerSecond) {
         this.everyStep = everyStep;
         this.intervalNanos = everyStep || maxUpdatesPerSecond <= 0 ? 0 : 1_000_000_000L / maxUpdatesPerSecond;
     }
 
     /** Loop thread: true if one more update fits now; if not, the queue will signal room once it has some. */
-    synchronized boolean hasRoom() {
+    public synchronized boolean hasRoom() {
         if (closed || !everyStep || pending.size() < RECORDING_BACKLOG) {
             return true;
         }
@@ -43,7 +43,7 @@ final class ViewerQueue {
     }
 
     /** Loop thread: the step's poses. Never blocks; the loop has checked {@link #hasRoom} first. */
-    synchronized void offer(PoseUpdate update) {
+    public synchronized void offer(PoseUpdate update) {
         if (closed) {
             return;
         }
@@ -57,27 +57,27 @@ final class ViewerQueue {
     }
 
     /** Loop thread: the run now runs or is held. Never blocks. */
-    synchronized void state(RunState newState) {
+    public synchronized void state(RunState newState) {
         if (!closed) {
             state = newState;
             notifyAll(); // rare: also cuts short a wait for the update-rate cap
         }
     }
 
-    synchronized void end(SimulationEnd message) {
+    public synchronized void end(SimulationEnd message) {
         end = message;
         notifyAll();
     }
 
     /** The viewer is gone: nothing more is kept. */
-    synchronized void close() {
+    public synchronized void close() {
         closed = true;
         pending.clear();
         notifyAll();
     }
 
     /** True once, after a take that made room the loop was waiting for. */
-    synchronized boolean claimRoomSignal() {
+    public synchronized boolean claimRoomSignal() {
         boolean s = roomSignal;
         roomSignal = false;
         return s;
@@ -87,7 +87,7 @@ final class ViewerQueue {
      * Worker thread: the next thing to send - an update (at most one per interval for a capped live
      * viewer), a run state, or the end ({@link SimulationEnd}, the last).
      */
-    synchronized Object take() throws InterruptedException {
+    public synchronized Object take() throws InterruptedException {
         while (true) {
             if (pending.isEmpty() && end != null) {
                 return end;

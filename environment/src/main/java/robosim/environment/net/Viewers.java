@@ -16,45 +16,46 @@ import robosim.protocol.SimulationEnd;
  * happen on the loop thread; a viewer whose worker ends removes itself (also after the run); the list is
  * safe for both.
  */
-final class Viewers {
+public final class Viewers {
     private static final Logger LOG = LoggerFactory.getLogger(Viewers.class);
 
-    private final List<ViewerClientWorker> viewers = new CopyOnWriteArrayList<>();
+    private final List<ViewerSink> viewers = new CopyOnWriteArrayList<>();
     private final long writeTimeoutNanos;
     private final RunListener listener;
 
-    Viewers(long writeTimeoutMs, RunListener listener) {
+    /** {@code writeTimeoutMs}: a write longer than this drops its viewer (0: never); {@code listener} hears of drops. */
+    public Viewers(long writeTimeoutMs, RunListener listener) {
         this.writeTimeoutNanos = writeTimeoutMs <= 0 ? Long.MAX_VALUE : writeTimeoutMs * 1_000_000L;
         this.listener = listener;
     }
 
-    void add(ViewerClientWorker viewer) {
+    public void add(ViewerSink viewer) {
         viewers.add(viewer);
         LOG.info("{} connected ({} viewer(s))", viewer.viewerName(), viewers.size());
     }
 
-    void remove(ViewerClientWorker viewer, String why) {
+    public void remove(ViewerSink viewer, String why) {
         if (viewers.remove(viewer)) {
             LOG.info("{} disconnected: {}", viewer.viewerName(), Printable.of(why));
         }
     }
 
-    boolean isEmpty() {
+    public boolean isEmpty() {
         return viewers.isEmpty();
     }
 
-    int count() {
+    public int count() {
         return viewers.size();
     }
 
     /** A copy of the viewers now, for waiting on them after the end (any thread). */
-    List<ViewerClientWorker> all() {
+    public List<ViewerSink> all() {
         return List.copyOf(viewers);
     }
 
     /** True if every recording viewer can take one more update now (the others always can). */
-    boolean haveRoom() {
-        for (ViewerClientWorker v : viewers) {
+    public boolean haveRoom() {
+        for (ViewerSink v : viewers) {
             if (!v.queue().hasRoom()) {
                 return false;
             }
@@ -62,27 +63,27 @@ final class Viewers {
         return true;
     }
 
-    void publish(PoseUpdate update) {
-        for (ViewerClientWorker v : viewers) {
+    public void publish(PoseUpdate update) {
+        for (ViewerSink v : viewers) {
             v.queue().offer(update);
         }
     }
 
-    void announce(RunState state) {
-        for (ViewerClientWorker v : viewers) {
+    public void announce(RunState state) {
+        for (ViewerSink v : viewers) {
             v.queue().state(state);
         }
     }
 
-    void end(SimulationEnd end) {
-        for (ViewerClientWorker v : viewers) {
+    public void end(SimulationEnd end) {
+        for (ViewerSink v : viewers) {
             v.queue().end(end);
         }
     }
 
     /** Drops every viewer stuck in one write for longer than the write timeout. */
-    void dropStuck(long now) {
-        for (ViewerClientWorker v : viewers) {
+    public void dropStuck(long now) {
+        for (ViewerSink v : viewers) {
             long writing = v.writingFor(now);
             if (writing > writeTimeoutNanos && viewers.remove(v)) {
                 String why = "did not take a write within " + writeTimeoutNanos / 1_000_000 + " ms";
@@ -95,9 +96,9 @@ final class Viewers {
     }
 
     /** After the end: waits up to {@code timeoutMs} for every viewer worker to send what it holds. */
-    void awaitDone(long timeoutMs) throws InterruptedException {
+    public void awaitDone(long timeoutMs) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(timeoutMs);
-        for (ViewerClientWorker v : all()) {
+        for (ViewerSink v : all()) {
             if (!v.awaitDone(Math.max(0, deadline - System.nanoTime()))) {
                 LOG.warn("{} did not take the end of the simulation within {} ms", v.viewerName(), timeoutMs);
             }

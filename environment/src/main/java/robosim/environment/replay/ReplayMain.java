@@ -1,0 +1,179 @@
+package robosim.environment.replay;
+
+import java.io.IOException;
+import java.net.BindException;
+import java.net.InetAddress;
+import java.nio.file.Path;
+import java.util.concurrent.Callable;
+import java.util.concurrent.TimeUnit;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.environment.control.ControlServer;
+import robosim.environment.net.RunListener;
+import robosim.environment.net.Settings;
+import robosim.environment.net.Viewers;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+import robosim.protocol.RecordingReader;
+import robosim.protocol.SimulationKeys;
+
+/**
+ * {@code scripts/replay.sh FILE}: serves a recording ({@code --record}) on the viewer port as the live
+ * Environment served the run, steered from the control port. Prints {@code listening viewers=P control=P}
+ * once its ports are bound and {@code replay ended step=S} at the end. Exit codes: 0 done, 2 bad input.
+ */
+@Command(name = "replay.sh", mixinStandardHelpOptions = true,
+        description = "Replays a recording made with --record to any viewer: pause, step, seek and speed from "
+                + "the Control Panel or the control port.")
+public final class ReplayMain implements Callable<Integer> {
+    @Parameters(index = "0", paramLabel = "FILE", description = "The recording (environment.sh or headless.sh --record).")
+    Path file;
+
+    @Option(names = "--viewer-port", defaultValue = "" + Protocol.DEFAULT_VIEWER_PORT,
+            description = "Port for viewers (default: ${DEFAULT-VALUE}; 0 picks a free one).")
+    int viewerPort;
+
+    @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
+            description = "Port for the Control Panel (default: ${DEFAULT-VALUE}; 0 picks a free one; -1 none).")
+    int controlPort;
+
+    @Option(names = "--bind", defaultValue = "127.0.0.1",
+            description = "Address to listen on (default: ${DEFAULT-VALUE}, loopback only).")
+    String bind;
+
+    @Option(names = "--speed", defaultValue = "1", description = "Times real time, from " + ReplayClock.MIN_SPEED
+            + " to " + ReplayClock.MAX_SPEED + " (default: ${DEFAULT-VALUE}: the run's time step per step).")
+    double speed;
+
+    @Option(names = "--paused", description = "Hold before the first step until resume or step (default: start "
+            + "when the first viewer connects).")
+    boolean paused;
+
+    @Option(names = "--exit-at-end", description = "After the last step send the end to every viewer and exit, as "
+            + "the live run did (default: hold at the last step, so viewers can seek back, until stop).")
+    boolean exitAtEnd;
+
+    @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,
+            description = "Viewers the port holds at once; one more is closed at once (default: ${DEFAULT-VALUE}).")
+    int maxConnections;
+
+    @Option(names = "--handshake-timeout-ms", defaultValue = "10000",
+            description = "A viewer's hello (and proof) must be in within this long (default: ${DEFAULT-VALUE}).")
+    int handshakeTimeoutMs;
+
+    @Option(names = "--write-timeout-ms", defaultValue = "" + Settings.DEFAULT_WRITE_TIMEOUT_MS,
+            description = "A viewer stuck this long in one write is dropped (default: ${DEFAULT-VALUE}; 0 never).")
+    long writeTimeoutMs;
+
+    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY, hidden = true,
+            description = "Messages between object-stream resets, as the Environment's option.")
+    int resetEvery;
+
+    @Override
+    public Integer call() throws Exception {
+        String bad = badOption();
+        if (bad != null) {
+            System.err.println("replay: " + bad);
+            return 2;
+        }
+        InetAddress bindAddress = InetAddress.getByName(bind);
+        SimulationKeys keys;
+        RecordingReader recording;
+        try {
+            keys = SimulationKeys.fromEnvironment();
+            recording = new RecordingReader(file);
+        } catch (IOException e) {
+            System.err.println("replay: " + e.getMessage());
+            return 2;
+        }
+        if ((keys == null || keys.tls() == null) && !bindAddress.isLoopbackAddress()) {
+            System.err.println("replay: --bind " + bind + " opens the viewer and control ports beyond this machine: "
+                    + "set ROBOSIM_KEYS to a directory made by scripts/make-keys.sh");
+            return 2;
+        }
+        Viewers viewers = new Viewers(writeTimeoutMs, new RunListener() { });
+        ReplayClock clock = new ReplayClock(recording, viewers, speed, exitAtEnd, paused);
+        ReplayPort port = null;
+        ControlServer control = null;
+        try {
+            port = new ReplayPort(bindAddress, viewerPort, clock, keys, maxConnections, handshakeTimeoutMs, resetEvery);
+            if (controlPort >= 0) {
+                control = new ControlServer(new ReplayCommands(clock, file), keys);
+                control.start(bindAddress, controlPort);
+            }
+        } catch (IOException e) {
+            close(port, control, recording);
+            System.err.println("replay: " + e.getMessage() + (e instanceof BindException
+                    ? " (choose another with --viewer-port or --control-port)" : ""));
+            return 2;
+        }
+        clock.start();
+        port.accept();
+        Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnSignal(clock, viewers), "shutdown"));
+        System.out.println("listening viewers=" + port.port() + " control=" + (control == null ? -1 : control.port()));
+        System.out.println("replaying " + file + ": " + recording.steps() + " steps"
+                + (recording.steps() == 0 ? "" : " (" + recording.stepNumber(0) + " to "
+                + recording.stepNumber(recording.steps() - 1) + ")")
+                + (recording.end() == null ? ", cut short" + (recording.cutShort() == null ? "" : ": " + recording.cutShort())
+                : ", ended: " + recording.end().reason()));
+        System.out.flush();
+        try {
+            while (!clock.awaitEnd(TimeUnit.DAYS.toMillis(1))) {
+                // a replay held at its end waits for stop for as long as it takes
+            }
+            viewers.awaitDone(Math.max(1000, writeTimeoutMs));
+            System.out.println("replay ended step=" + clock.endedAt());
+            return 0;
+        } finally {
+            close(port, control, recording);
+        }
+    }
+
+    private String badOption() {
+        if (!(speed >= ReplayClock.MIN_SPEED && speed <= ReplayClock.MAX_SPEED)) {
+            return "--speed must be from " + ReplayClock.MIN_SPEED + " to " + ReplayClock.MAX_SPEED + ", got " + speed;
+        }
+        if (maxConnections < 1) {
+            return "--max-connections must be >= 1, got " + maxConnections;
+        }
+        if (handshakeTimeoutMs < 1 || writeTimeoutMs < 0 || resetEvery < 0) {
+            return "--handshake-timeout-ms must be >= 1, --write-timeout-ms and --reset-every >= 0";
+        }
+        return null;
+    }
+
+    /** Ctrl-C or SIGTERM: the end goes to every viewer before the process goes. */
+    private static void stopOnSignal(ReplayClock clock, Viewers viewers) {
+        try {
+            clock.stop("the replay was stopped").get(5, TimeUnit.SECONDS);
+            viewers.awaitDone(2000);
+        } catch (Exception e) {
+            // going anyway
+        }
+    }
+
+    private static void close(ReplayPort port, ControlServer control, RecordingReader recording) {
+        if (port != null) {
+            port.close();
+        }
+        if (control != null) {
+            control.close();
+        }
+        try {
+            recording.close();
+        } catch (IOException ignored) {
+            // read only
+        }
+    }
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new ReplayMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("replay: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}

@@ -1,0 +1,200 @@
+package robosim.environment.replay;
+
+import java.io.EOFException;
+import java.io.Externalizable;
+import java.io.IOException;
+import java.net.Socket;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.environment.net.Printable;
+import robosim.environment.net.ViewerQueue;
+import robosim.environment.net.ViewerSink;
+import robosim.protocol.Challenge;
+import robosim.protocol.Limits;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Proof;
+import robosim.protocol.Protocol;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.SimulationKeys;
+import robosim.protocol.ViewerHello;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * One viewer of a replay, on its own thread {@code replay-viewer[n]}, speaking the viewer protocol exactly
+ * as the Environment's viewer worker does: its hello (and, with keys, the shared secret's proof) under the
+ * handshake deadline and the stranger's byte cap, then the snapshot the {@link ReplayClock} hands it, then
+ * what its {@link ViewerQueue} holds until the end. A fault drops this viewer with a logged reason; the
+ * replay goes on.
+ */
+final class ReplayViewer implements ViewerSink, Runnable {
+    private static final Logger LOG = LoggerFactory.getLogger(ReplayViewer.class);
+    /** As the Environment's viewer worker: a viewer that stops reading blocks this thread after this much. */
+    static final int SEND_BUFFER_BYTES = 64 * 1024;
+    private static final long JOIN_LIMIT_MS = 30_000;
+    private static final int RUNNING = 0;
+    private static final int HELLO_IN = 1;
+    private static final int EXPIRED = 2;
+
+    private final Socket socket;
+    private final String name;
+    private final ReplayClock clock;
+    private final SimulationKeys keys;
+    private final int resetEvery;
+    private final Runnable release;
+    private final AtomicInteger handshake = new AtomicInteger(RUNNING);
+    private final CountDownLatch done = new CountDownLatch(1);
+    private volatile Future<?> deadline;
+    private volatile ObjectConnection connection;
+    private volatile ViewerQueue queue;
+    private volatile long writingSince;
+    private volatile boolean joined;
+
+    ReplayViewer(Socket socket, int serial, ReplayClock clock, SimulationKeys keys, int resetEvery, Runnable release) {
+        this.socket = socket;
+        this.name = "replay-viewer[" + serial + "]";
+        this.clock = clock;
+        this.keys = keys;
+        this.resetEvery = resetEvery;
+        this.release = release;
+    }
+
+    /** Accept thread, before the thread starts: what closes it if its hello is not in by then. */
+    void deadline(Future<?> d) {
+        deadline = d;
+    }
+
+    /** The handshake deadline has passed: closed, unless its hello came in first. */
+    void handshakeExpired() {
+        if (handshake.compareAndSet(RUNNING, EXPIRED)) {
+            drop();
+        }
+    }
+
+    @Override
+    public void run() {
+        String why = "finished";
+        try {
+            socket.setSendBufferSize(SEND_BUFFER_BYTES);
+            connection = ObjectConnection.server(socket, resetEvery, keys);
+            connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
+            serve();
+        } catch (IOException e) {
+            why = handshake.get() == EXPIRED ? "no hello within the handshake deadline"
+                    : e instanceof EOFException ? "the viewer closed the connection" : e.getMessage();
+            LOG.info("{}: {}", name, Printable.of(why));
+        } catch (InterruptedException e) {
+            why = "interrupted";
+            Thread.currentThread().interrupt();
+        } finally {
+            Future<?> d = deadline;
+            if (d != null) {
+                d.cancel(false);
+            }
+            drop();
+            release.run();
+            ViewerQueue q = queue;
+            if (q != null) {
+                q.close();
+            }
+            if (joined) {
+                clock.left(this, why);
+            }
+            done.countDown();
+        }
+    }
+
+    private void serve() throws IOException, InterruptedException {
+        ViewerHello hello = connection.read(ViewerHello.class);
+        String refusal = null;
+        if (keys != null) {
+            byte[] nonce = SimulationKeys.nonce();
+            connection.write(new Challenge(nonce));
+            connection.flush();
+            refusal = keys.proves("viewer", nonce, connection.read(Proof.class).mac()) ? null
+                    : "it did not prove the shared secret";
+        }
+        if (!handshake.compareAndSet(RUNNING, HELLO_IN)) {
+            throw new IOException("no hello within the handshake deadline");
+        }
+        if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
+            refusal = "protocol version " + hello.protocolVersion() + " is not supported (this replay speaks "
+                    + Protocol.VERSION + ")";
+        }
+        if (refusal != null) {
+            LOG.warn("{} refused: {}", name, Printable.of(refusal));
+            send(new SimulationEnd(-1, refusal));
+            return;
+        }
+        connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
+        queue = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        WorldSnapshot first;
+        try {
+            joined = true;
+            first = clock.join(this).get(JOIN_LIMIT_MS, TimeUnit.MILLISECONDS);
+        } catch (ExecutionException | TimeoutException e) {
+            throw new ProtocolException("the replay did not take this viewer: " + (e.getCause() == null ? e : e.getCause()));
+        }
+        send(first);
+        while (true) {
+            Object next = queue.take();
+            if (queue.claimRoomSignal()) {
+                clock.roomFreed();
+            }
+            send((Externalizable) next);
+            if (next instanceof SimulationEnd) {
+                return;
+            }
+        }
+    }
+
+    private void send(Externalizable message) throws IOException {
+        writingSince = System.nanoTime();
+        try {
+            connection.write(message);
+            connection.flush();
+        } finally {
+            writingSince = 0;
+        }
+    }
+
+    @Override
+    public ViewerQueue queue() {
+        return queue;
+    }
+
+    @Override
+    public long writingFor(long now) {
+        long since = writingSince;
+        return since == 0 ? 0 : now - since;
+    }
+
+    @Override
+    public String viewerName() {
+        return name;
+    }
+
+    @Override
+    public void drop() {
+        ObjectConnection c = connection;
+        if (c != null) {
+            c.close();
+        }
+        try {
+            socket.close();
+        } catch (IOException ignored) {
+            // already gone
+        }
+    }
+
+    @Override
+    public boolean awaitDone(long nanos) throws InterruptedException {
+        return done.await(nanos, TimeUnit.NANOSECONDS);
+    }
+}

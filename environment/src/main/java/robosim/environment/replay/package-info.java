@@ -1,0 +1,11 @@
+/**
+ * Replaying a recording ({@code scripts/replay.sh FILE}): the viewer port serves it exactly as the live
+ * Environment served the run, and the control port steers it (pause, resume, step, seek, speed). Threads:
+ * {@code replay-clock} (the one owner of the replay's position and time: {@link
+ * robosim.environment.replay.ReplayClock}), {@code accept-viewers} (hands each connection to a viewer
+ * thread, under the connection cap), {@code handshake-deadlines} (closes a viewer whose hello is late),
+ * {@code replay-viewer[n]} (one per viewer: its handshake, then writes what its queue holds), the control
+ * port's {@code control-io}, {@code control} and {@code control-quick}, {@code shutdown} (Ctrl-C: the end
+ * to every viewer), and {@code main} (waits for the end).
+ */
+package robosim.environment.replay;

@@ -1,0 +1,136 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.control.ControlClient;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RunState;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.ViewerHello;
+
+/**
+ * {@code scripts/replay.sh}: a recording replayed in its own process gives a viewer what the live run gave
+ * it, message for message and byte for byte, and the control port seeks, steps and stops it.
+ */
+class ReplayTest {
+    private static final long LONG_S = 120;
+
+    @Test
+    void aReplayGivesAViewerWhatTheLiveRunGaveIt(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("run.rec");
+        InJvmSimulation live = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> s.record(file)).run(300, false, Chatter::new);
+        assertTrue(live.summary.completed(), live.summary.reason());
+        try (ProcessLines replay = replay(file, "--speed", "100", "--exit-at-end")) {
+            ViewerStream got = new ViewerStream();
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", port(replay, "viewers"), new ViewerHello(true),
+                    LONG_S * 1000, null);
+            viewer.start(got);
+            viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);
+            assertEquals(0, replay.exit(LONG_S), replay.output());
+
+            assertArrayEquals(RecordingRunTest.bytes(live.snapshot), RecordingRunTest.bytes(got.snapshot()), "snapshot");
+            List<PoseUpdate> updates = got.updates();
+            assertEquals(live.updates.size(), updates.size(), "updates");
+            for (int k = 0; k < updates.size(); k++) {
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(k)), RecordingRunTest.bytes(updates.get(k)),
+                        "update " + k);
+            }
+            assertArrayEquals(RecordingRunTest.bytes(live.end), RecordingRunTest.bytes(got.end()), "end");
+            assertTrue(got.messages.get(got.messages.size() - 1) == got.end(), "the end comes last");
+            // run states are the one thing a viewer's own timing shapes (a queue holds the newest only):
+            // both streams say the run waited and then ran from step 0, however many of those they saw
+            for (List<RunState> states : List.of(live.states, got.states())) {
+                assertFalse(states.isEmpty(), "a run state after the snapshot");
+                for (RunState s : states) {
+                    assertEquals(0, s.step(), states.toString());
+                    assertTrue(s.phase() != RunState.Phase.PAUSED, states.toString());
+                }
+                assertEquals(RunState.Phase.RUNNING, states.get(states.size() - 1).phase(), states.toString());
+            }
+        }
+    }
+
+    @Test
+    void theControlPortSeeksStepsAndStopsAReplay(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("run.rec");
+        InJvmSimulation live = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> s.record(file)).run(5000, true, Chatter::new);
+        assertTrue(live.summary.completed(), live.summary.reason());
+        try (ProcessLines replay = replay(file, "--paused")) {
+            ViewerStream got = new ViewerStream();
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", port(replay, "viewers"), new ViewerHello(false),
+                    LONG_S * 1000, null);
+            viewer.start(got);
+            try (ControlClient control = new ControlClient("127.0.0.1", port(replay, "control"), null, (int) (LONG_S * 1000))) {
+                assertEquals("at step 2500", ok(control.request("seek 2500")).path("message").asText());
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(2500)),
+                        RecordingRunTest.bytes(got.awaitStep(2500, 0, LONG_S)), "the poses of step 2500");
+                int seen = got.messages.size();
+                assertEquals("paused at step 2501", ok(control.request("step 1")).path("message").asText());
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(2501)),
+                        RecordingRunTest.bytes(got.awaitStep(2501, seen, LONG_S)), "then step 2501");
+                JsonNode status = ok(control.request("status"));
+                assertEquals("PAUSED", status.path("state").asText(), status.toString());
+                assertEquals(2501, status.path("step").asLong(), status.toString());
+                assertEquals(0, status.path("first_step").asLong(), status.toString());
+                assertEquals(4999, status.path("last_step").asLong(), status.toString());
+
+                assertTrue(control.request("seek 5000").path("error").asText().contains("not in the recording"));
+                assertTrue(control.request("speed 1000").path("error").asText().contains("0.1 to 100"));
+                assertTrue(control.request("step -3").path("error").asText().contains("positive whole number"));
+                ok(control.request("seek 4999"));
+                assertTrue(control.request("resume").path("error").asText().contains("at the end of the recording"));
+                seen = got.messages.size();
+                ok(control.request("seek 10"));
+                ok(control.request("speed 100"));
+                ok(control.request("resume"));
+                got.awaitStep(20, seen, LONG_S); // runs on from where it was sought
+                ok(control.request("stop"));
+            }
+            viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);
+            assertTrue(got.end().reason().contains("stopped"), got.end().reason());
+            assertEquals(0, replay.exit(LONG_S), replay.output());
+        }
+    }
+
+    @Test
+    void aFileThatIsNotARecordingIsRefusedInOneLine(@TempDir Path dir) throws Exception {
+        Path file = Files.writeString(dir.resolve("notes.txt"), "not a recording\n");
+        try (ProcessLines replay = replay(file)) {
+            assertEquals(2, replay.exit(LONG_S));
+            assertEquals("replay: " + file + ": not a RoboSim recording", replay.output().strip());
+        }
+    }
+
+    private static JsonNode ok(JsonNode reply) {
+        assertTrue(reply.path("ok").asBoolean(), reply.toString());
+        return reply;
+    }
+
+    private static int port(ProcessLines replay, String which) throws InterruptedException {
+        Map<String, String> ports = HeadlessRunner.fields(replay.await("listening viewers=", LONG_S));
+        return Integer.parseInt(ports.get(which));
+    }
+
+    /** The replay in its own process, on this JDK, on free ports. */
+    private static ProcessLines replay(Path file, String... options) throws java.io.IOException {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path"), "robosim.environment.replay.ReplayMain", file.toString(),
+                "--viewer-port", "0", "--control-port", "0"));
+        command.addAll(List.of(options));
+        return new ProcessLines("replay", new ProcessBuilder(command));
+    }
+}
