@@ -13,18 +13,20 @@ import picocli.CommandLine.Parameters;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
+import robosim.environment.control.EnvironmentCommands;
+import robosim.environment.control.WebViewers;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.GeometryLoss;
 import robosim.environment.net.CoordinatorDesign;
-import robosim.environment.net.RunSummary;
 import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.SimulationKeys;
+import robosim.web.WebViewerServer;
 
 /**
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
@@ -134,6 +136,10 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "more (default: the directory of FILE.xml). Nothing outside them is read.")
     java.util.List<Path> envDirs;
 
+    @Option(names = "--web-port", defaultValue = "-1", description = "Serve the browser viewer on this port, on "
+            + "loopback only (default: none; 0 picks a free one; from elsewhere: an SSH tunnel).")
+    int webPort;
+
     @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,
             description = "Connections each port holds at once beyond the robots the file names; one more is "
                     + "closed at once (default: ${DEFAULT-VALUE}).")
@@ -199,11 +205,15 @@ public final class EnvironmentMain implements Callable<Integer> {
         boolean stay = keepRunning != null ? keepRunning : steps == 0;
         EnvironmentHost host = new EnvironmentHost(file, spec, settings, stay, startPaused);
         ControlServer control = null;
+        WebViewerServer web = null;
         try {
             host.open();
             if (controlPort >= 0) {
                 control = new ControlServer(host, keys, directories);
                 control.start(bindAddress, controlPort);
+            }
+            if (webPort >= 0) {
+                web = WebViewers.start(webPort, host.ports()[1], keys, new EnvironmentCommands(host, directories));
             }
         } catch (BindException e) {
             closeQuietly(host, control);
@@ -217,7 +227,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(new Thread(host::stopOnSignal, "shutdown"));
         int[] ports = host.ports();
         System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
-                + " control=" + (control == null ? -1 : control.port()));
+                + " control=" + (control == null ? -1 : control.port()) + (web == null ? "" : " web=" + web.port()));
         System.out.flush();
         announceStart(host.current());
         try {
@@ -225,12 +235,15 @@ public final class EnvironmentMain implements Callable<Integer> {
                 for (Departure d : s.departures()) {
                     System.out.println("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
                 }
-                System.out.println(summaryLine(s));
+                System.out.println(s.line());
                 System.out.flush();
             });
         } finally {
             if (control != null) {
                 control.close();
+            }
+            if (web != null) {
+                web.close();
             }
         }
     }
@@ -274,18 +287,6 @@ public final class EnvironmentMain implements Callable<Integer> {
             return speed;
         }
         return steps == 0 ? 1 : 0;
-    }
-
-    /** The summary line, also used by the headless runner. */
-    public static String summaryLine(RunSummary s) {
-        double wall = Math.max(s.wallSeconds(), 1e-9);
-        return String.format(java.util.Locale.ROOT,
-                "summary steps=%d robots=%d wall_s=%.3f steps_per_s=%.1f robot_steps_per_s=%.1f messages=%d"
-                        + " messages_out_of_range=%d messages_refused=%d robots_left=%d geometry_losses=%d"
-                        + " geometry_attaches=%d",
-                s.steps(), s.robots(), s.wallSeconds(), s.steps() / wall, s.steps() * s.robots() / wall,
-                s.messagesDelivered(), s.messagesOutOfRange(), s.messagesRefused(), s.robotsLeft(),
-                s.geometryLosses(), s.geometryAttaches());
     }
 
     public static void main(String[] args) {

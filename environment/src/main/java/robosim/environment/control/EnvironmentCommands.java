@@ -12,14 +12,14 @@ import robosim.environment.net.RunStatus;
  * {@code resume}, {@code step N}, {@code load FILE} (only under the {@link EnvironmentDirectories}),
  * {@code shutdown}, on the {@link EnvironmentHost}'s current simulation.
  */
-final class EnvironmentCommands implements ControlCommands {
+public final class EnvironmentCommands implements ControlCommands {
     /** How long a waiting request (step N, pause) may take before it answers anyway, s. */
     private static final long WAIT_S = 600;
 
     private final EnvironmentHost host;
     private final EnvironmentDirectories directories;
 
-    EnvironmentCommands(EnvironmentHost host, EnvironmentDirectories directories) {
+    public EnvironmentCommands(EnvironmentHost host, EnvironmentDirectories directories) {
         this.host = host;
         this.directories = directories;
     }

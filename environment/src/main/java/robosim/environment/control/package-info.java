@@ -2,7 +2,9 @@
  * The Environment's control port: {@link robosim.environment.control.EnvironmentHost} runs one
  * simulation after another on fixed ports, and {@link robosim.environment.control.ControlServer}
  * (netty) lets the Control Panel load, start, stop, pause, resume, step and query it
- * ({@link robosim.environment.control.ControlRequests}); {@code load} reads only inside the
+ * ({@link robosim.environment.control.ControlRequests}: the proof, then the
+ * {@link robosim.environment.control.ControlCommands} it serves: {@link
+ * robosim.environment.control.EnvironmentCommands}, or a replay's); {@code load} reads only inside the
  * {@link robosim.environment.control.EnvironmentDirectories}. Threads: {@code control-io} (netty's one I/O
  * thread: reads lines, writes replies in each connection's request order), {@code control} (the requests
  * that wait: step, pause, start, load; one at a time), {@code control-quick} (status, resume, stop,

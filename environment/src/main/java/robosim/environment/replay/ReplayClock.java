@@ -1,10 +1,6 @@
 package robosim.environment.replay;
 
-import java.io.IOException;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongFunction;
 import org.slf4j.Logger;
@@ -29,31 +25,17 @@ public final class ReplayClock {
     private static final Logger LOG = LoggerFactory.getLogger(ReplayClock.class);
     public static final double MIN_SPEED = 0.1;
     public static final double MAX_SPEED = 100;
-    /** Requests waiting for the clock at most; one more is refused as busy. */
-    static final int INBOX = 1024;
     /** The clock looks at stuck viewers at least this often, ns. */
     private static final long TICK_NANOS = 100_000_000L;
 
-    /** What the replay is doing. */
-    public enum State { WAITING, RUNNING, PAUSED, ENDED }
-
-    /** Where the replay stands: {@code step} is the step shown (the snapshot's, -1, before the first). */
-    public record Status(State state, long step, long firstStep, long lastStep, int steps, double speed,
-            int viewers, boolean atEnd, double stepsPerSecond) {
-    }
-
-    private final RecordingReader recording;
+    private final RecordingCursor at;
     private final Viewers viewers;
     private final boolean exitAtEnd;
     private final boolean startPaused;
-    private final BlockingQueue<Runnable> inbox = new ArrayBlockingQueue<>(INBOX);
-    private final CountDownLatch ended = new CountDownLatch(1);
+    private final ClockInbox inbox = new ClockInbox();
     private final Thread thread;
     // ---- the clock thread's own ----
-    private State state = State.WAITING;
-    private int steps;
-    private int index = -1;
-    private PoseUpdate shown;
+    private ReplayStatus.State state = ReplayStatus.State.WAITING;
     private double speed;
     private long intervalNanos;
     private long nextDue;
@@ -67,11 +49,10 @@ public final class ReplayClock {
      * @param startPaused hold before the first step until resumed; if false, start when the first viewer joins
      */
     public ReplayClock(RecordingReader recording, Viewers viewers, double speed, boolean exitAtEnd, boolean startPaused) {
-        this.recording = recording;
+        this.at = new RecordingCursor(recording);
         this.viewers = viewers;
         this.exitAtEnd = exitAtEnd;
         this.startPaused = startPaused;
-        this.steps = recording.steps();
         setSpeed(speed);
         this.thread = new Thread(this::run, "replay-clock");
         thread.setDaemon(true);
@@ -83,7 +64,7 @@ public final class ReplayClock {
 
     /** Waits up to {@code ms} for the replay to end (stopped, or past its last step with exit at end). */
     public boolean awaitEnd(long ms) throws InterruptedException {
-        return ended.await(ms, TimeUnit.MILLISECONDS);
+        return inbox.awaitClosed(ms);
     }
 
     /** The step shown when the replay ended (after {@link #awaitEnd}). */
@@ -97,17 +78,17 @@ public final class ReplayClock {
     public CompletableFuture<WorldSnapshot> join(ViewerSink viewer) {
         return ask(now -> {
             viewers.add(viewer);
-            WorldSnapshot at = snapshotNow();
-            if (state == State.ENDED) {
-                viewer.queue().end(new SimulationEnd(step(), "the replay has ended"));
+            WorldSnapshot world = at.snapshot();
+            if (state == ReplayStatus.State.ENDED) {
+                viewer.queue().end(new SimulationEnd(at.step(), "the replay has ended"));
             } else {
                 viewer.queue().state(runState());
-                if (state == State.WAITING && !startPaused) {
+                if (state == ReplayStatus.State.WAITING && !startPaused) {
                     run(now);
-                    LOG.info("replaying from step {} at x{}", step() + 1, speed);
+                    LOG.info("replaying from step {} at x{}", at.step() + 1, speed);
                 }
             }
-            return at;
+            return world;
         });
     }
 
@@ -118,34 +99,34 @@ public final class ReplayClock {
 
     /** A viewer's queue has room again: the clock looks at once. */
     public void roomFreed() {
-        inbox.offer(() -> { });
+        inbox.wake();
     }
 
-    public CompletableFuture<Status> status() {
-        return ask(now -> new Status(state, step(), firstStep(), lastStep(), steps, speed, viewers.count(), atEnd(),
+    public CompletableFuture<ReplayStatus> status() {
+        return ask(now -> new ReplayStatus(state, at.step(), at.firstStep(), at.lastStep(), at.steps(), speed, viewers.count(), at.atEnd(),
                 1e9 / intervalNanos));
     }
 
     public CompletableFuture<String> pause() {
         return ask(now -> {
             live();
-            if (state != State.PAUSED) {
+            if (state != ReplayStatus.State.PAUSED) {
                 hold();
             }
-            return "paused at step " + step();
+            return "paused at step " + at.step();
         });
     }
 
     public CompletableFuture<String> resume() {
         return ask(now -> {
             live();
-            if (atEnd()) {
-                throw new IllegalStateException("at the end of the recording (step " + step() + "): seek first");
+            if (at.atEnd()) {
+                throw new IllegalStateException("at the end of the recording (step " + at.step() + "): seek first");
             }
-            if (state != State.RUNNING) {
+            if (state != ReplayStatus.State.RUNNING) {
                 run(now);
             }
-            return "running from step " + step() + " at x" + speed;
+            return "running from step " + at.step() + " at x" + speed;
         });
     }
 
@@ -156,12 +137,12 @@ public final class ReplayClock {
             if (stepping != null) {
                 throw new IllegalStateException("a step is under way");
             }
-            if (state != State.PAUSED) {
+            if (state != ReplayStatus.State.PAUSED) {
                 hold();
             }
             stepping = new CompletableFuture<>();
             stepsLeft = n;
-            if (atEnd()) {
+            if (at.atEnd()) {
                 finishStepping();
             }
             return stepping;
@@ -172,24 +153,11 @@ public final class ReplayClock {
     public CompletableFuture<String> seek(long k) {
         return ask(now -> {
             live();
-            if (steps == 0 || k < firstStep() || k > lastStep()) {
-                throw new IllegalArgumentException("step " + k + " is not in the recording ("
-                        + (steps == 0 ? "it has no steps" : "steps " + firstStep() + " to " + lastStep()) + ")");
-            }
-            int lo = 0;
-            int hi = steps - 1;
-            while (lo < hi) { // the last index whose step is <= k
-                int mid = (lo + hi + 1) >>> 1;
-                if (recording.stepNumber(mid) <= k) {
-                    lo = mid;
-                } else {
-                    hi = mid - 1;
-                }
-            }
+            int i = at.indexOf(k);
             finishStepping();
-            show(lo);
+            show(i);
             nextDue = now + intervalNanos;
-            return "at step " + step();
+            return "at step " + at.step();
         });
     }
 
@@ -205,55 +173,36 @@ public final class ReplayClock {
     /** Sends every viewer the end and ends the replay. */
     public CompletableFuture<String> stop(String why) {
         return ask(now -> {
-            if (state != State.ENDED) {
-                end(new SimulationEnd(step(), why));
+            if (state != ReplayStatus.State.ENDED) {
+                end(new SimulationEnd(at.step(), why));
             }
-            return "stopped at step " + step();
+            return "stopped at step " + at.step();
         });
     }
 
     private <T> CompletableFuture<T> ask(LongFunction<T> action) {
-        CompletableFuture<T> answer = new CompletableFuture<>();
-        Runnable r = () -> {
-            try {
-                answer.complete(action.apply(System.nanoTime()));
-            } catch (RuntimeException e) {
-                answer.completeExceptionally(e);
-            }
-        };
-        if (!inbox.offer(r)) {
-            answer.completeExceptionally(new IllegalStateException("the replay is busy; try again"));
-        } else if (ended.getCount() == 0 && inbox.remove(r)) { // (the clock has gone: nobody would answer)
-            answer.completeExceptionally(new IllegalStateException("the replay has ended"));
-        }
-        return answer;
+        return inbox.ask(action);
     }
 
     // ---- the clock thread ------------------------------------------------------------------------------
 
     private void run() {
         try {
-            while (state != State.ENDED) {
-                Runnable r = inbox.poll(waitNanos(System.nanoTime()), TimeUnit.NANOSECONDS);
-                if (r != null) {
-                    r.run();
-                }
+            while (state != ReplayStatus.State.ENDED) {
+                inbox.runNext(waitNanos(System.nanoTime()));
                 long now = System.nanoTime();
                 viewers.dropStuck(now);
                 advance(now);
             }
         } catch (InterruptedException e) {
-            end(new SimulationEnd(step(), "the replay was interrupted"));
+            end(new SimulationEnd(at.step(), "the replay was interrupted"));
         } finally {
-            ended.countDown();
-            for (Runnable r; (r = inbox.poll()) != null; ) {
-                r.run(); // (each answers "the replay has ended" or what it did last)
-            }
+            inbox.close(); // (what is left answers "the replay has ended", or what it did last)
         }
     }
 
     private long waitNanos(long now) {
-        boolean due = stepsLeft > 0 || state == State.RUNNING;
+        boolean due = stepsLeft > 0 || state == ReplayStatus.State.RUNNING;
         if (!due || !viewers.haveRoom()) {
             return TICK_NANOS; // (a viewer with room again wakes the clock at once)
         }
@@ -263,15 +212,15 @@ public final class ReplayClock {
     /** Shows the next step if one is due and every recording viewer has room. */
     private void advance(long now) {
         boolean stepNow = stepsLeft > 0;
-        if (!stepNow && !(state == State.RUNNING && now - nextDue >= 0) || !viewers.haveRoom()) {
+        if (!stepNow && !(state == ReplayStatus.State.RUNNING && now - nextDue >= 0) || !viewers.haveRoom()) {
             return;
         }
-        if (atEnd()) {
+        if (at.atEnd()) {
             reachedEnd();
             return;
         }
-        show(index + 1);
-        if (exitAtEnd && atEnd()) {
+        show(at.index() + 1);
+        if (exitAtEnd && at.atEnd()) {
             reachedEnd(); // (the end follows the last step at once, as in the live run)
             return;
         }
@@ -288,57 +237,51 @@ public final class ReplayClock {
     }
 
     private void show(int i) {
-        try {
-            shown = recording.step(i).update();
-            index = i;
-            viewers.publish(shown);
-        } catch (IOException e) {
-            LOG.error("the recording cannot be read on: {}", e.getMessage());
-            steps = i; // (the replay ends before the damaged step)
+        PoseUpdate u = at.show(i);
+        if (u != null) {
+            viewers.publish(u);
         }
     }
 
     private void reachedEnd() {
         finishStepping();
         if (exitAtEnd) {
-            SimulationEnd recorded = recording.end();
-            end(recorded != null && steps == recording.steps() ? recorded : new SimulationEnd(step(),
-                    "the recording stops at step " + step() + (recording.cutShort() == null ? "" : ": " + recording.cutShort())));
-        } else if (state != State.PAUSED) {
+            end(at.end());
+        } else if (state != ReplayStatus.State.PAUSED) {
             hold();
-            LOG.info("at the end of the recording (step {}): seek, or stop", step());
+            LOG.info("at the end of the recording (step {}): seek, or stop", at.step());
         }
     }
 
     private void finishStepping() {
         stepsLeft = 0;
         if (stepping != null) {
-            stepping.complete(atEnd() ? "at the end of the recording (step " + step() + ")" : "paused at step " + step());
+            stepping.complete(at.atEnd() ? "at the end of the recording (step " + at.step() + ")" : "paused at step " + at.step());
             stepping = null;
         }
     }
 
     private void end(SimulationEnd end) {
         finishStepping();
-        state = State.ENDED;
-        endedAt = step();
+        state = ReplayStatus.State.ENDED;
+        endedAt = at.step();
         viewers.end(end);
-        LOG.info("replay ended at step {}: {}", step(), end.reason());
+        LOG.info("replay ended at step {}: {}", at.step(), end.reason());
     }
 
     private void run(long now) {
-        state = State.RUNNING;
+        state = ReplayStatus.State.RUNNING;
         nextDue = now;
         viewers.announce(runState());
     }
 
     private void hold() {
-        state = State.PAUSED;
+        state = ReplayStatus.State.PAUSED;
         viewers.announce(runState());
     }
 
     private void live() {
-        if (state == State.ENDED) {
+        if (state == ReplayStatus.State.ENDED) {
             throw new IllegalStateException("the replay has ended");
         }
     }
@@ -349,24 +292,7 @@ public final class ReplayClock {
                     + "time), got " + timesRealTime);
         }
         speed = timesRealTime;
-        long stepMs = recording.snapshot().timeStepMs() > 0 ? recording.snapshot().timeStepMs() : 100;
-        intervalNanos = Math.max(1, Math.round(stepMs * 1e6 / speed));
-    }
-
-    private boolean atEnd() {
-        return index >= steps - 1;
-    }
-
-    private long step() {
-        return index < 0 ? recording.snapshot().step() : recording.stepNumber(index);
-    }
-
-    private long firstStep() {
-        return steps == 0 ? -1 : recording.stepNumber(0);
-    }
-
-    private long lastStep() {
-        return steps == 0 ? -1 : recording.stepNumber(steps - 1);
+        intervalNanos = Math.max(1, Math.round(at.timeStepMs() * 1e6 / speed));
     }
 
     /** What the viewers are told the replay is doing: steps shown so far, as the live run's released steps. */
@@ -376,12 +302,6 @@ public final class ReplayClock {
             case PAUSED -> RunState.Phase.PAUSED;
             default -> RunState.Phase.WAITING;
         };
-        return new RunState(step() + 1, phase);
-    }
-
-    private WorldSnapshot snapshotNow() {
-        WorldSnapshot s = recording.snapshot();
-        return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
-                s.robots(), shown);
+        return new RunState(at.step() + 1, phase);
     }
 }

@@ -56,11 +56,11 @@ public final class ReplayCommands implements ControlCommands {
         };
     }
 
-    private ObjectNode status(ReplayClock.Status s) {
+    private ObjectNode status(ReplayStatus s) {
         ObjectNode n = ok(null);
         n.put("state", s.state().name());
         n.put("step", s.step());
-        n.put("steps_per_s", s.state() == ReplayClock.State.RUNNING ? Math.round(s.stepsPerSecond() * 10) / 10.0 : 0);
+        n.put("steps_per_s", s.state() == ReplayStatus.State.RUNNING ? Math.round(s.stepsPerSecond() * 10) / 10.0 : 0);
         n.put("file", String.valueOf(file));
         n.put("replay", true);
         n.put("first_step", s.firstStep());

@@ -11,6 +11,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.environment.control.ControlServer;
+import robosim.environment.control.WebViewers;
 import robosim.environment.net.RunListener;
 import robosim.environment.net.Settings;
 import robosim.environment.net.Viewers;
@@ -18,6 +19,7 @@ import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.SimulationKeys;
+import robosim.web.WebViewerServer;
 
 /**
  * {@code scripts/replay.sh FILE}: serves a recording ({@code --record}) on the viewer port as the live
@@ -38,6 +40,10 @@ public final class ReplayMain implements Callable<Integer> {
     @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
             description = "Port for the Control Panel (default: ${DEFAULT-VALUE}; 0 picks a free one; -1 none).")
     int controlPort;
+
+    @Option(names = "--web-port", defaultValue = "-1", description = "Serve the browser viewer on this port, on "
+            + "loopback only (default: none; 0 picks a free one).")
+    int webPort;
 
     @Option(names = "--bind", defaultValue = "127.0.0.1",
             description = "Address to listen on (default: ${DEFAULT-VALUE}, loopback only).")
@@ -97,11 +103,15 @@ public final class ReplayMain implements Callable<Integer> {
         ReplayClock clock = new ReplayClock(recording, viewers, speed, exitAtEnd, paused);
         ReplayPort port = null;
         ControlServer control = null;
+        WebViewerServer web = null;
         try {
             port = new ReplayPort(bindAddress, viewerPort, clock, keys, maxConnections, handshakeTimeoutMs, resetEvery);
             if (controlPort >= 0) {
                 control = new ControlServer(new ReplayCommands(clock, file), keys);
                 control.start(bindAddress, controlPort);
+            }
+            if (webPort >= 0) {
+                web = WebViewers.start(webPort, port.port(), keys, new ReplayCommands(clock, file));
             }
         } catch (IOException e) {
             close(port, control, recording);
@@ -112,7 +122,8 @@ public final class ReplayMain implements Callable<Integer> {
         clock.start();
         port.accept();
         Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnSignal(clock, viewers), "shutdown"));
-        System.out.println("listening viewers=" + port.port() + " control=" + (control == null ? -1 : control.port()));
+        System.out.println("listening viewers=" + port.port() + " control=" + (control == null ? -1 : control.port())
+                + (web == null ? "" : " web=" + web.port()));
         System.out.println("replaying " + file + ": " + recording.steps() + " steps"
                 + (recording.steps() == 0 ? "" : " (" + recording.stepNumber(0) + " to "
                 + recording.stepNumber(recording.steps() - 1) + ")")
@@ -127,6 +138,9 @@ public final class ReplayMain implements Callable<Integer> {
             System.out.println("replay ended step=" + clock.endedAt());
             return 0;
         } finally {
+            if (web != null) {
+                web.close();
+            }
             close(port, control, recording);
         }
     }

@@ -1,0 +1,26 @@
+package robosim.environment.control;
+
+import java.io.IOException;
+import robosim.protocol.SimulationKeys;
+import robosim.web.WebViewerServer;
+
+/** {@code --web-port}: the browser viewer beside an Environment or a replay, its page's requests served in-process. */
+public final class WebViewers {
+    private WebViewers() {
+    }
+
+    /**
+     * Starts the browser viewer on {@code webPort} (loopback), fed from this process's viewer port.
+     *
+     * @throws IOException naming the port if it cannot listen
+     */
+    public static WebViewerServer start(int webPort, int viewerPort, SimulationKeys keys, ControlCommands commands)
+            throws IOException {
+        WebViewerServer web = new WebViewerServer(viewerPort, keys, (verb, arg) -> {
+            com.fasterxml.jackson.databind.node.ObjectNode n = commands.handle(verb, arg);
+            return n == null ? ControlReplies.error("not here: " + verb).toString() : n.toString();
+        });
+        web.start(webPort);
+        return web;
+    }
+}

@@ -1,0 +1,104 @@
+package robosim.environment.replay;
+
+import java.io.IOException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * Where a replay stands in its recording: the step shown (none before the first: the snapshot's), and
+ * the world as a viewer joining now would get it. The {@code replay-clock} thread's own.
+ */
+final class RecordingCursor {
+    private static final Logger LOG = LoggerFactory.getLogger(RecordingCursor.class);
+
+    private final RecordingReader recording;
+    private int steps;
+    private int index = -1;
+    private PoseUpdate shown;
+
+    RecordingCursor(RecordingReader recording) {
+        this.recording = recording;
+        this.steps = recording.steps();
+    }
+
+    /** Moves to the i-th recorded step; its update, or null if it cannot be read (the replay then ends before it). */
+    PoseUpdate show(int i) {
+        try {
+            shown = recording.step(i).update();
+            index = i;
+            return shown;
+        } catch (IOException e) {
+            LOG.error("the recording cannot be read on: {}", e.getMessage());
+            steps = i;
+            return null;
+        }
+    }
+
+    int index() {
+        return index;
+    }
+
+    int steps() {
+        return steps;
+    }
+
+    boolean atEnd() {
+        return index >= steps - 1;
+    }
+
+    /** The step shown (the snapshot's before the first). */
+    long step() {
+        return index < 0 ? recording.snapshot().step() : recording.stepNumber(index);
+    }
+
+    long firstStep() {
+        return steps == 0 ? -1 : recording.stepNumber(0);
+    }
+
+    long lastStep() {
+        return steps == 0 ? -1 : recording.stepNumber(steps - 1);
+    }
+
+    /** The index of the last recorded step at or before {@code k}, which must be in the recording. */
+    int indexOf(long k) {
+        if (steps == 0 || k < firstStep() || k > lastStep()) {
+            throw new IllegalArgumentException("step " + k + " is not in the recording ("
+                    + (steps == 0 ? "it has no steps" : "steps " + firstStep() + " to " + lastStep()) + ")");
+        }
+        int lo = 0;
+        int hi = steps - 1;
+        while (lo < hi) {
+            int mid = (lo + hi + 1) >>> 1;
+            if (recording.stepNumber(mid) <= k) {
+                lo = mid;
+            } else {
+                hi = mid - 1;
+            }
+        }
+        return lo;
+    }
+
+    /** The run's time step, ms (100 if the recording does not say). */
+    long timeStepMs() {
+        long ms = recording.snapshot().timeStepMs();
+        return ms > 0 ? ms : 100;
+    }
+
+    /** The end to send after the last step: the recorded one, or one saying where the file stops. */
+    SimulationEnd end() {
+        SimulationEnd recorded = recording.end();
+        return recorded != null && steps == recording.steps() ? recorded : new SimulationEnd(step(),
+                "the recording stops at step " + step() + (recording.cutShort() == null ? "" : ": " + recording.cutShort()));
+    }
+
+    /** The world as the replay shows it now. */
+    WorldSnapshot snapshot() {
+        WorldSnapshot s = recording.snapshot();
+        return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
+                s.robots(), shown);
+    }
+}

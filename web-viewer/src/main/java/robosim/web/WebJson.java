@@ -1,0 +1,104 @@
+package robosim.web;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.node.ArrayNode;
+import com.fasterxml.jackson.databind.node.ObjectNode;
+import robosim.protocol.Arena;
+import robosim.protocol.ObstacleShape;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.RunState;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.SonarSpec;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * The page's feed, one JSON object per WebSocket text frame, each with a {@code type}: {@code snapshot}
+ * (the world: time step, arena, obstacles as polygons, every robot's name, type, radius and sonar layout,
+ * and the poses), {@code update} (a step: poses, sonar ranges, tags, departed robots), {@code state}
+ * (waiting, running, paused, at a step), {@code end}. Lengths in mm and angles in degrees, as on the wire.
+ */
+final class WebJson {
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private WebJson() {
+    }
+
+    static String snapshot(WorldSnapshot s) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "snapshot");
+        n.put("step", s.step());
+        n.put("timeStepMs", s.timeStepMs());
+        Arena a = s.arena();
+        ObjectNode arena = n.putObject("arena");
+        arena.put("minX", a.minXMm()).put("minY", a.minYMm()).put("maxX", a.maxXMm()).put("maxY", a.maxYMm());
+        ArrayNode obstacles = n.putArray("obstacles");
+        for (ObstacleShape o : s.obstacles()) {
+            ObjectNode on = obstacles.addObject();
+            on.put("name", o.name());
+            ArrayNode xy = on.putArray("xy");
+            for (double v : o.xyMm()) {
+                xy.add(v);
+            }
+        }
+        ArrayNode robots = n.putArray("robots");
+        for (int i = 0; i < s.robotNames().size(); i++) {
+            RobotProperties p = s.robots().get(i);
+            ObjectNode r = robots.addObject();
+            r.put("name", s.robotNames().get(i));
+            r.put("type", p.type());
+            r.put("radius", p.radiusMm());
+            ArrayNode sonars = r.putArray("sonars");
+            for (SonarSpec sonar : p.sonars()) {
+                sonars.addObject().put("x", sonar.xMm()).put("y", sonar.yMm()).put("angle", sonar.angleDeg())
+                        .put("cone", sonar.coneDeg()).put("range", sonar.maxRangeMm());
+            }
+        }
+        n.set("poses", poses(s.poses()));
+        return n.toString();
+    }
+
+    static String update(PoseUpdate u) {
+        return poses(u).toString();
+    }
+
+    private static ObjectNode poses(PoseUpdate u) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "update");
+        n.put("step", u.step());
+        ArrayNode x = n.putArray("x");
+        ArrayNode y = n.putArray("y");
+        ArrayNode h = n.putArray("heading");
+        ArrayNode sonar = n.putArray("sonar");
+        for (int i = 0; i < u.count(); i++) {
+            x.add(u.xMm(i));
+            y.add(u.yMm(i));
+            h.add(u.headingDeg(i));
+            ArrayNode ranges = sonar.addArray();
+            for (double r : u.sonarMm(i)) {
+                ranges.add(Math.round(r)); // (a millimetre is plenty on a screen)
+            }
+        }
+        ArrayNode tags = n.putArray("tags");
+        u.tags().forEach(tags::add);
+        ArrayNode departed = n.putArray("departed");
+        u.departed().forEach(departed::add);
+        return n;
+    }
+
+    static String state(RunState s) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "state");
+        n.put("phase", s.phase().name());
+        n.put("step", s.step());
+        return n.toString();
+    }
+
+    static String end(SimulationEnd e) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "end");
+        n.put("step", e.lastStep());
+        n.put("reason", e.reason());
+        return n.toString();
+    }
+}

@@ -1,0 +1,124 @@
+package robosim.web;
+
+import io.netty.bootstrap.ServerBootstrap;
+import io.netty.channel.Channel;
+import io.netty.channel.ChannelInitializer;
+import io.netty.channel.ChannelOption;
+import io.netty.channel.EventLoopGroup;
+import io.netty.channel.WriteBufferWaterMark;
+import io.netty.channel.nio.NioEventLoopGroup;
+import io.netty.channel.socket.SocketChannel;
+import io.netty.channel.socket.nio.NioServerSocketChannel;
+import io.netty.handler.codec.http.HttpObjectAggregator;
+import io.netty.handler.codec.http.HttpServerCodec;
+import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
+import io.netty.handler.timeout.WriteTimeoutHandler;
+import java.io.Closeable;
+import java.io.IOException;
+import java.net.BindException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.util.concurrent.ArrayBlockingQueue;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.SimulationKeys;
+
+/**
+ * The browser viewer ({@code --web-port} on the Environment and on {@code replay.sh}): a page over HTTP
+ * and its feed over a WebSocket ({@code /ws}), on loopback only (watch from another machine through an
+ * SSH tunnel: the page has no login of its own, and nothing goes beyond loopback without one). Bounded:
+ * {@link #MAX_CONNECTIONS} connections, {@link #MAX_REQUEST} bytes a request, {@link #MAX_FRAME} bytes a
+ * frame from a page, a reply a page does not take within {@link #WRITE_TIMEOUT_S} s closes it; a Host
+ * header that is not this machine's (DNS rebinding) and a WebSocket from another origin are refused.
+ * Threads: {@code web-io} (netty's I/O), {@code web-commands} (a page's requests: pause, seek...),
+ * {@code web-feed} ({@link WebFeed}) and the feed's {@code viewer-client}.
+ */
+public final class WebViewerServer implements Closeable {
+    private static final Logger LOG = LoggerFactory.getLogger(WebViewerServer.class);
+    public static final int MAX_CONNECTIONS = 64;
+    static final int MAX_REQUEST = 8 * 1024;
+    static final int MAX_FRAME = 4 * 1024;
+    static final int WRITE_TIMEOUT_S = 30;
+
+    private final WebClients clients;
+    private final StaticFiles files = new StaticFiles();
+    private final WebFeed feed;
+    private final WebCommands commands;
+    private final EventLoopGroup group = new NioEventLoopGroup(1,
+            (java.util.concurrent.ThreadFactory) r -> named(r, "web-io"));
+    private final ExecutorService commandThread = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
+            new ArrayBlockingQueue<>(16), r -> named(r, "web-commands"));
+    private final AtomicInteger connections = new AtomicInteger();
+    private Channel server;
+
+    /**
+     * @param viewerPort the viewer port of the Environment or replay in this process (loopback)
+     * @param keys its keys, if it has them (the feed proves them like any viewer)
+     * @param commands what a page may ask of it
+     */
+    public WebViewerServer(int viewerPort, SimulationKeys keys, WebCommands commands) {
+        this.feed = new WebFeed(InetAddress.getLoopbackAddress().getHostAddress(), viewerPort, keys);
+        this.clients = new WebClients(feed::start);
+        this.commands = commands;
+    }
+
+    private static Thread named(Runnable r, String name) {
+        Thread t = new Thread(r, name);
+        t.setDaemon(true);
+        return t;
+    }
+
+    /** Binds {@code port} on loopback (the feed starts with the first page); a port in use is a {@link BindException} naming it. */
+    public void start(int port) throws IOException {
+        ServerBootstrap b = new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
+                .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK, new WriteBufferWaterMark(64 * 1024, 256 * 1024))
+                .childHandler(new ChannelInitializer<SocketChannel>() {
+                    @Override
+                    protected void initChannel(SocketChannel ch) {
+                        if (connections.incrementAndGet() > MAX_CONNECTIONS) {
+                            connections.decrementAndGet();
+                            ch.close();
+                            return;
+                        }
+                        ch.closeFuture().addListener(f -> connections.decrementAndGet());
+                        ch.pipeline().addLast(new WriteTimeoutHandler(WRITE_TIMEOUT_S), new HttpServerCodec(),
+                                new HttpObjectAggregator(MAX_REQUEST), new HttpGate(files),
+                                new WebSocketServerProtocolHandler("/ws", null, false, MAX_FRAME),
+                                new PageSocket(clients, commands, commandThread));
+                    }
+                });
+        try {
+            server = b.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port)).sync().channel();
+        } catch (Exception e) {
+            close();
+            if (e instanceof BindException) {
+                throw new BindException("web port " + port + " is already in use");
+            }
+            throw new IOException("cannot listen on web port " + port + ": " + e.getMessage(), e);
+        }
+        LOG.info("web viewer on http://localhost:{}/", port());
+    }
+
+    public int port() {
+        return ((InetSocketAddress) server.localAddress()).getPort();
+    }
+
+    /** Pages connected now. */
+    public int pages() {
+        return clients.count();
+    }
+
+    @Override
+    public void close() {
+        feed.close();
+        if (server != null) {
+            server.close();
+        }
+        commandThread.shutdownNow();
+        group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
+    }
+}

@@ -1,0 +1,186 @@
+// The page's feed, the 2D view, the robot table, the status bar and the timeline. Text from the network
+// is only ever set as textContent, never as markup.
+import { View3D } from './view3d.js';
+
+const $ = (id) => document.getElementById(id);
+const TRAIL = 600; // points kept per robot
+let world = null, poses = null, trails = [], gone = new Set(), follow = -1;
+let scale = 0.1, offX = 0, offY = 0, fitted = false;
+let lastStep = -1, rateSteps = 0, rateSince = performance.now(), rate = 0;
+let ws = null;
+const view3d = new View3D($('view3d'));
+
+function connect() {
+  ws = new WebSocket(`ws://${location.host}/ws`);
+  ws.onmessage = (e) => handle(JSON.parse(e.data));
+  ws.onopen = () => { $('state').textContent = 'connected'; ask('status'); };
+  ws.onclose = () => { $('state').textContent = 'not connected'; setTimeout(connect, 1000); };
+}
+
+function ask(request) {
+  if (ws && ws.readyState === WebSocket.OPEN) ws.send(request);
+}
+
+function handle(m) {
+  switch (m.type) {
+    case 'snapshot':
+      world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); fitted = false;
+      $('ended').textContent = '';
+      buildTable(); view3d.world(m); break;
+    case 'update':
+      if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
+      poses = m; gone = new Set(m.departed);
+      m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
+      count(m.step); break;
+    case 'state': $('state').textContent = m.phase; break;
+    case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; break;
+    case 'reply': replied(m); break;
+  }
+}
+
+function count(step) {
+  if (lastStep >= 0 && step > lastStep) rateSteps += step - lastStep;
+  lastStep = step;
+  const now = performance.now();
+  if (now - rateSince >= 1000) { rate = rateSteps * 1000 / (now - rateSince); rateSteps = 0; rateSince = now; }
+}
+
+function replied(m) {
+  if (m.request === 'status' && m.ok) {
+    const replay = m.replay === true;
+    $('replay').classList.toggle('hidden', !replay);
+    if (replay && document.activeElement !== $('timeline')) {
+      $('timeline').min = m.first_step; $('timeline').max = m.last_step; $('timeline').value = m.step;
+      $('at').textContent = `${m.step} / ${m.last_step}`;
+      if (document.activeElement !== $('speed')) $('speed').value = String(m.speed);
+    }
+    if (!poses || m.state === 'PAUSED' || m.state === 'ENDED' || m.state === 'WAITING') $('state').textContent = m.state;
+  } else if (m.request !== 'status') {
+    $('reply').textContent = m.request + ': ' + (m.ok ? (m.message || 'ok') : 'refused: ' + m.error);
+  }
+}
+
+function buildTable() {
+  const body = $('robots').tBodies[0];
+  body.replaceChildren();
+  world.robots.forEach((r, i) => {
+    const tr = body.insertRow();
+    tr.dataset.robot = i;
+    for (let c = 0; c < 4; c++) tr.insertCell();
+    tr.cells[0].textContent = r.name;
+    tr.onclick = () => { follow = follow === i ? -1 : i; };
+  });
+}
+
+function showTable() {
+  const rows = $('robots').tBodies[0].rows;
+  for (let i = 0; i < rows.length && poses; i++) {
+    const r = rows[i];
+    r.cells[1].textContent = (poses.x[i] / 1000).toFixed(3);
+    r.cells[2].textContent = (poses.y[i] / 1000).toFixed(3);
+    r.cells[3].textContent = poses.heading[i].toFixed(1);
+    r.classList.toggle('gone', gone.has(world.robots[i].name));
+    r.classList.toggle('followed', follow === i);
+  }
+  const tags = $('tags');
+  const list = poses ? poses.tags.slice(-10) : [];
+  if (tags.childElementCount !== list.length || (list.length && tags.lastChild.textContent !== list[list.length - 1])) {
+    tags.replaceChildren(...list.map((t) => { const li = document.createElement('li'); li.textContent = t; return li; }));
+  }
+}
+
+// ---- the 2D view: world mm -> screen px, y up ----
+const canvas = $('view2d');
+const toX = (x) => x * scale + offX;
+const toY = (y) => canvas.height - (y * scale + offY);
+
+function fit() {
+  const a = world.arena, w = canvas.width, h = canvas.height;
+  scale = 0.95 * Math.min(w / (a.maxX - a.minX), h / (a.maxY - a.minY));
+  offX = (w - (a.maxX - a.minX) * scale) / 2 - a.minX * scale;
+  offY = (h - (a.maxY - a.minY) * scale) / 2 - a.minY * scale;
+  fitted = true;
+}
+
+function draw2d() {
+  const g = canvas.getContext('2d');
+  if (canvas.width !== canvas.clientWidth || canvas.height !== canvas.clientHeight) {
+    canvas.width = canvas.clientWidth; canvas.height = canvas.clientHeight; fitted = false;
+  }
+  g.fillStyle = '#fff'; g.fillRect(0, 0, canvas.width, canvas.height);
+  if (!world || !poses) return;
+  if (!fitted) fit();
+  if (follow >= 0) { offX = canvas.width / 2 - poses.x[follow] * scale; offY = canvas.height / 2 - poses.y[follow] * scale; }
+  const a = world.arena;
+  g.strokeStyle = '#444'; g.lineWidth = 2;
+  g.strokeRect(toX(a.minX), toY(a.maxY), (a.maxX - a.minX) * scale, (a.maxY - a.minY) * scale);
+  g.fillStyle = '#8a8a8a';
+  for (const o of world.obstacles) {
+    g.beginPath();
+    for (let k = 0; k < o.xy.length; k += 2) g.lineTo(toX(o.xy[k]), toY(o.xy[k + 1]));
+    g.closePath(); g.fill();
+  }
+  if ($('trails').checked) {
+    g.strokeStyle = 'rgba(40,90,200,0.35)'; g.lineWidth = 1;
+    for (const t of trails) {
+      g.beginPath();
+      for (let k = 0; k < t.length; k += 2) g.lineTo(toX(t[k]), toY(t[k + 1]));
+      g.stroke();
+    }
+  }
+  world.robots.forEach((r, i) => {
+    const x = poses.x[i], y = poses.y[i], h = poses.heading[i] * Math.PI / 180;
+    const out = gone.has(r.name);
+    if ($('sonar').checked && !out) {
+      g.strokeStyle = 'rgba(220,60,60,0.5)';
+      r.sonars.forEach((s, k) => {
+        const range = (poses.sonar[i] || [])[k];
+        if (range === undefined) return;
+        const sx = x + s.x * Math.cos(h) - s.y * Math.sin(h), sy = y + s.x * Math.sin(h) + s.y * Math.cos(h);
+        const d = h + s.angle * Math.PI / 180;
+        g.beginPath(); g.moveTo(toX(sx), toY(sy));
+        g.lineTo(toX(sx + range * Math.cos(d)), toY(sy + range * Math.sin(d))); g.stroke();
+      });
+    }
+    const rad = Math.max(2, r.radius * scale);
+    g.fillStyle = out ? '#ccc' : i === follow ? '#e8a200' : '#2a62c9';
+    g.beginPath(); g.arc(toX(x), toY(y), rad, 0, 2 * Math.PI); g.fill();
+    g.strokeStyle = '#000'; g.lineWidth = 1.5;
+    g.beginPath(); g.moveTo(toX(x), toY(y)); g.lineTo(toX(x + r.radius * Math.cos(h)), toY(y + r.radius * Math.sin(h))); g.stroke();
+    g.fillStyle = '#222'; g.fillText(r.name, toX(x) + rad + 2, toY(y) - rad);
+  });
+}
+
+canvas.addEventListener('wheel', (e) => {
+  e.preventDefault();
+  const f = e.deltaY < 0 ? 1.2 : 1 / 1.2, mx = e.offsetX, my = canvas.height - e.offsetY;
+  offX = mx - (mx - offX) * f; offY = my - (my - offY) * f; scale *= f;
+}, { passive: false });
+let drag = null;
+canvas.addEventListener('mousedown', (e) => { drag = [e.clientX, e.clientY]; });
+window.addEventListener('mouseup', () => { drag = null; });
+window.addEventListener('mousemove', (e) => {
+  if (!drag) return;
+  offX += e.clientX - drag[0]; offY -= e.clientY - drag[1]; drag = [e.clientX, e.clientY]; follow = -1;
+});
+$('fit').onclick = () => { follow = -1; fitted = false; view3d.fit(); };
+document.querySelectorAll('input[name=view]').forEach((r) => r.onchange = () => {
+  const three = document.querySelector('input[name=view]:checked').value === '3d';
+  canvas.classList.toggle('hidden', three); $('view3d').classList.toggle('hidden', !three);
+});
+$('pause').onclick = () => ask('pause');
+$('resume').onclick = () => ask('resume');
+$('stepOne').onclick = () => ask('step 1');
+$('timeline').onchange = () => ask('seek ' + $('timeline').value);
+$('speed').onchange = () => ask('speed ' + $('speed').value);
+
+function frame() {
+  $('step').textContent = poses ? poses.step : '-';
+  $('rate').textContent = rate.toFixed(1);
+  if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
+  showTable();
+  requestAnimationFrame(frame);
+}
+setInterval(() => ask('status'), 1000);
+connect();
+requestAnimationFrame(frame);
