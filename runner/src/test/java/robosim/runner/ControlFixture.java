@@ -41,8 +41,8 @@ final class ControlFixture implements AutoCloseable {
         host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
         host.open();
         // load may read the tests' files and the bundled environments
-        control = new ControlServer(host, keys, new EnvironmentDirectories(
-                List.of(file.toAbsolutePath().getParent(), InJvmSimulation.env("test.xml").getParent())));
+        control = new ControlServer(new robosim.environment.control.EnvironmentCommands(host, new EnvironmentDirectories(
+                List.of(file.toAbsolutePath().getParent(), InJvmSimulation.env("test.xml").getParent()))), keys);
         control.start(InetAddress.getLoopbackAddress(), 0);
         running = CompletableFuture.supplyAsync(() -> {
             try {

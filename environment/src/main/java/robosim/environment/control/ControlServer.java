@@ -80,16 +80,7 @@ public final class ControlServer implements Closeable {
     private final java.util.concurrent.atomic.AtomicLong lastCapLog = new java.util.concurrent.atomic.AtomicLong();
     private Channel server;
 
-    /**
-     * @param keys the secret every connection proves first, and TLS if they hold a key pair; null for
-     *     neither (loopback only)
-     * @param directories where {@code load} may read files
-     */
-    public ControlServer(EnvironmentHost host, SimulationKeys keys, EnvironmentDirectories directories) {
-        this(new EnvironmentCommands(host, directories), keys);
-    }
-
-    /** A control port serving {@code commands} (a replay's, say), with the same bounds and proof. */
+    /** Serves {@code commands}; {@code keys}: the secret proved first, and TLS with a key pair (null: loopback only). */
     public ControlServer(ControlCommands commands, SimulationKeys keys) {
         this.requests = new ControlRequests(commands, keys);
         this.tls = keys == null ? null : keys.tls();
@@ -161,14 +152,14 @@ public final class ControlServer implements Closeable {
             server.close();
         }
         worker.shutdownNow(); // (a step or pause under way answers "interrupted")
-        quick.shutdown(); // the quick requests in hand (a stop, say) answer first, briefly
+        quick.shutdown(); // the quick requests in hand (a stop, say) answer first, briefly, and their replies leave
         try {
             quick.awaitTermination(2, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
         quick.shutdownNow();
-        group.shutdownGracefully(100, 1000, TimeUnit.MILLISECONDS); // (their replies still leave)
+        group.shutdownGracefully(100, 1000, TimeUnit.MILLISECONDS);
     }
 
     /** One per connection; its fields are touched on the I/O thread only. */

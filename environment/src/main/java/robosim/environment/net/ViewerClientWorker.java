@@ -1,6 +1,5 @@
 package robosim.environment.net;
 
-import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.CompletableFuture;
@@ -27,7 +26,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
 
     private final CountDownLatch done = new CountDownLatch(1);
     private volatile ViewerQueue queue;
-    private volatile long writingSince;
+    private volatile ViewerWrites writes;
 
     ViewerClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
         super(coordinator, socket, "viewer-worker[" + serial + "]");
@@ -40,6 +39,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
 
     @Override
     protected void serve() throws IOException, InterruptedException {
+        writes = new ViewerWrites(connection);
         ViewerHello hello = connection.read(ViewerHello.class);
         String refusal = heardHello("viewer");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
@@ -48,8 +48,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
         }
         if (refusal != null) {
             logRefused(refusal);
-            connection.write(new SimulationEnd(-1, refusal));
-            connection.flush();
+            writes.send(new SimulationEnd(-1, refusal));
             return;
         }
         queue = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
@@ -58,27 +57,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
                 () -> snapshot.completeExceptionally(new IOException("the simulation is over")));
         WorldSnapshot first = awaitVerdict(snapshot);
         handshakeDone();
-        send(first);
-        while (true) {
-            Object next = queue.take();
-            if (queue.claimRoomSignal()) {
-                coordinator.post(new LoopEvent.ViewerHasRoom(this), () -> { });
-            }
-            send((Externalizable) next);
-            if (next instanceof SimulationEnd) {
-                return;
-            }
-        }
-    }
-
-    private void send(Externalizable message) throws IOException {
-        writingSince = System.nanoTime();
-        try {
-            connection.write(message);
-            connection.flush();
-        } finally {
-            writingSince = 0;
-        }
+        writes.serve(first, queue, () -> coordinator.post(new LoopEvent.ViewerHasRoom(this), () -> { }));
     }
 
     /** Its queue, once it has said hello (the loop only sees joined viewers). */
@@ -89,8 +68,8 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
 
     @Override
     public long writingFor(long now) {
-        long since = writingSince;
-        return since == 0 ? 0 : now - since;
+        ViewerWrites w = writes;
+        return w == null ? 0 : w.writingFor(now);
     }
 
     @Override

@@ -2,7 +2,6 @@ package robosim.environment.replay;
 
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
-import java.util.function.LongFunction;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.net.ViewerSink;
@@ -76,7 +75,7 @@ public final class ReplayClock {
 
     /** A viewer has said hello: it is added, and gets the world as the replay shows it now. */
     public CompletableFuture<WorldSnapshot> join(ViewerSink viewer) {
-        return ask(now -> {
+        return inbox.ask(now -> {
             viewers.add(viewer);
             WorldSnapshot world = at.snapshot();
             if (state == ReplayStatus.State.ENDED) {
@@ -103,12 +102,12 @@ public final class ReplayClock {
     }
 
     public CompletableFuture<ReplayStatus> status() {
-        return ask(now -> new ReplayStatus(state, at.step(), at.firstStep(), at.lastStep(), at.steps(), speed, viewers.count(), at.atEnd(),
+        return inbox.ask(now -> new ReplayStatus(state, at.step(), at.firstStep(), at.lastStep(), at.steps(), speed, viewers.count(), at.atEnd(),
                 1e9 / intervalNanos));
     }
 
     public CompletableFuture<String> pause() {
-        return ask(now -> {
+        return inbox.ask(now -> {
             live();
             if (state != ReplayStatus.State.PAUSED) {
                 hold();
@@ -118,7 +117,7 @@ public final class ReplayClock {
     }
 
     public CompletableFuture<String> resume() {
-        return ask(now -> {
+        return inbox.ask(now -> {
             live();
             if (at.atEnd()) {
                 throw new IllegalStateException("at the end of the recording (step " + at.step() + "): seek first");
@@ -132,7 +131,7 @@ public final class ReplayClock {
 
     /** Shows the next {@code n} steps as fast as the viewers take them, then holds; answers once they are shown. */
     public CompletableFuture<String> step(long n) {
-        return ask(now -> {
+        return inbox.ask(now -> {
             live();
             if (stepping != null) {
                 throw new IllegalStateException("a step is under way");
@@ -151,7 +150,7 @@ public final class ReplayClock {
 
     /** Shows recorded step {@code k} (the last recorded at or before it) at once, and goes on from there. */
     public CompletableFuture<String> seek(long k) {
-        return ask(now -> {
+        return inbox.ask(now -> {
             live();
             int i = at.indexOf(k);
             finishStepping();
@@ -162,7 +161,7 @@ public final class ReplayClock {
     }
 
     public CompletableFuture<String> speed(double timesRealTime) {
-        return ask(now -> {
+        return inbox.ask(now -> {
             live();
             setSpeed(timesRealTime);
             nextDue = now + intervalNanos;
@@ -172,16 +171,12 @@ public final class ReplayClock {
 
     /** Sends every viewer the end and ends the replay. */
     public CompletableFuture<String> stop(String why) {
-        return ask(now -> {
+        return inbox.ask(now -> {
             if (state != ReplayStatus.State.ENDED) {
                 end(new SimulationEnd(at.step(), why));
             }
             return "stopped at step " + at.step();
         });
-    }
-
-    private <T> CompletableFuture<T> ask(LongFunction<T> action) {
-        return inbox.ask(action);
     }
 
     // ---- the clock thread ------------------------------------------------------------------------------

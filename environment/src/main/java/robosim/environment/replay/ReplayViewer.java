@@ -1,7 +1,6 @@
 package robosim.environment.replay;
 
 import java.io.EOFException;
-import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.CountDownLatch;
@@ -15,6 +14,7 @@ import org.slf4j.LoggerFactory;
 import robosim.environment.net.Printable;
 import robosim.environment.net.ViewerQueue;
 import robosim.environment.net.ViewerSink;
+import robosim.environment.net.ViewerWrites;
 import robosim.protocol.Challenge;
 import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
@@ -53,7 +53,7 @@ final class ReplayViewer implements ViewerSink, Runnable {
     private volatile Future<?> deadline;
     private volatile ObjectConnection connection;
     private volatile ViewerQueue queue;
-    private volatile long writingSince;
+    private volatile ViewerWrites writes;
     private volatile boolean joined;
 
     ReplayViewer(Socket socket, int serial, ReplayClock clock, SimulationKeys keys, int resetEvery, Runnable release) {
@@ -83,6 +83,7 @@ final class ReplayViewer implements ViewerSink, Runnable {
         try {
             socket.setSendBufferSize(SEND_BUFFER_BYTES);
             connection = ObjectConnection.server(socket, resetEvery, keys);
+            writes = new ViewerWrites(connection);
             connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
             serve();
         } catch (IOException e) {
@@ -129,7 +130,7 @@ final class ReplayViewer implements ViewerSink, Runnable {
         }
         if (refusal != null) {
             LOG.warn("{} refused: {}", name, Printable.of(refusal));
-            send(new SimulationEnd(-1, refusal));
+            writes.send(new SimulationEnd(-1, refusal));
             return;
         }
         connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
@@ -141,27 +142,7 @@ final class ReplayViewer implements ViewerSink, Runnable {
         } catch (ExecutionException | TimeoutException e) {
             throw new ProtocolException("the replay did not take this viewer: " + (e.getCause() == null ? e : e.getCause()));
         }
-        send(first);
-        while (true) {
-            Object next = queue.take();
-            if (queue.claimRoomSignal()) {
-                clock.roomFreed();
-            }
-            send((Externalizable) next);
-            if (next instanceof SimulationEnd) {
-                return;
-            }
-        }
-    }
-
-    private void send(Externalizable message) throws IOException {
-        writingSince = System.nanoTime();
-        try {
-            connection.write(message);
-            connection.flush();
-        } finally {
-            writingSince = 0;
-        }
+        writes.serve(first, queue, clock::roomFreed);
     }
 
     @Override
@@ -171,8 +152,8 @@ final class ReplayViewer implements ViewerSink, Runnable {
 
     @Override
     public long writingFor(long now) {
-        long since = writingSince;
-        return since == 0 ? 0 : now - since;
+        ViewerWrites w = writes;
+        return w == null ? 0 : w.writingFor(now);
     }
 
     @Override
