@@ -74,6 +74,7 @@ class ReplayTest {
             ViewerClient viewer = ViewerClient.connect("127.0.0.1", port(replay, "viewers"), new ViewerHello(false),
                     LONG_S * 1000, null);
             viewer.start(got);
+            got.awaitSnapshot(LONG_S); // (it has joined: what the replay shows from now on reaches it)
             try (ControlClient control = new ControlClient("127.0.0.1", port(replay, "control"), null, (int) (LONG_S * 1000))) {
                 assertEquals("at step 2500", ok(control.request("seek 2500")).path("message").asText());
                 assertArrayEquals(RecordingRunTest.bytes(live.updates.get(2500)),
@@ -91,13 +92,16 @@ class ReplayTest {
                 assertTrue(control.request("seek 5000").path("error").asText().contains("not in the recording"));
                 assertTrue(control.request("speed 1000").path("error").asText().contains("0.1 to 100"));
                 assertTrue(control.request("step -3").path("error").asText().contains("positive whole number"));
+                seen = got.messages.size();
                 ok(control.request("seek 4999"));
+                got.awaitStep(4999, seen, LONG_S);
                 assertTrue(control.request("resume").path("error").asText().contains("at the end of the recording"));
                 seen = got.messages.size();
                 ok(control.request("seek 10"));
+                seen = got.messages.indexOf(got.awaitStep(10, seen, LONG_S));
                 ok(control.request("speed 100"));
                 ok(control.request("resume"));
-                got.awaitStep(20, seen, LONG_S); // runs on from where it was sought
+                got.awaitStep(11, 4998, seen, LONG_S); // runs on from where it was sought (a live viewer gets the newest)
                 ok(control.request("stop"));
             }
             viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);

@@ -51,11 +51,17 @@ final class ViewerStream implements ViewerClient.Listener {
     }
 
     /** The first update of {@code step} after the first {@code after} messages, waiting up to {@code seconds}. */
-    synchronized PoseUpdate awaitStep(long step, int after, long seconds) throws InterruptedException {
+    PoseUpdate awaitStep(long step, int after, long seconds) throws InterruptedException {
+        return awaitStep(step, step, after, seconds);
+    }
+
+    /** The first update of a step from {@code from} to {@code to} after the first {@code after} messages. */
+    synchronized PoseUpdate awaitStep(long from, long to, int after, long seconds) throws InterruptedException {
+        long step = from;
         long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
         while (true) {
             for (int i = after; i < messages.size(); i++) {
-                if (messages.get(i) instanceof PoseUpdate u && u.step() == step) {
+                if (messages.get(i) instanceof PoseUpdate u && u.step() >= from && u.step() <= to) {
                     return u;
                 }
             }
@@ -66,6 +72,19 @@ final class ViewerStream implements ViewerClient.Listener {
             }
             wait(TimeUnit.NANOSECONDS.toMillis(left) + 1);
         }
+    }
+
+    /** Waits up to {@code seconds} for the snapshot (the viewer has joined). */
+    synchronized WorldSnapshot awaitSnapshot(long seconds) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(seconds);
+        while (messages.isEmpty()) {
+            long left = deadline - System.nanoTime();
+            if (left <= 0 || lost != null) {
+                throw new AssertionError("no snapshot within " + seconds + " s (lost: " + lost + ")");
+            }
+            wait(TimeUnit.NANOSECONDS.toMillis(left) + 1);
+        }
+        return snapshot();
     }
 
     WorldSnapshot snapshot() {

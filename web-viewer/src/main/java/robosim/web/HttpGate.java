@@ -39,7 +39,7 @@ final class HttpGate extends SimpleChannelInboundHandler<FullHttpRequest> {
                 refuse(ctx, HttpResponseStatus.BAD_REQUEST, "GET only");
             } else if (!LOCAL_HOSTS.contains(hostName(host))) {
                 refuse(ctx, HttpResponseStatus.MISDIRECTED_REQUEST, "this viewer answers only as localhost");
-            } else if (request.uri().equals("/ws") || request.uri().startsWith("/ws?")) {
+            } else if (request.uri().equals("/ws")) {
                 String origin = request.headers().get(HttpHeaderNames.ORIGIN);
                 if (origin != null && !origin.equalsIgnoreCase("http://" + host)) {
                     refuse(ctx, HttpResponseStatus.FORBIDDEN, "a WebSocket only from this viewer's own page");
@@ -55,8 +55,8 @@ final class HttpGate extends SimpleChannelInboundHandler<FullHttpRequest> {
                             Unpooled.wrappedBuffer(f.bytes()));
                     r.headers().set(HttpHeaderNames.CONTENT_TYPE, f.contentType())
                             .set("X-Content-Type-Options", "nosniff")
-                            .set("Content-Security-Policy", "default-src 'self'; connect-src 'self' ws:; "
-                                    + "style-src 'self' 'unsafe-inline'")
+                            .set("Content-Security-Policy", "default-src 'self'; connect-src 'self'; "
+                                    + "style-src 'self' 'unsafe-inline'; frame-ancestors 'none'")
                             .set(HttpHeaderNames.CACHE_CONTROL, "no-cache");
                     HttpUtil.setContentLength(r, f.bytes().length);
                     boolean keepAlive = HttpUtil.isKeepAlive(request);

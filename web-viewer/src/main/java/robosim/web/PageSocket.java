@@ -37,6 +37,7 @@ final class PageSocket extends SimpleChannelInboundHandler<TextWebSocketFrame> {
     @Override
     public void userEventTriggered(ChannelHandlerContext ctx, Object event) throws Exception {
         if (event instanceof WebSocketServerProtocolHandler.HandshakeComplete) {
+            ctx.pipeline().remove(io.netty.handler.timeout.ReadTimeoutHandler.class); // (a page watching sends nothing)
             clients.joined(ctx.channel());
         }
         super.userEventTriggered(ctx, event);

@@ -47,10 +47,6 @@ final class WebClients {
         }
     }
 
-    int count() {
-        return pages.size();
-    }
-
     void snapshot(String json) {
         synchronized (this) { // (a page joining sees a snapshot and the update after it, never older ones)
             snapshot = json;

@@ -12,6 +12,7 @@ import io.netty.channel.socket.nio.NioServerSocketChannel;
 import io.netty.handler.codec.http.HttpObjectAggregator;
 import io.netty.handler.codec.http.HttpServerCodec;
 import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
+import io.netty.handler.timeout.ReadTimeoutHandler;
 import io.netty.handler.timeout.WriteTimeoutHandler;
 import java.io.Closeable;
 import java.io.IOException;
@@ -31,7 +32,8 @@ import robosim.protocol.SimulationKeys;
  * The browser viewer ({@code --web-port} on the Environment and on {@code replay.sh}): a page over HTTP
  * and its feed over a WebSocket ({@code /ws}), on loopback only (watch from another machine through an
  * SSH tunnel: the page has no login of its own, and nothing goes beyond loopback without one). Bounded:
- * {@link #MAX_CONNECTIONS} connections, {@link #MAX_REQUEST} bytes a request, {@link #MAX_FRAME} bytes a
+ * {@link #MAX_CONNECTIONS} connections, {@link #MAX_REQUEST} bytes a request, {@link #REQUEST_TIMEOUT_S} s to
+ * send one (or open the WebSocket), {@link #MAX_FRAME} bytes a
  * frame from a page, a reply a page does not take within {@link #WRITE_TIMEOUT_S} s closes it; a Host
  * header that is not this machine's (DNS rebinding) and a WebSocket from another origin are refused.
  * Threads: {@code web-io} (netty's I/O), {@code web-commands} (a page's requests: pause, seek...),
@@ -43,6 +45,8 @@ public final class WebViewerServer implements Closeable {
     static final int MAX_REQUEST = 8 * 1024;
     static final int MAX_FRAME = 4 * 1024;
     static final int WRITE_TIMEOUT_S = 30;
+    /** A connection that has not sent a whole request (or opened its WebSocket) within this long is closed, s. */
+    static final int REQUEST_TIMEOUT_S = 30;
 
     private final WebClients clients;
     private final StaticFiles files = new StaticFiles();
@@ -85,7 +89,8 @@ public final class WebViewerServer implements Closeable {
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
-                        ch.pipeline().addLast(new WriteTimeoutHandler(WRITE_TIMEOUT_S), new HttpServerCodec(),
+                        ch.pipeline().addLast(new ReadTimeoutHandler(REQUEST_TIMEOUT_S), // (off once a page's socket is open)
+                                new WriteTimeoutHandler(WRITE_TIMEOUT_S), new HttpServerCodec(),
                                 new HttpObjectAggregator(MAX_REQUEST), new HttpGate(files),
                                 new WebSocketServerProtocolHandler("/ws", null, false, MAX_FRAME),
                                 new PageSocket(clients, commands, commandThread));
@@ -105,11 +110,6 @@ public final class WebViewerServer implements Closeable {
 
     public int port() {
         return ((InetSocketAddress) server.localAddress()).getPort();
-    }
-
-    /** Pages connected now. */
-    public int pages() {
-        return clients.count();
     }
 
     @Override

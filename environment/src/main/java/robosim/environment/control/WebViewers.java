@@ -16,6 +16,10 @@ public final class WebViewers {
      */
     public static WebViewerServer start(int webPort, int viewerPort, SimulationKeys keys, ControlCommands commands)
             throws IOException {
+        if (keys != null) { // (the page has no login of its own yet: with keys, every port asks for them)
+            throw new IOException("--web-port: the browser viewer has no login of its own yet, so it is not served "
+                    + "when ROBOSIM_KEYS or ROBOSIM_SECRET_FILE is set");
+        }
         WebViewerServer web = new WebViewerServer(viewerPort, keys, (verb, arg) -> {
             com.fasterxml.jackson.databind.node.ObjectNode n = commands.handle(verb, arg);
             return n == null ? ControlReplies.error("not here: " + verb).toString() : n.toString();

@@ -3,7 +3,7 @@ package robosim.environment.net;
 /**
  * One viewer as the one who publishes to it sees it: its {@link ViewerQueue}, filled by the publisher and
  * never waited on, and a thread of its own that writes what the queue holds to the viewer. The
- * Environment's viewer workers, a replay's viewers and the browser page's connections are such viewers.
+ * Environment's viewer workers and a replay's viewers are such viewers.
  */
 public interface ViewerSink {
     /** Its queue, once it has said hello. */

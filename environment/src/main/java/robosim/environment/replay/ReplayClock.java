@@ -1,7 +1,6 @@
 package robosim.environment.replay;
 
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.net.ViewerSink;
@@ -94,6 +93,10 @@ public final class ReplayClock {
     /** A viewer's worker has ended (any thread). */
     public void left(ViewerSink viewer, String why) {
         viewers.remove(viewer, why);
+        inbox.ask(now -> { // (and again after a join of it still queued, if any)
+            viewers.remove(viewer, why);
+            return null;
+        });
     }
 
     /** A viewer's queue has room again: the clock looks at once. */
@@ -189,8 +192,9 @@ public final class ReplayClock {
                 viewers.dropStuck(now);
                 advance(now);
             }
-        } catch (InterruptedException e) {
-            end(new SimulationEnd(at.step(), "the replay was interrupted"));
+        } catch (InterruptedException | RuntimeException | Error e) {
+            LOG.error("the replay stops: {}", e.toString());
+            end(new SimulationEnd(at.step(), "the replay failed: " + e));
         } finally {
             inbox.close(); // (what is left answers "the replay has ended", or what it did last)
         }

@@ -84,7 +84,13 @@ public final class ReplayMain implements Callable<Integer> {
             System.err.println("replay: " + bad);
             return 2;
         }
-        InetAddress bindAddress = InetAddress.getByName(bind);
+        InetAddress bindAddress;
+        try {
+            bindAddress = InetAddress.getByName(bind);
+        } catch (java.net.UnknownHostException e) {
+            System.err.println("replay: --bind " + bind + ": no such address");
+            return 2;
+        }
         SimulationKeys keys;
         RecordingReader recording;
         try {
@@ -148,6 +154,14 @@ public final class ReplayMain implements Callable<Integer> {
     private String badOption() {
         if (!(speed >= ReplayClock.MIN_SPEED && speed <= ReplayClock.MAX_SPEED)) {
             return "--speed must be from " + ReplayClock.MIN_SPEED + " to " + ReplayClock.MAX_SPEED + ", got " + speed;
+        }
+        for (int p : new int[] {viewerPort, controlPort, webPort}) {
+            if (p < -1 || p > 65535) {
+                return "ports must be from 0 to 65535 (-1: none), got " + p;
+            }
+        }
+        if (viewerPort < 0) {
+            return "--viewer-port must be from 0 to 65535, got " + viewerPort;
         }
         if (maxConnections < 1) {
             return "--max-connections must be >= 1, got " + maxConnections;

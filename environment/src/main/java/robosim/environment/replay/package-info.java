@@ -6,6 +6,7 @@
  * thread, under the connection cap), {@code handshake-deadlines} (closes a viewer whose hello is late),
  * {@code replay-viewer[n]} (one per viewer: its handshake, then writes what its queue holds), the control
  * port's {@code control-io}, {@code control} and {@code control-quick}, {@code shutdown} (Ctrl-C: the end
- * to every viewer), and {@code main} (waits for the end).
+ * to every viewer), {@code main} (waits for the end) and, with {@code --web-port}, the browser viewer's
+ * {@code web-io}, {@code web-commands}, {@code web-feed} and its {@code viewer-client} ({@code robosim.web}).
  */
 package robosim.environment.replay;
