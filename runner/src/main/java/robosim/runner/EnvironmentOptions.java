@@ -34,10 +34,17 @@ final class EnvironmentOptions {
             description = "Record the run into FILE, a new file (scripts/record-tool.sh reads it).")
     Path record;
 
+    @Option(names = "--web-port", paramLabel = "PORT", description = "Serve the browser viewer on this port, on loopback "
+            + "(default: none; 0 picks a free one, said on the listening line).")
+    Integer webPort;
+
     /** What is wrong with these options, or null. */
     String bad() {
         if (stepTimeoutMs != null && stepTimeoutMs < 0) {
             return "headless: --step-timeout-ms must be >= 0, got " + stepTimeoutMs;
+        }
+        if (webPort != null && (webPort < 0 || webPort > 65535)) {
+            return "headless: --web-port must be from 0 to 65535, got " + webPort;
         }
         if (ports != null && ports.size() != 3) {
             return "headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports;
@@ -63,6 +70,10 @@ final class EnvironmentOptions {
         if (stepTimeoutMs != null) {
             envArgs.add("--step-timeout-ms");
             envArgs.add(Long.toString(stepTimeoutMs));
+        }
+        if (webPort != null) {
+            envArgs.add("--web-port");
+            envArgs.add(Integer.toString(webPort));
         }
         if (record != null) {
             envArgs.add("--record");
