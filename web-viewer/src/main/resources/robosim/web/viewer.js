@@ -26,7 +26,9 @@ function handle(m) {
     case 'snapshot':
       world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); fitted = false;
       $('ended').textContent = '';
-      buildTable(); view3d.world(m); break;
+      buildTable(); view3d.world(m);
+      if (followName) follow = m.robots.findIndex((r) => r.name === followName);
+      break;
     case 'update':
       if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
       poses = m; gone = new Set(m.departed);
@@ -181,6 +183,13 @@ function frame() {
   showTable();
   requestAnimationFrame(frame);
 }
+// a link may say how to look: ?view=3d&sonar=1&trails=0&follow=NAME
+const wanted = new URLSearchParams(location.search);
+if (wanted.get('view') === '3d') { document.querySelector('input[name=view][value="3d"]').checked = true;
+  canvas.classList.add('hidden'); $('view3d').classList.remove('hidden'); }
+if (wanted.get('sonar') === '1') $('sonar').checked = true;
+if (wanted.get('trails') === '0') $('trails').checked = false;
+const followName = wanted.get('follow');
 setInterval(() => ask('status'), 1000);
 connect();
 requestAnimationFrame(frame);

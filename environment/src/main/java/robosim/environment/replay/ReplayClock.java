@@ -33,7 +33,7 @@ public final class ReplayClock {
     private final ClockInbox inbox = new ClockInbox();
     private final Thread thread;
     // ---- the clock thread's own ----
-    private ReplayStatus.State state = ReplayStatus.State.WAITING;
+    private ReplayStatus.State state;
     private double speed;
     private long intervalNanos;
     private long nextDue;
@@ -51,6 +51,7 @@ public final class ReplayClock {
         this.viewers = viewers;
         this.exitAtEnd = exitAtEnd;
         this.startPaused = startPaused;
+        this.state = startPaused ? ReplayStatus.State.PAUSED : ReplayStatus.State.WAITING; // (held before its first step)
         setSpeed(speed);
         this.thread = new Thread(this::run, "replay-clock");
         thread.setDaemon(true);

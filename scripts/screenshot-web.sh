@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Makes web-2d.png and web-3d.png: the browser viewer (--web-port) in Debian's headless chromium, watching
+# test-envs/maze.xml (sonar rays on in 2D), and replay.png: the page on a replay of that run, paused at a
+# step with its timeline. Needs chromium (installed here if missing and we are root).
+#   scripts/screenshot-web.sh [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+# Writes into a fresh temporary directory (its path is printed), into DIR with --out DIR, or into docs/
+# (which docs/VIEWERS.md shows) with --write-docs.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_script_args docs "$@"
+[ ${#ROBOSIM_ARGS[@]} = 0 ] || robosim_fail "takes no arguments, got ${ROBOSIM_ARGS[*]} (see --help)"
+[ ${#ROBOSIM_PASS[@]} = 0 ] || robosim_fail "takes nothing after -- (see --help)"
+out=$(robosim_out_dir)
+cd "$ROBOSIM_HOME"
+if ! command -v chromium >/dev/null; then
+  if [ "$(id -u)" = 0 ]; then apt-get update -qq && apt-get install -y -qq chromium >/dev/null; else
+    robosim_fail "needs chromium (apt-get install chromium)"; fi
+fi
+robosim_build_if_stale
+tmp=$(mktemp -d)
+run="" replay=""
+cleanup() { kill ${run:+"$run"} ${replay:+"$replay"} 2>/dev/null || true; rm -rf "$tmp"; }
+trap cleanup EXIT
+shot() { # FILE URL: the page after 4 s of its own time
+  chromium --headless=new --no-sandbox --disable-dev-shm-usage --enable-unsafe-swiftshader --use-angle=swiftshader \
+    --user-data-dir="$tmp/chrome" --window-size=1200,800 --virtual-time-budget=4000 --screenshot="$1" "$2" \
+    >/dev/null 2>&1
+  echo "wrote $1"
+}
+web=$((14000 + RANDOM % 900))
+scripts/headless.sh --env test-envs/maze.xml --steps 3000 --speed 8 --web-port "$web" --record "$tmp/maze.rec" \
+  >/dev/null 2>&1 &
+run=$!
+sleep 12   # a script, not a test: let the robots drive a while so trails and sonar show
+shot "$out/web-2d.png" "http://localhost:$web/?sonar=1"
+shot "$out/web-3d.png" "http://localhost:$web/?view=3d"
+kill "$run" 2>/dev/null || true; wait "$run" 2>/dev/null || true; run=""
+control=$((web + 1))
+scripts/replay.sh "$tmp/maze.rec" --viewer-port 0 --control-port "$control" --web-port "$web" --paused \
+  >"$tmp/replay.log" 2>&1 &
+replay=$!
+sleep 5   # the replay is listening
+scripts/control-panel.sh localhost "$control" "seek 200" >/dev/null
+shot "$out/replay.png" "http://localhost:$web/?follow=w3"
