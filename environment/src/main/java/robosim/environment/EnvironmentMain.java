@@ -213,7 +213,7 @@ public final class EnvironmentMain implements Callable<Integer> {
                 control.start(bindAddress, controlPort);
             }
             if (webPort >= 0) {
-                web = WebViewers.start(webPort, host.ports()[1], keys, new EnvironmentCommands(host, directories));
+                web = WebViewers.start(webPort, bindAddress, host.ports()[1], keys, new EnvironmentCommands(host, directories));
             }
         } catch (BindException e) {
             closeQuietly(host, control);

@@ -50,7 +50,7 @@ class BrowserViewerIT {
         sim.settings(s -> s.speed(40)) // (80 steps a second: a page can watch it go)
                 .onUpdate((u, port) -> seen.put(u.step(), u))
                 .sideline((env, ports) -> {
-                    try (WebViewerServer web = new WebViewerServer(ports[1], null,
+                    try (WebViewerServer web = new WebViewerServer("127.0.0.1", ports[1], null,
                             (verb, arg) -> "{\"ok\":true}")) {
                         web.start(0);
                         WebDriver page = browser();

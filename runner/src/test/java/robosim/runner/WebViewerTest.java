@@ -37,7 +37,7 @@ class WebViewerTest {
         CompletableFuture<Void> ended = new CompletableFuture<>();
         WebViewerServer[] web = new WebViewerServer[1];
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).sideline((env, ports) -> {
-            web[0] = new WebViewerServer(ports[1], null, (verb, arg) -> "{\"ok\":true,\"message\":\"" + verb + "\"}");
+            web[0] = new WebViewerServer("127.0.0.1", ports[1], null, (verb, arg) -> "{\"ok\":true,\"message\":\"" + verb + "\"}");
             web[0].start(0);
             HttpClient http = HttpClient.newHttpClient();
             String base = "http://localhost:" + web[0].port();

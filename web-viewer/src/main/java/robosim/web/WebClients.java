@@ -3,83 +3,102 @@ package robosim.web;
 import io.netty.channel.Channel;
 import io.netty.channel.ChannelFutureListener;
 import io.netty.handler.codec.http.websocketx.TextWebSocketFrame;
-import io.netty.util.AttributeKey;
+import io.netty.util.concurrent.EventExecutor;
+import java.util.HashMap;
 import java.util.Map;
-import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Consumer;
 
 /**
  * The pages connected to the feed. Every page gets the world it joins (the last snapshot, the newest
- * update, the last run state), then every run state and end, and updates: the newest one whenever its
- * connection can take it, so a page that reads slowly skips steps instead of piling them up (netty's
- * write buffer watermarks say when it can). Called by the {@code web-feed}'s reading thread and netty's
- * I/O thread; never blocks either.
+ * update, the last run state), then every run state and end, in order, and updates: the newest one
+ * whenever its connection can take it, so a page that reads slowly skips steps instead of piling them up
+ * (netty's write buffer watermarks say when it can); an update held for a page goes out before the next
+ * state or end. Everything here happens on netty's one I/O thread ({@code web-io}, which serves every
+ * page): the feed's thread only hands it over, and never blocks.
  */
 final class WebClients {
-    private static final AttributeKey<String> HELD = AttributeKey.valueOf("robosim.heldUpdate");
+    private final EventExecutor io;
+    private final Consumer<WebClients> firstPage;
+    /** Each page, with the update held for it (null: none): the I/O thread's own, as everything below. */
+    private final Map<Channel, String> pages = new HashMap<>();
+    private String snapshot;
+    private String update;
+    private String state;
 
-    private final Map<Channel, Boolean> pages = new ConcurrentHashMap<>();
-    private final java.util.function.Consumer<WebClients> firstPage;
-    private volatile String snapshot;
-    private volatile String update;
-    private volatile String state;
-
-    /** {@code firstPage} runs when a page joins (it starts the feed, once: a replay starts with its first viewer). */
-    WebClients(java.util.function.Consumer<WebClients> firstPage) {
+    /**
+     * @param io the I/O thread every page's channel is on
+     * @param firstPage runs when a page joins (it starts the feed, once: a replay starts with its first viewer)
+     */
+    WebClients(EventExecutor io, Consumer<WebClients> firstPage) {
+        this.io = io;
         this.firstPage = firstPage;
     }
 
-    /** A page has opened its WebSocket: it gets what the feed has so far. */
+    /** I/O thread: a page has opened its WebSocket: it gets what the feed has so far. */
     void joined(Channel page) {
-        pages.put(page, Boolean.TRUE);
+        pages.put(page, null);
         firstPage.accept(this);
         page.closeFuture().addListener(f -> pages.remove(page));
-        String s = snapshot;
-        if (s != null) {
-            send(page, s);
-            String u = update;
-            if (u != null) {
-                offer(page, u);
+        if (snapshot != null) {
+            send(page, snapshot);
+            if (update != null) {
+                offer(page, update);
             }
-            String st = state;
-            if (st != null) {
-                send(page, st);
+            if (state != null) {
+                send(page, state);
             }
         }
     }
 
+    /** Feed thread: a new world (a simulation, or the same one after a reconnection). */
     void snapshot(String json) {
-        synchronized (this) { // (a page joining sees a snapshot and the update after it, never older ones)
+        io.execute(() -> {
             snapshot = json;
             update = null;
-        }
-        pages.keySet().forEach(p -> send(p, json));
+            state = null;
+            pages.keySet().forEach(p -> {
+                pages.put(p, null); // (an update of the world before is no use)
+                send(p, json);
+            });
+        });
     }
 
+    /** Feed thread: a step. */
     void update(String json) {
-        update = json;
-        pages.keySet().forEach(p -> offer(p, json));
+        io.execute(() -> {
+            update = json;
+            pages.keySet().forEach(p -> offer(p, json));
+        });
     }
 
-    /** A run state or the end: every page gets it. */
+    /** Feed thread: a run state or the end: every page gets it, after the update held for it. */
     void state(String json) {
-        state = json;
-        pages.keySet().forEach(p -> send(p, json));
+        io.execute(() -> {
+            state = json;
+            pages.keySet().forEach(p -> {
+                String held = pages.put(p, null);
+                if (held != null) {
+                    send(p, held);
+                }
+                send(p, json);
+            });
+        });
     }
 
-    /** Netty's I/O thread: the page can take more; it gets the update held for it, if any. */
+    /** I/O thread: the page can take more; it gets the update held for it, if any. */
     void writable(Channel page) {
-        String held = page.attr(HELD).getAndSet(null);
+        String held = pages.containsKey(page) ? pages.put(page, null) : null;
         if (held != null) {
             offer(page, held);
         }
     }
 
-    private static void offer(Channel page, String json) {
+    private void offer(Channel page, String json) {
         if (page.isWritable()) {
-            page.attr(HELD).set(null);
-            page.writeAndFlush(new TextWebSocketFrame(json)).addListener(ChannelFutureListener.CLOSE_ON_FAILURE);
+            pages.put(page, null);
+            send(page, json);
         } else {
-            page.attr(HELD).set(json); // (the newest replaces the one held)
+            pages.put(page, json); // (the newest replaces the one held)
         }
     }
 

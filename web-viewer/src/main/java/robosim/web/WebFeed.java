@@ -17,8 +17,9 @@ import robosim.protocol.WorldSnapshot;
  * What the pages see: one live viewer of the Environment (or replay) it serves, on its viewer port like
  * any other viewer, so it sits behind the same coalescing viewer queue and never slows a step. Each
  * message is turned into the page's JSON ({@link WebJson}) once and handed to every page
- * ({@link WebClients}). Its thread {@code web-feed} connects when the first page joins, and again after each simulation's
- * end (an Environment that runs one simulation after another), once a second while there is none.
+ * ({@link WebClients}). Its thread {@code web-feed} connects when the first page joins, and again after each
+ * simulation's end (an Environment that runs one simulation after another): a second later after a run it
+ * watched, up to 10 s later while there is none.
  */
 final class WebFeed implements ViewerClient.Listener {
     private static final Logger LOG = LoggerFactory.getLogger(WebFeed.class);
@@ -32,6 +33,8 @@ final class WebFeed implements ViewerClient.Listener {
     private final Thread thread;
     private final java.util.concurrent.atomic.AtomicBoolean started = new java.util.concurrent.atomic.AtomicBoolean();
     private volatile ViewerClient viewer;
+    /** Updates of the current connection (its reading thread counts; the feed thread reads it after the end). */
+    private volatile long updates;
     private volatile WebClients clients;
 
     WebFeed(String host, int viewerPort, SimulationKeys keys) {
@@ -52,23 +55,30 @@ final class WebFeed implements ViewerClient.Listener {
 
     private void follow() {
         boolean told = false;
+        long waitMs = 1000;
         try {
             while (closed.getCount() > 0) {
                 try {
                     ViewerClient v = ViewerClient.connect(host, viewerPort, new ViewerHello(false, UPDATES_PER_SECOND),
                             5_000, keys);
                     viewer = v;
+                    if (closed.getCount() == 0) { // (closed while it connected)
+                        v.close();
+                        return;
+                    }
                     told = false;
+                    updates = 0;
                     v.start(this);
                     v.awaitEnd();
                 } catch (IOException e) {
                     if (!told) {
-                        LOG.info("web viewer: no simulation on {}:{} ({}); trying again every second", host, viewerPort,
-                                e.getMessage());
+                        LOG.info("web viewer: no simulation on {}:{} ({}); trying again", host, viewerPort, e.getMessage());
                         told = true;
                     }
                 }
-                closed.await(1, TimeUnit.SECONDS);
+                // an Environment between simulations answers with an end at once: ask less often then
+                waitMs = updates > 0 ? 1000 : Math.min(10_000, waitMs * 2);
+                closed.await(waitMs, TimeUnit.MILLISECONDS);
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
@@ -82,6 +92,7 @@ final class WebFeed implements ViewerClient.Listener {
 
     @Override
     public void update(PoseUpdate update) {
+        updates++;
         clients.update(WebJson.update(update));
     }
 
@@ -93,6 +104,11 @@ final class WebFeed implements ViewerClient.Listener {
     @Override
     public void end(SimulationEnd end) {
         clients.state(WebJson.end(end));
+    }
+
+    @Override
+    public void lost(IOException cause) {
+        clients.state(WebJson.end(new SimulationEnd(-1, "the viewer connection was lost: " + cause.getMessage())));
     }
 
     void close() {

@@ -32,11 +32,12 @@ import robosim.protocol.SimulationKeys;
  * The browser viewer ({@code --web-port} on the Environment and on {@code replay.sh}): a page over HTTP
  * and its feed over a WebSocket ({@code /ws}), on loopback only (watch from another machine through an
  * SSH tunnel: the page has no login of its own, and nothing goes beyond loopback without one). Bounded:
- * {@link #MAX_CONNECTIONS} connections, {@link #MAX_REQUEST} bytes a request, {@link #REQUEST_TIMEOUT_S} s to
+ * {@link #MAX_CONNECTIONS} connections, one request in hand a page, {@link #MAX_REQUEST} bytes a request, {@link #REQUEST_TIMEOUT_S} s to
  * send one (or open the WebSocket), {@link #MAX_FRAME} bytes a
  * frame from a page, a reply a page does not take within {@link #WRITE_TIMEOUT_S} s closes it; a Host
  * header that is not this machine's (DNS rebinding) and a WebSocket from another origin are refused.
- * Threads: {@code web-io} (netty's I/O), {@code web-commands} (a page's requests: pause, seek...),
+ * Threads: {@code web-io} (netty's I/O), {@code web-status} (a page's status requests), {@code web-commands}
+ * (its other requests: pause, seek...),
  * {@code web-feed} ({@link WebFeed}) and the feed's {@code viewer-client}.
  */
 public final class WebViewerServer implements Closeable {
@@ -54,19 +55,20 @@ public final class WebViewerServer implements Closeable {
     private final WebCommands commands;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
             (java.util.concurrent.ThreadFactory) r -> named(r, "web-io"));
-    private final ExecutorService commandThread = new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS,
-            new ArrayBlockingQueue<>(16), r -> named(r, "web-commands"));
+    private final ExecutorService commandThread = single("web-commands");
+    private final ExecutorService statusThread = single("web-status");
     private final AtomicInteger connections = new AtomicInteger();
     private Channel server;
 
     /**
-     * @param viewerPort the viewer port of the Environment or replay in this process (loopback)
+     * @param viewerHost where the viewer port of the Environment or replay in this process listens
+     * @param viewerPort that port
      * @param keys its keys, if it has them (the feed proves them like any viewer)
      * @param commands what a page may ask of it
      */
-    public WebViewerServer(int viewerPort, SimulationKeys keys, WebCommands commands) {
-        this.feed = new WebFeed(InetAddress.getLoopbackAddress().getHostAddress(), viewerPort, keys);
-        this.clients = new WebClients(feed::start);
+    public WebViewerServer(String viewerHost, int viewerPort, SimulationKeys keys, WebCommands commands) {
+        this.feed = new WebFeed(viewerHost, viewerPort, keys);
+        this.clients = new WebClients(group.next(), feed::start);
         this.commands = commands;
     }
 
@@ -74,6 +76,12 @@ public final class WebViewerServer implements Closeable {
         Thread t = new Thread(r, name);
         t.setDaemon(true);
         return t;
+    }
+
+    /** One thread, {@code name}, with a queue of one request per page at most. */
+    private static ExecutorService single(String name) {
+        return new ThreadPoolExecutor(1, 1, 0, TimeUnit.MILLISECONDS, new ArrayBlockingQueue<>(MAX_CONNECTIONS),
+                r -> named(r, name));
     }
 
     /** Binds {@code port} on loopback (the feed starts with the first page); a port in use is a {@link BindException} naming it. */
@@ -93,7 +101,7 @@ public final class WebViewerServer implements Closeable {
                                 new WriteTimeoutHandler(WRITE_TIMEOUT_S), new HttpServerCodec(),
                                 new HttpObjectAggregator(MAX_REQUEST), new HttpGate(files),
                                 new WebSocketServerProtocolHandler("/ws", null, false, MAX_FRAME),
-                                new PageSocket(clients, commands, commandThread));
+                                new PageSocket(clients, commands, commandThread, statusThread));
                     }
                 });
         try {
@@ -119,6 +127,7 @@ public final class WebViewerServer implements Closeable {
             server.close();
         }
         commandThread.shutdownNow();
+        statusThread.shutdownNow();
         group.shutdownGracefully(0, 1, TimeUnit.SECONDS);
     }
 }

@@ -10,17 +10,19 @@ public final class WebViewers {
     }
 
     /**
-     * Starts the browser viewer on {@code webPort} (loopback), fed from this process's viewer port.
+     * Starts the browser viewer on {@code webPort} (loopback), fed from this process's viewer port (on
+     * {@code bind}).
      *
      * @throws IOException naming the port if it cannot listen
      */
-    public static WebViewerServer start(int webPort, int viewerPort, SimulationKeys keys, ControlCommands commands)
-            throws IOException {
+    public static WebViewerServer start(int webPort, java.net.InetAddress bind, int viewerPort, SimulationKeys keys,
+            ControlCommands commands) throws IOException {
         if (keys != null) { // (the page has no login of its own yet: with keys, every port asks for them)
             throw new IOException("--web-port: the browser viewer has no login of its own yet, so it is not served "
                     + "when ROBOSIM_KEYS or ROBOSIM_SECRET_FILE is set");
         }
-        WebViewerServer web = new WebViewerServer(viewerPort, keys, (verb, arg) -> {
+        String viewerHost = (bind.isAnyLocalAddress() ? java.net.InetAddress.getLoopbackAddress() : bind).getHostAddress();
+        WebViewerServer web = new WebViewerServer(viewerHost, viewerPort, keys, (verb, arg) -> {
             com.fasterxml.jackson.databind.node.ObjectNode n = commands.handle(verb, arg);
             return n == null ? ControlReplies.error("not here: " + verb).toString() : n.toString();
         });

@@ -117,7 +117,7 @@ public final class ReplayMain implements Callable<Integer> {
                 control.start(bindAddress, controlPort);
             }
             if (webPort >= 0) {
-                web = WebViewers.start(webPort, port.port(), keys, new ReplayCommands(clock, file));
+                web = WebViewers.start(webPort, bindAddress, port.port(), keys, new ReplayCommands(clock, file));
             }
         } catch (IOException e) {
             close(port, control, recording);
