@@ -8,6 +8,9 @@ let world = null, poses = null, trails = [], gone = new Set(), follow = -1;
 let scale = 0.1, offX = 0, offY = 0, fitted = false;
 let lastStep = -1, rateSteps = 0, rateSince = performance.now(), rate = 0;
 let ws = null;
+// draw only what changed (a page should cost the machine it runs on little): the views when there is
+// something new to show, the table at most 5 times a second
+let dirty = true, tableDirty = true, tableAt = 0;
 const view3d = new View3D($('view3d'));
 
 function connect() {
@@ -26,15 +29,15 @@ function handle(m) {
     case 'snapshot':
       world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); fitted = false;
       $('ended').textContent = '';
-      buildTable(); view3d.world(m);
+      buildTable(); view3d.world(m); dirty = tableDirty = true;
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);
       break;
     case 'update':
       if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
       poses = m; gone = new Set(m.departed);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
-      count(m.step); break;
-    case 'state': $('state').textContent = m.phase; break;
+      count(m.step); dirty = tableDirty = true; break;
+    case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; dirty = true; break;
     case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; break;
     case 'reply': replied(m); break;
   }
@@ -168,6 +171,7 @@ window.addEventListener('mousemove', (e) => {
 $('fit').onclick = () => { follow = -1; fitted = false; view3d.fit(); };
 document.querySelectorAll('input[name=view]').forEach((r) => r.onchange = () => {
   const three = document.querySelector('input[name=view]:checked').value === '3d';
+  dirty = true;
   canvas.classList.toggle('hidden', three); $('view3d').classList.toggle('hidden', !three);
 });
 $('pause').onclick = () => ask('pause');
@@ -176,13 +180,23 @@ $('stepOne').onclick = () => ask('step 1');
 $('timeline').onchange = () => ask('seek ' + $('timeline').value);
 $('speed').onchange = () => ask('speed ' + $('speed').value);
 
-function frame() {
-  $('step').textContent = poses ? poses.step : '-';
-  $('rate').textContent = rate.toFixed(1);
-  if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
-  showTable();
+function frame(now) {
+  const resized = canvas.width !== canvas.clientWidth || canvas.height !== canvas.clientHeight;
+  if (dirty || resized || drag) {
+    dirty = false;
+    $('step').textContent = poses ? poses.step : '-';
+    $('rate').textContent = rate.toFixed(1);
+    if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
+  }
+  if (tableDirty && now - tableAt > 200) { showTable(); tableDirty = false; tableAt = now; }
   requestAnimationFrame(frame);
 }
+const redraw = () => { dirty = true; };
+['trails', 'sonar', 'fit'].forEach((id) => $(id).addEventListener('click', redraw));
+$('robots').addEventListener('click', () => { dirty = tableDirty = true; });
+window.addEventListener('mousemove', (e) => { if (e.buttons) dirty = true; }); // (3D orbit)
+$('views').addEventListener('wheel', redraw);
+window.addEventListener('resize', redraw);
 // a link may say how to look: ?view=3d&sonar=1&trails=0&follow=NAME
 const wanted = new URLSearchParams(location.search);
 if (wanted.get('view') === '3d') { document.querySelector('input[name=view][value="3d"]').checked = true;
