@@ -23,8 +23,12 @@ import robosim.protocol.WorldSnapshot;
  */
 final class WebFeed implements ViewerClient.Listener {
     private static final Logger LOG = LoggerFactory.getLogger(WebFeed.class);
-    /** Updates a second the feed asks for: what a page draws, at most. */
-    static final int UPDATES_PER_SECOND = 30;
+    /**
+     * Updates a second the feed asks for: what a page draws, at most. A browser on the machine of the run
+     * competes with it: with 30 a page cost the paper benchmark about 0.4 of its speed on 2 cores, with 10
+     * a few per cent (web-viewer/README.md).
+     */
+    static final int UPDATES_PER_SECOND = 10;
 
     private final String host;
     private final int viewerPort;
