@@ -29,15 +29,15 @@ function handle(m) {
     case 'snapshot':
       world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); fitted = false;
       $('ended').textContent = '';
-      buildTable(); view3d.world(m); dirty = tableDirty = true;
+      buildTable(); view3d.world(m); dirty = tableDirty = true; wake();
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);
       break;
     case 'update':
       if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
       poses = m; gone = new Set(m.departed);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
-      count(m.step); dirty = tableDirty = true; break;
-    case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; dirty = true; break;
+      count(m.step); dirty = tableDirty = true; wake(); break;
+    case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; redraw(); break;
     case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; break;
     case 'reply': replied(m); break;
   }
@@ -171,7 +171,7 @@ window.addEventListener('mousemove', (e) => {
 $('fit').onclick = () => { follow = -1; fitted = false; view3d.fit(); };
 document.querySelectorAll('input[name=view]').forEach((r) => r.onchange = () => {
   const three = document.querySelector('input[name=view]:checked').value === '3d';
-  dirty = true;
+  redraw();
   canvas.classList.toggle('hidden', three); $('view3d').classList.toggle('hidden', !three);
 });
 $('pause').onclick = () => ask('pause');
@@ -180,23 +180,30 @@ $('stepOne').onclick = () => ask('step 1');
 $('timeline').onchange = () => ask('seek ' + $('timeline').value);
 $('speed').onchange = () => ask('speed ' + $('speed').value);
 
+// frames only on demand: a page with nothing new asks the browser for no frame at all
+let scheduled = false;
+function wake() {
+  if (!scheduled) { scheduled = true; requestAnimationFrame(frame); }
+}
 function frame(now) {
-  const resized = canvas.width !== canvas.clientWidth || canvas.height !== canvas.clientHeight;
-  if (dirty || resized || drag) {
+  scheduled = false;
+  if (dirty || drag) {
     dirty = false;
     $('step').textContent = poses ? poses.step : '-';
     $('rate').textContent = rate.toFixed(1);
     if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
   }
-  if (tableDirty && now - tableAt > 200) { showTable(); tableDirty = false; tableAt = now; }
-  requestAnimationFrame(frame);
+  if (tableDirty) {
+    if (now - tableAt > 200) { showTable(); tableDirty = false; tableAt = now; } else setTimeout(wake, 200 - (now - tableAt));
+  }
 }
-const redraw = () => { dirty = true; };
+const redraw = () => { dirty = true; wake(); };
 ['trails', 'sonar', 'fit'].forEach((id) => $(id).addEventListener('click', redraw));
-$('robots').addEventListener('click', () => { dirty = tableDirty = true; });
-window.addEventListener('mousemove', (e) => { if (e.buttons) dirty = true; }); // (3D orbit)
+$('robots').addEventListener('click', () => { dirty = tableDirty = true; wake(); });
+window.addEventListener('mousemove', (e) => { if (e.buttons) redraw(); }); // (2D pan, 3D orbit)
 $('views').addEventListener('wheel', redraw);
 window.addEventListener('resize', redraw);
+new ResizeObserver(redraw).observe($('views'));
 // a link may say how to look: ?view=3d&sonar=1&trails=0&follow=NAME
 const wanted = new URLSearchParams(location.search);
 if (wanted.get('view') === '3d') { document.querySelector('input[name=view][value="3d"]').checked = true;
@@ -206,4 +213,4 @@ if (wanted.get('trails') === '0') $('trails').checked = false;
 const followName = wanted.get('follow');
 setInterval(() => ask('status'), 1000);
 connect();
-requestAnimationFrame(frame);
+wake();
