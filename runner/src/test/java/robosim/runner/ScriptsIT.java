@@ -16,6 +16,8 @@ import javax.tools.JavaCompiler;
 import javax.tools.ToolProvider;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.MethodSource;
 
@@ -52,6 +54,7 @@ class ScriptsIT {
 
     @ParameterizedTest
     @MethodSource("scripts")
+    @Execution(ExecutionMode.CONCURRENT) // (each starts a short process; none writes anything)
     void helpPrintsUsageRunsNothingAndWritesNothing(Path script) throws Exception {
         String name = script.getFileName().toString();
         for (String help : List.of("--help", "-h")) {
@@ -66,6 +69,7 @@ class ScriptsIT {
 
     @ParameterizedTest
     @MethodSource("pureBashScripts")
+    @Execution(ExecutionMode.CONCURRENT)
     void anUnknownOptionIsOneLineAndExitTwo(Path script) throws Exception {
         String name = script.getFileName().toString();
         String before = gitStatus();
