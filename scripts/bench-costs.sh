@@ -42,7 +42,8 @@ for i in $(seq "$reps"); do
   if [ -n "$browser" ]; then
     wp=$(free_port); page=$(page_on "$wp")
     run record+web "" --record "$tmp/web-$i.rec" --web-port "$wp" "$@"; rw+=("$(cat "$tmp/last")")
-    kill "$page" 2>/dev/null || true; wait "$page" 2>/dev/null || true
+    kill "$page" 2>/dev/null || true
+    while kill -0 "$page" 2>/dev/null; do sleep 0.1; done   # (not a child of this shell: wait cannot)
   fi
   run plain-1proc "" --robots-in-one-process "$@"; po+=("$(cat "$tmp/last")")
   run tls-1proc "$tmp/keys" --robots-in-one-process "$@"; to+=("$(cat "$tmp/last")")

@@ -27,18 +27,23 @@ shot() { # FILE URL: the page after 4 s of its own time
     >/dev/null 2>&1
   echo "wrote $1"
 }
-web=$((14000 + RANDOM % 900))
+free_port() { local p; while :; do p=$((20000 + RANDOM % 20000))
+  (exec 3<>"/dev/tcp/127.0.0.1/$p") 2>/dev/null || { echo "$p"; return; }; done; }
+alive() { kill -0 "$1" 2>/dev/null || { tail -n 5 "$tmp/$3" >&2; robosim_fail "$2 stopped early (its last lines above)"; }; }
+web=$(free_port)
 scripts/headless.sh --env test-envs/maze.xml --steps 3000 --speed 8 --web-port "$web" --record "$tmp/maze.rec" \
-  >/dev/null 2>&1 &
+  >"$tmp/run.log" 2>&1 &
 run=$!
 sleep 12   # a script, not a test: let the robots drive a while so trails and sonar show
+alive "$run" "the run" run.log
 shot "$out/web-2d.png" "http://localhost:$web/?sonar=1"
 shot "$out/web-3d.png" "http://localhost:$web/?view=3d"
 kill "$run" 2>/dev/null || true; wait "$run" 2>/dev/null || true; run=""
-control=$((web + 1))
+web=$(free_port); control=$(free_port)
 scripts/replay.sh "$tmp/maze.rec" --viewer-port 0 --control-port "$control" --web-port "$web" --paused \
   >"$tmp/replay.log" 2>&1 &
 replay=$!
 sleep 5   # the replay is listening
+alive "$replay" "the replay" replay.log
 scripts/control-panel.sh localhost "$control" "seek 200" >/dev/null
 shot "$out/replay.png" "http://localhost:$web/?follow=w3"

@@ -67,7 +67,10 @@ final class PageSocket extends SimpleChannelInboundHandler<TextWebSocketFrame> {
             ctx.close();
             return;
         }
-        pending.add(frame.text().strip());
+        String line = frame.text().strip();
+        if (!(line.equals("status") && pending.contains(line))) { // (one status waiting is as good as many)
+            pending.add(line);
+        }
         next(ctx);
     }
 
@@ -89,14 +92,15 @@ final class PageSocket extends SimpleChannelInboundHandler<TextWebSocketFrame> {
         ExecutorService runner = verb.equals("status") ? statusThread : commandThread;
         try {
             runner.execute(() -> {
-                String answer;
+                String answer = error("failed");
                 try {
                     answer = commands.handle(verb, arg);
                 } catch (Exception e) {
                     answer = error(String.valueOf(e.getMessage()));
+                } finally { // (whatever happens, the page gets a reply and is read again)
+                    String a = answer;
+                    ctx.executor().execute(() -> reply(ctx, verb, a));
                 }
-                String a = answer;
-                ctx.executor().execute(() -> reply(ctx, verb, a));
             });
         } catch (RejectedExecutionException e) {
             reply(ctx, verb, error("busy; try again"));

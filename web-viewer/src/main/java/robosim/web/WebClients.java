@@ -5,7 +5,9 @@ import io.netty.channel.ChannelFutureListener;
 import io.netty.handler.codec.http.websocketx.TextWebSocketFrame;
 import io.netty.util.concurrent.EventExecutor;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.function.Consumer;
 
 /**
@@ -42,7 +44,7 @@ final class WebClients {
         if (snapshot != null) {
             send(page, snapshot);
             if (update != null) {
-                offer(page, update);
+                send(page, update);
             }
             if (state != null) {
                 send(page, state);
@@ -52,53 +54,67 @@ final class WebClients {
 
     /** Feed thread: a new world (a simulation, or the same one after a reconnection). */
     void snapshot(String json) {
-        io.execute(() -> {
+        onIo(() -> {
             snapshot = json;
             update = null;
             state = null;
-            pages.keySet().forEach(p -> {
-                pages.put(p, null); // (an update of the world before is no use)
+            for (Channel p : List.copyOf(pages.keySet())) { // (a failed write closes and removes a page)
+                pages.replace(p, null); // (an update of the world before is no use)
                 send(p, json);
-            });
+            }
         });
     }
 
     /** Feed thread: a step. */
     void update(String json) {
-        io.execute(() -> {
+        onIo(() -> {
             update = json;
-            pages.keySet().forEach(p -> offer(p, json));
+            for (Channel p : List.copyOf(pages.keySet())) {
+                offer(p, json);
+            }
         });
     }
 
     /** Feed thread: a run state or the end: every page gets it, after the update held for it. */
     void state(String json) {
-        io.execute(() -> {
+        onIo(() -> {
             state = json;
-            pages.keySet().forEach(p -> {
-                String held = pages.put(p, null);
+            for (Channel p : List.copyOf(pages.keySet())) {
+                String held = pages.replace(p, null);
                 if (held != null) {
                     send(p, held);
                 }
                 send(p, json);
-            });
+            }
         });
     }
 
     /** I/O thread: the page can take more; it gets the update held for it, if any. */
     void writable(Channel page) {
-        String held = pages.containsKey(page) ? pages.put(page, null) : null;
+        String held = pages.replace(page, null);
         if (held != null) {
             offer(page, held);
         }
     }
 
     private void offer(Channel page, String json) {
+        if (!pages.containsKey(page)) {
+            return; // (it has gone)
+        }
         if (page.isWritable()) {
-            pages.put(page, null);
+            pages.replace(page, null);
             send(page, json);
         } else {
-            pages.put(page, json); // (the newest replaces the one held)
+            pages.replace(page, json); // (the newest replaces the one held)
+        }
+    }
+
+    /** Hands {@code task} to the I/O thread; nothing, once the server is shutting down. */
+    private void onIo(Runnable task) {
+        try {
+            io.execute(task);
+        } catch (RejectedExecutionException e) {
+            // (closing: no page is served any more)
         }
     }
 

@@ -59,9 +59,10 @@ final class WebFeed implements ViewerClient.Listener {
 
     private void follow() {
         boolean told = false;
-        long waitMs = 1000;
+        long waitMs = 500; // (doubled before the first wait)
         try {
             while (closed.getCount() > 0) {
+                updates = 0;
                 try {
                     ViewerClient v = ViewerClient.connect(host, viewerPort, new ViewerHello(false, UPDATES_PER_SECOND),
                             5_000, keys);
@@ -71,7 +72,6 @@ final class WebFeed implements ViewerClient.Listener {
                         return;
                     }
                     told = false;
-                    updates = 0;
                     v.start(this);
                     v.awaitEnd();
                 } catch (IOException e) {
@@ -112,6 +112,9 @@ final class WebFeed implements ViewerClient.Listener {
 
     @Override
     public void lost(IOException cause) {
+        if (closed.getCount() == 0) {
+            return; // (closing: nobody to tell)
+        }
         clients.state(WebJson.end(new SimulationEnd(-1, "the viewer connection was lost: " + cause.getMessage())));
     }
 

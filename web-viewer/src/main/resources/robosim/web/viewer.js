@@ -17,11 +17,14 @@ function connect() {
   ws = new WebSocket(`ws://${location.host}/ws`);
   ws.onmessage = (e) => handle(JSON.parse(e.data));
   ws.onopen = () => { $('state').textContent = 'connected'; ask('status'); };
-  ws.onclose = () => { $('state').textContent = 'not connected'; setTimeout(connect, 1000); };
+  ws.onclose = () => { $('state').textContent = 'not connected'; statusAsked = false; setTimeout(connect, 1000); };
 }
 
+let statusAsked = false; // (a status is asked for only when the last one has been answered)
 function ask(request) {
-  if (ws && ws.readyState === WebSocket.OPEN) ws.send(request);
+  if (!ws || ws.readyState !== WebSocket.OPEN || (request === 'status' && statusAsked)) return;
+  if (request === 'status') statusAsked = true;
+  ws.send(request);
 }
 
 function handle(m) {
@@ -38,7 +41,7 @@ function handle(m) {
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
       count(m.step); dirty = tableDirty = true; wake(); break;
     case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; redraw(); break;
-    case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; break;
+    case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; rate = 0; redraw(); break;
     case 'reply': replied(m); break;
   }
 }
@@ -51,6 +54,7 @@ function count(step) {
 }
 
 function replied(m) {
+  if (m.request === 'status') statusAsked = false;
   if (m.request === 'status' && m.ok) {
     const replay = m.replay === true;
     $('replay').classList.toggle('hidden', !replay);
@@ -166,9 +170,9 @@ canvas.addEventListener('mousedown', (e) => { drag = [e.clientX, e.clientY]; });
 window.addEventListener('mouseup', () => { drag = null; });
 window.addEventListener('mousemove', (e) => {
   if (!drag) return;
-  offX += e.clientX - drag[0]; offY -= e.clientY - drag[1]; drag = [e.clientX, e.clientY]; follow = -1;
+  offX += e.clientX - drag[0]; offY -= e.clientY - drag[1]; drag = [e.clientX, e.clientY]; follow = -1; tableDirty = true;
 });
-$('fit').onclick = () => { follow = -1; fitted = false; view3d.fit(); };
+$('fit').onclick = () => { follow = -1; fitted = false; tableDirty = true; view3d.fit(); };
 document.querySelectorAll('input[name=view]').forEach((r) => r.onchange = () => {
   const three = document.querySelector('input[name=view]:checked').value === '3d';
   redraw();
@@ -187,7 +191,7 @@ function wake() {
 }
 function frame(now) {
   scheduled = false;
-  if (dirty || drag) {
+  if (dirty) {
     dirty = false;
     $('step').textContent = poses ? poses.step : '-';
     $('rate').textContent = rate.toFixed(1);
