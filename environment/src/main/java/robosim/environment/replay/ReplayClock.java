@@ -12,12 +12,10 @@ import robosim.protocol.SimulationEnd;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * The one owner of a replay's time, thread {@code replay-clock}: where the replay stands in the recording,
- * whether it runs, how fast, and what each viewer is handed. Everything else asks it through its inbox (a
- * viewer's join, a control request, a viewer's room) and it answers on its own thread, so nothing else
- * ever touches the position. Like the Environment's loop it publishes to each viewer's coalescing
- * {@link robosim.environment.net.ViewerQueue} and never waits on one; a recording viewer that is a whole
- * backlog behind holds the next step until it has room.
+ * The one owner of a replay's time, thread {@code replay-clock}: where it stands, whether it runs, how fast,
+ * what each viewer is handed. Others ask through its inbox (joins, control requests, a viewer's room); it
+ * answers on its thread. Like the Environment's loop it publishes to each viewer's coalescing queue and never
+ * waits on one; a recording viewer a whole backlog behind holds the next step until it has room.
  */
 public final class ReplayClock {
     private static final Logger LOG = LoggerFactory.getLogger(ReplayClock.class);
@@ -41,11 +39,7 @@ public final class ReplayClock {
     private CompletableFuture<String> stepping;
     private volatile long endedAt = -1;
 
-    /**
-     * @param exitAtEnd at the last step, send the end to every viewer and end (as the live run did); if
-     *     false, hold there so viewers can seek back, until stopped
-     * @param startPaused hold before the first step until resumed; if false, start when the first viewer joins
-     */
+    /** {@code exitAtEnd}: end after the last step (else hold there until stopped); {@code startPaused}: hold before the first. */
     public ReplayClock(RecordingReader recording, Viewers viewers, double speed, boolean exitAtEnd, boolean startPaused) {
         this.at = new RecordingCursor(recording);
         this.viewers = viewers;
@@ -70,8 +64,6 @@ public final class ReplayClock {
     public long endedAt() {
         return endedAt;
     }
-
-    // ---- asked from other threads ----------------------------------------------------------------------
 
     /** A viewer has said hello: it is added, and gets the world as the replay shows it now. */
     public CompletableFuture<WorldSnapshot> join(ViewerSink viewer) {
