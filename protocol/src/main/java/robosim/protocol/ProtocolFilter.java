@@ -15,7 +15,7 @@ public final class ProtocolFilter implements ObjectInputFilter {
     public static final Set<Class<?>> MESSAGE_CLASSES = Set.of(
             RobotHello.class, RobotWelcome.class, StepRequest.class, StepResponse.class,
             GeometryHello.class, GeometryWorld.class, GeometryStepRequest.class, GeometryStepResponse.class,
-            ViewerHello.class, WorldSnapshot.class, PoseUpdate.class, RunState.class, SimulationEnd.class,
+            ViewerHello.class, WorldSnapshot.class, PoseUpdate.class, RobotView.class, RunState.class, SimulationEnd.class,
             Challenge.class, Proof.class);
     /** Messages are flat: one object, its fields written inline. */
     public static final long MAX_DEPTH = 2;

@@ -18,13 +18,17 @@ import java.util.zip.CRC32;
  * stopped. One thread at a time.
  */
 public final class RecordingReader implements Closeable {
-    /** One robot's extras in a step: what it touched and tagged, the messages it got, its sensor readings. */
-    public record RobotExtras(int robot, String contact, String tagged, List<CommEvent> inbox,
-            List<SensorReading> readings) {
-    }
-
-    /** One recorded step. */
-    public record Step(PoseUpdate update, List<RobotExtras> extras) {
+    /** One recorded step: the viewers' update, and the view of each robot in it (world order). */
+    public record Step(PoseUpdate update, List<RobotView> views) {
+        /** Robot {@code robot}'s view of this step, or null if it was not in it. */
+        public RobotView view(int robot) {
+            for (RobotView v : views) {
+                if (v.robot() == robot) {
+                    return v;
+                }
+            }
+            return null;
+        }
     }
 
     private final Path file;
@@ -177,32 +181,15 @@ public final class RecordingReader implements Closeable {
                 throw new IOException(update.count() + " robots where the snapshot has " + snapshot.robotNames().size());
             }
             int n = count(o, update.count());
-            List<RobotExtras> extras = new ArrayList<>(n);
+            List<RobotView> views = new ArrayList<>(n);
             for (int k = 0; k < n; k++) {
-                int robot = o.readInt();
-                String contact = o.readUTF();
-                String tagged = o.readUTF();
-                if (robot < 0 || robot >= update.count()) {
-                    throw new IOException("extras for robot " + robot);
+                RobotView v = RobotView.readRecorded(o, update.step());
+                if (v.robot() >= update.count() || (k > 0 && v.robot() <= views.get(k - 1).robot())) {
+                    throw new IOException("a view of robot " + v.robot() + " out of order");
                 }
-                int m = count(o, frame.length);
-                List<CommEvent> inbox = new ArrayList<>(m);
-                for (int j = 0; j < m; j++) {
-                    inbox.add(new CommEvent(o.readUTF(), o.readUTF(), o.readUTF()));
-                }
-                int r = count(o, frame.length);
-                List<SensorReading> readings = new ArrayList<>(r);
-                for (int j = 0; j < r; j++) {
-                    String name = o.readUTF();
-                    double[] v = new double[count(o, frame.length / Double.BYTES)];
-                    for (int d = 0; d < v.length; d++) {
-                        v[d] = o.readDouble();
-                    }
-                    readings.add(new SensorReading(name, v));
-                }
-                extras.add(new RobotExtras(robot, contact, tagged, inbox, readings));
+                views.add(v);
             }
-            return new Step(update, extras);
+            return new Step(update, List.copyOf(views));
         } catch (IOException | RuntimeException e) {
             throw new IOException(file + ": step " + stepNumbers[i] + ": damaged: " + e);
         }

@@ -15,8 +15,8 @@ import java.util.zip.CRC32;
 
 /**
  * Writes a run's recording (format: {@link RecordingFormat}): the snapshot, one frame per step (the
- * viewers' {@link PoseUpdate} as it went out, and each robot's contact, tag, delivered messages and
- * sensor readings from its {@link StepResponse}), and the end. Every frame goes to the file whole, with
+ * viewers' {@link PoseUpdate} as it went out, and each robot's {@link RobotView}: its command, contact,
+ * tag, sensor readings, messages sent and delivered, notices), and the end. Every frame goes to the file whole, with
  * its length and checksum, before the next is begun, so a process killed at any moment leaves a file
  * readable up to its last complete frame. One thread.
  */
@@ -25,6 +25,7 @@ public final class RecordingWriter implements Closeable {
     private final ByteArrayOutputStream frame = new ByteArrayOutputStream(64 * 1024);
     private final CRC32 crc = new CRC32();
     private long steps;
+    private List<String> names = List.of();
 
     /** Creates {@code file} (it must not exist) and writes the file header. */
     public RecordingWriter(Path file) throws IOException {
@@ -36,22 +37,26 @@ public final class RecordingWriter implements Closeable {
 
     /** The world the run starts from (the first frame). */
     public void snapshot(WorldSnapshot snapshot) throws IOException {
+        names = snapshot.robotNames();
         write(RecordingFormat.SNAPSHOT, snapshot.step(), o -> o.writeObject(snapshot));
     }
 
-    /** One step: what the viewers got, and what each robot got beyond its pose and sonar. */
-    public void step(PoseUpdate update, StepResponse[] responses) throws IOException {
+    /**
+     * One step: what the viewers got, and each robot's view of it ({@link RobotView}: its command, and what
+     * it got beyond its pose and sonar); {@code requests[i]} and {@code responses[i]} are robot i's, both
+     * null for a robot not in the step.
+     */
+    public void step(PoseUpdate update, StepRequest[] requests, StepResponse[] responses) throws IOException {
         write(RecordingFormat.STEP, update.step(), o -> {
             update.writeExternal(o); // (its fields only: no class description in every frame)
             int n = 0;
             for (StepResponse r : responses) {
-                n += r != null && hasExtras(r) ? 1 : 0;
+                n += r != null ? 1 : 0;
             }
             o.writeInt(n);
             for (int i = 0; i < responses.length; i++) {
-                StepResponse r = responses[i];
-                if (r != null && hasExtras(r)) {
-                    writeExtras(o, i, r);
+                if (responses[i] != null) {
+                    RobotView.of(update.step(), i, names.get(i), requests[i], responses[i]).writeBody(o);
                 }
             }
         });
@@ -76,33 +81,6 @@ public final class RecordingWriter implements Closeable {
     @Override
     public void close() throws IOException {
         out.close();
-    }
-
-    private static boolean hasExtras(StepResponse r) {
-        return !r.contact().isEmpty() || !r.tagged().isEmpty() || !r.inbox().isEmpty() || !r.readings().isEmpty();
-    }
-
-    private static void writeExtras(ObjectOutputStream o, int robot, StepResponse r) throws IOException {
-        o.writeInt(robot);
-        o.writeUTF(r.contact());
-        o.writeUTF(r.tagged());
-        List<CommEvent> inbox = r.inbox();
-        o.writeInt(inbox.size());
-        for (CommEvent m : inbox) {
-            o.writeUTF(m.from());
-            o.writeUTF(m.to());
-            o.writeUTF(m.payload());
-        }
-        List<SensorReading> readings = r.readings();
-        o.writeInt(readings.size());
-        for (SensorReading s : readings) {
-            o.writeUTF(s.name());
-            double[] v = s.values();
-            o.writeInt(v.length);
-            for (double d : v) {
-                o.writeDouble(d);
-            }
-        }
     }
 
     private interface Body {

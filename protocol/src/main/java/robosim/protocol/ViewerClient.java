@@ -20,6 +20,10 @@ public final class ViewerClient implements Closeable {
 
         void update(PoseUpdate update);
 
+        /** The watched robot's view of the step of the update just before (a viewer that watches one). */
+        default void robotView(RobotView view) {
+        }
+
         /** The run started, was paused or resumed (and, first, what it is doing at connect time). */
         default void runState(RunState state) {
         }
@@ -100,6 +104,8 @@ public final class ViewerClient implements Closeable {
                 Externalizable m = connection.read(Externalizable.class);
                 if (m instanceof PoseUpdate u) {
                     listener.update(u);
+                } else if (m instanceof RobotView v) {
+                    listener.robotView(v);
                 } else if (m instanceof RunState s) {
                     listener.runState(s);
                 } else if (m instanceof SimulationEnd e) {

@@ -10,12 +10,14 @@ import java.io.ObjectOutput;
  * viewer ({@code everyStep}) gets every step's update in order; when it falls more than a bounded
  * number of updates behind, the simulation waits for it. A live viewer may also cap how many
  * updates a second it wants ({@code maxUpdatesPerSecond}, 0 = no cap): a window that draws 30
- * frames a second has no use for more.
+ * frames a second has no use for more. A viewer may watch one robot by name: it then gets that robot's
+ * {@link RobotView} after each update (the robot-specific viewer).
  */
 public final class ViewerHello implements java.io.Externalizable {
     private int protocolVersion = Protocol.VERSION;
     private boolean everyStep;
     private int maxUpdatesPerSecond;
+    private String watch = "";
 
     public ViewerHello() {
     }
@@ -30,6 +32,20 @@ public final class ViewerHello implements java.io.Externalizable {
         }
         this.everyStep = everyStep;
         this.maxUpdatesPerSecond = maxUpdatesPerSecond;
+    }
+
+    /** As above, watching the robot named {@code watch} ("" for none): a {@link RobotView} follows each update. */
+    public ViewerHello(boolean everyStep, int maxUpdatesPerSecond, String watch) {
+        this(everyStep, maxUpdatesPerSecond);
+        if (watch == null) {
+            throw new IllegalArgumentException("watch must not be null (\"\" for none)");
+        }
+        this.watch = watch;
+    }
+
+    /** The robot this viewer watches ("" for none). */
+    public String watch() {
+        return watch;
     }
 
     /** Updates per second a live viewer wants at most; 0 = as many as there are steps. */
@@ -50,6 +66,7 @@ public final class ViewerHello implements java.io.Externalizable {
         out.writeInt(protocolVersion);
         out.writeBoolean(everyStep);
         out.writeInt(maxUpdatesPerSecond);
+        out.writeUTF(watch);
     }
 
     @Override
@@ -60,5 +77,6 @@ public final class ViewerHello implements java.io.Externalizable {
         }
         everyStep = in.readBoolean();
         maxUpdatesPerSecond = Math.max(0, in.readInt());
+        watch = in.readUTF();
     }
 }

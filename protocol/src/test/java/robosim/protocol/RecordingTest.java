@@ -28,6 +28,12 @@ class RecordingTest {
                 new double[][] {{100 + k, 200}, {}}, List.of("a>b"), k > 5 ? List.of("b") : List.of());
     }
 
+    private static StepRequest[] requests(long k) {
+        StepRequest a = new StepRequest(k, 40, -5, true, List.of(new CommEvent("", "b", "hi " + k)),
+                List.of("laser"), k % 2 == 0);
+        return new StepRequest[] {a, null};
+    }
+
     private static StepResponse[] responses(long k) {
         StepResponse a = new StepResponse(k, 0, 0, k % 3 == 0 ? "arena" : "", k, 1, 0, new double[0],
                 List.of(new CommEvent("b", "a", "hello " + k)), List.of(),
@@ -44,7 +50,7 @@ class RecordingTest {
             w.flush();
             ends.add(Files.size(file));
             for (int k = 0; k < n; k++) {
-                w.step(update(k), responses(k));
+                w.step(update(k), requests(k), responses(k));
                 w.flush();
                 ends.add(Files.size(file));
             }
@@ -71,11 +77,19 @@ class RecordingTest {
                 assertEquals(want.xMm(1), s.update().xMm(1));
                 assertArrayEquals(want.sonarMm(0), s.update().sonarMm(0));
                 assertEquals(want.departed(), s.update().departed());
-                assertEquals(1, s.extras().size(), "only robot a had anything beyond its pose");
-                RecordingReader.RobotExtras e = s.extras().get(0);
+                assertEquals(1, s.views().size(), "robot b was not in the step");
+                assertNull(s.view(1));
+                RobotView e = s.view(0);
                 assertEquals(0, e.robot());
+                assertEquals(k, e.step());
+                assertEquals(k, e.sinceStep());
+                assertEquals(40, e.moveMm());
+                assertEquals(-5, e.turnDeg());
+                assertTrue(e.askedSonar());
+                assertEquals(k % 2 == 0, e.askedTag());
                 assertEquals(k % 3 == 0 ? "arena" : "", e.contact());
-                assertEquals(List.of(new CommEvent("b", "a", "hello " + k)), e.inbox());
+                assertEquals(List.of(new CommEvent("a", "b", "hi " + k)), e.sent(), "its outbox, from its name");
+                assertEquals(List.of(new CommEvent("b", "a", "hello " + k)), e.delivered());
                 assertEquals(List.of(new SensorReading("laser", new double[] {1.5, k})), e.readings());
             }
         }

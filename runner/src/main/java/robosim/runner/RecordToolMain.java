@@ -12,6 +12,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
 import robosim.protocol.CommEvent;
 import robosim.protocol.RecordingReader;
+import robosim.protocol.RobotView;
 
 /**
  * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
@@ -74,8 +75,8 @@ public final class RecordToolMain implements Callable<Integer> {
         out.write("step,from,to,text\n");
         for (int k = 0; k < r.steps(); k++) {
             RecordingReader.Step s = r.step(k);
-            for (RecordingReader.RobotExtras e : s.extras()) {
-                for (CommEvent m : e.inbox()) {
+            for (RobotView v : s.views()) {
+                for (CommEvent m : v.delivered()) {
                     out.write(s.update().step() + "," + csv(m.from()) + "," + csv(m.to()) + "," + csv(m.payload()) + "\n");
                 }
             }

@@ -28,7 +28,7 @@ import robosim.protocol.WorldSnapshot;
 /**
  * A whole simulation inside the test JVM but over real loopback sockets on ephemeral ports: the
  * Environment, a Geometry client (unless in-process), one Hardware Simulator thread per robot and a
- * recording viewer that keeps every step's poses.
+ * recording viewer that keeps every step's poses (and watches the first robot: its views too).
  */
 final class InJvmSimulation {
     final WorldSpec spec;
@@ -38,6 +38,7 @@ final class InJvmSimulation {
     volatile WorldSnapshot snapshot;
     final List<robosim.protocol.RunState> states = new java.util.concurrent.CopyOnWriteArrayList<>();
     robosim.protocol.SimulationEnd end;
+    final List<robosim.protocol.RobotView> views = new java.util.concurrent.CopyOnWriteArrayList<>();
     /** The last update each extra live viewer saw. */
     final List<PoseUpdate> liveLast = new ArrayList<>();
     RunSummary summary;
@@ -64,7 +65,6 @@ final class InJvmSimulation {
 
     /** The robots' exchange threading; SHARED runs every robot's exchange on one thread. */
     enum Exchange { ONE_THREAD, SEND_RECEIVE, SHARED }
-
     private Exchange exchange = Exchange.ONE_THREAD;
     private boolean stepMessages = true;
 
@@ -75,7 +75,6 @@ final class InJvmSimulation {
 
     /** The simulation's keys, for the Environment and every client (null: none, the default). */
     private SimulationKeys keys;
-
     InJvmSimulation keys(SimulationKeys k) {
         this.keys = k;
         return this;
@@ -139,8 +138,14 @@ final class InJvmSimulation {
         env.start();
         try {
             int[] ports = env.ports();
-            ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], new ViewerHello(true), 10_000, keys);
+            ViewerHello hello = new ViewerHello(true, 0, spec.robots().isEmpty() ? "" : spec.robots().get(0).name());
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], hello, 10_000, keys);
             viewer.start(new ViewerClient.Listener() {
+                @Override
+                public void robotView(robosim.protocol.RobotView view) {
+                    views.add(view);
+                }
+
                 @Override
                 public void snapshot(WorldSnapshot first) {
                     snapshot = first;

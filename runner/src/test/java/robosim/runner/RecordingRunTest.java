@@ -13,6 +13,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
+import robosim.protocol.RobotView;
 
 /**
  * {@code --record}: a run's recording holds, step for step, exactly what a recording viewer got (byte for
@@ -32,12 +33,15 @@ class RecordingRunTest {
                 assertArrayEquals(bytes(sim.updates.get(k)), bytes(r.step(k).update()), "step " + k);
             }
             long messages = 0;
+            long sent = 0;
             for (int k = 0; k < r.steps(); k++) {
-                for (RecordingReader.RobotExtras e : r.step(k).extras()) {
-                    messages += e.inbox().size();
+                for (RobotView v : r.step(k).views()) {
+                    messages += v.delivered().size();
+                    sent += v.sent().size();
                 }
             }
             assertTrue(messages > 0, "Chatter robots talk");
+            assertTrue(sent > 0, "and what they sent is recorded too");
             assertEquals(sim.summary.messagesDelivered(), messages, "every message delivered is recorded");
             assertEquals("completed 300 steps", r.end().reason());
             assertNull(r.cutShort());

@@ -16,6 +16,7 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.control.ControlClient;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
@@ -35,8 +36,9 @@ class ReplayTest {
         assertTrue(live.summary.completed(), live.summary.reason());
         try (ProcessLines replay = replay(file, "--speed", "100", "--exit-at-end")) {
             ViewerStream got = new ViewerStream();
-            ViewerClient viewer = ViewerClient.connect("127.0.0.1", port(replay, "viewers"), new ViewerHello(true),
-                    LONG_S * 1000, null);
+            String watched = live.spec.robots().get(0).name(); // (as the live run's recording viewer watched it)
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", port(replay, "viewers"),
+                    new ViewerHello(true, 0, watched), LONG_S * 1000, null);
             viewer.start(got);
             viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);
             assertEquals(0, replay.exit(LONG_S), replay.output());
@@ -47,6 +49,14 @@ class ReplayTest {
             for (int k = 0; k < updates.size(); k++) {
                 assertArrayEquals(RecordingRunTest.bytes(live.updates.get(k)), RecordingRunTest.bytes(updates.get(k)),
                         "update " + k);
+            }
+            List<RobotView> views = got.views();
+            assertEquals(live.views.size(), views.size(), "the watched robot's views");
+            for (int k = 0; k < views.size(); k++) {
+                assertArrayEquals(RecordingRunTest.bytes(live.views.get(k)), RecordingRunTest.bytes(views.get(k)),
+                        "view " + k);
+                assertTrue(got.messages.get(got.messages.indexOf(views.get(k)) - 1) == updates.get(k),
+                        "view " + k + " right after its update");
             }
             assertArrayEquals(RecordingRunTest.bytes(live.end), RecordingRunTest.bytes(got.end()), "end");
             assertTrue(got.messages.get(got.messages.size() - 1) == got.end(), "the end comes last");
@@ -75,6 +85,11 @@ class ReplayTest {
                     LONG_S * 1000, null);
             viewer.start(got);
             got.awaitSnapshot(LONG_S); // (it has joined: what the replay shows from now on reaches it)
+            ViewerClient stranger = ViewerClient.connect("127.0.0.1", port(replay, "viewers"),
+                    new ViewerHello(false, 0, "nobody"), LONG_S * 1000, null);
+            stranger.start(new ViewerStream());
+            assertEquals("it would watch \"nobody\", which is not a robot of this recording",
+                    stranger.awaitEnd(LONG_S, TimeUnit.SECONDS).reason());
             try (ControlClient control = new ControlClient("127.0.0.1", port(replay, "control"), null, (int) (LONG_S * 1000))) {
                 assertEquals("at step 2500", ok(control.request("seek 2500")).path("message").asText());
                 assertArrayEquals(RecordingRunTest.bytes(live.updates.get(2500)),

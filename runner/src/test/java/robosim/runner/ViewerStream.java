@@ -7,6 +7,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.ViewerClient;
@@ -25,6 +26,11 @@ final class ViewerStream implements ViewerClient.Listener {
     @Override
     public void update(PoseUpdate update) {
         got(update);
+    }
+
+    @Override
+    public void robotView(RobotView view) {
+        got(view);
     }
 
     @Override
@@ -93,6 +99,10 @@ final class ViewerStream implements ViewerClient.Listener {
 
     List<PoseUpdate> updates() {
         return only(PoseUpdate.class);
+    }
+
+    List<RobotView> views() {
+        return only(RobotView.class);
     }
 
     List<RunState> states() {

@@ -9,12 +9,13 @@ import org.slf4j.LoggerFactory;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingWriter;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
 
 /**
  * Records a run ({@code --record FILE}) on its own {@code recorder} thread: the loop hands it each step's
- * viewer update and responses (immutable, shared) through a queue of {@link #QUEUE} steps and goes on; the
+ * viewer update, requests and responses (immutable, shared) through a queue of {@link #QUEUE} steps and goes on; the
  * thread writes them ({@link RecordingWriter}) and hands the file to the operating system whenever it has
  * caught up, so a killed Environment leaves every step it wrote whole. Nothing is dropped: should the disk
  * fall a whole queue behind, the loop waits for it (said in the log). A write that fails stops the
@@ -25,7 +26,7 @@ final class RunRecorder {
     /** Steps the loop may be ahead of the disk. */
     static final int QUEUE = 4096;
 
-    private record Step(PoseUpdate update, StepResponse[] responses) {
+    private record Step(PoseUpdate update, StepRequest[] requests, StepResponse[] responses) {
     }
 
     private final Path file;
@@ -52,8 +53,8 @@ final class RunRecorder {
     }
 
     /** Loop thread: one released step. */
-    void step(PoseUpdate update, StepResponse[] responses) {
-        hand(new Step(update, responses));
+    void step(PoseUpdate update, StepRequest[] requests, StepResponse[] responses) {
+        hand(new Step(update, requests, responses));
     }
 
     /** Loop thread: the end; the thread finishes the file and ends. */
@@ -96,7 +97,7 @@ final class RunRecorder {
             while (true) {
                 Object item = queue.take();
                 if (item instanceof Step s) {
-                    writer.step(s.update(), s.responses());
+                    writer.step(s.update(), s.requests(), s.responses());
                 } else {
                     writer.end((SimulationEnd) item);
                     LOG.info("recording {}: {} steps written", file, writer.steps());

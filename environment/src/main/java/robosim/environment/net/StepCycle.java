@@ -9,6 +9,7 @@ import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotView;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -25,8 +26,12 @@ import robosim.protocol.RunState;
 final class StepCycle extends RunLifecycle {
     private static final Logger LOG = LoggerFactory.getLogger(StepCycle.class);
 
+    /** The requests of the step last computed, kept until the next: what each robot asked (its view). */
+    private StepRequest[] releasedRequests;
+
     StepCycle(ClientWorkerCoordinator coordinator, RunListener listener) {
         super(coordinator, listener);
+        releasedRequests = new StepRequest[requests.length];
     }
 
     /** Moves the run on as far as it can go now; called after every event and deadline check. */
@@ -116,6 +121,9 @@ final class StepCycle extends RunLifecycle {
             return;
         }
         geometry.resolved();
+        StepRequest[] done = inFlight;
+        inFlight = releasedRequests;
+        releasedRequests = done;
         Arrays.fill(inFlight, null);
         step++;
         record.stepsComputed = step;
@@ -193,7 +201,7 @@ final class StepCycle extends RunLifecycle {
         if (!viewers.isEmpty() || recording) {
             PoseUpdate update = core.viewerUpdate();
             if (!viewers.isEmpty()) {
-                viewers.publish(update);
+                viewers.publish(update, this::viewOf);
             }
             if (recording) {
                 recorded(update);
@@ -259,13 +267,25 @@ final class StepCycle extends RunLifecycle {
         }
     }
 
-    /** The step just released, to the recording: the viewers' update and the responses of those still here. */
+    /** The step just released, to the recording: the viewers' update, the requests and responses of those still here. */
     private void recorded(PoseUpdate update) {
+        StepRequest[] asked = new StepRequest[robots.length];
         StepResponse[] responses = new StepResponse[robots.length];
         for (int i = 0; i < robots.length; i++) {
-            responses[i] = core.present(i) && !leaving[i] ? core.response(i) : null;
+            if (core.present(i) && !leaving[i]) {
+                asked[i] = releasedRequests[i];
+                responses[i] = core.response(i);
+            }
         }
-        recorder.step(update, responses);
+        recorder.step(update, asked, responses);
+    }
+
+    /** Robot i's view of the step just released, for a viewer that watches it; null if it is not in it. */
+    private RobotView viewOf(int i) {
+        if (i >= robots.length || !core.present(i) || leaving[i]) {
+            return null;
+        }
+        return RobotView.of(step - 1, i, spec.robots().get(i).name(), releasedRequests[i], core.response(i));
     }
 
     /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */

@@ -46,18 +46,35 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "
                     + "speaks " + Protocol.VERSION + ")";
         }
+        int watched = refusal == null ? watched(hello.watch()) : -1;
+        if (refusal == null && watched == NO_SUCH_ROBOT) {
+            refusal = "it would watch \"" + Printable.of(hello.watch()) + "\", which is not a robot of this simulation";
+        }
         if (refusal != null) {
             logRefused(refusal);
             writes.send(new SimulationEnd(-1, refusal));
             return;
         }
-        queue = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        ViewerQueue q = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        q.watch(watched);
+        queue = q;
         CompletableFuture<WorldSnapshot> snapshot = new CompletableFuture<>();
         coordinator.post(new LoopEvent.ViewerJoins(this, snapshot),
                 () -> snapshot.completeExceptionally(new IOException("the simulation is over")));
         WorldSnapshot first = awaitVerdict(snapshot);
         handshakeDone();
         writes.serve(first, queue, () -> coordinator.post(new LoopEvent.ViewerHasRoom(this), () -> { }));
+    }
+
+    private static final int NO_SUCH_ROBOT = -2;
+
+    /** The index of the robot named {@code name}; -1 for none asked ("" ), {@link #NO_SUCH_ROBOT} if there is none by that name. */
+    private int watched(String name) {
+        if (name.isEmpty()) {
+            return -1;
+        }
+        int i = coordinator.spec().indexOf(name);
+        return i < 0 ? NO_SUCH_ROBOT : i;
     }
 
     /** Its queue, once it has said hello (the loop only sees joined viewers). */

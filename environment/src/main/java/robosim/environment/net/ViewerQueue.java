@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import java.util.ArrayDeque;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 
@@ -12,11 +13,19 @@ import robosim.protocol.SimulationEnd;
  * wait: it goes on with its events) until this queue signals room. A live viewer that asked for at most
  * n updates a second gets the newest at most every 1/n s. A change of run state is held the same way,
  * newest only; it goes out after the updates held before it, or ahead of one that waits for the rate cap.
+ * A viewer that watches a robot ({@link #watching}) gets that robot's {@link RobotView} right after each
+ * update; a live viewer's newest view carries the messages of the views it replaced.
  */
 public final class ViewerQueue {
     public static final int RECORDING_BACKLOG = 1024;
 
-    private final ArrayDeque<PoseUpdate> pending = new ArrayDeque<>();
+    /** An update and, for a viewer that watches a robot, its view of the step (else null). */
+    private record Item(PoseUpdate update, RobotView view) {
+    }
+
+    private final ArrayDeque<Item> pending = new ArrayDeque<>();
+    private int watching = -1;
+    private RobotView viewNext;
     private final boolean everyStep;
     private final long intervalNanos;
     private boolean capped;
@@ -33,6 +42,16 @@ public final class ViewerQueue {
         this.intervalNanos = everyStep || maxUpdatesPerSecond <= 0 ? 0 : 1_000_000_000L / maxUpdatesPerSecond;
     }
 
+    /** Publisher's thread, at the join: the robot (world order) this viewer watches; -1 (the default) for none. */
+    public synchronized void watch(int robot) {
+        watching = robot;
+    }
+
+    /** The robot this viewer watches, or -1. */
+    public synchronized int watching() {
+        return watching;
+    }
+
     /** Loop thread: true if one more update fits now; if not, the queue will signal room once it has some. */
     public synchronized boolean hasRoom() {
         if (closed || !everyStep || pending.size() < RECORDING_BACKLOG) {
@@ -43,14 +62,25 @@ public final class ViewerQueue {
     }
 
     /** Loop thread: the step's poses. Never blocks; the loop has checked {@link #hasRoom} first. */
-    public synchronized void offer(PoseUpdate update) {
+    public void offer(PoseUpdate update) {
+        offer(update, null);
+    }
+
+    /**
+     * Loop thread: the step's poses and the watched robot's view of the step (null if it watches none or
+     * the robot is not in the step). Never blocks; the loop has checked {@link #hasRoom} first.
+     */
+    public synchronized void offer(PoseUpdate update, RobotView view) {
         if (closed) {
             return;
         }
         if (!everyStep) {
-            pending.clear();
+            Item replaced = pending.pollFirst();
+            if (replaced != null && view != null) {
+                view = view.after(replaced.view());
+            }
         }
-        pending.addLast(update);
+        pending.addLast(new Item(update, view));
         if (waitingForData) {
             notifyAll();
         }
@@ -73,6 +103,7 @@ public final class ViewerQueue {
     public synchronized void close() {
         closed = true;
         pending.clear();
+        viewNext = null;
         notifyAll();
     }
 
@@ -85,9 +116,15 @@ public final class ViewerQueue {
 
     /**
      * Worker thread: the next thing to send - an update (at most one per interval for a capped live
-     * viewer), a run state, or the end ({@link SimulationEnd}, the last).
+     * viewer) and the watched robot's view right after it, a run state, or the end ({@link SimulationEnd},
+     * the last).
      */
     public synchronized Object take() throws InterruptedException {
+        if (viewNext != null) { // (the view goes right after its update, whatever the cap)
+            RobotView v = viewNext;
+            viewNext = null;
+            return v;
+        }
         while (true) {
             if (pending.isEmpty() && end != null) {
                 return end;
@@ -107,12 +144,13 @@ public final class ViewerQueue {
                     capped = true;
                     nextAllowed = System.nanoTime() + intervalNanos;
                 }
-                PoseUpdate next = pending.pollFirst();
+                Item next = pending.pollFirst();
+                viewNext = next.view();
                 if (roomWanted && pending.size() < RECORDING_BACKLOG) {
                     roomWanted = false;
                     roomSignal = true;
                 }
-                return next;
+                return next.update();
             }
             waitingForData = true;
             try {

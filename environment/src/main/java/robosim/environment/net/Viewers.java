@@ -5,7 +5,9 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import java.util.function.IntFunction;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 
@@ -63,9 +65,12 @@ public final class Viewers {
         return true;
     }
 
-    public void publish(PoseUpdate update) {
+    /** The step's poses to every viewer, and to one that watches robot i also {@code viewOf.apply(i)}. */
+    public void publish(PoseUpdate update, IntFunction<RobotView> viewOf) {
         for (ViewerSink v : viewers) {
-            v.queue().offer(update);
+            ViewerQueue q = v.queue();
+            int watched = q.watching();
+            q.offer(update, watched < 0 ? null : viewOf.apply(watched));
         }
     }
 

@@ -5,6 +5,7 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
+import robosim.protocol.RobotView;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.WorldSnapshot;
 
@@ -18,7 +19,7 @@ final class RecordingCursor {
     private final RecordingReader recording;
     private int steps;
     private int index = -1;
-    private PoseUpdate shown;
+    private RecordingReader.Step shown;
 
     RecordingCursor(RecordingReader recording) {
         this.recording = recording;
@@ -28,14 +29,19 @@ final class RecordingCursor {
     /** Moves to the i-th recorded step; its update, or null if it cannot be read (the replay then ends before it). */
     PoseUpdate show(int i) {
         try {
-            shown = recording.step(i).update();
+            shown = recording.step(i);
             index = i;
-            return shown;
+            return shown.update();
         } catch (IOException e) {
             LOG.error("the recording cannot be read on: {}", e.getMessage());
             steps = i;
             return null;
         }
+    }
+
+    /** Robot {@code robot}'s view of the step shown; null before the first or if it was not in that step. */
+    RobotView view(int robot) {
+        return shown == null ? null : shown.view(robot);
     }
 
     int index() {
@@ -99,6 +105,6 @@ final class RecordingCursor {
     WorldSnapshot snapshot() {
         WorldSnapshot s = recording.snapshot();
         return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
-                s.robots(), shown);
+                s.robots(), shown.update());
     }
 }

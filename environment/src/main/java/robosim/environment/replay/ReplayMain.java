@@ -111,7 +111,8 @@ public final class ReplayMain implements Callable<Integer> {
         ControlServer control = null;
         WebViewerServer web = null;
         try {
-            port = new ReplayPort(bindAddress, viewerPort, clock, keys, maxConnections, handshakeTimeoutMs, resetEvery);
+            port = new ReplayPort(bindAddress, viewerPort, clock, recording.snapshot().robotNames(), keys,
+                    maxConnections, handshakeTimeoutMs, resetEvery);
             if (controlPort >= 0) {
                 control = new ControlServer(new ReplayCommands(clock, file), keys);
                 control.start(bindAddress, controlPort);

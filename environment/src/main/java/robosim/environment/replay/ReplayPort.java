@@ -9,6 +9,7 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
+import java.util.List;
 import java.util.concurrent.Future;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
@@ -39,12 +40,14 @@ final class ReplayPort implements Closeable {
         t.setDaemon(true);
         return t;
     });
+    /** The recorded robots' names, world order: what a viewer may watch. */
+    private final List<String> robots;
     private long lastRefusalLog;
     private int serial;
 
     /** Binds {@code port} on {@code bind}; a port in use is a {@link BindException} naming it. */
-    ReplayPort(InetAddress bind, int port, ReplayClock clock, SimulationKeys keys, int maxConnections, int handshakeMs,
-            int resetEvery) throws IOException {
+    ReplayPort(InetAddress bind, int port, ReplayClock clock, List<String> robots, SimulationKeys keys,
+            int maxConnections, int handshakeMs, int resetEvery) throws IOException {
         ServerSocketChannel channel = ServerSocketChannel.open();
         channel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
         try {
@@ -55,6 +58,7 @@ final class ReplayPort implements Closeable {
         }
         this.server = channel.socket();
         this.clock = clock;
+        this.robots = List.copyOf(robots);
         this.keys = keys;
         this.maxConnections = maxConnections;
         this.handshakeMs = handshakeMs;
@@ -98,7 +102,7 @@ final class ReplayPort implements Closeable {
             }
             Future<?> deadline = null;
             try {
-                ReplayViewer v = new ReplayViewer(s, ++serial, clock, keys, resetEvery, open::decrementAndGet);
+                ReplayViewer v = new ReplayViewer(s, ++serial, clock, robots, keys, resetEvery, open::decrementAndGet);
                 deadline = handshakeMs <= 0 ? null
                         : deadlines.schedule(v::handshakeExpired, handshakeMs, TimeUnit.MILLISECONDS);
                 v.deadline(deadline);

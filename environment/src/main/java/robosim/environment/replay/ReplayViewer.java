@@ -3,6 +3,7 @@ package robosim.environment.replay;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.Socket;
+import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.Future;
@@ -55,9 +56,12 @@ final class ReplayViewer implements ViewerSink, Runnable {
     private volatile ViewerQueue queue;
     private volatile ViewerWrites writes;
     private volatile boolean joined;
+    private final List<String> robots;
 
-    ReplayViewer(Socket socket, int serial, ReplayClock clock, SimulationKeys keys, int resetEvery, Runnable release) {
+    ReplayViewer(Socket socket, int serial, ReplayClock clock, List<String> robots, SimulationKeys keys, int resetEvery,
+            Runnable release) {
         this.socket = socket;
+        this.robots = robots;
         this.name = "replay-viewer[" + serial + "]";
         this.clock = clock;
         this.keys = keys;
@@ -128,13 +132,19 @@ final class ReplayViewer implements ViewerSink, Runnable {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (this replay speaks "
                     + Protocol.VERSION + ")";
         }
+        int watched = hello.watch().isEmpty() ? -1 : robots.indexOf(hello.watch());
+        if (refusal == null && watched < 0 && !hello.watch().isEmpty()) {
+            refusal = "it would watch \"" + Printable.of(hello.watch()) + "\", which is not a robot of this recording";
+        }
         if (refusal != null) {
             LOG.warn("{} refused: {}", name, Printable.of(refusal));
             writes.send(new SimulationEnd(-1, refusal));
             return;
         }
         connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
-        queue = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        ViewerQueue q = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        q.watch(watched);
+        queue = q;
         WorldSnapshot first;
         try {
             joined = true;
