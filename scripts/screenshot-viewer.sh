@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Makes viewer.png: a real Viewer2D window under Xvfb, watching test-envs/test.xml with sonar
-# cones on. Needs Debian's xvfb (installed here if missing and we are root).
+# cones on; and robot-viewer.png beside it: the robot-specific window (viewer2d.sh --watch f1) on
+# test-envs/sensors.xml. Needs Debian's xvfb (installed here if missing and we are root).
 #   scripts/screenshot-viewer.sh [--write-docs | --out DIR | OUT.png] [--classpath PATH[:PATH...]] [--help]
 # Writes viewer.png into a fresh temporary directory (its path is printed), into DIR with --out DIR,
-# to OUT.png, or to docs/viewer.png (which README.md shows) with --write-docs.
+# to OUT.png, or to docs/viewer.png (which README.md shows) with --write-docs; robot-viewer.png goes
+# into the same directory.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_script_args docs "$@"
@@ -38,3 +40,16 @@ sleep 12   # a script, not a test: let the robots drive a while so trails and so
 mkdir -p "$(dirname "$out")"
 DISPLAY=$display java -cp "$cp" robosim.viewer.ScreenCapture "$out"
 echo "wrote $out"
+kill "$viewer" "$run" 2>/dev/null || true
+wait "$viewer" "$run" 2>/dev/null || true
+ports=$((ports + 100))
+scripts/headless.sh --env test-envs/sensors.xml --steps 3000 --speed 2 \
+  --ports $((ports + 2000)),$ports,$((ports + 4000)) >/dev/null 2>&1 &
+run=$!
+sleep 3
+DISPLAY=$display java -cp "$cp" robosim.viewer.Viewer2DMain 127.0.0.1 "$ports" --watch f1 >/dev/null 2>&1 &
+viewer=$!
+sleep 10
+robot_out="$(dirname "$out")/robot-viewer.png"
+DISPLAY=$display java -cp "$cp" robosim.viewer.ScreenCapture "$robot_out"
+echo "wrote $robot_out"

@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.ViewerClient;
@@ -118,6 +119,11 @@ public final class RunFollower {
         @Override
         public void update(PoseUpdate update) {
             feed.update(update);
+        }
+
+        @Override
+        public void robotView(RobotView view) {
+            feed.robotView(view);
         }
 
         @Override

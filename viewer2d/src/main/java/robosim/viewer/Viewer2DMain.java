@@ -29,6 +29,11 @@ public final class Viewer2DMain implements Callable<Integer> {
     @Option(names = "--no-trails", description = "Do not draw trails at first (key t toggles).")
     boolean noTrails;
 
+    @Option(names = "--watch", paramLabel = "ROBOT",
+            description = "Open only this robot's window (the robot-specific viewer: its sensors, command and "
+                    + "messages); in the world window a click on a robot opens its window too.")
+    String watch;
+
     @Option(names = "--fps", defaultValue = "30", description = "Frames per second (default: ${DEFAULT-VALUE}).")
     int fps;
 
@@ -60,6 +65,16 @@ public final class Viewer2DMain implements Callable<Integer> {
             System.err.println("viewer2d: --next-run-wait-s must be >= 0, got " + nextRunWaitS);
             return 2;
         }
+        if (watch != null) {
+            try {
+                RobotWatch.open(host, port, watch, fps, connectTimeoutS * 1000L, nextRunWaitS * 1000L, true);
+            } catch (IOException e) {
+                System.err.println("viewer2d: " + e.getMessage());
+                return 1;
+            }
+            windowOpen = true;
+            return 0;
+        }
         SceneFeed feed = new SceneFeed(1_000_000_000L / fps);
         ViewerHello hello = new ViewerHello(false, fps);
         ViewerClient client;
@@ -71,7 +86,7 @@ public final class Viewer2DMain implements Callable<Integer> {
         }
         new RunFollower(host, port, hello, feed, FIRST_RETRY_MS, MAX_RETRY_MS, nextRunWaitS * 1000L).start(client);
         ViewerWindow.open("RoboSim - " + host + ":" + port, feed, new SceneRenderer.Options(true, !noTrails, sonar),
-                fps);
+                fps, robot -> RobotWatch.openLater(host, port, robot, fps, nextRunWaitS * 1000L));
         windowOpen = true;
         return 0;
     }

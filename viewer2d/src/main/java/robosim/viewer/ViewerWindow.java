@@ -18,9 +18,11 @@ final class ViewerWindow {
     private final JLabel status = new JLabel("connecting ...");
     private Scene shown;
 
-    private ViewerWindow(String title, SceneFeed feed, SceneRenderer.Options options, int fps) {
+    private ViewerWindow(String title, SceneFeed feed, SceneRenderer.Options options, int fps,
+            java.util.function.Consumer<String> robotClicked) {
         frame = new JFrame(title);
         panel = new WorldPanel(options);
+        panel.onRobotClicked(robotClicked);
         status.setBorder(BorderFactory.createEmptyBorder(3, 8, 3, 8));
         frame.setLayout(new BorderLayout());
         frame.add(panel, BorderLayout.CENTER);
@@ -32,10 +34,11 @@ final class ViewerWindow {
         timer.start();
     }
 
-    /** Opens the window on the Swing thread. */
-    static void open(String title, SceneFeed feed, SceneRenderer.Options options, int fps) {
+    /** Opens the window on the Swing thread; {@code robotClicked} gets the name of a robot clicked on. */
+    static void open(String title, SceneFeed feed, SceneRenderer.Options options, int fps,
+            java.util.function.Consumer<String> robotClicked) {
         SwingUtilities.invokeLater(() -> {
-            ViewerWindow w = new ViewerWindow(title, feed, options, fps);
+            ViewerWindow w = new ViewerWindow(title, feed, options, fps, robotClicked);
             w.frame.setVisible(true);
             w.panel.requestFocusInWindow();
         });

@@ -12,7 +12,7 @@ import javax.swing.JPanel;
 
 /**
  * The drawing area: shows the current {@link Scene} through a {@link ViewTransform}. Mouse: wheel
- * zooms at the cursor, drag pans, double-click fits. Keys: f fit, + and - zoom, arrows pan,
+ * zooms at the cursor, drag pans, double-click fits, a click on a robot opens its robot window. Keys: f fit, + and - zoom, arrows pan,
  * t trails, s sonar, n names. Swing thread only.
  */
 final class WorldPanel extends JPanel {
@@ -22,6 +22,7 @@ final class WorldPanel extends JPanel {
     private transient Scene scene;
     private transient SceneRenderer.Options options;
     private boolean autoFit = true;
+    private transient java.util.function.Consumer<String> robotClicked = name -> { };
     private int dragX;
     private int dragY;
 
@@ -50,6 +51,11 @@ final class WorldPanel extends JPanel {
             public void mouseClicked(MouseEvent e) {
                 if (e.getClickCount() == 2) {
                     fit();
+                } else if (e.getClickCount() == 1) {
+                    String robot = robotAt(e.getX(), e.getY());
+                    if (robot != null) {
+                        robotClicked.accept(robot);
+                    }
                 }
             }
 
@@ -69,6 +75,27 @@ final class WorldPanel extends JPanel {
                 key(e);
             }
         });
+    }
+
+    /** What a click on a robot does (given its name): the viewer opens that robot's window. */
+    void onRobotClicked(java.util.function.Consumer<String> action) {
+        robotClicked = action;
+    }
+
+    /** The robot drawn at this pixel (within its disc, or 6 px of its centre when it is drawn smaller), or null. */
+    private String robotAt(int px, int py) {
+        if (scene == null) {
+            return null;
+        }
+        for (int i = 0; i < scene.robotCount() && i < scene.poses().count(); i++) {
+            double dx = transform.toScreenX(scene.poses().xMm(i)) - px;
+            double dy = transform.toScreenY(scene.poses().yMm(i)) - py;
+            double r = Math.max(6, scene.robots().get(i).radiusMm() * transform.scale());
+            if (dx * dx + dy * dy <= r * r) {
+                return scene.names().get(i);
+            }
+        }
+        return null;
     }
 
     private void key(KeyEvent e) {

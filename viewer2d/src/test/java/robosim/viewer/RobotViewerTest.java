@@ -1,0 +1,129 @@
+package robosim.viewer;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.awt.Graphics2D;
+import java.awt.image.BufferedImage;
+import java.util.Arrays;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.protocol.Arena;
+import robosim.protocol.CommEvent;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotView;
+import robosim.protocol.SensorReading;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+import robosim.protocol.WorldSnapshot;
+
+/** The robot-specific viewer: its feed's log of messages and notices, and its drawing, off-screen. */
+class RobotViewerTest {
+    private static final Arena ARENA = new Arena(0, 0, 10_000, 5_000);
+
+    private static RobotView view(long step, double[] laser, double[] bump, List<CommEvent> sent,
+            List<CommEvent> delivered, List<String> notices) {
+        StepRequest q = new StepRequest(step, 250, 0, true, sent, List.of("laser", "bump"));
+        StepResponse r = new StepResponse(step, 250, 0, "", 0, 0, 0, new double[0], delivered, notices,
+                List.of(new SensorReading("laser", laser), new SensorReading("bump", bump)));
+        return RobotView.of(step, 0, "a", q, r);
+    }
+
+    private static double[] filled(int n, double v) {
+        double[] a = new double[n];
+        Arrays.fill(a, v);
+        return a;
+    }
+
+    @Test
+    void theFeedLogsWhatTheRobotSentAndGotAndSaysWhatItSkipped() {
+        RobotFeed feed = new RobotFeed("a", 0);
+        feed.snapshot(new WorldSnapshot(500, ARENA, List.of(), List.of("a", "b"),
+                List.of(RobotModels.SCOUT, RobotModels.SCOUT), new PoseUpdate(-1, new double[2], new double[2], new double[2])));
+        assertNull(feed.view());
+        RobotView first = view(3, filled(181, 2000), new double[4], List.of(new CommEvent("", "b", "ping\u0007")),
+                List.of(new CommEvent("b", "a", "pong")), List.of("b is out of range"));
+        RobotView merged = view(9, filled(181, 2000), new double[4], List.of(), List.of(), List.of()).after(first);
+        feed.robotView(merged);
+        assertEquals(merged, feed.view());
+        List<String> log = feed.log();
+        assertEquals(List.of("-- watching a in a run of 2 robots", "steps 3-9  out  to b: ping?",
+                "steps 3-9  in   from b: pong", "steps 3-9  notice: b is out of range"), log);
+        for (int k = 0; k < RobotFeed.LOG_LINES + 10; k++) {
+            feed.robotView(view(10 + k, filled(181, 2000), new double[4], List.of(new CommEvent("", "b", "" + k)),
+                    List.of(), List.of()));
+        }
+        assertEquals(RobotFeed.LOG_LINES, feed.log().size(), "the newest lines, bounded");
+        assertEquals("step " + (10 + RobotFeed.LOG_LINES + 9) + "  out  to b: " + (RobotFeed.LOG_LINES + 9),
+                feed.log().get(RobotFeed.LOG_LINES - 1));
+        assertEquals(RobotFeed.MAX_TEXT + 3, RobotFeed.clean("x".repeat(5000)).length(), "network text is cut");
+    }
+
+    @Test
+    void theRobotIsDrawnAsItSensesTheWorld() {
+        double[][] sonar = {filled(16, 3000), {}};
+        PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
+                new double[] {30, 90}, sonar);
+        Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(RobotModels.SCOUT, RobotModels.SCOUT),
+                poses, new double[][] {{}, {}}, 0, RunStatus.of(RunStatus.Kind.RUNNING));
+        int w = 900;
+        int h = 500;
+        BufferedImage bumped = draw(scene, view(41, filled(181, 2000), new double[] {1, 0, 0, 0}, List.of(),
+                List.of(), List.of()), w, h);
+        double scale = (h / 2.0 - 12) / (5000 + 190); // the plot fills the height; its reach: a sonar's
+        int cx = h / 2;
+        int cy = h / 2;
+        assertEquals(SceneRenderer.robotColor(0).getRGB() & 0xFFFFFF, bumped.getRGB(cx + 3, cy + 3) & 0xFFFFFF,
+                "the robot at the centre");
+        assertTrue(reddish(bumped, cx, (int) Math.round(cy - 2000 * scale)), "the laser's middle beam, ahead");
+        double a = Math.toRadians(22.5);
+        int sx = (int) Math.round(cx - Math.sin(a) * 1500 * scale);
+        int sy = (int) Math.round(cy - Math.cos(a) * 1500 * scale);
+        int inCone = bumped.getRGB(sx, sy) & 0xFFFFFF;
+        assertTrue((inCone & 0xFF) > ((inCone >> 16) & 0xFF), "inside sonar 1's cone, 22.5 deg left: blue, got "
+                + Integer.toHexString(inCone));
+        int bx = (int) Math.round(cx - Math.sin(a) * 4500 * scale);
+        int by = (int) Math.round(cy - Math.cos(a) * 4500 * scale);
+        assertEquals(0xF7F8FA, bumped.getRGB(bx, by) & 0xFFFFFF, "beyond its 3 m range: nothing");
+        assertTrue(laserRed(bumped, h + 16, w), "the front bump lit");
+        BufferedImage clear = draw(scene, view(41, filled(181, 2000), new double[4], List.of(), List.of(),
+                List.of()), w, h);
+        assertFalse(laserRed(clear, h + 16, w), "no bump: nothing lit");
+    }
+
+    private static BufferedImage draw(Scene s, RobotView v, int w, int h) {
+        BufferedImage img = new BufferedImage(w, h, BufferedImage.TYPE_INT_RGB);
+        Graphics2D g = img.createGraphics();
+        RobotRenderer.render(g, s, 0, v, w, h);
+        g.dispose();
+        return img;
+    }
+
+    /** A pixel within 2 of (x, y) that is mostly red. */
+    private static boolean reddish(BufferedImage img, int x, int y) {
+        for (int dy = -2; dy <= 2; dy++) {
+            for (int dx = -2; dx <= 2; dx++) {
+                int p = img.getRGB(x + dx, y + dy);
+                if (((p >> 16) & 0xFF) > ((p >> 8) & 0xFF) + 80) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+
+    /** Any pixel right of {@code from} in the laser/bump red exactly. */
+    private static boolean laserRed(BufferedImage img, int from, int w) {
+        for (int y = 0; y < img.getHeight(); y++) {
+            for (int x = from; x < w; x++) {
+                if ((img.getRGB(x, y) & 0xFFFFFF) == 0xD62728) {
+                    return true;
+                }
+            }
+        }
+        return false;
+    }
+}
