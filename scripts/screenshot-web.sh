@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Makes web-2d.png and web-3d.png: the browser viewer (--web-port) in Debian's headless chromium, watching
-# test-envs/maze.xml (sonar rays on in 2D), and replay.png: the page on a replay of that run, paused at a
-# step with its timeline. Needs chromium (installed here if missing and we are root).
+# test-envs/maze.xml (sonar rays on in 2D), replay.png: the page on a replay of that run, paused at a
+# step with its timeline, and web-robot.png: the page's robot panel watching f1 on test-envs/sensors.xml.
+# Needs chromium (installed here if missing and we are root).
 #   scripts/screenshot-web.sh [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # Writes into a fresh temporary directory (its path is printed), into DIR with --out DIR, or into docs/
 # (which docs/VIEWERS.md shows) with --write-docs.
@@ -47,3 +48,10 @@ sleep 5   # the replay is listening
 alive "$replay" "the replay" replay.log
 scripts/control-panel.sh localhost "$control" "seek 200" >/dev/null
 shot "$out/replay.png" "http://localhost:$web/?follow=w3"
+kill "$replay" 2>/dev/null || true; wait "$replay" 2>/dev/null || true; replay=""
+web=$(free_port)
+scripts/headless.sh --env test-envs/sensors.xml --steps 3000 --speed 2 --web-port "$web" >"$tmp/sensors.log" 2>&1 &
+run=$!
+sleep 12   # the followers have found their leader
+alive "$run" "the sensors run" sensors.log
+shot "$out/web-robot.png" "http://localhost:$web/?watch=f1&follow=f1"

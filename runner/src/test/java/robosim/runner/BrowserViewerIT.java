@@ -45,7 +45,7 @@ class BrowserViewerIT {
                 "needs Debian's chromium and chromium-driver (.ci/run installs them)");
         Map<Long, PoseUpdate> seen = new ConcurrentHashMap<>();
         CountDownLatch pageHasTheWorld = new CountDownLatch(1);
-        Object[] shown = new Object[3]; // the paused step, the table's rows, the pixels at each robot
+        Object[] shown = new Object[4]; // the paused step, the table's rows, the pixels at each robot, the robot panel
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"));
         sim.settings(s -> s.speed(40)) // (80 steps a second: a page can watch it go)
                 .onUpdate((u, port) -> seen.put(u.step(), u))
@@ -55,7 +55,8 @@ class BrowserViewerIT {
                         web.start(0);
                         WebDriver page = browser();
                         try {
-                            page.get("http://localhost:" + web.port() + "/");
+                            String watched = sim.spec.robots().get(0).name();
+                            page.get("http://localhost:" + web.port() + "/?watch=" + watched);
                             WebDriverWait wait = new WebDriverWait(page, Duration.ofSeconds(LONG_S));
                             wait.until(p -> p.findElements(By.cssSelector("#robots tbody tr")).size() == 10);
                             pageHasTheWorld.countDown(); // the robots start now
@@ -70,6 +71,15 @@ class BrowserViewerIT {
                             shown[1] = page.findElements(By.cssSelector("#robots tbody tr")).stream()
                                     .map(r -> r.getText()).toList();
                             shown[2] = robotPixels(page, wait.until(p -> sim.snapshot), expected);
+                            String command = "command (step " + last + "): move ";
+                            shown[3] = wait.until(p -> { // (the robot panel: the watched robot's last step)
+                                String facts = p.findElement(By.id("facts")).getText();
+                                return facts.contains(command) ? facts : null;
+                            });
+                            String log = page.findElement(By.id("log")).getText();
+                            assertTrue(log.replaceAll("\\s+", " ").contains(" in from "),
+                                    "its inbox in the panel's log: " + log);
+                            assertTrue(polarCentreIsTheRobot(page), "the polar plot has the robot at its centre");
                             page.findElement(By.cssSelector("input[name=view][value='3d']")).click();
                             long blue = wait.until(p -> {
                                 long n = bluePixels3d(p);
@@ -101,6 +111,21 @@ class BrowserViewerIT {
         for (int i = 0; i < drawn.size(); i++) {
             assertTrue(drawn.get(i), "robot " + i + " is drawn where the run put it at step " + step);
         }
+        robosim.protocol.RobotView v = sim.views.get((int) step); // (robot 0's, as the run's own viewer got it)
+        String facts = (String) shown[3];
+        assertTrue(facts.startsWith(sim.spec.robots().get(0).name() + " ("), facts);
+        assertTrue(facts.contains(String.format(java.util.Locale.ROOT, "command (step %d): move %.1f mm, turn %.1f deg",
+                step, v.moveMm(), v.turnDeg())), "the panel shows the robot's own command: " + facts);
+    }
+
+    /** The pixel at the centre of the robot panel's polar plot is the page's robot blue. */
+    private static boolean polarCentreIsTheRobot(WebDriver page) {
+        @SuppressWarnings("unchecked")
+        List<Number> rgb = (List<Number>) ((JavascriptExecutor) page).executeScript(
+                "const c = document.getElementById('polar'); const x = Math.floor(c.width / 2) + 1;"
+                        + "return Array.from(c.getContext('2d').getImageData(x, x + 1, 1, 1).data.slice(0, 3));");
+        return Math.abs(rgb.get(0).intValue() - 0x2a) <= 12 && Math.abs(rgb.get(1).intValue() - 0x62) <= 12
+                && Math.abs(rgb.get(2).intValue() - 0xc9) <= 12;
     }
 
     private static WebDriver browser() {

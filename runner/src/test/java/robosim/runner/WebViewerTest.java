@@ -60,13 +60,19 @@ class WebViewerTest {
                                 try {
                                     JsonNode m = JSON.readTree(part.toString());
                                     got.add(m);
-                                    pageHasTheWorld.countDown();
+                                    if (m.path("type").asText().equals("snapshot")) { // (the robot panel)
+                                        ws.sendText("watch nobody", true);
+                                        ws.sendText("watch " + m.path("robots").get(0).path("name").asText(), true);
+                                    }
+                                    if (m.path("type").asText().equals("watchStarted")) {
+                                        pageHasTheWorld.countDown(); // (and the robot panel's feed has joined)
+                                    }
                                     if (m.path("type").asText().equals("end")) {
                                         ws.sendText("pause", true);
                                         ws.sendText("stop", true);
                                     }
-                                    if (got.stream().filter(r -> r.has("request")).count() == 2) {
-                                        ended.complete(null); // (both replies are in, in whichever order)
+                                    if (got.stream().filter(r -> r.has("request")).count() == 4) {
+                                        ended.complete(null); // (all four replies are in)
                                     }
                                 } catch (Exception e) {
                                     ended.completeExceptionally(e);
@@ -77,7 +83,8 @@ class WebViewerTest {
                             return null;
                         }
                     }).get(LONG_S, TimeUnit.SECONDS);
-        }).run(2000, true, () -> robot -> { // (the run starts once the page has the world: it sees every step)
+        }).run(2000, true, () -> robot -> { // (the run starts once the page has the world: it sees every step,
+            // and once its robot panel's feed has joined: it sees the robot's every step)
             try {
                 pageHasTheWorld.await(50, TimeUnit.SECONDS);
             } catch (InterruptedException e) {
@@ -111,6 +118,29 @@ class WebViewerTest {
             JsonNode stop = reply(got, "stop");
             assertTrue(pause.path("ok").asBoolean(), pause.toString());
             assertFalse(stop.path("ok").asBoolean(), "a page may not stop the run: " + stop);
+            List<JsonNode> watches = got.stream().filter(m -> m.path("request").asText().equals("watch")).toList();
+            assertEquals("no robot of this run is called nobody", watches.get(0).path("error").asText(), got.toString());
+            assertTrue(watches.get(1).path("ok").asBoolean(), watches.get(1).toString());
+            // the robot panel's feed: the watched robot's views, newest first merged: no message missed
+            String watched = sim.spec.robots().get(0).name();
+            long viewStep = -1;
+            long next = -1;
+            int views = 0;
+            for (JsonNode m : got) {
+                if (m.path("type").asText().equals("view")) {
+                    views++;
+                    assertEquals(watched, m.path("name").asText());
+                    assertTrue(m.path("step").asLong() > viewStep && m.path("since").asLong() > viewStep, m.toString());
+                    viewStep = m.path("step").asLong();
+                    assertEquals(0, m.path("leftOut").asInt(), m.toString());
+                    for (JsonNode d : m.path("delivered")) {
+                        long n = Long.parseLong(d.path("text").asText());
+                        assertTrue(next < 0 || n == next, "its inbox whole, in order: " + n + " where " + next + " was due");
+                        next = n + 1;
+                    }
+                }
+            }
+            assertTrue(views > 0 && next > 0, "the page saw the robot's own steps: " + views + " views");
 
             HttpClient http = HttpClient.newHttpClient();
             String base = "http://localhost:" + web[0].port();

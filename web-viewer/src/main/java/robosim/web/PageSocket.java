@@ -16,14 +16,15 @@ import org.slf4j.LoggerFactory;
 /**
  * One page's WebSocket: once open, it joins the {@link WebClients}; each text frame is a request line
  * ({@link #ALLOWED}; anything else is refused, and stop, load or shutdown are not a page's to ask), run
- * on the {@code web-status} thread (status) or the {@code web-commands} thread (the rest, which may wait),
+ * on the {@code web-status} thread (status), here ({@code watch ROBOT}: the robot panel's feed) or on the
+ * {@code web-commands} thread (the rest, which may wait),
  * and answered with a {@code reply} object. A page has one request in hand at a time, and nothing more is
  * read from it while it has one or does not take what is written to it.
  */
 final class PageSocket extends SimpleChannelInboundHandler<TextWebSocketFrame> {
     private static final Logger LOG = LoggerFactory.getLogger(PageSocket.class);
     private static final ObjectMapper JSON = new ObjectMapper();
-    static final Set<String> ALLOWED = Set.of("status", "pause", "resume", "step", "seek", "speed");
+    static final Set<String> ALLOWED = Set.of("status", "pause", "resume", "step", "seek", "speed", "watch");
 
     private final WebClients clients;
     private final WebCommands commands;
@@ -86,24 +87,28 @@ final class PageSocket extends SimpleChannelInboundHandler<TextWebSocketFrame> {
         inHand = true;
         readWhileItReads(ctx);
         if (!ALLOWED.contains(verb)) {
-            reply(ctx, verb, error("a page may ask " + String.join(", ", ALLOWED.stream().sorted().toList())));
+            reply(ctx, verb, WebJson.refusal("a page may ask " + String.join(", ", ALLOWED.stream().sorted().toList())));
+            return;
+        }
+        if (verb.equals("watch")) { // (the page's own business: answered here, on the I/O thread)
+            reply(ctx, verb, clients.watch(ctx.channel(), arg));
             return;
         }
         ExecutorService runner = verb.equals("status") ? statusThread : commandThread;
         try {
             runner.execute(() -> {
-                String answer = error("failed");
+                String answer = WebJson.refusal("failed");
                 try {
                     answer = commands.handle(verb, arg);
                 } catch (Exception e) {
-                    answer = error(String.valueOf(e.getMessage()));
+                    answer = WebJson.refusal(String.valueOf(e.getMessage()));
                 } finally { // (whatever happens, the page gets a reply and is read again)
                     String a = answer;
                     ctx.executor().execute(() -> reply(ctx, verb, a));
                 }
             });
         } catch (RejectedExecutionException e) {
-            reply(ctx, verb, error("busy; try again"));
+            reply(ctx, verb, WebJson.refusal("busy; try again"));
         }
     }
 
@@ -112,18 +117,11 @@ final class PageSocket extends SimpleChannelInboundHandler<TextWebSocketFrame> {
         ctx.channel().config().setAutoRead(!inHand && ctx.channel().isWritable());
     }
 
-    private static String error(String message) {
-        ObjectNode n = JSON.createObjectNode();
-        n.put("ok", false);
-        n.put("error", message);
-        return n.toString();
-    }
-
     /** I/O thread: the reply to this page's request; its next request is read once it has left. */
     private void reply(ChannelHandlerContext ctx, String verb, String answer) {
         ObjectNode n;
         try {
-            n = (ObjectNode) JSON.readTree(answer == null ? error("unknown request") : answer);
+            n = (ObjectNode) JSON.readTree(answer == null ? WebJson.refusal("unknown request") : answer);
         } catch (Exception e) {
             LOG.warn("web viewer: a reply that is not JSON: {}", e.toString());
             n = (ObjectNode) JSON.createObjectNode().put("ok", false).put("error", "no answer");

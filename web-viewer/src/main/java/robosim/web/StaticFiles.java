@@ -6,7 +6,7 @@ import java.io.UncheckedIOException;
 import java.util.Map;
 
 /**
- * The page's files, read from the jar once: {@code /} (index.html), {@code /viewer.js}, {@code /view3d.js}
+ * The page's files, read from the jar once: {@code /} (index.html), {@code /viewer.js}, {@code /view3d.js}, {@code /robot.js}
  * and three.js (from its webjar). Nothing else is served: no path from a request ever reaches a file name.
  */
 final class StaticFiles {
@@ -22,6 +22,7 @@ final class StaticFiles {
                 "/", load("robosim/web/index.html", "text/html; charset=utf-8"),
                 "/viewer.js", load("robosim/web/viewer.js", "text/javascript; charset=utf-8"),
                 "/view3d.js", load("robosim/web/view3d.js", "text/javascript; charset=utf-8"),
+                "/robot.js", load("robosim/web/robot.js", "text/javascript; charset=utf-8"),
                 "/three/three.module.min.js", load(THREE + "three.module.min.js", "text/javascript; charset=utf-8"),
                 "/three/three.core.min.js", load(THREE + "three.core.min.js", "text/javascript; charset=utf-8"));
     }

@@ -9,14 +9,18 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.RejectedExecutionException;
 import java.util.function.Consumer;
+import robosim.protocol.RobotView;
 
 /**
  * The pages connected to the feed. Every page gets the world it joins (the last snapshot, the newest
  * update, the last run state), then every run state and end, in order, and updates: the newest one
  * whenever its connection can take it, so a page that reads slowly skips steps instead of piling them up
  * (netty's write buffer watermarks say when it can); an update held for a page goes out before the next
- * state or end. Everything here happens on netty's one I/O thread ({@code web-io}, which serves every
- * page): the feed's thread only hands it over, and never blocks.
+ * state or end. A page may watch one robot ({@link #watch}): it then also gets that robot's views from a
+ * feed watching it ({@link WatchFeeds}: one per robot, however many pages watch it, at most
+ * {@link #MAX_WATCHED} robots at once), the newest whenever it can take it, with the messages of the
+ * views it could not take merged in. Everything here happens on netty's one I/O thread ({@code web-io},
+ * which serves every page): the feeds' threads only hand things over, and never block.
  */
 final class WebClients {
     private final EventExecutor io;
@@ -26,21 +30,32 @@ final class WebClients {
     private String snapshot;
     private String update;
     private String state;
+    static final int MAX_WATCHED = 8;
+    private final WatchFeeds watchFeeds;
+    private List<String> robots = List.of();
+    /** The robot each page watches, the feed of each robot watched, the view held for each page. */
+    private final Map<Channel, String> watching = new HashMap<>();
+    private final Map<String, WebFeed> feedOf = new HashMap<>();
+    private final Map<Channel, RobotView> heldView = new HashMap<>();
 
     /**
      * @param io the I/O thread every page's channel is on
      * @param firstPage runs when a page joins (it starts the feed, once: a replay starts with its first viewer)
      */
-    WebClients(EventExecutor io, Consumer<WebClients> firstPage) {
+    WebClients(EventExecutor io, Consumer<WebClients> firstPage, WatchFeeds watchFeeds) {
         this.io = io;
         this.firstPage = firstPage;
+        this.watchFeeds = watchFeeds;
     }
 
     /** I/O thread: a page has opened its WebSocket: it gets what the feed has so far. */
     void joined(Channel page) {
         pages.put(page, null);
         firstPage.accept(this);
-        page.closeFuture().addListener(f -> pages.remove(page));
+        page.closeFuture().addListener(f -> {
+            pages.remove(page);
+            unwatch(page);
+        });
         if (snapshot != null) {
             send(page, snapshot);
             if (update != null) {
@@ -52,10 +67,11 @@ final class WebClients {
         }
     }
 
-    /** Feed thread: a new world (a simulation, or the same one after a reconnection). */
-    void snapshot(String json) {
+    /** Feed thread: a new world (a simulation, or the same one after a reconnection) and its robots' names. */
+    void snapshot(String json, List<String> names) {
         onIo(() -> {
             snapshot = json;
+            robots = List.copyOf(names);
             update = null;
             state = null;
             for (Channel p : List.copyOf(pages.keySet())) { // (a failed write closes and removes a page)
@@ -89,11 +105,92 @@ final class WebClients {
         });
     }
 
-    /** I/O thread: the page can take more; it gets the update held for it, if any. */
+    /** I/O thread: the page can take more; it gets the update and the view held for it, if any. */
     void writable(Channel page) {
         String held = pages.replace(page, null);
         if (held != null) {
             offer(page, held);
+        }
+        RobotView v = heldView.remove(page);
+        if (v != null) {
+            offerView(page, v);
+        }
+    }
+
+    /**
+     * I/O thread: {@code page} watches {@code robot} from now on ("" for none); the reply to its request
+     * (refused: a name that is no robot of the run, or more than {@link #MAX_WATCHED} robots watched).
+     */
+    String watch(Channel page, String robot) {
+        if (!robot.isEmpty() && !robots.contains(robot)) {
+            return WebJson.refusal("no robot of this run is called " + robot);
+        }
+        if (!robot.isEmpty() && !feedOf.containsKey(robot) && feedOf.size() >= MAX_WATCHED) {
+            return WebJson.refusal("the pages watch " + MAX_WATCHED + " robots already; stop watching one first");
+        }
+        unwatch(page);
+        if (robot.isEmpty()) {
+            return WebJson.ok("watching none");
+        }
+        watching.put(page, robot);
+        feedOf.computeIfAbsent(robot, r -> watchFeeds.open(r, this));
+        return WebJson.ok("watching " + robot);
+    }
+
+    private void unwatch(Channel page) {
+        heldView.remove(page);
+        String was = watching.remove(page);
+        if (was != null && !watching.containsValue(was)) {
+            WebFeed f = feedOf.remove(was);
+            if (f != null) {
+                watchFeeds.close(f);
+            }
+        }
+    }
+
+    /** Watch feed's thread: robot {@code robot}'s view of a step, for the pages watching it. */
+    void view(String robot, RobotView v) {
+        onIo(() -> {
+            for (Map.Entry<Channel, String> w : List.copyOf(watching.entrySet())) {
+                if (w.getValue().equals(robot)) {
+                    offerView(w.getKey(), v.after(heldView.remove(w.getKey())));
+                }
+            }
+        });
+    }
+
+    /** Watch feed's thread: it has joined the run after step {@code step}: the views of every step after follow. */
+    void watchStarted(String robot, long step) {
+        String json = WebJson.watchStarted(robot, step);
+        onIo(() -> {
+            for (Map.Entry<Channel, String> w : List.copyOf(watching.entrySet())) {
+                if (w.getValue().equals(robot)) {
+                    send(w.getKey(), json);
+                }
+            }
+        });
+    }
+
+    /** Watch feed's thread: the Environment refused to let it watch {@code robot} (not in this run). */
+    void watchRefused(String robot, String reason) {
+        onIo(() -> {
+            for (Map.Entry<Channel, String> w : List.copyOf(watching.entrySet())) {
+                if (w.getValue().equals(robot)) {
+                    unwatch(w.getKey());
+                    send(w.getKey(), WebJson.viewEnded(robot, reason));
+                }
+            }
+        });
+    }
+
+    private void offerView(Channel page, RobotView v) {
+        if (!watching.containsKey(page)) {
+            return;
+        }
+        if (page.isWritable()) {
+            send(page, WebJson.view(watching.get(page), v));
+        } else {
+            heldView.put(page, v); // (merged with the next, so no message is skipped)
         }
     }
 

@@ -6,6 +6,7 @@ import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.SimulationKeys;
@@ -19,7 +20,8 @@ import robosim.protocol.WorldSnapshot;
  * message is turned into the page's JSON ({@link WebJson}) once and handed to every page
  * ({@link WebClients}). Its thread {@code web-feed} connects when the first page joins, and again after each
  * simulation's end (an Environment that runs one simulation after another): a second later after a run it
- * watched, up to 10 s later while there is none.
+ * watched, up to 10 s later while there is none. A feed that watches a robot (for the pages that watch it,
+ * {@link WatchFeeds}) passes on only that robot's views, on its thread {@code web-watch-N}.
  */
 final class WebFeed implements ViewerClient.Listener {
     private static final Logger LOG = LoggerFactory.getLogger(WebFeed.class);
@@ -33,6 +35,8 @@ final class WebFeed implements ViewerClient.Listener {
     private final String host;
     private final int viewerPort;
     private final SimulationKeys keys;
+    /** The robot watched ("" for none: the pages' main feed). */
+    private final String watch;
     private final CountDownLatch closed = new CountDownLatch(1);
     private final Thread thread;
     private final java.util.concurrent.atomic.AtomicBoolean started = new java.util.concurrent.atomic.AtomicBoolean();
@@ -42,10 +46,16 @@ final class WebFeed implements ViewerClient.Listener {
     private volatile WebClients clients;
 
     WebFeed(String host, int viewerPort, SimulationKeys keys) {
+        this(host, viewerPort, keys, "", "web-feed");
+    }
+
+    /** A feed that watches robot {@code watch} ("" for none), on a thread named {@code threadName}. */
+    WebFeed(String host, int viewerPort, SimulationKeys keys, String watch, String threadName) {
         this.host = host;
         this.viewerPort = viewerPort;
         this.keys = keys;
-        this.thread = new Thread(this::follow, "web-feed");
+        this.watch = watch;
+        this.thread = new Thread(this::follow, threadName);
         thread.setDaemon(true);
     }
 
@@ -64,7 +74,7 @@ final class WebFeed implements ViewerClient.Listener {
             while (closed.getCount() > 0) {
                 updates = 0;
                 try {
-                    ViewerClient v = ViewerClient.connect(host, viewerPort, new ViewerHello(false, UPDATES_PER_SECOND),
+                    ViewerClient v = ViewerClient.connect(host, viewerPort, new ViewerHello(false, UPDATES_PER_SECOND, watch),
                             5_000, keys);
                     viewer = v;
                     if (closed.getCount() == 0) { // (closed while it connected)
@@ -91,29 +101,46 @@ final class WebFeed implements ViewerClient.Listener {
 
     @Override
     public void snapshot(WorldSnapshot snapshot) {
-        clients.snapshot(WebJson.snapshot(snapshot));
+        if (watch.isEmpty()) {
+            clients.snapshot(WebJson.snapshot(snapshot), snapshot.robotNames());
+        } else {
+            clients.watchStarted(watch, snapshot.step()); // (its views follow from the next step on)
+        }
     }
 
     @Override
     public void update(PoseUpdate update) {
         updates++;
-        clients.update(WebJson.update(update));
+        if (watch.isEmpty()) {
+            clients.update(WebJson.update(update));
+        }
+    }
+
+    @Override
+    public void robotView(RobotView view) {
+        clients.view(watch, view);
     }
 
     @Override
     public void runState(RunState state) {
-        clients.state(WebJson.state(state));
+        if (watch.isEmpty()) {
+            clients.state(WebJson.state(state));
+        }
     }
 
     @Override
     public void end(SimulationEnd end) {
-        clients.state(WebJson.end(end));
+        if (watch.isEmpty()) {
+            clients.state(WebJson.end(end));
+        } else if (end.lastStep() == -1 && updates == 0 && end.reason().startsWith("it would watch")) {
+            clients.watchRefused(watch, end.reason()); // (no robot of that name in this run)
+        }
     }
 
     @Override
     public void lost(IOException cause) {
-        if (closed.getCount() == 0) {
-            return; // (closing: nobody to tell)
+        if (closed.getCount() == 0 || !watch.isEmpty()) {
+            return; // (closing: nobody to tell; a watch: the main feed tells the pages)
         }
         clients.state(WebJson.end(new SimulationEnd(-1, "the viewer connection was lost: " + cause.getMessage())));
     }

@@ -7,7 +7,9 @@ import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotProperties;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
+import robosim.protocol.SensorReading;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.SonarSpec;
 import robosim.protocol.WorldSnapshot;
@@ -16,7 +18,9 @@ import robosim.protocol.WorldSnapshot;
  * The page's feed, one JSON object per WebSocket text frame, each with a {@code type}: {@code snapshot}
  * (the world: time step, arena, obstacles as polygons, every robot's name, type, radius and sonar layout,
  * and the poses), {@code update} (a step: poses, sonar ranges, tags, departed robots), {@code state}
- * (waiting, running, paused, at a step), {@code end}. Lengths in mm and angles in degrees, as on the wire.
+ * (waiting, running, paused, at a step), {@code end}, and for a page that watches a robot {@code watchStarted},
+ * {@code view} (its step as it saw it: command, contact, tag, readings, messages sent and delivered,
+ * notices) and {@code viewEnded}. Lengths in mm and angles in degrees, as on the wire.
  */
 final class WebJson {
     private static final ObjectMapper JSON = new ObjectMapper();
@@ -84,6 +88,56 @@ final class WebJson {
         ArrayNode departed = n.putArray("departed");
         u.departed().forEach(departed::add);
         return n;
+    }
+
+    /** Robot {@code name}'s view of a step (the page's robot panel); readings to the tenth, as drawn. */
+    static String view(String name, RobotView v) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "view");
+        n.put("name", name);
+        n.put("step", v.step());
+        n.put("since", v.sinceStep());
+        n.put("leftOut", v.leftOut());
+        n.put("move", v.moveMm()).put("turn", v.turnDeg()).put("sonar", v.askedSonar()).put("tag", v.askedTag());
+        n.put("contact", v.contact()).put("tagged", v.tagged());
+        ArrayNode readings = n.putArray("readings");
+        for (SensorReading r : v.readings()) {
+            ArrayNode values = readings.addObject().put("name", r.name()).putArray("values");
+            for (double d : r.values()) {
+                values.add(Math.round(d * 10) / 10.0);
+            }
+        }
+        ArrayNode sent = n.putArray("sent");
+        v.sent().forEach(m -> sent.addObject().put("to", m.to()).put("text", m.payload()));
+        ArrayNode delivered = n.putArray("delivered");
+        v.delivered().forEach(m -> delivered.addObject().put("from", m.from()).put("text", m.payload()));
+        ArrayNode notices = n.putArray("notices");
+        v.notices().forEach(notices::add);
+        return n.toString();
+    }
+
+    /** A page's watch of a robot has begun: its views from the step after {@code step} on. */
+    static String watchStarted(String name, long step) {
+        return JSON.createObjectNode().put("type", "watchStarted").put("name", name).put("step", step).toString();
+    }
+
+    /** The page's watch of a robot has ended ({@code reason}: why, e.g. a refusal). */
+    static String viewEnded(String name, String reason) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "viewEnded");
+        n.put("name", name);
+        n.put("reason", reason);
+        return n.toString();
+    }
+
+    /** A reply to a page's request: done. */
+    static String ok(String message) {
+        return JSON.createObjectNode().put("ok", true).put("message", message).toString();
+    }
+
+    /** A reply to a page's request: refused, and why. */
+    static String refusal(String error) {
+        return JSON.createObjectNode().put("ok", false).put("error", error).toString();
     }
 
     static String state(RunState s) {

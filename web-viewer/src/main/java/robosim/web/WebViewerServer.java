@@ -38,7 +38,8 @@ import robosim.protocol.SimulationKeys;
  * header that is not this machine's (DNS rebinding) and a WebSocket from another origin are refused.
  * Threads: {@code web-io} (netty's I/O), {@code web-status} (a page's status requests), {@code web-commands}
  * (its other requests: pause, seek...),
- * {@code web-feed} ({@link WebFeed}) and the feed's {@code viewer-client}.
+ * {@code web-feed} ({@link WebFeed}) and the feed's {@code viewer-client}, and for each robot a page watches
+ * {@code web-watch-N} and its {@code viewer-client} ({@link WatchFeeds}).
  */
 public final class WebViewerServer implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(WebViewerServer.class);
@@ -52,6 +53,7 @@ public final class WebViewerServer implements Closeable {
     private final WebClients clients;
     private final StaticFiles files = new StaticFiles();
     private final WebFeed feed;
+    private final WatchFeeds watchFeeds;
     private final WebCommands commands;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
             (java.util.concurrent.ThreadFactory) r -> named(r, "web-io"));
@@ -68,7 +70,8 @@ public final class WebViewerServer implements Closeable {
      */
     public WebViewerServer(String viewerHost, int viewerPort, SimulationKeys keys, WebCommands commands) {
         this.feed = new WebFeed(viewerHost, viewerPort, keys);
-        this.clients = new WebClients(group.next(), feed::start);
+        this.watchFeeds = new WatchFeeds(viewerHost, viewerPort, keys);
+        this.clients = new WebClients(group.next(), feed::start, watchFeeds);
         this.commands = commands;
     }
 
@@ -123,6 +126,7 @@ public final class WebViewerServer implements Closeable {
     @Override
     public void close() {
         feed.close();
+        watchFeeds.closeAll();
         if (server != null) {
             server.close();
         }

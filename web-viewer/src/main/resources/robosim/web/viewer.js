@@ -1,6 +1,7 @@
 // The page's feed, the 2D view, the robot table, the status bar and the timeline. Text from the network
 // is only ever set as textContent, never as markup.
 import { View3D } from './view3d.js';
+import { RobotPanel } from './robot.js';
 
 const $ = (id) => document.getElementById(id);
 const TRAIL = 600; // points kept per robot
@@ -12,11 +13,14 @@ let ws = null;
 // something new to show, the table at most 5 times a second
 let dirty = true, tableDirty = true, tableAt = 0;
 const view3d = new View3D($('view3d'));
+let watched = ''; // the robot the page watches ('' none): asked again after a reconnection
+const panel = new RobotPanel($('robotPanel'), (name) => watch(name));
+function watch(name) { watched = name; panel.watching(name); ask('watch ' + name); redraw(); }
 
 function connect() {
   ws = new WebSocket(`ws://${location.host}/ws`);
   ws.onmessage = (e) => handle(JSON.parse(e.data));
-  ws.onopen = () => { $('state').textContent = 'connected'; ask('status'); };
+  ws.onopen = () => { $('state').textContent = 'connected'; ask('status'); if (watched) ask('watch ' + watched); };
   ws.onclose = () => { $('state').textContent = 'not connected'; statusAsked = false; setTimeout(connect, 1000); };
 }
 
@@ -32,14 +36,18 @@ function handle(m) {
     case 'snapshot':
       world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); fitted = false;
       $('ended').textContent = '';
-      buildTable(); view3d.world(m); dirty = tableDirty = true; wake();
+      buildTable(); view3d.world(m); panel.world(m); dirty = tableDirty = true; wake();
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);
+      if (!watched && watchName && m.robots.some((r) => r.name === watchName)) watch(watchName);
       break;
     case 'update':
       if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
       poses = m; gone = new Set(m.departed);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
-      count(m.step); dirty = tableDirty = true; wake(); break;
+      panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
+    case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 1}`); break;
+    case 'view': panel.show(m); redraw(); break;
+    case 'viewEnded': watched = ''; panel.ended(m.reason); break;
     case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; redraw(); break;
     case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; rate = 0; redraw(); break;
     case 'reply': replied(m); break;
@@ -165,11 +173,18 @@ canvas.addEventListener('wheel', (e) => {
   const f = e.deltaY < 0 ? 1.2 : 1 / 1.2, mx = e.offsetX, my = canvas.height - e.offsetY;
   offX = mx - (mx - offX) * f; offY = my - (my - offY) * f; scale *= f;
 }, { passive: false });
-let drag = null;
-canvas.addEventListener('mousedown', (e) => { drag = [e.clientX, e.clientY]; });
+let drag = null, moved = false;
+canvas.addEventListener('mousedown', (e) => { drag = [e.clientX, e.clientY]; moved = false; });
+canvas.addEventListener('click', (e) => { // a click, not a drag, on a robot: watch it
+  if (moved || !world || !poses) return;
+  const hit = world.robots.findIndex((r, i) => Math.hypot(toX(poses.x[i]) - e.offsetX, toY(poses.y[i]) - e.offsetY)
+    <= Math.max(6, r.radius * scale));
+  if (hit >= 0) watch(world.robots[hit].name);
+});
 window.addEventListener('mouseup', () => { drag = null; });
 window.addEventListener('mousemove', (e) => {
   if (!drag) return;
+  moved = true;
   offX += e.clientX - drag[0]; offY -= e.clientY - drag[1]; drag = [e.clientX, e.clientY]; follow = -1; tableDirty = true;
 });
 $('fit').onclick = () => { follow = -1; fitted = false; tableDirty = true; view3d.fit(); };
@@ -196,6 +211,7 @@ function frame(now) {
     $('step').textContent = poses ? poses.step : '-';
     $('rate').textContent = rate.toFixed(1);
     if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
+    panel.draw();
   }
   if (tableDirty) {
     if (now - tableAt > 200) { showTable(); tableDirty = false; tableAt = now; } else setTimeout(wake, 200 - (now - tableAt));
@@ -208,13 +224,13 @@ window.addEventListener('mousemove', (e) => { if (e.buttons) redraw(); }); // (2
 $('views').addEventListener('wheel', redraw);
 window.addEventListener('resize', redraw);
 new ResizeObserver(redraw).observe($('views'));
-// a link may say how to look: ?view=3d&sonar=1&trails=0&follow=NAME
+// a link may say how to look: ?view=3d&sonar=1&trails=0&follow=NAME&watch=NAME
 const wanted = new URLSearchParams(location.search);
 if (wanted.get('view') === '3d') { document.querySelector('input[name=view][value="3d"]').checked = true;
   canvas.classList.add('hidden'); $('view3d').classList.remove('hidden'); }
 if (wanted.get('sonar') === '1') $('sonar').checked = true;
 if (wanted.get('trails') === '0') $('trails').checked = false;
-const followName = wanted.get('follow');
+const followName = wanted.get('follow'), watchName = wanted.get('watch');
 setInterval(() => ask('status'), 1000);
 connect();
 wake();

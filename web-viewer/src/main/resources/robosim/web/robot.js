@@ -1,0 +1,125 @@
+// The robot panel (the robot-specific viewer in the page): one robot as it senses the world - a polar
+// plot in its own frame (heading up, a ring every metre) of its sonar cones out to each range and its
+// laser (a reading of more than 8 values, drawn one degree a beam, centred on the heading), its pose,
+// command, contact, tag, bump (front, left, back, right), heat and other readings, and a log of the
+// messages it sent and got and its notices. Network text is only ever set as textContent.
+const LOG_LINES = 200;
+
+export class RobotPanel {
+  constructor(root, onWatch) {
+    this.root = root;
+    this.select = root.querySelector('#watch');
+    this.canvas = root.querySelector('#polar');
+    this.facts = root.querySelector('#facts');
+    this.bumps = [...root.querySelectorAll('#bump span')];
+    this.log = root.querySelector('#log');
+    this.robots = [];
+    this.name = '';
+    this.view = null;
+    this.pose = null;
+    this.select.onchange = () => onWatch(this.select.value);
+  }
+
+  // a new world: its robots to choose from; the robot watched stays chosen if it is in it
+  world(snapshot) {
+    this.robots = snapshot.robots;
+    const keep = this.name;
+    this.select.replaceChildren(new Option('(none)', ''), ...snapshot.robots.map((r) => new Option(r.name, r.name)));
+    this.select.value = this.robots.some((r) => r.name === keep) ? keep : '';
+    this.view = null;
+  }
+
+  // the page now watches this robot ('' for none)
+  watching(name) {
+    if (name !== this.name) { this.view = null; this.log.replaceChildren(); }
+    this.name = name;
+    this.select.value = name;
+    this.root.classList.toggle('idle', name === '');
+  }
+
+  poses(update) {
+    const i = this.robots.findIndex((r) => r.name === this.name);
+    this.pose = i < 0 ? null : { i, x: update.x[i], y: update.y[i], heading: update.heading[i],
+      sonar: update.sonar[i] || [], step: update.step, gone: update.departed.includes(this.name) };
+  }
+
+  show(v) {
+    if (v.name !== this.name) return;
+    this.view = v;
+    const at = v.since === v.step ? `step ${v.step}` : `steps ${v.since}-${v.step}`;
+    if (v.leftOut > 0) this.line(`${at}: ${v.leftOut} earlier messages and notices left out`);
+    for (const m of v.sent) this.line(`${at}  out  to ${m.to}: ${m.text}`);
+    for (const m of v.delivered) this.line(`${at}  in   from ${m.from}: ${m.text}`);
+    for (const n of v.notices) this.line(`${at}  notice: ${n}`);
+  }
+
+  ended(reason) {
+    this.line(`-- ${reason}`);
+    this.watching('');
+  }
+
+  line(text) {
+    const li = document.createElement('li');
+    li.textContent = text;
+    this.log.append(li);
+    while (this.log.childElementCount > LOG_LINES) this.log.firstChild.remove();
+    this.log.scrollTop = this.log.scrollHeight;
+  }
+
+  draw() {
+    if (!this.name) return;
+    const r = this.robots.find((x) => x.name === this.name);
+    const v = this.view, p = this.pose;
+    const lines = [`${this.name} (${r ? r.type : '?'})`];
+    if (p) lines.push(p.gone ? 'it has left the simulation'
+      : `step ${p.step}  x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m  ${p.heading.toFixed(1)} deg`);
+    let bump = null;
+    if (v) {
+      lines.push(`command (step ${v.step}): move ${v.move.toFixed(1)} mm, turn ${v.turn.toFixed(1)} deg`,
+        `  sonar ${v.sonar ? 'asked' : 'not asked'}, tag ${v.tag ? 'asked' : 'no'}`,
+        `contact ${v.contact || 'none'}   tagged ${v.tagged || 'none'}`);
+      for (const s of v.readings) {
+        if (s.values.length === 4 && /bump/i.test(s.name)) bump = s.values;
+        lines.push(`${s.name}  ${s.values.length <= 6 ? s.values.join(' ')
+          : `${s.values.length} values, ${Math.min(...s.values)} to ${Math.max(...s.values)}`}`);
+      }
+    } else lines.push('(waiting for its first step)');
+    this.facts.textContent = lines.join('\n');
+    this.bumps.forEach((b, k) => b.classList.toggle('hit', !!bump && bump[k] !== 0));
+    this.polar(r, v, p);
+  }
+
+  polar(r, v, p) {
+    const c = this.canvas, g = c.getContext('2d'), size = c.width, mid = size / 2;
+    g.fillStyle = '#f7f8fa'; g.fillRect(0, 0, size, size);
+    if (!r) return;
+    const lasers = v ? v.readings.filter((s) => s.values.length > 8).map((s) => s.values) : [];
+    let reach = 1000;
+    for (const s of r.sonars) reach = Math.max(reach, s.range + Math.hypot(s.x, s.y));
+    for (const l of lasers) reach = Math.max(reach, ...l);
+    const k = (mid - 8) / reach; // px per mm; robot frame: x forward = up, y left = left
+    g.strokeStyle = '#d5d9e0'; g.lineWidth = 1;
+    for (let m = 1000; m <= reach; m += 1000) { g.beginPath(); g.arc(mid, mid, m * k, 0, 2 * Math.PI); g.stroke(); }
+    if (p && !p.gone) {
+      g.fillStyle = 'rgba(31,119,180,0.3)';
+      r.sonars.forEach((s, j) => {
+        const range = p.sonar[j];
+        if (range === undefined) return;
+        const ox = mid - s.y * k, oy = mid - s.x * k, a = -Math.PI / 2 - s.angle * Math.PI / 180;
+        const half = s.cone * Math.PI / 360;
+        g.beginPath(); g.moveTo(ox, oy); g.arc(ox, oy, range * k, a - half, a + half); g.closePath(); g.fill();
+      });
+    }
+    g.fillStyle = '#d62728';
+    for (const l of lasers) {
+      const first = -(l.length - 1) / 2;
+      l.forEach((d, b) => {
+        const a = (first + b) * Math.PI / 180;
+        g.fillRect(mid - Math.sin(a) * d * k - 1, mid - Math.cos(a) * d * k - 1, 2, 2);
+      });
+    }
+    const rad = Math.max(3, r.radius * k);
+    g.fillStyle = '#2a62c9'; g.beginPath(); g.arc(mid, mid, rad, 0, 2 * Math.PI); g.fill();
+    g.strokeStyle = '#000'; g.beginPath(); g.moveTo(mid, mid); g.lineTo(mid, mid - rad); g.stroke();
+  }
+}
