@@ -4,9 +4,11 @@
 # REPS defaults to 3, STEPS to 5000. Makes fresh keys in a temporary directory (removed at the end, with the
 # recordings), then runs, REPS times each in turn: bench/FloorProcesses (10 client processes, plain sockets:
 # the floor of the paper benchmark's shape), and headless.sh on test-envs/paper-benchmark.xml plain, with
-# the keys (ROBOSIM_KEYS: TLS and the secret on every connection), with --record, and with --record and a
-# browser viewer open (--web-port, the page in a headless chromium: skipped, saying so, without one); plain
-# and with the keys again with --robots-in-one-process. Prints every line, the medians and the ratios to
+# the keys (ROBOSIM_KEYS: TLS and the secret on every connection), with --record, with --record and a
+# page's network side reading the browser viewer (--web-port; bench/WebPageReader: the feed, the robot
+# panel's feed for robot1, a status a second, no drawing: what serving a page costs the run), and with
+# --record and a real page (the page in a headless chromium on this same machine, watching robot1:
+# skipped, saying so, without one); plain and with the keys again with --robots-in-one-process. Prints every line, the medians and the ratios to
 # the floor; writes no file in the repository (bench/FloorProcesses compiles to bench/classes).
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -26,19 +28,23 @@ free_port() { local p; while :; do p=$((20000 + RANDOM % 20000))
   (exec 3<>"/dev/tcp/127.0.0.1/$p") 2>/dev/null || { echo "$p"; return; }; done; }
 browser=$(command -v chromium || true)
 [ -n "$browser" ] || echo "bench-costs: no chromium (apt-get install chromium): the run with a browser viewer is skipped"
+javac -d bench/classes bench/WebPageReader.java
 page_on() { # PORT: a headless chromium that opens the browser viewer as soon as it answers; prints its pid
-  printf '%s\n' "<!doctype html><script>const u='http://localhost:$1/';" \
+  printf '%s\n' "<!doctype html><script>const u='http://localhost:$1/?watch=robot1';" \
     "(function t(){fetch(u,{mode:'no-cors'}).then(()=>location.href=u,()=>setTimeout(t,100))})()</script>" > "$tmp/wait.html"
   "$browser" --headless=new --no-sandbox --disable-dev-shm-usage --user-data-dir="$tmp/chrome" \
     --window-size=1200,800 "file://$tmp/wait.html" >/dev/null 2>&1 & echo $!
 }
-declare -a fp p t rec rw po to
+declare -a fp p t rec rf rw po to
 for i in $(seq "$reps"); do
   l=$(java -cp bench/classes FloorProcesses 10 "$steps" obj); echo "floor-processes      $l"; fp+=("$(echo "$l" | rate)")
   run plain "" "$@"; p+=("$(cat "$tmp/last")")
   run tls "$tmp/keys" "$@"; t+=("$(cat "$tmp/last")")
   run record "" --record "$tmp/run-$i.rec" "$@"; rec+=("$(cat "$tmp/last")")
   echo "  recording: $(stat -c %s "$tmp/run-$i.rec") bytes"
+  wp=$(free_port); java -cp bench/classes WebPageReader "$wp" robot1 >/dev/null 2>&1 & reader=$!
+  run record+feed "" --record "$tmp/feed-$i.rec" --web-port "$wp" "$@"; rf+=("$(cat "$tmp/last")")
+  kill "$reader" 2>/dev/null || true; wait "$reader" 2>/dev/null || true   # (it ends with the run)
   if [ -n "$browser" ]; then
     wp=$(free_port); page=$(page_on "$wp")
     run record+web "" --record "$tmp/web-$i.rec" --web-port "$wp" "$@"; rw+=("$(cat "$tmp/last")")
@@ -51,5 +57,6 @@ done
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2)}'; }
 m_fp=$(median "${fp[@]}"); m_p=$(median "${p[@]}"); m_t=$(median "${t[@]}"); m_r=$(median "${rec[@]}")
 m_po=$(median "${po[@]}"); m_to=$(median "${to[@]}"); m_w=$( [ ${#rw[@]} -gt 0 ] && median "${rw[@]}" || echo 0)
-echo "median steps/s: floor-processes=$m_fp plain=$m_p tls=$m_t record=$m_r record+web=$m_w plain-1proc=$m_po tls-1proc=$m_to"
-awk -v f="$m_fp" -v p="$m_p" -v t="$m_t" -v r="$m_r" -v w="$m_w" -v po="$m_po" -v to="$m_to" 'BEGIN { printf "ratio to floor-processes: plain=%.2f tls=%.2f record=%.2f record+web=%.2f plain-1proc=%.2f tls-1proc=%.2f; to plain: tls=%.2f (in one process %.2f) record=%.2f record+web=%.2f\n", p/f, t/f, r/f, w/f, po/f, to/f, t/p, to/po, r/p, w/p }'
+m_f=$(median "${rf[@]}")
+echo "median steps/s: floor-processes=$m_fp plain=$m_p tls=$m_t record=$m_r record+feed=$m_f record+web=$m_w plain-1proc=$m_po tls-1proc=$m_to"
+awk -v f="$m_fp" -v p="$m_p" -v t="$m_t" -v r="$m_r" -v w="$m_w" -v rf="$m_f" -v po="$m_po" -v to="$m_to" 'BEGIN { printf "ratio to floor-processes: plain=%.2f tls=%.2f record=%.2f record+feed=%.2f record+web=%.2f plain-1proc=%.2f tls-1proc=%.2f; to plain: tls=%.2f (in one process %.2f) record=%.2f; to record: record+feed=%.2f record+web=%.2f\n", p/f, t/f, r/f, rf/f, w/f, po/f, to/f, t/p, to/po, r/p, rf/r, w/r }'

@@ -53,6 +53,9 @@ class EnvironmentLoaderTest {
         assertEquals(100, new EnvironmentLoader().load(Path.of("../test-envs/swarm-100.xml")).robots().size());
         assertEquals(4, new EnvironmentLoader().load(Path.of("../test-envs/follow.xml")).robots().size());
         assertEquals(4, new EnvironmentLoader().load(Path.of("../test-envs/tag.xml")).robots().size());
+        WorldSpec sensors = new EnvironmentLoader().load(Path.of("../test-envs/sensors.xml"));
+        assertEquals(3, sensors.robots().size());
+        assertEquals(List.of("laser", "heat", "bump"), sensors.robots().get(1).sensorNames());
         for (int n : new int[] {10, 100, 1000}) {
             assertEquals(n, new EnvironmentLoader().load(Path.of("../test-envs/bench-" + n + ".xml")).robots().size());
         }
