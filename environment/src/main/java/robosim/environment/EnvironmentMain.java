@@ -209,7 +209,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         try {
             host.open();
             if (controlPort >= 0) {
-                control = new ControlServer(new EnvironmentCommands(host, directories), keys);
+                control = new ControlServer(new EnvironmentCommands(host, directories), keys, handshakeTimeoutMs);
                 control.start(bindAddress, controlPort);
             }
             if (webPort >= 0) {

@@ -22,6 +22,8 @@ import robosim.protocol.SimulationKeys;
 /** An Environment host with its control port, on ephemeral ports; paused until told. */
 final class ControlFixture implements AutoCloseable {
     static final int TIMEOUT_MS = 60_000;
+    /** The control port's proof deadline (the Environment's: its handshake deadline, 10 s by default). */
+    static final int DEFAULT_PROOF_DEADLINE_MS = 10_000;
 
     final EnvironmentHost host;
     final ControlServer control;
@@ -31,18 +33,24 @@ final class ControlFixture implements AutoCloseable {
 
     /** @param keys the simulation's keys (null: none) */
     ControlFixture(Path file, SimulationKeys keys) throws Exception {
-        this(file, keys, 0);
+        this(file, keys, 0, DEFAULT_PROOF_DEADLINE_MS);
     }
 
     /** @param speed the run's pace in times real time (0: as fast as possible) */
     ControlFixture(Path file, SimulationKeys keys, double speed) throws Exception {
+        this(file, keys, speed, DEFAULT_PROOF_DEADLINE_MS);
+    }
+
+    /** @param proofDeadlineMs how long a connection may take to prove the keys' secret */
+    ControlFixture(Path file, SimulationKeys keys, double speed, int proofDeadlineMs) throws Exception {
         Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
                 .resetEvery(64).speed(speed).build();
         host = new EnvironmentHost(file, new EnvironmentLoader().load(file), s, true, true);
         host.open();
         // load may read the tests' files and the bundled environments
         control = new ControlServer(new robosim.environment.control.EnvironmentCommands(host, new EnvironmentDirectories(
-                List.of(file.toAbsolutePath().getParent(), InJvmSimulation.env("test.xml").getParent()))), keys);
+                List.of(file.toAbsolutePath().getParent(), InJvmSimulation.env("test.xml").getParent()))), keys,
+                proofDeadlineMs);
         control.start(InetAddress.getLoopbackAddress(), 0);
         running = CompletableFuture.supplyAsync(() -> {
             try {

@@ -20,10 +20,10 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import robosim.environment.control.ControlServer;
 import robosim.control.ControlClient;
 import robosim.protocol.SimulationKeys;
 import robosim.environment.config.EnvironmentLoader;
-import robosim.environment.control.ControlServer;
 
 /**
  * A hostile client on the control port: pipelined requests are answered in order; {@code load} reads
@@ -31,6 +31,8 @@ import robosim.environment.control.ControlServer;
  * while the port goes on answering; connections over the cap are closed at once.
  */
 class ControlPortAttacksTest {
+    /** A proof deadline short enough to wait for, long enough for a TLS handshake and a proof on a loaded machine. */
+    private static final int SHORT_PROOF_DEADLINE_MS = 4000;
     private static final ObjectMapper JSON = new ObjectMapper();
 
     /** three-robots.xml copied into {@code dir}, which becomes one of the environment directories. */
@@ -131,12 +133,12 @@ class ControlPortAttacksTest {
     @Test
     void withKeysAConnectionThatDoesNotProveTheSecretIsClosed(@TempDir Path dir) throws Exception {
         SimulationKeys keys = TestKeys.keys(dir, "keys");
-        try (ControlFixture f = new ControlFixture(three(dir), keys);
+        try (ControlFixture f = new ControlFixture(three(dir), keys, 0, SHORT_PROOF_DEADLINE_MS);
                 Socket raw = new Socket(InetAddress.getLoopbackAddress(), f.control.port());
                 Socket silent = keys.tls().client(raw)) {
             raw.setSoTimeout(ControlFixture.TIMEOUT_MS);
-            assertEquals(-1, silent.getInputStream().read(), "closed " + ControlServer.PROOF_DEADLINE_S
-                    + " s after connecting (over TLS) without proving the secret");
+            assertEquals(-1, silent.getInputStream().read(), "closed " + SHORT_PROOF_DEADLINE_MS
+                    + " ms after connecting (over TLS) without proving the secret");
             try (ControlClient c = f.client(keys)) {
                 assertTrue(c.request("status").path("ok").asBoolean(), "one that gives it is served");
             }

@@ -47,9 +47,8 @@ import robosim.protocol.SimulationKeys;
  * at once), a connection with nothing in hand that sends no whole request for {@link #IDLE_MINUTES}
  * minutes is closed, and so is one that does not take a reply within {@link #WRITE_TIMEOUT_S} seconds.
  * With keys, every request before the shared secret's proof ({@code challenge}, then {@code prove HEX}) is
- * refused, and a connection that has not proved it within {@link #PROOF_DEADLINE_S} seconds is closed; when
- * the keys hold the simulation's key pair the port speaks only TLS (mutual, the key pair pinned: see
- * {@link robosim.protocol.Tls}).
+ * refused, a connection that has not proved it by the handshake deadline is closed, and with the key pair
+ * the port speaks only TLS (mutual, the key pair pinned: see {@link robosim.protocol.Tls}).
  */
 public final class ControlServer implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ControlServer.class);
@@ -63,10 +62,9 @@ public final class ControlServer implements Closeable {
     public static final int IDLE_MINUTES = 5;
     /** A reply the client does not take within this long closes its connection, s. */
     public static final int WRITE_TIMEOUT_S = 30;
-    /** With keys, a connection that has not proved the secret this long after connecting is closed, s. */
-    public static final int PROOF_DEADLINE_S = 10;
-
     private final ControlRequests requests;
+    /** With keys, a connection that has not proved the secret this long after connecting is closed, ms (0: none). */
+    private final long proofDeadlineMs;
     /** TLS for every connection, or null (keys without a key pair, or none: loopback only). */
     private final robosim.protocol.Tls tls;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
@@ -80,9 +78,10 @@ public final class ControlServer implements Closeable {
     private final java.util.concurrent.atomic.AtomicLong lastCapLog = new java.util.concurrent.atomic.AtomicLong();
     private Channel server;
 
-    /** Serves {@code commands}; {@code keys}: the secret proved first, and TLS with a key pair (null: loopback only). */
-    public ControlServer(ControlCommands commands, SimulationKeys keys) {
+    /** Serves {@code commands}; {@code keys} (null: loopback only) proved within {@code proofDeadlineMs} (0: idle only). */
+    public ControlServer(ControlCommands commands, SimulationKeys keys, long proofDeadlineMs) {
         this.requests = new ControlRequests(commands, keys);
+        this.proofDeadlineMs = proofDeadlineMs;
         this.tls = keys == null ? null : keys.tls();
     }
 
@@ -182,14 +181,14 @@ public final class ControlServer implements Closeable {
 
         @Override
         public void channelActive(ChannelHandlerContext ctx) {
-            if (!caller.proven()) {
+            if (!caller.proven() && proofDeadlineMs > 0) {
                 proofDeadline = ctx.executor().schedule(() -> {
                     if (!caller.proven() && ctx.channel().isActive()) {
-                        LOG.info("control port: {} did not prove the shared secret within {} s; closing",
-                                ctx.channel().remoteAddress(), PROOF_DEADLINE_S);
+                        LOG.info("control port: {} did not prove the shared secret within {} ms; closing",
+                                ctx.channel().remoteAddress(), proofDeadlineMs);
                         ctx.close();
                     }
-                }, PROOF_DEADLINE_S, TimeUnit.SECONDS);
+                }, proofDeadlineMs, TimeUnit.MILLISECONDS);
             }
             ctx.fireChannelActive();
         }

@@ -114,7 +114,7 @@ public final class ReplayMain implements Callable<Integer> {
             port = new ReplayPort(bindAddress, viewerPort, clock, recording.snapshot().robotNames(), keys,
                     maxConnections, handshakeTimeoutMs, resetEvery);
             if (controlPort >= 0) {
-                control = new ControlServer(new ReplayCommands(clock, file), keys);
+                control = new ControlServer(new ReplayCommands(clock, file), keys, handshakeTimeoutMs);
                 control.start(bindAddress, controlPort);
             }
             if (webPort >= 0) {
