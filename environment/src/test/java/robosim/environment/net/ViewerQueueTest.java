@@ -5,10 +5,15 @@ import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.util.List;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.CommEvent;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
 
 /** A viewer's queue: bounded, coalescing, and never a reason for the loop to wait. */
 class ViewerQueueTest {
@@ -53,6 +58,35 @@ class ViewerQueueTest {
         SimulationEnd end = new SimulationEnd(0, "done");
         assertEquals(0, ((PoseUpdate) q.take()).step());
         assertSame(paused, q.take());
+        q.end(end);
+        assertSame(end, q.take());
+    }
+
+    private static RobotView view(long step, String text) {
+        return RobotView.of(step, 0, "a", new StepRequest(step, 10, 0, false, List.of(new CommEvent("a", "b", text))),
+                new StepResponse(step, 10, 0, "", 0, 0, 0, new double[0], List.of(), List.of()));
+    }
+
+    @Test
+    void aWatchedRobotsViewGoesRightAfterItsUpdateAndALiveViewerMissesNoMessage() throws Exception {
+        ViewerQueue q = new ViewerQueue(false, 1); // (one update a second: the view must not wait for the cap)
+        q.watch(0);
+        assertEquals(0, q.watching());
+        q.offer(update(0), view(0, "m0"));
+        assertEquals(0, ((PoseUpdate) q.take()).step());
+        assertEquals(0, ((RobotView) q.take()).step(), "the view at once after its update");
+        for (long k = 1; k <= 3; k++) {
+            q.offer(update(k), view(k, "m" + k));
+        }
+        assertEquals(3, ((PoseUpdate) q.take()).step(), "the newest update");
+        RunState running = new RunState(4, RunState.Phase.RUNNING);
+        q.state(running); // (a state goes ahead of an update that waits for the cap; not ahead of its view)
+        RobotView v = (RobotView) q.take();
+        assertEquals(3, v.step());
+        assertEquals(1, v.sinceStep(), "with the messages of the views it replaced");
+        assertEquals(List.of("m1", "m2", "m3"), v.sent().stream().map(CommEvent::payload).toList());
+        assertSame(running, q.take());
+        SimulationEnd end = new SimulationEnd(3, "done");
         q.end(end);
         assertSame(end, q.take());
     }
