@@ -94,11 +94,10 @@ public final class ObjectConnection implements Closeable {
             budget = new MessageBudgetInputStream(buffered, Limits.MAX_MESSAGE_BYTES);
             budget.startMessage();
             try {
-                in = new ObjectInputStream(budget);
+                in = new ProtocolInputStream(budget, filter);
             } catch (ObjectStreamException e) {
                 throw new ProtocolException("not an object stream: " + e.getMessage());
             }
-            in.setObjectInputFilter(filter);
         } catch (IOException | RuntimeException e) {
             closeQuietly();
             throw e;
@@ -145,7 +144,7 @@ public final class ObjectConnection implements Closeable {
         Object o;
         try {
             o = in.readUnshared();
-        } catch (InvalidClassException e) {
+        } catch (InvalidClassException e) { // (the filter's, or the stream's own check by name)
             String why = filter.lastRejection();
             throw new ProtocolException("refused: " + (why.isEmpty() ? e.getMessage() : why));
         } catch (ClassNotFoundException e) {

@@ -135,9 +135,7 @@ public final class RecordingReader implements Closeable {
     }
 
     private static ObjectInputStream body(byte[] frame) throws IOException {
-        ObjectInputStream o = new ObjectInputStream(new ByteArrayInputStream(frame, 9, frame.length - 9));
-        o.setObjectInputFilter(new ProtocolFilter());
-        return o;
+        return new ProtocolInputStream(new ByteArrayInputStream(frame, 9, frame.length - 9), new ProtocolFilter());
     }
 
     public WorldSnapshot snapshot() {

@@ -49,7 +49,7 @@ class MessageDecodingFuzzTest {
     private static final List<Supplier<Externalizable>> MESSAGES = List.of(StepRequest::new, StepResponse::new,
             RobotHello::new, RobotWelcome::new, GeometryHello::new, GeometryWorld::new, GeometryStepRequest::new,
             GeometryStepResponse::new, ViewerHello::new, WorldSnapshot::new, PoseUpdate::new, RunState::new,
-            SimulationEnd::new, Challenge::new, Proof::new);
+            SimulationEnd::new, Challenge::new, Proof::new, RobotView::new);
 
     @FuzzTest(maxDuration = "10s")
     void decodingEndsInAMessageOrAProtocolError(byte[] input) throws Exception {

@@ -151,6 +151,18 @@ class ObjectConnectionTest {
     }
 
     @Test
+    void aProxyClassIsRefusedBeforeAnyClassIsLoadedForIt() throws Exception {
+        ObjectOutputStream raw = rawPeer();
+        ObjectConnection c = new ObjectConnection(serverSocket, 0);
+        java.lang.reflect.InvocationHandler handler = (java.lang.reflect.InvocationHandler & Serializable) (p, m, a) -> null;
+        raw.writeObject(java.lang.reflect.Proxy.newProxyInstance(getClass().getClassLoader(),
+                new Class<?>[] {Runnable.class}, handler));
+        raw.flush();
+        ProtocolException e = assertThrows(ProtocolException.class, () -> c.read(StepRequest.class));
+        assertEquals("refused: a proxy class is not a protocol message", e.getMessage());
+    }
+
+    @Test
     void aHugeArrayIsRefusedBeforeItIsAllocated() throws Exception {
         ObjectOutputStream raw = rawPeer();
         ObjectConnection c = new ObjectConnection(serverSocket, 0);
