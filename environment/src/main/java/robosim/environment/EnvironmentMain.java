@@ -137,7 +137,7 @@ public final class EnvironmentMain implements Callable<Integer> {
     java.util.List<Path> envDirs;
 
     @Option(names = "--web-port", defaultValue = "-1", description = "Serve the browser viewer on this port, on "
-            + "loopback only (default: none; 0 picks a free one; from elsewhere: an SSH tunnel).")
+            + "--bind; with ROBOSIM_KEYS over TLS to browsers holding the key pair (default: none; 0: a free one).")
     int webPort;
 
     @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,

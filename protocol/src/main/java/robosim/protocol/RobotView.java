@@ -12,9 +12,9 @@ import java.util.List;
  * turn, whether it asked for sonar and a tag), what it touched and tagged, its plug-in sensor readings
  * (laser, heat, bump...), the messages it sent and was delivered, and the notices it got. Its pose and
  * sonar ranges are in the update just before. A live viewer that skipped steps gets the newest view with
- * the messages and notices of every step since the last one it got ({@link #sinceStep}), up to
- * {@link #MAX_LOG} of each, the newest; how many older ones were left out is {@link #leftOut}.
- * Immutable.
+ * the messages and notices of every step since the last one it got ({@link #sinceStep}); merged views keep
+ * at most {@link #MAX_LOG} of each, the newest, and count the older ones they left out ({@link #leftOut}).
+ * A single step's are all carried. Immutable.
  */
 public final class RobotView implements java.io.Externalizable {
     /** The most messages sent, delivered and notices a view carries, each. */
@@ -72,11 +72,12 @@ public final class RobotView implements java.io.Externalizable {
     }
 
     /**
-     * This view with the messages and notices of {@code earlier} (a view of the same robot a viewer has
-     * not been sent) before its own, the newest {@link #MAX_LOG} of each kept.
+     * This view with the messages and notices of {@code earlier} (a view of the same robot, of an earlier
+     * step, a viewer has not been sent) before its own, the newest {@link #MAX_LOG} of each kept; this view
+     * alone if {@code earlier} is none, another robot's or not earlier (a replay sought back, a new run).
      */
     public RobotView after(RobotView earlier) {
-        if (earlier == null || earlier.robot != robot) {
+        if (earlier == null || earlier.robot != robot || earlier.step >= sinceStep) {
             return this;
         }
         RobotView v = copy();
@@ -200,6 +201,9 @@ public final class RobotView implements java.io.Externalizable {
     public void readExternal(ObjectInput in) throws IOException {
         step = in.readLong();
         sinceStep = in.readLong();
+        if (sinceStep < 0 || sinceStep > step) {
+            throw new ProtocolException("a robot view of step " + step + " since step " + sinceStep);
+        }
         leftOut = Math.max(0, in.readInt());
         readBody(in, step);
     }
@@ -233,9 +237,9 @@ public final class RobotView implements java.io.Externalizable {
         if ((f & MORE) != 0) {
             contact = in.readUTF();
             tagged = in.readUTF();
-            readings = Wire.readReadings(in);
-            sent = Wire.readEvents(in, "sent message count");
-            delivered = Wire.readEvents(in, "delivered message count");
+            readings = List.copyOf(Wire.readReadings(in));
+            sent = List.copyOf(Wire.readEvents(in, "sent message count"));
+            delivered = List.copyOf(Wire.readEvents(in, "delivered message count"));
             notices = Wire.readStrings(in, "notice count", Limits.MAX_MESSAGES_PER_STEP);
         }
     }

@@ -242,50 +242,6 @@ class MessageRoundTripTest {
     }
 
     @Test
-    void robotViewCarriesTheRobotsStepAndMergesWhatASkippingViewerMissed() throws Exception {
-        StepRequest q = new StepRequest(7, 40, -5, true, List.of(new CommEvent("spoofed", "b", "hi")),
-                List.of("heat"), true);
-        StepResponse a = new StepResponse(7, 40, -5, "wall", 1, 2, 3, new double[0],
-                List.of(new CommEvent("b", "a", "yo")), List.of("speed limit"),
-                List.of(new SensorReading("heat", new double[] {21.5})), "b");
-        RobotView v = roundTrip(RobotView.of(8, 0, "a", q, a));
-        assertEquals(8, v.step());
-        assertEquals(8, v.sinceStep());
-        assertEquals(0, v.robot());
-        assertEquals(40, v.moveMm());
-        assertEquals(-5, v.turnDeg());
-        assertTrue(v.askedSonar());
-        assertTrue(v.askedTag());
-        assertEquals("wall", v.contact());
-        assertEquals("b", v.tagged());
-        assertEquals(List.of(new CommEvent("a", "b", "hi")), v.sent(), "from is the robot's own name");
-        assertEquals(List.of(new CommEvent("b", "a", "yo")), v.delivered());
-        assertEquals(List.of("speed limit"), v.notices());
-        assertEquals(List.of(new SensorReading("heat", new double[] {21.5})), v.readings());
-        // a robot with nothing beyond its command: robot, move, turn, flags after the step fields
-        StepResponse quiet = new StepResponse(7, 0, 0, "", 1, 2, 3, new double[0], List.of(), List.of());
-        StepRequest idle = new StepRequest(7, 0, 0, false, List.of());
-        assertEquals(OVERHEAD + 8 + 8 + 4 + 4 + 8 + 8 + 1, repeatedSize(RobotView.of(8, 1, "b", idle, quiet)));
-
-        // a live viewer's queue merges views it has not sent: the newest step, every message since
-        RobotView earlier = RobotView.of(5, 0, "a", q, a);
-        RobotView merged = v.after(earlier);
-        assertEquals(8, merged.step());
-        assertEquals(5, merged.sinceStep());
-        assertEquals(2, merged.delivered().size());
-        assertEquals(List.of("speed limit", "speed limit"), merged.notices());
-        assertEquals(0, merged.leftOut());
-        org.junit.jupiter.api.Assertions.assertSame(v, v.after(RobotView.of(5, 1, "b", idle, quiet)), "another robot's view");
-        RobotView many = v;
-        for (int k = 0; k < RobotView.MAX_LOG; k++) {
-            many = RobotView.of(9 + k, 0, "a", q, a).after(many);
-        }
-        assertEquals(RobotView.MAX_LOG, many.delivered().size());
-        assertEquals(3, many.leftOut(), "one each of sent, delivered and notices fell off the bound");
-        assertEquals(8, many.sinceStep());
-    }
-
-    @Test
     void helloWithAnotherVersionIsReadUpToTheVersionAndTheStreamStaysInStep() throws Exception {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {

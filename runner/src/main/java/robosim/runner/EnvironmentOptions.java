@@ -35,7 +35,7 @@ final class EnvironmentOptions {
     Path record;
 
     @Option(names = "--web-port", paramLabel = "PORT", description = "Serve the browser viewer on this port, on loopback "
-            + "(default: none; 0 picks a free one, said on the listening line).")
+            + "(with ROBOSIM_KEYS over TLS; default: none; 0 picks a free one, said on the listening line).")
     Integer webPort;
 
     /** What is wrong with these options, or null. */

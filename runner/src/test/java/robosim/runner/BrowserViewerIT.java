@@ -52,7 +52,7 @@ class BrowserViewerIT {
                 .sideline((env, ports) -> {
                     try (WebViewerServer web = new WebViewerServer("127.0.0.1", ports[1], null,
                             (verb, arg) -> "{\"ok\":true}")) {
-                        web.start(0);
+                        web.start(java.net.InetAddress.getLoopbackAddress(), 0);
                         WebDriver page = browser();
                         try {
                             String watched = sim.spec.robots().get(0).name();

@@ -31,7 +31,7 @@ import robosim.environment.config.EnvironmentLoader;
  * while the port goes on answering; connections over the cap are closed at once.
  */
 class ControlPortAttacksTest {
-    /** A proof deadline short enough to wait for, long enough for a TLS handshake and a proof on a loaded machine. */
+    /** A proof deadline short enough to wait for (a client that proves in time: ControlPortTest). */
     private static final int SHORT_PROOF_DEADLINE_MS = 4000;
     private static final ObjectMapper JSON = new ObjectMapper();
 
@@ -139,9 +139,6 @@ class ControlPortAttacksTest {
             raw.setSoTimeout(ControlFixture.TIMEOUT_MS);
             assertEquals(-1, silent.getInputStream().read(), "closed " + SHORT_PROOF_DEADLINE_MS
                     + " ms after connecting (over TLS) without proving the secret");
-            try (ControlClient c = f.client(keys)) {
-                assertTrue(c.request("status").path("ok").asBoolean(), "one that gives it is served");
-            }
         }
     }
 }

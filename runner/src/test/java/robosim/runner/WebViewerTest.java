@@ -38,7 +38,7 @@ class WebViewerTest {
         WebViewerServer[] web = new WebViewerServer[1];
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).sideline((env, ports) -> {
             web[0] = new WebViewerServer("127.0.0.1", ports[1], null, (verb, arg) -> "{\"ok\":true,\"message\":\"" + verb + "\"}");
-            web[0].start(0);
+            web[0].start(java.net.InetAddress.getLoopbackAddress(), 0);
             HttpClient http = HttpClient.newHttpClient();
             String base = "http://localhost:" + web[0].port();
             assertEquals(200, http.send(HttpRequest.newBuilder(URI.create(base + "/")).build(),
@@ -121,7 +121,7 @@ class WebViewerTest {
             List<JsonNode> watches = got.stream().filter(m -> m.path("request").asText().equals("watch")).toList();
             assertEquals("no robot of this run is called nobody", watches.get(0).path("error").asText(), got.toString());
             assertTrue(watches.get(1).path("ok").asBoolean(), watches.get(1).toString());
-            // the robot panel's feed: the watched robot's views, newest first merged: no message missed
+            // the robot panel's feed: the watched robot's views, each with the messages since the one before
             String watched = sim.spec.robots().get(0).name();
             long viewStep = -1;
             long next = -1;
@@ -132,7 +132,9 @@ class WebViewerTest {
                     assertEquals(watched, m.path("name").asText());
                     assertTrue(m.path("step").asLong() > viewStep && m.path("since").asLong() > viewStep, m.toString());
                     viewStep = m.path("step").asLong();
-                    assertEquals(0, m.path("leftOut").asInt(), m.toString());
+                    if (m.path("leftOut").asInt() > 0) {
+                        next = -1; // (more than a view carries came since the last: it says how many, and the newest)
+                    }
                     for (JsonNode d : m.path("delivered")) {
                         long n = Long.parseLong(d.path("text").asText());
                         assertTrue(next < 0 || n == next, "its inbox whole, in order: " + n + " where " + next + " was due");

@@ -109,7 +109,15 @@ public final class RobotFeed implements RunFollower.Listener {
         scenes.between(doing);
     }
 
+    /** The newest line of the log ("" for none): what the window says before it has a world to show. */
+    public synchronized String lastLine() {
+        return log.isEmpty() ? "" : log.getLast();
+    }
+
     private synchronized void note(String line) {
+        if (line.equals(log.peekLast())) {
+            return; // (a refusal repeated at every attempt to follow the next run: said once)
+        }
         if (log.size() == LOG_LINES) {
             log.removeFirst();
         }

@@ -18,13 +18,16 @@ import robosim.protocol.SonarSpec;
 
 /**
  * Draws one robot as it senses the world: on the left a polar plot in the robot's own frame (heading
- * up, a ring every metre), its sonar cones filled out to each range and laser-like readings (more than
+ * up, a ring every metre, or every few when it reaches far: at most ten; nothing beyond
+ * {@link #MAX_REACH_MM}), its sonar cones filled out to each range and laser-like readings (more than
  * {@link #POLAR_VALUES} values) as points; on the right its step, pose, command, contact, tag, bump
  * (front, left, back, right) and the other readings. A laser's field of view is not on the wire: its
  * beams are drawn at the default resolution of one degree each, centred on the heading. Pure drawing.
  */
 public final class RobotRenderer {
     static final int POLAR_VALUES = 8;
+    /** The farthest the plot reaches, mm (a value from the network beyond it is not drawn). */
+    static final double MAX_REACH_MM = 100_000;
     private static final Color BACKGROUND = new Color(0xF7F8FA);
     private static final Color RING = new Color(0xD5D9E0);
     private static final Color CONE = new Color(31, 119, 180, 70);
@@ -46,16 +49,16 @@ public final class RobotRenderer {
 
     private static void polar(Graphics2D g, Scene s, int robot, RobotView v, int size) {
         RobotProperties p = s.robots().get(robot);
-        double reach = 1000;
+        double reach = 1000; // mm: the farthest a sonar or laser reaches, at most MAX_REACH_MM (network values)
         for (SonarSpec spec : p.sonars()) {
-            reach = Math.max(reach, spec.maxRangeMm() + Math.hypot(spec.xMm(), spec.yMm()));
+            reach = farther(reach, spec.maxRangeMm() + Math.hypot(spec.xMm(), spec.yMm()));
         }
         List<double[]> polar = new ArrayList<>();
         for (SensorReading r : v == null ? List.<SensorReading>of() : v.readings()) {
             if (r.values().length > POLAR_VALUES) {
                 polar.add(r.values());
                 for (double d : r.values()) {
-                    reach = Math.max(reach, d);
+                    reach = farther(reach, d);
                 }
             }
         }
@@ -64,7 +67,8 @@ public final class RobotRenderer {
         double scale = (size / 2.0 - 12) / reach; // px per mm
         g.setStroke(new BasicStroke(1f));
         g.setColor(RING);
-        for (double m = 1000; m <= reach; m += 1000) {
+        double ring = 1000 * Math.ceil(reach / 10_000); // (at most ten rings)
+        for (double m = ring; m <= reach; m += ring) {
             double r = m * scale;
             g.draw(new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r));
         }
@@ -76,7 +80,10 @@ public final class RobotRenderer {
             // robot frame: x forward (screen up), y left (screen left)
             double ox = cx - spec.yMm() * scale;
             double oy = cy - spec.xMm() * scale;
-            double r = ranges[k] * scale;
+            if (!(ranges[k] >= 0)) {
+                continue; // (NaN from the network)
+            }
+            double r = Math.min(ranges[k], reach) * scale;
             g.setColor(CONE);
             g.fill(new Arc2D.Double(ox - r, oy - r, 2 * r, 2 * r, 90 + spec.angleDeg() - spec.coneDeg() / 2,
                     spec.coneDeg(), Arc2D.PIE));
@@ -85,6 +92,9 @@ public final class RobotRenderer {
         for (double[] values : polar) {
             double first = -(values.length - 1) / 2.0;
             for (int b = 0; b < values.length; b++) {
+                if (!(values[b] >= 0 && values[b] <= reach)) {
+                    continue;
+                }
                 double a = Math.toRadians(first + b);
                 double x = cx - Math.sin(a) * values[b] * scale;
                 double y = cy - Math.cos(a) * values[b] * scale;
@@ -97,7 +107,7 @@ public final class RobotRenderer {
         g.setColor(SceneRenderer.OUTLINE);
         g.draw(new Line2D.Double(cx, cy, cx, cy - rr));
         g.setFont(g.getFont().deriveFont(11f));
-        g.drawString("1 ring = 1 m, heading up", 6, size - 6);
+        g.drawString(String.format(Locale.ROOT, "1 ring = %.0f m, heading up", ring / 1000), 6, size - 6);
     }
 
     private static void facts(Graphics2D g, Scene s, int robot, RobotView v, int x, int width) {
@@ -145,6 +155,11 @@ public final class RobotRenderer {
                 g.drawString(sides[k], x + k * 62 + 6, y + 13);
             }
         }
+    }
+
+    /** The larger of {@code reach} and {@code d}, at most {@link #MAX_REACH_MM}; a value that is not finite changes nothing. */
+    private static double farther(double reach, double d) {
+        return Double.isFinite(d) ? Math.min(MAX_REACH_MM, Math.max(reach, d)) : reach;
     }
 
     /** The first reading named like a bump sensor with four values (front, left, back, right), or null. */

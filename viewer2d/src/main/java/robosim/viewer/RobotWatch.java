@@ -1,6 +1,8 @@
 package robosim.viewer;
 
 import java.io.IOException;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
 
@@ -10,6 +12,8 @@ import robosim.protocol.ViewerHello;
  * fed by it. Closing the window closes the connection.
  */
 final class RobotWatch {
+    /** The robots whose windows are open in this process: a second click brings no second window. */
+    private static final Set<String> OPEN = ConcurrentHashMap.newKeySet();
     private RobotWatch() {
     }
 
@@ -19,20 +23,32 @@ final class RobotWatch {
      */
     static void open(String host, int port, String robot, int fps, long connectTimeoutMs, long nextRunWaitMs,
             boolean only) throws IOException, InterruptedException {
+        if (!OPEN.add(robot)) {
+            return; // (its window is open already)
+        }
         ViewerHello hello = new ViewerHello(false, fps, robot);
-        ViewerClient client = ViewerClient.connect(host, port, hello, connectTimeoutMs);
+        ViewerClient client;
+        try {
+            client = ViewerClient.connect(host, port, hello, connectTimeoutMs);
+        } catch (IOException | InterruptedException | RuntimeException e) {
+            OPEN.remove(robot);
+            throw e;
+        }
         RobotFeed feed = new RobotFeed(robot, 1_000_000_000L / fps);
         RunFollower follower = new RunFollower(host, port, hello, feed, Viewer2DMain.FIRST_RETRY_MS,
                 Viewer2DMain.MAX_RETRY_MS, nextRunWaitMs);
         follower.start(client);
-        RobotWindow.open(robot + " - " + host + ":" + port, feed, fps, only, follower::close);
+        RobotWindow.open(robot + " - " + host + ":" + port, feed, fps, only, () -> {
+            follower.close();
+            OPEN.remove(robot);
+        });
     }
 
     /** From a click in the world window (Swing thread): connects on its own thread, {@code robot-window-open}. */
-    static void openLater(String host, int port, String robot, int fps, long nextRunWaitMs) {
+    static void openLater(String host, int port, String robot, int fps, long connectTimeoutMs, long nextRunWaitMs) {
         Thread t = new Thread(() -> {
             try {
-                open(host, port, robot, fps, 10_000, nextRunWaitMs, false);
+                open(host, port, robot, fps, connectTimeoutMs, nextRunWaitMs, false);
             } catch (IOException e) {
                 System.err.println("viewer2d: cannot open " + RobotFeed.clean(robot) + "'s window: " + e.getMessage());
             } catch (InterruptedException e) {

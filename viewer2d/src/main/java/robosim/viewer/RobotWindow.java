@@ -91,6 +91,9 @@ final class RobotWindow {
             frame.setTitle(feed.name() + " - " + StatusLine.state(s));
             panel.repaint();
         }
+        if (s == null) {
+            frame.setTitle(feed.name() + " - " + feed.lastLine()); // (connecting, or refused)
+        }
         long logged = feed.logged();
         if (logged != logShown) {
             logShown = logged;

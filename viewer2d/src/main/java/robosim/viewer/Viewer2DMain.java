@@ -86,7 +86,8 @@ public final class Viewer2DMain implements Callable<Integer> {
         }
         new RunFollower(host, port, hello, feed, FIRST_RETRY_MS, MAX_RETRY_MS, nextRunWaitS * 1000L).start(client);
         ViewerWindow.open("RoboSim - " + host + ":" + port, feed, new SceneRenderer.Options(true, !noTrails, sonar),
-                fps, robot -> RobotWatch.openLater(host, port, robot, fps, nextRunWaitS * 1000L));
+                fps, robot -> RobotWatch.openLater(host, port, robot, fps,
+                connectTimeoutS * 1000L, nextRunWaitS * 1000L));
         windowOpen = true;
         return 0;
     }

@@ -64,34 +64,42 @@ class RobotViewerTest {
 
     @Test
     void theRobotIsDrawnAsItSensesTheWorld() {
-        double[][] sonar = {filled(16, 3000), {}};
+        double[] sonar = new double[16];
+        sonar[1] = 3000; // (only the sonar 22.5 degrees to the left of the heading sees something)
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
-                new double[] {30, 90}, sonar);
+                new double[] {30, 90}, new double[][] {sonar, {}});
         Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(RobotModels.SCOUT, RobotModels.SCOUT),
                 poses, new double[][] {{}, {}}, 0, RunStatus.of(RunStatus.Kind.RUNNING));
+        double[] laser = filled(181, 3000);
+        Arrays.fill(laser, 0, 10, 1000); // (its rightmost beams, 90 to 81 degrees right of the heading, see close)
         int w = 900;
         int h = 500;
-        BufferedImage bumped = draw(scene, view(41, filled(181, 2000), new double[] {1, 0, 0, 0}, List.of(),
-                List.of(), List.of()), w, h);
+        BufferedImage front = draw(scene, view(41, laser, new double[] {1, 0, 0, 0}, List.of(), List.of(), List.of()), w, h);
         double scale = (h / 2.0 - 12) / (5000 + 190); // the plot fills the height; its reach: a sonar's
         int cx = h / 2;
         int cy = h / 2;
-        assertEquals(SceneRenderer.robotColor(0).getRGB() & 0xFFFFFF, bumped.getRGB(cx + 3, cy + 3) & 0xFFFFFF,
+        assertEquals(SceneRenderer.robotColor(0).getRGB() & 0xFFFFFF, front.getRGB(cx + 3, cy + 3) & 0xFFFFFF,
                 "the robot at the centre");
-        assertTrue(reddish(bumped, cx, (int) Math.round(cy - 2000 * scale)), "the laser's middle beam, ahead");
+        double right = Math.toRadians(85);
+        assertTrue(reddish(front, (int) Math.round(cx + Math.sin(right) * 1000 * scale),
+                (int) Math.round(cy - Math.cos(right) * 1000 * scale)), "the laser's first beams: right, 1 m");
+        assertFalse(reddish(front, (int) Math.round(cx - Math.sin(right) * 1000 * scale),
+                (int) Math.round(cy - Math.cos(right) * 1000 * scale)), "not left: its last beams read 3 m");
         double a = Math.toRadians(22.5);
-        int sx = (int) Math.round(cx - Math.sin(a) * 1500 * scale);
-        int sy = (int) Math.round(cy - Math.cos(a) * 1500 * scale);
-        int inCone = bumped.getRGB(sx, sy) & 0xFFFFFF;
+        int inCone = front.getRGB((int) Math.round(cx - Math.sin(a) * 1500 * scale),
+                (int) Math.round(cy - Math.cos(a) * 1500 * scale)) & 0xFFFFFF;
         assertTrue((inCone & 0xFF) > ((inCone >> 16) & 0xFF), "inside sonar 1's cone, 22.5 deg left: blue, got "
                 + Integer.toHexString(inCone));
-        int bx = (int) Math.round(cx - Math.sin(a) * 4500 * scale);
-        int by = (int) Math.round(cy - Math.cos(a) * 4500 * scale);
-        assertEquals(0xF7F8FA, bumped.getRGB(bx, by) & 0xFFFFFF, "beyond its 3 m range: nothing");
-        assertTrue(laserRed(bumped, h + 16, w), "the front bump lit");
-        BufferedImage clear = draw(scene, view(41, filled(181, 2000), new double[4], List.of(), List.of(),
-                List.of()), w, h);
-        assertFalse(laserRed(clear, h + 16, w), "no bump: nothing lit");
+        assertEquals(0xF7F8FA, front.getRGB((int) Math.round(cx + Math.sin(a) * 1500 * scale),
+                (int) Math.round(cy - Math.cos(a) * 1500 * scale)) & 0xFFFFFF, "22.5 deg right: no cone");
+        assertEquals(0xF7F8FA, front.getRGB((int) Math.round(cx - Math.sin(a) * 4500 * scale),
+                (int) Math.round(cy - Math.cos(a) * 4500 * scale)) & 0xFFFFFF, "beyond its 3 m range: nothing");
+        int box = h + 16; // (the facts begin beside the plot; the bump boxes are 62 px apart, 56 wide)
+        assertTrue(laserRed(front, box, box + 56), "the front bump lit");
+        assertFalse(laserRed(front, box + 56, w), "and no other");
+        BufferedImage left = draw(scene, view(41, laser, new double[] {0, 1, 0, 0}, List.of(), List.of(), List.of()), w, h);
+        assertFalse(laserRed(left, box, box + 56), "front not lit");
+        assertTrue(laserRed(left, box + 62, box + 62 + 56), "the left bump lit");
     }
 
     private static BufferedImage draw(Scene s, RobotView v, int w, int h) {
@@ -115,10 +123,10 @@ class RobotViewerTest {
         return false;
     }
 
-    /** Any pixel right of {@code from} in the laser/bump red exactly. */
-    private static boolean laserRed(BufferedImage img, int from, int w) {
+    /** Any pixel from column {@code from} up to {@code to} in the laser/bump red exactly. */
+    private static boolean laserRed(BufferedImage img, int from, int to) {
         for (int y = 0; y < img.getHeight(); y++) {
-            for (int x = from; x < w; x++) {
+            for (int x = from; x < to; x++) {
                 if ((img.getRGB(x, y) & 0xFFFFFF) == 0xD62728) {
                     return true;
                 }

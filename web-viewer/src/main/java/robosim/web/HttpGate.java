@@ -17,18 +17,23 @@ import java.util.Locale;
 import java.util.Set;
 
 /**
- * Every HTTP request first: only GET, only with a Host that names this machine (a page of another site
- * that a DNS name re-pointed at 127.0.0.1 gets nothing), a WebSocket only from this server's own page
- * (its Origin), and only the {@link StaticFiles}; everything else is answered with its status and closed.
+ * Every HTTP request first: only GET, a WebSocket only from this server's own page (its Origin), and only
+ * the {@link StaticFiles}; over plain HTTP (loopback) only with a Host that names this machine (a page of
+ * another site that a DNS name re-pointed at 127.0.0.1 gets nothing; over TLS such a page fails the
+ * handshake, whose certificate names no site and which asks for the simulation's key pair). Everything
+ * else is answered with its status and closed.
  */
 final class HttpGate extends SimpleChannelInboundHandler<FullHttpRequest> {
     private static final Set<String> LOCAL_HOSTS = Set.of("localhost", "127.0.0.1", "[::1]");
 
     private final StaticFiles files;
+    /** Behind TLS with the simulation's key pair: any Host (beyond loopback), pages on https. */
+    private final boolean tls;
 
-    HttpGate(StaticFiles files) {
+    HttpGate(StaticFiles files, boolean tls) {
         super(false); // (a WebSocket request goes on to the next handler, which releases it)
         this.files = files;
+        this.tls = tls;
     }
 
     @Override
@@ -37,11 +42,11 @@ final class HttpGate extends SimpleChannelInboundHandler<FullHttpRequest> {
             String host = request.headers().get(HttpHeaderNames.HOST, "");
             if (!request.decoderResult().isSuccess() || !request.method().equals(HttpMethod.GET)) {
                 refuse(ctx, HttpResponseStatus.BAD_REQUEST, "GET only");
-            } else if (!LOCAL_HOSTS.contains(hostName(host))) {
+            } else if (!tls && !LOCAL_HOSTS.contains(hostName(host))) {
                 refuse(ctx, HttpResponseStatus.MISDIRECTED_REQUEST, "this viewer answers only as localhost");
             } else if (request.uri().equals("/ws")) {
                 String origin = request.headers().get(HttpHeaderNames.ORIGIN);
-                if (origin != null && !origin.equalsIgnoreCase("http://" + host)) {
+                if (origin != null && !origin.equalsIgnoreCase((tls ? "https://" : "http://") + host)) {
                     refuse(ctx, HttpResponseStatus.FORBIDDEN, "a WebSocket only from this viewer's own page");
                 } else {
                     ctx.fireChannelRead(request.retain());

@@ -16,6 +16,7 @@ final class WatchFeeds {
     private final SimulationKeys keys;
     private final Set<WebFeed> open = ConcurrentHashMap.newKeySet();
     private final AtomicInteger serial = new AtomicInteger();
+    private volatile boolean closed;
 
     WatchFeeds(String host, int viewerPort, SimulationKeys keys) {
         this.host = host;
@@ -23,11 +24,18 @@ final class WatchFeeds {
         this.keys = keys;
     }
 
-    /** A new feed watching {@code robot}, started, sending to {@code clients}. */
+    /** A new feed watching {@code robot}, started, sending to {@code clients} (once the server is closing: never started). */
     WebFeed open(String robot, WebClients clients) {
         WebFeed f = new WebFeed(host, viewerPort, keys, robot, "web-watch-" + serial.incrementAndGet());
         open.add(f);
+        if (closed) { // (a page's request handled as the server closes)
+            close(f);
+            return f;
+        }
         f.start(clients);
+        if (closed) { // (closeAll ran meanwhile, perhaps before this one was in the set)
+            close(f);
+        }
         return f;
     }
 
@@ -37,6 +45,7 @@ final class WatchFeeds {
     }
 
     void closeAll() {
+        closed = true;
         for (WebFeed f : open) {
             close(f);
         }

@@ -72,6 +72,7 @@ final class WebClients {
         onIo(() -> {
             snapshot = json;
             robots = List.copyOf(names);
+            heldView.clear(); // (views of the world before are no use)
             update = null;
             state = null;
             for (Channel p : List.copyOf(pages.keySet())) { // (a failed write closes and removes a page)
@@ -125,7 +126,9 @@ final class WebClients {
         if (!robot.isEmpty() && !robots.contains(robot)) {
             return WebJson.refusal("no robot of this run is called " + robot);
         }
-        if (!robot.isEmpty() && !feedOf.containsKey(robot) && feedOf.size() >= MAX_WATCHED) {
+        String was = watching.get(page);
+        boolean frees = was != null && !was.equals(robot) && watching.values().stream().filter(was::equals).count() == 1;
+        if (!robot.isEmpty() && !feedOf.containsKey(robot) && feedOf.size() - (frees ? 1 : 0) >= MAX_WATCHED) {
             return WebJson.refusal("the pages watch " + MAX_WATCHED + " robots already; stop watching one first");
         }
         unwatch(page);

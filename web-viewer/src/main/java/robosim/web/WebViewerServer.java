@@ -12,6 +12,7 @@ import io.netty.channel.socket.nio.NioServerSocketChannel;
 import io.netty.handler.codec.http.HttpObjectAggregator;
 import io.netty.handler.codec.http.HttpServerCodec;
 import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
+import io.netty.handler.ssl.SslHandler;
 import io.netty.handler.timeout.ReadTimeoutHandler;
 import io.netty.handler.timeout.WriteTimeoutHandler;
 import java.io.Closeable;
@@ -27,11 +28,13 @@ import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.SimulationKeys;
+import robosim.protocol.Tls;
 
 /**
  * The browser viewer ({@code --web-port} on the Environment and on {@code replay.sh}): a page over HTTP
- * and its feed over a WebSocket ({@code /ws}), on loopback only (watch from another machine through an
- * SSH tunnel: the page has no login of its own, and nothing goes beyond loopback without one). Bounded:
+ * and its feed over a WebSocket ({@code /ws}). Without keys on loopback only; with the simulation's key
+ * pair over TLS, on any address, to browsers that hold that key pair (mutual TLS, as every other port:
+ * the browser imports {@code simulation.p12}). Bounded:
  * {@link #MAX_CONNECTIONS} connections, one request in hand a page, {@link #MAX_REQUEST} bytes a request, {@link #REQUEST_TIMEOUT_S} s to
  * send one (or open the WebSocket), {@link #MAX_FRAME} bytes a
  * frame from a page, a reply a page does not take within {@link #WRITE_TIMEOUT_S} s closes it; a Host
@@ -54,6 +57,8 @@ public final class WebViewerServer implements Closeable {
     private final StaticFiles files = new StaticFiles();
     private final WebFeed feed;
     private final WatchFeeds watchFeeds;
+    /** TLS with the simulation's key pair (with keys), or null: plain HTTP on loopback. */
+    private final Tls tls;
     private final WebCommands commands;
     private final EventLoopGroup group = new NioEventLoopGroup(1,
             (java.util.concurrent.ThreadFactory) r -> named(r, "web-io"));
@@ -69,6 +74,11 @@ public final class WebViewerServer implements Closeable {
      * @param commands what a page may ask of it
      */
     public WebViewerServer(String viewerHost, int viewerPort, SimulationKeys keys, WebCommands commands) {
+        if (keys != null && keys.tls() == null) {
+            throw new IllegalArgumentException("the browser viewer needs the simulation's key pair, not a shared secret "
+                    + "alone (scripts/make-keys.sh): a browser proves itself by TLS with it");
+        }
+        this.tls = keys == null ? null : keys.tls();
         this.feed = new WebFeed(viewerHost, viewerPort, keys);
         this.watchFeeds = new WatchFeeds(viewerHost, viewerPort, keys);
         this.clients = new WebClients(group.next(), feed::start, watchFeeds);
@@ -87,8 +97,16 @@ public final class WebViewerServer implements Closeable {
                 r -> named(r, name));
     }
 
-    /** Binds {@code port} on loopback (the feed starts with the first page); a port in use is a {@link BindException} naming it. */
-    public void start(int port) throws IOException {
+    /**
+     * Binds {@code port} on {@code bind} (without keys: loopback only); the feed starts with the first page.
+     *
+     * @throws IOException naming the port if it cannot listen (a port in use: a {@link BindException})
+     */
+    public void start(InetAddress bind, int port) throws IOException {
+        if (tls == null && !bind.isLoopbackAddress()) {
+            close();
+            throw new IOException("web port " + port + ": beyond loopback only with the simulation's keys (ROBOSIM_KEYS)");
+        }
         ServerBootstrap b = new ServerBootstrap().group(group).channel(NioServerSocketChannel.class)
                 .childOption(ChannelOption.WRITE_BUFFER_WATER_MARK, new WriteBufferWaterMark(64 * 1024, 256 * 1024))
                 .childHandler(new ChannelInitializer<SocketChannel>() {
@@ -100,15 +118,18 @@ public final class WebViewerServer implements Closeable {
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
+                        if (tls != null) {
+                            ch.pipeline().addLast(new SslHandler(tls.serverEngine())); // (the browser shows the key pair)
+                        }
                         ch.pipeline().addLast(new ReadTimeoutHandler(REQUEST_TIMEOUT_S), // (off once a page's socket is open)
                                 new WriteTimeoutHandler(WRITE_TIMEOUT_S), new HttpServerCodec(),
-                                new HttpObjectAggregator(MAX_REQUEST), new HttpGate(files),
+                                new HttpObjectAggregator(MAX_REQUEST), new HttpGate(files, tls != null),
                                 new WebSocketServerProtocolHandler("/ws", null, false, MAX_FRAME),
                                 new PageSocket(clients, commands, commandThread, statusThread));
                     }
                 });
         try {
-            server = b.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), port)).sync().channel();
+            server = b.bind(new InetSocketAddress(bind, port)).sync().channel();
         } catch (Exception e) {
             close();
             if (e instanceof BindException) {
@@ -116,7 +137,8 @@ public final class WebViewerServer implements Closeable {
             }
             throw new IOException("cannot listen on web port " + port + ": " + e.getMessage(), e);
         }
-        LOG.info("web viewer on http://localhost:{}/", port());
+        LOG.info("web viewer on {}://{}:{}/", tls == null ? "http" : "https",
+                bind.isAnyLocalAddress() || bind.isLoopbackAddress() ? "localhost" : bind.getHostAddress(), port());
     }
 
     public int port() {

@@ -1,9 +1,10 @@
 // The robot panel (the robot-specific viewer in the page): one robot as it senses the world - a polar
-// plot in its own frame (heading up, a ring every metre) of its sonar cones out to each range and its
+// plot in its own frame (heading up, a ring every metre, or every few when it reaches far) of its sonar cones out to each range and its
 // laser (a reading of more than 8 values, drawn one degree a beam, centred on the heading), its pose,
 // command, contact, tag, bump (front, left, back, right), heat and other readings, and a log of the
 // messages it sent and got and its notices. Network text is only ever set as textContent.
 const LOG_LINES = 200;
+const MAX_REACH = 100000; // mm
 
 export class RobotPanel {
   constructor(root, onWatch) {
@@ -54,8 +55,8 @@ export class RobotPanel {
   }
 
   ended(reason) {
-    this.line(`-- ${reason}`);
     this.watching('');
+    this.line(`-- ${reason}`);
   }
 
   line(text) {
@@ -94,17 +95,19 @@ export class RobotPanel {
     g.fillStyle = '#f7f8fa'; g.fillRect(0, 0, size, size);
     if (!r) return;
     const lasers = v ? v.readings.filter((s) => s.values.length > 8).map((s) => s.values) : [];
-    let reach = 1000;
-    for (const s of r.sonars) reach = Math.max(reach, s.range + Math.hypot(s.x, s.y));
-    for (const l of lasers) reach = Math.max(reach, ...l);
+    let reach = 1000; // mm: the farthest a sonar or laser reaches, at most MAX_REACH (network values)
+    const seen = (d) => { if (Number.isFinite(d)) reach = Math.min(MAX_REACH, Math.max(reach, d)); };
+    for (const s of r.sonars) seen(s.range + Math.hypot(s.x, s.y));
+    for (const l of lasers) l.forEach(seen);
     const k = (mid - 8) / reach; // px per mm; robot frame: x forward = up, y left = left
+    const ring = 1000 * Math.ceil(reach / 10000); // (at most ten rings)
     g.strokeStyle = '#d5d9e0'; g.lineWidth = 1;
-    for (let m = 1000; m <= reach; m += 1000) { g.beginPath(); g.arc(mid, mid, m * k, 0, 2 * Math.PI); g.stroke(); }
+    for (let m = ring; m <= reach; m += ring) { g.beginPath(); g.arc(mid, mid, m * k, 0, 2 * Math.PI); g.stroke(); }
     if (p && !p.gone) {
       g.fillStyle = 'rgba(31,119,180,0.3)';
       r.sonars.forEach((s, j) => {
-        const range = p.sonar[j];
-        if (range === undefined) return;
+        const range = Math.min(p.sonar[j], reach);
+        if (!Number.isFinite(range)) return;
         const ox = mid - s.y * k, oy = mid - s.x * k, a = -Math.PI / 2 - s.angle * Math.PI / 180;
         const half = s.cone * Math.PI / 360;
         g.beginPath(); g.moveTo(ox, oy); g.arc(ox, oy, range * k, a - half, a + half); g.closePath(); g.fill();
@@ -114,6 +117,7 @@ export class RobotPanel {
     for (const l of lasers) {
       const first = -(l.length - 1) / 2;
       l.forEach((d, b) => {
+        if (!Number.isFinite(d) || d > reach) return;
         const a = (first + b) * Math.PI / 180;
         g.fillRect(mid - Math.sin(a) * d * k - 1, mid - Math.cos(a) * d * k - 1, 2, 2);
       });

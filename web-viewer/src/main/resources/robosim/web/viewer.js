@@ -18,7 +18,7 @@ const panel = new RobotPanel($('robotPanel'), (name) => watch(name));
 function watch(name) { watched = name; panel.watching(name); ask('watch ' + name); redraw(); }
 
 function connect() {
-  ws = new WebSocket(`ws://${location.host}/ws`);
+  ws = new WebSocket(`${location.protocol === 'https:' ? 'wss' : 'ws'}://${location.host}/ws`);
   ws.onmessage = (e) => handle(JSON.parse(e.data));
   ws.onopen = () => { $('state').textContent = 'connected'; ask('status'); if (watched) ask('watch ' + watched); };
   ws.onclose = () => { $('state').textContent = 'not connected'; statusAsked = false; setTimeout(connect, 1000); };
@@ -72,6 +72,8 @@ function replied(m) {
       if (document.activeElement !== $('speed')) $('speed').value = String(m.speed);
     }
     if (!poses || m.state === 'PAUSED' || m.state === 'ENDED' || m.state === 'WAITING') $('state').textContent = m.state;
+  } else if (m.request === 'watch' && !m.ok) {
+    watched = ''; panel.ended(m.error); $('reply').textContent = 'watch: refused: ' + m.error;
   } else if (m.request !== 'status') {
     $('reply').textContent = m.request + ': ' + (m.ok ? (m.message || 'ok') : 'refused: ' + m.error);
   }

@@ -10,23 +10,23 @@ public final class WebViewers {
     }
 
     /**
-     * Starts the browser viewer on {@code webPort} (loopback), fed from this process's viewer port (on
-     * {@code bind}).
+     * Starts the browser viewer on {@code webPort} on {@code bind} (over TLS with the keys' key pair), fed from
+     * this process's viewer port (on {@code bind} too).
      *
-     * @throws IOException naming the port if it cannot listen
+     * @throws IOException naming the port if it cannot listen, or keys without a key pair
      */
     public static WebViewerServer start(int webPort, java.net.InetAddress bind, int viewerPort, SimulationKeys keys,
             ControlCommands commands) throws IOException {
-        if (keys != null) { // (the page has no login of its own yet: with keys, every port asks for them)
-            throw new IOException("--web-port: the browser viewer has no login of its own yet, so it is not served "
-                    + "when ROBOSIM_KEYS or ROBOSIM_SECRET_FILE is set");
+        if (keys != null && keys.tls() == null) { // (a browser cannot answer the secret's challenge: it shows the key pair)
+            throw new IOException("--web-port needs the simulation's key pair when there is a shared secret: set "
+                    + "ROBOSIM_KEYS to a directory made by scripts/make-keys.sh");
         }
         String viewerHost = (bind.isAnyLocalAddress() ? java.net.InetAddress.getLoopbackAddress() : bind).getHostAddress();
         WebViewerServer web = new WebViewerServer(viewerHost, viewerPort, keys, (verb, arg) -> {
             com.fasterxml.jackson.databind.node.ObjectNode n = commands.handle(verb, arg);
             return n == null ? ControlReplies.error("not here: " + verb).toString() : n.toString();
         });
-        web.start(webPort);
+        web.start(bind, webPort);
         return web;
     }
 }

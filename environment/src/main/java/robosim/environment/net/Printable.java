@@ -13,4 +13,10 @@ public final class Printable {
         text.codePoints().forEach(c -> out.appendCodePoint(Character.isISOControl(c) ? '?' : c));
         return out.toString();
     }
+
+    /** As {@link #of}, at most {@code max} characters of it ("..." after when cut). */
+    public static String of(String text, int max) {
+        String p = of(text);
+        return p.length() <= max ? p : p.substring(0, max) + "...";
+    }
 }

@@ -48,7 +48,8 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
         }
         int watched = refusal == null ? watched(hello.watch()) : -1;
         if (refusal == null && watched == NO_SUCH_ROBOT) {
-            refusal = "it would watch \"" + Printable.of(hello.watch()) + "\", which is not a robot of this simulation";
+            refusal = "it would watch \"" + Printable.of(hello.watch(), 64) + "\", which is not a robot of this "
+                    + "simulation";
         }
         if (refusal != null) {
             logRefused(refusal);

@@ -61,23 +61,24 @@ public final class ViewerQueue {
         return false;
     }
 
-    /** Loop thread: the step's poses. Never blocks; the loop has checked {@link #hasRoom} first. */
-    public void offer(PoseUpdate update) {
-        offer(update, null);
-    }
-
     /**
      * Loop thread: the step's poses and the watched robot's view of the step (null if it watches none or
-     * the robot is not in the step). Never blocks; the loop has checked {@link #hasRoom} first.
+     * the robot is not in the step). Never blocks; the loop has checked {@link #hasRoom} first. A live
+     * viewer's update replaces the one held; a view held with it is merged into the new view, or, when
+     * there is none (the robot has left), kept with its update ahead of the new one: no message is lost.
      */
     public synchronized void offer(PoseUpdate update, RobotView view) {
         if (closed) {
             return;
         }
         if (!everyStep) {
-            Item replaced = pending.pollFirst();
-            if (replaced != null && view != null) {
-                view = view.after(replaced.view());
+            Item replaced = pending.pollLast();
+            if (replaced != null && replaced.view() != null) {
+                if (view != null) {
+                    view = view.after(replaced.view());
+                } else {
+                    pending.addLast(replaced); // (at most two are held: this one, and the newest update)
+                }
             }
         }
         pending.addLast(new Item(update, view));

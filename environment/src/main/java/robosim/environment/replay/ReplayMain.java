@@ -42,7 +42,7 @@ public final class ReplayMain implements Callable<Integer> {
     int controlPort;
 
     @Option(names = "--web-port", defaultValue = "-1", description = "Serve the browser viewer on this port, on "
-            + "loopback only (default: none; 0 picks a free one).")
+            + "--bind; with ROBOSIM_KEYS over TLS to browsers holding the key pair (default: none; 0: a free one).")
     int webPort;
 
     @Option(names = "--bind", defaultValue = "127.0.0.1",

@@ -134,7 +134,8 @@ final class ReplayViewer implements ViewerSink, Runnable {
         }
         int watched = hello.watch().isEmpty() ? -1 : robots.indexOf(hello.watch());
         if (refusal == null && watched < 0 && !hello.watch().isEmpty()) {
-            refusal = "it would watch \"" + Printable.of(hello.watch()) + "\", which is not a robot of this recording";
+            refusal = "it would watch \"" + Printable.of(hello.watch(), 64) + "\", which is not a robot of this "
+                    + "recording";
         }
         if (refusal != null) {
             LOG.warn("{} refused: {}", name, Printable.of(refusal));

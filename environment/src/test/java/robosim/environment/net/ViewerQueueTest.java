@@ -26,7 +26,7 @@ class ViewerQueueTest {
         ViewerQueue q = new ViewerQueue(false, 0);
         for (long k = 0; k < 5000; k++) {
             assertTrue(q.hasRoom(), "a live viewer always has room");
-            q.offer(update(k));
+            q.offer(update(k), null);
         }
         assertEquals(4999, ((PoseUpdate) q.take()).step());
         SimulationEnd end = new SimulationEnd(4999, "done");
@@ -39,7 +39,7 @@ class ViewerQueueTest {
         ViewerQueue q = new ViewerQueue(true, 0);
         for (long k = 0; k < ViewerQueue.RECORDING_BACKLOG; k++) {
             assertTrue(q.hasRoom());
-            q.offer(update(k));
+            q.offer(update(k), null);
         }
         assertFalse(q.hasRoom(), "full: the loop holds the next step");
         assertFalse(q.claimRoomSignal());
@@ -52,7 +52,7 @@ class ViewerQueueTest {
     @Test
     void theEndComesAfterEveryHeldUpdateAndARunStateAfterTheUpdatesBeforeIt() throws Exception {
         ViewerQueue q = new ViewerQueue(true, 0);
-        q.offer(update(0));
+        q.offer(update(0), null);
         RunState paused = new RunState(1, RunState.Phase.PAUSED);
         q.state(paused);
         SimulationEnd end = new SimulationEnd(0, "done");
@@ -86,7 +86,12 @@ class ViewerQueueTest {
         assertEquals(1, v.sinceStep(), "with the messages of the views it replaced");
         assertEquals(List.of("m1", "m2", "m3"), v.sent().stream().map(CommEvent::payload).toList());
         assertSame(running, q.take());
-        SimulationEnd end = new SimulationEnd(3, "done");
+        q.offer(update(4), view(4, "m4"));
+        q.offer(update(5), null); // (the robot has left: its last view is not dropped for the newest update)
+        assertEquals(4, ((PoseUpdate) q.take()).step());
+        assertEquals(List.of("m4"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
+        assertEquals(5, ((PoseUpdate) q.take()).step());
+        SimulationEnd end = new SimulationEnd(5, "done");
         q.end(end);
         assertSame(end, q.take());
     }
