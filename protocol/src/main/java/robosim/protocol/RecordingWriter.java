@@ -56,7 +56,7 @@ public final class RecordingWriter implements Closeable {
             o.writeInt(n);
             for (int i = 0; i < responses.length; i++) {
                 if (responses[i] != null) {
-                    RobotView.of(update.step(), i, names.get(i), requests[i], responses[i]).writeBody(o);
+                    RobotView.writeBody(o, i, names.get(i), requests[i], responses[i]);
                 }
             }
         });

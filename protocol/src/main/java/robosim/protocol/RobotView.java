@@ -210,6 +210,25 @@ public final class RobotView implements java.io.Externalizable {
 
     /** The robot's part (also a recording's, per robot and step): robot, command, and what it got. */
     void writeBody(ObjectOutput out) throws IOException {
+        write(out, robot, moveMm, turnDeg, flags, contact, tagged, readings, sent, null, delivered, notices);
+    }
+
+    /**
+     * Writes what {@code of(step, robot, name, request, response).writeBody(out)} writes, allocating nothing
+     * (the recorder, for every robot of every step).
+     */
+    static void writeBody(ObjectOutput out, int robot, String name, StepRequest request, StepResponse response)
+            throws IOException {
+        write(out, robot, request == null ? 0 : request.moveMm(), request == null ? 0 : request.turnDeg(),
+                request == null ? 0 : (byte) ((request.wantsSonar() ? SONAR : 0) | (request.wantsTag() ? TAG : 0)),
+                response.contact(), response.tagged(), response.readings(),
+                request == null ? List.of() : request.messages(), name, response.inbox(), response.notices());
+    }
+
+    /** The body; {@code sender}: the name every sent message is from (null: each one's own {@code from}). */
+    private static void write(ObjectOutput out, int robot, double moveMm, double turnDeg, byte flags, String contact,
+            String tagged, List<SensorReading> readings, List<CommEvent> sent, String sender, List<CommEvent> delivered,
+            List<String> notices) throws IOException {
         boolean more = !contact.isEmpty() || !tagged.isEmpty() || !readings.isEmpty() || !sent.isEmpty()
                 || !delivered.isEmpty() || !notices.isEmpty();
         out.writeInt(robot);
@@ -220,7 +239,12 @@ public final class RobotView implements java.io.Externalizable {
             out.writeUTF(contact);
             out.writeUTF(tagged);
             Wire.writeReadings(out, readings);
-            Wire.writeEvents(out, sent);
+            out.writeInt(sent.size());
+            for (CommEvent m : sent) {
+                out.writeUTF(sender == null ? m.from() : sender);
+                out.writeUTF(m.to());
+                out.writeUTF(m.payload());
+            }
             Wire.writeEvents(out, delivered);
             Wire.writeStrings(out, notices);
         }

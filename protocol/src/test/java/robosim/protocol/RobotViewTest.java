@@ -77,4 +77,27 @@ class RobotViewTest {
         ProtocolException e = assertThrows(ProtocolException.class, () -> new RobotView().readExternal(in));
         assertTrue(e.getMessage().contains("since step 9"), e.getMessage());
     }
+
+    @Test
+    void theRecordersWayOfWritingABodyIsByteForByteTheViews() throws Exception {
+        StepRequest q = new StepRequest(7, 40, -5, true, List.of(new CommEvent("spoofed", "b", "hi")),
+                List.of("heat"), true);
+        StepResponse r = new StepResponse(7, 40, -5, "wall", 1, 2, 3, new double[0],
+                List.of(new CommEvent("b", "a", "yo")), List.of("speed limit"),
+                List.of(new SensorReading("heat", new double[] {21.5})), "b");
+        StepResponse quiet = new StepResponse(7, 0, 0, "", 1, 2, 3, new double[0], List.of(), List.of());
+        for (StepRequest request : java.util.Arrays.asList(q, null)) {
+            for (StepResponse response : List.of(r, quiet)) {
+                ByteArrayOutputStream direct = new ByteArrayOutputStream();
+                try (ObjectOutputStream o = new ObjectOutputStream(direct)) {
+                    RobotView.writeBody(o, 3, "a", request, response);
+                }
+                ByteArrayOutputStream viaView = new ByteArrayOutputStream();
+                try (ObjectOutputStream o = new ObjectOutputStream(viaView)) {
+                    RobotView.of(7, 3, "a", request, response).writeBody(o);
+                }
+                org.junit.jupiter.api.Assertions.assertArrayEquals(viaView.toByteArray(), direct.toByteArray());
+            }
+        }
+    }
 }
