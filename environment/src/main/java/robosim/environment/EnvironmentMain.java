@@ -157,8 +157,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         double pace = effectiveSpeed(speed, steps);
         if (steps < 0 || resetEvery < 0 || handshakeTimeoutMs < 0 || !(pace >= 0) || Double.isInfinite(pace)
                 || stepTimeoutMs < 0 || geometryTimeoutMs < 0 || writeTimeoutMs < 0) {
-            System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be "
-                    + ">= 0");
+            System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be >= 0");
             return 2;
         }
         if (maxConnections < 1) {
@@ -169,6 +168,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         SimulationKeys keys;
         try {
             keys = SimulationKeys.fromEnvironment();
+            WebViewers.check(webPort, keys);
         } catch (IOException e) {
             System.err.println("environment: " + e.getMessage());
             return 2;

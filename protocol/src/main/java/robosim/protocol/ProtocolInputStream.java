@@ -15,6 +15,8 @@ import java.io.ObjectStreamClass;
  */
 final class ProtocolInputStream extends ObjectInputStream {
     private static final String PRIMITIVE_ARRAYS = "ZBCSIJFD";
+    /** The most of a refused class's name a refusal repeats. */
+    private static final int MAX_NAME = 100;
 
     ProtocolInputStream(InputStream in, ProtocolFilter filter) throws IOException {
         super(in);
@@ -32,6 +34,7 @@ final class ProtocolInputStream extends ObjectInputStream {
                 return c;
             }
         }
+        name = name.length() > MAX_NAME ? name.substring(0, MAX_NAME) + "..." : name; // (it goes into log lines)
         if (name.startsWith("[")) {
             String component = name.substring(1);
             throw new InvalidClassException("array of " + (component.startsWith("L") && component.endsWith(";")

@@ -1,6 +1,6 @@
 package robosim.runner;
 
-import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -39,7 +39,7 @@ class WebViewerKeysTest {
         SimulationKeys keys = SimulationKeys.fromDirectory(keysDir);
         char[] secret = Files.readString(keysDir.resolve("secret")).strip().toCharArray();
         CountDownLatch checked = new CountDownLatch(1);
-        String[] got = new String[3];
+        String[] got = new String[4];
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).keys(keys)
                 .sideline((env, ports) -> {
                     try (WebViewerServer web = new WebViewerServer("127.0.0.1", ports[1], keys, (verb, arg) -> "{}")) {
@@ -56,6 +56,14 @@ class WebViewerKeysTest {
                         } catch (IOException e) {
                             got[2] = "refused: " + e;
                         }
+                        try (java.net.Socket plain = new java.net.Socket(InetAddress.getLoopbackAddress(), port)) {
+                            plain.setSoTimeout(LONG_MS);
+                            plain.getOutputStream().write("GET / HTTP/1.1\r\nHost: localhost\r\n\r\n"
+                                    .getBytes(StandardCharsets.US_ASCII));
+                            got[3] = "answered: " + line(plain.getInputStream());
+                        } catch (IOException e) {
+                            got[3] = "refused: " + e;
+                        }
                     } finally {
                         checked.countDown();
                     }
@@ -67,6 +75,7 @@ class WebViewerKeysTest {
         assertTrue(got[0].startsWith("HTTP/1.1 200"), "the page, to a browser with the key pair, by any host name: " + got[0]);
         assertTrue(got[1].startsWith("{\"type\":\"snapshot\""), "and its feed over wss: " + got[1]);
         assertTrue(got[2].startsWith("refused: "), "a client without the key pair gets nothing: " + got[2]);
+        assertFalse(got[3].contains("HTTP/1.1 200"), "nor one without TLS: " + got[3]);
 
         IllegalArgumentException secretOnly = assertThrows(IllegalArgumentException.class,
                 () -> new WebViewerServer("127.0.0.1", 1, SimulationKeys.of("a secret of more than sixteen", "test"),

@@ -95,13 +95,13 @@ public final class RobotFeed implements RunFollower.Listener {
     @Override
     public void end(SimulationEnd end) {
         scenes.end(end);
-        note("-- the simulation ended at step " + end.lastStep() + ": " + clean(end.reason()));
+        noteOnce("-- the simulation ended at step " + end.lastStep() + ": " + clean(end.reason()));
     }
 
     @Override
     public void lost(java.io.IOException cause) {
         scenes.lost(cause);
-        note("-- connection lost: " + clean(String.valueOf(cause.getMessage())));
+        noteOnce("-- connection lost: " + clean(String.valueOf(cause.getMessage())));
     }
 
     @Override
@@ -114,10 +114,14 @@ public final class RobotFeed implements RunFollower.Listener {
         return log.isEmpty() ? "" : log.getLast();
     }
 
-    private synchronized void note(String line) {
-        if (line.equals(log.peekLast())) {
-            return; // (a refusal repeated at every attempt to follow the next run: said once)
+    /** A line, unless it is the last one already (a refusal repeated at every attempt to follow the next run). */
+    private synchronized void noteOnce(String line) {
+        if (!line.equals(log.peekLast())) {
+            note(line);
         }
+    }
+
+    private synchronized void note(String line) {
         if (log.size() == LOG_LINES) {
             log.removeFirst();
         }

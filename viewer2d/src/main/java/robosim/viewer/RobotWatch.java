@@ -37,11 +37,18 @@ final class RobotWatch {
         RobotFeed feed = new RobotFeed(robot, 1_000_000_000L / fps);
         RunFollower follower = new RunFollower(host, port, hello, feed, Viewer2DMain.FIRST_RETRY_MS,
                 Viewer2DMain.MAX_RETRY_MS, nextRunWaitMs);
-        follower.start(client);
-        RobotWindow.open(robot + " - " + host + ":" + port, feed, fps, only, () -> {
+        Runnable closed = () -> {
             follower.close();
             OPEN.remove(robot);
-        });
+        };
+        try {
+            follower.start(client);
+            RobotWindow.open(robot + " - " + host + ":" + port, feed, fps, only, closed);
+        } catch (RuntimeException e) {
+            client.close();
+            closed.run();
+            throw e;
+        }
     }
 
     /** From a click in the world window (Swing thread): connects on its own thread, {@code robot-window-open}. */

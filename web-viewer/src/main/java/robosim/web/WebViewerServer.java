@@ -37,8 +37,8 @@ import robosim.protocol.Tls;
  * the browser imports {@code simulation.p12}). Bounded:
  * {@link #MAX_CONNECTIONS} connections, one request in hand a page, {@link #MAX_REQUEST} bytes a request, {@link #REQUEST_TIMEOUT_S} s to
  * send one (or open the WebSocket), {@link #MAX_FRAME} bytes a
- * frame from a page, a reply a page does not take within {@link #WRITE_TIMEOUT_S} s closes it; a Host
- * header that is not this machine's (DNS rebinding) and a WebSocket from another origin are refused.
+ * frame from a page, a reply a page does not take within {@link #WRITE_TIMEOUT_S} s closes it; without TLS a
+ * Host header that is not this machine's (DNS rebinding), and always a WebSocket from another origin, are refused.
  * Threads: {@code web-io} (netty's I/O), {@code web-status} (a page's status requests), {@code web-commands}
  * (its other requests: pause, seek...),
  * {@code web-feed} ({@link WebFeed}) and the feed's {@code viewer-client}, and for each robot a page watches
@@ -74,15 +74,25 @@ public final class WebViewerServer implements Closeable {
      * @param commands what a page may ask of it
      */
     public WebViewerServer(String viewerHost, int viewerPort, SimulationKeys keys, WebCommands commands) {
-        if (keys != null && keys.tls() == null) {
-            throw new IllegalArgumentException("the browser viewer needs the simulation's key pair, not a shared secret "
-                    + "alone (scripts/make-keys.sh): a browser proves itself by TLS with it");
-        }
-        this.tls = keys == null ? null : keys.tls();
+        this(viewerHost, viewerPort, keys, tlsOf(keys), commands);
+    }
+
+    /** (Checks the keys before any field - an event loop, executors - is made, so a refusal leaks nothing.) */
+    private WebViewerServer(String viewerHost, int viewerPort, SimulationKeys keys, Tls tls, WebCommands commands) {
+        this.tls = tls;
         this.feed = new WebFeed(viewerHost, viewerPort, keys);
         this.watchFeeds = new WatchFeeds(viewerHost, viewerPort, keys);
         this.clients = new WebClients(group.next(), feed::start, watchFeeds);
         this.commands = commands;
+    }
+
+    /** The keys' TLS (null without keys); a shared secret without the key pair is refused. */
+    private static Tls tlsOf(SimulationKeys keys) {
+        if (keys != null && keys.tls() == null) {
+            throw new IllegalArgumentException("the browser viewer needs the simulation's key pair, not a shared secret "
+                    + "alone (scripts/make-keys.sh): a browser proves itself by TLS with it");
+        }
+        return keys == null ? null : keys.tls();
     }
 
     private static Thread named(Runnable r, String name) {

@@ -106,8 +106,8 @@ export class RobotPanel {
     if (p && !p.gone) {
       g.fillStyle = 'rgba(31,119,180,0.3)';
       r.sonars.forEach((s, j) => {
+        if (!(p.sonar[j] >= 0)) return; // (none read, or not a range)
         const range = Math.min(p.sonar[j], reach);
-        if (!Number.isFinite(range)) return;
         const ox = mid - s.y * k, oy = mid - s.x * k, a = -Math.PI / 2 - s.angle * Math.PI / 180;
         const half = s.cone * Math.PI / 360;
         g.beginPath(); g.moveTo(ox, oy); g.arc(ox, oy, range * k, a - half, a + half); g.closePath(); g.fill();

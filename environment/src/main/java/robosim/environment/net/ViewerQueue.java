@@ -73,11 +73,14 @@ public final class ViewerQueue {
         }
         if (!everyStep) {
             Item replaced = pending.pollLast();
+            if (replaced != null && replaced.view() == null) {
+                replaced = pending.pollLast(); // (a view kept ahead of a view-less update, if any: see below)
+            }
             if (replaced != null && replaced.view() != null) {
                 if (view != null) {
                     view = view.after(replaced.view());
                 } else {
-                    pending.addLast(replaced); // (at most two are held: this one, and the newest update)
+                    pending.addLast(replaced); // (so at most two are held: a view kept, and the newest update)
                 }
             }
         }

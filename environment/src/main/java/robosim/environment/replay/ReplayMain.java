@@ -95,6 +95,7 @@ public final class ReplayMain implements Callable<Integer> {
         RecordingReader recording;
         try {
             keys = SimulationKeys.fromEnvironment();
+            WebViewers.check(webPort, keys);
             recording = new RecordingReader(file);
         } catch (IOException e) {
             System.err.println("replay: " + e.getMessage());

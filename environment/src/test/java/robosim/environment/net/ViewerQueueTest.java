@@ -91,6 +91,13 @@ class ViewerQueueTest {
         assertEquals(4, ((PoseUpdate) q.take()).step());
         assertEquals(List.of("m4"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
         assertEquals(5, ((PoseUpdate) q.take()).step());
+        for (long k = 6; k < 12; k += 2) { // (a replay sought back and forth across the robot's departure)
+            q.offer(update(k), view(k, "m" + k));
+            q.offer(update(k + 1), null);
+        }
+        assertEquals(10, ((PoseUpdate) q.take()).step(), "at most two held: the last view kept, with its update");
+        assertEquals(List.of("m6", "m8", "m10"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
+        assertEquals(11, ((PoseUpdate) q.take()).step(), "and the newest update");
         SimulationEnd end = new SimulationEnd(5, "done");
         q.end(end);
         assertSame(end, q.take());
