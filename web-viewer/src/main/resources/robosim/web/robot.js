@@ -18,6 +18,7 @@ export class RobotPanel {
     this.name = '';
     this.view = null;
     this.pose = null;
+    this.lines = []; // (log lines not yet shown: added to the page once a frame, not one by one)
     this.select.onchange = () => onWatch(this.select.value);
   }
 
@@ -32,7 +33,7 @@ export class RobotPanel {
 
   // the page now watches this robot ('' for none)
   watching(name) {
-    if (name !== this.name) { this.view = null; this.log.replaceChildren(); }
+    if (name !== this.name) { this.view = null; this.lines = []; this.log.replaceChildren(); }
     this.name = name;
     this.select.value = name;
     this.root.classList.toggle('idle', name === '');
@@ -60,14 +61,23 @@ export class RobotPanel {
   }
 
   line(text) {
-    const li = document.createElement('li');
-    li.textContent = text;
-    this.log.append(li);
+    this.lines.push(text);
+    if (this.lines.length > LOG_LINES) this.lines.splice(0, this.lines.length - LOG_LINES);
+  }
+
+  // the lines that came since the last frame, at once: one layout a frame however many messages came
+  showLines() {
+    if (this.lines.length === 0) return;
+    const add = document.createDocumentFragment();
+    for (const text of this.lines) { const li = document.createElement('li'); li.textContent = text; add.append(li); }
+    this.lines = [];
+    this.log.append(add);
     while (this.log.childElementCount > LOG_LINES) this.log.firstChild.remove();
     this.log.scrollTop = this.log.scrollHeight;
   }
 
   draw() {
+    this.showLines();
     if (!this.name) return;
     const r = this.robots.find((x) => x.name === this.name);
     const v = this.view, p = this.pose;

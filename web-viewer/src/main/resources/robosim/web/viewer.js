@@ -45,9 +45,9 @@ function handle(m) {
       poses = m; gone = new Set(m.departed);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
       panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
-    case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 1}`); break;
+    case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 1}`); redraw(); break;
     case 'view': panel.show(m); redraw(); break;
-    case 'viewEnded': watched = ''; panel.ended(m.reason); break;
+    case 'viewEnded': watched = ''; panel.ended(m.reason); redraw(); break;
     case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; redraw(); break;
     case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; rate = 0; redraw(); break;
     case 'reply': replied(m); break;
@@ -73,7 +73,7 @@ function replied(m) {
     }
     if (!poses || m.state === 'PAUSED' || m.state === 'ENDED' || m.state === 'WAITING') $('state').textContent = m.state;
   } else if (m.request === 'watch' && !m.ok) {
-    watched = ''; panel.ended(m.error); $('reply').textContent = 'watch: refused: ' + m.error;
+    watched = ''; panel.ended(m.error); $('reply').textContent = 'watch: refused: ' + m.error; redraw();
   } else if (m.request !== 'status') {
     $('reply').textContent = m.request + ': ' + (m.ok ? (m.message || 'ok') : 'refused: ' + m.error);
   }
