@@ -131,9 +131,7 @@ public final class RobotFeed implements RunFollower.Listener {
 
     /** Network text for a line: control characters replaced, cut to {@link #MAX_TEXT} characters. */
     static String clean(String s) {
-        StringBuilder out = new StringBuilder(Math.min(s.length(), MAX_TEXT + 3));
-        s.codePoints().limit(MAX_TEXT).forEach(c -> out.appendCodePoint(Character.isISOControl(c) ? '?' : c));
-        return s.codePointCount(0, s.length()) > MAX_TEXT ? out + "..." : out.toString();
+        return StatusLine.clean(s, MAX_TEXT);
     }
 
     /** A reading's values in short: all of a few, else how many and their range. */

@@ -36,7 +36,13 @@ public final class StatusLine {
     }
 
     private static String clean(String reason) {
-        String c = reason.replaceAll("\\p{Cntrl}", "?");
-        return c.length() > MAX_REASON ? c.substring(0, MAX_REASON) + "..." : c;
+        return clean(reason, MAX_REASON);
+    }
+
+    /** Text from the network for a window: control characters as '?', at most {@code max} characters ("..." after). */
+    static String clean(String s, int max) {
+        StringBuilder out = new StringBuilder(Math.min(s.length(), max + 3));
+        s.codePoints().limit(max).forEach(c -> out.appendCodePoint(Character.isISOControl(c) ? '?' : c));
+        return s.codePointCount(0, s.length()) > max ? out + "..." : out.toString();
     }
 }
