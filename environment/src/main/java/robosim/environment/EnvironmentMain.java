@@ -19,7 +19,6 @@ import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.GeometryLoss;
 import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
@@ -94,11 +93,8 @@ public final class EnvironmentMain implements Callable<Integer> {
                     + "that stops reading holds the run (default: ${DEFAULT-VALUE}; 0 = never).")
     long writeTimeoutMs;
 
-    @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS",
-            description = "When the Geometry process dies or hangs mid-run: IN_PROCESS (go on with in-process "
-                    + "geometry, same results; the default) or WAIT (hold the step until a new Geometry process "
-                    + "attaches). Either way a new Geometry process may attach and takes over.")
-    GeometryLoss onGeometryLoss;
+    @CommandLine.Mixin
+    LossOptions losses;
 
     @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
             description = "The control port for the Control Panel (default: ${DEFAULT-VALUE}; 0 = any free port; "
@@ -160,8 +156,10 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be >= 0");
             return 2;
         }
-        if (maxConnections < 1) {
-            System.err.println("environment: --max-connections must be >= 1, got " + maxConnections);
+        String bad = maxConnections < 1 ? "environment: --max-connections must be >= 1, got " + maxConnections
+                : losses.bad(design);
+        if (bad != null) {
+            System.err.println(bad);
             return 2;
         }
         InetAddress bindAddress = InetAddress.getByName(bind);
@@ -193,8 +191,8 @@ public final class EnvironmentMain implements Callable<Integer> {
                 .ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
                 .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
-                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(onGeometryLoss)
-                .maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
+                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(losses.onGeometryLoss)
+                .onRobotLoss(losses.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
         EnvironmentDirectories directories;
         try {
             directories = envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs);

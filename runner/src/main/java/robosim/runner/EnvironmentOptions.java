@@ -30,6 +30,12 @@ final class EnvironmentOptions {
                     + "ever). A run that lost a robot exits " + HeadlessRunner.EXIT_ROBOTS_REMOVED + ".")
     Long stepTimeoutMs;
 
+    @Option(names = "--on-robot-loss", paramLabel = "POLICY", defaultValue = "REMOVE",
+            description = "When a robot's process dies mid-run: REMOVE (the default), HOLD (it stands where it is until "
+                    + "a process says hello with its name, e.g. scripts/robot.sh, and takes it over) or WAIT (as HOLD, "
+                    + "and the world waits for it); see environment.sh --help.")
+    robosim.environment.net.RobotLoss onRobotLoss;
+
     @Option(names = "--record", paramLabel = "FILE",
             description = "Record the run into FILE, a new file (scripts/record-tool.sh reads it).")
     Path record;
@@ -55,7 +61,7 @@ final class EnvironmentOptions {
     List<String> args(Path env, long steps, boolean noGeometry, List<String> resetArgs) {
         List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
                 "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
-                "0", "--coordinator", coordinator));
+                "0", "--coordinator", coordinator, "--on-robot-loss", onRobotLoss.name()));
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }

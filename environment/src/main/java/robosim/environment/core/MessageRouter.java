@@ -12,14 +12,20 @@ import robosim.protocol.CommEvent;
  * {@link CommEvent#EVERYONE} for every other robot. A message to an unknown or departed robot, or larger than
  * the world's limit, is not delivered and the sender is told why. With a communication range, a
  * message to a robot farther away (centre to centre, at the start of the step) is dropped and
- * counted, like a radio message that does not arrive; the sender is not told.
+ * counted, like a radio message that does not arrive; the sender is not told. A robot that is away
+ * (held for its return) keeps what is sent to it, up to {@link #AWAY_INBOX} messages (past that the sender
+ * is told), and gets it all, in order, in its first response after it is back.
  */
 final class MessageRouter {
+    /** Messages kept for a robot that is away; one more is refused with a notice to its sender. */
+    static final int AWAY_INBOX = 1_000;
+
     private final Map<String, Integer> index;
     private final double rangeMm;
     private final int maxBytes;
     private final List<List<CommEvent>> inbox;
     private final List<List<String>> notices;
+    private final boolean[] away;
     private long delivered;
     private long undeliverable;
     private long outOfRange;
@@ -31,6 +37,7 @@ final class MessageRouter {
         this.maxBytes = maxBytes;
         this.inbox = new ArrayList<>(robots);
         this.notices = new ArrayList<>(robots);
+        this.away = new boolean[robots];
         for (int i = 0; i < robots; i++) {
             inbox.add(new ArrayList<>());
             notices.add(new ArrayList<>());
@@ -73,6 +80,12 @@ final class MessageRouter {
             outOfRange++;
             return;
         }
+        if (away[to] && inbox.get(to).size() >= AWAY_INBOX) {
+            notice(from, "message to " + toName + " not delivered: it is away and " + AWAY_INBOX
+                    + " messages already wait for its return");
+            undeliverable++;
+            return;
+        }
         inbox.get(to).add(new CommEvent(fromName, toName, payload));
         delivered++;
     }
@@ -81,9 +94,14 @@ final class MessageRouter {
         notices.get(robot).add(text);
     }
 
-    /** This step's messages for {@code robot}, removed from its inbox. */
+    /** Robot {@code robot} is away (its messages wait in its inbox) or back. */
+    void away(int robot, boolean isAway) {
+        away[robot] = isAway;
+    }
+
+    /** This step's messages for {@code robot}, removed from its inbox; none while it is away. */
     List<CommEvent> takeInbox(int robot) {
-        return take(inbox, robot);
+        return away[robot] ? List.of() : take(inbox, robot);
     }
 
     List<String> takeNotices(int robot) {

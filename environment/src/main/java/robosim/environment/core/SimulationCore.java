@@ -81,6 +81,15 @@ public final class SimulationCore {
         sensing.depart(robot);
     }
 
+    /**
+     * Robot {@code robot} is away but stays in the world ({@code --on-robot-loss HOLD} or {@code WAIT}): it
+     * sends no request, so it stands still where it is, blocks and echoes; messages to it are kept for its
+     * return ({@code away} false), when its first response carries them, in order.
+     */
+    public void away(int robot, boolean away) {
+        router.away(robot, away);
+    }
+
     /** True while robot {@code robot} takes part (it has not left). */
     public boolean present(int robot) {
         return !map.isGone(robot);

@@ -38,7 +38,12 @@ final class Handshakes {
     /** The welcome of robot {@code index}: the time step, its start pose, every robot's name, its sensors. */
     RobotWelcome welcome(int index) {
         WorldSpec.RobotSpec r = spec.robots().get(index);
-        return RobotWelcome.accepted(spec.timeStepMs(), r.xMm(), r.yMm(), r.headingDeg(), names, r.sensorNames())
-                .withStepMessages(stepMessages);
+        return welcome(index, r.xMm(), r.yMm(), r.headingDeg());
+    }
+
+    /** The welcome of robot {@code index} at a pose of its own: where it stands when it comes back mid-run. */
+    RobotWelcome welcome(int index, double xMm, double yMm, double headingDeg) {
+        return RobotWelcome.accepted(spec.timeStepMs(), xMm, yMm, headingDeg, names,
+                spec.robots().get(index).sensorNames()).withStepMessages(stepMessages);
     }
 }

@@ -25,6 +25,10 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     private volatile int index = -1;
     /** The last step number the loop has handed this robot (-1 before the first). */
     private volatile long given = -1;
+    /** The first step number the loop handed this robot: 0, or a later one for a robot that came back. */
+    private volatile long first = -1;
+    /** {@link #readRequest}'s step for the first request, whichever step that is. */
+    static final long FIRST = -1;
     private volatile RobotWriter writer;
     private boolean stepMessages = true;
     private String robotName = "";
@@ -69,8 +73,10 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
                 coordinator.awaitEnd(); // the stepper reads the rest; this thread holds the session
                 return;
             }
-            for (long k = 0; ; k++) {
-                coordinator.post(new LoopEvent.Request(this, readRequest(k)), () -> { });
+            for (long k = FIRST; ; k++) {
+                StepRequest request = readRequest(k);
+                k = request.step();
+                coordinator.post(new LoopEvent.Request(this, request), () -> { });
             }
         } finally {
             RobotWriter w = writer;
@@ -106,14 +112,16 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     }
 
     /**
-     * Reads and checks this robot's request for step k (its worker's or the stepper's thread): it must
-     * be for step k, a step this robot has been given, with finite numbers.
+     * Reads and checks this robot's request for step k ({@link #FIRST}: the first it was given), on its
+     * worker's or the stepper's thread: it must be for that step, a step this robot has been given, with
+     * finite numbers.
      */
-    StepRequest readRequest(long k) throws IOException {
+    StepRequest readRequest(long due) throws IOException {
         StepRequest request = connection.read(StepRequest.class);
         if (given < 0) {
             throw new ProtocolException("sent a request before the simulation started");
         }
+        long k = due == FIRST ? first : due;
         if (request.step() != k || k > given) {
             throw new ProtocolException("sent a request for step " + request.step() + " where step "
                     + Math.min(k, given) + " was due");
@@ -147,6 +155,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     /** Loop thread: sends the first step number. */
     @Override
     public void begin(long firstStep) throws IOException {
+        first = firstStep;
         given = firstStep;
         writingSince = System.nanoTime();
         try {

@@ -1,7 +1,6 @@
 package robosim.environment.net;
 
 import java.io.IOException;
-import java.util.ArrayList;
 import java.util.List;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -35,7 +34,6 @@ abstract class RunLifecycle {
     final RobotPeer[] robots;
     /** Robots that left during the step being resolved or released: they go at its end. */
     final boolean[] leaving;
-    private final List<PendingDeparture> deferred = new ArrayList<>();
     final long stepTimeoutNanos;
     StepRequest[] requests;
     StepRequest[] inFlight;
@@ -162,7 +160,7 @@ abstract class RunLifecycle {
         releasedNanos = now;
         phase = Phase.COLLECTING;
         for (int i = 0; i < robots.length; i++) {
-            if (!core.present(i)) {
+            if (!core.present(i) || away(i)) {
                 continue;
             }
             try {
@@ -172,6 +170,7 @@ abstract class RunLifecycle {
                 depart(i, "could not send it the first step: " + e.getMessage());
             }
         }
+        bringBackReturning();
         if (settings.design() == CoordinatorDesign.SEQUENTIAL) {
             SequentialReader.start(coordinator, robots);
         }
@@ -180,60 +179,19 @@ abstract class RunLifecycle {
         return true;
     }
 
-    // ---- robots leaving, deadlines --------------------------------------------------------------------
+    // ---- robots leaving and coming back ({@link RosterCycle}) ------------------------------------------
 
-    /** Robot i's connection has closed or failed. */
-    void leave(int i, String why) {
-        if (core != null && core.present(i) && phase != Phase.ENDED) {
-            depart(i, why);
-        }
-    }
-
-    /**
-     * Robot i no longer takes part; it stands where it is. While a step is being resolved or released
-     * (its request is already in that step) it goes at the end of that step instead, so a departure
-     * changes no step half-way and the others' poses do not depend on when its socket closed.
-     */
-    void depart(int i, String why) {
-        if (phase == Phase.RESOLVING || phase == Phase.RELEASING) {
-            if (!leaving[i]) {
-                leaving[i] = true;
-                deferred.add(new PendingDeparture(i, why));
-            }
-            return;
-        }
-        core.depart(i);
-        activeCount--;
-        rosterChanged = true;
-        if (requests[i] != null) {
-            requests[i] = null;
-            arrived--;
-        }
-        String safe = Printable.of(why);
-        Departure d = new Departure(spec.robots().get(i).name(), step, safe);
-        record.departures.add(d);
-        LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(), step,
-                safe);
-        listener.robotLeft(d);
-    }
+    /** Robot i no longer takes part (at the step's end if one is under way). */
+    abstract void depart(int i, String why);
 
     /** The departures held back during the step just released take effect now. */
-    void departDeferred() {
-        if (deferred.isEmpty()) {
-            return;
-        }
-        List<PendingDeparture> due = List.copyOf(deferred);
-        deferred.clear();
-        for (PendingDeparture p : due) {
-            leaving[p.robot()] = false;
-            if (core.present(p.robot())) {
-                depart(p.robot(), p.why());
-            }
-        }
-    }
+    abstract void departDeferred();
 
-    private record PendingDeparture(int robot, String why) {
-    }
+    /** Robots whose new connection waits for the next step take part from the step being collected. */
+    abstract void bringBackReturning();
+
+    /** True if robot i is in the world but away (lost under {@code HOLD} or {@code WAIT}). */
+    abstract boolean away(int i);
 
     // ---- viewers and run control -----------------------------------------------------------------------
 
@@ -277,7 +235,7 @@ abstract class RunLifecycle {
         if (!robotsTold) {
             robotsTold = true;
             for (int i = 0; i < robots.length; i++) {
-                if (robots[i] != null && (!started || core == null || core.present(i))) {
+                if (robots[i] != null && !robots[i].closed() && (!started || core == null || core.present(i))) {
                     robots[i].end(end, robots[i].begun());
                 }
             }

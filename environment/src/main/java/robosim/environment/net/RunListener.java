@@ -8,6 +8,14 @@ public interface RunListener {
     default void robotLeft(Departure departure) {
     }
 
+    /** A robot was lost and stays in the world for its return ({@code --on-robot-loss HOLD} or {@code WAIT}). */
+    default void robotHeld(String robot, long step, String why) {
+    }
+
+    /** A lost robot's new connection takes part again from {@code step}. */
+    default void robotReturned(String robot, long step) {
+    }
+
     default void geometryLost(long step) {
     }
 

@@ -35,6 +35,16 @@ final class RunListeners implements RunListener {
     }
 
     @Override
+    public void robotHeld(String robot, long step, String why) {
+        each(l -> l.robotHeld(robot, step, why));
+    }
+
+    @Override
+    public void robotReturned(String robot, long step) {
+        each(l -> l.robotReturned(robot, step));
+    }
+
+    @Override
     public void geometryLost(long step) {
         each(l -> l.geometryLost(step));
     }

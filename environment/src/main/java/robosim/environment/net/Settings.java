@@ -8,7 +8,8 @@ import robosim.protocol.SimulationKeys;
  * How one simulation runs, in three named groups: where it listens ({@link Ports}), how long it waits
  * ({@link Timeouts}) and the run's shape ({@link Shape}: design, geometry, steps, pace). Build one with
  * {@link #builder()}; every value has a default a user would expect: loopback, the paper's ports, the
- * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped; and the file the
+ * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped, a lost robot
+ * removed; and the file the
  * run is recorded into ({@code record}, null: none).
  */
 public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.file.Path record) {
@@ -43,11 +44,11 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
      * The run: the coordinator design; geometry in-process ({@code --no-geometry}) or a Geometry process
      * and what to do when it is lost; steps to run (0: until stopped); the pace ({@code speed} times real
      * time, 0 as fast as possible); the step number after every response ({@code stepMessages}, else only
-     * step 0 and robots count on); the object streams' reset interval.
+     * step 0 and robots count on); the object streams' reset interval; what to do when a robot is lost.
      */
     public record Shape(CoordinatorDesign design, boolean inProcessGeometry,
             GeometryLoss onGeometryLoss, long maxSteps, double speed, boolean stepMessages,
-            int resetEvery) {
+            int resetEvery, RobotLoss onRobotLoss) {
     }
 
     public static Builder builder() {
@@ -70,6 +71,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         b.speed = shape.speed();
         b.stepMessages = shape.stepMessages();
         b.resetEvery = shape.resetEvery();
+        b.onRobotLoss = shape.onRobotLoss();
         b.record = record;
         return b;
     }
@@ -126,6 +128,10 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         return shape.onGeometryLoss();
     }
 
+    public RobotLoss onRobotLoss() {
+        return shape.onRobotLoss();
+    }
+
     public long maxSteps() {
         return shape.maxSteps();
     }
@@ -162,6 +168,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         private boolean stepMessages = true;
         private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
         private java.nio.file.Path record;
+        private RobotLoss onRobotLoss = RobotLoss.REMOVE;
 
         private Builder() {
         }
@@ -221,6 +228,11 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
             return this;
         }
 
+        public Builder onRobotLoss(RobotLoss policy) {
+            this.onRobotLoss = policy;
+            return this;
+        }
+
         public Builder maxSteps(long steps) {
             this.maxSteps = steps;
             return this;
@@ -250,7 +262,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         public Settings build() {
             return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, keys),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
-                    new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery),
+                    new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery,
+                            onRobotLoss),
                     record);
         }
     }

@@ -144,7 +144,7 @@ final class SimulationLoop implements Runnable {
     private String register(LoopEvent.RobotJoins j) {
         int index = j.index();
         if (!cycle.waiting()) {
-            return "the simulation is " + (cycle.ended() ? "over" : "already running");
+            return cycle.rejoin(j.worker(), j.hello(), index, handshakes);
         }
         if (robots[index] != null) {
             return "robot " + j.hello().name() + " is already connected";

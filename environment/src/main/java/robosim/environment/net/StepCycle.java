@@ -23,7 +23,7 @@ import robosim.protocol.RunState;
  * next step number, then the poses to the viewers), and the deadlines of each phase. The run's start
  * and end are {@link RunLifecycle}'s. Loop thread only.
  */
-final class StepCycle extends RunLifecycle {
+final class StepCycle extends RosterCycle {
     private static final Logger LOG = LoggerFactory.getLogger(StepCycle.class);
 
     /** The requests of the step last computed, kept until the next: what each robot asked (its view). */
@@ -51,11 +51,11 @@ final class StepCycle extends RunLifecycle {
                     startRecording(); // (before step 0 is computed: the world as it starts)
                 }
                 case COLLECTING -> {
-                    if (activeCount == 0) {
+                    if (activeCount == 0 && !away.any()) {
                         finish("every robot has left", false);
                         return;
                     }
-                    if (arrived < activeCount) {
+                    if (arrived < activeCount || away.worldWaits()) {
                         return;
                     }
                     compute();
@@ -77,7 +77,7 @@ final class StepCycle extends RunLifecycle {
 
     void request(RobotPeer worker, StepRequest request) {
         int i = worker.index();
-        if (i < 0 || robots[i] != worker || core == null || !core.present(i) || phase == Phase.ENDED) {
+        if (i < 0 || robots[i] != worker || core == null || !core.present(i) || away.isAway(i) || phase == Phase.ENDED) {
             return; // gone already, or the run is over: nothing to do with it
         }
         if (phase != Phase.COLLECTING || request.step() != step || requests[i] != null) {
@@ -179,7 +179,7 @@ final class StepCycle extends RunLifecycle {
             record.completed = true;
         }
         for (int i = 0; i < robots.length; i++) {
-            if (!core.present(i)) {
+            if (!core.present(i) || away.isAway(i)) {
                 continue;
             }
             if (leaving[i]) {
@@ -214,6 +214,7 @@ final class StepCycle extends RunLifecycle {
         } else {
             phase = Phase.COLLECTING;
             departDeferred();
+            bringBackReturning();
         }
     }
 
@@ -226,10 +227,13 @@ final class StepCycle extends RunLifecycle {
                     settings.geometryTimeoutMs(), step);
             geometryLost(late, "no answer within " + settings.geometryTimeoutMs() + " ms");
         }
+        if (phase == Phase.COLLECTING) {
+            removeOverdue(now);
+        }
         if (phase == Phase.COLLECTING && now - releasedNanos > stepTimeoutNanos) {
             boolean sequential = settings.design() == CoordinatorDesign.SEQUENTIAL;
             for (int i = 0; i < robots.length; i++) {
-                if (core.present(i) && requests[i] == null) {
+                if (core.present(i) && requests[i] == null && !away.isAway(i)) {
                     robots[i].drop();
                     depart(i, "sent no request for step " + step + " within " + settings.stepTimeoutMs()
                             + " ms (step timeout)");
@@ -272,7 +276,7 @@ final class StepCycle extends RunLifecycle {
         StepRequest[] asked = new StepRequest[robots.length];
         StepResponse[] responses = new StepResponse[robots.length];
         for (int i = 0; i < robots.length; i++) {
-            if (core.present(i) && !leaving[i]) {
+            if (core.present(i) && !leaving[i] && !away.isAway(i)) {
                 asked[i] = releasedRequests[i];
                 responses[i] = core.response(i);
             }
@@ -282,7 +286,7 @@ final class StepCycle extends RunLifecycle {
 
     /** Robot i's view of the step just released, for a viewer that watches it; null if it is not in it. */
     private RobotView viewOf(int i) {
-        if (i >= robots.length || !core.present(i) || leaving[i]) {
+        if (i >= robots.length || !core.present(i) || leaving[i] || away.isAway(i)) {
             return null;
         }
         return RobotView.of(step - 1, i, spec.robots().get(i).name(), releasedRequests[i], core.response(i));

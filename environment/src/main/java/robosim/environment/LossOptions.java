@@ -1,0 +1,31 @@
+package robosim.environment;
+
+import picocli.CommandLine.Option;
+import robosim.environment.net.CoordinatorDesign;
+import robosim.environment.net.GeometryLoss;
+import robosim.environment.net.RobotLoss;
+
+/** The Environment's options for losing a client mid-run: its Geometry process, a robot (a picocli mixin). */
+final class LossOptions {
+    @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS",
+            description = "When the Geometry process dies or hangs mid-run: IN_PROCESS (go on with in-process "
+                    + "geometry, same results; the default) or WAIT (hold the step until a new Geometry process "
+                    + "attaches). Either way a new Geometry process may attach and takes over.")
+    GeometryLoss onGeometryLoss;
+
+    @Option(names = "--on-robot-loss", defaultValue = "REMOVE",
+            description = "When a robot's connection closes or fails mid-run: REMOVE (take it out of the world; the "
+                    + "default), HOLD (it stands where it is, messages to it are kept, and a robot process that says "
+                    + "hello with its name takes it over at the next step) or WAIT (as HOLD, but the world waits for "
+                    + "it, at most the step timeout, then removes it).")
+    RobotLoss onRobotLoss;
+
+    /** What is wrong with these options beside {@code design}, or null. */
+    String bad(CoordinatorDesign design) {
+        if (onRobotLoss != RobotLoss.REMOVE && design == CoordinatorDesign.SEQUENTIAL) {
+            return "environment: --on-robot-loss " + onRobotLoss + " needs the THREADS or TWO_THREADS coordinator: "
+                    + "the SEQUENTIAL loop reads a fixed list of robots, so a robot cannot come back";
+        }
+        return null;
+    }
+}

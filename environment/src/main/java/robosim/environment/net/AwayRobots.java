@@ -1,0 +1,89 @@
+package robosim.environment.net;
+
+/**
+ * The robots that were lost mid-run and stay in the world for their return ({@code --on-robot-loss HOLD}
+ * or {@code WAIT}): since which step and when each is away, and which has a new connection that takes
+ * over at the next step. A robot the world waits for ({@code WAIT}) is counted until it is back or
+ * removed. Loop thread only.
+ */
+final class AwayRobots {
+    private final boolean[] away;
+    private final boolean[] returning;
+    private final long[] sinceStep;
+    private final long[] sinceNanos;
+    private final boolean waitPolicy;
+    private int awayCount;
+    private int waitedFor;
+
+    AwayRobots(int robots, RobotLoss policy) {
+        this.away = new boolean[robots];
+        this.returning = new boolean[robots];
+        this.sinceStep = new long[robots];
+        this.sinceNanos = new long[robots];
+        this.waitPolicy = policy == RobotLoss.WAIT;
+    }
+
+    /** Robot i is away from step {@code step} on, lost at {@code now}. */
+    void leave(int i, long step, long now) {
+        if (!away[i]) {
+            awayCount++;
+        }
+        away[i] = true;
+        returning[i] = false;
+        sinceStep[i] = step;
+        sinceNanos[i] = now;
+        if (waitPolicy) {
+            waitedFor++;
+        }
+    }
+
+    /** Robot i has a new connection, which takes over at the next step. */
+    void returning(int i) {
+        returning[i] = true;
+    }
+
+    /** Robot i's new connection closed before it took over: it is away as before. */
+    void notReturning(int i) {
+        returning[i] = false;
+    }
+
+    /** Robot i takes part again, or is removed: it is no longer away. */
+    void clear(int i) {
+        if (away[i]) {
+            awayCount--;
+            if (waitPolicy) {
+                waitedFor--;
+            }
+        }
+        away[i] = false;
+        returning[i] = false;
+    }
+
+    boolean isAway(int i) {
+        return away[i];
+    }
+
+    boolean isReturning(int i) {
+        return returning[i];
+    }
+
+    /** The first step robot i did not take part in. */
+    long sinceStep(int i) {
+        return sinceStep[i];
+    }
+
+    /** True if robot i is away, the world waits for it, and it has been away longer than {@code limitNanos}. */
+    boolean waitedTooLong(int i, long now, long limitNanos) {
+        return waitPolicy && away[i] && !returning[i] && now - sinceNanos[i] > limitNanos;
+    }
+
+    /** True while a robot is away. */
+    boolean any() {
+        return awayCount > 0;
+    }
+
+    /** True while the world waits for a robot ({@code WAIT}) that has not come back. */
+    boolean worldWaits() {
+        return waitedFor > 0;
+    }
+}

@@ -1,0 +1,205 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotProperties;
+
+/**
+ * Robots leaving and coming back mid-run, as the {@link SimulationLoop} sees it: a robot whose connection
+ * closes, fails or breaks the protocol is removed ({@code --on-robot-loss REMOVE}) or stays in the world
+ * standing still for its return ({@code HOLD}, {@code WAIT}: {@link AwayRobots}); a process that says hello
+ * with an away robot's name takes it over, at its current pose, at the next step. A change never happens
+ * half-way through a step: while one is resolved or released it waits for the step's end, so the others'
+ * poses do not depend on when a socket closed or a hello came. Loop thread only.
+ */
+abstract class RosterCycle extends RunLifecycle {
+    final AwayRobots away;
+    private final List<PendingDeparture> deferred = new ArrayList<>();
+
+    RosterCycle(ClientWorkerCoordinator coordinator, RunListener listener) {
+        super(coordinator, listener);
+        this.away = new AwayRobots(robots.length, settings.onRobotLoss());
+    }
+
+    /** Robot i's connection has closed or failed. */
+    void leave(int i, String why) {
+        if (core == null || !core.present(i) || phase == Phase.ENDED) {
+            return;
+        }
+        if (away.isAway(i)) {
+            away.notReturning(i); // the new connection went before it took over: away as before
+            rosterChanged = true;
+            return;
+        }
+        depart(i, why);
+    }
+
+    /**
+     * Robot i no longer takes part: it is removed, or held for its return. While a step is being resolved
+     * or released (its request is already in that step) this happens at the end of that step instead.
+     */
+    @Override
+    void depart(int i, String why) {
+        if (phase == Phase.RESOLVING || phase == Phase.RELEASING) {
+            if (!leaving[i]) {
+                leaving[i] = true;
+                deferred.add(new PendingDeparture(i, why));
+            }
+            return;
+        }
+        if (away.isAway(i)) {
+            return;
+        }
+        activeCount--;
+        rosterChanged = true;
+        if (requests[i] != null) {
+            requests[i] = null;
+            arrived--;
+        }
+        String safe = Printable.of(why);
+        String name = spec.robots().get(i).name();
+        if (settings.onRobotLoss() == RobotLoss.REMOVE) {
+            remove(i, safe);
+            return;
+        }
+        away.leave(i, step, System.nanoTime());
+        core.away(i, true);
+        LOG.warn("robot {} lost at step {} ({}); it stands where it is until a robot process says hello as {}{}",
+                name, step, safe, name, settings.onRobotLoss() == RobotLoss.WAIT
+                        ? ", and the world waits for it" + limit() : "");
+        listener.robotHeld(name, step, safe);
+    }
+
+    private String limit() {
+        return settings.stepTimeoutMs() > 0 ? " (at most " + settings.stepTimeoutMs() + " ms: the step timeout)" : "";
+    }
+
+    /** Takes robot i out of the world for good; {@code why} is safe to print. */
+    private void remove(int i, String why) {
+        away.clear(i);
+        core.depart(i);
+        rosterChanged = true;
+        Departure d = new Departure(spec.robots().get(i).name(), step, why);
+        record.departures.add(d);
+        LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(), step,
+                why);
+        listener.robotLeft(d);
+    }
+
+    /** The departures held back during the step just released take effect now. */
+    @Override
+    void departDeferred() {
+        if (deferred.isEmpty()) {
+            return;
+        }
+        List<PendingDeparture> due = List.copyOf(deferred);
+        deferred.clear();
+        for (PendingDeparture p : due) {
+            leaving[p.robot()] = false;
+            if (core.present(p.robot())) {
+                depart(p.robot(), p.why());
+            }
+        }
+    }
+
+    @Override
+    void bringBackReturning() {
+        for (int i = 0; i < robots.length; i++) {
+            if (away.isReturning(i)) {
+                bringBack(i);
+            }
+        }
+    }
+
+    @Override
+    boolean away(int i) {
+        return away.isAway(i);
+    }
+
+    private record PendingDeparture(int robot, String why) {
+    }
+
+    /**
+     * A hello naming robot i after the start: null (its welcome, with its current pose, is sent, and it
+     * takes part from the next step) or the refusal.
+     */
+    String rejoin(RobotPeer worker, RobotHello hello, int i, Handshakes handshakes) {
+        String name = spec.robots().get(i).name();
+        if (phase == Phase.ENDED) {
+            return "the simulation is over";
+        }
+        if (settings.onRobotLoss() == RobotLoss.REMOVE) {
+            return "the simulation is already running (a lost robot may come back only when the Environment runs "
+                    + "with --on-robot-loss HOLD or WAIT)";
+        }
+        if (core == null || !core.present(i)) {
+            return "robot " + name + " has been removed from the simulation";
+        }
+        if (!away.isAway(i) && !leaving[i]) {
+            if (!robots[i].closed()) {
+                return "robot " + name + " is already connected (a new process takes over only once the old "
+                        + "connection has closed)";
+            }
+            depart(i, "its connection closed"); // before the loop heard of it: it hears now
+        }
+        if (away.isReturning(i)) {
+            return "robot " + name + " is already coming back on another connection";
+        }
+        if (!hello.properties().equals(registered[i])) {
+            return "robot " + name + " comes back with " + difference(hello.properties(), registered[i]);
+        }
+        try {
+            worker.welcome(handshakes.welcome(i, core.map().xMm(i), core.map().yMm(i), core.map().headingDeg(i)));
+        } catch (IOException e) {
+            return "its welcome could not be sent: " + e.getMessage();
+        }
+        robots[i] = worker;
+        away.returning(i);
+        rosterChanged = true;
+        if (phase == Phase.COLLECTING && !leaving[i]) {
+            bringBack(i); // the step being collected is its first
+        }
+        return null;
+    }
+
+    /** How a returning robot's properties differ from those it had (the file's checks passed already). */
+    private static String difference(RobotProperties now, RobotProperties was) {
+        if (now.maxSpeedMmPerS() != was.maxSpeedMmPerS()) {
+            return "a top speed of " + now.maxSpeedMmPerS() + " mm/s where it had " + was.maxSpeedMmPerS();
+        }
+        if (now.maxTurnDegPerS() != was.maxTurnDegPerS()) {
+            return "a top turn rate of " + now.maxTurnDegPerS() + " deg/s where it had " + was.maxTurnDegPerS();
+        }
+        return "other sonars or properties than it had";
+    }
+
+    /** Robot i's new connection takes part from the step being collected: it gets that step's number. */
+    private void bringBack(int i) {
+        String name = spec.robots().get(i).name();
+        long since = away.sinceStep(i);
+        away.clear(i);
+        core.away(i, false);
+        activeCount++;
+        rosterChanged = true;
+        releasedNanos = System.nanoTime(); // its step timeout runs from now, as the others' did from their step
+        LOG.info("robot {} is back at step {}, where it stood since step {}", name, step, since);
+        listener.robotReturned(name, step);
+        try {
+            robots[i].begin(step);
+        } catch (IOException e) {
+            robots[i].drop();
+            depart(i, "could not send it step " + step + ": " + e.getMessage());
+        }
+    }
+
+    /** Deadlines of robots the world waits for ({@code WAIT}): one away longer than the step timeout is removed. */
+    void removeOverdue(long now) {
+        for (int i = 0; i < robots.length; i++) {
+            if (away.waitedTooLong(i, now, stepTimeoutNanos)) {
+                remove(i, "did not come back within " + settings.stepTimeoutMs() + " ms (step timeout)");
+            }
+        }
+    }
+}
