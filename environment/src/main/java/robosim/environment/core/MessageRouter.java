@@ -99,6 +99,16 @@ final class MessageRouter {
         away[robot] = isAway;
     }
 
+    /** Messages taken for {@code robot} that never reached it: they go back before what waits for it now. */
+    void putBack(int robot, List<CommEvent> messages) {
+        if (messages.isEmpty()) {
+            return;
+        }
+        List<CommEvent> l = new ArrayList<>(messages);
+        l.addAll(inbox.get(robot));
+        inbox.set(robot, l);
+    }
+
     /** This step's messages for {@code robot}, removed from its inbox; none while it is away. */
     List<CommEvent> takeInbox(int robot) {
         return away[robot] ? List.of() : take(inbox, robot);

@@ -90,6 +90,18 @@ public final class SimulationCore {
         router.away(robot, away);
     }
 
+    /**
+     * Robot {@code robot}'s response to the last step will not be sent (it left during the step): its
+     * messages go back to its inbox, for its return, and its response (for viewers and the recording) says
+     * that nothing reached it.
+     */
+    public void withhold(int robot) {
+        StepResponse r = responses[robot];
+        router.putBack(robot, r.inbox());
+        responses[robot] = new StepResponse(r.step(), r.movedMm(), r.turnedDeg(), r.contact(), r.xMm(), r.yMm(),
+                r.headingDeg(), r.sonarMm(), List.of(), List.of(), r.readings(), r.tagged());
+    }
+
     /** True while robot {@code robot} takes part (it has not left). */
     public boolean present(int robot) {
         return !map.isGone(robot);

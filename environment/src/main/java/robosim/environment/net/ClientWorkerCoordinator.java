@@ -225,6 +225,18 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
+    /**
+     * Removes robot {@code name} from the run for good, whatever {@code --on-robot-loss} says: it is told the
+     * simulation is over for it, and stands no more in the world from the end of the step in progress.
+     * Returns null, or why not (no such robot, not running, already gone).
+     */
+    public String remove(String name) throws InterruptedException {
+        CompletableFuture<String> verdict = new CompletableFuture<>();
+        post(new LoopEvent.RemoveRobot(name, verdict), () -> verdict.complete("the simulation is over"));
+        String why = await(verdict, STOP_WAIT_MS, TimeUnit.MILLISECONDS);
+        return why == null && !verdict.isDone() ? "the simulation loop did not answer" : why;
+    }
+
     /** Ends the simulation: robots, viewers and Geometry are told why. Returns once it has ended (at most a few s). */
     public void stop(String reason) {
         if (loop == null) {
@@ -257,7 +269,7 @@ public final class ClientWorkerCoordinator implements Closeable {
             }
         }
         return new RunStatus(state, r.stepsReleased, state == RunStatus.State.RUNNING ? r.recentRate : 0, robotNames,
-                List.copyOf(connected), List.copyOf(left), r.geometry, r.endReason, cycle.viewers().count());
+                List.copyOf(connected), List.copyOf(left), r.geometry, r.endReason, cycle.viewers().count(), r.states);
     }
 
     public RunSummary summary() {

@@ -42,14 +42,26 @@ abstract class RosterCycle extends RunLifecycle {
      */
     @Override
     void depart(int i, String why) {
+        depart(i, why, false);
+    }
+
+    /** As {@link #depart(int, String)}; {@code forGood}: removed whatever {@code --on-robot-loss} says. */
+    private void depart(int i, String why, boolean forGood) {
         if (phase == Phase.RESOLVING || phase == Phase.RELEASING) {
             if (!leaving[i]) {
                 leaving[i] = true;
-                deferred.add(new PendingDeparture(i, why));
+                deferred.add(new PendingDeparture(i, why, forGood));
+                LOG.info("robot {} lost during step {} ({}); it stops taking part at the step's end",
+                        spec.robots().get(i).name(), phase == Phase.RELEASING ? step - 1 : step, Printable.of(why));
+            } else if (forGood) {
+                deferred.replaceAll(p -> p.robot() == i ? new PendingDeparture(i, p.why(), true) : p);
             }
             return;
         }
         if (away.isAway(i)) {
+            if (forGood) {
+                remove(i, Printable.of(why));
+            }
             return;
         }
         activeCount--;
@@ -60,12 +72,13 @@ abstract class RosterCycle extends RunLifecycle {
         }
         String safe = Printable.of(why);
         String name = spec.robots().get(i).name();
-        if (settings.onRobotLoss() == RobotLoss.REMOVE) {
+        if (forGood || settings.onRobotLoss() == RobotLoss.REMOVE) {
             remove(i, safe);
             return;
         }
         away.leave(i, step, System.nanoTime());
         core.away(i, true);
+        record.states = states(); // (before the log line: whoever reads it sees the state)
         LOG.warn("robot {} lost at step {} ({}); it stands where it is until a robot process says hello as {}{}",
                 name, step, safe, name, settings.onRobotLoss() == RobotLoss.WAIT
                         ? ", and the world waits for it" + limit() : "");
@@ -83,6 +96,7 @@ abstract class RosterCycle extends RunLifecycle {
         rosterChanged = true;
         Departure d = new Departure(spec.robots().get(i).name(), step, why);
         record.departures.add(d);
+        record.states = states();
         LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(), step,
                 why);
         listener.robotLeft(d);
@@ -99,7 +113,7 @@ abstract class RosterCycle extends RunLifecycle {
         for (PendingDeparture p : due) {
             leaving[p.robot()] = false;
             if (core.present(p.robot())) {
-                depart(p.robot(), p.why());
+                depart(p.robot(), p.why(), p.forGood());
             }
         }
     }
@@ -118,7 +132,30 @@ abstract class RosterCycle extends RunLifecycle {
         return away.isAway(i);
     }
 
-    private record PendingDeparture(int robot, String why) {
+    private record PendingDeparture(int robot, String why, boolean forGood) {
+    }
+
+    /** The control port's {@code remove NAME}: null (removed now, or at the end of the step in progress) or why not. */
+    String removeRobot(String name) {
+        int i = spec.indexOf(name);
+        String shown = "\"" + Printable.of(name, 64) + "\"";
+        if (i < 0) {
+            return "no robot named " + shown + " in " + spec.source();
+        }
+        if (core == null || phase == Phase.ENDED) {
+            return "the simulation is " + (phase == Phase.ENDED ? "over" : "not running yet");
+        }
+        if (!core.present(i)) {
+            return "robot " + shown + " has already left";
+        }
+        RobotPeer peer = robots[i];
+        if (!peer.closed()) {
+            peer.end(new robosim.protocol.SimulationEnd(step - 1, "removed from the simulation from the control port"),
+                    peer.begun());
+            peer.drop();
+        }
+        depart(i, "removed from the control port", true);
+        return null;
     }
 
     /**
@@ -158,6 +195,9 @@ abstract class RosterCycle extends RunLifecycle {
         robots[i] = worker;
         away.returning(i);
         rosterChanged = true;
+        record.states = states();
+        LOG.info("robot {} says hello again: it takes part from the next step, at ({}, {}) mm heading {} deg", name,
+                core.map().xMm(i), core.map().yMm(i), core.map().headingDeg(i));
         if (phase == Phase.COLLECTING && !leaving[i]) {
             bringBack(i); // the step being collected is its first
         }
@@ -183,6 +223,7 @@ abstract class RosterCycle extends RunLifecycle {
         core.away(i, false);
         activeCount++;
         rosterChanged = true;
+        record.states = states();
         releasedNanos = System.nanoTime(); // its step timeout runs from now, as the others' did from their step
         LOG.info("robot {} is back at step {}, where it stood since step {}", name, step, since);
         listener.robotReturned(name, step);
@@ -192,6 +233,30 @@ abstract class RosterCycle extends RunLifecycle {
             robots[i].drop();
             depart(i, "could not send it step " + step + ": " + e.getMessage());
         }
+    }
+
+    /** Every robot of the file and its state now, in world order (for the control port). */
+    List<RobotState> states() {
+        java.util.Map<String, Long> gone = new java.util.HashMap<>();
+        for (Departure d : record.departures) {
+            gone.put(d.robot(), d.step());
+        }
+        List<RobotState> states = new ArrayList<>(robots.length);
+        for (int i = 0; i < robots.length; i++) {
+            String name = spec.robots().get(i).name();
+            if (core == null) {
+                states.add(new RobotState(name, robots[i] == null ? "expected" : "connected", -1));
+            } else if (!core.present(i)) {
+                states.add(new RobotState(name, "gone", gone.getOrDefault(name, -1L)));
+            } else if (away.isAway(i)) {
+                String state = away.isReturning(i) ? "returning"
+                        : settings.onRobotLoss() == RobotLoss.WAIT ? "waiting" : "held";
+                states.add(new RobotState(name, state, away.sinceStep(i)));
+            } else {
+                states.add(new RobotState(name, "running", -1));
+            }
+        }
+        return List.copyOf(states);
     }
 
     /** Deadlines of robots the world waits for ({@code WAIT}): one away longer than the step timeout is removed. */

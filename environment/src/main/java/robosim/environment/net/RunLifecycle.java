@@ -10,6 +10,7 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
+import robosim.protocol.WorldSnapshot;
 
 /**
  * The life of one run, as the {@link SimulationLoop} drives it: waiting for every client, starting (the
@@ -213,6 +214,25 @@ abstract class RunLifecycle {
             case ENDED -> RunStatus.State.ENDED;
             default -> control.pausedNow() || beginPending ? RunStatus.State.PAUSED : RunStatus.State.RUNNING;
         };
+    }
+
+    // ---- the recording, what a viewer starts from -------------------------------------------------------
+
+    /** With {@code --record}: opens the recording at the start, from the world as a viewer would get it. */
+    void startRecording() {
+        if (settings.record() == null || recorder != null) {
+            return;
+        }
+        try {
+            recorder = new RunRecorder(settings.record(), snapshot());
+        } catch (IOException e) {
+            LOG.error("cannot record into {}: {}", settings.record(), e.toString());
+        }
+    }
+
+    /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
+    WorldSnapshot snapshot() {
+        return core != null ? core.map().snapshot(step - 1) : StartSnapshot.of(spec, registered);
     }
 
     // ---- the end ---------------------------------------------------------------------------------------

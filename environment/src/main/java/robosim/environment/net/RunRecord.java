@@ -33,6 +33,8 @@ final class RunRecord {
     }
 
     volatile List<Member> roster = List.of();
+    /** Every robot of the file and its state, in world order. */
+    volatile List<RobotState> states = List.of();
     final List<Departure> departures = new CopyOnWriteArrayList<>();
     private long rateMarkNanos;
     private long rateMarkSteps;

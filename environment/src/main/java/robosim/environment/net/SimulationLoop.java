@@ -134,6 +134,9 @@ final class SimulationLoop implements Runnable {
             r.applied().complete(null);
         } else if (e instanceof LoopEvent.StepN s) {
             cycle.control().stepN(s.n(), s.done(), cycle.released(), cycle.running());
+        } else if (e instanceof LoopEvent.RemoveRobot r) {
+            r.verdict().complete(cycle.removeRobot(r.name()));
+            rosterChanged = true;
         } else if (e instanceof LoopEvent.Stop s) {
             cycle.finish(s.reason(), false);
         }
@@ -189,5 +192,6 @@ final class SimulationLoop implements Runnable {
             }
         }
         cycle.record().roster = List.copyOf(members);
+        cycle.record().states = cycle.states();
     }
 }

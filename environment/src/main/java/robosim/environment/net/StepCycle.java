@@ -183,12 +183,14 @@ final class StepCycle extends RosterCycle {
                 continue;
             }
             if (leaving[i]) {
-                continue; // it left during this step: it goes at the step's end, and gets nothing more
+                core.withhold(i); // it left during this step: it goes at the step's end, and gets nothing more
+                continue;
             }
             try {
                 robots[i].deliver(core.response(i), step, end);
             } catch (IOException e) {
                 robots[i].drop();
+                core.withhold(i);
                 depart(i, "could not send its response: " + e.getMessage());
             }
         }
@@ -259,24 +261,15 @@ final class StepCycle extends RosterCycle {
 
     // ---- the recording ---------------------------------------------------------------------------------
 
-    /** With {@code --record}: opens the recording at the start, from the world as a viewer would get it. */
-    private void startRecording() {
-        if (settings.record() == null || recorder != null) {
-            return;
-        }
-        try {
-            recorder = new RunRecorder(settings.record(), snapshot());
-        } catch (IOException e) {
-            LOG.error("cannot record into {}: {}", settings.record(), e.toString());
-        }
-    }
-
-    /** The step just released, to the recording: the viewers' update, the requests and responses of those still here. */
+    /**
+     * The step just released, to the recording: the viewers' update, the requests and responses of those that
+     * took part (one that left during it: what it asked, and that nothing reached it).
+     */
     private void recorded(PoseUpdate update) {
         StepRequest[] asked = new StepRequest[robots.length];
         StepResponse[] responses = new StepResponse[robots.length];
         for (int i = 0; i < robots.length; i++) {
-            if (core.present(i) && !leaving[i] && !away.isAway(i)) {
+            if (core.present(i) && !away.isAway(i)) {
                 asked[i] = releasedRequests[i];
                 responses[i] = core.response(i);
             }
@@ -284,16 +277,11 @@ final class StepCycle extends RosterCycle {
         recorder.step(update, asked, responses);
     }
 
-    /** Robot i's view of the step just released, for a viewer that watches it; null if it is not in it. */
+    /** Robot i's view of the step just released, for a viewer that watches it; null if it did not take part. */
     private RobotView viewOf(int i) {
-        if (i >= robots.length || !core.present(i) || leaving[i] || away.isAway(i)) {
+        if (i >= robots.length || !core.present(i) || away.isAway(i)) {
             return null;
         }
         return RobotView.of(step - 1, i, spec.robots().get(i).name(), releasedRequests[i], core.response(i));
-    }
-
-    /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
-    private WorldSnapshot snapshot() {
-        return core != null ? core.map().snapshot(step - 1) : StartSnapshot.of(spec, registered);
     }
 }
