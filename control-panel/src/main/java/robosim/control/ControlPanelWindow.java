@@ -5,6 +5,7 @@ import java.awt.BorderLayout;
 import java.awt.Font;
 import java.awt.GridLayout;
 import java.io.IOException;
+import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import javax.swing.BorderFactory;
@@ -12,6 +13,7 @@ import javax.swing.JButton;
 import javax.swing.JFileChooser;
 import javax.swing.JFrame;
 import javax.swing.JLabel;
+import javax.swing.JOptionPane;
 import javax.swing.JPanel;
 import javax.swing.JSpinner;
 import javax.swing.JTextArea;
@@ -22,7 +24,7 @@ import javax.swing.WindowConstants;
 import robosim.protocol.SimulationKeys;
 
 /**
- * The Control Panel window: Load..., Start, Stop, Pause, Resume and Step N buttons, and a live status
+ * The Control Panel window: Load..., Start, Stop, Pause, Resume, Step N and Remove robot... buttons, and a live status
  * (state, step, steps/s while running, which robots are connected and which have left, geometry; see
  * {@link StatusText}) polled twice a second. Requests go out on one
  * background thread, never on Swing's; a status poll waits while a long request (step N) runs.
@@ -42,6 +44,8 @@ public final class ControlPanelWindow {
     private final ReplayBar replay = new ReplayBar(this::send);
     private ControlClient client;
     private volatile boolean busy;
+    /** The last status reply (null before the first). */
+    private volatile JsonNode lastStatus;
 
     private ControlPanelWindow(String host, int port, SimulationKeys keys) {
         this.host = host;
@@ -59,7 +63,7 @@ public final class ControlPanelWindow {
     private void build() {
         JFrame frame = new JFrame("RoboSim Control Panel - " + host + ":" + port);
         frame.setDefaultCloseOperation(WindowConstants.EXIT_ON_CLOSE);
-        JPanel buttons = new JPanel(new GridLayout(2, 4, 6, 6));
+        JPanel buttons = new JPanel(new GridLayout(3, 4, 6, 6));
         buttons.add(button("Load...", () -> {
             JFileChooser chooser = new JFileChooser(new java.io.File("test-envs"));
             if (chooser.showOpenDialog(frame) == JFileChooser.APPROVE_OPTION) {
@@ -74,6 +78,19 @@ public final class ControlPanelWindow {
         buttons.add(steps);
         buttons.add(button("Step", () -> send("step " + steps.getValue())));
         buttons.add(button("Shut down", () -> send("shutdown")));
+        buttons.add(button("Remove robot...", () -> {
+            JsonNode status = lastStatus;
+            List<String> names = status == null ? List.of() : StatusText.removable(status);
+            if (names.isEmpty()) {
+                last.setText("remove: no robot takes part now");
+                return;
+            }
+            Object chosen = JOptionPane.showInputDialog(frame, "Remove which robot from the simulation?",
+                    "Remove robot", JOptionPane.QUESTION_MESSAGE, null, names.toArray(), names.get(0));
+            if (chosen != null) {
+                send("remove " + chosen);
+            }
+        }));
         state.setFont(state.getFont().deriveFont(Font.BOLD, 16f));
         detail.setEditable(false);
         detail.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
@@ -134,6 +151,7 @@ public final class ControlPanelWindow {
             try {
                 JsonNode r = client().request("status");
                 status = r;
+                lastStatus = r;
                 head = StatusText.headline(r);
                 body = StatusText.details(r);
             } catch (IOException e) {

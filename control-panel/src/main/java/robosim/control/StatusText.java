@@ -1,13 +1,15 @@
 package robosim.control;
 
 import com.fasterxml.jackson.databind.JsonNode;
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Locale;
 
 /**
  * The Control Panel's status lines, from one {@code status} reply: a headline (state, step, and the
  * steps per second only while running) and the details (file, robots, who is connected and who has
  * left, where geometry is resolved, why the run ended; for a replay, the recording's steps, the speed and
- * the viewers). Values from the network are shown with
+ * the viewers; each robot's state when it is held, waited for, returning or gone). Values from the network are shown with
  * control characters replaced and long values cut, so a hostile reply cannot garble the window.
  */
 final class StatusText {
@@ -32,10 +34,38 @@ final class StatusText {
                     + (status.path("at_end").asBoolean() ? " (at the end: seek, or stop)" : "")
                     + "\nspeed:     x" + status.path("speed").asDouble() + "\nviewers:   " + status.path("viewers").asInt();
         }
-        return "file:      " + clean(status.path("file").asText()) + "\nrobots:    " + list(status.path("robots"))
+        return "file:      " + clean(status.path("file").asText()) + "\nrobots:    " + robots(status)
                 + "\nconnected: " + list(status.path("connected")) + "\nleft:      " + list(status.path("left"))
                 + "\ngeometry:  " + clean(status.path("geometry").asText("?"))
                 + (status.has("reason") ? "\nended:     " + clean(status.path("reason").asText()) : "");
+    }
+
+    /** Each robot with its state where it is not the plain one ("ring2 held since 1001"), else the names. */
+    private static String robots(JsonNode status) {
+        if (!status.has("robot_states")) {
+            return list(status.path("robots"));
+        }
+        StringBuilder b = new StringBuilder();
+        for (JsonNode r : status.path("robot_states")) {
+            String state = clean(r.path("state").asText());
+            b.append(b.length() == 0 ? "" : ", ").append(clean(r.path("name").asText()));
+            if (!state.equals("running") && !state.equals("connected")) {
+                b.append(' ').append(state).append(r.has("since") ? " since " + r.path("since").asLong() : "");
+            }
+        }
+        return b.length() == 0 ? "-" : b.toString();
+    }
+
+    /** The robots a remove may name: those in the run now (running, held, waiting or returning). */
+    static List<String> removable(JsonNode status) {
+        List<String> names = new ArrayList<>();
+        for (JsonNode r : status.path("robot_states")) {
+            String state = r.path("state").asText();
+            if (List.of("running", "held", "waiting", "returning").contains(state)) {
+                names.add(clean(r.path("name").asText()));
+            }
+        }
+        return names;
     }
 
     private static String list(JsonNode array) {

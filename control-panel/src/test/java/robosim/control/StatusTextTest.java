@@ -34,6 +34,17 @@ class StatusTextTest {
     }
 
     @Test
+    void robotsShowTheirStateAndOnlyThoseInTheRunMayBeRemoved() throws Exception {
+        JsonNode s = status("{'file':'ring.xml','robots':['a','b','c','d'],'connected':['a'],'left':['b','c'],"
+                + "'geometry':'in-process','robot_states':[{'name':'a','state':'running'},"
+                + "{'name':'b','state':'held','since':1001},{'name':'c','state':'gone','since':40},"
+                + "{'name':'d\\u0007','state':'returning','since':7}]}");
+        assertEquals("file:      ring.xml\nrobots:    a, b held since 1001, c gone since 40, d? returning since 7\n"
+                + "connected: a\nleft:      b, c\ngeometry:  in-process", StatusText.details(s));
+        assertEquals(java.util.List.of("a", "b", "d?"), StatusText.removable(s));
+    }
+
+    @Test
     void aReplayShowsItsRecordingSpeedAndViewers() throws Exception {
         assertEquals("replaying: run.rec\nrecorded:  steps 0 to 4999 (at the end: seek, or stop)\nspeed:     x2.5\n"
                 + "viewers:   1", StatusText.details(status("{'replay':true,'file':'run.rec','first_step':0,"

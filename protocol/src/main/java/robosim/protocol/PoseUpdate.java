@@ -10,7 +10,8 @@ import java.util.List;
  * {@code step}, in snapshot order, and the sonar ranges (mm) each robot read in that step (none if it
  * did not ask), and every tag so far as "tagger>target" (cumulative, so a viewer that skips steps
  * misses none), and the names of the robots that have left the simulation (cumulative too; a viewer
- * draws them as gone; their last pose stays in the arrays). Immutable once built, so one instance is shared by every viewer worker; a live
+ * draws them as gone; their last pose stays in the arrays), and the robots away now, standing where they
+ * were until they come back ({@code --on-robot-loss HOLD} or {@code WAIT}). Immutable once built, so one instance is shared by every viewer worker; a live
  * viewer may see only some steps, a recording viewer sees all.
  */
 public final class PoseUpdate implements java.io.Externalizable {
@@ -21,6 +22,7 @@ public final class PoseUpdate implements java.io.Externalizable {
     private double[][] sonarMm = new double[0][];
     private List<String> tags = List.of();
     private List<String> departed = List.of();
+    private List<String> held = List.of();
 
     private static final double[] NONE = new double[0];
 
@@ -65,6 +67,18 @@ public final class PoseUpdate implements java.io.Externalizable {
             List<String> tags, List<String> departed) {
         this(step, xMm, yMm, headingDeg, sonarMm, tags);
         this.departed = departed;
+    }
+
+    /** As above, with the robots away now, held for their return (names, in the order they were lost). */
+    public PoseUpdate(long step, double[] xMm, double[] yMm, double[] headingDeg, double[][] sonarMm,
+            List<String> tags, List<String> departed, List<String> held) {
+        this(step, xMm, yMm, headingDeg, sonarMm, tags, departed);
+        this.held = held;
+    }
+
+    /** The robots away now, standing where they were until they come back, in the order they were lost. */
+    public List<String> held() {
+        return held;
     }
 
     /** The robots that have left the simulation so far, in the order they left. */
@@ -115,6 +129,7 @@ public final class PoseUpdate implements java.io.Externalizable {
         }
         Wire.writeStrings(out, tags);
         Wire.writeStrings(out, departed);
+        Wire.writeStrings(out, held);
     }
 
     @Override
@@ -134,5 +149,6 @@ public final class PoseUpdate implements java.io.Externalizable {
         }
         tags = Wire.readStrings(in, "tag count", Limits.MAX_TAGS);
         departed = Wire.readStrings(in, "departed robot count", Limits.MAX_ROBOTS);
+        held = Wire.readStrings(in, "held robot count", Limits.MAX_ROBOTS);
     }
 }

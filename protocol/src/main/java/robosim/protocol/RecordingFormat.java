@@ -18,7 +18,7 @@ import java.nio.charset.StandardCharsets;
  */
 public final class RecordingFormat {
     static final byte[] MAGIC = "ROBOSIMREC".getBytes(StandardCharsets.US_ASCII);
-    public static final byte VERSION = 2;
+    public static final byte VERSION = 3;
     static final byte SNAPSHOT = 1;
     static final byte STEP = 2;
     static final byte END = 3;

@@ -197,14 +197,18 @@ class MessageRoundTripTest {
         assertEquals(6, p2.headingDeg(1));
         assertArrayEquals(new double[] {700, 800}, p2.sonarMm(0));
         assertEquals(0, p2.sonarMm(1).length);
-        // tags and departed robots: two empty string lists
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4, repeatedSize(p));
+        // tags, departed and held robots: three empty string lists
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4 + 4, repeatedSize(p));
         PoseUpdate tagged = new PoseUpdate(4, new double[] {1}, new double[] {3}, new double[] {5}, null,
                 List.of("a>b"));
         assertEquals(List.of("a>b"), roundTrip(tagged).tags());
         PoseUpdate left = new PoseUpdate(4, new double[] {1}, new double[] {3}, new double[] {5}, null,
                 List.of(), List.of("a"));
         assertEquals(List.of("a"), roundTrip(left).departed());
+        PoseUpdate held = roundTrip(new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6},
+                null, List.of(), List.of("a"), List.of("b")));
+        assertEquals(List.of("a"), held.departed());
+        assertEquals(List.of("b"), held.held());
 
         Arena arena = new Arena(0, 0, 1000, 1000);
         PoseUpdate plain = new PoseUpdate(4, new double[] {1, 2}, new double[] {3, 4}, new double[] {5, 6});
@@ -219,7 +223,7 @@ class MessageRoundTripTest {
         assertEquals(3, s2.poses().yMm(0));
         int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
         int robots = 2 * (utf("a") + props);
-        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4), repeatedSize(s));
+        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4 + 4), repeatedSize(s));
 
         RunState r = roundTrip(new RunState(12, RunState.Phase.PAUSED));
         assertEquals(12, r.step());

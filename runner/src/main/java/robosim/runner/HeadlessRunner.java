@@ -47,7 +47,7 @@ public final class HeadlessRunner implements Callable<Integer> {
     boolean noGeometry;
 
     @Option(names = "--pose-log", paramLabel = "FILE.csv",
-            description = "Write every robot's pose after every step: step,robot,x_m,y_m,heading_deg.")
+            description = "Write every robot's pose after every step: step,robot,x_m,y_m,heading_deg,state (running, held or gone).")
     Path poseLog;
 
     @Option(names = "--progress", description = "Print the step and steps/s once a second.")

@@ -11,7 +11,11 @@ import java.util.Locale;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.WorldSnapshot;
 
-/** Writes {@code step,robot,x_m,y_m,heading_deg}, one row per robot per step, from a recording viewer. */
+/**
+ * Writes {@code step,robot,x_m,y_m,heading_deg,state}, one row per robot per step, from a recording viewer;
+ * {@code state} is {@code running}, {@code held} (lost, standing for its return: {@code --on-robot-loss HOLD}
+ * or {@code WAIT}) or {@code gone}, so a robot's holds and returns show with their steps.
+ */
 final class PoseLog implements AutoCloseable {
     private final BufferedWriter out;
     private List<String> names = List.of();
@@ -38,14 +42,16 @@ final class PoseLog implements AutoCloseable {
     }
 
     /** The header of every pose log. */
-    static final String HEADER = "step,robot,x_m,y_m,heading_deg\n";
+    static final String HEADER = "step,robot,x_m,y_m,heading_deg,state\n";
 
     /** One step's rows: each robot's pose, in snapshot order ({@code names}). */
     static void write(PoseUpdate u, List<String> names, java.io.Writer out) throws IOException {
         for (int i = 0; i < u.count(); i++) {
-            out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s%n", u.step(), names.get(i),
+            String name = names.get(i);
+            String state = u.departed().contains(name) ? "gone" : u.held().contains(name) ? "held" : "running";
+            out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s,%s%n", u.step(), name,
                     Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
-                    Double.toString(u.headingDeg(i))));
+                    Double.toString(u.headingDeg(i)), state));
         }
     }
 

@@ -19,7 +19,7 @@ import robosim.protocol.Connector;
  */
 @Command(name = "pose-log.sh", mixinStandardHelpOptions = true,
         description = "Records every step's robot poses from a running Environment's viewer port as CSV "
-                + "(step,robot,x_m,y_m,heading_deg) until the simulation ends.")
+                + "(step,robot,x_m,y_m,heading_deg,state) until the simulation ends.")
 public final class PoseLogMain implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "HOST", description = "The Environment's host.")
     String host;

@@ -156,7 +156,10 @@ class RobotHoldProcessesTest {
             assertEquals(at1000.yMm(RING2), u.yMm(RING2), "step " + k);
             assertEquals(at1000.headingDeg(RING2), u.headingDeg(RING2), "step " + k);
             assertNull(steps.get(k).view(RING2), "no view of an away robot, step " + k);
+            assertEquals(List.of("ring2"), u.held(), "viewers see it held, step " + k);
         }
+        assertEquals(List.of(), steps.get(1000).update().held());
+        assertEquals(List.of(), steps.get(1201).update().held(), "viewers see it back");
         boolean bumped = false;
         for (int k = 1001; k <= 1200; k++) {
             for (int i = 0; i < steps.get(k).update().count(); i++) {

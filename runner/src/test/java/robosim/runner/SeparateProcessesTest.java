@@ -39,14 +39,14 @@ class SeparateProcessesTest {
                 + "geometry=process robots_in=processes"), last);
 
         List<String> rows = Files.readAllLines(log);
-        assertEquals("step,robot,x_m,y_m,heading_deg", rows.get(0));
+        assertEquals("step,robot,x_m,y_m,heading_deg,state", rows.get(0));
         assertEquals(1 + 200 * 3, rows.size(), "one row per robot per step");
         // 200 steps = 2 cycles of 88 + 24 steps forward: x = 1.5 + 24 * 0.25 m
         double[] expected = BackAndForthMath.after(199);
         assertEquals(6.0, expected[0] / 1000);
-        assertEquals("199,r1,7.5,1.0,0.0", rows.get(rows.size() - 3));
-        assertEquals("199,r2,7.5,2.0,0.0", rows.get(rows.size() - 2));
-        assertEquals("199,r3,7.5,3.0,0.0", rows.get(rows.size() - 1));
+        assertEquals("199,r1,7.5,1.0,0.0,running", rows.get(rows.size() - 3));
+        assertEquals("199,r2,7.5,2.0,0.0,running", rows.get(rows.size() - 2));
+        assertEquals("199,r3,7.5,3.0,0.0,running", rows.get(rows.size() - 1));
         assertTrue(Files.size(dir.resolve("profile/environment.jfr")) > 0, "--profile recorded the Environment");
         assertTrue(Files.size(dir.resolve("profile/geometry.jfr")) > 0, "--profile recorded Geometry");
     }

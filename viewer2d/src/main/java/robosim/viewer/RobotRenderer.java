@@ -116,6 +116,8 @@ public final class RobotRenderer {
         lines.add("step " + s.step() + "   " + StatusLine.state(s));
         if (s.poses().departed().contains(s.names().get(robot))) {
             lines.add("it has left the simulation");
+        } else if (s.poses().held().contains(s.names().get(robot))) {
+            lines.add("held: lost, standing where it was until it comes back");
         } else if (robot < s.poses().count()) {
             lines.add(String.format(Locale.ROOT, "pose  x %.0f  y %.0f mm  heading %.1f deg", s.poses().xMm(robot),
                     s.poses().yMm(robot), s.poses().headingDeg(robot)));

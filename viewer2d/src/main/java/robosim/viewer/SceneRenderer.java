@@ -78,9 +78,12 @@ public final class SceneRenderer {
         }
         g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 11));
         java.util.Set<String> gone = new java.util.HashSet<>(poses.departed());
+        java.util.Set<String> held = new java.util.HashSet<>(poses.held());
         for (int i = 0; i < s.robotCount(); i++) {
             if (gone.contains(s.names().get(i))) {
-                drawGone(g, s, i, t, o.names());
+                drawGone(g, s, i, t, o.names(), " (left)");
+            } else if (held.contains(s.names().get(i))) {
+                drawGone(g, s, i, t, o.names(), " (held)");
             } else {
                 drawRobot(g, s, i, t, o.names(), tagged.contains(s.names().get(i)));
             }
@@ -161,7 +164,8 @@ public final class SceneRenderer {
     }
 
     /** A robot that has left the simulation: a dashed outline where it was last, and "(left)". */
-    private static void drawGone(Graphics2D g, Scene s, int i, ViewTransform t, boolean names) {
+    /** A robot drawn dashed, not filled: one that has left, or one held for its return ({@code label} says). */
+    private static void drawGone(Graphics2D g, Scene s, int i, ViewTransform t, boolean names, String label) {
         PoseUpdate p = s.poses();
         double r = s.robots().get(i).radiusMm() * t.scale();
         double cx = t.toScreenX(p.xMm(i));
@@ -170,7 +174,7 @@ public final class SceneRenderer {
         g.setStroke(new BasicStroke(1f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f, new float[] {4f, 4f}, 0f));
         g.draw(new Ellipse2D.Double(cx - r, cy - r, 2 * r, 2 * r));
         if (names && r >= 3) {
-            g.drawString(s.names().get(i) + " (left)", (float) (cx + r + 2), (float) (cy - r - 2));
+            g.drawString(s.names().get(i) + label, (float) (cx + r + 2), (float) (cy - r - 2));
         }
     }
 

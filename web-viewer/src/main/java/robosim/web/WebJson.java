@@ -17,7 +17,7 @@ import robosim.protocol.WorldSnapshot;
 /**
  * The page's feed, one JSON object per WebSocket text frame, each with a {@code type}: {@code snapshot}
  * (the world: time step, arena, obstacles as polygons, every robot's name, type, radius and sonar layout,
- * and the poses), {@code update} (a step: poses, sonar ranges, tags, departed robots), {@code state}
+ * and the poses), {@code update} (a step: poses, sonar ranges, tags, departed robots, robots held for their return), {@code state}
  * (waiting, running, paused, at a step), {@code end}, and for a page that watches a robot {@code watchStarted},
  * {@code view} (its step as it saw it: command, contact, tag, readings, messages sent and delivered,
  * notices) and {@code viewEnded}. Lengths in mm and angles in degrees, as on the wire.
@@ -87,6 +87,8 @@ final class WebJson {
         u.tags().forEach(tags::add);
         ArrayNode departed = n.putArray("departed");
         u.departed().forEach(departed::add);
+        ArrayNode held = n.putArray("held");
+        u.held().forEach(held::add);
         return n;
     }
 

@@ -42,7 +42,8 @@ export class RobotPanel {
   poses(update) {
     const i = this.robots.findIndex((r) => r.name === this.name);
     this.pose = i < 0 ? null : { i, x: update.x[i], y: update.y[i], heading: update.heading[i],
-      sonar: update.sonar[i] || [], step: update.step, gone: update.departed.includes(this.name) };
+      sonar: update.sonar[i] || [], step: update.step, gone: update.departed.includes(this.name),
+      held: (update.held || []).includes(this.name) };
   }
 
   show(v) {
@@ -83,6 +84,7 @@ export class RobotPanel {
     const v = this.view, p = this.pose;
     const lines = [`${this.name} (${r ? r.type : '?'})`];
     if (p) lines.push(p.gone ? 'it has left the simulation'
+      : p.held ? `held since it was lost: standing at x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m`
       : `step ${p.step}  x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m  ${p.heading.toFixed(1)} deg`);
     let bump = null;
     if (v) {

@@ -5,7 +5,7 @@ import { RobotPanel } from './robot.js';
 
 const $ = (id) => document.getElementById(id);
 const TRAIL = 600; // points kept per robot
-let world = null, poses = null, trails = [], gone = new Set(), follow = -1;
+let world = null, poses = null, trails = [], gone = new Set(), held = new Set(), follow = -1;
 let scale = 0.1, offX = 0, offY = 0, fitted = false;
 let lastStep = -1, rateSteps = 0, rateSince = performance.now(), rate = 0;
 let ws = null;
@@ -34,7 +34,7 @@ function ask(request) {
 function handle(m) {
   switch (m.type) {
     case 'snapshot':
-      world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); fitted = false;
+      world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); held = new Set(); fitted = false;
       $('ended').textContent = '';
       buildTable(); view3d.world(m); panel.world(m); dirty = tableDirty = true; wake();
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);
@@ -42,7 +42,7 @@ function handle(m) {
       break;
     case 'update':
       if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
-      poses = m; gone = new Set(m.departed);
+      poses = m; gone = new Set(m.departed); held = new Set(m.held || []);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
       panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
     case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 1}`); redraw(); break;
@@ -98,7 +98,7 @@ function showTable() {
     r.cells[1].textContent = (poses.x[i] / 1000).toFixed(3);
     r.cells[2].textContent = (poses.y[i] / 1000).toFixed(3);
     r.cells[3].textContent = poses.heading[i].toFixed(1);
-    r.classList.toggle('gone', gone.has(world.robots[i].name));
+    r.classList.toggle('gone', gone.has(world.robots[i].name) || held.has(world.robots[i].name));
     r.classList.toggle('followed', follow === i);
   }
   const tags = $('tags');
@@ -149,7 +149,7 @@ function draw2d() {
   }
   world.robots.forEach((r, i) => {
     const x = poses.x[i], y = poses.y[i], h = poses.heading[i] * Math.PI / 180;
-    const out = gone.has(r.name);
+    const out = gone.has(r.name) || held.has(r.name);
     if ($('sonar').checked && !out) {
       g.strokeStyle = 'rgba(220,60,60,0.5)';
       r.sonars.forEach((s, k) => {
@@ -166,7 +166,8 @@ function draw2d() {
     g.beginPath(); g.arc(toX(x), toY(y), rad, 0, 2 * Math.PI); g.fill();
     g.strokeStyle = '#000'; g.lineWidth = 1.5;
     g.beginPath(); g.moveTo(toX(x), toY(y)); g.lineTo(toX(x + r.radius * Math.cos(h)), toY(y + r.radius * Math.sin(h))); g.stroke();
-    g.fillStyle = '#222'; g.fillText(r.name, toX(x) + rad + 2, toY(y) - rad);
+    g.fillStyle = '#222';
+    g.fillText(r.name + (held.has(r.name) ? ' (held)' : out ? ' (left)' : ''), toX(x) + rad + 2, toY(y) - rad);
   });
 }
 

@@ -87,15 +87,16 @@ public final class EnvironmentMap {
 
     /** The robots' poses as a new immutable update, labelled with {@code step}. */
     public PoseUpdate poses(long step) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), null, List.of(), departed);
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), null, List.of(), departed, held);
     }
 
     /** As {@link #poses}, with each robot's sonar ranges of that step (taken as they are). */
     PoseUpdate poses(long step, double[][] sonarMm, List<String> tags) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags, departed);
+        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags, departed, held);
     }
 
     private List<String> departed = List.of();
+    private List<String> held = List.of();
     private boolean[] gone;
 
     /** Robot {@code robot} has left the simulation. */
@@ -103,12 +104,23 @@ public final class EnvironmentMap {
         if (gone == null) {
             gone = new boolean[x.length];
         }
+        hold(robot, false);
         if (!gone[robot]) {
             gone[robot] = true;
             List<String> more = new ArrayList<>(departed);
             more.add(name(robot));
             departed = List.copyOf(more);
         }
+    }
+
+    /** Robot {@code robot} is away, held for its return, or back. */
+    void hold(int robot, boolean away) {
+        List<String> now = new ArrayList<>(held);
+        now.remove(name(robot));
+        if (away) {
+            now.add(name(robot));
+        }
+        held = List.copyOf(now);
     }
 
     /** True once robot {@code robot} has left. */

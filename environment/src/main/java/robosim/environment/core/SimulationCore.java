@@ -88,6 +88,7 @@ public final class SimulationCore {
      */
     public void away(int robot, boolean away) {
         router.away(robot, away);
+        map.hold(robot, away);
     }
 
     /**

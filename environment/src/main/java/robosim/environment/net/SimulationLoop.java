@@ -68,6 +68,7 @@ final class SimulationLoop implements Runnable {
         try {
             cycle.advance(System.nanoTime());
             cycle.publishPhase();
+            publishRoster();
             while (!cycle.ended()) {
                 long now = System.nanoTime();
                 LoopEvent e = events.poll(Math.max(0, Math.min(nextTick, cycle.paceDue()) - now), TimeUnit.NANOSECONDS);
