@@ -17,7 +17,8 @@ import robosim.protocol.SimulationEnd;
 
 /**
  * The Geometry process's one session with an Environment, on the caller's thread: hello, the
- * world, then one request and one response per step until the Environment ends the simulation.
+ * world, then one request and one response per step (and the world again whenever robots join) until the
+ * Environment ends the simulation.
  */
 public final class GeometryClient {
     private static final Logger LOG = LoggerFactory.getLogger(GeometryClient.class);
@@ -61,6 +62,12 @@ public final class GeometryClient {
                 }
                 if (m instanceof SimulationEnd end) {
                     return end.reason();
+                }
+                if (m instanceof GeometryWorld grown) { // robots joined: the world from the next step on
+                    engine = new GeometryEngine(new StaticWorld(grown.arena(), grown.obstacles()), grown.robots());
+                    response = engine.newResponse();
+                    LOG.info("world received again: {} robots", engine.robotCount());
+                    continue;
                 }
                 if (!(m instanceof GeometryStepRequest request)) {
                     throw new ProtocolException("expected a GeometryStepRequest, got a "

@@ -22,6 +22,8 @@ public final class RecordingFormat {
     static final byte SNAPSHOT = 1;
     static final byte STEP = 2;
     static final byte END = 3;
+    /** The world again, when robots have joined: before the first step that holds them. */
+    static final byte ROSTER = 4;
     /** The largest frame a reader takes, bytes (a longer length is damage, not a frame). */
     static final int MAX_FRAME_BYTES = 64 * 1024 * 1024;
 

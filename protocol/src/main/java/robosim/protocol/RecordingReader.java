@@ -39,6 +39,13 @@ public final class RecordingReader implements Closeable {
     private int steps;
     private SimulationEnd end;
     private String cutShort;
+    /** Where each roster frame is, and the index of the first recorded step after it. */
+    private long[] rosterOffsets = new long[0];
+    private int[] rosterFrom = new int[0];
+    private int rosters;
+    /** The roster frame last read, and its world. */
+    private int cachedRoster = -1;
+    private WorldSnapshot cached;
 
     /** Opens and indexes {@code file}; one line naming it and the fault if it is not a recording. */
     public RecordingReader(Path file) throws IOException {
@@ -91,6 +98,14 @@ public final class RecordingReader implements Closeable {
                 stepOffsets[steps] = at;
                 stepNumbers[steps] = step;
                 steps++;
+            } else if (type == RecordingFormat.ROSTER) {
+                if (rosters == rosterOffsets.length) {
+                    rosterOffsets = Arrays.copyOf(rosterOffsets, rosters * 2 + 1);
+                    rosterFrom = Arrays.copyOf(rosterFrom, rosters * 2 + 1);
+                }
+                rosterOffsets[rosters] = at;
+                rosterFrom[rosters] = steps; // (the next step recorded is the first of this world)
+                rosters++;
             } else if (type == RecordingFormat.END) {
                 try {
                     end = (SimulationEnd) body(frame).readObject();
@@ -142,6 +157,44 @@ public final class RecordingReader implements Closeable {
         return snapshot;
     }
 
+    /**
+     * The world the i-th recorded step is of: the first snapshot, or the last roster frame before it (robots
+     * joined).
+     *
+     * @throws IOException naming the file if that frame is damaged
+     */
+    public WorldSnapshot snapshotAt(int i) throws IOException {
+        int r = rosters - 1;
+        while (r >= 0 && rosterFrom[r] > i) {
+            r--;
+        }
+        if (r < 0) {
+            return snapshot;
+        }
+        if (r == cachedRoster) {
+            return cached;
+        }
+        byte[] frame = frameAt(rosterOffsets[r]);
+        try {
+            cached = (WorldSnapshot) body(frame).readObject();
+            cachedRoster = r;
+            return cached;
+        } catch (IOException | ClassNotFoundException | RuntimeException e) {
+            throw new IOException(file + ": the world before step " + stepNumbers[Math.min(i, steps - 1)]
+                    + ": damaged: " + e);
+        }
+    }
+
+    /** True if robots joined right before the i-th recorded step (a roster frame precedes it). */
+    public boolean rosterChangesAt(int i) {
+        for (int r = 0; r < rosters; r++) {
+            if (rosterFrom[r] == i) {
+                return true;
+            }
+        }
+        return false;
+    }
+
     /** Whole steps recorded. */
     public int steps() {
         return steps;
@@ -175,8 +228,9 @@ public final class RecordingReader implements Closeable {
         try (ObjectInputStream o = body(frame)) {
             PoseUpdate update = new PoseUpdate();
             update.readExternal(o);
-            if (update.count() != snapshot.robotNames().size()) {
-                throw new IOException(update.count() + " robots where the snapshot has " + snapshot.robotNames().size());
+            int robots = rosters == 0 ? snapshot.robotNames().size() : snapshotAt(i).robotNames().size();
+            if (update.count() != robots) {
+                throw new IOException(update.count() + " robots where the world has " + robots);
             }
             int n = count(o, update.count());
             List<RobotView> views = new ArrayList<>(n);

@@ -41,6 +41,12 @@ public final class RecordingWriter implements Closeable {
         write(RecordingFormat.SNAPSHOT, snapshot.step(), o -> o.writeObject(snapshot));
     }
 
+    /** The world again, robots having joined: the steps written after it are of this world. */
+    public void roster(WorldSnapshot snapshot) throws IOException {
+        names = snapshot.robotNames();
+        write(RecordingFormat.ROSTER, snapshot.step(), o -> o.writeObject(snapshot));
+    }
+
     /**
      * One step: what the viewers got, and each robot's view of it ({@link RobotView}: its command, and what
      * it got beyond its pose and sonar); {@code requests[i]} and {@code responses[i]} are robot i's, both

@@ -108,6 +108,8 @@ public final class ViewerClient implements Closeable {
                     listener.robotView(v);
                 } else if (m instanceof RunState s) {
                     listener.runState(s);
+                } else if (m instanceof WorldSnapshot grown) { // robots joined: the updates after it are of this world
+                    listener.snapshot(grown);
                 } else if (m instanceof SimulationEnd e) {
                     end = e;
                     listener.end(e);

@@ -96,6 +96,46 @@ class RecordingTest {
     }
 
     @Test
+    void robotsThatJoinAreInTheWorldOfEveryStepAfterThem(@TempDir Path dir) throws IOException {
+        Path file = dir.resolve("joins.rec");
+        Arena arena = new Arena(0, 0, 1000, 1000);
+        WorldSnapshot three = new WorldSnapshot(500, arena, List.of(), List.of("a", "b", "c"),
+                List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT, RobotModels.SCOUT), update3(2));
+        try (RecordingWriter w = new RecordingWriter(file)) {
+            w.snapshot(new WorldSnapshot(500, arena, List.of(), NAMES, List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+                    update(0)));
+            for (int k = 0; k < 3; k++) {
+                w.step(update(k), requests(k), responses(k));
+            }
+            w.roster(three);
+            for (int k = 3; k < 5; k++) {
+                StepResponse c = new StepResponse(k, 0, 0, "", 5, 5, 0, new double[0],
+                        List.of(new CommEvent("a", "c", "welcome " + k)), List.of());
+                w.step(update3(k), new StepRequest[] {null, null, new StepRequest(k, 10, 0, false, List.of())},
+                        new StepResponse[] {null, null, c});
+            }
+            w.end(new SimulationEnd(4, "completed 5 steps"));
+        }
+        try (RecordingReader r = new RecordingReader(file)) {
+            assertEquals(5, r.steps());
+            assertNull(r.cutShort());
+            assertEquals(NAMES, r.snapshotAt(2).robotNames());
+            assertEquals(List.of("a", "b", "c"), r.snapshotAt(3).robotNames());
+            assertEquals(List.of("a", "b", "c"), r.snapshotAt(4).robotNames());
+            assertTrue(r.rosterChangesAt(3));
+            assertTrue(!r.rosterChangesAt(4));
+            assertEquals(3, r.step(4).update().count());
+            assertEquals(List.of(new CommEvent("a", "c", "welcome 4")), r.step(4).view(2).delivered(),
+                    "the joined robot's view names it");
+            assertEquals(2, r.step(2).update().count());
+        }
+    }
+
+    private static PoseUpdate update3(long k) {
+        return new PoseUpdate(k, new double[] {k, 2 * k, 5}, new double[] {1, 2, 5}, new double[] {0, 90, 0});
+    }
+
+    @Test
     void aFileCutAtAnyByteReadsUpToItsLastWholeFrame(@TempDir Path dir) throws IOException {
         Path whole = dir.resolve("whole.rec");
         List<Long> ends = write(whole, 4, false);

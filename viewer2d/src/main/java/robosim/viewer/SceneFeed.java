@@ -44,8 +44,21 @@ public final class SceneFeed implements RunFollower.Listener {
 
     @Override
     public void snapshot(WorldSnapshot snapshot) {
-        world = snapshot;
         int n = snapshot.robotNames().size();
+        if (world != null && n > world.robotNames().size()
+                && snapshot.robotNames().subList(0, world.robotNames().size()).equals(world.robotNames())) {
+            // robots joined the running world: the others keep their trails, the run its state and rate
+            world = snapshot;
+            ring = java.util.Arrays.copyOf(ring, n);
+            for (int i = 0; i < n; i++) {
+                ring[i] = ring[i] == null ? new double[2 * TRAIL_POINTS] : ring[i];
+            }
+            ringStart = java.util.Arrays.copyOf(ringStart, n);
+            ringSize = java.util.Arrays.copyOf(ringSize, n);
+            publish(snapshot.poses());
+            return;
+        }
+        world = snapshot;
         ring = new double[n][2 * TRAIL_POINTS];
         ringStart = new int[n];
         ringSize = new int[n];

@@ -34,7 +34,12 @@ function ask(request) {
 function handle(m) {
   switch (m.type) {
     case 'snapshot':
-      world = m; poses = m.poses; trails = m.robots.map(() => []); gone = new Set(); held = new Set(); fitted = false;
+      // (robots joined the running world: the others keep their trails and the view its zoom)
+      const grown = world && m.robots.length > world.robots.length
+        && world.robots.every((r, i) => r.name === m.robots[i].name);
+      trails = grown ? m.robots.map((r, i) => trails[i] || []) : m.robots.map(() => []);
+      if (!grown) { gone = new Set(); held = new Set(); fitted = false; }
+      world = m; poses = m.poses;
       $('ended').textContent = '';
       buildTable(); view3d.world(m); panel.world(m); dirty = tableDirty = true; wake();
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);

@@ -35,6 +35,49 @@ public final class EnvironmentFile {
     @JacksonXmlElementWrapper(localName = "robots")
     @JacksonXmlProperty(localName = "robot")
     public List<RobotXml> robots = new ArrayList<>();
+    @JacksonXmlElementWrapper(useWrapping = false)
+    @JacksonXmlProperty(localName = "join")
+    public List<JoinXml> joins = new ArrayList<>();
+
+    /**
+     * {@code <join allow="scout-*" type="Scout" control="..." max="20" heading="90"><spawn x="1" y="1"
+     * width="4" height="3"/></join>}: robots whose names match may join the running world, entering at the
+     * first free pose of the spawn region; {@code <sensor>} children as on a robot.
+     */
+    public static final class JoinXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public String allow;
+        @JacksonXmlProperty(isAttribute = true)
+        public String type;
+        @JacksonXmlProperty(isAttribute = true)
+        public String control;
+        @JacksonXmlProperty(isAttribute = true)
+        public Integer max;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double heading;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double radius;
+        @JacksonXmlProperty(isAttribute = true)
+        public Integer sonars;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double sonarNoiseMm;
+        public SpawnXml spawn;
+        @JacksonXmlElementWrapper(useWrapping = false)
+        @JacksonXmlProperty(localName = "sensor")
+        public List<SensorXml> sensors = new ArrayList<>();
+    }
+
+    /** {@code <spawn x="1" y="1" width="4" height="3"/>}: lower-left corner and size, metres. */
+    public static final class SpawnXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public Double x;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double y;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double width;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double height;
+    }
 
     /** {@code <arena width="12" height="8"/>}: metres, lower-left corner at the origin unless x/y say. */
     public static final class ArenaXml {
@@ -116,6 +159,9 @@ public final class EnvironmentFile {
         /** Standard deviation of Gaussian noise on its sonar ranges, mm; absent = none. */
         @JacksonXmlProperty(isAttribute = true)
         public Double sonarNoiseMm;
+        /** {@code any-time}: not waited for at the start; it may join the running world at its start pose. */
+        @JacksonXmlProperty(isAttribute = true)
+        public String join;
         @JacksonXmlElementWrapper(useWrapping = false)
         @JacksonXmlProperty(localName = "sensor")
         public List<SensorXml> sensors = new ArrayList<>();

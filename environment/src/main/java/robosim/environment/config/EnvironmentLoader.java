@@ -21,8 +21,6 @@ import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
-import robosim.protocol.RobotModels;
-import robosim.protocol.RobotProperties;
 
 /**
  * Reads an environment file and checks it: metres become millimetres, every fault becomes one
@@ -39,6 +37,8 @@ public final class EnvironmentLoader {
     public static final int MAX_FILE_BYTES = 16 * 1024 * 1024;
 
     private final GeometryFactory jts = new GeometryFactory();
+    /** {@code <robot join="any-time">}: not waited for at the start; it may join the running world. */
+    static final String ANY_TIME = "any-time";
 
     /** Loads and checks {@code file}: a regular file of at most {@link #MAX_FILE_BYTES}. */
     public WorldSpec load(Path file) throws EnvironmentFileException {
@@ -135,7 +135,17 @@ public final class EnvironmentLoader {
         if (!(tagRange > 0) || Double.isInfinite(tagRange)) {
             throw new EnvironmentFileException(env + " tagRangeM must be > 0 m, got " + tagRange);
         }
-        List<RobotSpec> robots = robots(where, xml, arena, obstacles);
+        List<RobotSpec> all = robots(where, xml, arena, obstacles);
+        List<RobotSpec> robots = new ArrayList<>();
+        List<RobotSpec> anyTime = new ArrayList<>();
+        for (int i = 0; i < all.size(); i++) {
+            (ANY_TIME.equals(xml.robots.get(i).join) ? anyTime : robots).add(all.get(i));
+        }
+        if (robots.isEmpty()) {
+            throw new EnvironmentFileException(where + ": <robots> must name at least one <robot> there from the "
+                    + "start (without join=\"any-time\")");
+        }
+        List<robosim.environment.core.JoinRule> joins = JoinReader.rules(where, xml, arena, anyTime);
         long seed = xml.seed == null ? 1L : xml.seed;
         String name = xml.name == null ? Path.of(where).getFileName().toString() : xml.name;
         double range = 0;
@@ -163,35 +173,7 @@ public final class EnvironmentLoader {
                     hy * MM_PER_M, intensity));
         }
         return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes, heat,
-                tagRange * MM_PER_M, taggable);
-    }
-
-    private static List<WorldSpec.SensorSpec> sensors(String where, String robot, List<EnvironmentFile.SensorXml> xml)
-            throws EnvironmentFileException {
-        List<WorldSpec.SensorSpec> out = new ArrayList<>();
-        Set<String> names = new HashSet<>();
-        for (EnvironmentFile.SensorXml s : xml) {
-            if (s.type == null || s.type.isBlank()) {
-                throw new EnvironmentFileException(where + ": " + robot + " <sensor> needs a type (laser, heat, bump "
-                        + "or a RobotSensor class name)");
-            }
-            String name = s.name == null || s.name.isBlank() ? s.type : s.name;
-            String el = robot + " <sensor name=\"" + name + "\">";
-            if (!names.add(name)) {
-                throw new EnvironmentFileException(where + ": " + el + " the name is used twice on this robot");
-            }
-            double noise = s.noise == null ? 0 : s.noise;
-            if (!(noise >= 0) || Double.isInfinite(noise)) {
-                throw new EnvironmentFileException(where + ": " + el + " noise must be >= 0, got " + noise);
-            }
-            try {
-                robosim.environment.sensors.RobotSensors.create(s.type, s.attributes);
-            } catch (IllegalArgumentException e) {
-                throw new EnvironmentFileException(where + ": " + el + " " + e.getMessage());
-            }
-            out.add(new WorldSpec.SensorSpec(name, s.type, noise, s.attributes));
-        }
-        return out;
+                tagRange * MM_PER_M, taggable, joins);
     }
 
     private static double orZero(Double v) {
@@ -220,32 +202,9 @@ public final class EnvironmentLoader {
             if (!names.add(r.name)) {
                 throw new EnvironmentFileException(where + ": " + el + " the name is used twice");
             }
-            if (r.type == null) {
-                throw new EnvironmentFileException(where + ": " + el + " needs a type (known: " + RobotModels.names()
-                        + ")");
-            }
-            RobotProperties props = RobotModels.byName(r.type);
-            boolean classType = props == null && r.type.contains(".");
-            if (props == null && !classType) {
-                throw new EnvironmentFileException(where + ": " + el + " type \"" + r.type
-                        + "\" is not a known robot type (known: " + RobotModels.names()
-                        + ", or the class name of a RobotType with radius=\"...\")");
-            }
-            if (classType && r.radius == null) {
-                throw new EnvironmentFileException(where + ": " + el + " a robot of type class " + r.type
-                        + " needs radius=\"...\" (metres)");
-            }
-            double radiusMm = r.radius == null ? props.radiusMm() : ObstacleReader.required(where, el, "radius", r.radius) * MM_PER_M;
-            if (!(radiusMm > 0)) {
-                throw new EnvironmentFileException(where + ": " + el + " radius must be > 0 m, got " + r.radius);
-            }
-            if (props != null && Math.abs(radiusMm - props.radiusMm()) > 1e-6) {
-                throw new EnvironmentFileException(where + ": " + el + " radius " + r.radius + " m contradicts the "
-                        + r.type + "'s " + props.radiusMm() / MM_PER_M + " m");
-            }
-            if (r.sonars != null && (r.sonars < 0 || r.sonars > robosim.protocol.Limits.MAX_SONARS)) {
-                throw new EnvironmentFileException(where + ": " + el + " sonars must be in 0.."
-                        + robosim.protocol.Limits.MAX_SONARS + ", got " + r.sonars);
+            if (r.join != null && !r.join.equals(ANY_TIME)) {
+                throw new EnvironmentFileException(where + ": " + el + " join must be \"" + ANY_TIME + "\" (or left "
+                        + "out: there from the start), got \"" + r.join + "\"");
             }
             double x = ObstacleReader.required(where, el, "x", r.x) * MM_PER_M;
             double y = ObstacleReader.required(where, el, "y", r.y) * MM_PER_M;
@@ -253,7 +212,8 @@ public final class EnvironmentLoader {
             if (!Double.isFinite(heading)) {
                 throw new EnvironmentFileException(where + ": " + el + " heading must be a finite number");
             }
-            double rad = radiusMm;
+            RobotSpec robot = RobotReader.robot(where, el, r, x, y, robosim.geometry.Kinematics.turn(heading, 0));
+            double rad = robot.radiusMm();
             if (x - rad < arena.minXMm() || x + rad > arena.maxXMm() || y - rad < arena.minYMm()
                     || y + rad > arena.maxYMm()) {
                 throw new EnvironmentFileException(where + ": " + el + " at (" + r.x + ", " + r.y
@@ -272,13 +232,7 @@ public final class EnvironmentLoader {
                     throw new EnvironmentFileException(where + ": " + el + " overlaps robot \"" + other.name() + "\"");
                 }
             }
-            double sonarNoise = r.sonarNoiseMm == null ? 0 : r.sonarNoiseMm;
-            if (!(sonarNoise >= 0) || Double.isInfinite(sonarNoise)) {
-                throw new EnvironmentFileException(where + ": " + el + " sonarNoiseMm must be >= 0, got " + sonarNoise);
-            }
-            out.add(new RobotSpec(r.name, r.type, r.control == null ? "" : r.control, x, y,
-                    robosim.geometry.Kinematics.turn(heading, 0), sensors(where, el, r.sensors), sonarNoise, radiusMm,
-                    r.sonars == null ? -1 : r.sonars));
+            out.add(robot);
         }
         return out;
     }

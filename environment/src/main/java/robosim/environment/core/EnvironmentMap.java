@@ -13,11 +13,11 @@ import robosim.protocol.WorldSnapshot;
  * description for Geometry. Owned by {@link SimulationCore}.
  */
 public final class EnvironmentMap {
-    private final WorldSpec spec;
-    private final List<RobotProperties> properties;
-    private final double[] x;
-    private final double[] y;
-    private final double[] heading;
+    private WorldSpec spec;
+    private List<RobotProperties> properties;
+    private double[] x;
+    private double[] y;
+    private double[] heading;
 
     EnvironmentMap(WorldSpec spec, List<RobotProperties> properties) {
         if (properties.size() != spec.robots().size()) {
@@ -36,6 +36,25 @@ public final class EnvironmentMap {
             y[i] = r.yMm();
             heading[i] = r.headingDeg();
         }
+    }
+
+    /** Robot {@code robot} joins the world at its spec's pose; returns its index (the last). */
+    int add(WorldSpec.RobotSpec robot, RobotProperties p) {
+        int i = x.length;
+        spec = spec.withRobot(robot);
+        List<RobotProperties> more = new ArrayList<>(properties);
+        more.add(p);
+        properties = List.copyOf(more);
+        x = java.util.Arrays.copyOf(x, i + 1);
+        y = java.util.Arrays.copyOf(y, i + 1);
+        heading = java.util.Arrays.copyOf(heading, i + 1);
+        x[i] = robot.xMm();
+        y[i] = robot.yMm();
+        heading[i] = robot.headingDeg();
+        if (gone != null) {
+            gone = java.util.Arrays.copyOf(gone, i + 1);
+        }
+        return i;
     }
 
     public WorldSpec spec() {

@@ -25,7 +25,7 @@ final class MessageRouter {
     private final int maxBytes;
     private final List<List<CommEvent>> inbox;
     private final List<List<String>> notices;
-    private final boolean[] away;
+    private boolean[] away;
     private long delivered;
     private long undeliverable;
     private long outOfRange;
@@ -42,6 +42,14 @@ final class MessageRouter {
             inbox.add(new ArrayList<>());
             notices.add(new ArrayList<>());
         }
+    }
+
+    /** Robot {@code robot}, the last, has joined under {@code name}. */
+    void add(int robot, String name) {
+        index.put(name, robot);
+        inbox.add(new ArrayList<>());
+        notices.add(new ArrayList<>());
+        away = java.util.Arrays.copyOf(away, robot + 1);
     }
 
     /** Routes robot {@code from}'s messages of this step; positions are read from {@code map}. */

@@ -30,12 +30,12 @@ public final class SimulationCore {
     private final EnvironmentMap map;
     private final MessageRouter router;
     private final StepSensing sensing;
-    private final int robots;
-    private final double[] maxMoveMm;
-    private final double[] maxTurnDeg;
-    private final int[] sonarCount;
-    private final GeometryStepRequest geometryRequest;
-    private final StepResponse[] responses;
+    private int robots;
+    private double[] maxMoveMm;
+    private double[] maxTurnDeg;
+    private int[] sonarCount;
+    private GeometryStepRequest geometryRequest;
+    private StepResponse[] responses;
     /** The requests of the step prepared and not yet completed. */
     private StepRequest[] pending;
     /**
@@ -57,14 +57,42 @@ public final class SimulationCore {
         this.maxMoveMm = new double[robots];
         this.maxTurnDeg = new double[robots];
         this.sonarCount = new int[robots];
-        double seconds = spec.timeStepMs() / 1000.0;
         for (int i = 0; i < robots; i++) {
-            maxMoveMm[i] = properties.get(i).maxSpeedMmPerS() * seconds;
-            maxTurnDeg[i] = properties.get(i).maxTurnDegPerS() * seconds;
-            sonarCount[i] = properties.get(i).sonars().size();
+            limits(i, properties.get(i));
         }
         this.geometryRequest = new GeometryStepRequest(robots);
         this.responses = new StepResponse[robots];
+    }
+
+    private void limits(int i, RobotProperties p) {
+        double seconds = map.spec().timeStepMs() / 1000.0;
+        maxMoveMm[i] = p.maxSpeedMmPerS() * seconds;
+        maxTurnDeg[i] = p.maxTurnDegPerS() * seconds;
+        sonarCount[i] = p.sonars().size();
+    }
+
+    /**
+     * Robot {@code robot} joins the world at its spec's pose, between steps (none prepared): it is the last
+     * in world order and takes part from the next step prepared. Returns its index.
+     */
+    public int add(WorldSpec.RobotSpec robot, RobotProperties p) {
+        if (pending != null) {
+            throw new IllegalStateException("a robot joins between steps only");
+        }
+        int i = map.add(robot, p);
+        sensing.add(i, robot, p);
+        router.add(i, robot.name());
+        robots = i + 1;
+        maxMoveMm = java.util.Arrays.copyOf(maxMoveMm, robots);
+        maxTurnDeg = java.util.Arrays.copyOf(maxTurnDeg, robots);
+        sonarCount = java.util.Arrays.copyOf(sonarCount, robots);
+        limits(i, p);
+        geometryRequest = new GeometryStepRequest(robots);
+        StepResponse[] more = java.util.Arrays.copyOf(responses, robots);
+        more[i] = new StepResponse(lastStep, 0, 0, "", robot.xMm(), robot.yMm(), robot.headingDeg(),
+                StepSensing.none(), List.of(), List.of());
+        responses = more;
+        return i;
     }
 
     public EnvironmentMap map() {
@@ -101,6 +129,11 @@ public final class SimulationCore {
         router.putBack(robot, r.inbox());
         responses[robot] = new StepResponse(r.step(), r.movedMm(), r.turnedDeg(), r.contact(), r.xMm(), r.yMm(),
                 r.headingDeg(), r.sonarMm(), List.of(), List.of(), r.readings(), r.tagged());
+    }
+
+    /** Robot {@code robot} has joined and takes part from the next step: messages to it wait for it. */
+    public void arriving(int robot) {
+        router.away(robot, true);
     }
 
     /** True while robot {@code robot} takes part (it has not left). */

@@ -23,10 +23,11 @@ final class StepSensing {
     private static final double[] NO_RANGES = new double[0];
 
     private final EnvironmentMap map;
-    private final RobotSensor[][] sensors;
-    private final WorldSpec.SensorSpec[][] sensorSpecs;
-    private final double[] sensorRadius;
-    private final SensorContext context;
+    private final WorldQueries queries;
+    private RobotSensor[][] sensors;
+    private WorldSpec.SensorSpec[][] sensorSpecs;
+    private double[] sensorRadius;
+    private SensorContext context;
     private final Random random;
 
     StepSensing(WorldSpec spec, List<RobotProperties> properties, EnvironmentMap map) {
@@ -37,16 +38,30 @@ final class StepSensing {
         this.sensorSpecs = new WorldSpec.SensorSpec[robots][];
         this.sensorRadius = new double[robots];
         for (int i = 0; i < robots; i++) {
-            sensorRadius[i] = properties.get(i).radiusMm();
-            List<WorldSpec.SensorSpec> specs = spec.robots().get(i).sensors();
-            sensorSpecs[i] = specs.toArray(new WorldSpec.SensorSpec[0]);
-            sensors[i] = new RobotSensor[specs.size()];
-            for (int k = 0; k < specs.size(); k++) {
-                sensors[i][k] = RobotSensors.create(specs.get(k).type(), specs.get(k).attributes());
-            }
+            equip(i, spec.robots().get(i), properties.get(i));
         }
-        this.context = new SensorContext(new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles())),
-                spec.heatSources(), map.xs(), map.ys(), sensorRadius, map.headings());
+        this.queries = new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles()));
+        this.context = new SensorContext(queries, spec.heatSources(), map.xs(), map.ys(), sensorRadius, map.headings());
+    }
+
+    private void equip(int i, WorldSpec.RobotSpec robot, RobotProperties p) {
+        sensorRadius[i] = p.radiusMm();
+        List<WorldSpec.SensorSpec> specs = robot.sensors();
+        sensorSpecs[i] = specs.toArray(new WorldSpec.SensorSpec[0]);
+        sensors[i] = new RobotSensor[specs.size()];
+        for (int k = 0; k < specs.size(); k++) {
+            sensors[i][k] = RobotSensors.create(specs.get(k).type(), specs.get(k).attributes());
+        }
+    }
+
+    /** Robot {@code i}, the last, has joined (the map has it already): its sensors, and a context that sees it. */
+    void add(int i, WorldSpec.RobotSpec robot, RobotProperties p) {
+        sensors = java.util.Arrays.copyOf(sensors, i + 1);
+        sensorSpecs = java.util.Arrays.copyOf(sensorSpecs, i + 1);
+        sensorRadius = java.util.Arrays.copyOf(sensorRadius, i + 1);
+        equip(i, robot, p);
+        context = new SensorContext(queries, map.spec().heatSources(), map.xs(), map.ys(), sensorRadius,
+                map.headings());
     }
 
     /** A robot that has left can no longer be sensed: its disc never meets a query. */

@@ -14,7 +14,7 @@ import robosim.protocol.ObstacleShape;
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
         List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
-        List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable) {
+        List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins) {
     /** How far a tag reaches from the robot's rim by default, mm. */
     public static final double DEFAULT_TAG_RANGE_MM = 1000;
     /** A tag hits only what lies within this many degrees of the heading. */
@@ -41,6 +41,33 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
             throw new IllegalArgumentException("tag range must be > 0 mm, got " + tagRangeMm);
         }
         taggable = java.util.Set.copyOf(taggable);
+        joins = List.copyOf(joins);
+    }
+
+    /** Without join rules: only the file's robots, all there from the start. */
+    public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
+            List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
+            List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable) {
+        this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, heatSources,
+                tagRangeMm, taggable, List.of());
+    }
+
+    /** This world with one more robot (one that joined the run). */
+    public WorldSpec withRobot(RobotSpec robot) {
+        List<RobotSpec> more = new java.util.ArrayList<>(robots);
+        more.add(robot);
+        return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, more, commRangeMm, maxMessageBytes,
+                heatSources, tagRangeMm, taggable, joins);
+    }
+
+    /** The first join rule that lets a robot of this name in, or null. */
+    public JoinRule joinRule(String robotName) {
+        for (JoinRule j : joins) {
+            if (j.matches(robotName)) {
+                return j;
+            }
+        }
+        return null;
     }
 
     /** With the default tag range and no taggable obstacles. */
@@ -111,6 +138,11 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
                 List<SensorSpec> sensors, double sonarNoiseMm) {
             this(name, type, control, xMm, yMm, headingDeg, sensors, sonarNoiseMm,
                     robosim.protocol.RobotModels.byName(type).radiusMm(), -1);
+        }
+
+        /** This robot standing at another pose (mm, degrees). */
+        public RobotSpec at(double x, double y, double heading) {
+            return new RobotSpec(name, type, control, x, y, heading, sensors, sonarNoiseMm, radiusMm, sonarCount);
         }
 
         /** A robot of a known model with sonar only and no noise. */

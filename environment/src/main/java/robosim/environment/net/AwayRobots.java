@@ -7,10 +7,11 @@ package robosim.environment.net;
  * removed. Loop thread only.
  */
 final class AwayRobots {
-    private final boolean[] away;
-    private final boolean[] returning;
-    private final long[] sinceStep;
-    private final long[] sinceNanos;
+    private boolean[] away;
+    private boolean[] returning;
+    private boolean[] joining;
+    private long[] sinceStep;
+    private long[] sinceNanos;
     private final boolean waitPolicy;
     private int awayCount;
     private int waitedFor;
@@ -18,6 +19,7 @@ final class AwayRobots {
     AwayRobots(int robots, RobotLoss policy) {
         this.away = new boolean[robots];
         this.returning = new boolean[robots];
+        this.joining = new boolean[robots];
         this.sinceStep = new long[robots];
         this.sinceNanos = new long[robots];
         this.waitPolicy = policy == RobotLoss.WAIT;
@@ -37,6 +39,29 @@ final class AwayRobots {
         }
     }
 
+    /** One more robot has joined: n robots. */
+    void grow(int n) {
+        away = java.util.Arrays.copyOf(away, n);
+        returning = java.util.Arrays.copyOf(returning, n);
+        joining = java.util.Arrays.copyOf(joining, n);
+        sinceStep = java.util.Arrays.copyOf(sinceStep, n);
+        sinceNanos = java.util.Arrays.copyOf(sinceNanos, n);
+    }
+
+    /** Robot i has just joined the world at {@code step}: it stands there until it takes part, at the next step. */
+    void joining(int i, long step) {
+        away[i] = true;
+        returning[i] = true;
+        joining[i] = true;
+        sinceStep[i] = step;
+        awayCount++;
+    }
+
+    /** True while robot i has joined and not yet taken part. */
+    boolean isJoining(int i) {
+        return joining[i];
+    }
+
     /** Robot i has a new connection, which takes over at the next step. */
     void returning(int i) {
         returning[i] = true;
@@ -51,12 +76,13 @@ final class AwayRobots {
     void clear(int i) {
         if (away[i]) {
             awayCount--;
-            if (waitPolicy) {
+            if (waitPolicy && !joining[i]) {
                 waitedFor--;
             }
         }
         away[i] = false;
         returning[i] = false;
+        joining[i] = false;
     }
 
     boolean isAway(int i) {
@@ -74,7 +100,7 @@ final class AwayRobots {
 
     /** True if robot i is away, the world waits for it, and it has been away longer than {@code limitNanos}. */
     boolean waitedTooLong(int i, long now, long limitNanos) {
-        return waitPolicy && away[i] && !returning[i] && now - sinceNanos[i] > limitNanos;
+        return waitPolicy && away[i] && !returning[i] && !joining[i] && now - sinceNanos[i] > limitNanos;
     }
 
     /** True while a robot is away. */

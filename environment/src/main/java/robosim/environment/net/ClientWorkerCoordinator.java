@@ -257,19 +257,7 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** What the control port reports: published by the loop, read without waiting for it. */
     public RunStatus status() {
-        RunRecord r = cycle.record();
-        RunStatus.State state = r.phase;
-        List<String> connected = new java.util.ArrayList<>();
-        List<String> left = new java.util.ArrayList<>();
-        for (RunRecord.Member m : r.roster) {
-            if (m.connected()) {
-                connected.add(m.name());
-            } else if (state != RunStatus.State.WAITING) {
-                left.add(m.name());
-            }
-        }
-        return new RunStatus(state, r.stepsReleased, state == RunStatus.State.RUNNING ? r.recentRate : 0, robotNames,
-                List.copyOf(connected), List.copyOf(left), r.geometry, r.endReason, cycle.viewers().count(), r.states);
+        return cycle.record().status(robotNames, cycle.viewers().count());
     }
 
     public RunSummary summary() {

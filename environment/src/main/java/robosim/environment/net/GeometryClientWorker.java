@@ -34,7 +34,7 @@ final class GeometryClientWorker extends ClientWorker {
     /** How often an idle worker looks whether its Geometry process is still there, ms. */
     private static final long IDLE_LOOK_MS = 250;
 
-    /** At most the world, one step and the end are ever outstanding. */
+    /** At most two worlds (the first and one after robots joined), one step and the end are ever outstanding. */
     private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
 
     GeometryClientWorker(ClientWorkerCoordinator coordinator, Socket socket) {
@@ -88,7 +88,7 @@ final class GeometryClientWorker extends ClientWorker {
         }
     }
 
-    /** Loop thread: send the world (once, when the run starts or when this process takes over mid-run). */
+    /** Loop thread: send the world (when the run starts, when this process takes over mid-run, after robots joined). */
     void sendWorld(GeometryWorld world) {
         tasks.add(new SendWorld(world));
     }

@@ -35,6 +35,8 @@ final class GeometryLink {
     private int losses;
     private int attaches;
     private boolean started;
+    /** The attached Geometry process is to be sent {@link #world} before the next step (robots joined). */
+    private boolean worldDue;
 
     GeometryLink(Settings settings) {
         this.settings = settings;
@@ -77,6 +79,18 @@ final class GeometryLink {
         }
     }
 
+    /**
+     * Robots have joined: from the next step on geometry is resolved in this world (in-process at once; an
+     * attached Geometry process is sent it before the next step).
+     */
+    void worldChanged(GeometryWorld changed) {
+        world = changed;
+        if (inProcess != null) {
+            inProcess = new InProcessGeometry(changed);
+        }
+        worldDue = attached != null;
+    }
+
     private void send(GeometryClientWorker worker, GeometryWorld w) {
         joinSentNanos = System.nanoTime();
         worker.sendWorld(w);
@@ -97,6 +111,7 @@ final class GeometryLink {
         }
         joining = null;
         joinSentNanos = 0;
+        worldDue = false; // (it was sent the world as it is now)
         if (started) {
             attaches++;
             LOG.warn("a new Geometry process attached: geometry is resolved there again");
@@ -119,6 +134,10 @@ final class GeometryLink {
     GeometryStepResponse resolve(GeometryStepRequest request) {
         outstanding = request;
         if (attached != null) {
+            if (worldDue) {
+                worldDue = false;
+                attached.sendWorld(world);
+            }
             sentNanos = System.nanoTime();
             attached.resolve(request);
             return null;

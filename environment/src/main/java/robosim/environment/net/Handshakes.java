@@ -28,22 +28,38 @@ final class Handshakes {
             return "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                     + Protocol.VERSION + ")";
         }
+        if (hello.name() == null) {
+            return "a robot must say its name";
+        }
         if (index < 0) {
-            return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
-                    + String.join(", ", names) + ")";
+            robosim.environment.core.JoinRule rule = spec.joinRule(hello.name());
+            if (rule == null) {
+                return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
+                        + String.join(", ", names) + joiners() + ")";
+            }
+            return rule.robot(hello.name(), 0, 0).contradiction(hello.properties(), spec.source());
         }
         return spec.robots().get(index).contradiction(hello.properties(), spec.source());
     }
 
-    /** The welcome of robot {@code index}: the time step, its start pose, every robot's name, its sensors. */
-    RobotWelcome welcome(int index) {
-        WorldSpec.RobotSpec r = spec.robots().get(index);
-        return welcome(index, r.xMm(), r.yMm(), r.headingDeg());
+    /** The file's join rules, for a refusal: "; may join: rover9, scout-*", or "" when there are none. */
+    private String joiners() {
+        if (spec.joins().isEmpty()) {
+            return "";
+        }
+        return "; may join: " + String.join(", ", spec.joins().stream().map(robosim.environment.core.JoinRule::allow)
+                .toList());
     }
 
-    /** The welcome of robot {@code index} at a pose of its own: where it stands when it comes back mid-run. */
-    RobotWelcome welcome(int index, double xMm, double yMm, double headingDeg) {
-        return RobotWelcome.accepted(spec.timeStepMs(), xMm, yMm, headingDeg, names,
-                spec.robots().get(index).sensorNames()).withStepMessages(stepMessages);
+    /** The welcome of robot {@code index}: the time step, its start pose, every robot's name, its sensors. */
+    RobotWelcome welcome(int index) {
+        return welcome(spec.robots().get(index), names);
     }
+
+    /** The welcome of a robot at its pose (a start pose, or where it stands mid-run), with every robot's name. */
+    RobotWelcome welcome(WorldSpec.RobotSpec robot, List<String> robotNames) {
+        return RobotWelcome.accepted(spec.timeStepMs(), robot.xMm(), robot.yMm(), robot.headingDeg(), robotNames,
+                robot.sensorNames()).withStepMessages(stepMessages);
+    }
+
 }

@@ -60,7 +60,6 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
             connection.flush();
             return;
         }
-        index = wanted;
         rename("robot-worker[" + Printable.of(robotName) + "]");
         handshakeDone();
         try {
@@ -105,6 +104,11 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     @Override
     public int index() {
         return index;
+    }
+
+    @Override
+    public void assign(int i) {
+        index = i;
     }
 
     String robotName() {

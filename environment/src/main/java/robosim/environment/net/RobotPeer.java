@@ -14,6 +14,9 @@ interface RobotPeer {
     /** Its place in the world's robot list (-1 before it has said hello). */
     int index();
 
+    /** Loop thread, as it accepts the hello: its place in the world's robot list. */
+    void assign(int index);
+
     void welcome(RobotWelcome welcome) throws IOException;
 
     /** Sends the first step number. */

@@ -28,7 +28,10 @@ abstract class RosterCycle extends RunLifecycle {
         if (core == null || !core.present(i) || phase == Phase.ENDED) {
             return;
         }
-        if (away.isAway(i)) {
+        if (away.isJoining(i)) {
+            away.clear(i); // it joined and went before it took part: lost like any robot
+            activeCount++; // (never counted in; depart counts it out)
+        } else if (away.isAway(i)) {
             away.notReturning(i); // the new connection went before it took over: away as before
             rosterChanged = true;
             return;
@@ -52,7 +55,7 @@ abstract class RosterCycle extends RunLifecycle {
                 leaving[i] = true;
                 deferred.add(new PendingDeparture(i, why, forGood));
                 LOG.info("robot {} lost during step {} ({}); it stops taking part at the step's end",
-                        spec.robots().get(i).name(), phase == Phase.RELEASING ? step - 1 : step, Printable.of(why));
+                        name(i), phase == Phase.RELEASING ? step - 1 : step, Printable.of(why));
             } else if (forGood) {
                 deferred.replaceAll(p -> p.robot() == i ? new PendingDeparture(i, p.why(), true) : p);
             }
@@ -71,7 +74,7 @@ abstract class RosterCycle extends RunLifecycle {
             arrived--;
         }
         String safe = Printable.of(why);
-        String name = spec.robots().get(i).name();
+        String name = name(i);
         if (forGood || settings.onRobotLoss() == RobotLoss.REMOVE) {
             remove(i, safe);
             return;
@@ -94,7 +97,7 @@ abstract class RosterCycle extends RunLifecycle {
         away.clear(i);
         core.depart(i);
         rosterChanged = true;
-        Departure d = new Departure(spec.robots().get(i).name(), step, why);
+        Departure d = new Departure(name(i), step, why);
         record.departures.add(d);
         record.states = states();
         LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(), step,
@@ -128,6 +131,12 @@ abstract class RosterCycle extends RunLifecycle {
     }
 
     @Override
+    void grow(int n) {
+        super.grow(n);
+        away.grow(n);
+    }
+
+    @Override
     boolean away(int i) {
         return away.isAway(i);
     }
@@ -137,10 +146,10 @@ abstract class RosterCycle extends RunLifecycle {
 
     /** The control port's {@code remove NAME}: null (removed now, or at the end of the step in progress) or why not. */
     String removeRobot(String name) {
-        int i = spec.indexOf(name);
+        int i = indexOf(name);
         String shown = "\"" + Printable.of(name, 64) + "\"";
         if (i < 0) {
-            return "no robot named " + shown + " in " + spec.source();
+            return "no robot named " + shown + " in this simulation";
         }
         if (core == null || phase == Phase.ENDED) {
             return "the simulation is " + (phase == Phase.ENDED ? "over" : "not running yet");
@@ -163,23 +172,24 @@ abstract class RosterCycle extends RunLifecycle {
      * takes part from the next step) or the refusal.
      */
     String rejoin(RobotPeer worker, RobotHello hello, int i, Handshakes handshakes) {
-        String name = spec.robots().get(i).name();
+        String name = name(i);
         if (phase == Phase.ENDED) {
             return "the simulation is over";
         }
-        if (settings.onRobotLoss() == RobotLoss.REMOVE) {
-            return "the simulation is already running (a lost robot may come back only when the Environment runs "
-                    + "with --on-robot-loss HOLD or WAIT)";
-        }
+        String noReturn = settings.onRobotLoss() == RobotLoss.REMOVE ? " (a lost robot may come back only when the "
+                + "Environment runs with --on-robot-loss HOLD or WAIT)" : "";
         if (core == null || !core.present(i)) {
-            return "robot " + name + " has been removed from the simulation";
+            return "robot " + name + " has been removed from the simulation" + noReturn;
+        }
+        if (!robots[i].closed()) {
+            return "robot " + name + " is already connected (a new process takes over only once the old "
+                    + "connection has closed)";
         }
         if (!away.isAway(i) && !leaving[i]) {
-            if (!robots[i].closed()) {
-                return "robot " + name + " is already connected (a new process takes over only once the old "
-                        + "connection has closed)";
-            }
             depart(i, "its connection closed"); // before the loop heard of it: it hears now
+        }
+        if (!noReturn.isEmpty()) {
+            return "robot " + name + " has left the simulation" + noReturn;
         }
         if (away.isReturning(i)) {
             return "robot " + name + " is already coming back on another connection";
@@ -188,10 +198,12 @@ abstract class RosterCycle extends RunLifecycle {
             return "robot " + name + " comes back with " + difference(hello.properties(), registered[i]);
         }
         try {
-            worker.welcome(handshakes.welcome(i, core.map().xMm(i), core.map().yMm(i), core.map().headingDeg(i)));
+            worker.welcome(handshakes.welcome(core.map().spec().robots().get(i).at(core.map().xMm(i),
+                    core.map().yMm(i), core.map().headingDeg(i)), names()));
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
         }
+        worker.assign(i);
         robots[i] = worker;
         away.returning(i);
         rosterChanged = true;
@@ -216,17 +228,22 @@ abstract class RosterCycle extends RunLifecycle {
     }
 
     /** Robot i's new connection takes part from the step being collected: it gets that step's number. */
-    private void bringBack(int i) {
-        String name = spec.robots().get(i).name();
+    void bringBack(int i) {
+        String name = name(i);
         long since = away.sinceStep(i);
+        boolean joined = away.isJoining(i);
         away.clear(i);
         core.away(i, false);
         activeCount++;
         rosterChanged = true;
         record.states = states();
         releasedNanos = System.nanoTime(); // its step timeout runs from now, as the others' did from their step
-        LOG.info("robot {} is back at step {}, where it stood since step {}", name, step, since);
-        listener.robotReturned(name, step);
+        if (joined) {
+            LOG.info("robot {} takes part from step {}", name, step);
+        } else {
+            LOG.info("robot {} is back at step {}, where it stood since step {}", name, step, since);
+            listener.robotReturned(name, step);
+        }
         try {
             robots[i].begin(step);
         } catch (IOException e) {
@@ -243,13 +260,13 @@ abstract class RosterCycle extends RunLifecycle {
         }
         List<RobotState> states = new ArrayList<>(robots.length);
         for (int i = 0; i < robots.length; i++) {
-            String name = spec.robots().get(i).name();
+            String name = name(i);
             if (core == null) {
                 states.add(new RobotState(name, robots[i] == null ? "expected" : "connected", -1));
             } else if (!core.present(i)) {
                 states.add(new RobotState(name, "gone", gone.getOrDefault(name, -1L)));
             } else if (away.isAway(i)) {
-                String state = away.isReturning(i) ? "returning"
+                String state = away.isJoining(i) ? "joining" : away.isReturning(i) ? "returning"
                         : settings.onRobotLoss() == RobotLoss.WAIT ? "waiting" : "held";
                 states.add(new RobotState(name, state, away.sinceStep(i)));
             } else {

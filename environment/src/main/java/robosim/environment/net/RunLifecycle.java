@@ -32,15 +32,15 @@ abstract class RunLifecycle {
     final RunControl control;
     final Viewers viewers;
     final ReleasePoint releasePoint;
-    final RobotPeer[] robots;
+    RobotPeer[] robots;
     /** Robots that left during the step being resolved or released: they go at its end. */
-    final boolean[] leaving;
+    boolean[] leaving;
     final long stepTimeoutNanos;
     StepRequest[] requests;
     StepRequest[] inFlight;
     SimulationCore core;
     /** Each robot's properties from its hello (null until it has said it), in world order. */
-    final RobotProperties[] registered;
+    RobotProperties[] registered;
     boolean everyoneHere;
     Phase phase = Phase.WAITING;
     boolean beginPending;
@@ -75,6 +75,34 @@ abstract class RunLifecycle {
 
     RobotPeer[] robots() {
         return robots;
+    }
+
+    /** Robot i's name (world order: the file's robots, then those that joined, in the order they did). */
+    String name(int i) {
+        return core != null ? core.map().name(i) : spec.robots().get(i).name();
+    }
+
+    /** Every robot's name now, in world order. */
+    List<String> names() {
+        List<String> names = new java.util.ArrayList<>(robots.length);
+        for (int i = 0; i < robots.length; i++) {
+            names.add(name(i));
+        }
+        return names;
+    }
+
+    /** The index of the robot of this name in the world now, or -1. */
+    int indexOf(String robotName) {
+        return core != null ? core.map().spec().indexOf(robotName) : spec.indexOf(robotName);
+    }
+
+    /** One more robot has joined (between steps): every per-robot array holds n. */
+    void grow(int n) {
+        robots = java.util.Arrays.copyOf(robots, n);
+        leaving = java.util.Arrays.copyOf(leaving, n);
+        registered = java.util.Arrays.copyOf(registered, n);
+        requests = java.util.Arrays.copyOf(requests, n);
+        inFlight = java.util.Arrays.copyOf(inFlight, n);
     }
 
     GeometryLink geometry() {

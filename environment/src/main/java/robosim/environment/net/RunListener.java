@@ -12,6 +12,10 @@ public interface RunListener {
     default void robotHeld(String robot, long step, String why) {
     }
 
+    /** A robot joined the running world; it takes part from the next step. */
+    default void robotJoined(String robot, long step) {
+    }
+
     /** A lost robot's new connection takes part again from {@code step}. */
     default void robotReturned(String robot, long step) {
     }

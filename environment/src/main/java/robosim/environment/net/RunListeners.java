@@ -40,6 +40,11 @@ final class RunListeners implements RunListener {
     }
 
     @Override
+    public void robotJoined(String robot, long step) {
+        each(l -> l.robotJoined(robot, step));
+    }
+
+    @Override
     public void robotReturned(String robot, long step) {
         each(l -> l.robotReturned(robot, step));
     }

@@ -76,4 +76,22 @@ final class RunRecord {
                 messagesOutOfRange, messagesRefused, departures.size(), geometryLosses, geometryAttaches,
                 List.copyOf(departures));
     }
+
+    /** What the control port reports now; {@code fileNames}: the file's robots, until the loop has published its own. */
+    RunStatus status(List<String> fileNames, int viewers) {
+        RunStatus.State state = phase;
+        List<String> connected = new java.util.ArrayList<>();
+        List<String> left = new java.util.ArrayList<>();
+        for (Member m : roster) {
+            if (m.connected()) {
+                connected.add(m.name());
+            } else if (state != RunStatus.State.WAITING) {
+                left.add(m.name());
+            }
+        }
+        List<RobotState> now = states;
+        List<String> names = now.isEmpty() ? fileNames : now.stream().map(RobotState::name).toList();
+        return new RunStatus(state, stepsReleased, state == RunStatus.State.RUNNING ? recentRate : 0, names,
+                List.copyOf(connected), List.copyOf(left), geometry, endReason, viewers, now);
+    }
 }

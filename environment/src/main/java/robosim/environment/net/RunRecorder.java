@@ -53,7 +53,10 @@ final class RunRecorder {
     }
 
     /** Loop thread: one released step. */
-    void step(PoseUpdate update, StepRequest[] requests, StepResponse[] responses) {
+    void step(WorldSnapshot roster, PoseUpdate update, StepRequest[] requests, StepResponse[] responses) {
+        if (roster != null) {
+            hand(roster);
+        }
         hand(new Step(update, requests, responses));
     }
 
@@ -98,6 +101,8 @@ final class RunRecorder {
                 Object item = queue.take();
                 if (item instanceof Step s) {
                     writer.step(s.update(), s.requests(), s.responses());
+                } else if (item instanceof WorldSnapshot roster) {
+                    writer.roster(roster);
                 } else {
                     writer.end((SimulationEnd) item);
                     LOG.info("recording {}: {} steps written", file, writer.steps());

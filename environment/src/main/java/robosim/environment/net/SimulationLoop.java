@@ -8,7 +8,6 @@ import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.RobotProperties;
 
 /**
  * The one owner of simulation time, on its own thread, {@code simulation-loop}: the only code that
@@ -31,11 +30,11 @@ final class SimulationLoop implements Runnable {
     private final BlockingQueue<LoopEvent> events;
     private final Handshakes handshakes;
     private final StepCycle cycle;
-    private final RobotPeer[] robots;
-    private final RobotProperties[] properties;
     private final long tickNanos;
     private int registered;
     private long nextTick;
+    /** Hellos that came while a step was being resolved: they are answered once it is complete. */
+    private final List<LoopEvent.RobotJoins> heldHellos = new ArrayList<>();
     /** Who is connected or has left changed since the status last saw it. */
     private boolean rosterChanged;
 
@@ -47,8 +46,6 @@ final class SimulationLoop implements Runnable {
         this.events = events;
         this.handshakes = handshakes;
         this.cycle = cycle;
-        this.robots = cycle.robots();
-        this.properties = cycle.registered();
         this.tickNanos = tick(settings);
     }
 
@@ -79,6 +76,12 @@ final class SimulationLoop implements Runnable {
                     cycle.advance(System.nanoTime());
                     e = more > 0 ? events.poll() : null;
                 }
+                while (!heldHellos.isEmpty() && !cycle.midStep()) {
+                    LoopEvent.RobotJoins j = heldHellos.remove(0);
+                    j.verdict().complete(register(j));
+                    rosterChanged = true;
+                    cycle.advance(System.nanoTime());
+                }
                 now = System.nanoTime();
                 if (now - nextTick >= 0) {
                     cycle.tick(now);
@@ -97,6 +100,7 @@ final class SimulationLoop implements Runnable {
             LOG.error("the simulation loop failed", e);
             cycle.finish("the simulation loop failed: " + e, false);
         } finally {
+            heldHellos.forEach(j -> j.verdict().complete("the simulation is over"));
             cycle.publishPhase();
             publishRoster();
             coordinator.loopEnded();
@@ -111,8 +115,12 @@ final class SimulationLoop implements Runnable {
                 handle(each);
             }
         } else if (e instanceof LoopEvent.RobotJoins j) {
-            j.verdict().complete(register(j));
-            rosterChanged = true;
+            if (cycle.midStep()) {
+                heldHellos.add(j); // (a robot joins between steps: after this one is resolved)
+            } else {
+                j.verdict().complete(register(j));
+                rosterChanged = true;
+            }
         } else if (e instanceof LoopEvent.RobotLeaves l) {
             leave(l.worker(), l.why());
             rosterChanged = true;
@@ -146,10 +154,16 @@ final class SimulationLoop implements Runnable {
 
     /** A robot's hello, already checked against the file: null (its welcome is sent) or the refusal. */
     private String register(LoopEvent.RobotJoins j) {
-        int index = j.index();
         if (!cycle.waiting()) {
-            return cycle.rejoin(j.worker(), j.hello(), index, handshakes);
+            int live = cycle.indexOf(j.hello().name());
+            return live >= 0 ? cycle.rejoin(j.worker(), j.hello(), live, handshakes)
+                    : cycle.join(j.worker(), j.hello(), handshakes);
         }
+        int index = j.index();
+        if (index < 0) {
+            return "the simulation has not started: a robot that joins a running world says hello once it runs";
+        }
+        RobotPeer[] robots = cycle.robots();
         if (robots[index] != null) {
             return "robot " + j.hello().name() + " is already connected";
         }
@@ -158,25 +172,27 @@ final class SimulationLoop implements Runnable {
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
         }
+        j.worker().assign(index);
         robots[index] = j.worker();
-        properties[index] = j.hello().properties();
+        cycle.registered()[index] = j.hello().properties();
         registered++;
-        LOG.info("robot {} connected ({} of {})", spec.robots().get(index).name(), registered, robots.length);
+        LOG.info("robot {} connected ({} of {})", cycle.name(index), registered, robots.length);
         cycle.everyoneHere(registered == robots.length);
         return null;
     }
 
     private void leave(RobotPeer worker, String why) {
         int i = worker.index();
-        if (i < 0 || robots[i] != worker) {
+        RobotPeer[] robots = cycle.robots();
+        if (i < 0 || i >= robots.length || robots[i] != worker) {
             return;
         }
         if (cycle.waiting()) {
             robots[i] = null;
-            properties[i] = null;
+            cycle.registered()[i] = null;
             registered--;
             cycle.everyoneHere(false);
-            LOG.warn("robot {} left before the start ({}); waiting for it again", spec.robots().get(i).name(),
+            LOG.warn("robot {} left before the start ({}); waiting for it again", cycle.name(i),
                     Printable.of(why));
         } else {
             cycle.leave(i, why);
@@ -186,9 +202,10 @@ final class SimulationLoop implements Runnable {
     /** Publishes the robots that have said hello and whether each takes part, for the status. */
     private void publishRoster() {
         List<RunRecord.Member> members = new ArrayList<>();
+        RobotPeer[] robots = cycle.robots();
         for (int i = 0; i < robots.length; i++) {
             if (robots[i] != null) {
-                members.add(new RunRecord.Member(spec.robots().get(i).name(), robots[i],
+                members.add(new RunRecord.Member(cycle.name(i), robots[i],
                         cycle.waiting() || cycle.present(i)));
             }
         }

@@ -23,7 +23,7 @@ import robosim.protocol.RunState;
  * next step number, then the poses to the viewers), and the deadlines of each phase. The run's start
  * and end are {@link RunLifecycle}'s. Loop thread only.
  */
-final class StepCycle extends RosterCycle {
+final class StepCycle extends JoinCycle {
     private static final Logger LOG = LoggerFactory.getLogger(StepCycle.class);
 
     /** The requests of the step last computed, kept until the next: what each robot asked (its view). */
@@ -32,6 +32,12 @@ final class StepCycle extends RosterCycle {
     StepCycle(ClientWorkerCoordinator coordinator, RunListener listener) {
         super(coordinator, listener);
         releasedRequests = new StepRequest[requests.length];
+    }
+
+    @Override
+    void grow(int n) {
+        super.grow(n);
+        releasedRequests = Arrays.copyOf(releasedRequests, n);
     }
 
     /** Moves the run on as far as it can go now; called after every event and deadline check. */
@@ -202,11 +208,12 @@ final class StepCycle extends RosterCycle {
         boolean recording = recorder != null && recorder.recording();
         if (!viewers.isEmpty() || recording) {
             PoseUpdate update = core.viewerUpdate();
+            WorldSnapshot roster = takeRosterChange(step - 1);
             if (!viewers.isEmpty()) {
-                viewers.publish(update, this::viewOf);
+                viewers.publish(roster, update, this::viewOf);
             }
             if (recording) {
-                recorded(update);
+                recorded(roster, update);
             }
         }
         releasedNanos = now; // robots are timed from here
@@ -265,7 +272,7 @@ final class StepCycle extends RosterCycle {
      * The step just released, to the recording: the viewers' update, the requests and responses of those that
      * took part (one that left during it: what it asked, and that nothing reached it).
      */
-    private void recorded(PoseUpdate update) {
+    private void recorded(WorldSnapshot roster, PoseUpdate update) {
         StepRequest[] asked = new StepRequest[robots.length];
         StepResponse[] responses = new StepResponse[robots.length];
         for (int i = 0; i < robots.length; i++) {
@@ -274,7 +281,7 @@ final class StepCycle extends RosterCycle {
                 responses[i] = core.response(i);
             }
         }
-        recorder.step(update, asked, responses);
+        recorder.step(roster, update, asked, responses);
     }
 
     /** Robot i's view of the step just released, for a viewer that watches it; null if it did not take part. */
@@ -282,6 +289,6 @@ final class StepCycle extends RosterCycle {
         if (i >= robots.length || !core.present(i) || away.isAway(i)) {
             return null;
         }
-        return RobotView.of(step - 1, i, spec.robots().get(i).name(), releasedRequests[i], core.response(i));
+        return RobotView.of(step - 1, i, name(i), releasedRequests[i], core.response(i));
     }
 }

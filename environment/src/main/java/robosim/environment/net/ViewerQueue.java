@@ -5,6 +5,7 @@ import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.WorldSnapshot;
 
 /**
  * What one viewer has still to be sent: bounded and coalescing, so the loop never waits on it. A live
@@ -14,18 +15,24 @@ import robosim.protocol.SimulationEnd;
  * n updates a second gets the newest at most every 1/n s. A change of run state is held the same way,
  * newest only; it goes out after the updates held before it, or ahead of one that waits for the rate cap.
  * A viewer that watches a robot ({@link #watching}) gets that robot's {@link RobotView} right after each
- * update; a live viewer's newest view carries the messages of the views it replaced.
+ * update; a live viewer's newest view carries the messages of the views it replaced. When robots have
+ * joined, a new {@link WorldSnapshot} goes right before the first update that holds them (a replaced
+ * update hands its snapshot on to the one that replaces it).
  */
 public final class ViewerQueue {
     public static final int RECORDING_BACKLOG = 1024;
 
-    /** An update and, for a viewer that watches a robot, its view of the step (else null). */
-    private record Item(PoseUpdate update, RobotView view) {
+    /**
+     * An update and, for a viewer that watches a robot, its view of the step (else null), and the world
+     * the update is of when robots have joined since the last update (else null).
+     */
+    private record Item(WorldSnapshot roster, PoseUpdate update, RobotView view) {
     }
 
     private final ArrayDeque<Item> pending = new ArrayDeque<>();
     private int watching = -1;
     private RobotView viewNext;
+    private PoseUpdate updateNext;
     private final boolean everyStep;
     private final long intervalNanos;
     private boolean capped;
@@ -68,13 +75,24 @@ public final class ViewerQueue {
      * there is none (the robot has left), kept with its update ahead of the new one: no message is lost.
      */
     public synchronized void offer(PoseUpdate update, RobotView view) {
+        offer(null, update, view);
+    }
+
+    /** As {@link #offer(PoseUpdate, RobotView)}, with the world the update is of when robots have joined. */
+    public synchronized void offer(WorldSnapshot roster, PoseUpdate update, RobotView view) {
         if (closed) {
             return;
         }
         if (!everyStep) {
             Item replaced = pending.pollLast();
-            if (replaced != null && replaced.view() == null) {
-                replaced = pending.pollLast(); // (a view kept ahead of a view-less update, if any: see below)
+            if (replaced != null && replaced.view() == null && replaced.roster() == null) {
+                Item kept = pending.pollLast(); // (a view kept ahead of a view-less update, if any: see below)
+                if (kept != null) {
+                    replaced = kept;
+                }
+            }
+            if (replaced != null && roster == null) {
+                roster = replaced.roster(); // (the newer update is of that world too)
             }
             if (replaced != null && replaced.view() != null) {
                 if (view != null) {
@@ -84,7 +102,7 @@ public final class ViewerQueue {
                 }
             }
         }
-        pending.addLast(new Item(update, view));
+        pending.addLast(new Item(roster, update, view));
         if (waitingForData) {
             notifyAll();
         }
@@ -108,6 +126,7 @@ public final class ViewerQueue {
         closed = true;
         pending.clear();
         viewNext = null;
+        updateNext = null;
         notifyAll();
     }
 
@@ -124,6 +143,11 @@ public final class ViewerQueue {
      * the last).
      */
     public synchronized Object take() throws InterruptedException {
+        if (updateNext != null) { // (the update goes right after its world's snapshot)
+            PoseUpdate u = updateNext;
+            updateNext = null;
+            return u;
+        }
         if (viewNext != null) { // (the view goes right after its update, whatever the cap)
             RobotView v = viewNext;
             viewNext = null;
@@ -153,6 +177,10 @@ public final class ViewerQueue {
                 if (roomWanted && pending.size() < RECORDING_BACKLOG) {
                     roomWanted = false;
                     roomSignal = true;
+                }
+                if (next.roster() != null) {
+                    updateNext = next.update();
+                    return next.roster();
                 }
                 return next.update();
             }

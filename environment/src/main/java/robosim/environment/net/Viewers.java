@@ -9,6 +9,7 @@ import java.util.function.IntFunction;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
+import robosim.protocol.WorldSnapshot;
 import robosim.protocol.SimulationEnd;
 
 /**
@@ -67,10 +68,15 @@ public final class Viewers {
 
     /** The step's poses to every viewer, and to one that watches robot i also {@code viewOf.apply(i)}. */
     public void publish(PoseUpdate update, IntFunction<RobotView> viewOf) {
+        publish(null, update, viewOf);
+    }
+
+    /** As {@link #publish(PoseUpdate, IntFunction)}; {@code roster}: the world when robots have joined, else null. */
+    public void publish(WorldSnapshot roster, PoseUpdate update, IntFunction<RobotView> viewOf) {
         for (ViewerSink v : viewers) {
             ViewerQueue q = v.queue();
             int watched = q.watching();
-            q.offer(update, watched < 0 ? null : viewOf.apply(watched));
+            q.offer(roster, update, watched < 0 ? null : viewOf.apply(watched));
         }
     }
 

@@ -20,10 +20,14 @@ final class RecordingCursor {
     private int steps;
     private int index = -1;
     private RecordingReader.Step shown;
+    /** The world of the step shown (robots may have joined), and whether viewers have yet to get it. */
+    private WorldSnapshot world;
+    private boolean worldChanged;
 
     RecordingCursor(RecordingReader recording) {
         this.recording = recording;
         this.steps = recording.steps();
+        this.world = recording.snapshot();
     }
 
     /** Moves to the i-th recorded step; its update, or null if it cannot be read (the replay then ends before it). */
@@ -31,12 +35,24 @@ final class RecordingCursor {
         try {
             shown = recording.step(i);
             index = i;
+            WorldSnapshot w = recording.snapshotAt(i);
+            if (w != world) {
+                world = w;
+                worldChanged = true;
+            }
             return shown.update();
         } catch (IOException e) {
             LOG.error("the recording cannot be read on: {}", e.getMessage());
             steps = i;
             return null;
         }
+    }
+
+    /** The world of the step just shown if it is not the one before (robots joined, or a seek), once; else null. */
+    WorldSnapshot takeWorldChange() {
+        boolean changed = worldChanged;
+        worldChanged = false;
+        return changed ? world : null;
     }
 
     /** Robot {@code robot}'s view of the step shown; null before the first or if it was not in that step. */
@@ -103,7 +119,7 @@ final class RecordingCursor {
 
     /** The world as the replay shows it now. */
     WorldSnapshot snapshot() {
-        WorldSnapshot s = recording.snapshot();
+        WorldSnapshot s = world;
         return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
                 s.robots(), shown.update());
     }

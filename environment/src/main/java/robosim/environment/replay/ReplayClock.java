@@ -231,7 +231,7 @@ public final class ReplayClock {
     private void show(int i) {
         PoseUpdate u = at.show(i);
         if (u != null) {
-            viewers.publish(u, at::view);
+            viewers.publish(at.takeWorldChange(), u, at::view);
         }
     }
 

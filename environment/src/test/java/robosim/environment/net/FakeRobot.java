@@ -34,6 +34,13 @@ final class FakeRobot implements RobotPeer {
     }
 
     @Override
+    public void assign(int i) {
+        if (i != index) {
+            throw new IllegalStateException("robot " + index + " assigned " + i);
+        }
+    }
+
+    @Override
     public void welcome(RobotWelcome welcome) {
     }
 

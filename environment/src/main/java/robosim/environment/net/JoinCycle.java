@@ -1,0 +1,111 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import robosim.environment.core.JoinRule;
+import robosim.environment.core.SpawnPlacer;
+import robosim.environment.core.WorldSpec;
+import robosim.protocol.Limits;
+import robosim.protocol.RobotHello;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * Robots joining a running world, as the {@link SimulationLoop} sees it: a hello whose name the file lets
+ * in ({@code <robot join="any-time">}, or a {@code <join allow="...">} pattern) after the start is placed
+ * (its start pose, or the first free pose of its spawn region: {@link SpawnPlacer}), added to the world
+ * at once, standing still, and takes part from the next step (at once when the step being collected
+ * waits for requests). Joins happen between steps only; the loop holds a hello that comes while a step is
+ * resolved. Geometry gets the new world before the next step, viewers a new snapshot before the next
+ * update, the recording a roster frame. Loop thread only.
+ */
+abstract class JoinCycle extends RosterCycle {
+    /** The rule each robot joined by, in world order (null for the file's robots). */
+    private final List<JoinRule> ruleOf = new ArrayList<>();
+    private SpawnPlacer placer;
+    /** The world has grown since viewers and the recording last had a snapshot. */
+    private boolean grown;
+
+    JoinCycle(ClientWorkerCoordinator coordinator, RunListener listener) {
+        super(coordinator, listener);
+        for (int i = 0; i < robots.length; i++) {
+            ruleOf.add(null);
+        }
+    }
+
+    /** True while a step is being resolved: a hello waits until it is complete. */
+    boolean midStep() {
+        return phase == Phase.RESOLVING;
+    }
+
+    /** A hello after the start naming no robot of the world now: null (welcome sent, robot added) or the refusal. */
+    String join(RobotPeer worker, RobotHello hello, Handshakes handshakes) {
+        String name = hello.name();
+        if (phase == Phase.ENDED) {
+            return "the simulation is over";
+        }
+        JoinRule rule = spec.joinRule(name);
+        if (rule == null) {
+            return "no robot named \"" + Printable.of(name, 64) + "\" in " + spec.source() + " may join";
+        }
+        long members = 0;
+        for (int i = 0; i < ruleOf.size(); i++) {
+            members += ruleOf.get(i) == rule && core.present(i) ? 1 : 0;
+        }
+        if (members >= rule.max()) {
+            return "the rule " + rule.allow() + " of " + spec.source() + " lets at most " + rule.max()
+                    + " robot(s) take part at once";
+        }
+        if (robots.length >= Limits.MAX_ROBOTS) {
+            return "the world holds " + robots.length + " robots, the most it may";
+        }
+        StringBuilder why = new StringBuilder();
+        if (placer == null) {
+            placer = new SpawnPlacer(spec);
+        }
+        double[] at = placer.place(rule, core.map(), why);
+        if (at == null) {
+            return rule.spawn() == null
+                    ? "robot " + name + "'s start pose (" + rule.template().xMm() / 1000 + ", "
+                            + rule.template().yMm() / 1000 + ") m in " + spec.source() + " is taken: " + why
+                    : "the spawn region of " + rule.allow() + " in " + spec.source() + " has no free pose for "
+                            + name + " (" + why + ")";
+        }
+        WorldSpec.RobotSpec robot = rule.robot(name, at[0], at[1]);
+        List<String> names = names();
+        names.add(name);
+        try {
+            worker.welcome(handshakes.welcome(robot, names));
+        } catch (IOException e) {
+            return "its welcome could not be sent: " + e.getMessage();
+        }
+        int i = core.add(robot, hello.properties());
+        grow(i + 1);
+        ruleOf.add(rule);
+        worker.assign(i);
+        robots[i] = worker;
+        registered[i] = hello.properties();
+        away.joining(i, step);
+        core.arriving(i);
+        grown = true;
+        geometry.worldChanged(core.map().geometryWorld());
+        rosterChanged = true;
+        record.states = states();
+        LOG.info("robot {} joins at ({}, {}) mm heading {} deg ({} of {}): it takes part from the next step", name,
+                at[0], at[1], robot.headingDeg(), rule.spawn() == null ? "any-time" : rule.allow(), spec.source());
+        listener.robotJoined(name, step);
+        if (phase == Phase.COLLECTING) {
+            bringBack(i); // the step being collected is its first
+        }
+        return null;
+    }
+
+    /** The world as it now stands, once, if robots have joined since the last call (else null). */
+    WorldSnapshot takeRosterChange(long lastStep) {
+        if (!grown) {
+            return null;
+        }
+        grown = false;
+        return core.map().snapshot(lastStep);
+    }
+}

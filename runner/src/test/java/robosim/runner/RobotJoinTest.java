@@ -1,0 +1,205 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.net.InetAddress;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.locationtech.jts.geom.Coordinate;
+import org.locationtech.jts.geom.Geometry;
+import org.locationtech.jts.geom.GeometryFactory;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Settings;
+import robosim.examples.Wander;
+import robosim.hardware.HardwareSimulator;
+import robosim.hardware.RobotType;
+import robosim.protocol.ObstacleShape;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotModels;
+import robosim.protocol.ViewerClient;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * Robots joining a running world: 20 scouts join one by one during a 100-step run (at steps 4, 8, ... 80,
+ * exactly: the run is held and stepped from here), each entering at the first free pose of its spawn region;
+ * no robot ever overlaps another or an obstacle (JTS over every step's poses), viewers get the world again
+ * with each, and the same joins give the same run, pose for pose. Bad names and full regions are refused.
+ */
+class RobotJoinTest {
+    private static final long LONG = 60;
+    private static final Path WORLD = Path.of("src/test/resources/joins.xml");
+    private static final int STEPS = 100;
+
+    /** What a recording viewer saw: the worlds (first, then one per join) and every update. */
+    private record Seen(List<WorldSnapshot> worlds, List<PoseUpdate> updates, List<Integer> worldOf,
+            CompletableFuture<ViewerClient> client) {
+    }
+
+    private static ClientWorkerCoordinator start() throws Exception {
+        Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
+                .maxSteps(STEPS).resetEvery(64).build();
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(new EnvironmentLoader().load(WORLD), s);
+        env.startPaused();
+        env.start();
+        return env;
+    }
+
+    private static Seen watch(int port) throws Exception {
+        Seen seen = new Seen(new CopyOnWriteArrayList<>(), new CopyOnWriteArrayList<>(), new CopyOnWriteArrayList<>(),
+                new CompletableFuture<>());
+        ViewerClient v = ViewerClient.connect("127.0.0.1", port, true, 10_000);
+        v.start(new ViewerClient.Listener() {
+            @Override
+            public void snapshot(WorldSnapshot snapshot) {
+                seen.worlds().add(snapshot);
+            }
+
+            @Override
+            public void update(PoseUpdate update) {
+                seen.updates().add(update);
+                seen.worldOf().add(seen.worlds().size() - 1);
+            }
+        });
+        seen.client().complete(v);
+        return seen;
+    }
+
+    /** A joined robot by hand: forward 100 mm every step (they press against one another and the wall). */
+    private static CompletableFuture<Long> drive(RawRobot r) {
+        return CompletableFuture.supplyAsync(() -> {
+            try (r) {
+                while (r.next()) {
+                    r.step(100, 0, false, List.of());
+                }
+                return r.firstStep;
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+    }
+
+    /** One run: walker from the start, 20 scouts joining at steps 4, 8, ... 80; what a recording viewer saw. */
+    private static Seen run() throws Exception {
+        try (ClientWorkerCoordinator env = start()) {
+            int[] ports = env.ports();
+            Seen seen = watch(ports[1]);
+            HardwareSimulator walker = new HardwareSimulator("walker", RobotType.byName("ArRobot"));
+            walker.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
+            CompletableFuture<String> walking = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return walker.run(new Wander());
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            });
+            assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
+            List<CompletableFuture<Long>> scouts = new ArrayList<>();
+            for (int k = 1; k <= 20; k++) {
+                env.step(4, LONG, TimeUnit.SECONDS);
+                env.pause(LONG, TimeUnit.SECONDS); // (step 4k is computed and held: the scout joins after it)
+                RawRobot scout = new RawRobot("scout-" + k, RobotModels.SCOUT, ports[0]);
+                assertTrue(scout.welcome.isAccepted(), scout.welcome.reason());
+                assertEquals(1 + k, scout.welcome.robotNames().size(), "it is told every robot's name, its own last");
+                scouts.add(drive(scout));
+            }
+            env.resume();
+            assertEquals("completed " + STEPS + " steps", walking.get(LONG, TimeUnit.SECONDS));
+            for (int k = 1; k <= 20; k++) {
+                assertEquals(4L * k + 1, scouts.get(k - 1).get(LONG, TimeUnit.SECONDS), "scout-" + k + "'s first step");
+            }
+            assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
+            seen.client().get().awaitEnd(LONG, TimeUnit.SECONDS); // (every update it was sent has been taken)
+            assertEquals(STEPS, seen.updates().size());
+            return seen;
+        }
+    }
+
+    @Test
+    void twentyRobotsJoinOneByOneNeverOverlappingAnythingAndTheSameJoinsGiveTheSameRun() throws Exception {
+        Seen first = run();
+        assertEquals(21, first.worlds().size(), "the first world, then the world again with each scout");
+        GeometryFactory jts = new GeometryFactory();
+        List<Geometry> obstacles = new ArrayList<>();
+        for (ObstacleShape o : first.worlds().get(0).obstacles()) {
+            Coordinate[] ring = new Coordinate[o.vertexCount() + 1];
+            for (int v = 0; v < o.vertexCount(); v++) {
+                ring[v] = new Coordinate(o.x(v), o.y(v));
+            }
+            ring[o.vertexCount()] = ring[0];
+            obstacles.add(jts.createPolygon(ring));
+        }
+        for (int s = 0; s < STEPS; s++) {
+            PoseUpdate u = first.updates().get(s);
+            WorldSnapshot w = first.worlds().get(first.worldOf().get(s));
+            assertEquals(w.robotNames().size(), u.count(), "step " + s + " is of the world the viewer has");
+            assertEquals(1 + Math.min(20, s / 4), u.count(), "step " + s + ": the scouts that have joined");
+            for (int i = 0; i < u.count(); i++) {
+                double ri = w.radiusMm(i);
+                for (int j = i + 1; j < u.count(); j++) {
+                    double d = Math.hypot(u.xMm(i) - u.xMm(j), u.yMm(i) - u.yMm(j));
+                    assertTrue(d >= ri + w.radiusMm(j) - 1e-6, "step " + s + ": " + w.robotNames().get(i) + " and "
+                            + w.robotNames().get(j) + " overlap (" + d + " mm apart)");
+                }
+                for (Geometry o : obstacles) {
+                    assertTrue(o.distance(jts.createPoint(new Coordinate(u.xMm(i), u.yMm(i)))) >= ri - 1e-6,
+                            "step " + s + ": " + w.robotNames().get(i) + " overlaps an obstacle");
+                }
+            }
+        }
+        Seen second = run();
+        for (int s = 0; s < STEPS; s++) {
+            PoseUpdate a = first.updates().get(s);
+            PoseUpdate b = second.updates().get(s);
+            assertEquals(a.count(), b.count());
+            for (int i = 0; i < a.count(); i++) {
+                assertEquals(a.xMm(i), b.xMm(i), "step " + s + " robot " + i);
+                assertEquals(a.yMm(i), b.yMm(i), "step " + s + " robot " + i);
+                assertEquals(a.headingDeg(i), b.headingDeg(i), "step " + s + " robot " + i);
+            }
+        }
+    }
+
+    @Test
+    void aNameNoRuleAllowsAFullSpawnRegionATakenStartPoseAndADuplicateAreRefusedNamingTheValue() throws Exception {
+        try (ClientWorkerCoordinator env = start()) {
+            int port = env.ports()[0];
+            try (RawRobot walker = new RawRobot("walker", RobotModels.AR_ROBOT, port)) {
+                assertTrue(walker.welcome.isAccepted());
+                assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
+                String refused = refusal("rover", port);
+                assertTrue(refused.startsWith("no robot named \"rover\" in " + WORLD + " (robots: walker; may join: "
+                        + "late, scout-*, pack-?)"), refused);
+                try (RawRobot pack = new RawRobot("pack-1", RobotModels.SCOUT, port)) {
+                    assertTrue(pack.welcome.isAccepted(), pack.welcome.reason());
+                    refused = refusal("pack-2", port);
+                    assertTrue(refused.startsWith("the spawn region of pack-? in " + WORLD + " has no free pose for "
+                            + "pack-2 (every pose in it is taken)"), refused);
+                    refused = refusal("pack-1", port);
+                    assertTrue(refused.startsWith("robot pack-1 is already connected"), refused);
+                    try (RawRobot late = new RawRobot("late", RobotModels.SCOUT, port)) {
+                        assertTrue(late.welcome.isAccepted(), late.welcome.reason());
+                        assertEquals(10_000, late.welcome.xMm());
+                        assertEquals(7_000, late.welcome.yMm());
+                    }
+                }
+                assertFalse(env.status().robots().contains("rover"));
+            }
+        }
+    }
+
+    private static String refusal(String name, int port) throws Exception {
+        try (RawRobot r = new RawRobot(name, RobotModels.SCOUT, port)) {
+            assertFalse(r.welcome.isAccepted(), name + " was let in");
+            return r.welcome.reason();
+        }
+    }
+}
