@@ -72,17 +72,32 @@ public final class ControlPanelMain implements Callable<Integer> {
     }
 
     static void print(JsonNode reply) {
+        System.out.print(lines(reply));
+    }
+
+    /** The reply as {@code key=value} lines, for scripts. */
+    static String lines(JsonNode reply) {
+        StringBuilder out = new StringBuilder();
         for (Iterator<Map.Entry<String, JsonNode>> it = reply.fields(); it.hasNext();) {
             Map.Entry<String, JsonNode> f = it.next();
             JsonNode v = f.getValue();
-            System.out.println(f.getKey() + "=" + (v.isArray() ? join(v) : v.asText()));
+            out.append(f.getKey()).append('=').append(v.isArray() ? join(v) : v.asText()).append(System.lineSeparator());
         }
+        return out.toString();
     }
 
+    /** An array's items joined by ","; an object item as its values joined by ":" (robots: name:state[:since]). */
     private static String join(JsonNode array) {
         StringBuilder b = new StringBuilder();
         for (JsonNode n : array) {
-            b.append(b.length() == 0 ? "" : ",").append(n.asText());
+            b.append(b.length() == 0 ? "" : ",");
+            if (n.isObject()) {
+                StringBuilder o = new StringBuilder();
+                n.elements().forEachRemaining(e -> o.append(o.length() == 0 ? "" : ":").append(e.asText()));
+                b.append(o);
+            } else {
+                b.append(n.asText());
+            }
         }
         return b.toString();
     }

@@ -24,7 +24,7 @@ import javax.swing.WindowConstants;
 import robosim.protocol.SimulationKeys;
 
 /**
- * The Control Panel window: Load..., Start, Stop, Pause, Resume, Step N and Remove robot... buttons, and a live status
+ * The Control Panel window: Load..., Start, Stop, Pause, Resume, Step N, Add robot... and Remove robot... buttons, and a live status
  * (state, step, steps/s while running, which robots are connected and which have left, geometry; see
  * {@link StatusText}) polled twice a second. Requests go out on one
  * background thread, never on Swing's; a status poll waits while a long request (step N) runs.
@@ -78,6 +78,12 @@ public final class ControlPanelWindow {
         buttons.add(steps);
         buttons.add(button("Step", () -> send("step " + steps.getValue())));
         buttons.add(button("Shut down", () -> send("shutdown")));
+        buttons.add(button("Add robot...", () -> {
+            String request = AddRobotForm.ask(frame);
+            if (request != null) {
+                send(request);
+            }
+        }));
         buttons.add(button("Remove robot...", () -> {
             JsonNode status = lastStatus;
             List<String> names = status == null ? List.of() : StatusText.removable(status);

@@ -45,6 +45,26 @@ class StatusTextTest {
     }
 
     @Test
+    void theAddFormMakesOneRequestLineOrSaysWhichFieldIsWrong() {
+        assertEquals("add scout-9 Scout 1.5 2.0 90.0 robosim.examples.Wander",
+                AddRobotForm.request(" scout-9 ", "Scout", "1.5", " 2", "90", "robosim.examples.Wander "));
+        assertEquals("add r Scout 1.0 1.0 0.0", AddRobotForm.request("r", "Scout", "1", "1", "0", ""));
+        for (String[] bad : new String[][] {{"two words", "1", "the name must be one word"},
+                {"r", "x1", "x must be a number, got \"x1\""}}) {
+            IllegalArgumentException e = org.junit.jupiter.api.Assertions.assertThrows(IllegalArgumentException.class,
+                    () -> AddRobotForm.request(bad[0], "Scout", bad[1], "1", "0", ""));
+            org.junit.jupiter.api.Assertions.assertTrue(e.getMessage().startsWith(bad[2]), e.getMessage());
+        }
+    }
+
+    @Test
+    void aReplyPrintsAsKeyValueLinesWithEachRobotAsNameStateSince() throws Exception {
+        String n = System.lineSeparator();
+        assertEquals("ok=true" + n + "robots=a:running,b:held:1001" + n, ControlPanelMain.lines(status(
+                "{'ok':true,'robots':[{'name':'a','state':'running'},{'name':'b','state':'held','since':1001}]}")));
+    }
+
+    @Test
     void aReplayShowsItsRecordingSpeedAndViewers() throws Exception {
         assertEquals("replaying: run.rec\nrecorded:  steps 0 to 4999 (at the end: seek, or stop)\nspeed:     x2.5\n"
                 + "viewers:   1", StatusText.details(status("{'replay':true,'file':'run.rec','first_step':0,"

@@ -94,7 +94,7 @@ public final class EnvironmentMain implements Callable<Integer> {
     long writeTimeoutMs;
 
     @CommandLine.Mixin
-    LossOptions losses;
+    ClientOptions clients;
 
     @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
             description = "The control port for the Control Panel (default: ${DEFAULT-VALUE}; 0 = any free port; "
@@ -157,7 +157,7 @@ public final class EnvironmentMain implements Callable<Integer> {
             return 2;
         }
         String bad = maxConnections < 1 ? "environment: --max-connections must be >= 1, got " + maxConnections
-                : losses.bad(design);
+                : clients.bad(design);
         if (bad != null) {
             System.err.println(bad);
             return 2;
@@ -191,8 +191,8 @@ public final class EnvironmentMain implements Callable<Integer> {
                 .ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
                 .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
-                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(losses.onGeometryLoss)
-                .onRobotLoss(losses.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
+                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(clients.onGeometryLoss)
+                .onRobotLoss(clients.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
         EnvironmentDirectories directories;
         try {
             directories = envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs);
@@ -202,6 +202,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         boolean stay = keepRunning != null ? keepRunning : steps == 0;
         EnvironmentHost host = new EnvironmentHost(file, spec, settings, stay, startPaused);
+        host.launchRobots(clients.launchRobots ? new robosim.environment.control.RobotLaunches() : null);
         ControlServer control = null;
         WebViewerServer web = null;
         try {
@@ -243,6 +244,7 @@ public final class EnvironmentMain implements Callable<Integer> {
             if (web != null) {
                 web.close();
             }
+            host.stopLaunched();
         }
     }
 

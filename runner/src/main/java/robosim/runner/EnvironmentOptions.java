@@ -61,7 +61,7 @@ final class EnvironmentOptions {
     List<String> args(Path env, long steps, boolean noGeometry, List<String> resetArgs) {
         List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
                 "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
-                "0", "--coordinator", coordinator, "--on-robot-loss", onRobotLoss.name()));
+                "0", "--coordinator", coordinator, "--on-robot-loss", onRobotLoss.name(), "--launch-robots"));
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }

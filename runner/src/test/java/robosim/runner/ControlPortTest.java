@@ -38,6 +38,52 @@ class ControlPortTest {
     }
 
     @Test
+    void addLetsANewRobotJoinAtItsPoseAndRefusesWhatCannotBe() throws Exception {
+        try (ControlFixture f = new ControlFixture(THREE, null); ControlClient c = f.client(null)) {
+            List<CompletableFuture<String>> robots = f.robots();
+            assertEquals("paused at step 5", ok(c, "step 5").path("message").asText());
+            ok(c, "pause");
+            assertTrue(ok(c, "add r9 Scout 11 2 180").path("message").asText().startsWith("added r9: it joins when"));
+            for (String[] bad : new String[][] {{"add r9 Scout 11 3 0", "add r9: a robot named r9 is added already"},
+                    {"add r1 Scout 11 3 0", "add r1: a robot named r1 is in the simulation"},
+                    {"add r7 Scout 20 2 0", "add r7: (20.0, 2.0) m is not inside the arena for a Scout"},
+                    {"add r6 Hover 5 2 0", "add r6: type \"Hover\" is not a known robot type"},
+                    {"add r5 Scout one 2 0", "add: X must be a number, got \"one\""},
+                    {"add r4 Scout 5", "add needs NAME TYPE X Y HEADING [CONTROL]"}}) {
+                JsonNode r = c.request(bad[0]);
+                assertTrue(!r.path("ok").asBoolean() && r.path("error").asText().startsWith(bad[1]), bad[0] + " -> " + r);
+            }
+            try (RawRobot r9 = new RawRobot("r9", robosim.protocol.RobotModels.SCOUT, f.host.ports()[0])) {
+                assertTrue(r9.welcome.isAccepted(), r9.welcome.reason());
+                assertEquals(11_000, r9.welcome.xMm());
+                assertEquals(2_000, r9.welcome.yMm());
+                assertEquals(180, r9.welcome.headingDeg());
+                assertEquals(List.of("r1", "r2", "r3", "r9"), r9.welcome.robotNames());
+                JsonNode taken = c.request("add r8 Scout 11 2 0");
+                assertEquals("add r8: (11.0, 2.0) m is taken: robot r9 stands there", taken.path("error").asText());
+                CompletableFuture<Long> drives = CompletableFuture.supplyAsync(() -> {
+                    try {
+                        while (r9.next() && r9.step(50, 0, false, List.of()) != null) {
+                            // (until the end)
+                        }
+                        return r9.firstStep;
+                    } catch (IOException e) {
+                        throw new IllegalStateException(e);
+                    }
+                });
+                assertEquals("paused at step 7", ok(c, "step 2").path("message").asText());
+                JsonNode list = ok(c, "robots").path("robots");
+                assertEquals("r9 running", list.get(3).path("name").asText() + " " + list.get(3).path("state").asText());
+                ok(c, "stop");
+                assertEquals(6, drives.get(TIMEOUT_MS, TimeUnit.MILLISECONDS), "it took part from the step after the one held");
+            }
+            for (CompletableFuture<String> r : robots) {
+                r.get(TIMEOUT_MS, TimeUnit.MILLISECONDS);
+            }
+        }
+    }
+
+    @Test
     void removeTakesARobotOutOfTheRunForGoodAndRobotsListsEachState() throws Exception {
         try (ControlFixture f = new ControlFixture(THREE, null); ControlClient c = f.client(null)) {
             assertEquals("expected", ok(c, "robots").path("robots").get(0).path("state").asText());

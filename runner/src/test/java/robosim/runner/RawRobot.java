@@ -46,11 +46,19 @@ final class RawRobot implements AutoCloseable {
         return true;
     }
 
-    /** Sends the step's request (read with {@link #next} first) and reads its response. */
+    /**
+     * Sends the step's request (read with {@link #next} first) and reads its response; null when the
+     * simulation ended instead (stopped mid-step: its reason kept).
+     */
     StepResponse step(double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages) throws IOException {
         connection.write(new StepRequest(step, moveMm, turnDeg, sonar, messages));
         connection.flush();
-        return connection.read(StepResponse.class);
+        java.io.Externalizable answer = connection.read(java.io.Externalizable.class);
+        if (answer instanceof SimulationEnd end) {
+            endReason = end.reason();
+            return null;
+        }
+        return (StepResponse) answer;
     }
 
     @Override

@@ -33,12 +33,13 @@ public final class EnvironmentCommands implements ControlCommands {
     @Override
     public boolean waits(String verb) {
         return verb.equals("step") || verb.equals("pause") || verb.equals("start") || verb.equals("load")
-                || verb.equals("remove");
+                || verb.equals("remove") || verb.equals("add");
     }
 
     @Override
     public String known() {
-        return "status, start, stop, pause, resume, step N, load FILE, shutdown, robots, remove NAME";
+        return "status, start, stop, pause, resume, step N, load FILE, shutdown, robots, add NAME TYPE X Y HEADING "
+                + "[CONTROL], remove NAME";
     }
 
     @Override
@@ -66,15 +67,48 @@ public final class EnvironmentCommands implements ControlCommands {
                 n.putPOJO("robots", states(host.current().status()));
                 yield n;
             }
+            case "add" -> add(arg);
             case "remove" -> {
                 if (arg.isEmpty()) {
                     yield error("remove needs a robot's name: remove NAME");
                 }
-                String why = host.current().remove(arg);
+                String why = host.current().roster().remove(arg);
                 yield why == null ? ok("removed " + ControlReplies.abbreviate(arg)) : error(why);
             }
             default -> null;
         };
+    }
+
+    /** {@code add NAME TYPE X Y HEADING [CONTROL]}: metres and degrees; CONTROL starts its process with a launcher. */
+    private ObjectNode add(String arg) throws Exception {
+        String[] w = arg.isEmpty() ? new String[0] : arg.split("\\s+");
+        if (w.length < 5 || w.length > 6) {
+            return error("add needs NAME TYPE X Y HEADING [CONTROL] (metres, degrees), got " + w.length + " value(s)");
+        }
+        double[] pose = new double[3];
+        for (int k = 0; k < 3; k++) {
+            try {
+                pose[k] = Double.parseDouble(w[2 + k]);
+            } catch (NumberFormatException e) {
+                return error("add: " + new String[] {"X", "Y", "HEADING"}[k] + " must be a number, got \""
+                        + ControlReplies.abbreviate(w[2 + k]) + "\"");
+            }
+        }
+        String control = w.length == 6 ? w[5] : "";
+        String why = host.current().roster().add(w[0], w[1], pose[0], pose[1], pose[2], control);
+        if (why != null) {
+            return error("add " + ControlReplies.abbreviate(w[0]) + ": " + why);
+        }
+        if (control.isEmpty() || host.launches() == null) {
+            return ok("added " + w[0] + ": it joins when a robot process says hello as " + w[0]
+                    + (control.isEmpty() ? "" : " (this Environment starts no robot processes: no --launch-robots)"));
+        }
+        try {
+            host.launches().start(w[0], w[1], control, host.ports()[0]);
+        } catch (java.io.IOException e) {
+            return error("added " + w[0] + ", but its robot process was not started: " + e.getMessage());
+        }
+        return ok("added " + w[0] + " and started its robot process (" + control + ")");
     }
 
     /** Each robot as {"name", "state", "since"} ("since": the step it is held, waited for or gone since). */

@@ -31,6 +31,7 @@ public final class EnvironmentHost {
     private Settings settings;
     private boolean shutdown;
     private boolean startPaused;
+    private volatile RobotLaunches launches;
     /** True while {@code load} replaces the simulation: {@link #run} must not take its end for the last. */
     private boolean replacing;
 
@@ -47,6 +48,24 @@ public final class EnvironmentHost {
         this.settings = settings;
         this.keepRunning = keepRunning;
         this.startPaused = startPaused;
+    }
+
+    /** The control port's {@code add ... CONTROL} starts robot processes with this ({@code --launch-robots}). */
+    public void launchRobots(RobotLaunches with) {
+        launches = with;
+    }
+
+    /** The robot launcher, or null: {@code add} then waits for a robot process started elsewhere. */
+    public RobotLaunches launches() {
+        return launches;
+    }
+
+    /** Stops every robot process {@code add} started that is still running (the Environment is closing). */
+    public void stopLaunched() {
+        RobotLaunches l = launches;
+        if (l != null) {
+            l.close();
+        }
     }
 
     /** Binds the ports and opens the first simulation; a port in use is a BindException naming it. */

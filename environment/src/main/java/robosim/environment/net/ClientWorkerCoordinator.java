@@ -217,7 +217,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         return at == null ? cycle.record().stepsReleased : at;
     }
 
-    private static <T> T await(CompletableFuture<T> f, long timeout, TimeUnit unit) throws InterruptedException {
+    static <T> T await(CompletableFuture<T> f, long timeout, TimeUnit unit) throws InterruptedException {
         try {
             return f.get(timeout, unit);
         } catch (TimeoutException | ExecutionException e) {
@@ -225,16 +225,9 @@ public final class ClientWorkerCoordinator implements Closeable {
         }
     }
 
-    /**
-     * Removes robot {@code name} from the run for good, whatever {@code --on-robot-loss} says: it is told the
-     * simulation is over for it, and stands no more in the world from the end of the step in progress.
-     * Returns null, or why not (no such robot, not running, already gone).
-     */
-    public String remove(String name) throws InterruptedException {
-        CompletableFuture<String> verdict = new CompletableFuture<>();
-        post(new LoopEvent.RemoveRobot(name, verdict), () -> verdict.complete("the simulation is over"));
-        String why = await(verdict, STOP_WAIT_MS, TimeUnit.MILLISECONDS);
-        return why == null && !verdict.isDone() ? "the simulation loop did not answer" : why;
+    /** Adds and removes robots from the control port. */
+    public RobotRoster roster() {
+        return new RobotRoster(this);
     }
 
     /** Ends the simulation: robots, viewers and Geometry are told why. Returns once it has ended (at most a few s). */
@@ -261,7 +254,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     public RunSummary summary() {
-        return cycle.record().summary(robotNames.size());
+        return cycle.record().summary(Math.max(robotNames.size(), cycle.record().states.size()));
     }
 
     // ---- waiting for the run ---------------------------------------------------------------------------

@@ -8,13 +8,16 @@ import robosim.protocol.RobotWelcome;
 
 /**
  * What a robot's hello is checked against before the loop sees it (the protocol version, a name in the
- * file, properties that do not contradict the file) and the welcome an accepted robot gets. Immutable;
- * any thread.
+ * file, or one a rule of the file or an {@code add} lets join; properties that do not contradict it) and the
+ * welcome an accepted robot gets. Any thread.
  */
 final class Handshakes {
     private final WorldSpec spec;
     private final List<String> names;
     private final boolean stepMessages;
+    /** Robots the control port has added that have not joined yet (the loop writes it). */
+    private final java.util.Map<String, robosim.environment.core.JoinRule> added =
+            new java.util.concurrent.ConcurrentHashMap<>();
 
     Handshakes(WorldSpec spec, List<String> names, boolean stepMessages) {
         this.spec = spec;
@@ -32,7 +35,7 @@ final class Handshakes {
             return "a robot must say its name";
         }
         if (index < 0) {
-            robosim.environment.core.JoinRule rule = spec.joinRule(hello.name());
+            robosim.environment.core.JoinRule rule = added.getOrDefault(hello.name(), spec.joinRule(hello.name()));
             if (rule == null) {
                 return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
                         + String.join(", ", names) + joiners() + ")";
@@ -40,6 +43,11 @@ final class Handshakes {
             return rule.robot(hello.name(), 0, 0).contradiction(hello.properties(), spec.source());
         }
         return spec.robots().get(index).contradiction(hello.properties(), spec.source());
+    }
+
+    /** Robots added from the control port that have not joined yet, by name; the loop's to change. */
+    java.util.Map<String, robosim.environment.core.JoinRule> added() {
+        return added;
     }
 
     /** The file's join rules, for a refusal: "; may join: rover9, scout-*", or "" when there are none. */

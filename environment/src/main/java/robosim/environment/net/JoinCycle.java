@@ -26,11 +26,50 @@ abstract class JoinCycle extends RosterCycle {
     /** The world has grown since viewers and the recording last had a snapshot. */
     private boolean grown;
 
+    /** Robots the control port added that have not joined yet, by name (read by robot workers' handshakes). */
+    private final java.util.Map<String, JoinRule> added;
+
     JoinCycle(ClientWorkerCoordinator coordinator, RunListener listener) {
         super(coordinator, listener);
+        this.added = coordinator.handshakes().added();
         for (int i = 0; i < robots.length; i++) {
             ruleOf.add(null);
         }
+    }
+
+    /**
+     * The control port's {@code add}: null (a hello with the rule's name joins at its pose, once) or why not.
+     * The name must be new (not in the world, not added already), the pose inside the arena and free now.
+     */
+    String add(JoinRule rule) {
+        String name = rule.allow();
+        if (phase == Phase.ENDED || phase == Phase.WAITING) {
+            return "the simulation is " + (phase == Phase.ENDED ? "over" : "not running yet: add robots once it runs");
+        }
+        if (indexOf(name) >= 0 || added.containsKey(name)) {
+            return "a robot named " + name + " is " + (added.containsKey(name) ? "added already" : "in the simulation");
+        }
+        WorldSpec.RobotSpec r = rule.template();
+        robosim.protocol.Arena arena = spec.arena();
+        if (r.xMm() - r.radiusMm() < arena.minXMm() || r.xMm() + r.radiusMm() > arena.maxXMm()
+                || r.yMm() - r.radiusMm() < arena.minYMm() || r.yMm() + r.radiusMm() > arena.maxYMm()) {
+            return "(" + r.xMm() / 1000 + ", " + r.yMm() / 1000 + ") m is not inside the arena for a " + r.type();
+        }
+        StringBuilder why = new StringBuilder();
+        if (placer().place(rule, core.map(), why) == null) {
+            return "(" + r.xMm() / 1000 + ", " + r.yMm() / 1000 + ") m is taken: " + why;
+        }
+        added.put(name, rule);
+        LOG.info("robot {} added from the control port: a {} at ({}, {}) mm heading {} deg; it joins when it says hello",
+                name, r.type(), r.xMm(), r.yMm(), r.headingDeg());
+        return null;
+    }
+
+    private SpawnPlacer placer() {
+        if (placer == null) {
+            placer = new SpawnPlacer(spec);
+        }
+        return placer;
     }
 
     /** True while a step is being resolved: a hello waits until it is complete. */
@@ -44,7 +83,7 @@ abstract class JoinCycle extends RosterCycle {
         if (phase == Phase.ENDED) {
             return "the simulation is over";
         }
-        JoinRule rule = spec.joinRule(name);
+        JoinRule rule = added.containsKey(name) ? added.get(name) : spec.joinRule(name);
         if (rule == null) {
             return "no robot named \"" + Printable.of(name, 64) + "\" in " + spec.source() + " may join";
         }
@@ -60,10 +99,7 @@ abstract class JoinCycle extends RosterCycle {
             return "the world holds " + robots.length + " robots, the most it may";
         }
         StringBuilder why = new StringBuilder();
-        if (placer == null) {
-            placer = new SpawnPlacer(spec);
-        }
-        double[] at = placer.place(rule, core.map(), why);
+        double[] at = placer().place(rule, core.map(), why);
         if (at == null) {
             return rule.spawn() == null
                     ? "robot " + name + "'s start pose (" + rule.template().xMm() / 1000 + ", "
@@ -79,6 +115,7 @@ abstract class JoinCycle extends RosterCycle {
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
         }
+        boolean byAdd = added.remove(name) != null; // (an added robot joins once)
         int i = core.add(robot, hello.properties());
         grow(i + 1);
         ruleOf.add(rule);
@@ -91,8 +128,9 @@ abstract class JoinCycle extends RosterCycle {
         geometry.worldChanged(core.map().geometryWorld());
         rosterChanged = true;
         record.states = states();
-        LOG.info("robot {} joins at ({}, {}) mm heading {} deg ({} of {}): it takes part from the next step", name,
-                at[0], at[1], robot.headingDeg(), rule.spawn() == null ? "any-time" : rule.allow(), spec.source());
+        LOG.info("robot {} joins at ({}, {}) mm heading {} deg ({}): it takes part from the next step", name,
+                at[0], at[1], robot.headingDeg(), byAdd ? "added from the control port" : (rule.spawn() == null
+                        ? "any-time" : rule.allow()) + " of " + spec.source());
         listener.robotJoined(name, step);
         if (phase == Phase.COLLECTING) {
             bringBack(i); // the step being collected is its first

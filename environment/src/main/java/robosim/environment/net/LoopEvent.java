@@ -66,6 +66,10 @@ sealed interface LoopEvent {
     record StepN(long n, CompletableFuture<Long> done) implements LoopEvent {
     }
 
+    /** The control port adds a robot: its rule (its name, type and pose); {@code verdict}: null (it may join) or why not. */
+    record AddRobot(robosim.environment.core.JoinRule rule, CompletableFuture<String> verdict) implements LoopEvent {
+    }
+
     /** The control port removes a robot; {@code verdict}: null (removed, or at the step's end) or why not. */
     record RemoveRobot(String name, CompletableFuture<String> verdict) implements LoopEvent {
     }

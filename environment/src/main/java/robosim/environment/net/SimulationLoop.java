@@ -143,6 +143,9 @@ final class SimulationLoop implements Runnable {
             r.applied().complete(null);
         } else if (e instanceof LoopEvent.StepN s) {
             cycle.control().stepN(s.n(), s.done(), cycle.released(), cycle.running());
+        } else if (e instanceof LoopEvent.AddRobot a) {
+            a.verdict().complete(cycle.add(a.rule()));
+            rosterChanged = true;
         } else if (e instanceof LoopEvent.RemoveRobot r) {
             r.verdict().complete(cycle.removeRobot(r.name()));
             rosterChanged = true;

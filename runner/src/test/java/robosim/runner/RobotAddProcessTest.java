@@ -1,0 +1,65 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import robosim.control.ControlClient;
+
+/**
+ * The control port's {@code add} on an Environment started with {@code --launch-robots} (as headless.sh
+ * starts it): the Environment starts the new robot's process, which joins the held run at the pose given and
+ * takes part from the next step; its output and exit go to the Environment's log.
+ */
+class RobotAddProcessTest {
+    private static final long LONG_S = 60;
+
+    private static ProcessLines java(String name, String... args) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-cp", System.getProperty("java.class.path")));
+        command.addAll(List.of(args));
+        return new ProcessLines(name, new ProcessBuilder(command));
+    }
+
+    @Test
+    void addStartsTheRobotsProcessAndItJoinsAtItsPose() throws Exception {
+        try (ProcessLines env = java("environment", "robosim.environment.EnvironmentMain",
+                "src/test/resources/three-robots.xml", "--steps", "400", "--no-geometry", "--robot-port", "0",
+                "--viewer-port", "0", "--control-port", "0", "--start-paused", "--launch-robots")) {
+            Map<String, String> ports = HeadlessRunner.fields(env.await("listening robots=", LONG_S));
+            try (ProcessLines others = java("r1,2,3", "robosim.hardware.MultiRobotMain", "127.0.0.1", ports.get("robots"),
+                    "--robot", "r1:ArRobot:robosim.examples.BackAndForth", "--robot",
+                    "r2:ArRobot:robosim.examples.BackAndForth", "--robot", "r3:Scout:robosim.examples.BackAndForth");
+                    ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(ports.get("control")), null,
+                            (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
+                env.await("running robots=3", LONG_S);
+                assertEquals("paused at step 10", ok(control, "step 10"));
+                ok(control, "pause");
+                assertEquals("added r9 and started its robot process (robosim.examples.BackAndForth)",
+                        ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
+                env.await("robot r9 joins at (11000.0, 2000.0) mm heading 180.0 deg", LONG_S);
+                JsonNode r9 = control.request("robots").path("robots").get(3);
+                assertEquals("r9 joining", r9.path("name").asText() + " " + r9.path("state").asText());
+                ok(control, "resume");
+                env.await("robot r9 takes part from step 11", LONG_S);
+                env.await("summary steps=400", LONG_S);
+                env.await("robot r9's process exited (0)", LONG_S);
+                assertTrue(others.process.waitFor(LONG_S, TimeUnit.SECONDS));
+            }
+            assertTrue(env.process.waitFor(LONG_S, TimeUnit.SECONDS));
+            assertEquals(0, env.process.exitValue(), env.output());
+        }
+    }
+
+    private static String ok(ControlClient control, String request) throws Exception {
+        JsonNode r = control.request(request);
+        assertTrue(r.path("ok").asBoolean(), request + ": " + r);
+        return r.path("message").asText();
+    }
+}
