@@ -13,11 +13,13 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.Settings;
 import robosim.examples.Wander;
 import robosim.hardware.HardwareSimulator;
@@ -31,8 +33,9 @@ import robosim.protocol.WorldSnapshot;
 /**
  * Robots joining a running world: 20 scouts join one by one during a 100-step run (at steps 4, 8, ... 80,
  * exactly: the run is held and stepped from here), each entering at the first free pose of its spawn region;
- * no robot ever overlaps another or an obstacle (JTS over every step's poses), viewers get the world again
- * with each, and the same joins give the same run, pose for pose. Bad names and full regions are refused.
+ * no robot ever overlaps another or an obstacle (JTS over the pose log), viewers get the world again with
+ * each, and the same joins give the same run, pose for pose, also with a Geometry process (sent the grown
+ * world each time). Bad names and full regions are refused.
  */
 class RobotJoinTest {
     private static final long LONG = 60;
@@ -45,15 +48,22 @@ class RobotJoinTest {
     }
 
     private static ClientWorkerCoordinator start() throws Exception {
-        Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                .maxSteps(STEPS).resetEvery(64).build();
+        return start(true);
+    }
+
+    private static ClientWorkerCoordinator start(boolean inProcessGeometry) throws Exception {
+        return start(Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0)
+                .inProcessGeometry(inProcessGeometry).maxSteps(STEPS).resetEvery(64).build());
+    }
+
+    private static ClientWorkerCoordinator start(Settings s) throws Exception {
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(new EnvironmentLoader().load(WORLD), s);
         env.startPaused();
         env.start();
         return env;
     }
 
-    private static Seen watch(int port) throws Exception {
+    private static Seen watch(int port, PoseLog log) throws Exception {
         Seen seen = new Seen(new CopyOnWriteArrayList<>(), new CopyOnWriteArrayList<>(), new CopyOnWriteArrayList<>(),
                 new CompletableFuture<>());
         ViewerClient v = ViewerClient.connect("127.0.0.1", port, true, 10_000);
@@ -61,10 +71,12 @@ class RobotJoinTest {
             @Override
             public void snapshot(WorldSnapshot snapshot) {
                 seen.worlds().add(snapshot);
+                log.snapshot(snapshot);
             }
 
             @Override
             public void update(PoseUpdate update) {
+                log.update(update);
                 seen.updates().add(update);
                 seen.worldOf().add(seen.worlds().size() - 1);
             }
@@ -87,11 +99,24 @@ class RobotJoinTest {
         });
     }
 
-    /** One run: walker from the start, 20 scouts joining at steps 4, 8, ... 80; what a recording viewer saw. */
-    private static Seen run() throws Exception {
-        try (ClientWorkerCoordinator env = start()) {
+    /**
+     * One run: walker from the start, 20 scouts joining at steps 4, 8, ... 80; what a recording viewer saw,
+     * which also wrote the pose log {@code poses}. Geometry in-process, or a Geometry process (in this JVM).
+     */
+    private static Seen run(boolean inProcessGeometry, Path poses) throws Exception {
+        try (ClientWorkerCoordinator env = start(inProcessGeometry); PoseLog log = new PoseLog(poses)) {
             int[] ports = env.ports();
-            Seen seen = watch(ports[1]);
+            if (!inProcessGeometry) {
+                Socket g = new Socket(InetAddress.getLoopbackAddress(), ports[2]);
+                CompletableFuture.runAsync(() -> {
+                    try {
+                        new robosim.geometry.GeometryClient(g, 64).run();
+                    } catch (java.io.IOException e) {
+                        throw new IllegalStateException(e);
+                    }
+                });
+            }
+            Seen seen = watch(ports[1], log);
             HardwareSimulator walker = new HardwareSimulator("walker", RobotType.byName("ArRobot"));
             walker.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
             CompletableFuture<String> walking = CompletableFuture.supplyAsync(() -> {
@@ -124,8 +149,10 @@ class RobotJoinTest {
     }
 
     @Test
-    void twentyRobotsJoinOneByOneNeverOverlappingAnythingAndTheSameJoinsGiveTheSameRun() throws Exception {
-        Seen first = run();
+    void twentyRobotsJoinOneByOneNeverOverlappingAnythingAndTheSameJoinsGiveTheSameRun(@TempDir Path dir)
+            throws Exception {
+        Path poses = dir.resolve("poses.csv");
+        Seen first = run(true, poses);
         assertEquals(21, first.worlds().size(), "the first world, then the world again with each scout");
         GeometryFactory jts = new GeometryFactory();
         List<Geometry> obstacles = new ArrayList<>();
@@ -138,24 +165,39 @@ class RobotJoinTest {
             obstacles.add(jts.createPolygon(ring));
         }
         for (int s = 0; s < STEPS; s++) {
-            PoseUpdate u = first.updates().get(s);
             WorldSnapshot w = first.worlds().get(first.worldOf().get(s));
-            assertEquals(w.robotNames().size(), u.count(), "step " + s + " is of the world the viewer has");
-            assertEquals(1 + Math.min(20, s / 4), u.count(), "step " + s + ": the scouts that have joined");
-            for (int i = 0; i < u.count(); i++) {
-                double ri = w.radiusMm(i);
-                for (int j = i + 1; j < u.count(); j++) {
-                    double d = Math.hypot(u.xMm(i) - u.xMm(j), u.yMm(i) - u.yMm(j));
-                    assertTrue(d >= ri + w.radiusMm(j) - 1e-6, "step " + s + ": " + w.robotNames().get(i) + " and "
-                            + w.robotNames().get(j) + " overlap (" + d + " mm apart)");
+            assertEquals(w.robotNames().size(), first.updates().get(s).count(), "step " + s + " is of its world");
+        }
+        // over the pose log: every step's rows, one per robot of that step, none overlapping anything
+        WorldSnapshot last = first.worlds().get(first.worlds().size() - 1);
+        List<String> rows = java.nio.file.Files.readAllLines(poses);
+        assertEquals("step,robot,x_m,y_m,heading_deg,state", rows.get(0));
+        int row = 1;
+        for (int s = 0; s < STEPS; s++) {
+            List<String[]> at = new ArrayList<>();
+            while (row < rows.size() && rows.get(row).startsWith(s + ",")) {
+                at.add(rows.get(row++).split(","));
+            }
+            assertEquals(1 + Math.min(20, s / 4), at.size(), "step " + s + ": the walker and the scouts that joined");
+            for (int i = 0; i < at.size(); i++) {
+                double ri = last.radiusMm(last.robotNames().indexOf(at.get(i)[1]));
+                double xi = Double.parseDouble(at.get(i)[2]) * 1000;
+                double yi = Double.parseDouble(at.get(i)[3]) * 1000;
+                for (int j = i + 1; j < at.size(); j++) {
+                    double rj = last.radiusMm(last.robotNames().indexOf(at.get(j)[1]));
+                    double d = Math.hypot(xi - Double.parseDouble(at.get(j)[2]) * 1000,
+                            yi - Double.parseDouble(at.get(j)[3]) * 1000);
+                    assertTrue(d >= ri + rj - 1e-3, "step " + s + ": " + at.get(i)[1] + " and " + at.get(j)[1]
+                            + " overlap (" + d + " mm apart)");
                 }
                 for (Geometry o : obstacles) {
-                    assertTrue(o.distance(jts.createPoint(new Coordinate(u.xMm(i), u.yMm(i)))) >= ri - 1e-6,
-                            "step " + s + ": " + w.robotNames().get(i) + " overlaps an obstacle");
+                    assertTrue(o.distance(jts.createPoint(new Coordinate(xi, yi))) >= ri - 1e-3,
+                            "step " + s + ": " + at.get(i)[1] + " overlaps an obstacle");
                 }
             }
         }
-        Seen second = run();
+        assertEquals(rows.size(), row, "nothing after the last step");
+        Seen second = run(false, dir.resolve("again.csv")); // (with a Geometry process: the world sent again)
         for (int s = 0; s < STEPS; s++) {
             PoseUpdate a = first.updates().get(s);
             PoseUpdate b = second.updates().get(s);
@@ -193,6 +235,13 @@ class RobotJoinTest {
                 }
                 assertFalse(env.status().robots().contains("rover"));
             }
+        }
+        try (ClientWorkerCoordinator env = start(Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0)
+                .inProcessGeometry(true).maxSteps(STEPS).design(CoordinatorDesign.SEQUENTIAL).build());
+                RawRobot walker = new RawRobot("walker", RobotModels.AR_ROBOT, env.ports()[0])) {
+            assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
+            String refused = refusal("scout-1", env.ports()[0]);
+            assertTrue(refused.startsWith("robots cannot join this run: its SEQUENTIAL coordinator"), refused);
         }
     }
 

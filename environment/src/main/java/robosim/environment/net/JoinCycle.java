@@ -20,6 +20,10 @@ import robosim.protocol.WorldSnapshot;
  * update, the recording a roster frame. Loop thread only.
  */
 abstract class JoinCycle extends RosterCycle {
+    /** Why no robot joins under {@code SEQUENTIAL}. */
+    private static final String SEQUENTIAL_FIXED = "robots cannot join this run: its SEQUENTIAL coordinator reads a "
+            + "fixed list of robots (THREADS or TWO_THREADS can)";
+
     /** The rule each robot joined by, in world order (null for the file's robots). */
     private final List<JoinRule> ruleOf = new ArrayList<>();
     private SpawnPlacer placer;
@@ -43,6 +47,9 @@ abstract class JoinCycle extends RosterCycle {
      */
     String add(JoinRule rule) {
         String name = rule.allow();
+        if (settings.design() == CoordinatorDesign.SEQUENTIAL) {
+            return SEQUENTIAL_FIXED;
+        }
         if (phase == Phase.ENDED || phase == Phase.WAITING) {
             return "the simulation is " + (phase == Phase.ENDED ? "over" : "not running yet: add robots once it runs");
         }
@@ -84,6 +91,9 @@ abstract class JoinCycle extends RosterCycle {
             return "the simulation is over";
         }
         JoinRule rule = added.containsKey(name) ? added.get(name) : spec.joinRule(name);
+        if (settings.design() == CoordinatorDesign.SEQUENTIAL) {
+            return SEQUENTIAL_FIXED;
+        }
         if (rule == null) {
             return "no robot named \"" + Printable.of(name, 64) + "\" in " + spec.source() + " may join";
         }

@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import java.io.IOException;
 import java.net.Socket;
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -75,6 +76,12 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
             return -1;
         }
         int i = coordinator.spec().indexOf(name);
+        if (i < 0) { // (a robot that joined the running world: the loop's published list has it)
+            List<RobotState> now = coordinator.status().states();
+            for (int k = 0; k < now.size() && i < 0; k++) {
+                i = now.get(k).name().equals(name) ? k : -1;
+            }
+        }
         return i < 0 ? NO_SUCH_ROBOT : i;
     }
 

@@ -7,13 +7,16 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
+import robosim.protocol.Arena;
 import robosim.protocol.CommEvent;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotModels;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
+import robosim.protocol.WorldSnapshot;
 
 /** A viewer's queue: bounded, coalescing, and never a reason for the loop to wait. */
 class ViewerQueueTest {
@@ -32,6 +35,30 @@ class ViewerQueueTest {
         SimulationEnd end = new SimulationEnd(4999, "done");
         q.end(end);
         assertSame(end, q.take(), "nothing older was held");
+    }
+
+    @Test
+    void theWorldAfterAJoinGoesRightBeforeItsFirstUpdateAndALiveViewerKeepsItWhenTheUpdateIsReplaced()
+            throws Exception {
+        WorldSnapshot grown = new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), List.of("a", "b"),
+                List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+                new PoseUpdate(1, new double[] {0, 1}, new double[] {0, 1}, new double[] {0, 0}));
+        ViewerQueue recording = new ViewerQueue(true, 0);
+        recording.offer(update(0), null);
+        recording.offer(grown, update(1), null);
+        recording.offer(update(2), null);
+        assertEquals(0, ((PoseUpdate) recording.take()).step());
+        assertSame(grown, recording.take(), "the world, then the first update of it");
+        assertEquals(1, ((PoseUpdate) recording.take()).step());
+        assertEquals(2, ((PoseUpdate) recording.take()).step());
+        ViewerQueue live = new ViewerQueue(false, 0);
+        live.offer(grown, update(1), null);
+        live.offer(update(2), null);
+        live.offer(update(3), null);
+        assertSame(grown, live.take(), "the replaced update handed its world on");
+        assertEquals(3, ((PoseUpdate) live.take()).step());
+        live.offer(update(4), null);
+        assertEquals(4, ((PoseUpdate) live.take()).step(), "the world once");
     }
 
     @Test

@@ -1,0 +1,67 @@
+package robosim.environment.replay;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNull;
+
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.protocol.Arena;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
+import robosim.protocol.RecordingWriter;
+import robosim.protocol.RobotModels;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+import robosim.protocol.WorldSnapshot;
+
+/** A replay follows the world of each step it shows: viewers get it again when robots joined, or a seek crosses a join. */
+class RecordingCursorTest {
+    private static PoseUpdate poses(long k, int n) {
+        double[] v = new double[n];
+        for (int i = 0; i < n; i++) {
+            v[i] = 1000 * i + k;
+        }
+        return new PoseUpdate(k, v, v.clone(), new double[n]);
+    }
+
+    private static WorldSnapshot world(int n, long step) {
+        List<String> names = List.of("a", "b", "c").subList(0, n);
+        return new WorldSnapshot(500, new Arena(0, 0, 10_000, 10_000), List.of(), names,
+                List.of(RobotModels.SCOUT, RobotModels.SCOUT, RobotModels.SCOUT).subList(0, n), poses(step, n));
+    }
+
+    @Test
+    void theWorldOfEachStepShownGoesToViewersWhenItChanges(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("joins.rec");
+        try (RecordingWriter w = new RecordingWriter(file)) {
+            w.snapshot(world(2, -1));
+            for (int k = 0; k < 6; k++) {
+                if (k == 3) {
+                    w.roster(world(3, 2));
+                }
+                int n = k < 3 ? 2 : 3;
+                w.step(poses(k, n), new StepRequest[n], new StepResponse[n]);
+            }
+            w.end(new SimulationEnd(5, "completed 6 steps"));
+        }
+        try (RecordingReader r = new RecordingReader(file)) {
+            RecordingCursor at = new RecordingCursor(r);
+            assertEquals(2, at.snapshot().robotNames().size(), "a viewer joining before the first step");
+            for (int i = 0; i < 3; i++) {
+                assertEquals(2, at.show(i).count());
+                assertNull(at.takeWorldChange());
+            }
+            assertEquals(3, at.show(3).count());
+            assertEquals(List.of("a", "b", "c"), at.takeWorldChange().robotNames(), "c joined: the world again");
+            assertNull(at.takeWorldChange(), "once");
+            assertEquals(3, at.show(4).count());
+            assertNull(at.takeWorldChange());
+            assertEquals(3, at.snapshot().robotNames().size(), "a viewer joining now gets the grown world");
+            assertEquals(2, at.show(1).count(), "a seek back before the join");
+            assertEquals(List.of("a", "b"), at.takeWorldChange().robotNames());
+        }
+    }
+}
