@@ -50,9 +50,14 @@ public final class RecordToolMain implements Callable<Integer> {
         }
     }
 
-    private static void summary(RecordingReader r, PrintStream out) {
+    static void summary(RecordingReader r, PrintStream out) throws IOException {
         var s = r.snapshot();
         out.println("robots=" + s.robotNames().size() + " " + String.join(",", s.robotNames()));
+        if (r.steps() > 0 && r.snapshotAt(r.steps() - 1) != s) {
+            var last = r.snapshotAt(r.steps() - 1).robotNames();
+            out.println("joined=" + (last.size() - s.robotNames().size()) + " "
+                    + String.join(",", last.subList(s.robotNames().size(), last.size())));
+        }
         out.println("time_step_ms=" + s.timeStepMs() + " obstacles=" + s.obstacles().size());
         out.println("steps=" + r.steps() + (r.steps() == 0 ? "" : " first=" + r.stepNumber(0) + " last="
                 + r.stepNumber(r.steps() - 1)));
@@ -64,10 +69,10 @@ public final class RecordToolMain implements Callable<Integer> {
         }
     }
 
-    private static void poses(RecordingReader r, BufferedWriter out) throws IOException {
+    static void poses(RecordingReader r, BufferedWriter out) throws IOException {
         out.write(PoseLog.HEADER);
         for (int k = 0; k < r.steps(); k++) {
-            PoseLog.write(r.step(k).update(), r.snapshot().robotNames(), out);
+            PoseLog.write(r.step(k).update(), r.snapshotAt(k).robotNames(), out); // (robots may have joined)
         }
     }
 

@@ -26,6 +26,7 @@ import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
 import robosim.protocol.RobotModels;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.WorldSnapshot;
@@ -48,12 +49,12 @@ class RobotJoinTest {
     }
 
     private static ClientWorkerCoordinator start() throws Exception {
-        return start(true);
+        return start(true, null);
     }
 
-    private static ClientWorkerCoordinator start(boolean inProcessGeometry) throws Exception {
+    private static ClientWorkerCoordinator start(boolean inProcessGeometry, Path record) throws Exception {
         return start(Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0)
-                .inProcessGeometry(inProcessGeometry).maxSteps(STEPS).resetEvery(64).build());
+                .inProcessGeometry(inProcessGeometry).maxSteps(STEPS).resetEvery(64).record(record).build());
     }
 
     private static ClientWorkerCoordinator start(Settings s) throws Exception {
@@ -103,8 +104,8 @@ class RobotJoinTest {
      * One run: walker from the start, 20 scouts joining at steps 4, 8, ... 80; what a recording viewer saw,
      * which also wrote the pose log {@code poses}. Geometry in-process, or a Geometry process (in this JVM).
      */
-    private static Seen run(boolean inProcessGeometry, Path poses) throws Exception {
-        try (ClientWorkerCoordinator env = start(inProcessGeometry); PoseLog log = new PoseLog(poses)) {
+    private static Seen run(boolean inProcessGeometry, Path poses, Path record) throws Exception {
+        try (ClientWorkerCoordinator env = start(inProcessGeometry, record); PoseLog log = new PoseLog(poses)) {
             int[] ports = env.ports();
             if (!inProcessGeometry) {
                 Socket g = new Socket(InetAddress.getLoopbackAddress(), ports[2]);
@@ -143,6 +144,7 @@ class RobotJoinTest {
             }
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
             seen.client().get().awaitEnd(LONG, TimeUnit.SECONDS); // (every update it was sent has been taken)
+            env.awaitOutputDone(LONG * 1000); // (the recording is written)
             assertEquals(STEPS, seen.updates().size());
             return seen;
         }
@@ -152,7 +154,8 @@ class RobotJoinTest {
     void twentyRobotsJoinOneByOneNeverOverlappingAnythingAndTheSameJoinsGiveTheSameRun(@TempDir Path dir)
             throws Exception {
         Path poses = dir.resolve("poses.csv");
-        Seen first = run(true, poses);
+        Path record = dir.resolve("joins.rec");
+        Seen first = run(true, poses, record);
         assertEquals(21, first.worlds().size(), "the first world, then the world again with each scout");
         GeometryFactory jts = new GeometryFactory();
         List<Geometry> obstacles = new ArrayList<>();
@@ -197,7 +200,19 @@ class RobotJoinTest {
             }
         }
         assertEquals(rows.size(), row, "nothing after the last step");
-        Seen second = run(false, dir.resolve("again.csv")); // (with a Geometry process: the world sent again)
+        try (RecordingReader r = new RecordingReader(record)) {
+            java.io.StringWriter recorded = new java.io.StringWriter();
+            try (java.io.BufferedWriter out = new java.io.BufferedWriter(recorded)) {
+                RecordToolMain.poses(r, out);
+            }
+            assertEquals(java.nio.file.Files.readString(poses), recorded.toString(),
+                    "the recording's poses (record-tool poses) are the pose log's");
+            java.io.ByteArrayOutputStream summary = new java.io.ByteArrayOutputStream();
+            RecordToolMain.summary(r, new java.io.PrintStream(summary, true, java.nio.charset.StandardCharsets.UTF_8));
+            assertTrue(summary.toString(java.nio.charset.StandardCharsets.UTF_8).contains("joined=20 scout-1,scout-2,"),
+                    summary.toString(java.nio.charset.StandardCharsets.UTF_8));
+        }
+        Seen second = run(false, dir.resolve("again.csv"), null); // (with a Geometry process: the world sent again)
         for (int s = 0; s < STEPS; s++) {
             PoseUpdate a = first.updates().get(s);
             PoseUpdate b = second.updates().get(s);
