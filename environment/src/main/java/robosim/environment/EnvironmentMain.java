@@ -137,7 +137,7 @@ public final class EnvironmentMain implements Callable<Integer> {
     int webPort;
 
     @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,
-            description = "Connections each port holds at once beyond the robots the file names; one more is "
+            description = "Connections each port holds at once beyond the robots the file names or lets join (<join max>); one more is "
                     + "closed at once (default: ${DEFAULT-VALUE}).")
     int maxConnections;
 

@@ -24,7 +24,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
 
     /**
      * Listening: the address and the robot, viewer and Geometry ports (0: a free one), how many
-     * connections each port holds at once beyond the robots the file names (one more is closed at once),
+     * connections each port holds at once beyond the robots the file names or lets join (one more is closed at once),
      * and the keys every client must prove in its handshake, with TLS when they hold a key pair (null: none,
      * loopback only).
      */
