@@ -24,7 +24,8 @@ import javax.swing.WindowConstants;
 import robosim.protocol.SimulationKeys;
 
 /**
- * The Control Panel window: Load..., Start, Stop, Pause, Resume, Step N, Add robot... and Remove robot... buttons, and a live status
+ * The Control Panel window: Load..., Start, Stop, Pause, Resume, Step N, Add robot... and Remove robot...
+ * buttons, and a live status
  * (state, step, steps/s while running, which robots are connected and which have left, geometry; see
  * {@link StatusText}) polled twice a second. Requests go out on one
  * background thread, never on Swing's; a status poll waits while a long request (step N) runs.

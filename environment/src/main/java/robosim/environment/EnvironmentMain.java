@@ -137,8 +137,8 @@ public final class EnvironmentMain implements Callable<Integer> {
     int webPort;
 
     @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,
-            description = "Connections each port holds at once beyond the robots the file names or lets join (<join max>); one more is "
-                    + "closed at once (default: ${DEFAULT-VALUE}).")
+            description = "Connections each port holds at once beyond the robots the file names or lets join "
+                    + "(<join max>); one more is closed at once (default: ${DEFAULT-VALUE}).")
     int maxConnections;
 
     @Override
@@ -187,12 +187,12 @@ public final class EnvironmentMain implements Callable<Integer> {
                     ? "already exists (not overwritten)" : "its directory does not exist"));
             return 2;
         }
-        Settings settings = Settings.builder().record(record)
-                .ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
+        Settings settings = Settings.builder().record(record).ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
                 .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
                 .design(design).inProcessGeometry(noGeometry).onGeometryLoss(clients.onGeometryLoss)
-                .onRobotLoss(clients.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages).resetEvery(resetEvery).build();
+                .onRobotLoss(clients.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages)
+                .resetEvery(resetEvery).build();
         EnvironmentDirectories directories;
         try {
             directories = envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs);
