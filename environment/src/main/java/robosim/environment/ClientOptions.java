@@ -33,7 +33,7 @@ final class ClientOptions {
     String bad(CoordinatorDesign design) {
         if (onRobotLoss != RobotLoss.REMOVE && design == CoordinatorDesign.SEQUENTIAL) {
             return "environment: --on-robot-loss " + onRobotLoss + " needs the THREADS or TWO_THREADS coordinator: "
-                    + "the SEQUENTIAL loop reads a fixed list of robots, so a robot cannot come back";
+                    + "the SEQUENTIAL loop reads a fixed list of robots";
         }
         return null;
     }

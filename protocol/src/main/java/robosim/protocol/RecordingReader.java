@@ -185,16 +185,6 @@ public final class RecordingReader implements Closeable {
         }
     }
 
-    /** True if robots joined right before the i-th recorded step (a roster frame precedes it). */
-    public boolean rosterChangesAt(int i) {
-        for (int r = 0; r < rosters; r++) {
-            if (rosterFrom[r] == i) {
-                return true;
-            }
-        }
-        return false;
-    }
-
     /** Whole steps recorded. */
     public int steps() {
         return steps;

@@ -182,7 +182,7 @@ class RobotLossTest {
 
     @Test
     void underWaitARobotThatDoesNotComeBackWithinTheStepTimeoutIsRemoved() throws Exception {
-        try (ClientWorkerCoordinator env = start(RobotLoss.WAIT, CoordinatorDesign.THREADS, 2_000)) {
+        try (ClientWorkerCoordinator env = start(RobotLoss.WAIT, CoordinatorDesign.THREADS, 5_000)) {
             int port = env.ports()[0];
             CompletableFuture<Long> others = others(port, -1, new CountDownLatch(1), new CountDownLatch(0));
             try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
@@ -195,7 +195,7 @@ class RobotLossTest {
             assertEquals(1, s.robotsLeft());
             assertEquals("r1", s.departures().get(0).robot());
             assertEquals(20, s.departures().get(0).step());
-            assertTrue(s.departures().get(0).why().contains("did not come back within 2000 ms"),
+            assertTrue(s.departures().get(0).why().contains("did not come back within 5000 ms"),
                     s.departures().get(0).why());
         }
     }

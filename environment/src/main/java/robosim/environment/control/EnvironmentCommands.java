@@ -15,7 +15,8 @@ import robosim.environment.net.RunStatus;
 /**
  * The Environment's control requests: {@code status}, {@code start}, {@code stop}, {@code pause},
  * {@code resume}, {@code step N}, {@code load FILE} (only under the {@link EnvironmentDirectories}),
- * {@code shutdown}, {@code robots} (each robot's {@link RobotState}) and {@code remove NAME}, on the
+ * {@code shutdown}, {@code robots} (each robot's {@link RobotState}), {@code add NAME TYPE X Y HEADING
+ * [CONTROL]} and {@code remove NAME}, on the
  * {@link EnvironmentHost}'s current simulation.
  */
 public final class EnvironmentCommands implements ControlCommands {
@@ -95,6 +96,10 @@ public final class EnvironmentCommands implements ControlCommands {
             }
         }
         String control = w.length == 6 ? w[5] : "";
+        String cannot = control.isEmpty() || host.launches() == null ? null : host.launches().check(control);
+        if (cannot != null) {
+            return error("add " + ControlReplies.abbreviate(w[0]) + ": " + cannot);
+        }
         String why = host.current().roster().add(w[0], w[1], pose[0], pose[1], pose[2], control);
         if (why != null) {
             return error("add " + ControlReplies.abbreviate(w[0]) + ": " + why);
@@ -104,9 +109,10 @@ public final class EnvironmentCommands implements ControlCommands {
                     + (control.isEmpty() ? "" : " (this Environment starts no robot processes: no --launch-robots)"));
         }
         try {
-            host.launches().start(w[0], w[1], control, host.ports()[0]);
+            host.launches().start(w[0], w[1], control, host.robotHost(), host.ports()[0]);
         } catch (java.io.IOException e) {
-            return error("added " + w[0] + ", but its robot process was not started: " + e.getMessage());
+            host.current().roster().remove(w[0]); // (not let in: nothing will say hello as it)
+            return error("add " + w[0] + ": its robot process could not start: " + e.getMessage());
         }
         return ok("added " + w[0] + " and started its robot process (" + control + ")");
     }

@@ -60,6 +60,12 @@ public final class EnvironmentHost {
         return launches;
     }
 
+    /** Where a robot process on this machine connects: the address the robot port listens on, or loopback. */
+    public String robotHost() {
+        java.net.InetAddress bind = base.bind();
+        return bind.isAnyLocalAddress() ? "127.0.0.1" : bind.getHostAddress();
+    }
+
     /** Stops every robot process {@code add} started that is still running (the Environment is closing). */
     public void stopLaunched() {
         RobotLaunches l = launches;

@@ -14,7 +14,8 @@ import org.slf4j.LoggerFactory;
 /**
  * The Environment's robot launcher ({@code --launch-robots}, as {@code headless.sh} starts it): the control
  * port's {@code add ... CONTROL} starts that robot's process here, {@code robosim.hardware.RobotMain} on this
- * JVM's class path, connecting to this Environment's robot port on loopback. Its output goes to this log,
+ * JVM's class path, connecting to this Environment's robot port (on the address it listens on; loopback when
+ * it listens on every address), with this process's environment (its keys). Its output goes to this log,
  * each line prefixed with the robot's name (thread {@code robot-output[name]}, which blocks in its read); when the
  * Environment closes, each still running gets a grace period to exit and is then stopped. At most
  * {@link #MAX} at once.
@@ -31,18 +32,27 @@ public final class RobotLaunches implements AutoCloseable {
     private final List<Process> running = new ArrayList<>();
     private final List<Thread> outputs = new ArrayList<>();
 
-    /** Starts robot {@code name}'s process; its one-line refusal (a bad class name, too many) as an exception. */
-    public synchronized void start(String name, String type, String control, int robotPort) throws IOException {
+    /** Null if a robot process with this control class may start now, else why not (a bad class name, too many). */
+    public synchronized String check(String control) {
         running.removeIf(p -> !p.isAlive());
         if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
-            throw new IOException("\"" + control.substring(0, Math.min(control.length(), 64))
-                    + "\" is not a Java class name");
+            return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
         }
-        if (running.size() >= MAX) {
-            throw new IOException("this Environment runs " + MAX + " robot processes already");
+        return running.size() >= MAX ? "this Environment runs " + MAX + " robot processes already" : null;
+    }
+
+    /**
+     * Starts robot {@code name}'s process, connecting to {@code host}'s robot port; a refusal ({@link #check}) or
+     * a process that cannot start is an IOException saying why.
+     */
+    public synchronized void start(String name, String type, String control, String host, int robotPort)
+            throws IOException {
+        String refusal = check(control);
+        if (refusal != null) {
+            throw new IOException(refusal);
         }
         List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                System.getProperty("java.class.path"), "robosim.hardware.RobotMain", control, name, "127.0.0.1",
+                System.getProperty("java.class.path"), "robosim.hardware.RobotMain", control, name, host,
                 Integer.toString(robotPort), "--type", type);
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         running.add(p);

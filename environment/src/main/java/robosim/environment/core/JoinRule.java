@@ -17,6 +17,20 @@ public record JoinRule(String allow, WorldSpec.RobotSpec template, Spawn spawn, 
     public record Spawn(double xMm, double yMm, double widthMm, double heightMm) {
     }
 
+    /** What the name of a robot that joins may be: 1 to 64 letters, digits and {@code - _ . :}. */
+    private static final Pattern NAME = Pattern.compile("[A-Za-z0-9_.:-]{1,64}");
+
+    /** Null if a robot that joins may have this name, else why not (the name shown cleaned and cut). */
+    public static String badName(String name) {
+        if (name != null && NAME.matcher(name).matches()) {
+            return null;
+        }
+        String shown = name == null ? "" : name.codePoints().limit(64)
+                .map(c -> Character.isISOControl(c) ? '?' : c)
+                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
+        return "\"" + shown + "\" is not a name a robot may join with (1 to 64 letters, digits and - _ . :)";
+    }
+
     public JoinRule {
         if (max < 1) {
             throw new IllegalArgumentException("max must be >= 1, got " + max);

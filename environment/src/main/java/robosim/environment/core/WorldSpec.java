@@ -60,6 +60,14 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
                 heatSources, tagRangeMm, taggable, joins);
     }
 
+    /** Robots the join rules let take part at once, counted up to {@link #JOINABLE_CAP} (for connection and queue caps). */
+    public int joinable() {
+        return (int) Math.min(JOINABLE_CAP, joins.stream().mapToLong(JoinRule::max).sum());
+    }
+
+    /** The most {@link #joinable} counts: what the robot port and the loop's queue are sized for beyond the file. */
+    public static final int JOINABLE_CAP = 2_000;
+
     /** The first join rule that lets a robot of this name in, or null. */
     public JoinRule joinRule(String robotName) {
         for (JoinRule j : joins) {

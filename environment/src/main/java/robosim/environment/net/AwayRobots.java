@@ -12,6 +12,7 @@ final class AwayRobots {
     private boolean[] joining;
     private long[] sinceStep;
     private long[] sinceNanos;
+    private boolean[] cameBack;
     private final boolean waitPolicy;
     private int awayCount;
     private int waitedFor;
@@ -20,6 +21,7 @@ final class AwayRobots {
         this.away = new boolean[robots];
         this.returning = new boolean[robots];
         this.joining = new boolean[robots];
+        this.cameBack = new boolean[robots];
         this.sinceStep = new long[robots];
         this.sinceNanos = new long[robots];
         this.waitPolicy = policy == RobotLoss.WAIT;
@@ -30,8 +32,7 @@ final class AwayRobots {
         if (!away[i]) {
             awayCount++;
         }
-        away[i] = true;
-        returning[i] = false;
+        away[i] = true; // (a new connection that said hello before the loss took effect still takes over)
         sinceStep[i] = step;
         sinceNanos[i] = now;
         if (waitPolicy) {
@@ -46,6 +47,7 @@ final class AwayRobots {
         joining = java.util.Arrays.copyOf(joining, n);
         sinceStep = java.util.Arrays.copyOf(sinceStep, n);
         sinceNanos = java.util.Arrays.copyOf(sinceNanos, n);
+        cameBack = java.util.Arrays.copyOf(cameBack, n);
     }
 
     /** Robot i has just joined the world at {@code step}: it stands there until it takes part, at the next step. */
@@ -91,6 +93,17 @@ final class AwayRobots {
 
     boolean isReturning(int i) {
         return returning[i];
+    }
+
+    /** Robot i is back, at {@code now}: its step timeout counts from then for the step it was given. */
+    void back(int i, long now) {
+        sinceNanos[i] = now;
+        cameBack[i] = true;
+    }
+
+    /** False while robot i is away, or came back less than {@code limitNanos} ago (its step timeout runs from then). */
+    boolean lateSinceBack(int i, long now, long limitNanos) {
+        return !away[i] && (!cameBack[i] || now - sinceNanos[i] > limitNanos);
     }
 
     /** The first step robot i did not take part in. */

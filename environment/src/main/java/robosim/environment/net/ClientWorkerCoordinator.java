@@ -67,13 +67,18 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Times the loop's writes to robots (does nothing without a write timeout). */
     private final WriteWatchdog writeWatchdog;
 
+    /** @throws IllegalArgumentException for {@code SEQUENTIAL} with a lost robot held (its stepper reads a fixed list) */
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
+        if (settings.design() == CoordinatorDesign.SEQUENTIAL && settings.onRobotLoss() != RobotLoss.REMOVE) {
+            throw new IllegalArgumentException("--on-robot-loss " + settings.onRobotLoss() + " needs the THREADS or "
+                    + "TWO_THREADS coordinator: the SEQUENTIAL loop reads a fixed list of robots");
+        }
         this.spec = spec;
         this.settings = settings;
         this.robotNames = spec.robots().stream().map(WorldSpec.RobotSpec::name).toList();
         this.handshakes = new Handshakes(spec, robotNames, settings.stepMessages());
         // each robot has at most a request and a departure outstanding; the rest is rare
-        this.events = new ArrayBlockingQueue<>(2 * robotNames.size() + 1024);
+        this.events = new ArrayBlockingQueue<>(2 * (robotNames.size() + spec.joinable()) + 1024);
         this.cycle = new StepCycle(this, new RunListeners(runListeners));
         this.listeners = new Listeners(this);
         this.writeWatchdog = new WriteWatchdog(settings.writeTimeoutMs());

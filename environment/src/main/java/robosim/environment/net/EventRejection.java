@@ -24,6 +24,10 @@ final class EventRejection {
                 p.held().complete(null);
             } else if (e instanceof LoopEvent.StepN s) {
                 s.done().complete(cycle.record().stepsReleased);
+            } else if (e instanceof LoopEvent.AddRobot a) {
+                a.verdict().complete("the simulation is over");
+            } else if (e instanceof LoopEvent.RemoveRobot r) {
+                r.verdict().complete("the simulation is over");
             }
         }
     }

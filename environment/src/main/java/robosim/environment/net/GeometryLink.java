@@ -35,8 +35,8 @@ final class GeometryLink {
     private int losses;
     private int attaches;
     private boolean started;
-    /** The attached Geometry process is to be sent {@link #world} before the next step (robots joined). */
-    private boolean worldDue;
+    /** The world last sent to a Geometry process: when robots have joined since, the next step sends the new one. */
+    private GeometryWorld sentWorld;
 
     GeometryLink(Settings settings) {
         this.settings = settings;
@@ -88,10 +88,10 @@ final class GeometryLink {
         if (inProcess != null) {
             inProcess = new InProcessGeometry(changed);
         }
-        worldDue = attached != null;
     }
 
     private void send(GeometryClientWorker worker, GeometryWorld w) {
+        sentWorld = w;
         joinSentNanos = System.nanoTime();
         worker.sendWorld(w);
     }
@@ -111,7 +111,6 @@ final class GeometryLink {
         }
         joining = null;
         joinSentNanos = 0;
-        worldDue = false; // (it was sent the world as it is now)
         if (started) {
             attaches++;
             LOG.warn("a new Geometry process attached: geometry is resolved there again");
@@ -134,8 +133,8 @@ final class GeometryLink {
     GeometryStepResponse resolve(GeometryStepRequest request) {
         outstanding = request;
         if (attached != null) {
-            if (worldDue) {
-                worldDue = false;
+            if (sentWorld != world) {
+                sentWorld = world;
                 attached.sendWorld(world);
             }
             sentNanos = System.nanoTime();

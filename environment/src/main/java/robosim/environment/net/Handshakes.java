@@ -18,6 +18,9 @@ final class Handshakes {
     /** Robots the control port has added that have not joined yet (the loop writes it). */
     private final java.util.Map<String, robosim.environment.core.JoinRule> added =
             new java.util.concurrent.ConcurrentHashMap<>();
+    /** Robots that joined the running world, by name, with the rule they joined by (the loop writes it). */
+    private final java.util.Map<String, robosim.environment.core.JoinRule> joined =
+            new java.util.concurrent.ConcurrentHashMap<>();
 
     Handshakes(WorldSpec spec, List<String> names, boolean stepMessages) {
         this.spec = spec;
@@ -35,7 +38,10 @@ final class Handshakes {
             return "a robot must say its name";
         }
         if (index < 0) {
-            robosim.environment.core.JoinRule rule = added.getOrDefault(hello.name(), spec.joinRule(hello.name()));
+            robosim.environment.core.JoinRule rule = rule(hello.name());
+            if (rule != null && robosim.environment.core.JoinRule.badName(hello.name()) != null) {
+                return robosim.environment.core.JoinRule.badName(hello.name());
+            }
             if (rule == null) {
                 return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
                         + String.join(", ", names) + joiners() + ")";
@@ -43,6 +49,20 @@ final class Handshakes {
             return rule.robot(hello.name(), 0, 0).contradiction(hello.properties(), spec.source());
         }
         return spec.robots().get(index).contradiction(hello.properties(), spec.source());
+    }
+
+    /** The rule a robot of this name joins (or joined) by: an {@code add}, one it joined by, or the file's; or null. */
+    robosim.environment.core.JoinRule rule(String name) {
+        robosim.environment.core.JoinRule r = added.get(name);
+        if (r == null) {
+            r = joined.get(name);
+        }
+        return r != null ? r : spec.joinRule(name);
+    }
+
+    /** Robots that joined the running world, by name, with their rules; the loop's to change. */
+    java.util.Map<String, robosim.environment.core.JoinRule> joined() {
+        return joined;
     }
 
     /** Robots added from the control port that have not joined yet, by name; the loop's to change. */

@@ -17,18 +17,25 @@ import robosim.protocol.WorldSnapshot;
  * at once, standing still, and takes part from the next step (at once when the step being collected
  * waits for requests). Joins happen between steps only; the loop holds a hello that comes while a step is
  * resolved. Geometry gets the new world before the next step, viewers a new snapshot before the next
- * update, the recording a roster frame. Loop thread only.
+ * update, the recording a roster frame. Also the world a viewer that joins, or the recording, starts from.
+ * Loop thread only.
  */
 abstract class JoinCycle extends RosterCycle {
     /** Why no robot joins under {@code SEQUENTIAL}. */
     private static final String SEQUENTIAL_FIXED = "robots cannot join this run: its SEQUENTIAL coordinator reads a "
             + "fixed list of robots (THREADS or TWO_THREADS can)";
 
+    /** Robots one run lets join, at most (each join grows every per-robot array and sends Geometry the world). */
+    static final int MAX_JOINS = 10_000;
+    /** Robots added from the control port and not joined yet, at most. */
+    static final int MAX_ADDED = 64;
+
     /** The rule each robot joined by, in world order (null for the file's robots). */
     private final List<JoinRule> ruleOf = new ArrayList<>();
     private SpawnPlacer placer;
     /** The world has grown since viewers and the recording last had a snapshot. */
     private boolean grown;
+    private int joins;
 
     /** Robots the control port added that have not joined yet, by name (read by robot workers' handshakes). */
     private final java.util.Map<String, JoinRule> added;
@@ -53,6 +60,9 @@ abstract class JoinCycle extends RosterCycle {
         if (phase == Phase.ENDED || phase == Phase.WAITING) {
             return "the simulation is " + (phase == Phase.ENDED ? "over" : "not running yet: add robots once it runs");
         }
+        if (added.size() >= MAX_ADDED) {
+            return MAX_ADDED + " added robots wait for their hello already (remove NAME cancels one)";
+        }
         if (indexOf(name) >= 0 || added.containsKey(name)) {
             return "a robot named " + name + " is " + (added.containsKey(name) ? "added already" : "in the simulation");
         }
@@ -70,6 +80,15 @@ abstract class JoinCycle extends RosterCycle {
         LOG.info("robot {} added from the control port: a {} at ({}, {}) mm heading {} deg; it joins when it says hello",
                 name, r.type(), r.xMm(), r.yMm(), r.headingDeg());
         return null;
+    }
+
+    @Override
+    boolean cancelAdded(String name) {
+        boolean was = added.remove(name) != null;
+        if (was) {
+            LOG.info("robot {}, added from the control port, is no longer let in (removed before it joined)", name);
+        }
+        return was;
     }
 
     private SpawnPlacer placer() {
@@ -90,12 +109,18 @@ abstract class JoinCycle extends RosterCycle {
         if (phase == Phase.ENDED) {
             return "the simulation is over";
         }
-        JoinRule rule = added.containsKey(name) ? added.get(name) : spec.joinRule(name);
+        JoinRule rule = handshakes.rule(name);
         if (settings.design() == CoordinatorDesign.SEQUENTIAL) {
             return SEQUENTIAL_FIXED;
         }
         if (rule == null) {
             return "no robot named \"" + Printable.of(name, 64) + "\" in " + spec.source() + " may join";
+        }
+        if (JoinRule.badName(name) != null) {
+            return JoinRule.badName(name);
+        }
+        if (joins >= MAX_JOINS) {
+            return "this run has let " + MAX_JOINS + " robots join, the most one run may";
         }
         long members = 0;
         for (int i = 0; i < ruleOf.size(); i++) {
@@ -125,7 +150,9 @@ abstract class JoinCycle extends RosterCycle {
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
         }
-        boolean byAdd = added.remove(name) != null; // (an added robot joins once)
+        boolean byAdd = added.remove(name) != null; // (an added robot joins once; it may come back by name)
+        handshakes.joined().put(name, rule);
+        joins++;
         int i = core.add(robot, hello.properties());
         grow(i + 1);
         ruleOf.add(rule);
@@ -155,5 +182,22 @@ abstract class JoinCycle extends RosterCycle {
         }
         grown = false;
         return core.map().snapshot(lastStep);
+    }
+
+    /** With {@code --record}: opens the recording at the start, from the world as a viewer would get it. */
+    void startRecording() {
+        if (settings.record() == null || recorder != null) {
+            return;
+        }
+        try {
+            recorder = new RunRecorder(settings.record(), snapshot());
+        } catch (IOException e) {
+            LOG.error("cannot record into {}: {}", settings.record(), e.toString());
+        }
+    }
+
+    /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
+    WorldSnapshot snapshot() {
+        return core != null ? core.map().snapshot(step - 1) : StartSnapshot.of(spec, registered);
     }
 }

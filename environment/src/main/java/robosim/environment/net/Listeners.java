@@ -90,8 +90,7 @@ final class Listeners {
     /** Starts one {@code accept-*} thread per listening socket. */
     void accept() {
         int cap = coordinator.settings().maxConnections();
-        long joiners = coordinator.spec().joins().stream().mapToLong(j -> j.max()).sum(); // (the file's join rules)
-        int robots = (int) Math.min(robosim.protocol.Limits.MAX_ROBOTS, coordinator.spec().robots().size() + joiners);
+        int robots = coordinator.spec().robots().size() + coordinator.spec().joinable(); // (and its join rules')
         acceptOn(servers.get(0), new Held("robot", robots + cap),
                 s -> new RobotClientWorker(coordinator, s, ++serial));
         acceptOn(servers.get(1), new Held("viewer", cap), s -> new ViewerClientWorker(coordinator, s, ++serial));

@@ -33,9 +33,8 @@ public final class RobotRoster {
             return "type \"" + Printable.of(type, 64) + "\" is not a known robot type (known: " + RobotModels.names()
                     + "; a RobotType class needs a <join> rule with its radius in the file)";
         }
-        if (name.isBlank() || name.equals(robosim.protocol.CommEvent.EVERYONE) || name.length() > 64
-                || !name.equals(Printable.of(name))) {
-            return "\"" + Printable.of(name, 64) + "\" is not a robot name (1 to 64 printable characters, not *)";
+        if (JoinRule.badName(name) != null) {
+            return JoinRule.badName(name);
         }
         if (!Double.isFinite(xM) || !Double.isFinite(yM) || !Double.isFinite(headingDeg)) {
             return "the pose must be finite numbers, got " + xM + " " + yM + " " + headingDeg;
@@ -50,8 +49,8 @@ public final class RobotRoster {
 
     /**
      * Removes robot {@code name} from the run for good, whatever {@code --on-robot-loss} says: it is told the
-     * simulation is over for it, and stands no more in the world from the end of the step in progress.
-     * Returns null, or why not (no such robot, not running, already gone).
+     * simulation is over for it, and stands no more in the world from the end of the step in progress; a robot
+     * added and not joined yet is no longer let in. Returns null, or why not (no such robot, already gone).
      */
     public String remove(String name) throws InterruptedException {
         CompletableFuture<String> verdict = new CompletableFuture<>();

@@ -17,6 +17,7 @@ import robosim.protocol.RobotProperties;
 abstract class RosterCycle extends RunLifecycle {
     final AwayRobots away;
     private final List<PendingDeparture> deferred = new ArrayList<>();
+    private boolean toldEveryoneAway;
 
     RosterCycle(ClientWorkerCoordinator coordinator, RunListener listener) {
         super(coordinator, listener);
@@ -149,7 +150,7 @@ abstract class RosterCycle extends RunLifecycle {
         int i = indexOf(name);
         String shown = "\"" + Printable.of(name, 64) + "\"";
         if (i < 0) {
-            return "no robot named " + shown + " in this simulation";
+            return cancelAdded(name) ? null : "no robot named " + shown + " in this simulation";
         }
         if (core == null || phase == Phase.ENDED) {
             return "the simulation is " + (phase == Phase.ENDED ? "over" : "not running yet");
@@ -158,10 +159,9 @@ abstract class RosterCycle extends RunLifecycle {
             return "robot " + shown + " has already left";
         }
         RobotPeer peer = robots[i];
-        if (!peer.closed()) {
+        if (!peer.closed()) { // (not dropped: what it sends is ignored from now on, and it closes when told)
             peer.end(new robosim.protocol.SimulationEnd(step - 1, "removed from the simulation from the control port"),
                     peer.begun());
-            peer.drop();
         }
         depart(i, "removed from the control port", true);
         return null;
@@ -235,9 +235,10 @@ abstract class RosterCycle extends RunLifecycle {
         away.clear(i);
         core.away(i, false);
         activeCount++;
+        toldEveryoneAway = false;
         rosterChanged = true;
         record.states = states();
-        releasedNanos = System.nanoTime(); // its step timeout runs from now, as the others' did from their step
+        away.back(i, System.nanoTime()); // its step timeout runs from now, as the others' did from their step
         if (joined) {
             LOG.info("robot {} takes part from step {}", name, step);
         } else {
@@ -252,7 +253,10 @@ abstract class RosterCycle extends RunLifecycle {
         }
     }
 
-    /** Every robot of the file and its state now, in world order (for the control port). */
+    /** True if {@code name} was added from the control port and had not joined: it is no longer let in. */
+    abstract boolean cancelAdded(String name);
+
+    /** Every robot in the world and its state now, in world order (for the control port). */
     List<RobotState> states() {
         java.util.Map<String, Long> gone = new java.util.HashMap<>();
         for (Departure d : record.departures) {
@@ -274,6 +278,14 @@ abstract class RosterCycle extends RunLifecycle {
             }
         }
         return List.copyOf(states);
+    }
+
+    /** Every robot in the world is away: the world waits (said once) until one comes back or the run is stopped. */
+    void everyoneAway() {
+        if (!toldEveryoneAway) {
+            toldEveryoneAway = true;
+            LOG.warn("every robot is away at step {}: the world waits until one comes back", step);
+        }
     }
 
     /** Deadlines of robots the world waits for ({@code WAIT}): one away longer than the step timeout is removed. */

@@ -10,7 +10,6 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
-import robosim.protocol.WorldSnapshot;
 
 /**
  * The life of one run, as the {@link SimulationLoop} drives it: waiting for every client, starting (the
@@ -222,8 +221,7 @@ abstract class RunLifecycle {
     /** True if robot i is in the world but away (lost under {@code HOLD} or {@code WAIT}). */
     abstract boolean away(int i);
 
-    // ---- viewers and run control -----------------------------------------------------------------------
-
+    // ---- run control -----------------------------------------------------------------------------------
 
     /** True from the start until the end: a pause or step N acts on this run. */
     boolean running() {
@@ -242,25 +240,6 @@ abstract class RunLifecycle {
             case ENDED -> RunStatus.State.ENDED;
             default -> control.pausedNow() || beginPending ? RunStatus.State.PAUSED : RunStatus.State.RUNNING;
         };
-    }
-
-    // ---- the recording, what a viewer starts from -------------------------------------------------------
-
-    /** With {@code --record}: opens the recording at the start, from the world as a viewer would get it. */
-    void startRecording() {
-        if (settings.record() == null || recorder != null) {
-            return;
-        }
-        try {
-            recorder = new RunRecorder(settings.record(), snapshot());
-        } catch (IOException e) {
-            LOG.error("cannot record into {}: {}", settings.record(), e.toString());
-        }
-    }
-
-    /** The world as a viewer that joins now starts from: the last step's poses, or the start poses. */
-    WorldSnapshot snapshot() {
-        return core != null ? core.map().snapshot(step - 1) : StartSnapshot.of(spec, registered);
     }
 
     // ---- the end ---------------------------------------------------------------------------------------

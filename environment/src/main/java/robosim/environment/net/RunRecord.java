@@ -33,7 +33,7 @@ final class RunRecord {
     }
 
     volatile List<Member> roster = List.of();
-    /** Every robot of the file and its state, in world order. */
+    /** Every robot in the world (the file's, then those that joined) and its state, in world order. */
     volatile List<RobotState> states = List.of();
     final List<Departure> departures = new CopyOnWriteArrayList<>();
     private long rateMarkNanos;

@@ -11,7 +11,7 @@ import java.util.List;
  * @param geometry {@code in-process} (no Geometry process: {@code --no-geometry}, or going on without
  *     a lost one), {@code attached}, {@code waiting} (for a Geometry process) or {@code none} (ended)
  * @param viewers viewers connected now
- * @param states every robot of the file and its state ({@link RobotState}), in world order
+ * @param states every robot in the world and its state ({@link RobotState}), in world order
  */
 public record RunStatus(State state, long step, double stepsPerSecond, List<String> robots, List<String> connected,
         List<String> left, String geometry, String reason, int viewers, List<RobotState> states) {

@@ -64,6 +64,10 @@ final class StepCycle extends JoinCycle {
                     if (arrived < activeCount || away.worldWaits()) {
                         return;
                     }
+                    if (activeCount == 0) {
+                        everyoneAway(); // (nobody to step for: the world waits for a robot to come back)
+                        return;
+                    }
                     compute();
                 }
                 case RELEASING -> {
@@ -242,7 +246,7 @@ final class StepCycle extends JoinCycle {
         if (phase == Phase.COLLECTING && now - releasedNanos > stepTimeoutNanos) {
             boolean sequential = settings.design() == CoordinatorDesign.SEQUENTIAL;
             for (int i = 0; i < robots.length; i++) {
-                if (core.present(i) && requests[i] == null && !away.isAway(i)) {
+                if (core.present(i) && requests[i] == null && away.lateSinceBack(i, now, stepTimeoutNanos)) {
                     robots[i].drop();
                     depart(i, "sent no request for step " + step + " within " + settings.stepTimeoutMs()
                             + " ms (step timeout)");

@@ -69,16 +69,12 @@ public final class ViewerQueue {
     }
 
     /**
-     * Loop thread: the step's poses and the watched robot's view of the step (null if it watches none or
-     * the robot is not in the step). Never blocks; the loop has checked {@link #hasRoom} first. A live
-     * viewer's update replaces the one held; a view held with it is merged into the new view, or, when
-     * there is none (the robot has left), kept with its update ahead of the new one: no message is lost.
+     * Loop thread: the step's poses, the world they are of when robots have joined since the last step (else
+     * null), and the watched robot's view of the step (null if it watches none or the robot is not in the
+     * step). Never blocks; the loop has checked {@link #hasRoom} first. A live viewer's update replaces the
+     * one held (and takes on its world); a view held with it is merged into the new view, or, when there is
+     * none (the robot has left), kept with its update ahead of the new one: no message is lost.
      */
-    public synchronized void offer(PoseUpdate update, RobotView view) {
-        offer(null, update, view);
-    }
-
-    /** As {@link #offer(PoseUpdate, RobotView)}, with the world the update is of when robots have joined. */
     public synchronized void offer(WorldSnapshot roster, PoseUpdate update, RobotView view) {
         if (closed) {
             return;

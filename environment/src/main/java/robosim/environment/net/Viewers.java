@@ -66,12 +66,10 @@ public final class Viewers {
         return true;
     }
 
-    /** The step's poses to every viewer, and to one that watches robot i also {@code viewOf.apply(i)}. */
-    public void publish(PoseUpdate update, IntFunction<RobotView> viewOf) {
-        publish(null, update, viewOf);
-    }
-
-    /** As {@link #publish(PoseUpdate, IntFunction)}; {@code roster}: the world when robots have joined, else null. */
+    /**
+     * The step's poses to every viewer, and to one that watches a robot its view ({@code viewOf}); {@code roster}:
+     * the world the poses are of when robots have joined since the last step, else null.
+     */
     public void publish(WorldSnapshot roster, PoseUpdate update, IntFunction<RobotView> viewOf) {
         for (ViewerSink v : viewers) {
             ViewerQueue q = v.queue();

@@ -29,7 +29,7 @@ class ViewerQueueTest {
         ViewerQueue q = new ViewerQueue(false, 0);
         for (long k = 0; k < 5000; k++) {
             assertTrue(q.hasRoom(), "a live viewer always has room");
-            q.offer(update(k), null);
+            q.offer(null, update(k), null);
         }
         assertEquals(4999, ((PoseUpdate) q.take()).step());
         SimulationEnd end = new SimulationEnd(4999, "done");
@@ -44,20 +44,20 @@ class ViewerQueueTest {
                 List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
                 new PoseUpdate(1, new double[] {0, 1}, new double[] {0, 1}, new double[] {0, 0}));
         ViewerQueue recording = new ViewerQueue(true, 0);
-        recording.offer(update(0), null);
+        recording.offer(null, update(0), null);
         recording.offer(grown, update(1), null);
-        recording.offer(update(2), null);
+        recording.offer(null, update(2), null);
         assertEquals(0, ((PoseUpdate) recording.take()).step());
         assertSame(grown, recording.take(), "the world, then the first update of it");
         assertEquals(1, ((PoseUpdate) recording.take()).step());
         assertEquals(2, ((PoseUpdate) recording.take()).step());
         ViewerQueue live = new ViewerQueue(false, 0);
         live.offer(grown, update(1), null);
-        live.offer(update(2), null);
-        live.offer(update(3), null);
+        live.offer(null, update(2), null);
+        live.offer(null, update(3), null);
         assertSame(grown, live.take(), "the replaced update handed its world on");
         assertEquals(3, ((PoseUpdate) live.take()).step());
-        live.offer(update(4), null);
+        live.offer(null, update(4), null);
         assertEquals(4, ((PoseUpdate) live.take()).step(), "the world once");
     }
 
@@ -66,7 +66,7 @@ class ViewerQueueTest {
         ViewerQueue q = new ViewerQueue(true, 0);
         for (long k = 0; k < ViewerQueue.RECORDING_BACKLOG; k++) {
             assertTrue(q.hasRoom());
-            q.offer(update(k), null);
+            q.offer(null, update(k), null);
         }
         assertFalse(q.hasRoom(), "full: the loop holds the next step");
         assertFalse(q.claimRoomSignal());
@@ -79,7 +79,7 @@ class ViewerQueueTest {
     @Test
     void theEndComesAfterEveryHeldUpdateAndARunStateAfterTheUpdatesBeforeIt() throws Exception {
         ViewerQueue q = new ViewerQueue(true, 0);
-        q.offer(update(0), null);
+        q.offer(null, update(0), null);
         RunState paused = new RunState(1, RunState.Phase.PAUSED);
         q.state(paused);
         SimulationEnd end = new SimulationEnd(0, "done");
@@ -99,11 +99,11 @@ class ViewerQueueTest {
         ViewerQueue q = new ViewerQueue(false, 1); // (one update a second: the view must not wait for the cap)
         q.watch(0);
         assertEquals(0, q.watching());
-        q.offer(update(0), view(0, "m0"));
+        q.offer(null, update(0), view(0, "m0"));
         assertEquals(0, ((PoseUpdate) q.take()).step());
         assertEquals(0, ((RobotView) q.take()).step(), "the view at once after its update");
         for (long k = 1; k <= 3; k++) {
-            q.offer(update(k), view(k, "m" + k));
+            q.offer(null, update(k), view(k, "m" + k));
         }
         assertEquals(3, ((PoseUpdate) q.take()).step(), "the newest update");
         RunState running = new RunState(4, RunState.Phase.RUNNING);
@@ -113,14 +113,14 @@ class ViewerQueueTest {
         assertEquals(1, v.sinceStep(), "with the messages of the views it replaced");
         assertEquals(List.of("m1", "m2", "m3"), v.sent().stream().map(CommEvent::payload).toList());
         assertSame(running, q.take());
-        q.offer(update(4), view(4, "m4"));
-        q.offer(update(5), null); // (the robot has left: its last view is not dropped for the newest update)
+        q.offer(null, update(4), view(4, "m4"));
+        q.offer(null, update(5), null); // (the robot has left: its last view is not dropped for the newest update)
         assertEquals(4, ((PoseUpdate) q.take()).step());
         assertEquals(List.of("m4"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
         assertEquals(5, ((PoseUpdate) q.take()).step());
         for (long k = 6; k < 12; k += 2) { // (a replay sought back and forth across the robot's departure)
-            q.offer(update(k), view(k, "m" + k));
-            q.offer(update(k + 1), null);
+            q.offer(null, update(k), view(k, "m" + k));
+            q.offer(null, update(k + 1), null);
         }
         assertEquals(10, ((PoseUpdate) q.take()).step(), "at most two held: the last view kept, with its update");
         assertEquals(List.of("m6", "m8", "m10"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
