@@ -115,6 +115,36 @@ class EnvironmentLoaderTest {
     }
 
     @Test
+    void joinRulesAreReadAndChecked() throws Exception {
+        WorldSpec swarm = new EnvironmentLoader().load(Path.of("../test-envs/swarm-join.xml"));
+        assertEquals(List.of("keeper1", "keeper2"), swarm.robots().stream().map(WorldSpec.RobotSpec::name).toList(),
+                "an any-time robot is not waited for at the start");
+        assertEquals(List.of("late", "scout-*"), swarm.joins().stream().map(robosim.environment.core.JoinRule::allow)
+                .toList());
+        assertTrue(swarm.joinRule("scout-17").matches("scout-17"));
+        assertEquals(30, swarm.joinRule("scout-17").max());
+        assertEquals(null, swarm.joinRule("scoutx"));
+        assertEquals(14_500, swarm.joinRule("late").template().xMm());
+        String join = "<join allow=\"s-?\" type=\"Scout\" max=\"3\"><spawn x=\"1\" y=\"1\" width=\"2\" "
+                + "height=\"2\"/></join>";
+        assertTrue(new EnvironmentLoader().load(write(env("timeStepMs=\"500\"", ROBOT + join))).joinRule("s-1") != null);
+        for (String[] bad : new String[][] {
+                {join.replace("allow=\"s-?\" ", ""), "<join> number 1 needs allow=\"...\""},
+                {join.replace("max=\"3\"", "max=\"0\""), "<join allow=\"s-?\"> needs max=\"N\", from 1"},
+                {join.replace("width=\"2\"", "width=\"20\""), "<join allow=\"s-?\"> <spawn> must lie inside the arena"},
+                {join.replace("<spawn x=\"1\" y=\"1\" width=\"2\" height=\"2\"/>", ""), "needs a <spawn"},
+                {join.replace("Scout", "Hover"), "type \"Hover\" is not a known robot type"},
+                {join + join, "the pattern is used twice"}}) {
+            String m = failure(env("timeStepMs=\"500\"", ROBOT + bad[0]));
+            assertTrue(m.contains(bad[1]), m);
+        }
+        String m = failure(env("timeStepMs=\"500\"", ROBOT.replace("heading=\"90\"", "join=\"later\"")));
+        assertTrue(m.endsWith("join must be \"any-time\" (or left out: there from the start), got \"later\""), m);
+        m = failure(env("timeStepMs=\"500\"", ROBOT.replace("heading=\"90\"", "join=\"any-time\"")));
+        assertTrue(m.contains("must name at least one <robot> there from the start"), m);
+    }
+
+    @Test
     void duplicateRobotNames() throws Exception {
         String m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\"/>"
                 + "<robot name=\"r1\" type=\"ArRobot\" x=\"3\" y=\"1\"/></robots>"));
