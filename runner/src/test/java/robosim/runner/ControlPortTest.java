@@ -70,7 +70,7 @@ class ControlPortTest {
                     } catch (IOException e) {
                         throw new IllegalStateException(e);
                     }
-                });
+                }, TestThreads.ROBOTS);
                 assertEquals("paused at step 7", ok(c, "step 2").path("message").asText());
                 JsonNode list = ok(c, "robots").path("robots");
                 assertEquals("r9 running", list.get(3).path("name").asText() + " " + list.get(3).path("state").asText());

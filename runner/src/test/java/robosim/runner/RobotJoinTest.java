@@ -97,7 +97,7 @@ class RobotJoinTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
     }
 
     /**
@@ -115,7 +115,7 @@ class RobotJoinTest {
                     } catch (java.io.IOException e) {
                         throw new IllegalStateException(e);
                     }
-                });
+                }, TestThreads.ROBOTS);
             }
             Seen seen = watch(ports[1], log);
             HardwareSimulator walker = new HardwareSimulator("walker", RobotType.byName("ArRobot"));
@@ -126,7 +126,7 @@ class RobotJoinTest {
                 } catch (Exception e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, TestThreads.ROBOTS);
             assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
             List<CompletableFuture<Long>> scouts = new ArrayList<>();
             for (int k = 1; k <= 20; k++) {

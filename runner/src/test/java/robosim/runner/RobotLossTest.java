@@ -53,7 +53,7 @@ class RobotLossTest {
      * {@code go} (the world waits with it). r3 stands still. Both to the end; r2 returns its last step.
      */
     private static CompletableFuture<Long> others(int port, long waitAt, CountDownLatch reached, CountDownLatch go) {
-        CompletableFuture<Void> r3 = CompletableFuture.runAsync(() -> standStill("r3", port));
+        CompletableFuture<Void> r3 = CompletableFuture.runAsync(() -> standStill("r3", port), TestThreads.ROBOTS);
         return CompletableFuture.supplyAsync(() -> {
             try (RawRobot r2 = new RawRobot("r2", RobotModels.AR_ROBOT, port)) {
                 assertTrue(r2.welcome.isAccepted(), r2.welcome.reason());
@@ -72,7 +72,7 @@ class RobotLossTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
     }
 
     private static void standStill(String name, int port) {

@@ -32,8 +32,13 @@ class RobotReturnTest {
     private static final int STEPS = 200;
 
     private static ClientWorkerCoordinator start(boolean paused) throws Exception {
+        return start(paused, STEPS);
+    }
+
+    /** @param steps the run's steps (0: until stopped) */
+    private static ClientWorkerCoordinator start(boolean paused, long steps) throws Exception {
         Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                .maxSteps(STEPS).resetEvery(64).onRobotLoss(RobotLoss.HOLD).build();
+                .maxSteps(steps).resetEvery(64).onRobotLoss(RobotLoss.HOLD).build();
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(
                 new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml")), s);
         if (paused) {
@@ -54,7 +59,16 @@ class RobotReturnTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
+    }
+
+    /** Waits (60 s at most) until the Environment has seen robot {@code name}'s connection close. */
+    private static void awaitClosed(ClientWorkerCoordinator env, String name) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(LONG);
+        while (env.status().connected().contains(name)) {
+            assertTrue(System.nanoTime() - deadline < 0, name + "'s connection is still open at the Environment");
+            Thread.sleep(5); // (its worker thread notices the close on its own; nothing to wait on but that)
+        }
     }
 
     private static CountDownLatch held(ClientWorkerCoordinator env, int robots) {
@@ -87,7 +101,7 @@ class RobotReturnTest {
                 } catch (Exception e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, TestThreads.ROBOTS);
             CompletableFuture<Void> r2 = steps("r2", port);
             CompletableFuture<Void> r3 = steps("r3", port);
             assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
@@ -96,6 +110,7 @@ class RobotReturnTest {
             env.pause(LONG, TimeUnit.SECONDS); // step 10 is computed and held, r1's request in it
             close.countDown();
             first.get(LONG, TimeUnit.SECONDS); // its connection closed, whether or not the loop has heard yet
+            awaitClosed(env, "r1"); // (the Environment's end of it too: a hello before that is "already connected")
             try (RawRobot again = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
                 assertTrue(again.welcome.isAccepted(), again.welcome.reason());
                 env.resume();
@@ -134,7 +149,7 @@ class RobotReturnTest {
                     } catch (Exception e) {
                         throw new IllegalStateException(e);
                     }
-                }));
+                }, TestThreads.ROBOTS));
             }
             for (CompletableFuture<Void> f : fiveSteps) {
                 f.get(LONG, TimeUnit.SECONDS); // (five steps each, then its connection closes)
@@ -160,7 +175,7 @@ class RobotReturnTest {
 
     @Test
     void aRobotAddedFromTheControlPortComesBackUnderHold() throws Exception {
-        try (ClientWorkerCoordinator env = start(false)) {
+        try (ClientWorkerCoordinator env = start(false, 0)) { // (until stopped: the others wait for nothing here)
             int port = env.ports()[0];
             CountDownLatch held = held(env, 1);
             CompletableFuture<Void> r1 = steps("r1", port);
@@ -177,10 +192,15 @@ class RobotReturnTest {
             try (RawRobot again = new RawRobot("r9", RobotModels.SCOUT, port)) {
                 assertTrue(again.welcome.isAccepted(), again.welcome.reason());
                 assertEquals(11_000 - 50, again.welcome.xMm(), 1e-6, "where it stood");
+                for (int k = 0; k < 3; k++) {
+                    assertTrue(again.next());
+                    again.step(0, 0, false, List.of());
+                }
+                env.stop("done");
                 while (again.next() && again.step(0, 0, false, List.of()) != null) {
                     // (to the end)
                 }
-                assertEquals("completed " + STEPS + " steps", again.endReason);
+                assertEquals("done", again.endReason);
             }
             r1.get(LONG, TimeUnit.SECONDS);
             r2.get(LONG, TimeUnit.SECONDS);

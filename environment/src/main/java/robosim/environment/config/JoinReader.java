@@ -18,6 +18,9 @@ final class JoinReader {
     /** A rule's largest {@code max}: what one rule may let in at once. */
     static final int MAX_PER_RULE = robosim.protocol.Limits.MAX_ROBOTS;
 
+    /** What a {@code <join allow>} pattern may hold: the characters of a joining robot's name, and * and ?. */
+    private static final java.util.regex.Pattern PATTERN = java.util.regex.Pattern.compile("[A-Za-z0-9_.:*?-]{1,64}");
+
     private JoinReader() {
     }
 
@@ -26,6 +29,10 @@ final class JoinReader {
             throws EnvironmentFileException {
         List<JoinRule> out = new ArrayList<>();
         for (RobotSpec r : anyTime) {
+            if (JoinRule.badName(r.name()) != null) {
+                throw new EnvironmentFileException(where + ": <robot name=\"" + r.name() + "\" join=\"any-time\"> "
+                        + "a robot that joins needs a name of 1 to 64 letters, digits and - _ . :");
+            }
             out.add(new JoinRule(r.name(), r, null, 1));
         }
         Set<String> patterns = new HashSet<>();
@@ -35,6 +42,10 @@ final class JoinReader {
                         + " needs allow=\"...\" (a name pattern such as scout-*)");
             }
             String el = "<join allow=\"" + j.allow + "\">";
+            if (!PATTERN.matcher(j.allow).matches()) {
+                throw new EnvironmentFileException(where + ": " + el + " a pattern is 1 to 64 letters, digits, - _ . : "
+                        + "and the wildcards * and ?");
+            }
             if (!patterns.add(j.allow)) {
                 throw new EnvironmentFileException(where + ": " + el + " the pattern is used twice");
             }

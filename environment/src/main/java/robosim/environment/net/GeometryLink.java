@@ -121,6 +121,10 @@ final class GeometryLink {
         attached = worker;
         inProcess = null;
         if (outstanding != null) {
+            if (sentWorld != world) { // (robots joined while it was being sent the world)
+                sentWorld = world;
+                worker.sendWorld(world);
+            }
             sentNanos = System.nanoTime();
             worker.resolve(outstanding);
         }

@@ -36,6 +36,8 @@ abstract class RosterCycle extends RunLifecycle {
             away.notReturning(i); // the new connection went before it took over: away as before
             rosterChanged = true;
             return;
+        } else if (away.isReturning(i)) {
+            away.notReturning(i); // (a take-over said hello before the old loss took effect, and went too)
         }
         depart(i, why);
     }
@@ -280,8 +282,13 @@ abstract class RosterCycle extends RunLifecycle {
         return List.copyOf(states);
     }
 
-    /** Every robot in the world is away: the world waits (said once) until one comes back or the run is stopped. */
-    void everyoneAway() {
+    /** True while the world waits because every robot in it is away. */
+    boolean everyoneAway() {
+        return toldEveryoneAway;
+    }
+
+    /** Every robot in the world is away: the world waits (said once) until one comes back or joins. */
+    void waitForAnyone() {
         if (!toldEveryoneAway) {
             toldEveryoneAway = true;
             LOG.warn("every robot is away at step {}: the world waits until one comes back", step);

@@ -135,7 +135,7 @@ final class SimulationLoop implements Runnable {
         } else if (e instanceof LoopEvent.ViewerJoins v) {
             cycle.addViewer(v.viewer(), v.snapshot());
         } else if (e instanceof LoopEvent.Pause p) {
-            cycle.control().pause(p.held(), cycle.running());
+            cycle.control().pause(p.held(), cycle.running() && !cycle.everyoneAway()); // (nothing steps: held now)
         } else if (e instanceof LoopEvent.Resume r) {
             cycle.control().resume(cycle.released());
             cycle.advance(System.nanoTime()); // (a run that may begin now begins before the answer)

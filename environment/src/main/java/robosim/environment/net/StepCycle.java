@@ -65,7 +65,7 @@ final class StepCycle extends JoinCycle {
                         return;
                     }
                     if (activeCount == 0) {
-                        everyoneAway(); // (nobody to step for: the world waits for a robot to come back)
+                        waitForAnyone(); // (nobody to step for: the world waits for a robot to come back)
                         return;
                     }
                     compute();

@@ -134,7 +134,8 @@ class EnvironmentLoaderTest {
                 {join.replace("width=\"2\"", "width=\"20\""), "<join allow=\"s-?\"> <spawn> must lie inside the arena"},
                 {join.replace("<spawn x=\"1\" y=\"1\" width=\"2\" height=\"2\"/>", ""), "needs a <spawn"},
                 {join.replace("Scout", "Hover"), "type \"Hover\" is not a known robot type"},
-                {join + join, "the pattern is used twice"}}) {
+                {join + join, "the pattern is used twice"},
+                {join.replace("s-?", "s ?"), "a pattern is 1 to 64 letters, digits, - _ . : and the wildcards"}}) {
             String m = failure(env("timeStepMs=\"500\"", ROBOT + bad[0]));
             assertTrue(m.contains(bad[1]), m);
         }
@@ -142,6 +143,9 @@ class EnvironmentLoaderTest {
         assertTrue(m.endsWith("join must be \"any-time\" (or left out: there from the start), got \"later\""), m);
         m = failure(env("timeStepMs=\"500\"", ROBOT.replace("heading=\"90\"", "join=\"any-time\"")));
         assertTrue(m.contains("must name at least one <robot> there from the start"), m);
+        m = failure(env("timeStepMs=\"500\"", ROBOT.replace("</robots>", "<robot name=\"late one\" type=\"Scout\" "
+                + "x=\"5\" y=\"3\" join=\"any-time\"/></robots>")));
+        assertTrue(m.contains("a robot that joins needs a name of 1 to 64 letters"), m);
     }
 
     @Test
