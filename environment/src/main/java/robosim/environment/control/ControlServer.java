@@ -153,7 +153,7 @@ public final class ControlServer implements Closeable {
         worker.shutdownNow(); // (a step or pause under way answers "interrupted")
         quick.shutdown(); // the quick requests in hand (a stop, say) answer first, briefly, and their replies leave
         try {
-            quick.awaitTermination(2, TimeUnit.SECONDS);
+            quick.awaitTermination(10, TimeUnit.SECONDS); // (returns as soon as they have: 10 s for a loaded machine)
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
