@@ -79,6 +79,17 @@ final class Handshakes {
                 .toList());
     }
 
+    /** How the properties a returning robot says it has differ from those it had (the file's checks passed). */
+    static String difference(robosim.protocol.RobotProperties now, robosim.protocol.RobotProperties was) {
+        if (now.maxSpeedMmPerS() != was.maxSpeedMmPerS()) {
+            return "a top speed of " + now.maxSpeedMmPerS() + " mm/s where it had " + was.maxSpeedMmPerS();
+        }
+        if (now.maxTurnDegPerS() != was.maxTurnDegPerS()) {
+            return "a top turn rate of " + now.maxTurnDegPerS() + " deg/s where it had " + was.maxTurnDegPerS();
+        }
+        return "other sonars or properties than it had";
+    }
+
     /** The welcome of robot {@code index}: the time step, its start pose, every robot's name, its sensors. */
     RobotWelcome welcome(int index) {
         return welcome(spec.robots().get(index), names);

@@ -4,7 +4,6 @@ import java.io.IOException;
 import java.util.ArrayList;
 import java.util.List;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotProperties;
 
 /**
  * Robots leaving and coming back mid-run, as the {@link SimulationLoop} sees it: a robot whose connection
@@ -197,7 +196,7 @@ abstract class RosterCycle extends RunLifecycle {
             return "robot " + name + " is already coming back on another connection";
         }
         if (!hello.properties().equals(registered[i])) {
-            return "robot " + name + " comes back with " + difference(hello.properties(), registered[i]);
+            return "robot " + name + " comes back with " + Handshakes.difference(hello.properties(), registered[i]);
         }
         try {
             worker.welcome(handshakes.welcome(core.map().spec().robots().get(i).at(core.map().xMm(i),
@@ -216,17 +215,6 @@ abstract class RosterCycle extends RunLifecycle {
             bringBack(i); // the step being collected is its first
         }
         return null;
-    }
-
-    /** How a returning robot's properties differ from those it had (the file's checks passed already). */
-    private static String difference(RobotProperties now, RobotProperties was) {
-        if (now.maxSpeedMmPerS() != was.maxSpeedMmPerS()) {
-            return "a top speed of " + now.maxSpeedMmPerS() + " mm/s where it had " + was.maxSpeedMmPerS();
-        }
-        if (now.maxTurnDegPerS() != was.maxTurnDegPerS()) {
-            return "a top turn rate of " + now.maxTurnDegPerS() + " deg/s where it had " + was.maxTurnDegPerS();
-        }
-        return "other sonars or properties than it had";
     }
 
     /** Robot i's new connection takes part from the step being collected: it gets that step's number. */
