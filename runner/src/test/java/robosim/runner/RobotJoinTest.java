@@ -160,12 +160,7 @@ class RobotJoinTest {
         GeometryFactory jts = new GeometryFactory();
         List<Geometry> obstacles = new ArrayList<>();
         for (ObstacleShape o : first.worlds().get(0).obstacles()) {
-            Coordinate[] ring = new Coordinate[o.vertexCount() + 1];
-            for (int v = 0; v < o.vertexCount(); v++) {
-                ring[v] = new Coordinate(o.x(v), o.y(v));
-            }
-            ring[o.vertexCount()] = ring[0];
-            obstacles.add(jts.createPolygon(ring));
+            obstacles.add(robosim.environment.core.Obstacles.polygon(o));
         }
         for (int s = 0; s < STEPS; s++) {
             WorldSnapshot w = first.worlds().get(first.worldOf().get(s));

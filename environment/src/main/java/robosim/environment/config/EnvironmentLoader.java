@@ -187,7 +187,7 @@ public final class EnvironmentLoader {
         }
         List<Geometry> walls = new ArrayList<>();
         for (ObstacleShape o : obstacles) {
-            walls.add(ObstacleReader.toPolygon(o));
+            walls.add(robosim.environment.core.Obstacles.polygon(o));
         }
         List<RobotSpec> out = new ArrayList<>();
         Set<String> names = new HashSet<>();

@@ -4,9 +4,6 @@ import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
-import org.locationtech.jts.geom.Coordinate;
-import org.locationtech.jts.geom.GeometryFactory;
-import org.locationtech.jts.geom.Polygon;
 import robosim.protocol.ObstacleShape;
 
 /**
@@ -16,7 +13,6 @@ import robosim.protocol.ObstacleShape;
  */
 final class ObstacleReader {
     private static final double MM_PER_M = 1000.0;
-    private static final GeometryFactory JTS = new GeometryFactory();
 
     private ObstacleReader() {
     }
@@ -55,7 +51,7 @@ final class ObstacleReader {
                 EnvironmentFile.PolygonXml p = (EnvironmentFile.PolygonXml) o;
                 String el = "<polygon name=\"" + nameOr(p.name, out.size()) + "\">";
                 shape = new ObstacleShape(nameOr(p.name, out.size()), points(where, el, p.points));
-                if (!toPolygon(shape).isValid()) {
+                if (!robosim.environment.core.Obstacles.polygon(shape).isValid()) {
                     throw new EnvironmentFileException(where + ": " + el + " points do not form a simple polygon"
                             + " (edges cross or repeat)");
                 }
@@ -98,14 +94,5 @@ final class ObstacleReader {
             }
         }
         return xy;
-    }
-
-    static Polygon toPolygon(ObstacleShape shape) {
-        Coordinate[] ring = new Coordinate[shape.vertexCount() + 1];
-        for (int v = 0; v < shape.vertexCount(); v++) {
-            ring[v] = new Coordinate(shape.x(v), shape.y(v));
-        }
-        ring[shape.vertexCount()] = ring[0];
-        return JTS.createPolygon(ring);
     }
 }

@@ -25,12 +25,7 @@ public final class SpawnPlacer {
 
     public SpawnPlacer(WorldSpec spec) {
         for (ObstacleShape o : spec.obstacles()) {
-            Coordinate[] ring = new Coordinate[o.vertexCount() + 1];
-            for (int v = 0; v < o.vertexCount(); v++) {
-                ring[v] = new Coordinate(o.x(v), o.y(v));
-            }
-            ring[o.vertexCount()] = ring[0];
-            obstacles.add(jts.createPolygon(ring));
+            obstacles.add(Obstacles.polygon(o));
             obstacleNames.add(o.name());
         }
     }
