@@ -58,7 +58,7 @@ public final class HardwareSimulator {
     /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
     public void connect(Socket socket, int resetEvery, SimulationKeys secret) throws IOException {
         connection = ObjectConnection.client(socket, resetEvery, secret);
-        connection.write(new RobotHello(name, type.properties()));
+        connection.write(hello());
         connection.flush();
         Externalizable answer;
         try {
@@ -71,12 +71,22 @@ public final class HardwareSimulator {
             connection.close();
             throw new ProtocolException("expected a RobotWelcome, got a " + answer.getClass().getSimpleName());
         }
-        welcome = w;
-        if (!welcome.isAccepted()) {
+        if (!w.isAccepted()) {
             connection.close();
-            throw new ProtocolException("the Environment refused robot " + name + ": " + welcome.reason());
+            throw new ProtocolException("the Environment refused robot " + name + ": " + w.reason());
         }
-        state.place(welcome.xMm(), welcome.yMm(), welcome.headingDeg());
+        welcomed(w);
+    }
+
+    /** The Environment has welcomed this robot (over its own connection or a shared one): it stands where it says. */
+    void welcomed(RobotWelcome w) {
+        welcome = w;
+        state.place(w.xMm(), w.yMm(), w.headingDeg());
+    }
+
+    /** The hello this robot says (on a shared connection, one of several). */
+    RobotHello hello() {
+        return new RobotHello(name, type.properties());
     }
 
     /**
@@ -151,18 +161,21 @@ public final class HardwareSimulator {
 
     /** Starts the control thread and reads the first step number; false if the simulation ended first. */
     boolean begin(RobotControl control) throws IOException {
+        startControl(control);
+        return readStepNumber();
+    }
+
+    /** Starts the control code on its own thread (see {@link ControlThreads}). */
+    void startControl(RobotControl control) {
         if (welcome == null) {
             throw new IllegalStateException("connect first");
         }
         SimulatedRobot api = new SimulatedRobot(state, link, welcome.robotNames(), welcome.timeStepMs(),
                 welcome.sensors());
-        controlThread = new Thread(() -> runControl(control, api), "control[" + name + "]");
-        controlThread.setDaemon(true);
-        controlThread.start();
         stepSeconds = welcome.timeStepMs() / 1000.0;
         sonarWanted = !type.properties().sonars().isEmpty();
         sensorsWanted = welcome.sensors();
-        return readStepNumber();
+        controlThread = ControlThreads.start("control[" + name + "]", () -> runControl(control, api));
     }
 
     /** Reads the next step number; false (with the reason kept) at the end of the simulation. */
@@ -184,6 +197,12 @@ public final class HardwareSimulator {
 
     /** Waits for the control code to block, then sends this step's request. */
     void send() throws IOException, InterruptedException {
+        connection.write(request(nextStep));
+        connection.flush();
+    }
+
+    /** Waits for the control code to block, then builds this step's request for step {@code k}. */
+    StepRequest request(long k) throws InterruptedException {
         Command command = link.awaitControl();
         double move = 0;
         double turn = 0;
@@ -196,8 +215,7 @@ public final class HardwareSimulator {
         }
         current = command;
         List<CommEvent> messages = state.takeOutbox();
-        connection.write(new StepRequest(nextStep, move, turn, sonarWanted, messages, sensorsWanted, tag));
-        connection.flush();
+        return new StepRequest(k, move, turn, sonarWanted, messages, sensorsWanted, tag);
     }
 
     /**
@@ -219,6 +237,16 @@ public final class HardwareSimulator {
         if (!(answer instanceof StepResponse r)) {
             throw new ProtocolException("expected a StepResponse, got a " + answer.getClass().getSimpleName());
         }
+        apply(r);
+        if (welcome.stepMessages()) {
+            return readStepNumber();
+        }
+        nextStep++;
+        return true;
+    }
+
+    /** Applies the response to the request last built; the control code's call goes on or returns. */
+    void apply(StepResponse r) {
         boolean arrived = state.apply(r);
         steps++;
         Command command = current;
@@ -226,11 +254,6 @@ public final class HardwareSimulator {
         if (command != null && command.apply(r, arrived)) {
             link.complete(command);
         }
-        if (welcome.stepMessages()) {
-            return readStepNumber();
-        }
-        nextStep++;
-        return true;
     }
 
     /** Stops the control code and closes the connection (idempotent). */

@@ -15,13 +15,15 @@ import robosim.api.RobotControl;
 import robosim.protocol.Protocol;
 
 /**
- * Many robots in one JVM (for large robot counts): each robot has its own socket and its own control
- * thread. With {@code --exchange SHARED} (the default) one {@code exchange} thread runs every robot's
- * exchange, in the order given; with {@code ONE_THREAD} each robot also has its own Hardware Simulator
- * thread ({@code hardware[name]}); with {@code SEND_RECEIVE} two (sending, receiving).
+ * Many robots in one JVM (for large robot counts), each with its own control thread. With
+ * {@code --connection SHARED} (the default) every robot goes over one connection, run by one
+ * {@code exchange} thread ({@link SharedLink}); with {@code PER_ROBOT} each robot has its own socket, and
+ * {@code --exchange SHARED} (one {@code exchange} thread for every robot's exchange, in the order given),
+ * {@code ONE_THREAD} (a Hardware Simulator thread per robot, {@code hardware[name]}) or {@code SEND_RECEIVE}
+ * (a sending and a receiving thread per robot) say how they are threaded.
  */
 @Command(name = "robots.sh", mixinStandardHelpOptions = true,
-        description = "Runs several robots in one process, each with its own connection and threads.")
+        description = "Runs several robots in one process, over one shared connection or a connection each.")
 public final class MultiRobotMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(MultiRobotMain.class);
 
@@ -48,6 +50,16 @@ public final class MultiRobotMain implements Callable<Integer> {
                     + "Hardware Simulator thread per robot; SEND_RECEIVE: a sending and a receiving thread per robot.")
     Threading exchange;
 
+    /** How the robots reach the Environment. */
+    enum Connection { SHARED, PER_ROBOT }
+
+    @Option(names = "--connection", defaultValue = "SHARED",
+            description = "SHARED: one connection for every robot, each step's requests in one frame and its responses "
+                    + "in one (the default; at most " + robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION + " robots; "
+                    + "needs the THREADS or TWO_THREADS coordinator); PER_ROBOT: a connection per robot, threaded as "
+                    + "--exchange says.")
+    Connection connection;
+
     @Override
     public Integer call() throws Exception {
         if (robosim.protocol.Connector.badPort(port) != null) {
@@ -69,6 +81,16 @@ public final class MultiRobotMain implements Callable<Integer> {
                 return 2;
             }
             parsed.add(p);
+        }
+        LOG.info("control code runs on {} threads", ControlThreads.kind());
+        if (connection == Connection.SHARED) {
+            if (parsed.size() > robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION) {
+                System.err.println("robots: " + parsed.size() + " robots are more than one shared connection carries ("
+                        + robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION + "): use --connection PER_ROBOT or "
+                        + "several processes");
+                return 2;
+            }
+            return runOverOneConnection(parsed);
         }
         if (exchange == Threading.SHARED) {
             return runShared(parsed);
@@ -94,6 +116,29 @@ public final class MultiRobotMain implements Callable<Integer> {
             t.join();
         }
         return failures.get() == 0 ? 0 : 1;
+    }
+
+    /** {@code --connection SHARED}: every robot over one connection, their exchanges on this thread. */
+    private int runOverOneConnection(List<String[]> parsed) {
+        List<HardwareSimulator> sims = new ArrayList<>();
+        List<RobotControl> controls = new ArrayList<>();
+        try {
+            for (String[] p : parsed) {
+                controls.add(RobotLauncher.control(p[2]));
+                sims.add(new HardwareSimulator(p[0], RobotType.byName(p[1])));
+            }
+            SharedLink link = SharedLink.connect(sims, RobotLauncher.open(host, port, connect), connect.resetEvery,
+                    robosim.protocol.SimulationKeys.fromEnvironment());
+            Thread.currentThread().setName("exchange");
+            link.run(controls);
+            return 0;
+        } catch (java.io.IOException e) {
+            LOG.error("robots: {}", e.getMessage());
+            return 1;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return 1;
+        }
     }
 
     /** SHARED: connects every robot in turn, then runs all their exchanges on this thread. */

@@ -38,6 +38,13 @@ final class RobotLauncher {
      */
     static HardwareSimulator connect(String name, RobotType type, String host, int port, ConnectOptions options)
             throws IOException, InterruptedException {
+        HardwareSimulator sim = new HardwareSimulator(name, type);
+        sim.connect(open(host, port, options), options.resetEvery);
+        return sim;
+    }
+
+    /** Opens a connection to the Environment's robot port; a failure is one line naming the host and port. */
+    static Socket open(String host, int port, ConnectOptions options) throws IOException, InterruptedException {
         Socket socket;
         try {
             socket = Connector.connect(host, port, options.connectTimeoutMs(), options::waiting);
@@ -51,8 +58,6 @@ final class RobotLauncher {
             throw new IOException("cannot connect to the Environment at " + host + ":" + port + " within "
                     + options.connectTimeoutS + " s (is it running, on that port?)");
         }
-        HardwareSimulator sim = new HardwareSimulator(name, type);
-        sim.connect(socket, options.resetEvery);
-        return sim;
+        return socket;
     }
 }

@@ -7,6 +7,11 @@ package robosim.protocol;
 public final class Limits {
     /** Robots in one world (and entries in one per-step batch). */
     public static final int MAX_ROBOTS = 100_000;
+    /**
+     * Robots on one shared connection (one robot process's): with each hello under {@link #MAX_HELLO_BYTES},
+     * a stranger's handshake may take at most 32 MiB.
+     */
+    public static final int MAX_ROBOTS_PER_CONNECTION = 2048;
     /** Static obstacles in one world. */
     public static final int MAX_OBSTACLES = 100_000;
     /** Vertices of one obstacle polygon. */

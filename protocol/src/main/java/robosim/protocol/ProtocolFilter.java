@@ -16,7 +16,7 @@ public final class ProtocolFilter implements ObjectInputFilter {
             RobotHello.class, RobotWelcome.class, StepRequest.class, StepResponse.class,
             GeometryHello.class, GeometryWorld.class, GeometryStepRequest.class, GeometryStepResponse.class,
             ViewerHello.class, WorldSnapshot.class, PoseUpdate.class, RobotView.class, RunState.class, SimulationEnd.class,
-            Challenge.class, Proof.class);
+            Challenge.class, Proof.class, SharedHello.class, SharedRequests.class, SharedReplies.class);
     /** Messages are flat: one object, its fields written inline. */
     public static final long MAX_DEPTH = 2;
     /** No message sends an array object; primitive arrays up to this length are tolerated. */

@@ -40,8 +40,14 @@ public final class HeadlessRunner implements Callable<Integer> {
     long steps;
 
     @Option(names = "--robots-in-one-process",
-            description = "Run every robot in one JVM, each with its own socket and threads.")
+            description = "Run every robot in one JVM, over one shared connection (see --connection).")
     boolean robotsInOneProcess;
+
+    @Option(names = "--connection", paramLabel = "KIND",
+            description = "With --robots-in-one-process: SHARED (one connection for every robot, each step's requests "
+                    + "and responses in one frame each; the default) or PER_ROBOT (a socket each, threaded as "
+                    + "--exchange says; the default with --exchange or --coordinator SEQUENTIAL).")
+    String connection;
 
     @Option(names = "--no-geometry", description = "Do collision and sonar inside the Environment.")
     boolean noGeometry;
@@ -220,8 +226,17 @@ public final class HeadlessRunner implements Callable<Integer> {
                         + "geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
                 s.get("messages"), s.get("robots_left"), noGeometry ? "in-process" : "process",
-                robotsInOneProcess ? "one-process" : "processes"));
+                robotsInOneProcess ? "one-process" + ("SHARED".equals(connectionKind()) ? "" : "-per-robot")
+                        : "processes"));
         return code;
+    }
+
+    /** How robots in one process connect: as {@code --connection} says, else shared unless that cannot be. */
+    private String connectionKind() {
+        if (connection != null) {
+            return connection;
+        }
+        return exchange != null || "SEQUENTIAL".equals(environmentOptions.coordinator) ? "PER_ROBOT" : "SHARED";
     }
 
     private List<String> exchangeArgs() {
@@ -234,6 +249,7 @@ public final class HeadlessRunner implements Callable<Integer> {
             List<String> args = new ArrayList<>(List.of("127.0.0.1", robotPort));
             args.addAll(resetArgs());
             args.addAll(exchangeArgs());
+            args.addAll(List.of("--connection", connectionKind()));
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());

@@ -18,6 +18,14 @@ sealed interface LoopEvent {
             implements LoopEvent {
     }
 
+    /**
+     * The robots of a shared connection said hello, each already checked: the loop answers them all at
+     * once (each {@code RobotJoins}'s verdict), writes their welcomes in one frame, then completes {@code answered}.
+     */
+    record SharedJoins(SharedConnection connection, List<RobotJoins> joins, CompletableFuture<Void> answered)
+            implements LoopEvent {
+    }
+
     /** Several events read at once, in order (the SEQUENTIAL stepper's requests): one wake-up for all. */
     record Batch(List<LoopEvent> events) implements LoopEvent {
     }

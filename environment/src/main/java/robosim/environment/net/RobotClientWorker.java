@@ -35,13 +35,27 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     /** SEQUENTIAL: counted down once this worker has read (or failed to read) the step-0 request. */
     private final java.util.concurrent.CountDownLatch firstRead = new java.util.concurrent.CountDownLatch(1);
 
+    /** Its robots, when this is a shared connection; else null. */
+    private volatile SharedConnection shared;
+    private final int serial;
+
     RobotClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
         super(coordinator, socket, "robot-worker[#" + serial + "]");
+        this.serial = serial;
     }
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        RobotHello hello = connection.read(RobotHello.class);
+        java.io.Externalizable first = connection.read(java.io.Externalizable.class);
+        if (first instanceof robosim.protocol.SharedHello h) {
+            shared = new SharedConnection(this, coordinator, connection);
+            rename("robot-worker[shared #" + serial + "]");
+            shared.serve(h);
+            return;
+        }
+        if (!(first instanceof RobotHello hello)) {
+            throw new ProtocolException("expected a RobotHello or a SharedHello, got a " + first.getClass().getSimpleName());
+        }
         int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
         robotName = String.valueOf(hello.name());
         String refusal = heardHello("robot");
@@ -260,6 +274,10 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         exitedFlag = true;
         firstRead.countDown();
         coordinator.writeWatchdog().forget(this);
+        SharedConnection s = shared;
+        if (s != null) {
+            s.exited(why);
+        }
         if (index >= 0) {
             coordinator.post(new LoopEvent.RobotLeaves(this, why), () -> { });
         }

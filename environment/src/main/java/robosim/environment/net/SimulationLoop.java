@@ -34,7 +34,9 @@ final class SimulationLoop implements Runnable {
     private int registered;
     private long nextTick;
     /** Hellos that came while a step was being resolved: they are answered once it is complete. */
-    private final List<LoopEvent.RobotJoins> heldHellos = new ArrayList<>();
+    private final List<LoopEvent> heldHellos = new ArrayList<>();
+    /** Shared connections with a frame to write once the loop has done what it does now. */
+    private final SharedOutput shared = new SharedOutput();
     /** Who is connected or has left changed since the status last saw it. */
     private boolean rosterChanged;
 
@@ -74,13 +76,14 @@ final class SimulationLoop implements Runnable {
                 for (int more = e == null ? 0 : events.size(); e != null; more--) {
                     handle(e);
                     cycle.advance(System.nanoTime());
+                    shared.flush();
                     e = more > 0 ? events.poll() : null;
                 }
                 while (!heldHellos.isEmpty() && !cycle.midStep()) {
-                    LoopEvent.RobotJoins j = heldHellos.remove(0);
-                    j.verdict().complete(register(j));
+                    answer(heldHellos.remove(0));
                     rosterChanged = true;
                     cycle.advance(System.nanoTime());
+                    shared.flush();
                 }
                 now = System.nanoTime();
                 if (now - nextTick >= 0) {
@@ -88,6 +91,7 @@ final class SimulationLoop implements Runnable {
                     nextTick = now + tickNanos;
                 }
                 cycle.advance(now);
+                shared.flush();
                 cycle.publishPhase();
                 if (rosterChanged || cycle.takeRosterChange()) {
                     rosterChanged = false;
@@ -100,7 +104,8 @@ final class SimulationLoop implements Runnable {
             LOG.error("the simulation loop failed", e);
             cycle.finish("the simulation loop failed: " + e, false);
         } finally {
-            heldHellos.forEach(j -> j.verdict().complete("the simulation is over"));
+            shared.flush(); // (the end, to the robots of shared connections)
+            heldHellos.forEach(this::refuseOver);
             cycle.publishPhase();
             publishRoster();
             coordinator.loopEnded();
@@ -114,11 +119,11 @@ final class SimulationLoop implements Runnable {
             for (LoopEvent each : b.events()) {
                 handle(each);
             }
-        } else if (e instanceof LoopEvent.RobotJoins j) {
+        } else if (e instanceof LoopEvent.RobotJoins || e instanceof LoopEvent.SharedJoins) {
             if (cycle.midStep()) {
-                heldHellos.add(j); // (a robot joins between steps: after this one is resolved)
+                heldHellos.add(e); // (a robot joins between steps: after this one is resolved)
             } else {
-                j.verdict().complete(register(j));
+                answer(e);
                 rosterChanged = true;
             }
         } else if (e instanceof LoopEvent.RobotLeaves l) {
@@ -153,6 +158,40 @@ final class SimulationLoop implements Runnable {
             cycle.finish(s.reason(), false);
         }
         // ViewerHasRoom: nothing to do but try the release again (advance)
+    }
+
+    /** Answers a robot's hello, or those of a shared connection's robots (their welcomes written in one frame). */
+    private void answer(LoopEvent hello) {
+        if (hello instanceof LoopEvent.RobotJoins j) {
+            j.verdict().complete(register(j));
+            return;
+        }
+        LoopEvent.SharedJoins s = (LoopEvent.SharedJoins) hello;
+        s.connection().outputTo(shared);
+        for (LoopEvent.RobotJoins j : s.joins()) {
+            String refusal = register(j);
+            if (refusal != null) {
+                s.connection().replies().welcome(((SharedRobot) j.worker()).slot(),
+                        robosim.protocol.RobotWelcome.refused(refusal));
+            }
+            j.verdict().complete(refusal);
+        }
+        s.connection().flush(); // (the welcomes go out before any step number)
+        s.answered().complete(null);
+    }
+
+    /** A hello left when the run ended. */
+    private void refuseOver(LoopEvent hello) {
+        if (hello instanceof LoopEvent.RobotJoins j) {
+            j.verdict().complete("the simulation is over");
+        } else {
+            LoopEvent.SharedJoins s = (LoopEvent.SharedJoins) hello;
+            s.joins().forEach(j -> j.verdict().complete("the simulation is over"));
+            s.joins().forEach(j -> s.connection().replies().welcome(((SharedRobot) j.worker()).slot(),
+                    robosim.protocol.RobotWelcome.refused("the simulation is over")));
+            s.connection().flush();
+            s.answered().complete(null);
+        }
     }
 
     /** A robot's hello, already checked against the file: null (its welcome is sent) or the refusal. */

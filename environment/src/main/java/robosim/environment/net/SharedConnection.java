@@ -1,0 +1,232 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.SharedHello;
+import robosim.protocol.SharedReplies;
+import robosim.protocol.SharedRequests;
+
+/**
+ * A shared connection: several robots of one process over one socket, served by one
+ * {@link RobotClientWorker} thread (the report's thread per client, a client being a connection). Each
+ * robot still says hello with its own name and properties and is welcomed or refused alone; then each
+ * frame the worker reads carries requests of several robots, handed to the loop as one event, and the
+ * loop answers each robot into one frame per connection ({@link SharedOutput}). A frame that names a
+ * robot not on this connection, holds more requests than it has robots, or breaks off drops the
+ * connection with every robot on it; the other connections go on.
+ */
+final class SharedConnection implements WriteWatchdog.Watched {
+    private static final Logger LOG = LoggerFactory.getLogger(SharedConnection.class);
+
+    private final RobotClientWorker worker;
+    private final ClientWorkerCoordinator coordinator;
+    private final ObjectConnection connection;
+    /** Its robots by slot; null where one was refused. */
+    private SharedRobot[] robots = new SharedRobot[0];
+    private int welcomed;
+    /** The next frame; the worker's until the loop has its robots' hellos, then the loop's. */
+    private final SharedReplies replies = new SharedReplies();
+    private SharedOutput output;
+    private boolean pending;
+    private volatile boolean closed;
+    private volatile long writingSince;
+    private volatile String cutOff;
+
+    SharedConnection(RobotClientWorker worker, ClientWorkerCoordinator coordinator, ObjectConnection connection) {
+        this.worker = worker;
+        this.coordinator = coordinator;
+        this.connection = connection;
+    }
+
+    /** The worker's thread: the robots' hellos, the loop's verdicts, then every frame of requests. */
+    void serve(SharedHello header) throws IOException, InterruptedException {
+        if (header.protocolVersion() != Protocol.VERSION) {
+            throw new ProtocolException("protocol version " + header.protocolVersion() + " is not supported (the "
+                    + "Environment speaks " + Protocol.VERSION + ")");
+        }
+        int n = header.robots();
+        List<RobotHello> hellos = new ArrayList<>(n);
+        for (int slot = 0; slot < n; slot++) {
+            hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap)
+        }
+        String refusal = worker.heardHello("robot");
+        if (refusal == null && coordinator.settings().design() == CoordinatorDesign.SEQUENTIAL) {
+            refusal = "a shared connection needs the THREADS or TWO_THREADS coordinator (SEQUENTIAL reads a "
+                    + "socket per robot; run the robots with --connection PER_ROBOT)";
+        }
+        robots = new SharedRobot[n];
+        List<LoopEvent.RobotJoins> joins = new ArrayList<>();
+        java.util.Set<String> names = new java.util.HashSet<>();
+        for (int slot = 0; slot < n; slot++) {
+            RobotHello hello = hellos.get(slot);
+            int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
+            String why = refusal != null ? refusal : coordinator.handshakes().check(hello, wanted);
+            if (why == null && !names.add(hello.name())) {
+                why = "robot " + hello.name() + " is named twice on this connection";
+            }
+            if (why != null) {
+                replies.welcome(slot, RobotWelcome.refused(why));
+                worker.logRefused("robot " + hello.name() + " (shared connection): " + why);
+                continue;
+            }
+            robots[slot] = new SharedRobot(this, slot, hello.name());
+            joins.add(new LoopEvent.RobotJoins(robots[slot], hello, wanted, new CompletableFuture<>()));
+        }
+        if (!joins.isEmpty()) {
+            CompletableFuture<Void> answered = new CompletableFuture<>();
+            boolean[] refusedAll = {false};
+            coordinator.post(new LoopEvent.SharedJoins(this, joins, answered), () -> {
+                refusedAll[0] = true;
+                answered.complete(null);
+            });
+            worker.awaitVerdict(answered);
+            if (refusedAll[0]) { // (the loop never saw them: this thread still owns the frame)
+                joins.forEach(j -> replies.welcome(((SharedRobot) j.worker()).slot(),
+                        RobotWelcome.refused("the simulation is over")));
+                joins.clear();
+            }
+            for (LoopEvent.RobotJoins j : joins) {
+                SharedRobot r = (SharedRobot) j.worker();
+                if (j.verdict().getNow("no answer") != null) {
+                    robots[r.slot()] = null;
+                } else {
+                    welcomed++;
+                }
+            }
+        }
+        if (welcomed == 0) {
+            if (joins.isEmpty()) {
+                write(); // (refused before the loop saw them; with the loop's verdicts it wrote them)
+            }
+            return;
+        }
+        worker.handshakeDone();
+        coordinator.writeWatchdog().watch(this);
+        read();
+    }
+
+    /** Every frame of requests, checked, each handed to the loop as one event. */
+    private void read() throws IOException {
+        long[] seenIn = new long[robots.length];
+        for (long frame = 1; ; frame++) {
+            SharedRequests f = connection.read(SharedRequests.class);
+            if (f.count() > welcomed) {
+                throw new ProtocolException("sent " + f.count() + " requests in one frame on a connection of "
+                        + welcomed + " robot(s)");
+            }
+            List<LoopEvent> batch = new ArrayList<>(f.count());
+            for (int i = 0; i < f.count(); i++) {
+                int slot = f.slot(i);
+                SharedRobot r = slot >= 0 && slot < robots.length ? robots[slot] : null;
+                if (r == null) {
+                    throw new ProtocolException("sent a request for robot slot " + slot + ", which is not a robot "
+                            + "of this connection (" + welcomed + " of its " + robots.length + " were welcomed)");
+                }
+                if (seenIn[slot] == frame) {
+                    throw new ProtocolException("sent two requests for robot " + Printable.of(r.name())
+                            + " in one frame");
+                }
+                seenIn[slot] = frame;
+                if (!r.ended()) {
+                    r.check(f.request(i));
+                    batch.add(new LoopEvent.Request(r, f.request(i)));
+                }
+            }
+            if (!batch.isEmpty()) {
+                coordinator.post(new LoopEvent.Batch(batch), () -> { });
+            }
+        }
+    }
+
+    /** Loop thread, as it takes this connection's hellos: where its frames wait to be written. */
+    void outputTo(SharedOutput out) {
+        output = out;
+    }
+
+    SharedReplies replies() {
+        return replies;
+    }
+
+    /** Loop thread: something went into the next frame. */
+    void buffered() {
+        if (!pending && output != null) {
+            pending = true;
+            output.add(this);
+        }
+    }
+
+    /** Loop thread: writes the frame (a failure closes the connection; its reader then reports the robots gone). */
+    void flush() {
+        pending = false;
+        if (replies.count() == 0) {
+            return;
+        }
+        if (closed) {
+            replies.clear();
+            return;
+        }
+        try {
+            write();
+        } catch (IOException e) {
+            String why = cutOff != null ? cutOff : e.getMessage();
+            LOG.info("{}: could not write to its robots: {}", worker.label(), Printable.of(String.valueOf(why)));
+            worker.drop();
+        }
+    }
+
+    private void write() throws IOException {
+        writingSince = System.nanoTime();
+        try {
+            connection.write(replies);
+            connection.flush();
+        } finally {
+            writingSince = 0;
+            replies.clear();
+        }
+    }
+
+    boolean closed() {
+        return closed;
+    }
+
+    /** The worker's thread, once the connection has closed: each of its robots in the world has left. */
+    void exited(String why) {
+        closed = true;
+        coordinator.writeWatchdog().forget(this);
+        List<LoopEvent> leaves = new ArrayList<>();
+        for (SharedRobot r : robots) {
+            if (r != null && r.index() >= 0) {
+                leaves.add(new LoopEvent.RobotLeaves(r, why));
+            }
+        }
+        if (!leaves.isEmpty()) {
+            coordinator.post(new LoopEvent.Batch(leaves), () -> { });
+        }
+    }
+
+    @Override
+    public long writingFor(long now) {
+        long since = writingSince;
+        return since == 0 ? 0 : now - since;
+    }
+
+    @Override
+    public void cutOff(String why) {
+        cutOff = why;
+        worker.drop();
+    }
+
+    @Override
+    public String label() {
+        return worker.label();
+    }
+}

@@ -1,0 +1,239 @@
+package robosim.hardware;
+
+import java.io.EOFException;
+import java.io.Externalizable;
+import java.io.IOException;
+import java.net.Socket;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.api.RobotControl;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.SharedHello;
+import robosim.protocol.SharedReplies;
+import robosim.protocol.SharedRequests;
+import robosim.protocol.SimulationKeys;
+
+/**
+ * Many robots of one process over one connection (protocol 6's shared connection), run on the calling
+ * thread: each robot says hello with its own name and is welcomed or refused alone; then each step one
+ * frame carries every robot's request and one frame brings every response. A robot whose control code
+ * does not yield holds up only itself: the others' requests go first, and if the Environment releases
+ * the step without it (its step timeout), it is ended here. A robot the Environment ends alone (removed,
+ * dropped) ends alone here.
+ */
+final class SharedLink {
+    private static final Logger LOG = LoggerFactory.getLogger(SharedLink.class);
+    /** How long the send phase waits for one late control code before looking at what has arrived. */
+    private static final long LOOK_NANOS = TimeUnit.MILLISECONDS.toNanos(50);
+
+    private final ObjectConnection connection;
+    /** The robots by slot; null once one has ended (or was refused). */
+    private final HardwareSimulator[] sims;
+    /** Each robot's next step, and whether its request for it is due. */
+    private final long[] next;
+    private final boolean[] due;
+    private final SharedRequests requests = new SharedRequests();
+    private int live;
+    private int dueCount;
+    /** A response arrived for a robot whose request had gone: the step went on. */
+    private boolean stepReleased;
+
+    private SharedLink(ObjectConnection connection, HardwareSimulator[] sims) {
+        this.connection = connection;
+        this.sims = sims;
+        this.next = new long[sims.length];
+        this.due = new boolean[sims.length];
+        for (HardwareSimulator s : sims) {
+            live += s == null ? 0 : 1;
+        }
+    }
+
+    /**
+     * Says every robot's hello over {@code socket} and reads their welcomes; a robot refused is logged and
+     * left out. Throws naming the reasons if every robot was refused.
+     */
+    static SharedLink connect(List<HardwareSimulator> robots, Socket socket, int resetEvery, SimulationKeys keys)
+            throws IOException {
+        ObjectConnection c = ObjectConnection.client(socket, resetEvery, keys);
+        try {
+            c.write(new SharedHello(robots.size()));
+            for (HardwareSimulator sim : robots) {
+                c.write(sim.hello());
+            }
+            c.flush();
+            Externalizable answer = SimulationKeys.answerChallenge(c, keys, "robot");
+            if (!(answer instanceof SharedReplies welcomes)) {
+                throw new ProtocolException("expected the robots' welcomes, got a " + answer.getClass().getSimpleName());
+            }
+            HardwareSimulator[] sims = new HardwareSimulator[robots.size()];
+            List<String> refusals = new ArrayList<>();
+            for (int i = 0; i < welcomes.count(); i++) {
+                int slot = welcomes.slot(i);
+                if (welcomes.kind(i) != SharedReplies.Kind.WELCOME || slot < 0 || slot >= sims.length) {
+                    throw new ProtocolException("expected a welcome for each robot, got a " + welcomes.kind(i)
+                            + " for slot " + slot);
+                }
+                RobotWelcome w = welcomes.welcome(i);
+                HardwareSimulator sim = robots.get(slot);
+                if (w.isAccepted()) {
+                    sim.welcomed(w);
+                    sims[slot] = sim;
+                } else {
+                    LOG.error("the Environment refused robot {}: {}", sim.name(), w.reason());
+                    refusals.add(sim.name() + ": " + w.reason());
+                }
+            }
+            if (refusals.size() + java.util.Arrays.stream(sims).filter(s -> s != null).count() != sims.length) {
+                throw new ProtocolException("the Environment answered " + welcomes.count() + " of " + sims.length
+                        + " robots' hellos");
+            }
+            if (refusals.size() == sims.length) {
+                throw new ProtocolException("the Environment refused every robot: " + String.join("; ", refusals));
+            }
+            return new SharedLink(c, sims);
+        } catch (IOException | RuntimeException e) {
+            c.close();
+            throw e;
+        }
+    }
+
+    /** Runs every welcomed robot with its control code (by slot) until each one's simulation is over. */
+    void run(List<RobotControl> controls) throws IOException, InterruptedException {
+        try {
+            for (int slot = 0; slot < sims.length; slot++) {
+                if (sims[slot] != null) {
+                    sims[slot].startControl(controls.get(slot));
+                }
+            }
+            while (live > 0) {
+                if (dueCount == 0) {
+                    if (!take()) {
+                        break;
+                    }
+                } else {
+                    sendDue();
+                }
+            }
+        } finally {
+            connection.close();
+            for (HardwareSimulator sim : sims) {
+                if (sim != null) {
+                    sim.finish();
+                }
+            }
+            long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(HardwareSimulator.CONTROL_GRACE_MS);
+            for (HardwareSimulator sim : sims) {
+                if (sim != null) {
+                    sim.awaitControlCode(TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
+                }
+            }
+        }
+    }
+
+    /** Sends every due robot's request: those whose control code has yielded in one frame, the late ones after. */
+    private void sendDue() throws IOException, InterruptedException {
+        List<Integer> late = new ArrayList<>();
+        requests.clear();
+        for (int slot = 0; slot < sims.length; slot++) {
+            if (due[slot]) {
+                if (sims[slot].link().awaitControlFor(0)) {
+                    add(slot);
+                } else {
+                    late.add(slot);
+                }
+            }
+        }
+        write();
+        stepReleased = false;
+        for (int slot : late) {
+            while (due[slot] && !sims[slot].link().awaitControlFor(LOOK_NANOS)) {
+                if (connection.hasInput() && (!take() || stepReleased) && due[slot]) {
+                    LOG.warn("{}: its control code has not yielded and the Environment went on without it; the other "
+                            + "robots of this process go on", sims[slot].name());
+                    end(slot, "its control code did not yield in time");
+                }
+            }
+            if (due[slot]) {
+                requests.clear();
+                add(slot);
+                write();
+            }
+        }
+    }
+
+    private void add(int slot) throws InterruptedException {
+        requests.add(slot, sims[slot].request(next[slot]));
+        due[slot] = false;
+        dueCount--;
+    }
+
+    private void write() throws IOException {
+        if (requests.count() > 0) {
+            connection.write(requests);
+            connection.flush();
+        }
+    }
+
+    /** Reads one frame and applies it; false at the end of the connection (every robot ended). */
+    private boolean take() throws IOException {
+        Externalizable answer;
+        try {
+            answer = connection.read(Externalizable.class);
+        } catch (EOFException e) {
+            for (int slot = 0; slot < sims.length; slot++) {
+                if (sims[slot] != null) {
+                    end(slot, "the Environment closed the connection");
+                }
+            }
+            return false;
+        }
+        if (!(answer instanceof SharedReplies f)) {
+            throw new ProtocolException("expected a frame of replies, got a " + answer.getClass().getSimpleName());
+        }
+        for (int i = 0; i < f.count(); i++) {
+            int slot = f.slot(i);
+            if (slot < 0 || slot >= sims.length || sims[slot] == null) {
+                continue; // (ended here already: what the Environment still says to it is of no use)
+            }
+            switch (f.kind(i)) {
+                case STEP -> stepDue(slot, f.step(i));
+                case RESPONSE -> {
+                    sims[slot].apply(f.response(i));
+                    stepReleased = true;
+                    if (f.step(i) != Protocol.END_OF_SIMULATION) {
+                        stepDue(slot, f.step(i));
+                    }
+                }
+                case END -> end(slot, f.end(i).reason());
+                case WELCOME -> throw new ProtocolException("sent a second welcome for robot " + sims[slot].name());
+            }
+        }
+        return true;
+    }
+
+    private void stepDue(int slot, long step) {
+        next[slot] = step;
+        if (!due[slot]) {
+            due[slot] = true;
+            dueCount++;
+        }
+    }
+
+    /** Robot {@code slot}'s run is over here. */
+    private void end(int slot, String why) {
+        HardwareSimulator sim = sims[slot];
+        if (due[slot]) {
+            due[slot] = false;
+            dueCount--;
+        }
+        sim.endedHere(why);
+        sims[slot] = null;
+        live--;
+    }
+}
