@@ -39,6 +39,8 @@ final class SharedLink {
     private final long[] next;
     private final boolean[] due;
     private final SharedRequests requests = new SharedRequests();
+    /** The send phase's robots whose control code was late. */
+    private final List<Integer> late = new ArrayList<>();
     private int live;
     private int dueCount;
     /** A response arrived for a robot whose request had gone: the step went on. */
@@ -136,13 +138,17 @@ final class SharedLink {
         }
     }
 
-    /** Sends every due robot's request: those whose control code has yielded in one frame, the late ones after. */
+    /**
+     * Sends every due robot's request in one frame, once each control code has yielded; those that have not
+     * within {@link #LOOK_NANOS} go after, each in a frame of its own as soon as it has.
+     */
     private void sendDue() throws IOException, InterruptedException {
-        List<Integer> late = new ArrayList<>();
+        late.clear();
         requests.clear();
+        long deadline = System.nanoTime() + LOOK_NANOS;
         for (int slot = 0; slot < sims.length; slot++) {
             if (due[slot]) {
-                if (sims[slot].link().awaitControlFor(0)) {
+                if (sims[slot].link().awaitControlFor(Math.max(0, deadline - System.nanoTime()))) {
                     add(slot);
                 } else {
                     late.add(slot);
