@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # common.sh: a library sourced by every script in scripts/, not a command: finds the repository,
-# rebuilds it when a source is newer than the build, takes --classpath out of the arguments, and runs
-# a RoboSim main class on the built class path. See runner/README.md.
+# rebuilds it when a source is newer than the build, takes --classpath out of the arguments, picks the
+# JDK (robosim_pick_java) and runs a RoboSim main class on the built class path. See runner/README.md.
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
@@ -13,11 +13,44 @@ ROBOSIM_LIB="$ROBOSIM_HOME/runner/target/lib"
 ROBOSIM_SCRIPT=$(basename "$0" .sh)
 ROBOSIM_CALLER_DIR=$PWD   # where the user started the script, before any cd
 
+# The JDK every script and process runs on: JAVA_HOME's when it is set, else the newest of `java` on the
+# path and the JDKs under /usr/lib/jvm (or /Library/Java/JavaVirtualMachines); put first on the path,
+# so the floors of the benchmarks run on it too. JDK 21 and later run control code on virtual threads.
+# Which one, and why, goes to the processes as ROBOSIM_JAVA_CHOICE (the robot processes and headless
+# print it in their first lines; a script prints nothing of its own, so bad input stays one line).
+# io.netty.noUnsafe: netty (the control and web links) would warn about sun.misc.Unsafe on JDK 24+.
+robosim_java_version() { # JDK home -> its feature version (17, 21, 25), or 0
+  local v=""
+  [ -f "$1/release" ] && v=$(sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$1/release")
+  [ -n "$v" ] || v=$("$1/bin/java" -version 2>&1 | sed -n '1s/.*version "\([0-9]*\).*/\1/p')
+  [ "$v" = 1 ] && v=8
+  echo "${v:-0}"
+}
+robosim_pick_java() {
+  [ -n "${ROBOSIM_JAVA_CHOICE:-}" ] && return 0 # (chosen already: a script run by another)
+  local home="" best=0 why c h v
+  if [ -n "${JAVA_HOME:-}" ] && [ -x "$JAVA_HOME/bin/java" ]; then
+    home=$JAVA_HOME why="JAVA_HOME"
+  else
+    for c in "$(command -v java 2>/dev/null)" /usr/lib/jvm/*/bin/java /Library/Java/JavaVirtualMachines/*/Contents/Home/bin/java; do
+      [ -n "$c" ] && [ -x "$c" ] || continue
+      h=$(dirname "$(dirname "$(readlink -f "$c")")")
+      v=$(robosim_java_version "$h")
+      if [ "$v" -gt "$best" ]; then best=$v home=$h; fi
+    done
+    why="the newest JDK found"
+  fi
+  [ -n "$home" ] || robosim_fail "no java found: install a JDK 17 or later, or set JAVA_HOME"
+  export PATH="$home/bin:$PATH"
+  export ROBOSIM_JAVA_CHOICE="$home ($why)"
+}
+
 # Bad input: one line naming the script, exit 2.
 robosim_fail() {
   echo "$ROBOSIM_SCRIPT: $*" >&2
   exit 2
 }
+robosim_pick_java
 
 # The calling script's usage: its header comment (from line 2 to the first line that is not a comment).
 robosim_usage() {
@@ -142,7 +175,7 @@ robosim_java() {
       -h|--help)
         if [ -n "$(robosim_runner_jar)" ] && [ -d "$ROBOSIM_LIB" ]; then
           # shellcheck disable=SC2086
-          java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
+          java -Dio.netty.noUnsafe=true ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
         else
           robosim_usage
           echo "(RoboSim is not built yet: its full usage is printed once it is, e.g. after ./mvnw package -DskipTests.)"
@@ -154,7 +187,7 @@ robosim_java() {
   done
   robosim_build_if_stale
   # shellcheck disable=SC2086
-  exec java ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}"
+  exec java -Dio.netty.noUnsafe=true ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}"
 }
 
 # For the screenshot scripts: makes sure Xvfb is there (installs Debian's xvfb when we are root).

@@ -26,6 +26,13 @@ final class ControlThreads {
         return VIRTUAL ? "virtual" : "platform";
     }
 
+    /** What this process runs on, for its first lines: the JVM (and the scripts' reason for it) and the thread kind. */
+    static String describe() {
+        String choice = System.getenv("ROBOSIM_JAVA_CHOICE");
+        return "Java " + Runtime.version() + (choice == null ? "" : " from " + choice) + "; control code on "
+                + kind() + " threads";
+    }
+
     /** Starts {@code body} on a new thread of this process's kind, named {@code name}. */
     static Thread start(String name, Runnable body) {
         if (VIRTUAL) {

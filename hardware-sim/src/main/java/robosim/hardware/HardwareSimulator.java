@@ -93,8 +93,8 @@ public final class HardwareSimulator {
      * How the lock-step exchange is threaded on the robot's side: {@code ONE_THREAD} (the default),
      * the calling thread both sends each request and reads each response; {@code SEND_RECEIVE}, the
      * report's untested two-thread Hardware Simulator: a {@code receiver[name]} thread reads and applies
-     * responses while the calling thread sends requests. Many robots in one process can also share one
-     * exchange thread ({@link #runShared}).
+     * responses while the calling thread sends requests. Many robots of one process can also share one
+     * exchange thread, and one connection ({@link ManyRobots}).
      */
     public enum Exchange { ONE_THREAD, SEND_RECEIVE }
 
@@ -137,17 +137,6 @@ public final class HardwareSimulator {
         }
         t.join(Math.max(1, ms));
         return !t.isAlive();
-    }
-
-    /**
-     * Runs many robots' exchanges on the calling thread (each robot's control code still has its own
-     * thread); see {@link SharedExchange}. Returns when every robot's simulation is over.
-     *
-     * @param sims connected simulators, in world order (the order the Environment writes in)
-     */
-    public static void runShared(List<HardwareSimulator> sims, List<RobotControl> controls)
-            throws IOException, InterruptedException {
-        SharedExchange.run(sims, controls);
     }
 
     // ---- the exchange, one step at a time -----------------------------------------------------

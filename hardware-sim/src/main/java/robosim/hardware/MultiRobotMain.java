@@ -82,7 +82,7 @@ public final class MultiRobotMain implements Callable<Integer> {
             }
             parsed.add(p);
         }
-        LOG.info("control code runs on {} threads", ControlThreads.kind());
+        LOG.info("{}", ControlThreads.describe());
         if (connection == Connection.SHARED) {
             if (parsed.size() > robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION) {
                 System.err.println("robots: " + parsed.size() + " robots are more than one shared connection carries ("
@@ -127,10 +127,10 @@ public final class MultiRobotMain implements Callable<Integer> {
                 controls.add(RobotLauncher.control(p[2]));
                 sims.add(new HardwareSimulator(p[0], RobotType.byName(p[1])));
             }
-            SharedLink link = SharedLink.connect(sims, RobotLauncher.open(host, port, connect), connect.resetEvery,
-                    robosim.protocol.SimulationKeys.fromEnvironment());
+            java.net.Socket socket = RobotLauncher.open(host, port, connect);
             Thread.currentThread().setName("exchange");
-            link.run(controls);
+            ManyRobots.runOverOneConnection(sims, controls, socket, connect.resetEvery,
+                    robosim.protocol.SimulationKeys.fromEnvironment());
             return 0;
         } catch (java.io.IOException e) {
             LOG.error("robots: {}", e.getMessage());
@@ -151,7 +151,7 @@ public final class MultiRobotMain implements Callable<Integer> {
                 sims.add(RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect));
             }
             Thread.currentThread().setName("exchange");
-            HardwareSimulator.runShared(sims, controls);
+            ManyRobots.runShared(sims, controls);
             return 0;
         } catch (java.io.IOException e) {
             LOG.error("robots: {}", e.getMessage());

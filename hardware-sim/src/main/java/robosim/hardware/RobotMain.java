@@ -61,6 +61,7 @@ public final class RobotMain implements Callable<Integer> {
             System.err.println("robot " + name + ": " + e.getMessage());
             return 2;
         }
+        LOG.info("robot {}: {}", name, ControlThreads.describe());
         try {
             String reason = RobotLauncher.run(name, robotType, control, host, port, connect, exchange);
             LOG.info("robot {}: simulation over: {}", name, reason);

@@ -27,6 +27,18 @@ final class MessageBudgetInputStream extends FilterInputStream {
         used = 0;
     }
 
+    /** Bytes taken from the stream since the message began. */
+    long used() {
+        return used;
+    }
+
+    /** True once the stream under it has ended (the peer closed its side). */
+    boolean ended() {
+        return ended;
+    }
+
+    private boolean ended;
+
     private void count(long n) throws ProtocolException {
         if (n > 0) {
             used += n;
@@ -41,6 +53,8 @@ final class MessageBudgetInputStream extends FilterInputStream {
         int b = super.read();
         if (b >= 0) {
             count(1);
+        } else {
+            ended = true;
         }
         return b;
     }
@@ -49,6 +63,7 @@ final class MessageBudgetInputStream extends FilterInputStream {
     public int read(byte[] b, int off, int len) throws IOException {
         int n = super.read(b, off, len);
         count(n);
+        ended |= n < 0;
         return n;
     }
 

@@ -149,9 +149,14 @@ public final class ObjectConnection implements Closeable {
             throw new ProtocolException("refused: " + (why.isEmpty() ? e.getMessage() : why));
         } catch (ClassNotFoundException e) {
             throw new ProtocolException("refused: unknown class " + e.getMessage());
+        } catch (EOFException e) {
+            throw budget.used() > 0 ? truncated(type) : e;
         } catch (OptionalDataException e) {
             throw new ProtocolException("expected a " + type.getSimpleName() + ", got primitive data");
         } catch (ObjectStreamException e) {
+            if (budget.ended() && budget.used() > 0) {
+                throw truncated(type); // (the JDK's word for it: "unexpected EOF in middle of data block")
+            }
             throw new ProtocolException("corrupt stream while reading a " + type.getSimpleName() + ": " + e);
         } catch (RuntimeException e) {
             // the JDK's decoder answers some malformed streams with runtime exceptions (found by fuzzing:
@@ -163,6 +168,11 @@ public final class ObjectConnection implements Closeable {
                     + (o == null ? "null" : o.getClass().getSimpleName()));
         }
         return type.cast(o);
+    }
+
+    private ProtocolException truncated(Class<?> type) {
+        return new ProtocolException("the connection ended " + budget.used() + " bytes into a " + type.getSimpleName()
+                + " (a truncated message)");
     }
 
     /**

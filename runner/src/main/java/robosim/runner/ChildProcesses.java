@@ -55,6 +55,8 @@ final class ChildProcesses implements AutoCloseable {
     }
 
     private final List<Child> started = new CopyOnWriteArrayList<>();
+    /** Netty (the control and web links) would warn about sun.misc.Unsafe on JDK 24 and later. */
+    private static final String NETTY_QUIET = "-Dio.netty.noUnsafe=true";
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final List<String> jvmOptions;
@@ -80,6 +82,7 @@ final class ChildProcesses implements AutoCloseable {
             Consumer<String> stdoutLines) throws IOException {
         List<String> cmd = new ArrayList<>();
         cmd.add(java);
+        cmd.add(NETTY_QUIET);
         cmd.addAll(ownOptions);
         cmd.addAll(jvmOptions);
         cmd.add("-cp");
@@ -119,7 +122,7 @@ final class ChildProcesses implements AutoCloseable {
 
     /** Starts a child that is not waited for nor stopped at the end (a viewer window the user closes). */
     void startDetached(String name, String mainClass, List<String> args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(java, "-cp", classPath, mainClass));
+        List<String> cmd = new ArrayList<>(List.of(java, NETTY_QUIET, "-cp", classPath, mainClass));
         cmd.addAll(args);
         new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT)
                 .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();

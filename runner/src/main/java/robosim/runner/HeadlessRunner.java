@@ -190,7 +190,9 @@ public final class HeadlessRunner implements Callable<Integer> {
             return 2;
         }
         if (started.isDone()) {
-            System.out.println("running " + spec.robots().size() + " robots for " + steps + " steps");
+            String choice = System.getenv("ROBOSIM_JAVA_CHOICE");
+            System.out.println("running " + spec.robots().size() + " robots for " + steps + " steps on Java "
+                    + Runtime.version().feature() + (choice == null ? "" : " from " + choice));
         }
         long limit = timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2;
         if (!environment.waitFor(limit, TimeUnit.SECONDS)) {

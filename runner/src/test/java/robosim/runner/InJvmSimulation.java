@@ -64,7 +64,7 @@ final class InJvmSimulation {
     }
 
     /** The robots' exchange threading; SHARED runs every robot's exchange on one thread. */
-    enum Exchange { ONE_THREAD, SEND_RECEIVE, SHARED }
+    enum Exchange { ONE_THREAD, SEND_RECEIVE, SHARED, ONE_CONNECTION }
     private Exchange exchange = Exchange.ONE_THREAD;
     private boolean stepMessages = true;
 
@@ -208,7 +208,18 @@ final class InJvmSimulation {
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 controls.add(control.get());
             }
-            if (exchange == Exchange.SHARED) {
+            if (exchange == Exchange.ONE_CONNECTION) {
+                threads.add(thread("one-connection", failures, () -> {
+                    List<HardwareSimulator> sims = new ArrayList<>();
+                    for (WorldSpec.RobotSpec r : spec.robots()) {
+                        sims.add(new HardwareSimulator(r.name(), RobotType.byName(r.type())));
+                    }
+                    robosim.hardware.ManyRobots.runOverOneConnection(sims, controls,
+                            new Socket(InetAddress.getLoopbackAddress(), ports[0]), ObjectConnection.DEFAULT_RESET_EVERY,
+                            keys);
+                    return null;
+                }));
+            } else if (exchange == Exchange.SHARED) {
                 threads.add(thread("shared-exchange", failures, () -> {
                     List<HardwareSimulator> sims = new ArrayList<>();
                     for (WorldSpec.RobotSpec r : spec.robots()) {
@@ -217,7 +228,7 @@ final class InJvmSimulation {
                                 ObjectConnection.DEFAULT_RESET_EVERY, keys);
                         sims.add(sim);
                     }
-                    HardwareSimulator.runShared(sims, controls);
+                    robosim.hardware.ManyRobots.runShared(sims, controls);
                     return null;
                 }));
             } else {

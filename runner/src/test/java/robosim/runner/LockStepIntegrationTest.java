@@ -55,6 +55,8 @@ class LockStepIntegrationTest {
         "SEQUENTIAL, SHARED, true",
         "THREADS, SHARED, false",
         "TWO_THREADS, SEND_RECEIVE, false",
+        "THREADS, ONE_CONNECTION, true",
+        "TWO_THREADS, ONE_CONNECTION, false",
     })
     void everyDesignAndSettingGivesTheSamePosesAndMessages(CoordinatorDesign design,
             InJvmSimulation.Exchange exchange, boolean stepMessages) throws Exception {
@@ -82,8 +84,11 @@ class LockStepIntegrationTest {
         InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
                 .design(CoordinatorDesign.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)
                 .run(600, false, Wander::new);
+        InJvmSimulation d = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
+                .exchange(InJvmSimulation.Exchange.ONE_CONNECTION).run(600, false, Wander::new);
         InJvmSimulation.assertSamePoses(a, b);
         InJvmSimulation.assertSamePoses(a, c);
+        InJvmSimulation.assertSamePoses(a, d);
     }
 
     private static final int VARIANT_STEPS = 1000;

@@ -1,0 +1,192 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.net.InetAddress;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.net.ClientWorkerCoordinator;
+import robosim.environment.net.Departure;
+import robosim.environment.net.RunSummary;
+import robosim.environment.net.Settings;
+import robosim.protocol.Protocol;
+import robosim.protocol.RobotModels;
+import robosim.protocol.SharedReplies;
+import robosim.protocol.SharedRequests;
+import robosim.protocol.StepRequest;
+
+/**
+ * The shared connection's bad input: a frame naming a robot not on the connection, one with more requests
+ * than the connection has robots, one naming a robot twice, one cut short. Each drops that connection (its
+ * robots leave, with the reason) while the other robots go on to the end; and each robot of a shared
+ * hello is welcomed or refused on its own. r1 and r2 share a connection by hand, r3 has its own.
+ */
+class SharedConnectionTest {
+    private static final long LONG = 60;
+    private static final int STEPS = 50;
+
+    private static ClientWorkerCoordinator start() throws Exception {
+        Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
+                .maxSteps(STEPS).resetEvery(64).build();
+        ClientWorkerCoordinator env = new ClientWorkerCoordinator(
+                new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml")), s);
+        env.start();
+        return env;
+    }
+
+    private static CompletableFuture<Void> standStill(String name, int port) {
+        return CompletableFuture.runAsync(() -> {
+            try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT, port)) {
+                assertTrue(r.welcome.isAccepted(), r.welcome.reason());
+                while (r.next()) {
+                    r.step(0, 0, false, List.of());
+                }
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        }, TestThreads.ROBOTS);
+    }
+
+    private static StepRequest stand(long step) {
+        return new StepRequest(step, 0, 0, false, List.of());
+    }
+
+    enum BadFrame {
+        NOT_ON_THE_CONNECTION("sent a request for robot slot 7, which is not a robot of this connection"),
+        TOO_MANY("sent 3 requests in one frame on a connection of 2 robot(s)"),
+        TWICE("sent two requests for robot r1 in one frame"),
+        TRUNCATED("bytes into a SharedRequests (a truncated message)");
+
+        final String why;
+
+        BadFrame(String why) {
+            this.why = why;
+        }
+
+        SharedRequests frame() {
+            SharedRequests f = new SharedRequests();
+            f.add(0, stand(0));
+            switch (this) {
+                case NOT_ON_THE_CONNECTION -> f.add(7, stand(0));
+                case TOO_MANY -> {
+                    f.add(1, stand(0));
+                    f.add(0, stand(0));
+                }
+                case TWICE -> f.add(0, stand(0));
+                case TRUNCATED -> f.add(1, stand(0));
+            }
+            return f;
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(BadFrame.class)
+    void aBadFrameDropsItsConnectionAndTheOtherRobotsGoOn(BadFrame bad) throws Exception {
+        ClientWorkerCoordinator env = start();
+        try {
+            int port = env.ports()[0];
+            CompletableFuture<Void> r3 = standStill("r3", port);
+            try (RawSharedRobots shared = new RawSharedRobots(port, List.of("r1", "r2"), RobotModels.AR_ROBOT)) {
+                assertEquals(2, shared.welcomes.count());
+                for (int i = 0; i < 2; i++) {
+                    assertEquals(i, shared.welcomes.slot(i));
+                    assertTrue(shared.welcomes.welcome(i).isAccepted(), shared.welcomes.welcome(i).reason());
+                }
+                int given = 0;
+                while (given < 2) { // (step 0 for both: in one frame, or after a frame of its own)
+                    SharedReplies f = shared.next();
+                    for (int i = 0; i < f.count(); i++) {
+                        assertEquals(SharedReplies.Kind.STEP, f.kind(i));
+                        assertEquals(0, f.step(i));
+                        given++;
+                    }
+                }
+                if (bad == BadFrame.TRUNCATED) {
+                    shared.sendTruncated(bad.frame());
+                } else {
+                    shared.send(bad.frame());
+                    assertTrue(endOfStream(shared), "the Environment closes the connection");
+                }
+            }
+            r3.get(LONG, TimeUnit.SECONDS);
+            assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
+            RunSummary summary = env.summary();
+            assertTrue(summary.completed(), summary.reason());
+            assertEquals(STEPS, summary.steps());
+            List<Departure> gone = summary.departures();
+            assertEquals(List.of("r1", "r2"), gone.stream().map(Departure::robot).sorted().toList());
+            for (Departure d : gone) {
+                assertTrue(d.why().contains(bad.why), d.robot() + ": " + d.why());
+                assertEquals(0, d.step());
+            }
+        } finally {
+            env.close();
+        }
+    }
+
+    private static boolean endOfStream(RawSharedRobots shared) throws Exception {
+        try {
+            shared.next();
+            return false;
+        } catch (java.io.EOFException | java.net.SocketException e) {
+            return true;
+        }
+    }
+
+    @Test
+    void eachRobotOfASharedHelloIsWelcomedOrRefusedAloneAndTheWelcomedOnesRun() throws Exception {
+        ClientWorkerCoordinator env = start();
+        try {
+            int port = env.ports()[0];
+            CompletableFuture<Void> r2 = standStill("r2", port);
+            CompletableFuture<Void> r3 = standStill("r3", port);
+            long last = -1;
+            try (RawSharedRobots shared = new RawSharedRobots(port, List.of("ghost", "r1"), RobotModels.AR_ROBOT)) {
+                assertEquals(2, shared.welcomes.count());
+                assertFalse(shared.welcomes.welcome(0).isAccepted());
+                assertTrue(shared.welcomes.welcome(0).reason().startsWith("no robot named \"ghost\" in"),
+                        shared.welcomes.welcome(0).reason());
+                assertTrue(shared.welcomes.welcome(1).isAccepted(), shared.welcomes.welcome(1).reason());
+                String end = null;
+                while (end == null) {
+                    SharedReplies f = shared.next();
+                    SharedRequests requests = new SharedRequests();
+                    for (int i = 0; i < f.count(); i++) {
+                        assertEquals(1, f.slot(i), "only r1 is on this connection");
+                        switch (f.kind(i)) {
+                            case STEP -> requests.add(1, stand(f.step(i)));
+                            case RESPONSE -> {
+                                last = f.response(i).step();
+                                if (f.step(i) != Protocol.END_OF_SIMULATION) {
+                                    requests.add(1, stand(f.step(i)));
+                                }
+                            }
+                            case END -> end = f.end(i).reason();
+                            case WELCOME -> throw new AssertionError("a second welcome");
+                        }
+                    }
+                    if (requests.count() > 0) {
+                        shared.send(requests);
+                    }
+                }
+                assertEquals("completed " + STEPS + " steps", end);
+            }
+            assertEquals(STEPS - 1, last);
+            r2.get(LONG, TimeUnit.SECONDS);
+            r3.get(LONG, TimeUnit.SECONDS);
+            assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
+            assertTrue(env.summary().completed(), env.summary().reason());
+            assertEquals(List.of(), env.summary().departures());
+        } finally {
+            env.close();
+        }
+    }
+}
