@@ -37,6 +37,14 @@ public final class GeometryClient {
         this.secret = secret;
     }
 
+    private int splitSonarFrom = Runtime.getRuntime().availableProcessors() > 1 ? GeometryEngine.DEFAULT_PARALLEL_FROM : 0;
+
+    /** Splits each step's sonar pass over two cores from this many robots asking for sonar (0: never). */
+    public GeometryClient splitSonarFrom(int robots) {
+        splitSonarFrom = robots;
+        return this;
+    }
+
     /** Runs the session; returns the Environment's reason for ending it. */
     public String run() throws IOException {
         try (connection) {
@@ -50,7 +58,7 @@ public final class GeometryClient {
                 throw new ProtocolException("expected a GeometryWorld, got a " + first.getClass().getSimpleName());
             }
             GeometryEngine engine = new GeometryEngine(new StaticWorld(world.arena(), world.obstacles()),
-                    world.robots());
+                    world.robots(), splitSonarFrom);
             GeometryStepResponse response = engine.newResponse();
             LOG.info("world received: {} robots, {} obstacles", engine.robotCount(), world.obstacles().size());
             while (true) {
@@ -64,7 +72,8 @@ public final class GeometryClient {
                     return end.reason();
                 }
                 if (m instanceof GeometryWorld grown) { // robots joined: the world from the next step on
-                    engine = new GeometryEngine(new StaticWorld(grown.arena(), grown.obstacles()), grown.robots());
+                    engine = new GeometryEngine(new StaticWorld(grown.arena(), grown.obstacles()), grown.robots(),
+                            splitSonarFrom);
                     response = engine.newResponse();
                     LOG.info("world received again: {} robots", engine.robotCount());
                     continue;

@@ -16,8 +16,9 @@ import robosim.protocol.SonarSpec;
  * that touches something stops {@link #CONTACT_GAP_MM} short of it, so shapes never overlap. A robot
  * marked absent (it has left the simulation) is not in the world at all.
  *
- * <p>Deterministic: the same request gives the same response, bit for bit. Not thread-safe (it
- * reuses scratch state); one instance per thread.
+ * <p>Deterministic: the same request gives the same response, bit for bit, whether the sonar pass
+ * runs on one core or two ({@link SonarPass}). Not thread-safe (it reuses scratch state); one instance
+ * per thread.
  */
 public final class GeometryEngine {
     /** How far short of exact contact a blocked robot stops, mm. */
@@ -34,11 +35,33 @@ public final class GeometryEngine {
     private final boolean[] absent;
     private final Envelope area = new Envelope();
     private final MoveVisitor moveVisitor = new MoveVisitor();
-    private final SonarVisitor sonarVisitor = new SonarVisitor();
-    private final Cone cone = new Cone();
     private final RobotGrid grid;
+    private final RobotGrid.Cursor cells;
+    /** The sonar pass on this thread, and the one a second core runs on the other part of the robots. */
+    private final SonarPass sonarPass;
+    private final SonarPass helperPass;
+    /** Robots asking for sonar from which the pass is split over two cores (0: never). */
+    private final int parallelFrom;
+    /** Where each robot's ranges begin in {@link #ranges}, this step. */
+    private final int[] offset;
+    private final double[] ranges;
+
+    /**
+     * Robots asking for sonar from which a step's sonar pass is split over two cores by default (when the
+     * machine has two): below it the hand-off costs more than half a pass (measured, docs/PERFORMANCE.md).
+     */
+    public static final int DEFAULT_PARALLEL_FROM = 128;
 
     public GeometryEngine(StaticWorld world, List<RobotProperties> robots) {
+        this(world, robots, Runtime.getRuntime().availableProcessors() > 1 ? DEFAULT_PARALLEL_FROM : 0);
+    }
+
+    /**
+     * @param parallelFrom split the sonar pass over two cores (this thread and one of the common fork-join
+     *     pool's) when at least this many robots ask for sonar; 0 never does. The ranges are the same either way.
+     */
+    public GeometryEngine(StaticWorld world, List<RobotProperties> robots, int parallelFrom) {
+        this.parallelFrom = parallelFrom;
         this.world = world;
         this.robots = robots.size();
         this.radius = new double[this.robots];
@@ -59,6 +82,11 @@ public final class GeometryEngine {
             maxRadius = Math.max(maxRadius, r);
         }
         this.grid = new RobotGrid(this.robots, maxRadius);
+        this.cells = grid.new Cursor();
+        this.offset = new int[this.robots];
+        this.ranges = new double[ranges];
+        this.sonarPass = new SonarPass(world, grid, x, y, heading, radius, sonars);
+        this.helperPass = new SonarPass(world, grid, x, y, heading, radius, sonars);
     }
 
     public int robotCount() {
@@ -114,13 +142,42 @@ public final class GeometryEngine {
             }
             out.setMotion(i, moved, in.turnDeg(i), kind, index);
         }
+        readSonars(in);
+        for (int k = 0; k < rangeCount; k++) {
+            out.addRange(ranges[k]);
+        }
+    }
+
+    private int rangeCount;
+
+    /**
+     * Every sonar asked for, into {@link #ranges} in world order: on this thread, or with enough robots
+     * asking, the robots after the middle range on a second core while this thread reads the rest.
+     */
+    private void readSonars(GeometryStepRequest in) {
+        int total = 0;
+        int asking = 0;
         for (int i = 0; i < robots; i++) {
+            offset[i] = total;
             if (in.wantsSonar(i)) {
-                for (SonarSpec s : sonars[i]) {
-                    out.addRange(sonarRange(i, s));
-                }
+                total += sonars[i].length;
+                asking++;
             }
         }
+        rangeCount = total;
+        if (parallelFrom <= 0 || asking < parallelFrom) {
+            sonarPass.read(in, 0, robots, offset, ranges);
+            return;
+        }
+        int middle = 0;
+        while (middle < robots && offset[middle] < total / 2) {
+            middle++;
+        }
+        int split = middle;
+        java.util.concurrent.ForkJoinTask<?> other = java.util.concurrent.ForkJoinPool.commonPool()
+                .submit(() -> helperPass.read(in, split, robots, offset, ranges));
+        sonarPass.read(in, 0, split, offset, ranges);
+        other.join();
     }
 
     /** Distance robot i may travel along unit (ux, uy) before first contact; its contact in moveVisitor. */
@@ -134,10 +191,10 @@ public final class GeometryEngine {
         MoveVisitor v = moveVisitor;
         v.begin(px, py, ux, uy, r);
         world.query(area, v);
-        grid.select(area);
-        for (int c = grid.nextCell(); c >= 0; c = grid.nextCell()) {
+        cells.select(area);
+        for (int c = cells.nextCell(); c >= 0; c = cells.nextCell()) {
             for (int j = grid.first(c); j >= 0; j = grid.next(j)) {
-                if (j == i || outsideArea(j)) {
+                if (j == i || SonarPass.outside(area, x[j], y[j], radius[j])) {
                     continue;
                 }
                 double t = Sweep.toCircle(px, py, ux, uy, r + radius[j], x[j], y[j]);
@@ -150,57 +207,6 @@ public final class GeometryEngine {
             }
         }
         return v.best;
-    }
-
-    private double sonarRange(int i, SonarSpec s) {
-        double h = Math.toRadians(heading[i]);
-        double c = Math.cos(h);
-        double sn = Math.sin(h);
-        double ox = x[i] + s.xMm() * c - s.yMm() * sn;
-        double oy = y[i] + s.xMm() * sn + s.yMm() * c;
-        double max = s.maxRangeMm();
-        cone.aim(ox, oy, heading[i] + s.angleDeg(), s.coneDeg() / 2);
-        sectorEnvelope(max);
-        SonarVisitor v = sonarVisitor;
-        v.best = max;
-        world.query(area, v);
-        grid.select(area);
-        for (int g = grid.nextCell(); g >= 0; g = grid.nextCell()) {
-            for (int j = grid.first(g); j >= 0; j = grid.next(j)) {
-                if (j != i && !outsideArea(j)) {
-                    v.best = Math.min(v.best, cone.toDisc(x[j], y[j], radius[j]));
-                }
-            }
-        }
-        return v.best;
-    }
-
-    /** The cheap test first: robot j's bounding box misses {@link #area}. */
-    private boolean outsideArea(int j) {
-        double rj = radius[j];
-        return x[j] + rj < area.getMinX() || x[j] - rj > area.getMaxX()
-                || y[j] + rj < area.getMinY() || y[j] - rj > area.getMaxY();
-    }
-
-    /** Sets {@link #area} to the bounding box of the cone cut off at {@code range}. */
-    private void sectorEnvelope(double range) {
-        Cone k = cone;
-        area.init(k.ox, k.ox, k.oy, k.oy);
-        area.expandToInclude(k.ox + range * k.lx, k.oy + range * k.ly);
-        area.expandToInclude(k.ox + range * k.rx, k.oy + range * k.ry);
-        area.expandToInclude(k.ox + range * k.axisX, k.oy + range * k.axisY);
-        if (k.contains(k.ox + 1, k.oy)) {
-            area.expandToInclude(k.ox + range, k.oy);
-        }
-        if (k.contains(k.ox, k.oy + 1)) {
-            area.expandToInclude(k.ox, k.oy + range);
-        }
-        if (k.contains(k.ox - 1, k.oy)) {
-            area.expandToInclude(k.ox - range, k.oy);
-        }
-        if (k.contains(k.ox, k.oy - 1)) {
-            area.expandToInclude(k.ox, k.oy - range);
-        }
     }
 
     /** Finds the first wall a moving robot would touch; reused, so it allocates nothing per query. */
@@ -234,17 +240,6 @@ public final class GeometryEngine {
                 kind = s.ownerKind;
                 index = s.ownerIndex;
             }
-        }
-    }
-
-    /** Finds the nearest wall inside the current cone. */
-    private final class SonarVisitor implements ItemVisitor {
-        double best;
-
-        @Override
-        public void visitItem(Object item) {
-            Segment s = (Segment) item;
-            best = Math.min(best, cone.toSegment(s.ax, s.ay, s.bx, s.by));
         }
     }
 }

@@ -36,8 +36,18 @@ public final class GeometryMain implements Callable<Integer> {
             description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
     int resetEvery;
 
+    @Option(names = "--split-sonar-from", paramLabel = "ROBOTS",
+            description = "Split each step's sonar pass over two cores when at least this many robots ask for sonar; "
+                    + "0 never (default: " + GeometryEngine.DEFAULT_PARALLEL_FROM + " with two cores or more, else 0). "
+                    + "The ranges are the same either way.")
+    Integer splitSonarFrom;
+
     @Override
     public Integer call() throws Exception {
+        if (splitSonarFrom != null && splitSonarFrom < 0) {
+            System.err.println("geometry: --split-sonar-from " + splitSonarFrom + " is negative (0 turns it off)");
+            return 2;
+        }
         if (Connector.badPort(port) != null) {
             System.err.println("geometry: " + host + ":" + port + ": " + Connector.badPort(port));
             return 2;
@@ -55,6 +65,9 @@ public final class GeometryMain implements Callable<Integer> {
             return 1;
         }
         GeometryClient client = new GeometryClient(socket, resetEvery);
+        if (splitSonarFrom != null) {
+            client.splitSonarFrom(splitSonarFrom);
+        }
         String reason = client.run();
         LOG.info("session over after {} steps: {}", client.steps(), reason);
         return 0;

@@ -23,13 +23,6 @@ final class RobotGrid {
     private double cell = 1;
     private int cols = 1;
     private int rows = 1;
-    // the current selection, walked by nextCell()
-    private int c0;
-    private int c1;
-    private int r1;
-    private int col;
-    private int row;
-
     /** @param maxRadius the largest robot radius: a query box grows by it, since robots are stored by centre */
     RobotGrid(int robots, double maxRadius) {
         this.n = robots;
@@ -88,25 +81,37 @@ final class RobotGrid {
         }
     }
 
-    /** Selects the cells that may hold a robot overlapping {@code area}. */
-    void select(Envelope area) {
-        c0 = clamp((int) Math.floor((area.getMinX() - pad - minX) / cell), cols);
-        c1 = clamp((int) Math.floor((area.getMaxX() + pad - minX) / cell), cols);
-        int r0 = clamp((int) Math.floor((area.getMinY() - pad - minY) / cell), rows);
-        r1 = clamp((int) Math.floor((area.getMaxY() + pad - minY) / cell), rows);
-        col = c0 - 1;
-        row = r0;
-    }
+    /**
+     * A walk over the cells that may hold a robot overlapping an area: one per thread that queries the
+     * grid (the moves, and each thread of the sonar pass), so walks never share state.
+     */
+    final class Cursor {
+        private int c0;
+        private int c1;
+        private int r1;
+        private int col;
+        private int row;
 
-    /** The next selected cell, or -1 when done. */
-    int nextCell() {
-        if (++col > c1) {
-            col = c0;
-            if (++row > r1) {
-                return -1;
-            }
+        /** Selects the cells that may hold a robot overlapping {@code area}. */
+        void select(Envelope area) {
+            c0 = clamp((int) Math.floor((area.getMinX() - pad - minX) / cell), cols);
+            c1 = clamp((int) Math.floor((area.getMaxX() + pad - minX) / cell), cols);
+            int r0 = clamp((int) Math.floor((area.getMinY() - pad - minY) / cell), rows);
+            r1 = clamp((int) Math.floor((area.getMaxY() + pad - minY) / cell), rows);
+            col = c0 - 1;
+            row = r0;
         }
-        return row * cols + col;
+
+        /** The next selected cell, or -1 when done. */
+        int nextCell() {
+            if (++col > c1) {
+                col = c0;
+                if (++row > r1) {
+                    return -1;
+                }
+            }
+            return row * cols + col;
+        }
     }
 
     int first(int cellIndex) {

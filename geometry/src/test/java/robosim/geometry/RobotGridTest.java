@@ -39,8 +39,9 @@ class RobotGridTest {
                 double w = random.nextDouble() * 10_000;
                 Envelope area = new Envelope(cx, cx + w, cy, cy + random.nextDouble() * 10_000);
                 Set<Integer> found = new HashSet<>();
-                grid.select(area);
-                for (int c = grid.nextCell(); c >= 0; c = grid.nextCell()) {
+                RobotGrid.Cursor cells = grid.new Cursor();
+                cells.select(area);
+                for (int c = cells.nextCell(); c >= 0; c = cells.nextCell()) {
                     for (int j = grid.first(c); j >= 0; j = grid.next(j)) {
                         assertTrue(found.add(j), "robot " + j + " listed twice");
                     }

@@ -1,0 +1,111 @@
+package robosim.geometry;
+
+import org.locationtech.jts.geom.Envelope;
+import org.locationtech.jts.index.ItemVisitor;
+import robosim.protocol.GeometryStepRequest;
+import robosim.protocol.SonarSpec;
+
+/**
+ * Reads sonars in the world as it stands after a step's moves: for each transducer, the nearest wall or
+ * robot inside its cone, up to its range. Looks at the walls and robots whose boxes meet the cone's box
+ * (the wall index and the {@link RobotGrid}) and tests only those exactly. One per thread: its cone, box,
+ * visitor and grid walk are its own, and it writes only the ranges of the robots it is given, so two
+ * passes over halves of the robots give the ranges one pass would, bit for bit.
+ */
+final class SonarPass {
+    private final StaticWorld world;
+    private final RobotGrid.Cursor cells;
+    private final RobotGrid grid;
+    private final double[] x;
+    private final double[] y;
+    private final double[] heading;
+    private final double[] radius;
+    private final SonarSpec[][] sonars;
+    private final Envelope area = new Envelope();
+    private final Cone cone = new Cone();
+    private final Nearest nearest = new Nearest();
+
+    SonarPass(StaticWorld world, RobotGrid grid, double[] x, double[] y, double[] heading, double[] radius,
+            SonarSpec[][] sonars) {
+        this.world = world;
+        this.grid = grid;
+        this.cells = grid.new Cursor();
+        this.x = x;
+        this.y = y;
+        this.heading = heading;
+        this.radius = radius;
+        this.sonars = sonars;
+    }
+
+    /** Reads every sonar of robots {@code from} to {@code to} (exclusive) that asked, each robot's at its offset. */
+    void read(GeometryStepRequest in, int from, int to, int[] offset, double[] ranges) {
+        for (int i = from; i < to; i++) {
+            if (in.wantsSonar(i)) {
+                int k = offset[i];
+                for (SonarSpec s : sonars[i]) {
+                    ranges[k++] = range(i, s);
+                }
+            }
+        }
+    }
+
+    private double range(int i, SonarSpec s) {
+        double h = Math.toRadians(heading[i]);
+        double c = Math.cos(h);
+        double sn = Math.sin(h);
+        double ox = x[i] + s.xMm() * c - s.yMm() * sn;
+        double oy = y[i] + s.xMm() * sn + s.yMm() * c;
+        double max = s.maxRangeMm();
+        cone.aim(ox, oy, heading[i] + s.angleDeg(), s.coneDeg() / 2);
+        sectorEnvelope(max);
+        Nearest v = nearest;
+        v.best = max;
+        world.query(area, v);
+        cells.select(area);
+        for (int g = cells.nextCell(); g >= 0; g = cells.nextCell()) {
+            for (int j = grid.first(g); j >= 0; j = grid.next(j)) {
+                if (j != i && !outside(area, x[j], y[j], radius[j])) {
+                    v.best = Math.min(v.best, cone.toDisc(x[j], y[j], radius[j]));
+                }
+            }
+        }
+        return v.best;
+    }
+
+    /** The cheap test first: a disc's bounding box misses {@code area}. */
+    static boolean outside(Envelope area, double cx, double cy, double r) {
+        return cx + r < area.getMinX() || cx - r > area.getMaxX() || cy + r < area.getMinY() || cy - r > area.getMaxY();
+    }
+
+    /** Sets {@link #area} to the bounding box of the cone cut off at {@code range}. */
+    private void sectorEnvelope(double range) {
+        Cone k = cone;
+        area.init(k.ox, k.ox, k.oy, k.oy);
+        area.expandToInclude(k.ox + range * k.lx, k.oy + range * k.ly);
+        area.expandToInclude(k.ox + range * k.rx, k.oy + range * k.ry);
+        area.expandToInclude(k.ox + range * k.axisX, k.oy + range * k.axisY);
+        if (k.contains(k.ox + 1, k.oy)) {
+            area.expandToInclude(k.ox + range, k.oy);
+        }
+        if (k.contains(k.ox, k.oy + 1)) {
+            area.expandToInclude(k.ox, k.oy + range);
+        }
+        if (k.contains(k.ox - 1, k.oy)) {
+            area.expandToInclude(k.ox - range, k.oy);
+        }
+        if (k.contains(k.ox, k.oy - 1)) {
+            area.expandToInclude(k.ox, k.oy - range);
+        }
+    }
+
+    /** Finds the nearest wall inside the current cone; reused, so a query allocates nothing. */
+    private final class Nearest implements ItemVisitor {
+        double best;
+
+        @Override
+        public void visitItem(Object item) {
+            Segment s = (Segment) item;
+            best = Math.min(best, cone.toSegment(s.ax, s.ay, s.bx, s.by));
+        }
+    }
+}
