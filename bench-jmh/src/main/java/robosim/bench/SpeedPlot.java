@@ -1,0 +1,109 @@
+package robosim.bench;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.style.Styler;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * The speed table and plot from speed.csv (scripts/bench-speed.sh): for the newest sitting, the median
+ * steps/s and ratio to its floor of each variant at 10, 100 and 1000 robots, printed as a Markdown table
+ * beside the marks of ARGoS 3 and Stage 4.3, and drawn (steps/s against robots, log-log) into speed.png.
+ *
+ * <p>usage: {@code java -cp ... robosim.bench.SpeedPlot DIR}
+ */
+public final class SpeedPlot {
+    private static final int[] ROBOTS = {10, 100, 1000};
+    /** ARGoS 3 and Stage 4.3 on this machine kind (the speed issue): robots 10, 100, 1000 -> steps/s. */
+    private static final double[] ARGOS = {6540, 580, 39.9};
+    private static final double[] STAGE = {3490, 194, 14.8};
+    private static final List<String> VARIANTS = List.of("shared-connection", "THREADS-per-robot",
+            "SEQUENTIAL-per-robot", "FloorThreads", "FloorShared");
+
+    private SpeedPlot() {
+    }
+
+    public static void main(String[] args) throws IOException {
+        Path dir = Path.of(args.length > 0 ? args[0] : "docs/perf");
+        List<String> lines = Files.readAllLines(dir.resolve("speed.csv"));
+        String newest = "";
+        for (String line : lines.subList(1, lines.size())) {
+            String s = line.split(",", -1)[0];
+            newest = s.compareTo(newest) > 0 ? s : newest;
+        }
+        Map<String, List<Double>> rates = new LinkedHashMap<>();
+        Map<String, List<Double>> ratios = new LinkedHashMap<>();
+        for (String line : lines.subList(1, lines.size())) {
+            String[] f = line.split(",", -1);
+            if (f.length < 9 || !f[0].equals(newest) || f[5].isEmpty()) {
+                continue;
+            }
+            rates.computeIfAbsent(f[1] + "|" + f[2], k -> new ArrayList<>()).add(Double.parseDouble(f[5]));
+            if (!f[8].isEmpty()) {
+                ratios.computeIfAbsent(f[1] + "|" + f[2], k -> new ArrayList<>()).add(Double.parseDouble(f[8]));
+            }
+        }
+        System.out.println("sitting " + newest + ": median steps/s (ratio to its floor)");
+        System.out.println();
+        System.out.println("| robots | " + String.join(" | ", VARIANTS) + " | ARGoS 3 | Stage 4.3 |");
+        System.out.println("|---|---|---|---|---|---|---|---|");
+        for (int r = 0; r < ROBOTS.length; r++) {
+            StringBuilder b = new StringBuilder("| " + ROBOTS[r] + " |");
+            for (String v : VARIANTS) {
+                String key = v + "|" + ROBOTS[r];
+                double m = median(rates.get(key));
+                b.append(String.format(Locale.ROOT, " %.1f", m));
+                if (!v.startsWith("Floor")) {
+                    b.append(String.format(Locale.ROOT, " (%.2f)", median(ratios.get(key))));
+                }
+                b.append(" |");
+            }
+            b.append(String.format(Locale.ROOT, " %.1f | %.1f |", ARGOS[r], STAGE[r]));
+            System.out.println(b);
+        }
+        XYChart chart = new XYChartBuilder().width(900).height(560)
+                .title("Steps/s against robots (Wander, 16 sonars every step, Geometry a process; " + newest + ")")
+                .xAxisTitle("robots").yAxisTitle("steps/s").build();
+        chart.getStyler().setXAxisLogarithmic(true);
+        chart.getStyler().setYAxisLogarithmic(true);
+        chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideSW);
+        chart.getStyler().setMarkerSize(8);
+        for (String v : VARIANTS) {
+            List<Double> x = new ArrayList<>();
+            List<Double> y = new ArrayList<>();
+            for (int n : ROBOTS) {
+                double m = median(rates.get(v + "|" + n));
+                if (!Double.isNaN(m)) {
+                    x.add((double) n);
+                    y.add(m);
+                }
+            }
+            if (!x.isEmpty()) {
+                chart.addSeries(v, x, y).setMarker(SeriesMarkers.CIRCLE);
+            }
+        }
+        double[] xs = {10, 100, 1000};
+        chart.addSeries("ARGoS 3 (the issue's mark)", xs, ARGOS).setMarker(SeriesMarkers.DIAMOND);
+        chart.addSeries("Stage 4.3 (the issue's mark)", xs, STAGE).setMarker(SeriesMarkers.DIAMOND);
+        BitmapEncoder.saveBitmap(chart, dir.resolve("speed").toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    private static double median(List<Double> values) {
+        if (values == null || values.isEmpty()) {
+            return Double.NaN;
+        }
+        List<Double> v = new ArrayList<>(values);
+        v.sort(null);
+        int m = v.size();
+        return m % 2 == 1 ? v.get(m / 2) : (v.get(m / 2 - 1) + v.get(m / 2)) / 2;
+    }
+}

@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# The speed table against ARGoS and Stage, in one sitting, alternated:
+#   scripts/bench-speed.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+# REPS defaults to 2. For N = 10, 100, 1000 robots (test-envs/bench-N.xml: Wander Scouts, 16 sonars of 5 m
+# read every step, Geometry its own process, robots in one process), each repetition runs in turn:
+#   ../shared/bench/FloorThreads.java N S   the floor of the thread-per-client shape
+#   headless.sh --robots-in-one-process     the default: one shared connection for the robots' process
+#   headless.sh ... --connection PER_ROBOT  a socket per robot, the default THREADS coordinator
+#   ../shared/bench/FloorShared.java N S    the floor of the one-thread-each-side shape
+#   headless.sh ... --coordinator SEQUENTIAL  a socket per robot, the original loop
+# Every run is printed with its ratio to the floor of the same repetition (the shared connection and
+# THREADS to FloorThreads, SEQUENTIAL to FloorShared), then the medians, beside the marks of ARGoS 3 and
+# Stage 4.3 (measured once on this machine kind, from the speed issue). Writes speed.csv (one row per run,
+# appended) and speed.png (robosim.bench.SpeedPlot) into a fresh temporary directory (printed), DIR with
+# --out DIR, or docs/perf/ with --write-docs. --quick: one repetition with a fifth of the steps.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_bench_args 2 docs/perf "$@"
+reps=$BENCH_REPS quick=$BENCH_QUICK
+for f in ../shared/bench/FloorThreads.java ../shared/bench/FloorShared.java; do
+  [ -f "$f" ] || robosim_fail "$f not found (the shared floors live beside the repository)"
+done
+dir=$(robosim_out_dir)
+robosim_build_if_stale
+jar=$(ls bench-jmh/target/bench-jmh-*.jar 2>/dev/null | head -n 1 || true)
+ls bench-jmh/target/lib/xchart-*.jar >/dev/null 2>&1 && [ -n "$jar" ] \
+  || { ./mvnw -q -B -ntp package -DskipTests -pl bench-jmh -am >&2; jar=$(ls bench-jmh/target/bench-jmh-*.jar | head -n 1); }
+out=$dir/speed.csv
+sitting=$(date -u +%Y-%m-%dT%H:%MZ)
+[ -f "$out" ] || echo "sitting,variant,robots,steps,rep,steps_per_s,floor,floor_steps_per_s,ratio_to_floor" > "$out"
+echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE)"
+
+steps_for() {
+  local s
+  case $1 in 10) s=10000 ;; 100) s=1500 ;; *) s=200 ;; esac
+  [ "$quick" = 1 ] && s=$((s / 5))
+  echo "$s"
+}
+floor_rate() { awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+  END { sub(/s$/, "", v["wall"]); if (v["wall"] > 0) printf "%.1f", v["steps"] / v["wall"]; else if (v["steps/s"] > 0) print v["steps/s"] }'; }
+rate() { (grep -oE '(^| )steps_per_s=[0-9.]+' || true) | head -n 1 | sed -E 's/.*=//'; }
+row() { # variant robots steps rep rate floor floor_rate
+  local ratio=""
+  [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
+  echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
+  printf '%-22s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
+}
+run() { # robots steps [options...]: steps/s of one headless run
+  local n=$1 s=$2
+  shift 2
+  scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --robots-in-one-process "$@" 2>/dev/null \
+    | tail -n 1 | rate || true
+}
+
+for rep in $(seq "$reps"); do
+  echo "== repetition $rep of $reps"
+  for n in 10 100 1000; do
+    s=$(steps_for "$n")
+    ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
+    row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
+    row shared-connection "$n" "$s" "$rep" "$(run "$n" "$s")" FloorThreads "$ft"
+    row THREADS-per-robot "$n" "$s" "$rep" "$(run "$n" "$s" --connection PER_ROBOT)" FloorThreads "$ft"
+    fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
+    row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
+    row SEQUENTIAL-per-robot "$n" "$s" "$rep" "$(run "$n" "$s" --coordinator SEQUENTIAL)" FloorShared "$fs"
+  done
+done
+echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"
+java -cp "bench-jmh/target/lib/*:$jar" robosim.bench.SpeedPlot "$dir"
+echo "bench-speed: rows appended to $out"
