@@ -2,11 +2,13 @@
  * The Hardware Simulator: {@link robosim.hardware.HardwareSimulator} links one robot to the
  * Environment and runs the lock-step exchange on the thread that calls {@code run} (the process's
  * {@code main}, or one thread per robot in {@code robots.sh}); the control code runs on its own
- * thread, {@code control[name]}. The two take turns through {@link robosim.hardware.ControlLink}: a
+ * thread, {@code control[name]} (a virtual thread on JDK 21+, see {@link robosim.hardware.ControlThreads}). The two take turns through {@link robosim.hardware.ControlLink}: a
  * step's request is built only once the control code is blocked in a simulator call (or has
  * finished), so runs are deterministic, and the {@link robosim.hardware.RobotState} they share is
  * touched by one of them at a time. Exchange modes, one class each besides the default: many robots
- * on one exchange thread ({@link robosim.hardware.SharedExchange}), and the report's two-thread
+ * of one process over one connection on one {@code exchange} thread ({@link robosim.hardware.SharedLink},
+ * {@code robots.sh}'s default), many robots with a socket each on one exchange thread
+ * ({@link robosim.hardware.SharedExchange}), and the report's two-thread
  * Hardware Simulator ({@link robosim.hardware.SendReceiveExchange}, whose {@code receiver[name]}
  * thread reads and applies responses). Robot types ({@link robosim.hardware.ArRobot},
  * {@link robosim.hardware.Scout}) are one class each.

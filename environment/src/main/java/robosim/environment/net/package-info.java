@@ -5,9 +5,12 @@
  * <ul>
  * <li>{@code simulation-loop}: every step (gather, core, Geometry link, responses, viewers, pace, pause,
  *     deadlines, the end); blocks on its event queue, timed to its next deadline, in its writes to
- *     robots, which the write watchdog bounds, and on a full recording queue.</li>
+ *     robots and shared connections (one frame each after every event), which the write watchdog
+ *     bounds, and on a full recording queue.</li>
  * <li>{@code robot-worker[name]} (one per robot): the handshake, then reads its robot's requests; blocks
  *     in its socket read.</li>
+ * <li>{@code robot-worker[shared #n]} (one per shared connection, several robots of one process): every
+ *     robot's hello, then each frame of requests, posted as one event; blocks in its socket read.</li>
  * <li>{@code robot-writer[name]} ({@code TWO_THREADS}): writes what the loop queues for its robot.</li>
  * <li>{@code stepper} ({@code SEQUENTIAL}): reads every robot's request in world order.</li>
  * <li>{@code geometry-worker}: the Geometry connection - the world, each step's round trip, the end.</li>
