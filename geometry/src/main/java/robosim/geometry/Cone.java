@@ -33,6 +33,31 @@ final class Cone {
         return this;
     }
 
+    /**
+     * Aims the wedge from an origin with its unit vectors (axis, left and right edges) given in a frame
+     * turned by the angle whose cosine and sine are {@code c} and {@code s}: a rotation, no trigonometry,
+     * for sonars whose vectors in the robot's frame are worked out once ({@link #beam}).
+     */
+    Cone aim(double originX, double originY, double c, double s, double[] beam) {
+        this.ox = originX;
+        this.oy = originY;
+        axisX = c * beam[0] - s * beam[1];
+        axisY = s * beam[0] + c * beam[1];
+        lx = c * beam[2] - s * beam[3];
+        ly = s * beam[2] + c * beam[3];
+        rx = c * beam[4] - s * beam[5];
+        ry = s * beam[4] + c * beam[5];
+        return this;
+    }
+
+    /** A sonar's unit vectors in the robot's frame, for {@link #aim(double, double, double, double, double[])}. */
+    static double[] beam(double axisDeg, double halfDeg) {
+        double a = Math.toRadians(axisDeg);
+        double h = Math.toRadians(halfDeg);
+        return new double[] {Math.cos(a), Math.sin(a), Math.cos(a + h), Math.sin(a + h), Math.cos(a - h),
+            Math.sin(a - h)};
+    }
+
     /** True when the point lies inside the wedge (boundary included). */
     boolean contains(double px, double py) {
         double vx = px - ox;

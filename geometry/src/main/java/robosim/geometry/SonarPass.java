@@ -21,6 +21,8 @@ final class SonarPass {
     private final double[] heading;
     private final double[] radius;
     private final SonarSpec[][] sonars;
+    /** Each sonar's cone vectors in its robot's frame, worked out once ({@link Cone#beam}). */
+    private final double[][][] beams;
     private final Envelope area = new Envelope();
     private final Cone cone = new Cone();
     private final Nearest nearest = new Nearest();
@@ -35,28 +37,36 @@ final class SonarPass {
         this.heading = heading;
         this.radius = radius;
         this.sonars = sonars;
+        this.beams = new double[sonars.length][][];
+        for (int i = 0; i < sonars.length; i++) {
+            beams[i] = new double[sonars[i].length][];
+            for (int k = 0; k < sonars[i].length; k++) {
+                beams[i][k] = Cone.beam(sonars[i][k].angleDeg(), sonars[i][k].coneDeg() / 2);
+            }
+        }
     }
 
     /** Reads every sonar of robots {@code from} to {@code to} (exclusive) that asked, each robot's at its offset. */
     void read(GeometryStepRequest in, int from, int to, int[] offset, double[] ranges) {
         for (int i = from; i < to; i++) {
             if (in.wantsSonar(i)) {
+                double h = Math.toRadians(heading[i]);
+                double c = Math.cos(h);
+                double sn = Math.sin(h);
                 int k = offset[i];
-                for (SonarSpec s : sonars[i]) {
-                    ranges[k++] = range(i, s);
+                for (int b = 0; b < sonars[i].length; b++) {
+                    ranges[k++] = range(i, sonars[i][b], beams[i][b], c, sn);
                 }
             }
         }
     }
 
-    private double range(int i, SonarSpec s) {
-        double h = Math.toRadians(heading[i]);
-        double c = Math.cos(h);
-        double sn = Math.sin(h);
+    /** Robot i's sonar {@code s} ({@code beam}: its cone's vectors in the robot's frame; c, sn: the heading's). */
+    private double range(int i, SonarSpec s, double[] beam, double c, double sn) {
         double ox = x[i] + s.xMm() * c - s.yMm() * sn;
         double oy = y[i] + s.xMm() * sn + s.yMm() * c;
         double max = s.maxRangeMm();
-        cone.aim(ox, oy, heading[i] + s.angleDeg(), s.coneDeg() / 2);
+        cone.aim(ox, oy, c, sn, beam);
         sectorEnvelope(max);
         Nearest v = nearest;
         v.best = max;
@@ -80,22 +90,23 @@ final class SonarPass {
     /** Sets {@link #area} to the bounding box of the cone cut off at {@code range}. */
     private void sectorEnvelope(double range) {
         Cone k = cone;
-        area.init(k.ox, k.ox, k.oy, k.oy);
-        area.expandToInclude(k.ox + range * k.lx, k.oy + range * k.ly);
-        area.expandToInclude(k.ox + range * k.rx, k.oy + range * k.ry);
-        area.expandToInclude(k.ox + range * k.axisX, k.oy + range * k.axisY);
+        double x0 = Math.min(k.ox, Math.min(k.ox + range * k.lx, Math.min(k.ox + range * k.rx, k.ox + range * k.axisX)));
+        double x1 = Math.max(k.ox, Math.max(k.ox + range * k.lx, Math.max(k.ox + range * k.rx, k.ox + range * k.axisX)));
+        double y0 = Math.min(k.oy, Math.min(k.oy + range * k.ly, Math.min(k.oy + range * k.ry, k.oy + range * k.axisY)));
+        double y1 = Math.max(k.oy, Math.max(k.oy + range * k.ly, Math.max(k.oy + range * k.ry, k.oy + range * k.axisY)));
         if (k.contains(k.ox + 1, k.oy)) {
-            area.expandToInclude(k.ox + range, k.oy);
+            x1 = Math.max(x1, k.ox + range);
         }
         if (k.contains(k.ox, k.oy + 1)) {
-            area.expandToInclude(k.ox, k.oy + range);
+            y1 = Math.max(y1, k.oy + range);
         }
         if (k.contains(k.ox - 1, k.oy)) {
-            area.expandToInclude(k.ox - range, k.oy);
+            x0 = Math.min(x0, k.ox - range);
         }
         if (k.contains(k.ox, k.oy - 1)) {
-            area.expandToInclude(k.ox, k.oy - range);
+            y0 = Math.min(y0, k.oy - range);
         }
+        area.init(x0, x1, y0, y1);
     }
 
     /** Finds the nearest wall inside the current cone; reused, so a query allocates nothing. */
