@@ -32,7 +32,7 @@ echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE)"
 
 steps_for() {
   local s
-  case $1 in 10) s=10000 ;; 100) s=1500 ;; *) s=200 ;; esac
+  case $1 in 10) s=20000 ;; 100) s=3000 ;; *) s=600 ;; esac
   [ "$quick" = 1 ] && s=$((s / 5))
   echo "$s"
 }
