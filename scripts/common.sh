@@ -14,7 +14,7 @@ ROBOSIM_SCRIPT=$(basename "$0" .sh)
 ROBOSIM_CALLER_DIR=$PWD   # where the user started the script, before any cd
 
 # The JDK every script and process runs on: JAVA_HOME's when it is set, else the newest of `java` on the
-# path and the JDKs under /usr/lib/jvm (or /Library/Java/JavaVirtualMachines); put first on the path,
+# path and the JDKs under /usr/lib/jvm (or /Library/Java/JavaVirtualMachines) that have javac; put first on the path,
 # so the floors of the benchmarks run on it too. JDK 21 and later run control code on virtual threads.
 # Which one, and why, goes to the processes as ROBOSIM_JAVA_CHOICE (the robot processes and headless
 # print it in their first lines; a script prints nothing of its own, so bad input stays one line).
@@ -35,6 +35,7 @@ robosim_pick_java() {
     for c in "$(command -v java 2>/dev/null)" /usr/lib/jvm/*/bin/java /Library/Java/JavaVirtualMachines/*/Contents/Home/bin/java; do
       [ -n "$c" ] && [ -x "$c" ] || continue
       h=$(dirname "$(dirname "$(readlink -f "$c")")")
+      [ -x "$h/bin/javac" ] || continue # (a JRE cannot build the project)
       v=$(robosim_java_version "$h")
       if [ "$v" -gt "$best" ]; then best=$v home=$h; fi
     done

@@ -4,7 +4,7 @@ package robosim.geometry;
  * Exact nearest distances inside a sonar cone: the wedge of half-angle below 90 degrees around a
  * unit axis, from an origin. A wall segment is clipped to the wedge first; a round robot counts
  * where its disc meets the wedge. Distances are from the origin; {@link Sweep#NEVER} for a miss.
- * A mutable scratch object, re-aimed with {@link #aim} so the per-step path allocates nothing.
+ * A mutable scratch object, re-aimed with {@code aim} so the per-step path allocates nothing.
  */
 final class Cone {
     double ox;
@@ -18,20 +18,6 @@ final class Cone {
     double ry;
     double axisX;
     double axisY;
-
-    Cone aim(double originX, double originY, double axisDeg, double halfDeg) {
-        this.ox = originX;
-        this.oy = originY;
-        double a = Math.toRadians(axisDeg);
-        double h = Math.toRadians(halfDeg);
-        axisX = Math.cos(a);
-        axisY = Math.sin(a);
-        lx = Math.cos(a + h);
-        ly = Math.sin(a + h);
-        rx = Math.cos(a - h);
-        ry = Math.sin(a - h);
-        return this;
-    }
 
     /**
      * Aims the wedge from an origin with its unit vectors (axis, left and right edges) given in a frame

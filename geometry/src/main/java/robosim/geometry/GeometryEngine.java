@@ -86,7 +86,7 @@ public final class GeometryEngine {
         this.offset = new int[this.robots];
         this.ranges = new double[ranges];
         this.sonarPass = new SonarPass(world, grid, x, y, heading, radius, sonars);
-        this.helperPass = new SonarPass(world, grid, x, y, heading, radius, sonars);
+        this.helperPass = parallelFrom > 0 ? new SonarPass(world, grid, x, y, heading, radius, sonars) : null;
     }
 
     public int robotCount() {
@@ -176,8 +176,11 @@ public final class GeometryEngine {
         int split = middle;
         java.util.concurrent.ForkJoinTask<?> other = java.util.concurrent.ForkJoinPool.commonPool()
                 .submit(() -> helperPass.read(in, split, robots, offset, ranges));
-        sonarPass.read(in, 0, split, offset, ranges);
-        other.join();
+        try {
+            sonarPass.read(in, 0, split, offset, ranges);
+        } finally {
+            other.join(); // (never left writing into the ranges)
+        }
     }
 
     /** Distance robot i may travel along unit (ux, uy) before first contact; its contact in moveVisitor. */

@@ -11,6 +11,8 @@ import java.util.Locale;
  * JDK 17 has. The project builds for JDK 17, so the virtual kind is found by name at run time. The system
  * property {@code robosim.controlThreads} ({@code virtual} or {@code platform}) chooses; a robot's steps
  * do not depend on the kind (the control code and the exchange take turns, see {@link ControlLink}).
+ * Control code that computes for long without calling the robot keeps its carrier thread (one per core)
+ * busy meanwhile, where a platform thread would be time-sliced: such code wants {@code platform}.
  */
 final class ControlThreads {
     /** {@code Thread.ofVirtual()}, or null on a JVM without virtual threads. */
@@ -56,6 +58,9 @@ final class ControlThreads {
             Runnable.class));
 
     private static MethodHandle ofVirtual() {
+        if (Runtime.version().feature() < 21) {
+            return null; // (JDK 19 and 20 have them as a preview, usable only with --enable-preview)
+        }
         try {
             Class<?> type = Class.forName("java.lang.Thread$Builder$OfVirtual");
             return MethodHandles.publicLookup().findStatic(Thread.class, "ofVirtual", MethodType.methodType(type));

@@ -65,44 +65,69 @@ final class SharedLink {
         ObjectConnection c = ObjectConnection.client(socket, resetEvery, keys);
         try {
             c.write(new SharedHello(robots.size()));
-            for (HardwareSimulator sim : robots) {
-                c.write(sim.hello());
-            }
             c.flush();
-            Externalizable answer = SimulationKeys.answerChallenge(c, keys, "robot");
-            if (!(answer instanceof SharedReplies welcomes)) {
-                throw new ProtocolException("expected the robots' welcomes, got a " + answer.getClass().getSimpleName());
+            SharedReplies welcomes = frame(SimulationKeys.answerChallenge(c, keys, "robot"));
+            if (welcomes.count() == 0) { // (go on: the hellos)
+                for (HardwareSimulator sim : robots) {
+                    c.write(sim.hello());
+                }
+                c.flush();
+                welcomes = frame(c.read(Externalizable.class));
             }
             HardwareSimulator[] sims = new HardwareSimulator[robots.size()];
+            boolean[] answered = new boolean[sims.length];
             List<String> refusals = new ArrayList<>();
             for (int i = 0; i < welcomes.count(); i++) {
                 int slot = welcomes.slot(i);
-                if (welcomes.kind(i) != SharedReplies.Kind.WELCOME || slot < 0 || slot >= sims.length) {
-                    throw new ProtocolException("expected a welcome for each robot, got a " + welcomes.kind(i)
-                            + " for slot " + slot);
+                if (welcomes.kind(i) != SharedReplies.Kind.WELCOME) {
+                    continue; // (a robot that joins a running world may get its first step in the same frame)
                 }
+                if (slot < 0 || slot >= sims.length || answered[slot]) {
+                    throw new ProtocolException("the Environment welcomed robot slot " + slot + " of " + sims.length
+                            + (slot >= 0 && slot < sims.length ? " twice" : ""));
+                }
+                answered[slot] = true;
                 RobotWelcome w = welcomes.welcome(i);
                 HardwareSimulator sim = robots.get(slot);
                 if (w.isAccepted()) {
                     sim.welcomed(w);
                     sims[slot] = sim;
                 } else {
-                    LOG.error("the Environment refused robot {}: {}", sim.name(), w.reason());
-                    refusals.add(sim.name() + ": " + w.reason());
+                    String why = printable(w.reason());
+                    LOG.error("the Environment refused robot {}: {}", sim.name(), why);
+                    refusals.add(sim.name() + ": " + why);
                 }
             }
-            if (refusals.size() + java.util.Arrays.stream(sims).filter(s -> s != null).count() != sims.length) {
-                throw new ProtocolException("the Environment answered " + welcomes.count() + " of " + sims.length
-                        + " robots' hellos");
+            for (int slot = 0; slot < sims.length; slot++) {
+                if (!answered[slot]) {
+                    throw new ProtocolException("the Environment did not answer robot " + robots.get(slot).name()
+                            + "'s hello");
+                }
             }
             if (refusals.size() == sims.length) {
                 throw new ProtocolException("the Environment refused every robot: " + String.join("; ", refusals));
             }
-            return new SharedLink(c, sims);
+            SharedLink link = new SharedLink(c, sims);
+            link.apply(welcomes, true);
+            return link;
         } catch (IOException | RuntimeException e) {
             c.close();
             throw e;
         }
+    }
+
+    private static SharedReplies frame(Externalizable answer) throws ProtocolException {
+        if (!(answer instanceof SharedReplies f)) {
+            throw new ProtocolException("expected a frame of replies, got a " + answer.getClass().getSimpleName());
+        }
+        return f;
+    }
+
+    /** Network text for a log line: control characters shown as '?', at most 500 characters. */
+    private static String printable(String s) {
+        String t = s.length() > 500 ? s.substring(0, 500) + "..." : s;
+        return t.codePoints().map(ch -> Character.isISOControl(ch) ? '?' : ch)
+                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
     }
 
     /** Runs every welcomed robot with its control code (by slot) until each one's simulation is over. */
@@ -157,7 +182,8 @@ final class SharedLink {
         }
         write();
         stepReleased = false;
-        for (int slot : late) {
+        for (int l = 0; l < late.size(); l++) {
+            int slot = late.get(l);
             while (due[slot] && !sims[slot].link().awaitControlFor(LOOK_NANOS)) {
                 if (connection.hasInput() && (!take() || stepReleased) && due[slot]) {
                     LOG.warn("{}: its control code has not yielded and the Environment went on without it; the other "
@@ -165,9 +191,15 @@ final class SharedLink {
                     end(slot, "its control code did not yield in time");
                 }
             }
-            if (due[slot]) {
+            if (due[slot]) { // (with every other late robot that has yielded by now)
                 requests.clear();
                 add(slot);
+                for (int m = l + 1; m < late.size(); m++) {
+                    int other = late.get(m);
+                    if (due[other] && sims[other].link().awaitControlFor(0)) {
+                        add(other);
+                    }
+                }
                 write();
             }
         }
@@ -199,13 +231,16 @@ final class SharedLink {
             }
             return false;
         }
-        if (!(answer instanceof SharedReplies f)) {
-            throw new ProtocolException("expected a frame of replies, got a " + answer.getClass().getSimpleName());
-        }
+        apply(frame(answer), false);
+        return true;
+    }
+
+    /** Applies a frame's entries, in order; {@code welcomes}: the frame that answered the hellos (its welcomes read). */
+    private void apply(SharedReplies f, boolean welcomes) throws ProtocolException {
         for (int i = 0; i < f.count(); i++) {
             int slot = f.slot(i);
             if (slot < 0 || slot >= sims.length || sims[slot] == null) {
-                continue; // (ended here already: what the Environment still says to it is of no use)
+                continue; // (ended here already, or refused: what the Environment still says to it is of no use)
             }
             switch (f.kind(i)) {
                 case STEP -> stepDue(slot, f.step(i));
@@ -216,11 +251,14 @@ final class SharedLink {
                         stepDue(slot, f.step(i));
                     }
                 }
-                case END -> end(slot, f.end(i).reason());
-                case WELCOME -> throw new ProtocolException("sent a second welcome for robot " + sims[slot].name());
+                case END -> end(slot, printable(f.end(i).reason()));
+                case WELCOME -> {
+                    if (!welcomes) {
+                        throw new ProtocolException("sent a second welcome for robot " + sims[slot].name());
+                    }
+                }
             }
         }
-        return true;
     }
 
     private void stepDue(int slot, long step) {

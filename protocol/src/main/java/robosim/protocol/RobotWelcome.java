@@ -98,26 +98,38 @@ public final class RobotWelcome implements java.io.Externalizable {
 
     @Override
     public void writeExternal(ObjectOutput out) throws IOException {
+        write(out, true);
+    }
+
+    @Override
+    public void readExternal(ObjectInput in) throws IOException {
+        read(in, null);
+    }
+
+    /** Writes this welcome; without its robot names when {@code withNames} is false (a frame's later welcomes). */
+    void write(ObjectOutput out, boolean withNames) throws IOException {
         out.writeBoolean(accepted);
         out.writeUTF(reason);
         out.writeLong(timeStepMs);
         out.writeDouble(xMm);
         out.writeDouble(yMm);
         out.writeDouble(headingDeg);
-        Wire.writeStrings(out, robotNames);
+        if (withNames) {
+            Wire.writeStrings(out, robotNames);
+        }
         Wire.writeStrings(out, sensors);
         out.writeBoolean(stepMessages);
     }
 
-    @Override
-    public void readExternal(ObjectInput in) throws IOException {
+    /** Reads a welcome; {@code names}: the robot names it was written without, or null when they are on the wire. */
+    void read(ObjectInput in, List<String> names) throws IOException {
         accepted = in.readBoolean();
         reason = in.readUTF();
         timeStepMs = in.readLong();
         xMm = in.readDouble();
         yMm = in.readDouble();
         headingDeg = in.readDouble();
-        robotNames = Wire.readStrings(in, "robot name count", Limits.MAX_ROBOTS);
+        robotNames = names != null ? names : Wire.readStrings(in, "robot name count", Limits.MAX_ROBOTS);
         sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
         stepMessages = in.readBoolean();
     }

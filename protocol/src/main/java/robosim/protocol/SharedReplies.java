@@ -4,6 +4,7 @@ import java.io.IOException;
 import java.io.ObjectInput;
 import java.io.ObjectOutput;
 import java.util.Arrays;
+import java.util.List;
 
 /**
  * Environment -> robot process on a shared connection: everything for its robots since the last frame,
@@ -47,10 +48,11 @@ public final class SharedReplies implements java.io.Externalizable {
 
     private void add(Kind kind, int slot, long step, java.io.Externalizable payload) {
         if (count == slots.length) {
-            kinds = Arrays.copyOf(kinds, count * 2);
-            slots = Arrays.copyOf(slots, count * 2);
-            steps = Arrays.copyOf(steps, count * 2);
-            payloads = Arrays.copyOf(payloads, count * 2);
+            int grown = Math.max(8, count * 2);
+            kinds = Arrays.copyOf(kinds, grown);
+            slots = Arrays.copyOf(slots, grown);
+            steps = Arrays.copyOf(steps, grown);
+            payloads = Arrays.copyOf(payloads, grown);
         }
         kinds[count] = (byte) kind.ordinal();
         slots[count] = slot;
@@ -93,17 +95,32 @@ public final class SharedReplies implements java.io.Externalizable {
         return (SimulationEnd) payloads[i];
     }
 
+    /**
+     * A {@code WELCOME}'s body starts with a boolean: true when its robot names are those of the frame's
+     * previous welcome and left out (every robot of a connection gets the world's names: once per frame,
+     * not once per robot).
+     */
     @Override
     public void writeExternal(ObjectOutput out) throws IOException {
         out.writeInt(count);
+        List<String> names = null;
         for (int i = 0; i < count; i++) {
             out.writeByte(kinds[i]);
             out.writeInt(slots[i]);
-            if (kinds[i] == Kind.STEP.ordinal() || kinds[i] == Kind.RESPONSE.ordinal()) {
-                out.writeLong(steps[i]);
-            }
-            if (payloads[i] != null) {
-                payloads[i].writeExternal(out);
+            switch (KINDS[kinds[i]]) {
+                case WELCOME -> {
+                    RobotWelcome w = (RobotWelcome) payloads[i];
+                    boolean same = names != null && (names == w.robotNames() || names.equals(w.robotNames()));
+                    out.writeBoolean(same);
+                    w.write(out, !same);
+                    names = w.robotNames();
+                }
+                case STEP -> out.writeLong(steps[i]);
+                case RESPONSE -> {
+                    out.writeLong(steps[i]);
+                    payloads[i].writeExternal(out);
+                }
+                case END -> payloads[i].writeExternal(out);
             }
         }
     }
@@ -111,10 +128,11 @@ public final class SharedReplies implements java.io.Externalizable {
     @Override
     public void readExternal(ObjectInput in) throws IOException {
         count = Limits.checkCount("entries in one frame", in.readInt(), MAX_ENTRIES);
-        kinds = new byte[count];
-        slots = new int[count];
-        steps = new long[count];
-        payloads = new java.io.Externalizable[count];
+        kinds = new byte[Math.max(8, count)];
+        slots = new int[kinds.length];
+        steps = new long[kinds.length];
+        payloads = new java.io.Externalizable[kinds.length];
+        List<String> names = null;
         for (int i = 0; i < count; i++) {
             byte k = in.readByte();
             if (k < 0 || k >= KINDS.length) {
@@ -122,28 +140,31 @@ public final class SharedReplies implements java.io.Externalizable {
             }
             kinds[i] = k;
             slots[i] = in.readInt();
-            Kind kind = KINDS[k];
-            if (kind == Kind.STEP || kind == Kind.RESPONSE) {
-                steps[i] = in.readLong();
-            }
-            payloads[i] = switch (kind) {
+            switch (KINDS[k]) {
                 case WELCOME -> {
+                    boolean same = in.readBoolean();
+                    if (same && names == null) {
+                        throw new ProtocolException("a welcome takes the robot names of a welcome before it, "
+                                + "and there is none");
+                    }
                     RobotWelcome w = new RobotWelcome();
-                    w.readExternal(in);
-                    yield w;
+                    w.read(in, same ? names : null);
+                    names = w.robotNames();
+                    payloads[i] = w;
                 }
+                case STEP -> steps[i] = in.readLong();
                 case RESPONSE -> {
+                    steps[i] = in.readLong();
                     StepResponse r = new StepResponse();
                     r.readExternal(in);
-                    yield r;
+                    payloads[i] = r;
                 }
                 case END -> {
                     SimulationEnd e = new SimulationEnd();
                     e.readExternal(in);
-                    yield e;
+                    payloads[i] = e;
                 }
-                case STEP -> null;
-            };
+            }
         }
     }
 }

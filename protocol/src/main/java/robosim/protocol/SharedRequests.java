@@ -28,8 +28,8 @@ public final class SharedRequests implements java.io.Externalizable {
     /** Adds robot {@code slot}'s request (the writer's). */
     public void add(int slot, StepRequest request) {
         if (count == slots.length) {
-            slots = Arrays.copyOf(slots, count * 2);
-            requests = Arrays.copyOf(requests, count * 2);
+            slots = Arrays.copyOf(slots, Math.max(8, count * 2));
+            requests = Arrays.copyOf(requests, slots.length);
         }
         slots[count] = slot;
         requests[count++] = request;

@@ -43,11 +43,14 @@ public final class HeadlessRunner implements Callable<Integer> {
             description = "Run every robot in one JVM, over one shared connection (see --connection).")
     boolean robotsInOneProcess;
 
+    /** How robots in one process connect (robots.sh's --connection). */
+    enum Connection { SHARED, PER_ROBOT }
+
     @Option(names = "--connection", paramLabel = "KIND",
             description = "With --robots-in-one-process: SHARED (one connection for every robot, each step's requests "
                     + "and responses in one frame each; the default) or PER_ROBOT (a socket each, threaded as "
                     + "--exchange says; the default with --exchange or --coordinator SEQUENTIAL).")
-    String connection;
+    Connection connection;
 
     @Option(names = "--no-geometry", description = "Do collision and sonar inside the Environment.")
     boolean noGeometry;
@@ -228,17 +231,18 @@ public final class HeadlessRunner implements Callable<Integer> {
                         + "geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
                 s.get("messages"), s.get("robots_left"), noGeometry ? "in-process" : "process",
-                robotsInOneProcess ? "one-process" + ("SHARED".equals(connectionKind()) ? "" : "-per-robot")
+                robotsInOneProcess ? "one-process" + (connectionKind() == Connection.SHARED ? "" : "-per-robot")
                         : "processes"));
         return code;
     }
 
     /** How robots in one process connect: as {@code --connection} says, else shared unless that cannot be. */
-    private String connectionKind() {
+    private Connection connectionKind() {
         if (connection != null) {
             return connection;
         }
-        return exchange != null || "SEQUENTIAL".equals(environmentOptions.coordinator) ? "PER_ROBOT" : "SHARED";
+        return exchange != null || "SEQUENTIAL".equals(environmentOptions.coordinator) ? Connection.PER_ROBOT
+                : Connection.SHARED;
     }
 
     private List<String> exchangeArgs() {
@@ -251,7 +255,7 @@ public final class HeadlessRunner implements Callable<Integer> {
             List<String> args = new ArrayList<>(List.of("127.0.0.1", robotPort));
             args.addAll(resetArgs());
             args.addAll(exchangeArgs());
-            args.addAll(List.of("--connection", connectionKind()));
+            args.addAll(List.of("--connection", connectionKind().name()));
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 args.add("--robot");
                 args.add(r.name() + ":" + r.type() + ":" + r.control());

@@ -36,11 +36,16 @@ final class RawSharedRobots implements AutoCloseable {
         wire = new BufferedOutputStream(socket.getOutputStream());
         out = new ObjectOutputStream(held);
         out.writeObject(new SharedHello(names.size()));
+        release(Integer.MAX_VALUE);
+        in = new ObjectInputStream(socket.getInputStream());
+        SharedReplies goOn = (SharedReplies) in.readObject();
+        if (goOn.count() != 0) {
+            throw new IOException("refused before the hellos: " + goOn.welcome(0).reason());
+        }
         for (String name : names) {
             out.writeObject(new RobotHello(name, properties));
         }
         release(Integer.MAX_VALUE);
-        in = new ObjectInputStream(socket.getInputStream());
         welcomes = (SharedReplies) in.readObject();
     }
 

@@ -11,52 +11,61 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 /**
  * Two runs of the maze (noisy sonar, seed 42) give identical pose logs, byte for byte, whatever the robots'
- * connection and thread kind: once as separate processes (a socket each, control code on platform threads,
- * this JVM's JDK), once in one process over one shared connection on the newest JDK 21+ this machine has,
- * with control code on virtual threads (on a machine with no JDK 21+, on this JVM's platform threads: the
- * connection modes alone are compared then, and the test says so).
+ * connection and thread kind: once as separate processes (a socket each, control code on platform threads),
+ * once in one process over one shared connection with control code on virtual threads; both on the newest
+ * JDK 21+ this machine has, so only the connection and the thread kind differ (on a machine with no JDK
+ * 21+, both on this JVM's platform threads: the connection modes alone are compared then, and the test
+ * says so).
  */
 class SameSeedSameRunTest {
     private static final String[] RUN = {"--env", "../test-envs/maze.xml", "--steps", "300", "--timeout-s", "120"};
+    private static final String ROBOT_JVM = "-XX:+UseSerialGC -XX:TieredStopAtLevel=1 -Drobosim.controlThreads=";
 
     @TempDir
     Path dir;
 
+    /** A headless run on the JDK at {@code jdk} (its children too); returns its output. */
+    private String headless(Path jdk, Path poseLog, String... more) throws Exception {
+        List<String> command = new ArrayList<>(List.of(jdk.resolve("bin").resolve("java").toString(), "-cp",
+                System.getProperty("java.class.path"), HeadlessRunner.class.getName()));
+        command.addAll(List.of(RUN));
+        command.addAll(List.of("--pose-log", poseLog.toString()));
+        command.addAll(List.of(more));
+        Path out = dir.resolve(poseLog.getFileName() + ".txt");
+        Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(out.toFile()).start();
+        try {
+            assertTrue(p.waitFor(180, TimeUnit.SECONDS), "the run did not end: " + Files.readString(out));
+        } finally {
+            p.destroyForcibly();
+        }
+        String output = Files.readString(out);
+        assertEquals(0, p.exitValue(), output);
+        return output;
+    }
+
     @Test
     void theSameSeedGivesTheSamePoseLogOverEitherConnectionAndThreadKind() throws Exception {
+        Path newest = NewestJdk.atLeast(21);
+        Path jdk = newest == null ? Path.of(System.getProperty("java.home")) : newest;
+        String kind = newest == null ? "platform" : "virtual";
         Path perRobot = dir.resolve("per-robot.csv");
-        List<String> args = new ArrayList<>(List.of(RUN));
-        args.addAll(List.of("--pose-log", perRobot.toString()));
-        assertEquals(0, new CommandLine(new HeadlessRunner()).execute(args.toArray(String[]::new)));
-
+        String first = headless(jdk, perRobot, "--robot-jvm-opts", ROBOT_JVM + "platform");
+        assertTrue(first.contains("robots_in=processes"), first);
+        assertTrue(first.contains("control code on platform threads"), first);
         Path shared = dir.resolve("shared.csv");
-        Path jdk = NewestJdk.atLeast(21);
-        List<String> command = new ArrayList<>(List.of((jdk == null ? Path.of(System.getProperty("java.home")) : jdk)
-                .resolve("bin").resolve("java").toString(), "-cp", System.getProperty("java.class.path"),
-                HeadlessRunner.class.getName()));
-        command.addAll(List.of(RUN));
-        command.addAll(List.of("--pose-log", shared.toString(), "--robots-in-one-process", "--robot-jvm-opts",
-                "-Drobosim.controlThreads=virtual"));
-        Process p = new ProcessBuilder(command).redirectErrorStream(true)
-                .redirectOutput(dir.resolve("shared-run.txt").toFile()).start();
-        assertTrue(p.waitFor(180, TimeUnit.SECONDS), "the shared run did not end");
-        String output = Files.readString(dir.resolve("shared-run.txt"));
-        assertEquals(0, p.exitValue(), output);
-        assertTrue(output.contains("robots_in=one-process"), output);
-        String kind = jdk == null ? "platform" : "virtual";
-        assertTrue(output.contains("control code on " + kind + " threads"), output);
-        if (jdk == null) {
+        String second = headless(jdk, shared, "--robots-in-one-process", "--robot-jvm-opts", ROBOT_JVM + kind);
+        assertTrue(second.lines().anyMatch(l -> l.endsWith("robots_in=one-process")), second);
+        assertTrue(second.contains("control code on " + kind + " threads"), second);
+        if (newest == null) {
             System.out.println("SameSeedSameRunTest: no JDK 21+ here: the shared connection compared on platform threads");
         }
-
-        byte[] first = Files.readAllBytes(perRobot);
-        byte[] second = Files.readAllBytes(shared);
-        assertEquals(1 + 300 * 6, new String(first).lines().count());
-        assertTrue(java.util.Arrays.equals(first, second), "the two pose logs differ");
+        byte[] a = Files.readAllBytes(perRobot);
+        byte[] b = Files.readAllBytes(shared);
+        assertEquals(1 + 300 * 6, new String(a).lines().count());
+        assertTrue(java.util.Arrays.equals(a, b), "the two pose logs differ");
     }
 
     /** The newest JDK of this machine (this JVM's, or one under the usual install directories), as the scripts look. */

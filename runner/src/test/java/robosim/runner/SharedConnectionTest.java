@@ -15,6 +15,8 @@ import org.junit.jupiter.params.provider.EnumSource;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.Departure;
+import robosim.environment.net.RobotLoss;
+import robosim.environment.net.RunListener;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
 import robosim.protocol.Protocol;
@@ -34,8 +36,12 @@ class SharedConnectionTest {
     private static final int STEPS = 50;
 
     private static ClientWorkerCoordinator start() throws Exception {
+        return start(RobotLoss.REMOVE);
+    }
+
+    private static ClientWorkerCoordinator start(RobotLoss loss) throws Exception {
         Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                .maxSteps(STEPS).resetEvery(64).build();
+                .maxSteps(STEPS).resetEvery(64).onRobotLoss(loss).build();
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(
                 new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml")), s);
         env.start();
@@ -185,6 +191,80 @@ class SharedConnectionTest {
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
             assertTrue(env.summary().completed(), env.summary().reason());
             assertEquals(List.of(), env.summary().departures());
+        } finally {
+            env.close();
+        }
+    }
+
+    /**
+     * Robots of a shared connection that is lost are held, and a new process's shared connection takes them
+     * over mid-run: their welcomes and their first step come in one frame (the world was waiting for r3's
+     * request at the time), and the Hardware Simulators run them to the end.
+     */
+    @Test
+    void robotsHeldFromALostSharedConnectionAreTakenOverByANewOne() throws Exception {
+        ClientWorkerCoordinator env = start(RobotLoss.HOLD);
+        try {
+            int port = env.ports()[0];
+            java.util.concurrent.CountDownLatch held = new java.util.concurrent.CountDownLatch(2);
+            java.util.concurrent.CountDownLatch back = new java.util.concurrent.CountDownLatch(2);
+            env.listen(new RunListener() {
+                @Override
+                public void robotHeld(String robot, long step, String why) {
+                    held.countDown();
+                }
+
+                @Override
+                public void robotReturned(String robot, long step) {
+                    back.countDown();
+                }
+            });
+            CompletableFuture<Void> r3 = CompletableFuture.runAsync(() -> {
+                try (RawRobot r = new RawRobot("r3", RobotModels.SCOUT, port)) {
+                    while (r.next()) {
+                        if (r.step == 10 && !back.await(LONG, TimeUnit.SECONDS)) {
+                            throw new AssertionError("r1 and r2 did not come back");
+                        }
+                        r.step(0, 0, false, List.of());
+                    }
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }, TestThreads.ROBOTS);
+            try (RawSharedRobots first = new RawSharedRobots(port, List.of("r1", "r2"), RobotModels.AR_ROBOT)) {
+                long[] due = {-1, -1};
+                while (due[0] < 5 || due[1] < 5) { // (steps 0 to 4 taken, then the connection is lost)
+                    SharedReplies f = first.next();
+                    SharedRequests requests = new SharedRequests();
+                    for (int i = 0; i < f.count(); i++) {
+                        if (f.kind(i) == SharedReplies.Kind.STEP || f.kind(i) == SharedReplies.Kind.RESPONSE) {
+                            due[f.slot(i)] = f.step(i);
+                            if (f.step(i) < 5) {
+                                requests.add(f.slot(i), stand(f.step(i)));
+                            }
+                        }
+                    }
+                    if (requests.count() > 0) {
+                        first.send(requests);
+                    }
+                }
+            }
+            assertTrue(held.await(LONG, TimeUnit.SECONDS), "r1 and r2 held");
+            List<robosim.hardware.HardwareSimulator> sims = List.of(
+                    new robosim.hardware.HardwareSimulator("r1", robosim.hardware.RobotType.byName("ArRobot")),
+                    new robosim.hardware.HardwareSimulator("r2", robosim.hardware.RobotType.byName("ArRobot")));
+            robosim.hardware.ManyRobots.runOverOneConnection(sims, List.of(new robosim.examples.BackAndForth(),
+                    new robosim.examples.BackAndForth()), new java.net.Socket(InetAddress.getLoopbackAddress(), port), 64,
+                    null);
+            r3.get(LONG, TimeUnit.SECONDS);
+            assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
+            RunSummary summary = env.summary();
+            assertTrue(summary.completed(), summary.reason());
+            assertEquals(List.of(), summary.departures());
+            for (robosim.hardware.HardwareSimulator sim : sims) {
+                assertEquals("completed " + STEPS + " steps", sim.endReason());
+                assertTrue(sim.steps() >= STEPS - 10, sim.name() + " took " + sim.steps() + " steps");
+            }
         } finally {
             env.close();
         }

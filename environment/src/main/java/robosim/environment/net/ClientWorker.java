@@ -79,15 +79,30 @@ abstract class ClientWorker implements Runnable {
      * the client proved the secret for {@code role} (or there is none), else the refusal.
      */
     protected final String heardHello(String role) throws IOException {
+        String refusal = proveSecret(role);
+        stopHandshakeClock();
+        return refusal;
+    }
+
+    /**
+     * With a shared secret, challenges the client (a fresh nonce) and reads its proof, under the handshake
+     * deadline and the stranger's byte cap: null if it proved the secret for {@code role} (or there is none),
+     * else the refusal.
+     */
+    protected final String proveSecret(String role) throws IOException {
         SimulationKeys secret = coordinator.settings().keys();
-        String refusal = null;
-        if (secret != null) {
-            byte[] nonce = SimulationKeys.nonce();
-            connection.write(new Challenge(nonce));
-            connection.flush();
-            Proof proof = connection.read(Proof.class);
-            refusal = secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
+        if (secret == null) {
+            return null;
         }
+        byte[] nonce = SimulationKeys.nonce();
+        connection.write(new Challenge(nonce));
+        connection.flush();
+        Proof proof = connection.read(Proof.class);
+        return secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
+    }
+
+    /** The client's hello is all in: the handshake clock stops (or the deadline has already closed it). */
+    protected final void stopHandshakeClock() throws IOException {
         if (!clock.compareAndSet(CLOCK_RUNNING, CLOCK_STOPPED)) {
             throw new IOException(expired()); // (the deadline closed the connection just before)
         }
@@ -95,7 +110,6 @@ abstract class ClientWorker implements Runnable {
         if (d != null) {
             d.cancel(false);
         }
-        return refusal;
     }
 
     /** Why the connection was closed at the handshake deadline, or null if it was not. */

@@ -16,6 +16,8 @@ final class EventRejection {
         while ((e = events.poll()) != null) {
             if (e instanceof LoopEvent.RobotJoins j) {
                 j.verdict().complete("the simulation is over");
+            } else if (e instanceof LoopEvent.SharedJoins s) {
+                s.answered().complete(false); // (its worker refuses them: the loop never wrote to it)
             } else if (e instanceof LoopEvent.GeometryJoins g) {
                 g.verdict().complete("the simulation is over");
             } else if (e instanceof LoopEvent.ViewerJoins v) {

@@ -20,9 +20,10 @@ sealed interface LoopEvent {
 
     /**
      * The robots of a shared connection said hello, each already checked: the loop answers them all at
-     * once (each {@code RobotJoins}'s verdict), writes their welcomes in one frame, then completes {@code answered}.
+     * once (each {@code RobotJoins}'s verdict), writes their welcomes in one frame, then completes
+     * {@code answered} with true; false when the loop never took it (the worker then refuses them itself).
      */
-    record SharedJoins(SharedConnection connection, List<RobotJoins> joins, CompletableFuture<Void> answered)
+    record SharedJoins(SharedConnection connection, List<RobotJoins> joins, CompletableFuture<Boolean> answered)
             implements LoopEvent {
     }
 

@@ -34,6 +34,9 @@ interface RobotPeer {
     /** True once its connection has closed. */
     boolean closed();
 
-    /** Closes its connection (any thread). */
+    /**
+     * The loop drops it: closes its connection (a robot of a shared connection is told its end instead, and
+     * what it sends after is ignored; the connection's other robots go on).
+     */
     void drop();
 }

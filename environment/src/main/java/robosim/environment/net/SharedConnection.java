@@ -47,49 +47,55 @@ final class SharedConnection implements WriteWatchdog.Watched {
         this.connection = connection;
     }
 
-    /** The worker's thread: the robots' hellos, the loop's verdicts, then every frame of requests. */
+    /**
+     * The worker's thread: the proof of the secret (when there is one: a stranger without it sends no more
+     * than the header), an empty frame that asks for the robots' hellos, the hellos, the loop's verdicts, then
+     * every frame of requests. A connection refused as a whole (no proof, {@code SEQUENTIAL}) gets a refusal
+     * for every slot instead of the empty frame.
+     */
     void serve(SharedHello header) throws IOException, InterruptedException {
         if (header.protocolVersion() != Protocol.VERSION) {
             throw new ProtocolException("protocol version " + header.protocolVersion() + " is not supported (the "
                     + "Environment speaks " + Protocol.VERSION + ")");
         }
         int n = header.robots();
-        List<RobotHello> hellos = new ArrayList<>(n);
-        for (int slot = 0; slot < n; slot++) {
-            hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap)
-        }
-        String refusal = worker.heardHello("robot");
+        String refusal = worker.proveSecret("robot");
         if (refusal == null && coordinator.settings().design() == CoordinatorDesign.SEQUENTIAL) {
             refusal = "a shared connection needs the THREADS or TWO_THREADS coordinator (SEQUENTIAL reads a "
                     + "socket per robot; run the robots with --connection PER_ROBOT)";
         }
+        List<RobotHello> hellos = new ArrayList<>(n);
+        if (refusal == null) {
+            write(); // (an empty frame: send the hellos)
+            for (int slot = 0; slot < n; slot++) {
+                hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
+            }
+        }
+        worker.stopHandshakeClock();
         robots = new SharedRobot[n];
         List<LoopEvent.RobotJoins> joins = new ArrayList<>();
         java.util.Set<String> names = new java.util.HashSet<>();
         for (int slot = 0; slot < n; slot++) {
-            RobotHello hello = hellos.get(slot);
-            int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
+            RobotHello hello = refusal == null ? hellos.get(slot) : null;
+            String name = hello == null ? "#" + slot : hello.name();
+            int wanted = hello == null || hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
             String why = refusal != null ? refusal : coordinator.handshakes().check(hello, wanted);
             if (why == null && !names.add(hello.name())) {
                 why = "robot " + hello.name() + " is named twice on this connection";
             }
             if (why != null) {
                 replies.welcome(slot, RobotWelcome.refused(why));
-                worker.logRefused("robot " + hello.name() + " (shared connection): " + why);
+                worker.logRefused("robot " + name + " (shared connection): " + why);
                 continue;
             }
             robots[slot] = new SharedRobot(this, slot, hello.name());
             joins.add(new LoopEvent.RobotJoins(robots[slot], hello, wanted, new CompletableFuture<>()));
         }
         if (!joins.isEmpty()) {
-            CompletableFuture<Void> answered = new CompletableFuture<>();
-            boolean[] refusedAll = {false};
-            coordinator.post(new LoopEvent.SharedJoins(this, joins, answered), () -> {
-                refusedAll[0] = true;
-                answered.complete(null);
-            });
-            worker.awaitVerdict(answered);
-            if (refusedAll[0]) { // (the loop never saw them: this thread still owns the frame)
+            coordinator.writeWatchdog().watch(this); // (from the welcomes on: a peer that does not read is cut off)
+            CompletableFuture<Boolean> answered = new CompletableFuture<>();
+            coordinator.post(new LoopEvent.SharedJoins(this, joins, answered), () -> answered.complete(false));
+            if (!worker.awaitVerdict(answered)) { // (the loop never saw them: this thread still owns the frame)
                 joins.forEach(j -> replies.welcome(((SharedRobot) j.worker()).slot(),
                         RobotWelcome.refused("the simulation is over")));
                 joins.clear();
@@ -110,7 +116,6 @@ final class SharedConnection implements WriteWatchdog.Watched {
             return;
         }
         worker.handshakeDone();
-        coordinator.writeWatchdog().watch(this);
         read();
     }
 
@@ -177,6 +182,7 @@ final class SharedConnection implements WriteWatchdog.Watched {
         try {
             write();
         } catch (IOException e) {
+            closed = true; // (its reader reports the robots gone; nothing more is written meanwhile)
             String why = cutOff != null ? cutOff : e.getMessage();
             LOG.info("{}: could not write to its robots: {}", worker.label(), Printable.of(String.valueOf(why)));
             worker.drop();

@@ -177,7 +177,7 @@ final class SimulationLoop implements Runnable {
             j.verdict().complete(refusal);
         }
         s.connection().flush(); // (the welcomes go out before any step number)
-        s.answered().complete(null);
+        s.answered().complete(true);
     }
 
     /** A hello left when the run ended. */
@@ -190,7 +190,7 @@ final class SimulationLoop implements Runnable {
             s.joins().forEach(j -> s.connection().replies().welcome(((SharedRobot) j.worker()).slot(),
                     robosim.protocol.RobotWelcome.refused("the simulation is over")));
             s.connection().flush();
-            s.answered().complete(null);
+            s.answered().complete(true);
         }
     }
 

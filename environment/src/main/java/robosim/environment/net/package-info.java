@@ -24,6 +24,8 @@
  * <li>{@code write-watchdog}: cuts off a robot that has not taken one of the loop's writes within the
  *     write timeout (the loop writes responses itself, so it cannot time its own writes).</li>
  * </ul>
+ * With {@code --no-geometry} the geometry library's sonar pass may also use one worker of the JVM's common
+ * fork-join pool on the loop's behalf (its package-info says when); the loop waits for it within the step.
  * No lock is held across a socket read or write, a sleep or a wait.
  */
 package robosim.environment.net;
