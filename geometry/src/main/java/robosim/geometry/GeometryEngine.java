@@ -48,9 +48,10 @@ public final class GeometryEngine {
 
     /**
      * Robots asking for sonar from which a step's sonar pass is split over two cores by default (when the
-     * machine has two): below it the hand-off costs more than half a pass (measured, docs/PERFORMANCE.md).
+     * machine has two): below it the hand-off costs about what it saves (measured with GeometrySteps: 20 robots
+     * no gain, 30 a little, 50 a third less; docs/PERFORMANCE.md).
      */
-    public static final int DEFAULT_PARALLEL_FROM = 128;
+    public static final int DEFAULT_PARALLEL_FROM = 40;
 
     public GeometryEngine(StaticWorld world, List<RobotProperties> robots) {
         this(world, robots, Runtime.getRuntime().availableProcessors() > 1 ? DEFAULT_PARALLEL_FROM : 0);

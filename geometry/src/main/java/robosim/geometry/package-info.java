@@ -4,7 +4,7 @@
  * ({@link robosim.geometry.GeometryMain}, one thread: it connects to the Environment and answers one
  * batch per step). The Environment links the same library for {@code --no-geometry}. Threads: the
  * engine's caller; and, when a step has at least {@code --split-sonar-from} robots asking for sonar
- * (128 by default on two cores or more), one worker of the JVM's common fork-join pool
+ * (40 by default on two cores or more), one worker of the JVM's common fork-join pool
  * ({@code ForkJoinPool.commonPool-worker-n}) reads the sonars of the robots after the middle range
  * while the caller reads the rest ({@link robosim.geometry.SonarPass}); the caller waits for it
  * before answering the step.

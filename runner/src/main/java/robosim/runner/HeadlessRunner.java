@@ -238,11 +238,8 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     /** How robots in one process connect: as {@code --connection} says, else shared unless that cannot be. */
     private Connection connectionKind() {
-        if (connection != null) {
-            return connection;
-        }
-        return exchange != null || "SEQUENTIAL".equals(environmentOptions.coordinator) ? Connection.PER_ROBOT
-                : Connection.SHARED;
+        boolean perRobot = exchange != null || "SEQUENTIAL".equals(environmentOptions.coordinator);
+        return connection != null ? connection : perRobot ? Connection.PER_ROBOT : Connection.SHARED;
     }
 
     private List<String> exchangeArgs() {

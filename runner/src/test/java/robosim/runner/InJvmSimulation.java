@@ -210,11 +210,8 @@ final class InJvmSimulation {
             }
             if (exchange == Exchange.ONE_CONNECTION) {
                 threads.add(thread("one-connection", failures, () -> {
-                    List<HardwareSimulator> sims = new ArrayList<>();
-                    for (WorldSpec.RobotSpec r : spec.robots()) {
-                        sims.add(new HardwareSimulator(r.name(), RobotType.byName(r.type())));
-                    }
-                    robosim.hardware.ManyRobots.runOverOneConnection(sims, controls,
+                    robosim.hardware.ManyRobots.runOverOneConnection(spec.robots().stream().map(r ->
+                            new HardwareSimulator(r.name(), RobotType.byName(r.type()))).toList(), controls,
                             new Socket(InetAddress.getLoopbackAddress(), ports[0]), ObjectConnection.DEFAULT_RESET_EVERY,
                             keys);
                     return null;
