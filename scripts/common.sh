@@ -30,6 +30,7 @@ robosim_pick_java() {
   [ -n "${ROBOSIM_JAVA_CHOICE:-}" ] && return 0 # (chosen already: a script run by another)
   local home="" best=0 why c h v
   if [ -n "${JAVA_HOME:-}" ] && [ -x "$JAVA_HOME/bin/java" ]; then
+    [ -x "$JAVA_HOME/bin/javac" ] || robosim_fail "JAVA_HOME=$JAVA_HOME is a JRE (no bin/javac): RoboSim needs a JDK 17 or later"
     home=$JAVA_HOME why="JAVA_HOME"
   else
     for c in "$(command -v java 2>/dev/null)" /usr/lib/jvm/*/bin/java /Library/Java/JavaVirtualMachines/*/Contents/Home/bin/java; do
@@ -41,7 +42,7 @@ robosim_pick_java() {
     done
     why="the newest JDK found"
   fi
-  [ -n "$home" ] || robosim_fail "no java found: install a JDK 17 or later, or set JAVA_HOME"
+  [ -n "$home" ] || robosim_fail "no JDK found (java with javac, on the path or under /usr/lib/jvm): install a JDK 17 or later, or set JAVA_HOME"
   export PATH="$home/bin:$PATH"
   export ROBOSIM_JAVA_CHOICE="$home ($why)"
 }

@@ -45,7 +45,8 @@ public final class MultiRobotMain implements Callable<Integer> {
     enum Threading { ONE_THREAD, SEND_RECEIVE, SHARED }
 
     @Option(names = "--exchange", defaultValue = "SHARED",
-            description = "SHARED: one thread for every robot's exchange, in the order the robots are given (list "
+            description = "With --connection PER_ROBOT: SHARED: one thread for every robot's exchange, in the order "
+                    + "the robots are given (list "
                     + "them in world order; the default, fastest as measured in docs/PERFORMANCE.md); ONE_THREAD: a "
                     + "Hardware Simulator thread per robot; SEND_RECEIVE: a sending and a receiving thread per robot.")
     Threading exchange;

@@ -123,11 +123,17 @@ final class SharedLink {
         return f;
     }
 
-    /** Network text for a log line: control characters shown as '?', at most 500 characters. */
+    /** Network text for a log line: at most 500 characters, anything but printable text shown as '?'. */
     private static String printable(String s) {
-        String t = s.length() > 500 ? s.substring(0, 500) + "..." : s;
-        return t.codePoints().map(ch -> Character.isISOControl(ch) ? '?' : ch)
-                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
+        StringBuilder b = new StringBuilder();
+        s.codePoints().limit(500).forEach(ch -> {
+            int type = Character.getType(ch);
+            boolean shown = type != Character.CONTROL && type != Character.FORMAT && type != Character.SURROGATE
+                    && type != Character.PRIVATE_USE && type != Character.UNASSIGNED
+                    && type != Character.LINE_SEPARATOR && type != Character.PARAGRAPH_SEPARATOR;
+            b.appendCodePoint(shown ? ch : '?');
+        });
+        return s.codePointCount(0, s.length()) > 500 ? b + "..." : b.toString();
     }
 
     /** Runs every welcomed robot with its control code (by slot) until each one's simulation is over. */
@@ -184,6 +190,9 @@ final class SharedLink {
         stepReleased = false;
         for (int l = 0; l < late.size(); l++) {
             int slot = late.get(l);
+            if (slot < 0) {
+                continue; // (sent already, with an earlier late one)
+            }
             while (due[slot] && !sims[slot].link().awaitControlFor(LOOK_NANOS)) {
                 if (connection.hasInput() && (!take() || stepReleased) && due[slot]) {
                     LOG.warn("{}: its control code has not yielded and the Environment went on without it; the other "
@@ -196,8 +205,9 @@ final class SharedLink {
                 add(slot);
                 for (int m = l + 1; m < late.size(); m++) {
                     int other = late.get(m);
-                    if (due[other] && sims[other].link().awaitControlFor(0)) {
+                    if (other >= 0 && due[other] && sims[other].link().awaitControlFor(0)) {
                         add(other);
+                        late.set(m, -1);
                     }
                 }
                 write();

@@ -26,7 +26,7 @@ public final class SharedHello implements java.io.Externalizable {
         return protocolVersion;
     }
 
-    /** How many {@link RobotHello}s follow (0 when the version is not this one's). */
+    /** How many {@link RobotHello}s follow, 1 to 2048 (0 when the version is not this one's). */
     public int robots() {
         return robots;
     }
@@ -44,5 +44,8 @@ public final class SharedHello implements java.io.Externalizable {
             return;
         }
         robots = Limits.checkCount("robots on one shared connection", in.readInt(), Limits.MAX_ROBOTS_PER_CONNECTION);
+        if (robots == 0) {
+            throw new ProtocolException("robots on one shared connection must be at least 1, got 0");
+        }
     }
 }

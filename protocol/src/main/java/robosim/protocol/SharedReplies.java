@@ -97,7 +97,7 @@ public final class SharedReplies implements java.io.Externalizable {
 
     /**
      * A {@code WELCOME}'s body starts with a boolean: true when its robot names are those of the frame's
-     * previous welcome and left out (every robot of a connection gets the world's names: once per frame,
+     * previous accepted welcome and left out (every robot of a connection gets the world's names: once per frame,
      * not once per robot).
      */
     @Override
@@ -110,10 +110,11 @@ public final class SharedReplies implements java.io.Externalizable {
             switch (KINDS[kinds[i]]) {
                 case WELCOME -> {
                     RobotWelcome w = (RobotWelcome) payloads[i];
-                    boolean same = names != null && (names == w.robotNames() || names.equals(w.robotNames()));
+                    boolean same = w.isAccepted() && names != null
+                            && (names == w.robotNames() || names.equals(w.robotNames()));
                     out.writeBoolean(same);
                     w.write(out, !same);
-                    names = w.robotNames();
+                    names = w.isAccepted() ? w.robotNames() : names;
                 }
                 case STEP -> out.writeLong(steps[i]);
                 case RESPONSE -> {
@@ -149,7 +150,7 @@ public final class SharedReplies implements java.io.Externalizable {
                     }
                     RobotWelcome w = new RobotWelcome();
                     w.read(in, same ? names : null);
-                    names = w.robotNames();
+                    names = w.isAccepted() ? w.robotNames() : names;
                     payloads[i] = w;
                 }
                 case STEP -> steps[i] = in.readLong();

@@ -32,21 +32,27 @@ final class RawSharedRobots implements AutoCloseable {
     RawSharedRobots(int port, List<String> names, RobotProperties properties) throws IOException,
             ClassNotFoundException {
         socket = new Socket(InetAddress.getLoopbackAddress(), port);
-        socket.setTcpNoDelay(true);
-        wire = new BufferedOutputStream(socket.getOutputStream());
-        out = new ObjectOutputStream(held);
-        out.writeObject(new SharedHello(names.size()));
-        release(Integer.MAX_VALUE);
-        in = new ObjectInputStream(socket.getInputStream());
-        SharedReplies goOn = (SharedReplies) in.readObject();
-        if (goOn.count() != 0) {
-            throw new IOException("refused before the hellos: " + goOn.welcome(0).reason());
+        try {
+            socket.setTcpNoDelay(true);
+            wire = new BufferedOutputStream(socket.getOutputStream());
+            out = new ObjectOutputStream(held);
+            out.writeObject(new SharedHello(names.size()));
+            release(Integer.MAX_VALUE);
+            in = new ObjectInputStream(socket.getInputStream());
+            SharedReplies goOn = (SharedReplies) in.readObject();
+            if (goOn.count() != 0) {
+                throw new IOException("refused before the hellos, " + goOn.count() + " refusals: "
+                        + goOn.welcome(0).reason());
+            }
+            for (String name : names) {
+                out.writeObject(new RobotHello(name, properties));
+            }
+            release(Integer.MAX_VALUE);
+            welcomes = (SharedReplies) in.readObject();
+        } catch (IOException | ClassNotFoundException | RuntimeException e) {
+            socket.close();
+            throw e;
         }
-        for (String name : names) {
-            out.writeObject(new RobotHello(name, properties));
-        }
-        release(Integer.MAX_VALUE);
-        welcomes = (SharedReplies) in.readObject();
     }
 
     /** The next frame from the Environment. */

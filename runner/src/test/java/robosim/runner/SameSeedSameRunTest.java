@@ -39,6 +39,7 @@ class SameSeedSameRunTest {
         try {
             assertTrue(p.waitFor(180, TimeUnit.SECONDS), "the run did not end: " + Files.readString(out));
         } finally {
+            p.descendants().forEach(ProcessHandle::destroyForcibly); // (its children, if it did not end)
             p.destroyForcibly();
         }
         String output = Files.readString(out);

@@ -40,8 +40,12 @@ class SharedConnectionTest {
     }
 
     private static ClientWorkerCoordinator start(RobotLoss loss) throws Exception {
-        Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                .maxSteps(STEPS).resetEvery(64).onRobotLoss(loss).build();
+        return start(Settings.builder().onRobotLoss(loss));
+    }
+
+    private static ClientWorkerCoordinator start(Settings.Builder b) throws Exception {
+        Settings s = b.ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true).maxSteps(STEPS)
+                .resetEvery(64).build();
         ClientWorkerCoordinator env = new ClientWorkerCoordinator(
                 new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml")), s);
         env.start();
@@ -219,11 +223,15 @@ class SharedConnectionTest {
                     back.countDown();
                 }
             });
+            java.util.concurrent.CountDownLatch atTen = new java.util.concurrent.CountDownLatch(1);
             CompletableFuture<Void> r3 = CompletableFuture.runAsync(() -> {
                 try (RawRobot r = new RawRobot("r3", RobotModels.SCOUT, port)) {
                     while (r.next()) {
-                        if (r.step == 10 && !back.await(LONG, TimeUnit.SECONDS)) {
-                            throw new AssertionError("r1 and r2 did not come back");
+                        if (r.step == 10) {
+                            atTen.countDown(); // (the world collects step 10 until r1 and r2 are back)
+                            if (!back.await(LONG, TimeUnit.SECONDS)) {
+                                throw new AssertionError("r1 and r2 did not come back");
+                            }
                         }
                         r.step(0, 0, false, List.of());
                     }
@@ -250,12 +258,20 @@ class SharedConnectionTest {
                 }
             }
             assertTrue(held.await(LONG, TimeUnit.SECONDS), "r1 and r2 held");
+            assertTrue(atTen.await(LONG, TimeUnit.SECONDS), "r3 at step 10");
             List<robosim.hardware.HardwareSimulator> sims = List.of(
                     new robosim.hardware.HardwareSimulator("r1", robosim.hardware.RobotType.byName("ArRobot")),
                     new robosim.hardware.HardwareSimulator("r2", robosim.hardware.RobotType.byName("ArRobot")));
-            robosim.hardware.ManyRobots.runOverOneConnection(sims, List.of(new robosim.examples.BackAndForth(),
-                    new robosim.examples.BackAndForth()), new java.net.Socket(InetAddress.getLoopbackAddress(), port), 64,
-                    null);
+            CompletableFuture<Void> newProcess = CompletableFuture.runAsync(() -> {
+                try {
+                    robosim.hardware.ManyRobots.runOverOneConnection(sims, List.of(new robosim.examples.BackAndForth(),
+                            new robosim.examples.BackAndForth()),
+                            new java.net.Socket(InetAddress.getLoopbackAddress(), port), 64, null);
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }, TestThreads.ROBOTS);
+            newProcess.get(LONG, TimeUnit.SECONDS);
             r3.get(LONG, TimeUnit.SECONDS);
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
             RunSummary summary = env.summary();
@@ -263,10 +279,22 @@ class SharedConnectionTest {
             assertEquals(List.of(), summary.departures());
             for (robosim.hardware.HardwareSimulator sim : sims) {
                 assertEquals("completed " + STEPS + " steps", sim.endReason());
-                assertTrue(sim.steps() >= STEPS - 10, sim.name() + " took " + sim.steps() + " steps");
+                assertEquals(STEPS - 10, sim.steps(), sim.name() + ": steps 10 to the end");
             }
         } finally {
             env.close();
+        }
+    }
+
+    @Test
+    void aSequentialEnvironmentRefusesASharedConnectionAsAWholeBeforeItsHellos() throws Exception {
+        try (ClientWorkerCoordinator env = start(Settings.builder().design(
+                robosim.environment.net.CoordinatorDesign.SEQUENTIAL))) {
+            java.io.IOException e = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
+                    () -> new RawSharedRobots(env.ports()[0], List.of("r1", "r2"), RobotModels.AR_ROBOT));
+            assertEquals("refused before the hellos, 2 refusals: a shared connection needs the THREADS or TWO_THREADS "
+                    + "coordinator (SEQUENTIAL reads a socket per robot; run the robots with --connection PER_ROBOT)",
+                    e.getMessage());
         }
     }
 }

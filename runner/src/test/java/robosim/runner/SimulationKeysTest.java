@@ -74,6 +74,12 @@ class SimulationKeysTest {
             ProtocolException wrong = assertThrows(ProtocolException.class,
                     () -> connect("r1", new ArRobot(), ports[0], secret("a wrong secret, also long enough")));
             assertEquals("the Environment refused robot r1: it did not prove the shared secret", wrong.getMessage());
+            ProtocolException shared = assertThrows(ProtocolException.class, () -> robosim.hardware.ManyRobots
+                    .runOverOneConnection(List.of(new HardwareSimulator("r1", new ArRobot()),
+                            new HardwareSimulator("r2", new ArRobot())), List.of(new BackAndForth(), new BackAndForth()),
+                            socket(ports[0]), 64, secret("a wrong secret, also long enough")));
+            assertEquals("the Environment refused every robot: r1: it did not prove the shared secret; r2: it did not "
+                    + "prove the shared secret", shared.getMessage());
             ProtocolException geometry = assertThrows(ProtocolException.class,
                     () -> new GeometryClient(socket(ports[2]), 64, null).run());
             assertTrue(geometry.getMessage().startsWith("the Environment asks for the shared secret"));
@@ -168,19 +174,28 @@ class SimulationKeysTest {
                 throw new IllegalStateException(e);
             }
         });
-        List<CompletableFuture<String>> robots = new ArrayList<>();
-        for (String name : List.of("r1", "r2", "r3")) {
-            HardwareSimulator sim = connect(name, name.equals("r3") ? new Scout() : new ArRobot(), ports[0], right);
-            robots.add(CompletableFuture.supplyAsync(() -> {
-                try {
-                    return sim.run(new BackAndForth());
-                } catch (Exception e) {
-                    throw new IllegalStateException(e);
-                }
-            }));
-        }
-        for (CompletableFuture<String> r : robots) {
-            assertEquals("completed 20 steps", r.get(LONG_S, TimeUnit.SECONDS));
+        HardwareSimulator r1 = connect("r1", new ArRobot(), ports[0], right); // (a socket of its own)
+        CompletableFuture<String> first = CompletableFuture.supplyAsync(() -> {
+            try {
+                return r1.run(new BackAndForth());
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        List<HardwareSimulator> shared = List.of(new HardwareSimulator("r2", new ArRobot()),
+                new HardwareSimulator("r3", new Scout())); // (one shared connection)
+        CompletableFuture<Void> others = CompletableFuture.runAsync(() -> {
+            try {
+                robosim.hardware.ManyRobots.runOverOneConnection(shared, List.of(new BackAndForth(), new BackAndForth()),
+                        socket(ports[0]), 64, right);
+            } catch (Exception e) {
+                throw new IllegalStateException(e);
+            }
+        });
+        assertEquals("completed 20 steps", first.get(LONG_S, TimeUnit.SECONDS));
+        others.get(LONG_S, TimeUnit.SECONDS);
+        for (HardwareSimulator sim : shared) {
+            assertEquals("completed 20 steps", sim.endReason());
         }
         g.get(LONG_S, TimeUnit.SECONDS);
         assertEquals(3, seen.get(LONG_S, TimeUnit.SECONDS).robotNames().size());

@@ -64,35 +64,47 @@ final class SharedConnection implements WriteWatchdog.Watched {
             refusal = "a shared connection needs the THREADS or TWO_THREADS coordinator (SEQUENTIAL reads a "
                     + "socket per robot; run the robots with --connection PER_ROBOT)";
         }
-        List<RobotHello> hellos = new ArrayList<>(n);
-        if (refusal == null) {
-            write(); // (an empty frame: send the hellos)
+        if (refusal != null) { // (refused as a whole, still under the handshake deadline)
             for (int slot = 0; slot < n; slot++) {
-                hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
+                replies.welcome(slot, RobotWelcome.refused(refusal));
             }
+            worker.logRefused("a shared connection of " + n + " robot(s): " + refusal);
+            write();
+            return;
+        }
+        write(); // (an empty frame: send the hellos)
+        List<RobotHello> hellos = new ArrayList<>(n);
+        for (int slot = 0; slot < n; slot++) {
+            hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
         }
         worker.stopHandshakeClock();
+        coordinator.writeWatchdog().watch(this); // (from now on a peer that does not read is cut off)
         robots = new SharedRobot[n];
         List<LoopEvent.RobotJoins> joins = new ArrayList<>();
         java.util.Set<String> names = new java.util.HashSet<>();
+        List<String> refused = new ArrayList<>();
         for (int slot = 0; slot < n; slot++) {
-            RobotHello hello = refusal == null ? hellos.get(slot) : null;
-            String name = hello == null ? "#" + slot : hello.name();
-            int wanted = hello == null || hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
-            String why = refusal != null ? refusal : coordinator.handshakes().check(hello, wanted);
+            RobotHello hello = hellos.get(slot);
+            int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
+            String why = coordinator.handshakes().check(hello, wanted);
             if (why == null && !names.add(hello.name())) {
                 why = "robot " + hello.name() + " is named twice on this connection";
             }
             if (why != null) {
                 replies.welcome(slot, RobotWelcome.refused(why));
-                worker.logRefused("robot " + name + " (shared connection): " + why);
+                if (refused.size() < 3) {
+                    refused.add(hello.name() + ": " + why);
+                }
                 continue;
             }
             robots[slot] = new SharedRobot(this, slot, hello.name());
             joins.add(new LoopEvent.RobotJoins(robots[slot], hello, wanted, new CompletableFuture<>()));
         }
+        if (!refused.isEmpty()) {
+            worker.logRefused((n - joins.size()) + " of the " + n + " robots of a shared connection, among them "
+                    + String.join("; ", refused));
+        }
         if (!joins.isEmpty()) {
-            coordinator.writeWatchdog().watch(this); // (from the welcomes on: a peer that does not read is cut off)
             CompletableFuture<Boolean> answered = new CompletableFuture<>();
             coordinator.post(new LoopEvent.SharedJoins(this, joins, answered), () -> answered.complete(false));
             if (!worker.awaitVerdict(answered)) { // (the loop never saw them: this thread still owns the frame)
