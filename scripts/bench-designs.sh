@@ -2,7 +2,7 @@
 # Each coordinator design against the floor of its own thread shape, in one sitting, alternated:
 #   scripts/bench-designs.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # REPS defaults to 2. For N = 10, 100, 1000 robots (test-envs/bench-N.xml: Wander Scouts, 16 sonars read
-# every step, Geometry as its own process, robots in one process), each repetition runs in turn:
+# every step, Geometry as its own process, robots in one process with a socket each), each repetition runs in turn:
 #   ../shared/bench/FloorThreads.java N S   the cheapest thread-per-client shape (a reader per socket,
 #                                           one loop thread writing every reply)
 #   headless.sh --coordinator THREADS       the default, the report's design, with and without
@@ -36,22 +36,13 @@ steps_for() {
   [ "$quick" = 1 ] && s=$((s / 5))
   echo "$s"
 }
-# steps/s from a floor's "steps=S wall=Ws" words, or from headless.sh's summary line
-floor_rate() { awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
-  END { sub(/s$/, "", v["wall"]); if (v["wall"] > 0) printf "%.1f", v["steps"] / v["wall"]; else if (v["steps/s"] > 0) print v["steps/s"] }'; }
-rate() { (grep -oE '(^| )steps_per_s=[0-9.]+' || true) | head -n 1 | sed -E 's/.*=//'; }
-row() { # variant robots steps rep rate floor floor_rate
-  local ratio=""
-  [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
-  echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
-  printf '%-26s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
-}
+source "$ROBOSIM_HOME/scripts/bench-lib.sh" # (floor_rate, rate, row)
 
 designs() { # design robots steps rep floor floor_rate: the design with and without the Geometry process
   local g r
   for g in "" --no-geometry; do
     r=$(scripts/headless.sh --env "test-envs/bench-$2.xml" --steps "$3" --robots-in-one-process \
-      --coordinator "$1" ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
+      --connection PER_ROBOT --coordinator "$1" ${g:+"$g"} 2>/dev/null | tail -n 1 | rate) || true
     row "$1${g:+ $g}" "$2" "$3" "$4" "${r:-}" "$5" "$6"
   done
 }

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# bench-lib.sh: a library sourced by bench-reset.sh and bench-memory.sh, not a command: reading heaps
-# and following a headless run's progress.
+# bench-lib.sh: a library sourced by bench-reset.sh, bench-memory.sh, bench-designs.sh and bench-speed.sh, not
+# a command: reading heaps, following a headless run's progress, and a run's rate and its row beside a floor.
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
-    *) echo "bench-lib.sh: a library for bench-reset.sh and bench-memory.sh, not a command (given: $*; see --help)" >&2; exit 2 ;;
+    *) echo "bench-lib.sh: a library for the bench-*.sh scripts, not a command (given: $*; see --help)" >&2; exit 2 ;;
   esac
 fi
 
@@ -29,4 +29,18 @@ await_step() {
 # The pid of the first process whose command line matches $1, or nothing.
 pid_of() {
   (pgrep -f "$1" || true) | head -n 1
+}
+
+# steps/s from a floor's "steps=S wall=Ws" words (or its steps/s), read on stdin
+floor_rate() { awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
+  END { sub(/s$/, "", v["wall"]); if (v["wall"] > 0) printf "%.1f", v["steps"] / v["wall"]; else if (v["steps/s"] > 0) print v["steps/s"] }'; }
+# steps/s from headless.sh's summary line, read on stdin
+rate() { (grep -oE '(^| )steps_per_s=[0-9.]+' || true) | head -n 1 | sed -E 's/.*=//'; }
+# One run beside its floor: appended to $out (sitting $sitting) and printed. Args: variant robots steps rep
+# rate floor floor_rate
+row() {
+  local ratio=""
+  [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
+  echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
+  printf '%-26s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
 }

@@ -36,15 +36,7 @@ steps_for() {
   [ "$quick" = 1 ] && s=$((s / 5))
   echo "$s"
 }
-floor_rate() { awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] } }
-  END { sub(/s$/, "", v["wall"]); if (v["wall"] > 0) printf "%.1f", v["steps"] / v["wall"]; else if (v["steps/s"] > 0) print v["steps/s"] }'; }
-rate() { (grep -oE '(^| )steps_per_s=[0-9.]+' || true) | head -n 1 | sed -E 's/.*=//'; }
-row() { # variant robots steps rep rate floor floor_rate
-  local ratio=""
-  [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
-  echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
-  printf '%-22s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
-}
+source "$ROBOSIM_HOME/scripts/bench-lib.sh" # (floor_rate, rate, row)
 run() { # robots steps [options...]: steps/s of one headless run
   local n=$1 s=$2
   shift 2
