@@ -91,10 +91,10 @@ public final class MultiRobotMain implements Callable<Integer> {
                         + "several processes");
                 return 2;
             }
-            return runOverOneConnection(parsed);
+            return runOnThisThread(parsed, true);
         }
         if (exchange == Threading.SHARED) {
-            return runShared(parsed);
+            return runOnThisThread(parsed, false);
         }
         HardwareSimulator.Exchange each = exchange == Threading.SEND_RECEIVE
                 ? HardwareSimulator.Exchange.SEND_RECEIVE : HardwareSimulator.Exchange.ONE_THREAD;
@@ -119,40 +119,28 @@ public final class MultiRobotMain implements Callable<Integer> {
         return failures.get() == 0 ? 0 : 1;
     }
 
-    /** {@code --connection SHARED}: every robot over one connection, their exchanges on this thread. */
-    private int runOverOneConnection(List<String[]> parsed) {
+    /**
+     * Every robot's exchange on this thread ({@code exchange}): over one connection ({@code --connection SHARED}),
+     * or each robot connected in turn over its own ({@code --exchange SHARED}).
+     */
+    private int runOnThisThread(List<String[]> parsed, boolean oneConnection) {
         List<HardwareSimulator> sims = new ArrayList<>();
         List<RobotControl> controls = new ArrayList<>();
         try {
             for (String[] p : parsed) {
                 controls.add(RobotLauncher.control(p[2]));
-                sims.add(new HardwareSimulator(p[0], RobotType.byName(p[1])));
+                RobotType type = RobotType.byName(p[1]);
+                sims.add(oneConnection ? new HardwareSimulator(p[0], type)
+                        : RobotLauncher.connect(p[0], type, host, port, connect));
             }
-            java.net.Socket socket = RobotLauncher.open(host, port, connect);
+            java.net.Socket socket = oneConnection ? RobotLauncher.open(host, port, connect) : null;
             Thread.currentThread().setName("exchange");
-            ManyRobots.runOverOneConnection(sims, controls, socket, connect.resetEvery,
-                    robosim.protocol.SimulationKeys.fromEnvironment());
-            return 0;
-        } catch (java.io.IOException e) {
-            LOG.error("robots: {}", e.getMessage());
-            return 1;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return 1;
-        }
-    }
-
-    /** SHARED: connects every robot in turn, then runs all their exchanges on this thread. */
-    private int runShared(List<String[]> parsed) {
-        List<HardwareSimulator> sims = new ArrayList<>();
-        List<RobotControl> controls = new ArrayList<>();
-        try {
-            for (String[] p : parsed) {
-                controls.add(RobotLauncher.control(p[2]));
-                sims.add(RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect));
+            if (oneConnection) {
+                ManyRobots.runOverOneConnection(sims, controls, socket, connect.resetEvery,
+                        robosim.protocol.SimulationKeys.fromEnvironment());
+            } else {
+                ManyRobots.runShared(sims, controls);
             }
-            Thread.currentThread().setName("exchange");
-            ManyRobots.runShared(sims, controls);
             return 0;
         } catch (java.io.IOException e) {
             LOG.error("robots: {}", e.getMessage());
