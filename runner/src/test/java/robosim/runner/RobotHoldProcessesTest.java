@@ -23,13 +23,13 @@ import robosim.protocol.StepRequest;
 
 /**
  * {@code --on-robot-loss HOLD} over real processes: robot ring2's process is killed (SIGKILL) in step 1000 of
- * a 5000-step run, the world runs 200 steps without it, and a new process takes it over. It goes on from where
+ * a 2000-step run, the world runs 200 steps without it, and a new process takes it over. It goes on from where
  * it stood; every message sent to it meanwhile reaches it once, in order; and every robot's pose at every step
  * equals a run in which ring2 sent what it sent and merely stood still for those 200 steps.
  */
 class RobotHoldProcessesTest {
     private static final long LONG_S = 50;
-    private static final int STEPS = 5000;
+    private static final int STEPS = 2000;
     private static final int RING2 = 1;
     private static final Path WORLD = Path.of("src/test/resources/ring-hold.xml");
 
