@@ -3,8 +3,6 @@ package robosim.environment.net;
 import java.io.Closeable;
 import java.io.IOException;
 import java.util.List;
-import java.util.concurrent.ArrayBlockingQueue;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
@@ -56,12 +54,12 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final List<String> robotNames;
     private final Handshakes handshakes;
     private final List<RunListener> runListeners = new CopyOnWriteArrayList<>();
-    private final BlockingQueue<LoopEvent> events;
-    private final StepCycle cycle;
+    private final Design design;
+    private final Inbox<Run> inbox;
+    private final Run run;
     private final Listeners listeners;
     private final CountDownLatch endedLatch = new CountDownLatch(1);
     private final CountDownLatch startedLatch = new CountDownLatch(1);
-    private volatile boolean over;
     private volatile boolean began;
     private Thread loop;
     /** Times the loop's writes to robots (does nothing without a write timeout). */
@@ -69,17 +67,18 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** @throws IllegalArgumentException for {@code SEQUENTIAL} with a lost robot held (its stepper reads a fixed list) */
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
-        if (settings.design() == CoordinatorDesign.SEQUENTIAL && settings.onRobotLoss() != RobotLoss.REMOVE) {
-            throw new IllegalArgumentException("--on-robot-loss " + settings.onRobotLoss() + " needs the THREADS or "
-                    + "TWO_THREADS coordinator: the SEQUENTIAL loop reads a fixed list of robots");
+        this.design = Design.of(settings.design());
+        String refusal = design.refusesLossPolicy(settings.onRobotLoss());
+        if (refusal != null) {
+            throw new IllegalArgumentException(refusal);
         }
         this.spec = spec;
         this.settings = settings;
         this.robotNames = spec.robots().stream().map(WorldSpec.RobotSpec::name).toList();
         this.handshakes = new Handshakes(spec, robotNames, settings.stepMessages());
         // each robot has at most a request and a departure outstanding; the rest is rare
-        this.events = new ArrayBlockingQueue<>(2 * (robotNames.size() + spec.joinable()) + 1024);
-        this.cycle = new StepCycle(this, new RunListeners(runListeners));
+        this.inbox = new Inbox<>(2 * (robotNames.size() + spec.joinable()) + 1024, POST_LIMIT_MS);
+        this.run = new Run(this, new RunListeners(runListeners));
         this.listeners = new Listeners(this);
         this.writeWatchdog = new WriteWatchdog(settings.writeTimeoutMs());
     }
@@ -94,7 +93,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         if (loop != null) {
             throw new IllegalStateException("startPaused() after start()");
         }
-        cycle.control().startPaused();
+        run.startPaused();
     }
 
     /** Binds the three ports and starts accepting; a port in use is a {@link java.net.BindException} naming it. */
@@ -109,7 +108,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
     void startLoop() {
         writeWatchdog.start();
-        loop = new Thread(new SimulationLoop(this, events, handshakes, cycle), "simulation-loop");
+        loop = new Thread(new SimulationLoop(this, inbox, run), "simulation-loop");
         loop.setDaemon(true);
         loop.start();
     }
@@ -127,38 +126,28 @@ public final class ClientWorkerCoordinator implements Closeable {
         return spec;
     }
 
+    /** The coordinator design this run uses, chosen once. */
+    Design design() {
+        return design;
+    }
+
     Handshakes handshakes() {
         return handshakes;
     }
 
     /**
-     * Hands {@code event} to the loop; if the run is over (or the loop's queue stays full), runs
-     * {@code rejected} instead, so whoever waits on the event's answer is answered.
+     * Hands {@code event} to the loop; if the run is over (or the loop's queue stays full past the post
+     * limit), the event is refused instead, so whoever waits on its answer is answered.
      */
-    void post(LoopEvent event, Runnable rejected) {
-        if (over) {
-            rejected.run();
-            return;
-        }
-        try {
-            if (!events.offer(event, POST_LIMIT_MS, TimeUnit.MILLISECONDS)) {
-                LOG.warn("the simulation loop has not taken an event for {} ms; {} is refused", POST_LIMIT_MS,
-                        event.getClass().getSimpleName());
-                rejected.run();
-                return;
-            }
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            rejected.run();
-            return;
-        }
-        if (over) {
-            EventRejection.drain(events, cycle);
+    void post(LoopEvent event) {
+        if (!inbox.post(event) && !inbox.closed()) {
+            LOG.warn("the simulation loop has not taken an event for {} ms; {} is refused", POST_LIMIT_MS,
+                    event.getClass().getSimpleName());
         }
     }
 
     boolean isOver() {
-        return over;
+        return inbox.closed();
     }
 
     /** Loop thread: the run has begun (or holds before step 0) with every client there. */
@@ -169,10 +158,9 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** Loop thread, last: the loop is done; what is still queued is answered, the ports close. */
     void loopEnded() {
-        over = true;
+        inbox.close();
         listeners.close();
         writeWatchdog.stop();
-        EventRejection.drain(events, cycle);
         endedLatch.countDown();
         startedLatch.countDown();
     }
@@ -184,7 +172,7 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** A viewer's worker has ended (any thread, also after the run): it is no longer one of the run's viewers. */
     void viewerLeft(ViewerClientWorker viewer, String why) {
-        cycle.viewers().remove(viewer, why);
+        run.viewers().remove(viewer, why);
     }
 
     /** Blocks until the simulation is over. */
@@ -200,14 +188,14 @@ public final class ClientWorkerCoordinator implements Closeable {
      */
     public void pause(long timeout, TimeUnit unit) throws InterruptedException {
         CompletableFuture<Void> held = new CompletableFuture<>();
-        post(new LoopEvent.Pause(held), () -> held.complete(null));
+        post(new LoopEvent.Pause(held));
         await(held, timeout, unit);
     }
 
     /** Resumes a paused run (or lets it begin when every client is there); returns once the status says so. */
     public void resume() throws InterruptedException {
         CompletableFuture<Void> applied = new CompletableFuture<>();
-        post(new LoopEvent.Resume(applied), () -> applied.complete(null));
+        post(new LoopEvent.Resume(applied));
         await(applied, STOP_WAIT_MS, TimeUnit.MILLISECONDS);
     }
 
@@ -217,9 +205,9 @@ public final class ClientWorkerCoordinator implements Closeable {
      */
     public long step(long n, long timeout, TimeUnit unit) throws InterruptedException {
         CompletableFuture<Long> done = new CompletableFuture<>();
-        post(new LoopEvent.StepN(n, done), () -> done.complete(cycle.record().stepsReleased));
+        post(new LoopEvent.StepN(n, done));
         Long at = await(done, timeout, unit);
-        return at == null ? cycle.record().stepsReleased : at;
+        return at == null ? run.record().stepsReleased : at;
     }
 
     static <T> T await(CompletableFuture<T> f, long timeout, TimeUnit unit) throws InterruptedException {
@@ -238,12 +226,12 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Ends the simulation: robots, viewers and Geometry are told why. Returns once it has ended (at most a few s). */
     public void stop(String reason) {
         if (loop == null) {
-            over = true;
+            inbox.close();
             endedLatch.countDown();
             startedLatch.countDown();
             return;
         }
-        post(new LoopEvent.Stop(reason), () -> { });
+        post(new LoopEvent.Stop(reason));
         try {
             if (!endedLatch.await(STOP_WAIT_MS, TimeUnit.MILLISECONDS)) {
                 LOG.warn("the simulation loop did not end the run within {} ms of: {}", STOP_WAIT_MS, reason);
@@ -255,11 +243,11 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** What the control port reports: published by the loop, read without waiting for it. */
     public RunStatus status() {
-        return cycle.record().status(robotNames, cycle.viewers().count());
+        return run.record().status(robotNames, run.viewers().count());
     }
 
     public RunSummary summary() {
-        return cycle.record().summary(Math.max(robotNames.size(), cycle.record().states.size()));
+        return run.record().summary(Math.max(robotNames.size(), run.record().states.size()));
     }
 
     // ---- waiting for the run ---------------------------------------------------------------------------
@@ -275,11 +263,11 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** After the end: waits up to {@code timeoutMs} each for the recording and for viewer workers to send what they hold. */
     public void awaitOutputDone(long timeoutMs) throws InterruptedException {
-        RunRecorder recorder = cycle.recorder; // (its own wait: a stuck viewer takes nothing from it)
+        RunRecorder recorder = run.recorder(); // (its own wait: a stuck viewer takes nothing from it)
         if (recorder != null) {
             recorder.awaitWritten(timeoutMs);
         }
-        cycle.viewers().awaitDone(timeoutMs);
+        run.viewers().awaitDone(timeoutMs);
     }
 
     /** After the end: waits until the listening sockets are really released, so a next simulation can bind them. */
@@ -291,7 +279,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     public void close() {
         stop("the Environment was shut down");
         listeners.close();
-        for (ViewerSink v : cycle.viewers().all()) {
+        for (ViewerSink v : run.viewers().all()) {
             v.drop();
         }
     }

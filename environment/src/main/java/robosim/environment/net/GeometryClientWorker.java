@@ -51,7 +51,7 @@ final class GeometryClientWorker extends ClientWorker {
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.GeometryJoins(this, verdict), () -> verdict.complete("the simulation is over"));
+            coordinator.post(new LoopEvent.GeometryJoins(this, verdict));
             refusal = awaitVerdict(verdict);
         }
         if (refusal != null) {
@@ -74,12 +74,12 @@ final class GeometryClientWorker extends ClientWorker {
             if (task instanceof SendWorld w) {
                 connection.write(w.world());
                 connection.flush();
-                coordinator.post(new LoopEvent.GeometryReady(this), () -> { });
+                coordinator.post(new LoopEvent.GeometryReady(this));
             } else if (task instanceof Resolve r) {
                 connection.write(r.request());
                 connection.flush();
                 GeometryStepResponse answer = connection.read(GeometryStepResponse.class);
-                coordinator.post(new LoopEvent.GeometryAnswer(this, answer), () -> { });
+                coordinator.post(new LoopEvent.GeometryAnswer(this, answer));
             } else {
                 connection.write(((End) task).end());
                 connection.flush();
@@ -107,6 +107,6 @@ final class GeometryClientWorker extends ClientWorker {
 
     @Override
     protected void exited(String why) {
-        coordinator.post(new LoopEvent.GeometryLeaves(this, why), () -> { });
+        coordinator.post(new LoopEvent.GeometryLeaves(this, why));
     }
 }

@@ -1,21 +1,41 @@
 package robosim.environment.net;
 
+import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import robosim.environment.core.JoinRule;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.RobotHello;
 import robosim.protocol.StepRequest;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * What other threads post to the {@link SimulationLoop}, the one owner of simulation time: socket
- * readers hand in requests and say who came and went, the Geometry worker hands in answers, the
- * control port asks for pause, resume, step N and stop. Nothing else changes the run.
+ * What other threads post to the {@link SimulationLoop}, the one owner of simulation time, through its
+ * {@link Inbox}: socket readers hand in requests and say who came and went, the Geometry worker hands in
+ * answers, the control port asks for pause, resume, step N, add, remove and stop. Each applies itself to
+ * the {@link Run} on the loop thread, and each knows how it is refused when the run is over, so nobody
+ * waits on an answer that will not come. Nothing else changes the run.
  */
-sealed interface LoopEvent {
+sealed interface LoopEvent extends Inbox.Event<Run> {
+    /** Why an event that needs the run is refused once it is over. */
+    String OVER = "the simulation is over";
+
+    @Override
+    default void refuse() {
+    }
+
     /** A robot said hello (already checked against the file); the verdict is null (welcome sent) or a refusal. */
     record RobotJoins(RobotPeer worker, RobotHello hello, int index, CompletableFuture<String> verdict)
             implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.hello(this);
+        }
+
+        @Override
+        public void refuse() {
+            verdict.complete(OVER);
+        }
     }
 
     /**
@@ -25,64 +45,170 @@ sealed interface LoopEvent {
      */
     record SharedJoins(SharedConnection connection, List<RobotJoins> joins, CompletableFuture<Boolean> answered)
             implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.hello(this);
+        }
+
+        @Override
+        public void refuse() {
+            answered.complete(false);
+        }
     }
 
-    /** Several events read at once, in order (the SEQUENTIAL stepper's requests): one wake-up for all. */
+    /** Several events read at once, in order (a shared connection's frame, the SEQUENTIAL stepper's requests). */
     record Batch(List<LoopEvent> events) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            for (LoopEvent e : events) {
+                e.apply(run);
+            }
+        }
     }
 
     /** A robot's request for the step it was last given. */
     record Request(RobotPeer worker, StepRequest request) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.request(worker, request);
+        }
     }
 
     /** A robot's connection has closed or failed, or it broke the protocol. */
     record RobotLeaves(RobotPeer worker, String why) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.lost(worker, why);
+        }
     }
 
     /** A Geometry process said hello; the verdict is null (accepted) or a refusal. */
     record GeometryJoins(GeometryClientWorker worker, CompletableFuture<String> verdict) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            verdict.complete(run.geometryJoins(worker));
+        }
+
+        @Override
+        public void refuse() {
+            verdict.complete(OVER);
+        }
     }
 
     /** A Geometry process has been sent the world and takes steps now. */
     record GeometryReady(GeometryClientWorker worker) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.geometryReady(worker);
+        }
     }
 
     /** A Geometry process's answer to the step it was asked. */
     record GeometryAnswer(GeometryClientWorker worker, GeometryStepResponse answer) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.geometryAnswer(worker, answer);
+        }
     }
 
     /** A Geometry process's connection has closed or failed. */
     record GeometryLeaves(GeometryClientWorker worker, String why) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.geometryLost(worker, why);
+        }
     }
 
     /** A viewer said hello; it gets the snapshot it starts from, and updates follow without a gap. */
     record ViewerJoins(ViewerClientWorker viewer, CompletableFuture<WorldSnapshot> snapshot) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.addViewer(viewer, snapshot);
+        }
+
+        @Override
+        public void refuse() {
+            snapshot.completeExceptionally(new IOException(OVER));
+        }
     }
 
-    /** A recording viewer that was full has taken updates: a step held for it may go out. */
+    /** A recording viewer that was full has taken updates: a step held for it may go out (the loop tries again). */
     record ViewerHasRoom(ViewerClientWorker viewer) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+        }
     }
 
     /** Pause after the step in progress; {@code held} completes once the run holds (or is not running). */
     record Pause(CompletableFuture<Void> held) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.pause(held);
+        }
+
+        @Override
+        public void refuse() {
+            held.complete(null);
+        }
     }
 
     /** Run on; {@code applied} completes once the run's state says so (a status right after sees it). */
     record Resume(CompletableFuture<Void> applied) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.resume(applied);
+        }
+
+        @Override
+        public void refuse() {
+            applied.complete(null);
+        }
     }
 
-    /** Run {@code n} more steps, then hold; {@code done} completes with the steps released so far. */
+    /** Run {@code n} more steps, then hold; {@code done} completes with the steps released so far (null: refused). */
     record StepN(long n, CompletableFuture<Long> done) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.stepN(n, done);
+        }
+
+        @Override
+        public void refuse() {
+            done.complete(null);
+        }
     }
 
     /** The control port adds a robot: its rule (its name, type and pose); {@code verdict}: null (it may join) or why not. */
-    record AddRobot(robosim.environment.core.JoinRule rule, CompletableFuture<String> verdict) implements LoopEvent {
+    record AddRobot(JoinRule rule, CompletableFuture<String> verdict) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            verdict.complete(run.add(rule));
+        }
+
+        @Override
+        public void refuse() {
+            verdict.complete(OVER);
+        }
     }
 
     /** The control port removes a robot; {@code verdict}: null (removed, or at the step's end) or why not. */
     record RemoveRobot(String name, CompletableFuture<String> verdict) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            verdict.complete(run.remove(name));
+        }
+
+        @Override
+        public void refuse() {
+            verdict.complete(OVER);
+        }
     }
 
+    /** Ends the run, for {@code reason}. */
     record Stop(String reason) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.finish(reason, false);
+        }
     }
 }

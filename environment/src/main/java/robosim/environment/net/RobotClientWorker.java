@@ -64,8 +64,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.RobotJoins(this, hello, wanted, verdict),
-                    () -> verdict.complete("the simulation is over"));
+            coordinator.post(new LoopEvent.RobotJoins(this, hello, wanted, verdict));
             refusal = awaitVerdict(verdict);
         }
         if (refusal != null) {
@@ -77,20 +76,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         rename("robot-worker[" + Printable.of(robotName) + "]");
         handshakeDone();
         try {
-            if (coordinator.settings().design() == CoordinatorDesign.SEQUENTIAL) {
-                try {
-                    coordinator.post(new LoopEvent.Request(this, readRequest(0)), () -> { });
-                } finally {
-                    firstRead.countDown(); // the stepper may read this connection from now on
-                }
-                coordinator.awaitEnd(); // the stepper reads the rest; this thread holds the session
-                return;
-            }
-            for (long k = FIRST; ; k++) {
-                StepRequest request = readRequest(k);
-                k = request.step();
-                coordinator.post(new LoopEvent.Request(this, request), () -> { });
-            }
+            coordinator.design().read(this, coordinator);
         } finally {
             RobotWriter w = writer;
             if (w != null) {
@@ -107,6 +93,11 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     /** SEQUENTIAL, the stepper: waits until this worker is done with the step-0 request. */
     void awaitFirstRead() throws InterruptedException {
         firstRead.await();
+    }
+
+    /** SEQUENTIAL, this worker: done with the step-0 request (read or failed); the stepper reads from now on. */
+    void firstRead() {
+        firstRead.countDown();
     }
 
     /** True once the connection has closed (the robot left, was dropped, or the run ended). */
@@ -165,9 +156,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
             writingSince = 0;
         }
         coordinator.writeWatchdog().watch(this);
-        if (coordinator.settings().design() == CoordinatorDesign.TWO_THREADS) {
-            writer = new RobotWriter(this, connection, stepMessages, robotName);
-        }
+        writer = coordinator.design().writer(this, connection, stepMessages, robotName);
     }
 
     /** Loop thread: sends the first step number. */
@@ -279,7 +268,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
             s.exited(why);
         }
         if (index >= 0) {
-            coordinator.post(new LoopEvent.RobotLeaves(this, why), () -> { });
+            coordinator.post(new LoopEvent.RobotLeaves(this, why));
         }
     }
 }

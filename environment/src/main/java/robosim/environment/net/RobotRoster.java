@@ -42,8 +42,7 @@ public final class RobotRoster {
         WorldSpec.RobotSpec robot = new WorldSpec.RobotSpec(name, type, control == null ? "" : control, xM * 1000,
                 yM * 1000, robosim.geometry.Kinematics.turn(headingDeg, 0));
         CompletableFuture<String> verdict = new CompletableFuture<>();
-        coordinator.post(new LoopEvent.AddRobot(new JoinRule(name, robot, null, 1), verdict),
-                () -> verdict.complete("the simulation is over"));
+        coordinator.post(new LoopEvent.AddRobot(new JoinRule(name, robot, null, 1), verdict));
         return answer(verdict);
     }
 
@@ -54,7 +53,7 @@ public final class RobotRoster {
      */
     public String remove(String name) throws InterruptedException {
         CompletableFuture<String> verdict = new CompletableFuture<>();
-        coordinator.post(new LoopEvent.RemoveRobot(name, verdict), () -> verdict.complete("the simulation is over"));
+        coordinator.post(new LoopEvent.RemoveRobot(name, verdict));
         return answer(verdict);
     }
 

@@ -21,12 +21,8 @@ final class SequentialReader implements Runnable {
     }
 
     /** Starts the {@code stepper} thread over {@code robots} (workers over sockets), in world order. */
-    static void start(ClientWorkerCoordinator coordinator, RobotPeer[] robots) {
-        List<RobotClientWorker> workers = new java.util.ArrayList<>();
-        for (RobotPeer r : robots) {
-            workers.add((RobotClientWorker) r);
-        }
-        Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(workers)), "stepper");
+    static void start(ClientWorkerCoordinator coordinator, List<RobotClientWorker> robots) {
+        Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(robots)), "stepper");
         t.setDaemon(true);
         t.start();
     }
@@ -76,7 +72,7 @@ final class SequentialReader implements Runnable {
 
     private void handOver(List<LoopEvent> batch) {
         if (!batch.isEmpty()) {
-            coordinator.post(new LoopEvent.Batch(List.copyOf(batch)), () -> { });
+            coordinator.post(new LoopEvent.Batch(List.copyOf(batch)));
             batch.clear();
         }
     }

@@ -60,9 +60,8 @@ final class SharedConnection implements WriteWatchdog.Watched {
         }
         int n = header.robots();
         String refusal = worker.proveSecret("robot");
-        if (refusal == null && coordinator.settings().design() == CoordinatorDesign.SEQUENTIAL) {
-            refusal = "a shared connection needs the THREADS or TWO_THREADS coordinator (SEQUENTIAL reads a "
-                    + "socket per robot; run the robots with --connection PER_ROBOT)";
+        if (refusal == null) {
+            refusal = coordinator.design().refusesSharedConnections();
         }
         if (refusal != null) { // (refused as a whole, still under the handshake deadline)
             for (int slot = 0; slot < n; slot++) {
@@ -106,7 +105,7 @@ final class SharedConnection implements WriteWatchdog.Watched {
         }
         if (!joins.isEmpty()) {
             CompletableFuture<Boolean> answered = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.SharedJoins(this, joins, answered), () -> answered.complete(false));
+            coordinator.post(new LoopEvent.SharedJoins(this, joins, answered));
             if (!worker.awaitVerdict(answered)) { // (the loop never saw them: this thread still owns the frame)
                 joins.forEach(j -> replies.welcome(((SharedRobot) j.worker()).slot(),
                         RobotWelcome.refused("the simulation is over")));
@@ -159,7 +158,7 @@ final class SharedConnection implements WriteWatchdog.Watched {
                 }
             }
             if (!batch.isEmpty()) {
-                coordinator.post(new LoopEvent.Batch(batch), () -> { });
+                coordinator.post(new LoopEvent.Batch(batch));
             }
         }
     }
@@ -227,7 +226,7 @@ final class SharedConnection implements WriteWatchdog.Watched {
             }
         }
         if (!leaves.isEmpty()) {
-            coordinator.post(new LoopEvent.Batch(leaves), () -> { });
+            coordinator.post(new LoopEvent.Batch(leaves));
         }
     }
 

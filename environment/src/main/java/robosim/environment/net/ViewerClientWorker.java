@@ -61,11 +61,10 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
         q.watch(watched);
         queue = q;
         CompletableFuture<WorldSnapshot> snapshot = new CompletableFuture<>();
-        coordinator.post(new LoopEvent.ViewerJoins(this, snapshot),
-                () -> snapshot.completeExceptionally(new IOException("the simulation is over")));
+        coordinator.post(new LoopEvent.ViewerJoins(this, snapshot));
         WorldSnapshot first = awaitVerdict(snapshot);
         handshakeDone();
-        writes.serve(first, queue, () -> coordinator.post(new LoopEvent.ViewerHasRoom(this), () -> { }));
+        writes.serve(first, queue, () -> coordinator.post(new LoopEvent.ViewerHasRoom(this)));
     }
 
     private static final int NO_SUCH_ROBOT = -2;

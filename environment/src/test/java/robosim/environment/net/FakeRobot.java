@@ -63,7 +63,7 @@ final class FakeRobot implements RobotPeer {
     private void answer(long k) {
         if (k < silentFrom && !dropped) {
             coordinator.post(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(),
-                    List.of("thread"))), () -> { });
+                    List.of("thread"))));
         }
     }
 

@@ -73,7 +73,7 @@ class SimulationLoopTest {
             FakeRobot r = new FakeRobot(c, i, i == 2 ? silentFrom : Long.MAX_VALUE);
             CompletableFuture<String> verdict = new CompletableFuture<>();
             c.post(new LoopEvent.RobotJoins(r, new RobotHello(THREE.robots().get(i).name(), RobotModels.AR_ROBOT), i,
-                    verdict), () -> verdict.complete("over"));
+                    verdict));
             assertNull(verdict.get(LONG_S, TimeUnit.SECONDS), "accepted");
             robots.add(r);
         }

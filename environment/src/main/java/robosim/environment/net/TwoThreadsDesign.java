@@ -1,0 +1,16 @@
+package robosim.environment.net;
+
+import robosim.protocol.ObjectConnection;
+
+/**
+ * {@code TWO_THREADS}: per robot one thread reads its requests (as {@link ThreadsDesign}) and one,
+ * {@code robot-writer[name]} ({@link RobotWriter}), writes what the loop queues, so responses go out in
+ * parallel and the loop never writes a response to a socket.
+ */
+final class TwoThreadsDesign implements Design {
+    @Override
+    public RobotWriter writer(RobotClientWorker worker, ObjectConnection connection, boolean stepMessages,
+            String robotName) {
+        return new RobotWriter(worker, connection, stepMessages, robotName);
+    }
+}
