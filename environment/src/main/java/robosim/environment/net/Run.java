@@ -389,7 +389,6 @@ final class Run {
         released = step;
         record.released(released, now);
         record.messages(core.messagesDelivered(), core.messagesOutOfRange(), core.messagesUndeliverable());
-        control.settle(released, false);
         RunRecorder rec = recorder;
         boolean recording = rec != null && rec.recording();
         if (!viewers.isEmpty() || recording) {
@@ -414,6 +413,8 @@ final class Run {
             phase = Phase.COLLECTING;
             applyLeaving();
             bringBackReturning();
+            publish();
+            control.settle(released, false); // (step N callers answered once the status shows the step's end)
         }
     }
 
@@ -1025,7 +1026,6 @@ final class Run {
         if (rec != null) {
             rec.end(end);
         }
-        control.settle(released, true);
         rosterChanged = true;
         LOG.info("simulation over after {} steps: {}", step, Printable.of(reason));
         listener.ended(record.summary(roster.size()));
@@ -1033,6 +1033,7 @@ final class Run {
         heldHellos.forEach(LoopEvent::refuse);
         heldHellos.clear();
         publish();
+        control.settle(released, true);
     }
 
     private SimulationEnd endMessage() {

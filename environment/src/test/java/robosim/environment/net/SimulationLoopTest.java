@@ -141,4 +141,32 @@ class SimulationLoopTest {
         assertEquals("stopped by the test", end.reason());
         assertEquals(held, robots.get(1).responses.size(), "nothing went out after the pause held");
     }
+
+    @Test
+    void everyoneWaitingOnAnEventStillQueuedWhenTheRunEndsIsAnsweredAtOnce() throws Exception {
+        ClientWorkerCoordinator c = new ClientWorkerCoordinator(THREE, Settings.builder().inProcessGeometry(true).build());
+        CompletableFuture<Void> resumed = new CompletableFuture<>();
+        CompletableFuture<Void> paused = new CompletableFuture<>();
+        CompletableFuture<Long> stepped = new CompletableFuture<>();
+        CompletableFuture<String> added = new CompletableFuture<>();
+        CompletableFuture<String> removed = new CompletableFuture<>();
+        CompletableFuture<String> hello = new CompletableFuture<>();
+        c.post(new LoopEvent.Resume(resumed)); // (queued: no loop takes them)
+        c.post(new LoopEvent.Pause(paused));
+        c.post(new LoopEvent.StepN(3, stepped));
+        c.post(new LoopEvent.AddRobot(new robosim.environment.core.JoinRule("z", THREE.robots().get(0), null, 1),
+                added));
+        c.post(new LoopEvent.RemoveRobot("a", removed));
+        c.post(new LoopEvent.RobotJoins(new FakeRobot(c, 0, 0), new RobotHello("a", RobotModels.AR_ROBOT), 0, hello));
+        c.loopEnded(); // (what the loop does last, as the run's end races these callers)
+        assertTrue(resumed.isDone(), "resume() is answered, not left to its 5 s limit");
+        assertTrue(paused.isDone());
+        assertNull(stepped.getNow(-1L), "step N: refused, the caller reads the steps released");
+        assertEquals(LoopEvent.OVER, added.getNow(null));
+        assertEquals(LoopEvent.OVER, removed.getNow(null));
+        assertEquals(LoopEvent.OVER, hello.getNow(null));
+        CompletableFuture<Void> late = new CompletableFuture<>();
+        c.post(new LoopEvent.Resume(late));
+        assertTrue(late.isDone(), "and one posted after the end");
+    }
 }
