@@ -3,8 +3,6 @@ package robosim.environment.net;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.Socket;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.Challenge;
@@ -18,11 +16,12 @@ import robosim.protocol.SimulationKeys;
  * One connected client, served by one named thread. The base class owns the connection's life and
  * the one failure policy: a protocol fault or a broken connection drops this client with a logged
  * reason; the simulation goes on. Until its hello is accepted ({@link #handshakeDone}) a client is a
- * stranger: it may send at most {@link Limits#MAX_HELLO_BYTES} per message, and its connection is
- * closed if its hello (and proof) are not in by the handshake deadline, however slowly its bytes
- * trickle in ({@link #heardHello}).
+ * stranger: it may send at most {@link Limits#MAX_HELLO_BYTES} per message. Its {@link ConnectionClock}
+ * runs from its arrival: the {@link ConnectionWatch} cuts it off if its hello (and proof) are not in by the
+ * handshake deadline, however slowly its bytes trickle in ({@link #heardHello}), or if it does not take a
+ * write within the write timeout, whoever writes to it.
  */
-abstract class ClientWorker implements Runnable {
+abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorker.class);
 
     protected final ClientWorkerCoordinator coordinator;
@@ -30,19 +29,15 @@ abstract class ClientWorker implements Runnable {
     private volatile String name;
     protected volatile ObjectConnection connection;
     private Runnable release = () -> { };
-    private volatile Future<?> deadline;
-    /** The handshake timeout, for the reason given when it expires. */
-    private volatile int deadlineMs;
-    /** The handshake clock: running, stopped (the hello is in), or expired; whichever comes first wins. */
-    private final AtomicInteger clock = new AtomicInteger(CLOCK_RUNNING);
-    private static final int CLOCK_RUNNING = 0;
-    private static final int CLOCK_STOPPED = 1;
-    private static final int CLOCK_EXPIRED = 2;
+    /** Its clocks, from its arrival (the accept thread makes it). */
+    protected final ConnectionClock clock;
 
     ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name) {
         this.coordinator = coordinator;
         this.socket = socket;
         this.name = name;
+        Settings settings = coordinator.settings();
+        this.clock = new ConnectionClock(settings.handshakeTimeoutMs(), settings.writeTimeoutMs());
     }
 
     final void start() {
@@ -53,23 +48,22 @@ abstract class ClientWorker implements Runnable {
     }
 
     /**
-     * Accept thread, before {@link #start}: {@code release} runs once when the connection is closed (it
-     * frees the port's place); {@code handshakeDeadline} (or null for none) fires {@link #handshakeExpired}.
+     * Accept thread, before {@link #start}: {@code onClose} runs once when the connection is closed (it frees
+     * the port's place); the {@link ConnectionWatch} times it from now on.
      */
-    final void admit(Runnable onClose, Future<?> handshakeDeadline) {
+    final void admit(Runnable onClose) {
         this.release = onClose;
-        this.deadline = handshakeDeadline;
+        coordinator.watch().watch(this);
     }
 
-    /**
-     * The {@code handshake-deadlines} thread: the client has not sent its hello (and proof) in time; its
-     * connection is closed, unless the hello came in first.
-     */
-    final void handshakeExpired(int ms) {
-        deadlineMs = ms;
-        if (clock.compareAndSet(CLOCK_RUNNING, CLOCK_EXPIRED)) {
-            drop();
-        }
+    @Override
+    public final ConnectionClock clock() {
+        return clock;
+    }
+
+    @Override
+    public final String label() {
+        return name;
     }
 
     /**
@@ -101,20 +95,22 @@ abstract class ClientWorker implements Runnable {
         return secret.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
     }
 
-    /** The client's hello is all in: the handshake clock stops (or the deadline has already closed it). */
+    /** The client's hello is all in: the handshake deadline no longer applies (or it has already cut it off). */
     protected final void stopHandshakeClock() throws IOException {
-        if (!clock.compareAndSet(CLOCK_RUNNING, CLOCK_STOPPED)) {
-            throw new IOException(expired()); // (the deadline closed the connection just before)
-        }
-        Future<?> d = deadline;
-        if (d != null) {
-            d.cancel(false);
+        if (!clock.handshakeOver()) {
+            throw new IOException(clock.cutOffReason()); // (the deadline closed the connection just before)
         }
     }
 
-    /** Why the connection was closed at the handshake deadline, or null if it was not. */
-    private String expired() {
-        return clock.get() == CLOCK_EXPIRED ? "no hello within " + deadlineMs + " ms" : null;
+    /** Writes one message on this connection's write clock: a client that does not take it in time is cut off. */
+    protected final void send(java.io.Externalizable message) throws IOException {
+        clock.writing();
+        try {
+            connection.write(message);
+            connection.flush();
+        } finally {
+            clock.written();
+        }
     }
 
     /** This client's hello is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}. */
@@ -147,7 +143,7 @@ abstract class ClientWorker implements Runnable {
             c.limitMessageBytes(Limits.MAX_HELLO_BYTES);
             connection = c;
             if (dropped) {
-                c.close(); // dropped (the deadline) while the streams were being opened
+                c.close(); // dropped (cut off) while the streams were being opened
             }
             serve();
         } catch (IOException e) {
@@ -156,10 +152,7 @@ abstract class ClientWorker implements Runnable {
             why = "interrupted";
             Thread.currentThread().interrupt();
         } finally {
-            Future<?> d = deadline;
-            if (d != null) {
-                d.cancel(false);
-            }
+            coordinator.watch().forget(this);
             if (connection != null) {
                 connection.close();
             } else {
@@ -177,9 +170,9 @@ abstract class ClientWorker implements Runnable {
     /** Why the session ended on {@code e}, logged: a protocol fault or a missed deadline is a warning. */
     private String failed(IOException e) {
         String why;
-        if (expired() != null) {
-            why = expired();
-            LOG.warn("{} dropped: {}", name, why);
+        if (clock.cutOffReason() != null) {
+            why = clock.cutOffReason();
+            LOG.debug("{}: {}", name, why); // (the watch has said it)
         } else if (e instanceof ProtocolException) {
             why = e.getMessage();
             LOG.warn("{} dropped: {}", name, Printable.of(why));
@@ -218,6 +211,7 @@ abstract class ClientWorker implements Runnable {
     private volatile boolean dropped;
 
     /** Closes the connection, so this worker's blocked read or write ends. Any thread. */
+    @Override
     public final void drop() {
         dropped = true;
         ObjectConnection c = connection;

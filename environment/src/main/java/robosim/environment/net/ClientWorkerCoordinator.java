@@ -14,33 +14,14 @@ import org.slf4j.LoggerFactory;
 import robosim.environment.core.WorldSpec;
 
 /**
- * Runs one simulation over sockets, the report's client interface: it waits until every robot named in
- * the file (and, unless geometry is in-process, a Geometry process) has connected, then steps in
- * lock-step. This class is the facade: it opens the ports, starts the threads, and turns the control
- * port's calls into events for the loop. Its threads, each named, none holding a lock across a socket
- * read or write, a sleep or a wait:
- * <ul>
- * <li>{@code simulation-loop} ({@link SimulationLoop}): the one owner of time; blocks on its event
- *     queue, timed to the next deadline, and in its writes to robots (bounded by the write watchdog).</li>
- * <li>{@code write-watchdog} ({@link WriteWatchdog}): cuts off a robot that has not taken one of the
- *     loop's writes within the write timeout; sleeps between looks.</li>
- * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry} ({@link Listeners}): block
- *     in accept; each socket gets a worker thread (one over the port's cap is closed at once).</li>
- * <li>{@code handshake-deadlines} ({@link Listeners}): closes a connection whose hello is not accepted
- *     within the handshake timeout; sleeps until the next deadline.</li>
- * <li>{@code robot-worker[name]} ({@link RobotClientWorker}), one per robot: the handshake, then blocks
- *     in its socket read and posts each request (in {@code SEQUENTIAL} only the step-0 one; it then
- *     waits for the end).</li>
- * <li>{@code robot-writer[name]} ({@link RobotWriter}, {@code TWO_THREADS} only): blocks on its queue
- *     and in its socket write.</li>
- * <li>{@code stepper} ({@link SequentialReader}, {@code SEQUENTIAL} only): blocks in each robot's
- *     socket read in world order.</li>
- * <li>{@code geometry-worker} ({@link GeometryClientWorker}): blocks on its task queue, then in the
- *     Geometry round trip (write the step, read the answer).</li>
- * <li>{@code viewer-worker[n]} ({@link ViewerClientWorker}), one per viewer: blocks on its
- *     {@link ViewerQueue} and in its socket write (under the viewer write deadline).</li>
- * </ul>
- * Callers of {@link #pause}, {@link #resume}, {@link #step}, {@link #stop} wait on futures the loop completes.
+ * Runs one simulation over sockets: the report's {@code ClientWorkerCoordinator}, the Environment's
+ * client interface. It keeps the report's name and role: it runs one thread per connected client (robot,
+ * Geometry, viewer) and coordinates them through the one owner of time, the {@link SimulationLoop}, which
+ * drives the {@link Run}. It waits until every robot named in the file (and, unless geometry is
+ * in-process, a Geometry process) has connected, then steps in lock-step. As the Environment's facade it
+ * opens the ports, starts the threads, and turns the control port's calls into events for the loop;
+ * callers of {@link #pause}, {@link #resume}, {@link #step}, {@link #stop} wait on futures the loop
+ * completes. Its threads are listed in the {@linkplain robosim.environment.net package} documentation.
  */
 public final class ClientWorkerCoordinator implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorkerCoordinator.class);
@@ -57,13 +38,13 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final Design design;
     private final Inbox<Run> inbox;
     private final Run run;
-    private final Listeners listeners;
+    private final Acceptors acceptors;
     private final CountDownLatch endedLatch = new CountDownLatch(1);
     private final CountDownLatch startedLatch = new CountDownLatch(1);
     private volatile boolean began;
     private Thread loop;
-    /** Times the loop's writes to robots (does nothing without a write timeout). */
-    private final WriteWatchdog writeWatchdog;
+    /** Cuts off every connection that misses its handshake deadline or does not take a write in time. */
+    private final ConnectionWatch watch;
 
     /** @throws IllegalArgumentException for {@code SEQUENTIAL} with a lost robot held (its stepper reads a fixed list) */
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
@@ -79,8 +60,8 @@ public final class ClientWorkerCoordinator implements Closeable {
         // each robot has at most a request and a departure outstanding; the rest is rare
         this.inbox = new Inbox<>(2 * (robotNames.size() + spec.joinable()) + 1024, POST_LIMIT_MS);
         this.run = new Run(this, new RunListeners(runListeners));
-        this.listeners = new Listeners(this);
-        this.writeWatchdog = new WriteWatchdog(settings.writeTimeoutMs());
+        this.acceptors = new Acceptors(this);
+        this.watch = new ConnectionWatch(settings.handshakeTimeoutMs(), settings.writeTimeoutMs());
     }
 
     /** Adds a listener; call before {@link #start} to hear everything. */
@@ -98,16 +79,16 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** Binds the three ports and starts accepting; a port in use is a {@link java.net.BindException} naming it. */
     public void start() throws IOException {
-        listeners.bind();
+        acceptors.bind();
         startLoop();
-        listeners.accept();
+        acceptors.accept();
         LOG.info("waiting for {} robot(s){}", robotNames.size(),
                 settings.inProcessGeometry() ? "" : " and a Geometry process");
     }
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
     void startLoop() {
-        writeWatchdog.start();
+        watch.start();
         loop = new Thread(new SimulationLoop(this, inbox, run), "simulation-loop");
         loop.setDaemon(true);
         loop.start();
@@ -115,7 +96,7 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */
     public int[] ports() {
-        return listeners.ports();
+        return acceptors.ports();
     }
 
     Settings settings() {
@@ -159,18 +140,18 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Loop thread, last: the loop is done; what is still queued is answered, the ports close. */
     void loopEnded() {
         inbox.close();
-        listeners.close();
-        writeWatchdog.stop();
+        acceptors.close();
+        watch.stopWhenIdle();
         endedLatch.countDown();
         startedLatch.countDown();
     }
 
-    /** Times the loop's writes to each robot. */
-    WriteWatchdog writeWatchdog() {
-        return writeWatchdog;
+    /** Times every connection's handshake and writes. */
+    ConnectionWatch watch() {
+        return watch;
     }
 
-    /** A viewer's worker has ended (any thread, also after the run): it is no longer one of the run's viewers. */
+    /** A viewer's worker has ended after the run (any thread): it is no longer one of the run's viewers. */
     void viewerLeft(ViewerClientWorker viewer, String why) {
         run.viewers().remove(viewer, why);
     }
@@ -272,13 +253,13 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** After the end: waits until the listening sockets are really released, so a next simulation can bind them. */
     public void awaitServersClosed(long timeoutMs) throws InterruptedException {
-        listeners.awaitClosed(timeoutMs);
+        acceptors.awaitClosed(timeoutMs);
     }
 
     @Override
     public void close() {
         stop("the Environment was shut down");
-        listeners.close();
+        acceptors.close();
         for (ViewerSink v : run.viewers().all()) {
             v.drop();
         }

@@ -56,8 +56,7 @@ final class GeometryClientWorker extends ClientWorker {
         }
         if (refusal != null) {
             logRefused(refusal);
-            connection.write(new SimulationEnd(-1, refusal));
-            connection.flush();
+            send(new SimulationEnd(-1, refusal));
             return;
         }
         handshakeDone();
@@ -72,17 +71,14 @@ final class GeometryClientWorker extends ClientWorker {
                 continue;
             }
             if (task instanceof SendWorld w) {
-                connection.write(w.world());
-                connection.flush();
+                send(w.world());
                 coordinator.post(new LoopEvent.GeometryReady(this));
             } else if (task instanceof Resolve r) {
-                connection.write(r.request());
-                connection.flush();
+                send(r.request());
                 GeometryStepResponse answer = connection.read(GeometryStepResponse.class);
                 coordinator.post(new LoopEvent.GeometryAnswer(this, answer));
             } else {
-                connection.write(((End) task).end());
-                connection.flush();
+                send(((End) task).end());
                 return;
             }
         }

@@ -132,6 +132,19 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
         }
     }
 
+    /** A viewer's worker has ended; {@code cutOff}: the connection watch cut it off (it did not take a write). */
+    record ViewerLeaves(ViewerClientWorker viewer, String why, boolean cutOff) implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.viewerLeft(viewer, why, cutOff);
+        }
+
+        @Override
+        public void refuse() {
+            viewer.leftAfterTheRun(why);
+        }
+    }
+
     /** A recording viewer that was full has taken updates: a step held for it may go out (the loop tries again). */
     record ViewerHasRoom(ViewerClientWorker viewer) implements LoopEvent {
         @Override

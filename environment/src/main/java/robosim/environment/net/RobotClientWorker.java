@@ -20,7 +20,7 @@ import robosim.protocol.StepResponse;
  * {@link RobotWriter} ({@code TWO_THREADS}); a request for a step this robot was not given, or with a
  * non-finite action, drops this robot alone.
  */
-final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWatchdog.Watched {
+final class RobotClientWorker extends ClientWorker implements RobotPeer {
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(RobotClientWorker.class);
     private volatile int index = -1;
     /** The last step number the loop has handed this robot (-1 before the first). */
@@ -69,8 +69,7 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
         }
         if (refusal != null) {
             logRefused(refusal);
-            connection.write(RobotWelcome.refused(refusal));
-            connection.flush();
+            send(RobotWelcome.refused(refusal));
             return;
         }
         rename("robot-worker[" + Printable.of(robotName) + "]");
@@ -146,16 +145,15 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     @Override
     public void welcome(RobotWelcome welcome) throws IOException {
         stepMessages = welcome.stepMessages();
-        writingSince = System.nanoTime();
+        clock.writing();
         try {
             connection.write(welcome);
             connection.flush();
         } catch (IOException e) {
             throw cutOffOr(e);
         } finally {
-            writingSince = 0;
+            clock.written();
         }
-        coordinator.writeWatchdog().watch(this);
         writer = coordinator.design().writer(this, connection, stepMessages, robotName);
     }
 
@@ -164,14 +162,14 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     public void begin(long firstStep) throws IOException {
         first = firstStep;
         given = firstStep;
-        writingSince = System.nanoTime();
+        clock.writing();
         try {
             connection.writeStep(firstStep);
             connection.flush();
         } catch (IOException e) {
             throw cutOffOr(e);
         } finally {
-            writingSince = 0;
+            clock.written();
         }
     }
 
@@ -189,13 +187,13 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
             w.send(response, nextStep, end);
             return;
         }
-        writingSince = System.nanoTime();
+        clock.writing();
         try {
             RobotWriter.writeResponse(connection, stepMessages, response, nextStep, end);
         } catch (IOException e) {
             throw cutOffOr(e);
         } finally {
-            writingSince = 0;
+            clock.written();
         }
     }
 
@@ -210,11 +208,11 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
             if (w != null) {
                 w.sendEnd(end, midStep);
             } else {
-                writingSince = System.nanoTime();
+                clock.writing();
                 try {
                     RobotWriter.writeEnd(connection, end, midStep);
                 } finally {
-                    writingSince = 0;
+                    clock.written();
                 }
             }
         } catch (IOException | RuntimeException e) {
@@ -230,31 +228,9 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     }
 
     private volatile boolean exitedFlag;
-    /** When the loop's current write to this robot began, or 0. */
-    private volatile long writingSince;
-    /** Why the write watchdog cut this robot off, or null. */
-    private volatile String cutOff;
-
-    @Override
-    public long writingFor(long now) {
-        long since = writingSince;
-        return since == 0 ? 0 : now - since;
-    }
-
-    @Override
-    public void cutOff(String why) {
-        cutOff = why;
-        drop();
-    }
-
-    @Override
-    public String label() {
-        return name();
-    }
-
-    /** The failure of a write: the watchdog's reason if it cut this robot off, else {@code e} itself. */
+    /** The failure of a write: the watch's reason if it cut this robot off, else {@code e} itself. */
     private IOException cutOffOr(IOException e) {
-        String why = cutOff;
+        String why = clock.cutOffReason();
         return why == null ? e : new IOException(why, e);
     }
 
@@ -262,7 +238,6 @@ final class RobotClientWorker extends ClientWorker implements RobotPeer, WriteWa
     protected void exited(String why) {
         exitedFlag = true;
         firstRead.countDown();
-        coordinator.writeWatchdog().forget(this);
         SharedConnection s = shared;
         if (s != null) {
             s.exited(why);

@@ -66,10 +66,15 @@ final class RobotWriter {
                 if (o == STOP) {
                     return;
                 }
-                if (o.response() == null) {
-                    writeEnd(connection, o.end(), o.midStep());
-                } else {
-                    writeResponse(connection, stepMessages, o.response(), o.nextStep(), o.end());
+                worker.clock().writing();
+                try {
+                    if (o.response() == null) {
+                        writeEnd(connection, o.end(), o.midStep());
+                    } else {
+                        writeResponse(connection, stepMessages, o.response(), o.nextStep(), o.end());
+                    }
+                } finally {
+                    worker.clock().written();
                 }
             }
         } catch (InterruptedException e) {

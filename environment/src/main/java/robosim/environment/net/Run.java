@@ -112,7 +112,7 @@ final class Run {
         this.roster = new Roster(spec);
         this.geometry = new GeometryLink(settings);
         this.control = new RunControl(settings.speed(), spec.timeStepMs(), this::publishPhase);
-        this.viewers = new Viewers(settings.writeTimeoutMs(), listener);
+        this.viewers = new Viewers();
         this.releasePoint = new ReleasePoint(control, viewers, record, listener, settings.speed());
         this.stepTimeoutNanos = settings.stepTimeoutMs() <= 0 ? Long.MAX_VALUE : settings.stepTimeoutMs() * 1_000_000L;
     }
@@ -444,9 +444,8 @@ final class Run {
 
     // ---- deadlines -----------------------------------------------------------------------------------------
 
-    /** Deadlines: a viewer stuck in a write, a Geometry process late with its answer, robots late with requests. */
+    /** Deadlines: a Geometry process late with its answer, robots late with requests. */
     void tick(long now) {
-        viewers.dropStuck(now);
         GeometryClientWorker late = geometry.overdue(now);
         if (late != null) {
             LOG.warn("Geometry process has not answered within {} ms (step {}); dropping it",
@@ -937,6 +936,13 @@ final class Run {
         } else {
             viewer.queue().state(new RunState(released, phase == Phase.WAITING ? RunState.Phase.WAITING
                     : control.holding() ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
+        }
+    }
+
+    /** A viewer's worker has ended; one the connection watch cut off is reported as dropped. */
+    void viewerLeft(ViewerClientWorker viewer, String why, boolean cutOff) {
+        if (viewers.remove(viewer, why) && cutOff) {
+            listener.viewerDropped(viewer.viewerName(), why);
         }
     }
 

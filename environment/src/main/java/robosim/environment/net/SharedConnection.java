@@ -24,7 +24,7 @@ import robosim.protocol.SharedRequests;
  * robot not on this connection, holds more requests than it has robots, or breaks off drops the
  * connection with every robot on it; the other connections go on.
  */
-final class SharedConnection implements WriteWatchdog.Watched {
+final class SharedConnection {
     private static final Logger LOG = LoggerFactory.getLogger(SharedConnection.class);
 
     private final RobotClientWorker worker;
@@ -38,8 +38,6 @@ final class SharedConnection implements WriteWatchdog.Watched {
     private SharedOutput output;
     private boolean pending;
     private volatile boolean closed;
-    private volatile long writingSince;
-    private volatile String cutOff;
 
     SharedConnection(RobotClientWorker worker, ClientWorkerCoordinator coordinator, ObjectConnection connection) {
         this.worker = worker;
@@ -77,7 +75,6 @@ final class SharedConnection implements WriteWatchdog.Watched {
             hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
         }
         worker.stopHandshakeClock();
-        coordinator.writeWatchdog().watch(this); // (from now on a peer that does not read is cut off)
         robots = new SharedRobot[n];
         List<LoopEvent.RobotJoins> joins = new ArrayList<>();
         java.util.Set<String> names = new java.util.HashSet<>();
@@ -194,19 +191,19 @@ final class SharedConnection implements WriteWatchdog.Watched {
             write();
         } catch (IOException e) {
             closed = true; // (its reader reports the robots gone; nothing more is written meanwhile)
-            String why = cutOff != null ? cutOff : e.getMessage();
+            String why = worker.clock().cutOffReason() != null ? worker.clock().cutOffReason() : e.getMessage();
             LOG.info("{}: could not write to its robots: {}", worker.label(), Printable.of(String.valueOf(why)));
             worker.drop();
         }
     }
 
     private void write() throws IOException {
-        writingSince = System.nanoTime();
+        worker.clock().writing();
         try {
             connection.write(replies);
             connection.flush();
         } finally {
-            writingSince = 0;
+            worker.clock().written();
             replies.clear();
         }
     }
@@ -218,7 +215,6 @@ final class SharedConnection implements WriteWatchdog.Watched {
     /** The worker's thread, once the connection has closed: each of its robots in the world has left. */
     void exited(String why) {
         closed = true;
-        coordinator.writeWatchdog().forget(this);
         List<LoopEvent> leaves = new ArrayList<>();
         for (SharedRobot r : robots) {
             if (r != null && r.index() >= 0) {
@@ -228,22 +224,5 @@ final class SharedConnection implements WriteWatchdog.Watched {
         if (!leaves.isEmpty()) {
             coordinator.post(new LoopEvent.Batch(leaves));
         }
-    }
-
-    @Override
-    public long writingFor(long now) {
-        long since = writingSince;
-        return since == 0 ? 0 : now - since;
-    }
-
-    @Override
-    public void cutOff(String why) {
-        cutOff = why;
-        worker.drop();
-    }
-
-    @Override
-    public String label() {
-        return worker.label();
     }
 }

@@ -9,7 +9,7 @@ import org.slf4j.LoggerFactory;
  * advances the step. It takes events from its {@link Inbox}, has each apply itself to the {@link Run} and
  * lets the run move on as far as it can, and between events keeps the deadlines (pace, step timeout,
  * Geometry timeout, viewer write timeout). It blocks on its inbox, timed to the next deadline, and in the
- * run's own writes to robots, which the {@link WriteWatchdog} cuts short past the write timeout; it holds
+ * run's own writes to robots, which the {@link ConnectionWatch} cuts short past the write timeout; it holds
  * no lock, ever. What it decides lives in the {@link Run}.
  */
 final class SimulationLoop implements Runnable {

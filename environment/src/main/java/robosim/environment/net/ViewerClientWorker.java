@@ -14,8 +14,8 @@ import robosim.protocol.WorldSnapshot;
 /**
  * Serves one viewer from its own thread, {@code viewer-worker[n]}: the snapshot, then what its
  * {@link ViewerQueue} holds (updates, run states, the end). The loop only offers to the queue, never
- * writes to this socket; a write this thread cannot finish within the viewer write timeout gets the
- * viewer dropped by the loop with a logged reason ({@link #writingFor}).
+ * writes to this socket; a viewer that does not take a write within the write timeout is cut off by the
+ * {@link ConnectionWatch}, and this worker then tells the loop it has gone.
  */
 final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     /**
@@ -27,7 +27,6 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
 
     private final CountDownLatch done = new CountDownLatch(1);
     private volatile ViewerQueue queue;
-    private volatile ViewerWrites writes;
 
     ViewerClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
         super(coordinator, socket, "viewer-worker[" + serial + "]");
@@ -40,7 +39,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        writes = new ViewerWrites(connection);
+        ViewerWrites writes = new ViewerWrites(connection, clock);
         ViewerHello hello = connection.read(ViewerHello.class);
         String refusal = heardHello("viewer");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
@@ -91,12 +90,6 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     }
 
     @Override
-    public long writingFor(long now) {
-        ViewerWrites w = writes;
-        return w == null ? 0 : w.writingFor(now);
-    }
-
-    @Override
     public String viewerName() {
         return name();
     }
@@ -106,12 +99,17 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
         return done.await(nanos, TimeUnit.NANOSECONDS);
     }
 
+    /** Any thread, once the run is over: no longer one of its viewers. */
+    void leftAfterTheRun(String why) {
+        coordinator.viewerLeft(this, why);
+    }
+
     @Override
     protected void exited(String why) {
         ViewerQueue q = queue;
         if (q != null) {
             q.close();
-            coordinator.viewerLeft(this, why);
+            coordinator.post(new LoopEvent.ViewerLeaves(this, why, clock.cutOffReason() != null));
         }
         done.countDown();
     }

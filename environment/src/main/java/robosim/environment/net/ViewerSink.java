@@ -9,9 +9,6 @@ public interface ViewerSink {
     /** Its queue, once it has said hello. */
     ViewerQueue queue();
 
-    /** How long its current write has taken so far, ns; 0 when it is not writing. */
-    long writingFor(long now);
-
     /** Its name for log lines, e.g. {@code viewer-worker[3]}. */
     String viewerName();
 

@@ -8,15 +8,16 @@ import robosim.protocol.WorldSnapshot;
 
 /**
  * A viewer's writing side, on its own thread (the Environment's viewer workers, a replay's viewers): the
- * snapshot, then what its {@link ViewerQueue} holds until the end, each write timed so that whoever
- * publishes can drop a viewer stuck in one ({@link #writingFor}).
+ * snapshot, then what its {@link ViewerQueue} holds until the end, each write on the connection's
+ * {@link ConnectionClock}, so the {@link ConnectionWatch} cuts off a viewer stuck in one.
  */
 public final class ViewerWrites {
     private final ObjectConnection connection;
-    private volatile long writingSince;
+    private final ConnectionClock clock;
 
-    public ViewerWrites(ObjectConnection connection) {
+    public ViewerWrites(ObjectConnection connection, ConnectionClock clock) {
         this.connection = connection;
+        this.clock = clock;
     }
 
     /** Sends {@code first}, then what {@code queue} holds, up to and with the end; {@code roomFreed} when it makes room. */
@@ -35,18 +36,12 @@ public final class ViewerWrites {
     }
 
     public void send(Externalizable message) throws IOException {
-        writingSince = System.nanoTime();
+        clock.writing();
         try {
             connection.write(message);
             connection.flush();
         } finally {
-            writingSince = 0;
+            clock.written();
         }
-    }
-
-    /** How long the current write has taken so far, ns; 0 when none is under way. */
-    public long writingFor(long now) {
-        long since = writingSince;
-        return since == 0 ? 0 : now - since;
     }
 }

@@ -14,33 +14,28 @@ import robosim.protocol.SimulationEnd;
 
 /**
  * The viewers of a run, as the loop sees them: it offers each step's poses and every change of run
- * state to their {@link ViewerQueue}s and never waits on one. A viewer whose worker has not finished a
- * write within the viewer write timeout is dropped with a logged reason. Joins, publication and drops
- * happen on the loop thread; a viewer whose worker ends removes itself (also after the run); the list is
- * safe for both.
+ * state to their {@link ViewerQueue}s and never waits on one (a viewer that does not take a write within
+ * the write timeout is cut off by the {@link ConnectionWatch}, and its worker then removes it). Joins and
+ * publication happen on the loop thread; a viewer whose worker ends removes itself (also after the run);
+ * the list is safe for both.
  */
 public final class Viewers {
     private static final Logger LOG = LoggerFactory.getLogger(Viewers.class);
 
     private final List<ViewerSink> viewers = new CopyOnWriteArrayList<>();
-    private final long writeTimeoutNanos;
-    private final RunListener listener;
-
-    /** {@code writeTimeoutMs}: a write longer than this drops its viewer (0: never); {@code listener} hears of drops. */
-    public Viewers(long writeTimeoutMs, RunListener listener) {
-        this.writeTimeoutNanos = writeTimeoutMs <= 0 ? Long.MAX_VALUE : writeTimeoutMs * 1_000_000L;
-        this.listener = listener;
-    }
 
     public void add(ViewerSink viewer) {
         viewers.add(viewer);
         LOG.info("{} connected ({} viewer(s))", viewer.viewerName(), viewers.size());
     }
 
-    public void remove(ViewerSink viewer, String why) {
+    /** {@code viewer}'s worker has ended, for {@code why}; true if it was one of these viewers. Any thread. */
+    public boolean remove(ViewerSink viewer, String why) {
         if (viewers.remove(viewer)) {
             LOG.info("{} disconnected: {}", viewer.viewerName(), Printable.of(why));
+            return true;
         }
+        return false;
     }
 
     public boolean isEmpty() {
@@ -87,20 +82,6 @@ public final class Viewers {
     public void end(SimulationEnd end) {
         for (ViewerSink v : viewers) {
             v.queue().end(end);
-        }
-    }
-
-    /** Drops every viewer stuck in one write for longer than the write timeout. */
-    public void dropStuck(long now) {
-        for (ViewerSink v : viewers) {
-            long writing = v.writingFor(now);
-            if (writing > writeTimeoutNanos && viewers.remove(v)) {
-                String why = "did not take a write within " + writeTimeoutNanos / 1_000_000 + " ms";
-                LOG.warn("{} dropped: {}", v.viewerName(), why);
-                v.queue().close();
-                v.drop();
-                listener.viewerDropped(v.viewerName(), why);
-            }
         }
     }
 

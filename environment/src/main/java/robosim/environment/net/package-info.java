@@ -1,31 +1,49 @@
 /**
- * The Environment's client interface: sockets and threads only, no world logic. One thread,
- * {@code simulation-loop} ({@link robosim.environment.net.SimulationLoop}), owns simulation time; every
- * other thread posts events to it. The threads of this package, each named:
- * <ul>
- * <li>{@code simulation-loop}: every step (gather, core, Geometry link, responses, viewers, pace, pause,
- *     deadlines, the end); blocks on its event queue, timed to its next deadline, in its writes to
- *     robots and shared connections (one frame each after every event), which the write watchdog
- *     bounds, and on a full recording queue.</li>
- * <li>{@code robot-worker[name]} (one per robot): the handshake, then reads its robot's requests; blocks
- *     in its socket read.</li>
- * <li>{@code robot-worker[shared #n]} (one per shared connection, several robots of one process): every
- *     robot's hello, then each frame of requests, posted as one event; blocks in its socket read.</li>
- * <li>{@code robot-writer[name]} ({@code TWO_THREADS}): writes what the loop queues for its robot.</li>
- * <li>{@code stepper} ({@code SEQUENTIAL}): reads every robot's request in world order.</li>
- * <li>{@code geometry-worker}: the Geometry connection - the world, each step's round trip, the end.</li>
- * <li>{@code viewer-worker[n]} (one per viewer): the snapshot, then its bounded, coalescing queue.</li>
- * <li>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}: accept connections, and
- *     close at once one over the port's cap.</li>
- * <li>{@code handshake-deadlines}: closes a connection whose hello is not accepted within the handshake
- *     timeout of its arrival, however slowly it sends.</li>
- * <li>{@code recorder} ({@code --record}): writes the run's recording from the queue the loop fills after
- *     each step; the loop waits for it only when the disk has fallen a whole queue behind.</li>
- * <li>{@code write-watchdog}: cuts off a robot that has not taken one of the loop's writes within the
- *     write timeout (the loop writes responses itself, so it cannot time its own writes).</li>
- * </ul>
+ * The Environment's client interface: sockets and threads only, no world logic (that is the core's). The
+ * {@link robosim.environment.net.ClientWorkerCoordinator} starts these threads, each named; one of them,
+ * {@code simulation-loop}, owns simulation time and every other posts events to it through its
+ * {@link robosim.environment.net.Inbox}. No lock is held across a socket read or write, a sleep or a wait.
+ * This is the one list of them; other pages link here.
+ *
+ * <table>
+ * <caption>The Environment's threads</caption>
+ * <tr><th>thread</th><th>code</th><th>what it does</th><th>where it blocks</th></tr>
+ * <tr><td>{@code simulation-loop}</td><td>{@link robosim.environment.net.SimulationLoop},
+ *     {@link robosim.environment.net.Run}</td><td>every step (collect, resolve, release), the roster, pace,
+ *     pause, the robots' deadlines, the end</td><td>its inbox, timed to the next deadline; its writes to
+ *     robots and shared connections (one frame each after every event), which the connection watch bounds;
+ *     a full recording queue</td></tr>
+ * <tr><td>{@code robot-worker[#n]}, then {@code robot-worker[name]}</td><td>{@link
+ *     robosim.environment.net.RobotClientWorker}</td><td>one per robot connection: the handshake, then its
+ *     robot's requests, each posted</td><td>its socket read</td></tr>
+ * <tr><td>{@code robot-worker[shared #n]}</td><td>{@link robosim.environment.net.SharedConnection}</td>
+ *     <td>one per shared connection (several robots of one process): every robot's hello, then each frame
+ *     of requests, posted as one event</td><td>its socket read</td></tr>
+ * <tr><td>{@code robot-writer[name]}</td><td>{@link robosim.environment.net.RobotWriter}
+ *     ({@code TWO_THREADS})</td><td>writes what the loop queues for its robot</td><td>its queue; its socket
+ *     write</td></tr>
+ * <tr><td>{@code stepper}</td><td>{@link robosim.environment.net.SequentialReader} ({@code SEQUENTIAL})</td>
+ *     <td>reads every robot's request in world order</td><td>each robot's socket read</td></tr>
+ * <tr><td>{@code geometry-worker}</td><td>{@link robosim.environment.net.GeometryClientWorker}</td><td>the
+ *     Geometry connection: the world, each step's round trip, the end</td><td>its task queue; the round
+ *     trip</td></tr>
+ * <tr><td>{@code viewer-worker[n]}</td><td>{@link robosim.environment.net.ViewerClientWorker}</td><td>one
+ *     per viewer: the snapshot, then its bounded, coalescing queue</td><td>its queue; its socket
+ *     write</td></tr>
+ * <tr><td>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}</td><td>{@link
+ *     robosim.environment.net.Acceptors}</td><td>accept connections; close at once one over the port's
+ *     cap</td><td>accept</td></tr>
+ * <tr><td>{@code connection-watch}</td><td>{@link robosim.environment.net.ConnectionWatch}</td><td>cuts off
+ *     any connection (robot, shared, viewer, Geometry) that misses its handshake deadline or does not take a
+ *     write within the write timeout</td><td>sleeps between looks</td></tr>
+ * <tr><td>{@code recorder}</td><td>{@link robosim.environment.net.RunRecorder} ({@code --record})</td>
+ *     <td>writes the recording from the queue the loop fills after each step</td><td>its queue; the
+ *     disk</td></tr>
+ * </table>
  * With {@code --no-geometry} the geometry library's sonar pass may also use one worker of the JVM's common
  * fork-join pool on the loop's behalf (its package-info says when); the loop waits for it within the step.
- * No lock is held across a socket read or write, a sleep or a wait.
+ * A replay ({@code robosim.environment.replay}) has its own clock thread and uses this package's
+ * {@link robosim.environment.net.Inbox}, {@link robosim.environment.net.Viewers} and
+ * {@link robosim.environment.net.ConnectionWatch}.
  */
 package robosim.environment.net;

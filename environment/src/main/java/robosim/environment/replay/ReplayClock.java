@@ -181,9 +181,7 @@ public final class ReplayClock {
         try {
             while (state != ReplayStatus.State.ENDED) {
                 inbox.runNext(waitNanos(System.nanoTime()));
-                long now = System.nanoTime();
-                viewers.dropStuck(now);
-                advance(now);
+                advance(System.nanoTime());
             }
         } catch (InterruptedException | RuntimeException | Error e) {
             LOG.error("the replay stops: {}", e.toString());

@@ -106,14 +106,14 @@ public final class ReplayMain implements Callable<Integer> {
                     + "set ROBOSIM_KEYS to a directory made by scripts/make-keys.sh");
             return 2;
         }
-        Viewers viewers = new Viewers(writeTimeoutMs, new RunListener() { });
+        Viewers viewers = new Viewers();
         ReplayClock clock = new ReplayClock(recording, viewers, speed, exitAtEnd, paused);
         ReplayPort port = null;
         ControlServer control = null;
         WebViewerServer web = null;
         try {
             port = new ReplayPort(bindAddress, viewerPort, clock, recording.snapshot().robotNames(), keys,
-                    maxConnections, handshakeTimeoutMs, resetEvery);
+                    maxConnections, handshakeTimeoutMs, writeTimeoutMs, resetEvery);
             if (controlPort >= 0) {
                 control = new ControlServer(new ReplayCommands(clock, file), keys, handshakeTimeoutMs);
                 control.start(bindAddress, controlPort);

@@ -10,20 +10,21 @@ import java.net.Socket;
 import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.util.List;
-import java.util.concurrent.Future;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.environment.net.ConnectionClock;
+import robosim.environment.net.ConnectionWatch;
 import robosim.protocol.SimulationKeys;
 
 /**
  * A replay's viewer port: the {@code accept-viewers} thread hands each connection to a new
  * {@link ReplayViewer}, with the bounds the Environment's ports have: at most {@code maxConnections} at
- * once (one more is closed at once, logged at most once a second), and a handshake deadline kept by the
- * {@code handshake-deadlines} thread, however slowly a stranger's bytes trickle in.
+ * once (one more is closed at once, logged at most once a second), and the same {@link ConnectionWatch}:
+ * each viewer's handshake deadline from its arrival, however slowly a stranger's bytes trickle in, and its
+ * write timeout.
  */
 final class ReplayPort implements Closeable {
     private static final Logger LOG = LoggerFactory.getLogger(ReplayPort.class);
@@ -33,13 +34,10 @@ final class ReplayPort implements Closeable {
     private final SimulationKeys keys;
     private final int maxConnections;
     private final int handshakeMs;
+    private final long writeMs;
+    private final ConnectionWatch watch;
     private final int resetEvery;
     private final AtomicInteger open = new AtomicInteger();
-    private final ScheduledThreadPoolExecutor deadlines = new ScheduledThreadPoolExecutor(1, r -> {
-        Thread t = new Thread(r, "handshake-deadlines");
-        t.setDaemon(true);
-        return t;
-    });
     /** The recorded robots' names, world order: what a viewer may watch. */
     private final List<String> robots;
     private long lastRefusalLog;
@@ -47,7 +45,7 @@ final class ReplayPort implements Closeable {
 
     /** Binds {@code port} on {@code bind}; a port in use is a {@link BindException} naming it. */
     ReplayPort(InetAddress bind, int port, ReplayClock clock, List<String> robots, SimulationKeys keys,
-            int maxConnections, int handshakeMs, int resetEvery) throws IOException {
+            int maxConnections, int handshakeMs, long writeMs, int resetEvery) throws IOException {
         ServerSocketChannel channel = ServerSocketChannel.open();
         channel.setOption(StandardSocketOptions.SO_REUSEADDR, true);
         try {
@@ -62,16 +60,18 @@ final class ReplayPort implements Closeable {
         this.keys = keys;
         this.maxConnections = maxConnections;
         this.handshakeMs = handshakeMs;
+        this.writeMs = writeMs;
         this.resetEvery = resetEvery;
-        deadlines.setRemoveOnCancelPolicy(true);
+        this.watch = new ConnectionWatch(handshakeMs, writeMs);
     }
 
     int port() {
         return server.getLocalPort();
     }
 
-    /** Starts the {@code accept-viewers} thread. */
+    /** Starts the {@code accept-viewers} and {@code connection-watch} threads. */
     void accept() {
+        watch.start();
         Thread t = new Thread(this::acceptLoop, "accept-viewers");
         t.setDaemon(true);
         t.start();
@@ -100,18 +100,17 @@ final class ReplayPort implements Closeable {
                 }
                 continue;
             }
-            Future<?> deadline = null;
+            ReplayViewer v = null;
             try {
-                ReplayViewer v = new ReplayViewer(s, ++serial, clock, robots, keys, resetEvery, open::decrementAndGet);
-                deadline = handshakeMs <= 0 ? null
-                        : deadlines.schedule(v::handshakeExpired, handshakeMs, TimeUnit.MILLISECONDS);
-                v.deadline(deadline);
+                v = new ReplayViewer(s, ++serial, clock, robots, keys, resetEvery, new ConnectionClock(handshakeMs,
+                        writeMs), watch, open::decrementAndGet);
+                watch.watch(v);
                 Thread t = new Thread(v, v.viewerName());
                 t.setDaemon(true);
                 t.start();
-            } catch (RuntimeException | OutOfMemoryError e) { // closing (the timer is shut); out of threads
-                if (deadline != null) {
-                    deadline.cancel(false);
+            } catch (RuntimeException | OutOfMemoryError e) { // out of threads
+                if (v != null) {
+                    watch.forget(v);
                 }
                 open.decrementAndGet();
                 closeQuietly(s);
@@ -137,6 +136,6 @@ final class ReplayPort implements Closeable {
         } catch (IOException ignored) {
             // closing anyway
         }
-        deadlines.shutdown();
+        watch.stopWhenIdle();
     }
 }

@@ -6,15 +6,15 @@ import java.net.Socket;
 import java.util.List;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.ExecutionException;
-import java.util.concurrent.Future;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
-import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.net.Printable;
 import robosim.environment.net.ViewerQueue;
 import robosim.environment.net.ViewerSink;
+import robosim.environment.net.ConnectionClock;
+import robosim.environment.net.ConnectionWatch;
 import robosim.environment.net.ViewerWrites;
 import robosim.protocol.Challenge;
 import robosim.protocol.Limits;
@@ -34,14 +34,11 @@ import robosim.protocol.WorldSnapshot;
  * what its {@link ViewerQueue} holds until the end. A fault drops this viewer with a logged reason; the
  * replay goes on.
  */
-final class ReplayViewer implements ViewerSink, Runnable {
+final class ReplayViewer implements ViewerSink, ConnectionWatch.Watched, Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(ReplayViewer.class);
     /** As the Environment's viewer worker: a viewer that stops reading blocks this thread after this much. */
     static final int SEND_BUFFER_BYTES = 64 * 1024;
     private static final long JOIN_LIMIT_MS = 30_000;
-    private static final int RUNNING = 0;
-    private static final int HELLO_IN = 1;
-    private static final int EXPIRED = 2;
 
     private final Socket socket;
     private final String name;
@@ -49,9 +46,9 @@ final class ReplayViewer implements ViewerSink, Runnable {
     private final SimulationKeys keys;
     private final int resetEvery;
     private final Runnable release;
-    private final AtomicInteger handshake = new AtomicInteger(RUNNING);
+    private final ConnectionClock connectionClock;
+    private final ConnectionWatch watch;
     private final CountDownLatch done = new CountDownLatch(1);
-    private volatile Future<?> deadline;
     private volatile ObjectConnection connection;
     private volatile ViewerQueue queue;
     private volatile ViewerWrites writes;
@@ -59,7 +56,9 @@ final class ReplayViewer implements ViewerSink, Runnable {
     private final List<String> robots;
 
     ReplayViewer(Socket socket, int serial, ReplayClock clock, List<String> robots, SimulationKeys keys, int resetEvery,
-            Runnable release) {
+            ConnectionClock connectionClock, ConnectionWatch watch, Runnable release) {
+        this.connectionClock = connectionClock;
+        this.watch = watch;
         this.socket = socket;
         this.robots = robots;
         this.name = "replay-viewer[" + serial + "]";
@@ -69,16 +68,14 @@ final class ReplayViewer implements ViewerSink, Runnable {
         this.release = release;
     }
 
-    /** Accept thread, before the thread starts: what closes it if its hello is not in by then. */
-    void deadline(Future<?> d) {
-        deadline = d;
+    @Override
+    public ConnectionClock clock() {
+        return connectionClock;
     }
 
-    /** The handshake deadline has passed: closed, unless its hello came in first. */
-    void handshakeExpired() {
-        if (handshake.compareAndSet(RUNNING, EXPIRED)) {
-            drop();
-        }
+    @Override
+    public String label() {
+        return name;
     }
 
     @Override
@@ -87,21 +84,18 @@ final class ReplayViewer implements ViewerSink, Runnable {
         try {
             socket.setSendBufferSize(SEND_BUFFER_BYTES);
             connection = ObjectConnection.server(socket, resetEvery, keys);
-            writes = new ViewerWrites(connection);
+            writes = new ViewerWrites(connection, connectionClock);
             connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
             serve();
         } catch (IOException e) {
-            why = handshake.get() == EXPIRED ? "no hello within the handshake deadline"
+            why = connectionClock.cutOffReason() != null ? connectionClock.cutOffReason()
                     : e instanceof EOFException ? "the viewer closed the connection" : e.getMessage();
             LOG.info("{}: {}", name, Printable.of(why));
         } catch (InterruptedException e) {
             why = "interrupted";
             Thread.currentThread().interrupt();
         } finally {
-            Future<?> d = deadline;
-            if (d != null) {
-                d.cancel(false);
-            }
+            watch.forget(this);
             drop();
             release.run();
             ViewerQueue q = queue;
@@ -125,8 +119,8 @@ final class ReplayViewer implements ViewerSink, Runnable {
             refusal = keys.proves("viewer", nonce, connection.read(Proof.class).mac()) ? null
                     : "it did not prove the shared secret";
         }
-        if (!handshake.compareAndSet(RUNNING, HELLO_IN)) {
-            throw new IOException("no hello within the handshake deadline");
+        if (!connectionClock.handshakeOver()) {
+            throw new IOException(connectionClock.cutOffReason());
         }
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (this replay speaks "
@@ -159,12 +153,6 @@ final class ReplayViewer implements ViewerSink, Runnable {
     @Override
     public ViewerQueue queue() {
         return queue;
-    }
-
-    @Override
-    public long writingFor(long now) {
-        ViewerWrites w = writes;
-        return w == null ? 0 : w.writingFor(now);
     }
 
     @Override

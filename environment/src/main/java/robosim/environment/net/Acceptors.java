@@ -9,7 +9,6 @@ import java.net.StandardSocketOptions;
 import java.nio.channels.ServerSocketChannel;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.locks.LockSupport;
@@ -19,13 +18,12 @@ import org.slf4j.LoggerFactory;
 
 /**
  * The listening sockets (robots, viewers, and Geometry unless it is in-process), their {@code accept-*}
- * threads, which hand each accepted socket to a new worker thread, and what bounds a stranger: a cap on
- * the connections each port holds at once (one more is closed at once, with a logged line at most once
- * a second per port), and a deadline on every handshake, kept by the {@code handshake-deadlines} thread,
- * which closes a connection whose hello has not been accepted in time however slowly it trickles in.
+ * threads, which hand each accepted socket to a new worker thread, and the cap on the connections each
+ * port holds at once (one more is closed at once, with a logged line at most once a second per port). Each
+ * connection's handshake deadline runs from here, on its {@link ConnectionClock}.
  */
-final class Listeners {
-    private static final Logger LOG = LoggerFactory.getLogger(Listeners.class);
+final class Acceptors {
+    private static final Logger LOG = LoggerFactory.getLogger(Acceptors.class);
 
     /** One port's connections, against its cap. */
     private static final class Held {
@@ -45,17 +43,10 @@ final class Listeners {
     private final ClientWorkerCoordinator coordinator;
     private final List<ServerSocket> servers = new ArrayList<>();
     private final List<Thread> acceptors = new ArrayList<>();
-    private final ScheduledThreadPoolExecutor deadlines;
     private int serial;
 
-    Listeners(ClientWorkerCoordinator coordinator) {
+    Acceptors(ClientWorkerCoordinator coordinator) {
         this.coordinator = coordinator;
-        this.deadlines = new ScheduledThreadPoolExecutor(1, r -> {
-            Thread t = new Thread(r, "handshake-deadlines");
-            t.setDaemon(true);
-            return t;
-        });
-        deadlines.setRemoveOnCancelPolicy(true); // a handshake done in time leaves nothing queued
     }
 
     /** Binds every port; one in use is a {@link BindException} naming it (and nothing stays bound). */
@@ -111,20 +102,16 @@ final class Listeners {
                         refused(held);
                         continue;
                     }
-                    java.util.concurrent.Future<?> deadline = null;
+                    ClientWorker w = null;
                     try {
-                        ClientWorker w;
                         synchronized (this) {
                             w = factory.apply(s);
                         }
-                        int ms = coordinator.settings().handshakeTimeoutMs();
-                        deadline = ms <= 0 ? null
-                                : deadlines.schedule(() -> w.handshakeExpired(ms), ms, TimeUnit.MILLISECONDS);
-                        w.admit(held.open::decrementAndGet, deadline);
+                        w.admit(held.open::decrementAndGet);
                         w.start();
-                    } catch (RuntimeException | OutOfMemoryError e) { // closing (the timer is shut); out of threads
-                        if (deadline != null) {
-                            deadline.cancel(false);
+                    } catch (RuntimeException | OutOfMemoryError e) { // out of threads
+                        if (w != null) {
+                            coordinator.watch().forget(w);
                         }
                         held.open.decrementAndGet();
                         s.close();
@@ -171,7 +158,6 @@ final class Listeners {
                 // closing anyway
             }
         }
-        deadlines.shutdown(); // (handshakes still under way keep their deadlines)
     }
 
     /** Closes the sockets and waits until the accept threads have left them, so the ports are free. */
