@@ -45,18 +45,21 @@ interface Design {
      * A robot worker's thread, once its robot is welcomed: reads that robot's requests and posts them to the
      * loop until the connection ends (or leaves them to whoever reads them in this design).
      */
-    default void read(RobotClientWorker worker, ClientWorkerCoordinator coordinator)
+    default void read(RobotConnection robot, ClientWorkerCoordinator coordinator)
             throws IOException, InterruptedException {
-        for (long k = RobotClientWorker.FIRST; ; k++) {
-            robosim.protocol.StepRequest request = worker.readRequest(k);
+        for (long k = RobotConnection.FIRST; ; k++) {
+            robosim.protocol.StepRequest request = robot.readRequest(k);
             k = request.step();
-            coordinator.post(new LoopEvent.Request(worker, request));
+            coordinator.post(new LoopEvent.Request(robot, request));
         }
     }
 
-    /** Loop thread, as robot {@code worker} is welcomed: the writer of its responses, or null (the loop writes them). */
-    default RobotWriter writer(RobotClientWorker worker, robosim.protocol.ObjectConnection connection,
+    /**
+     * Loop thread, as {@code robot} (over a socket of its own) is welcomed: what writes its responses from now
+     * on; {@code loopWrites}, the loop's own writes, unless this design has a thread for them.
+     */
+    default RobotOutput output(RobotConnection robot, LoopWrites loopWrites, robosim.protocol.ObjectConnection connection,
             boolean stepMessages, String robotName) {
-        return null;
+        return loopWrites;
     }
 }

@@ -44,7 +44,7 @@ final class GeometryClientWorker extends ClientWorker {
     @Override
     protected void serve() throws IOException, InterruptedException {
         GeometryHello hello = connection.read(GeometryHello.class);
-        String refusal = heardHello("geometry");
+        String refusal = handshake.heard("geometry");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                     + Protocol.VERSION + ")";
@@ -52,14 +52,14 @@ final class GeometryClientWorker extends ClientWorker {
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
             coordinator.post(new LoopEvent.GeometryJoins(this, verdict));
-            refusal = awaitVerdict(verdict);
+            refusal = handshake.verdict(verdict);
         }
         if (refusal != null) {
-            logRefused(refusal);
+            handshake.refused(refusal);
             send(new SimulationEnd(-1, refusal));
             return;
         }
-        handshakeDone();
+        handshake.accepted();
         while (true) {
             Object task = tasks.poll(IDLE_LOOK_MS, TimeUnit.MILLISECONDS);
             if (task == null) {

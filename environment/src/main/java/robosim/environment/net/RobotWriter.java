@@ -15,22 +15,22 @@ import robosim.protocol.StepResponse;
  * parallel and the loop never writes to that socket. A write that fails closes the connection; the
  * robot's reading thread then fails and reports the departure.
  */
-final class RobotWriter {
+final class RobotWriter implements RobotOutput {
     /** What to send next: a response with the next step, or the end alone. */
     private record Outgoing(StepResponse response, long nextStep, SimulationEnd end, boolean midStep) {
     }
 
     private static final Outgoing STOP = new Outgoing(null, 0, null, false);
 
-    private final RobotClientWorker worker;
+    private final RobotConnection robot;
     private final ObjectConnection connection;
     private final boolean stepMessages;
     /** Lock-step: at most one response is ever outstanding, plus the end and the stop. */
     private final BlockingQueue<Outgoing> outgoing = new ArrayBlockingQueue<>(4);
     private final Thread thread;
 
-    RobotWriter(RobotClientWorker worker, ObjectConnection connection, boolean stepMessages, String robotName) {
-        this.worker = worker;
+    RobotWriter(RobotConnection robot, ObjectConnection connection, boolean stepMessages, String robotName) {
+        this.robot = robot;
         this.connection = connection;
         this.stepMessages = stepMessages;
         this.thread = new Thread(this::writeLoop, "robot-writer[" + Printable.of(robotName) + "]");
@@ -38,11 +38,13 @@ final class RobotWriter {
         thread.start();
     }
 
-    void send(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
+    @Override
+    public void response(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
         enqueue(new Outgoing(response, nextStep, end, true));
     }
 
-    void sendEnd(SimulationEnd end, boolean midStep) throws IOException {
+    @Override
+    public void end(SimulationEnd end, boolean midStep) throws IOException {
         enqueue(new Outgoing(null, 0, end, midStep));
     }
 
@@ -53,7 +55,8 @@ final class RobotWriter {
     }
 
     /** The reading thread is done: lets the writer send what it holds (at most a few seconds), then stops it. */
-    void stop() throws InterruptedException {
+    @Override
+    public void close() throws InterruptedException {
         outgoing.offer(STOP);
         thread.join(TimeUnit.SECONDS.toMillis(5));
         thread.interrupt();
@@ -66,7 +69,7 @@ final class RobotWriter {
                 if (o == STOP) {
                     return;
                 }
-                worker.clock().writing();
+                robot.clock().writing();
                 try {
                     if (o.response() == null) {
                         writeEnd(connection, o.end(), o.midStep());
@@ -74,13 +77,13 @@ final class RobotWriter {
                         writeResponse(connection, stepMessages, o.response(), o.nextStep(), o.end());
                     }
                 } finally {
-                    worker.clock().written();
+                    robot.clock().written();
                 }
             }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         } catch (IOException | RuntimeException e) {
-            worker.drop();
+            robot.drop();
         }
     }
 

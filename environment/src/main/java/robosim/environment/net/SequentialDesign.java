@@ -36,20 +36,20 @@ final class SequentialDesign implements Design {
 
     @Override
     public void begun(ClientWorkerCoordinator coordinator, Roster roster) {
-        List<RobotClientWorker> workers = new ArrayList<>(roster.size());
+        List<RobotConnection> workers = new ArrayList<>(roster.size());
         for (RobotSlot s : roster.all()) {
-            workers.add((RobotClientWorker) s.peer);
+            workers.add((RobotConnection) s.peer);
         }
         SequentialReader.start(coordinator, workers);
     }
 
     @Override
-    public void read(RobotClientWorker worker, ClientWorkerCoordinator coordinator)
+    public void read(RobotConnection robot, ClientWorkerCoordinator coordinator)
             throws IOException, InterruptedException {
         try {
-            coordinator.post(new LoopEvent.Request(worker, worker.readRequest(0)));
+            coordinator.post(new LoopEvent.Request(robot, robot.readRequest(0)));
         } finally {
-            worker.firstRead(); // the stepper may read this connection from now on
+            robot.firstRead(); // the stepper may read this connection from now on
         }
         coordinator.awaitEnd(); // the stepper reads the rest; this thread holds the session
     }

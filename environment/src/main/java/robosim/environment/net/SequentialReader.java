@@ -13,15 +13,15 @@ import java.util.List;
  */
 final class SequentialReader implements Runnable {
     private final ClientWorkerCoordinator coordinator;
-    private final List<RobotClientWorker> robots;
+    private final List<RobotConnection> robots;
 
-    private SequentialReader(ClientWorkerCoordinator coordinator, List<RobotClientWorker> robots) {
+    private SequentialReader(ClientWorkerCoordinator coordinator, List<RobotConnection> robots) {
         this.coordinator = coordinator;
         this.robots = robots;
     }
 
     /** Starts the {@code stepper} thread over {@code robots} (workers over sockets), in world order. */
-    static void start(ClientWorkerCoordinator coordinator, List<RobotClientWorker> robots) {
+    static void start(ClientWorkerCoordinator coordinator, List<RobotConnection> robots) {
         Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(robots)), "stepper");
         t.setDaemon(true);
         t.start();
@@ -45,7 +45,7 @@ final class SequentialReader implements Runnable {
         List<LoopEvent> batch = new ArrayList<>();
         for (long k = 1; !coordinator.isOver(); k++) {
             boolean anyone = false;
-            for (RobotClientWorker robot : robots) {
+            for (RobotConnection robot : robots) {
                 if (robot.dropped() || coordinator.isOver()) {
                     continue;
                 }

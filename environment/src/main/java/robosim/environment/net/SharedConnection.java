@@ -28,6 +28,7 @@ final class SharedConnection {
     private static final Logger LOG = LoggerFactory.getLogger(SharedConnection.class);
 
     private final RobotClientWorker worker;
+    private final Handshake handshake;
     private final ClientWorkerCoordinator coordinator;
     private final ObjectConnection connection;
     /** Its robots by slot; null where one was refused. */
@@ -39,8 +40,10 @@ final class SharedConnection {
     private boolean pending;
     private volatile boolean closed;
 
-    SharedConnection(RobotClientWorker worker, ClientWorkerCoordinator coordinator, ObjectConnection connection) {
+    SharedConnection(RobotClientWorker worker, ClientWorkerCoordinator coordinator, ObjectConnection connection,
+            Handshake handshake) {
         this.worker = worker;
+        this.handshake = handshake;
         this.coordinator = coordinator;
         this.connection = connection;
     }
@@ -57,7 +60,7 @@ final class SharedConnection {
                     + "Environment speaks " + Protocol.VERSION + ")");
         }
         int n = header.robots();
-        String refusal = worker.proveSecret("robot");
+        String refusal = handshake.proveSecret("robot");
         if (refusal == null) {
             refusal = coordinator.design().refusesSharedConnections();
         }
@@ -65,7 +68,7 @@ final class SharedConnection {
             for (int slot = 0; slot < n; slot++) {
                 replies.welcome(slot, RobotWelcome.refused(refusal));
             }
-            worker.logRefused("a shared connection of " + n + " robot(s): " + refusal);
+            handshake.refused("a shared connection of " + n + " robot(s): " + refusal);
             write();
             return;
         }
@@ -74,7 +77,7 @@ final class SharedConnection {
         for (int slot = 0; slot < n; slot++) {
             hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
         }
-        worker.stopHandshakeClock();
+        handshake.over();
         robots = new SharedRobot[n];
         List<LoopEvent.RobotJoins> joins = new ArrayList<>();
         java.util.Set<String> names = new java.util.HashSet<>();
@@ -97,13 +100,13 @@ final class SharedConnection {
             joins.add(new LoopEvent.RobotJoins(robots[slot], hello, wanted, new CompletableFuture<>()));
         }
         if (!refused.isEmpty()) {
-            worker.logRefused((n - joins.size()) + " of the " + n + " robots of a shared connection, among them "
+            handshake.refused((n - joins.size()) + " of the " + n + " robots of a shared connection, among them "
                     + String.join("; ", refused));
         }
         if (!joins.isEmpty()) {
             CompletableFuture<Boolean> answered = new CompletableFuture<>();
             coordinator.post(new LoopEvent.SharedJoins(this, joins, answered));
-            if (!worker.awaitVerdict(answered)) { // (the loop never saw them: this thread still owns the frame)
+            if (!handshake.verdict(answered)) { // (the loop never saw them: this thread still owns the frame)
                 joins.forEach(j -> replies.welcome(((SharedRobot) j.worker()).slot(),
                         RobotWelcome.refused("the simulation is over")));
                 joins.clear();
@@ -123,7 +126,7 @@ final class SharedConnection {
             }
             return;
         }
-        worker.handshakeDone();
+        handshake.accepted();
         read();
     }
 

@@ -9,8 +9,8 @@ import robosim.protocol.ObjectConnection;
  */
 final class TwoThreadsDesign implements Design {
     @Override
-    public RobotWriter writer(RobotClientWorker worker, ObjectConnection connection, boolean stepMessages,
-            String robotName) {
-        return new RobotWriter(worker, connection, stepMessages, robotName);
+    public RobotOutput output(RobotConnection robot, LoopWrites loopWrites, ObjectConnection connection,
+            boolean stepMessages, String robotName) {
+        return new RobotWriter(robot, connection, stepMessages, robotName);
     }
 }

@@ -41,7 +41,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     protected void serve() throws IOException, InterruptedException {
         ViewerWrites writes = new ViewerWrites(connection, clock);
         ViewerHello hello = connection.read(ViewerHello.class);
-        String refusal = heardHello("viewer");
+        String refusal = handshake.heard("viewer");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "
                     + "speaks " + Protocol.VERSION + ")";
@@ -52,7 +52,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
                     + "simulation";
         }
         if (refusal != null) {
-            logRefused(refusal);
+            handshake.refused(refusal);
             writes.send(new SimulationEnd(-1, refusal));
             return;
         }
@@ -61,8 +61,8 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
         queue = q;
         CompletableFuture<WorldSnapshot> snapshot = new CompletableFuture<>();
         coordinator.post(new LoopEvent.ViewerJoins(this, snapshot));
-        WorldSnapshot first = awaitVerdict(snapshot);
-        handshakeDone();
+        WorldSnapshot first = handshake.verdict(snapshot);
+        handshake.accepted();
         writes.serve(first, queue, () -> coordinator.post(new LoopEvent.ViewerHasRoom(this)));
     }
 

@@ -1,0 +1,97 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.protocol.Challenge;
+import robosim.protocol.Limits;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Proof;
+import robosim.protocol.SimulationKeys;
+
+/**
+ * One connection's handshake, as its worker thread does it, the same for every kind of client (a robot, a
+ * shared connection, a viewer, Geometry): until it is {@link #accepted} the client is a stranger, held to
+ * {@link Limits#MAX_HELLO_BYTES} a message and to the handshake deadline of its {@link ConnectionClock};
+ * with a shared secret it proves it ({@link #proveSecret}); the loop's verdict on its hello is awaited
+ * within a limit of the Environment's own; a refusal is logged once, its network text escaped. The
+ * worker's thread only.
+ */
+final class Handshake {
+    private static final Logger LOG = LoggerFactory.getLogger(Handshake.class);
+    /** How long a worker waits for the loop's verdict on a hello (the loop never blocks that long), ms. */
+    private static final long VERDICT_LIMIT_MS = 30_000;
+
+    private final ClientWorker worker;
+    private final ObjectConnection connection;
+    private final SimulationKeys keys;
+
+    Handshake(ClientWorker worker, ObjectConnection connection, SimulationKeys keys) {
+        this.worker = worker;
+        this.connection = connection;
+        this.keys = keys;
+        connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
+    }
+
+    /**
+     * Right after the client's hello: the proof of the secret ({@link #proveSecret}), then the handshake
+     * deadline stops (what follows, the loop's verdict, is the Environment's own time, not the client's).
+     * Null if the client proved the secret for {@code role} (or there is none), else the refusal.
+     */
+    String heard(String role) throws IOException {
+        String refusal = proveSecret(role);
+        over();
+        return refusal;
+    }
+
+    /**
+     * With a shared secret, challenges the client (a fresh nonce) and reads its proof, under the handshake
+     * deadline and the stranger's byte cap: null if it proved the secret for {@code role} (or there is none),
+     * else the refusal.
+     */
+    String proveSecret(String role) throws IOException {
+        if (keys == null) {
+            return null;
+        }
+        byte[] nonce = SimulationKeys.nonce();
+        connection.write(new Challenge(nonce));
+        connection.flush();
+        Proof proof = connection.read(Proof.class);
+        return keys.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
+    }
+
+    /** The client's hello is all in: the deadline no longer applies (or it has already cut the client off). */
+    void over() throws IOException {
+        if (!worker.clock().handshakeOver()) {
+            throw new IOException(worker.clock().cutOffReason()); // (the deadline closed the connection just before)
+        }
+    }
+
+    /**
+     * Waits for the loop's answer to the client's hello, at most {@link #VERDICT_LIMIT_MS}; a loop that does
+     * not answer in that time (it never blocks that long) is taken as a refusal.
+     */
+    <T> T verdict(CompletableFuture<T> verdict) throws IOException, InterruptedException {
+        try {
+            return verdict.get(VERDICT_LIMIT_MS, TimeUnit.MILLISECONDS);
+        } catch (TimeoutException e) {
+            throw new IOException("the Environment did not answer its hello in time");
+        } catch (ExecutionException e) {
+            throw new IOException("its hello was not answered: " + e.getCause());
+        }
+    }
+
+    /** The client is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}. */
+    void accepted() {
+        connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
+    }
+
+    /** Logs that the client was refused, and why (network text escaped). */
+    void refused(String why) {
+        LOG.warn("{} refused: {}", worker.label(), Printable.of(why));
+    }
+}

@@ -1,0 +1,83 @@
+package robosim.environment.net;
+
+import java.io.IOException;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepResponse;
+
+/**
+ * {@link RobotOutput} of the report's design: the loop writes each response to the robot's socket itself,
+ * on the connection's {@link ConnectionClock} (a robot that does not take a write in time is cut off by the
+ * {@link ConnectionWatch}, and the write fails with that reason).
+ */
+final class LoopWrites implements RobotOutput {
+    private final ObjectConnection connection;
+    private final ConnectionClock clock;
+    private final boolean stepMessages;
+
+    LoopWrites(ObjectConnection connection, ConnectionClock clock, boolean stepMessages) {
+        this.connection = connection;
+        this.clock = clock;
+        this.stepMessages = stepMessages;
+    }
+
+    @Override
+    public void response(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
+        clock.writing();
+        try {
+            RobotWriter.writeResponse(connection, stepMessages, response, nextStep, end);
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            clock.written();
+        }
+    }
+
+    @Override
+    public void end(SimulationEnd end, boolean midStep) throws IOException {
+        clock.writing();
+        try {
+            RobotWriter.writeEnd(connection, end, midStep);
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            clock.written();
+        }
+    }
+
+    /** Loop thread: the first step number. */
+    void step(long step) throws IOException {
+        clock.writing();
+        try {
+            connection.writeStep(step);
+            connection.flush();
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            clock.written();
+        }
+    }
+
+    /** Loop thread: the welcome. */
+    void welcome(robosim.protocol.RobotWelcome welcome) throws IOException {
+        clock.writing();
+        try {
+            connection.write(welcome);
+            connection.flush();
+        } catch (IOException e) {
+            throw cutOffOr(e);
+        } finally {
+            clock.written();
+        }
+    }
+
+    @Override
+    public void close() {
+    }
+
+    /** The failure of a write: the watch's reason if it cut the robot off, else {@code e} itself. */
+    private IOException cutOffOr(IOException e) {
+        String why = clock.cutOffReason();
+        return why == null ? e : new IOException(why, e);
+    }
+}
