@@ -33,7 +33,7 @@ public final class HardwareSimulator {
 
     private final String name;
     private final RobotType type;
-    private final RobotState state;
+    private final RobotKnowledge state;
     private final ControlLink link = new ControlLink();
     private ObjectConnection connection;
     private RobotWelcome welcome;
@@ -43,7 +43,7 @@ public final class HardwareSimulator {
     public HardwareSimulator(String name, RobotType type) {
         this.name = name;
         this.type = type;
-        this.state = new RobotState(name, type);
+        this.state = new RobotKnowledge(name, type);
     }
 
     /**

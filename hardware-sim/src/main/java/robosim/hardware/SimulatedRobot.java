@@ -9,7 +9,7 @@ import robosim.protocol.SonarSpec;
 
 /** The {@link Robot} the control code gets: blocking calls become {@link Command}s on the link. */
 final class SimulatedRobot implements Robot {
-    private final RobotState state;
+    private final RobotKnowledge state;
     private final ControlLink link;
     private final List<String> robotNames;
     private final long stepMs;
@@ -17,7 +17,7 @@ final class SimulatedRobot implements Robot {
 
     private final List<String> sensorNames;
 
-    SimulatedRobot(RobotState state, ControlLink link, List<String> robotNames, long stepMs, List<String> sensorNames) {
+    SimulatedRobot(RobotKnowledge state, ControlLink link, List<String> robotNames, long stepMs, List<String> sensorNames) {
         this.state = state;
         this.link = link;
         this.sensorNames = List.copyOf(sensorNames);

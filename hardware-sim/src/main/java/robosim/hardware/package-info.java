@@ -4,7 +4,7 @@
  * {@code main}, or one thread per robot in {@code robots.sh}); the control code runs on its own
  * thread, {@code control[name]} (a virtual thread on JDK 21+, see {@link robosim.hardware.ControlThreads}). The two take turns through {@link robosim.hardware.ControlLink}: a
  * step's request is built only once the control code is blocked in a simulator call (or has
- * finished), so runs are deterministic, and the {@link robosim.hardware.RobotState} they share is
+ * finished), so runs are deterministic, and the {@link robosim.hardware.RobotKnowledge} they share is
  * touched by one of them at a time. Exchange modes, one class each besides the default: many robots
  * of one process over one connection on one {@code exchange} thread ({@link robosim.hardware.SharedLink},
  * {@code robots.sh}'s default), many robots with a socket each on one exchange thread

@@ -22,13 +22,13 @@ class SimulatedRobotTest {
         };
         ScriptedEnvironment.run(control, 125, 3);
         assertArrayEquals(new long[] {125, 125}, seen, "before the first step and after it");
-        RobotState state = new RobotState("r1", new Scout());
+        RobotKnowledge state = new RobotKnowledge("r1", new Scout());
         assertEquals(40, new SimulatedRobot(state, new ControlLink(), List.of("r1"), 40, List.of()).stepMs());
     }
 
     @Test
     void sendQueuesBroadcastAddressesEveryoneAndOversizedTextIsRefusedAtOnce() {
-        RobotState state = new RobotState("r1", new ArRobot());
+        RobotKnowledge state = new RobotKnowledge("r1", new ArRobot());
         SimulatedRobot robot = new SimulatedRobot(state, new ControlLink(), List.of("r1", "r2"), 500, List.of());
         robot.send("r2", "hi");
         robot.broadcast("all");

@@ -15,7 +15,7 @@ import robosim.protocol.RobotProperties;
  * @param status the run's state as the viewer knows it (see {@link StatusLine})
  */
 public record Scene(Arena arena, List<ObstacleShape> obstacles, List<String> names, List<RobotProperties> robots,
-        PoseUpdate poses, double[][] trails, double stepsPerSecond, RunStatus status) {
+        PoseUpdate poses, double[][] trails, double stepsPerSecond, ViewedRun status) {
 
     public int robotCount() {
         return names.size();
@@ -26,7 +26,7 @@ public record Scene(Arena arena, List<ObstacleShape> obstacles, List<String> nam
         return poses.step();
     }
 
-    public Scene withStatus(RunStatus newStatus) {
+    public Scene withStatus(ViewedRun newStatus) {
         return new Scene(arena, obstacles, names, robots, poses, trails, stepsPerSecond, newStatus);
     }
 }

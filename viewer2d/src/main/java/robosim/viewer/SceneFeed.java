@@ -31,7 +31,7 @@ public final class SceneFeed implements RunFollower.Listener {
     private long rateNanos;
     private double stepsPerSecond = Double.NaN;
     private PoseUpdate poses;
-    private RunStatus status = RunStatus.of(RunStatus.Kind.WAITING_FOR_ROBOTS);
+    private ViewedRun status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
 
     public SceneFeed(long frameNanos) {
         this.frameNanos = frameNanos;
@@ -65,17 +65,17 @@ public final class SceneFeed implements RunFollower.Listener {
         rateStep = -1;
         stepsPerSecond = Double.NaN;
         lastPublish = 0;
-        status = RunStatus.of(RunStatus.Kind.WAITING_FOR_ROBOTS);
+        status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
         record(snapshot.poses());
         publish(snapshot.poses());
     }
 
     @Override
     public void runState(RunState state) {
-        status = RunStatus.of(switch (state.phase()) {
-            case WAITING -> RunStatus.Kind.WAITING_FOR_ROBOTS;
-            case RUNNING -> RunStatus.Kind.RUNNING;
-            case PAUSED -> RunStatus.Kind.PAUSED;
+        status = ViewedRun.of(switch (state.phase()) {
+            case WAITING -> ViewedRun.Kind.WAITING_FOR_ROBOTS;
+            case RUNNING -> ViewedRun.Kind.RUNNING;
+            case PAUSED -> ViewedRun.Kind.PAUSED;
         });
         if (state.phase() == RunState.Phase.RUNNING) {
             rateStep = -1; // measure afresh: the time spent paused is not the run's speed
@@ -107,7 +107,7 @@ public final class SceneFeed implements RunFollower.Listener {
     /** The simulation is over: keep the last picture (with the newest poses), say why. */
     @Override
     public void end(SimulationEnd end) {
-        status = new RunStatus(RunStatus.Kind.STOPPED, end.reason(), "");
+        status = new ViewedRun(ViewedRun.Kind.STOPPED, end.reason(), "");
         if (poses != null) {
             publish(poses);
         }
@@ -116,7 +116,7 @@ public final class SceneFeed implements RunFollower.Listener {
     /** The connection broke: keep the last picture, say why. */
     @Override
     public void lost(java.io.IOException cause) {
-        status = new RunStatus(RunStatus.Kind.LOST, String.valueOf(cause.getMessage()), "");
+        status = new ViewedRun(ViewedRun.Kind.LOST, String.valueOf(cause.getMessage()), "");
         if (poses != null) {
             publish(poses);
         }

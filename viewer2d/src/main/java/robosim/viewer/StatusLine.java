@@ -17,7 +17,7 @@ public final class StatusLine {
 
     /** The state part alone, e.g. {@code RUNNING  10 steps/s}, {@code PAUSED}, {@code STOPPED: why}. */
     public static String state(Scene s) {
-        RunStatus r = s.status();
+        ViewedRun r = s.status();
         String text = switch (r.kind()) {
             case WAITING_FOR_ROBOTS -> "waiting for robots";
             case RUNNING -> Double.isNaN(s.stepsPerSecond()) ? "RUNNING"

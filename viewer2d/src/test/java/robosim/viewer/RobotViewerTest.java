@@ -69,7 +69,7 @@ class RobotViewerTest {
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {30, 90}, new double[][] {sonar, {}});
         Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(RobotModels.SCOUT, RobotModels.SCOUT),
-                poses, new double[][] {{}, {}}, 0, RunStatus.of(RunStatus.Kind.RUNNING));
+                poses, new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
         double[] laser = filled(181, 3000);
         Arrays.fill(laser, 0, 10, 1000); // (its rightmost beams, 90 to 81 degrees right of the heading, see close)
         int w = 900;

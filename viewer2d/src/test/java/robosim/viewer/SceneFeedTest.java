@@ -26,7 +26,7 @@ class SceneFeedTest {
         feed.snapshot(new WorldSnapshot(500, new Arena(0, 0, 100_000, 2000), List.of(), List.of("a"),
                 List.of(RobotModels.SCOUT), at(-1, 1000)));
         Scene first = feed.latest();
-        assertEquals(RunStatus.of(RunStatus.Kind.WAITING_FOR_ROBOTS), first.status());
+        assertEquals(ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS), first.status());
         for (int k = 0; k < 2000; k++) {
             feed.update(at(k, 1000 + 50.0 * (k + 1)));
         }
@@ -37,7 +37,7 @@ class SceneFeedTest {
         assertEquals(1000 + 50.0 * 2000, s.trails()[0][s.trails()[0].length - 2], "newest point last");
         assertEquals(1, first.trails()[0].length / 2, "an earlier scene keeps its own trail");
         feed.end(new SimulationEnd(1999, "completed 2000 steps"));
-        assertEquals(new RunStatus(RunStatus.Kind.STOPPED, "completed 2000 steps", ""), feed.latest().status());
+        assertEquals(new ViewedRun(ViewedRun.Kind.STOPPED, "completed 2000 steps", ""), feed.latest().status());
         assertSame(s.poses(), feed.latest().poses());
         assertTrue(StatusLine.text(feed.latest()).startsWith("step 2000 "));
     }

@@ -22,7 +22,7 @@ class SceneRendererTest {
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {0, 90});
         return new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
-                poses, new double[][] {{}, {}}, 0, RunStatus.of(RunStatus.Kind.RUNNING));
+                poses, new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
     }
 
     private static int pixel(BufferedImage img, ViewTransform t, double xMm, double yMm) {
@@ -74,7 +74,7 @@ class SceneRendererTest {
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {0, 90}, null, List.of("a>b"));
         Scene s = new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
-                poses, new double[][] {{}, {}}, 0, RunStatus.of(RunStatus.Kind.RUNNING));
+                poses, new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
         BufferedImage img = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);
         ViewTransform t = new ViewTransform();
         t.fit(ARENA, 1000, 500);

@@ -33,7 +33,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final WorldSpec spec;
     private final Settings settings;
     private final List<String> robotNames;
-    private final Handshakes handshakes;
+    private final Admission admission;
     private final List<RunListener> runListeners = new CopyOnWriteArrayList<>();
     private final Design design;
     private final Inbox<Run> inbox;
@@ -56,7 +56,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.spec = spec;
         this.settings = settings;
         this.robotNames = spec.robots().stream().map(WorldSpec.RobotSpec::name).toList();
-        this.handshakes = new Handshakes(spec, robotNames, settings.stepMessages());
+        this.admission = new Admission(spec, robotNames, settings.stepMessages());
         // each robot has at most a request and a departure outstanding; the rest is rare
         this.inbox = new Inbox<>(2 * (robotNames.size() + spec.joinable()) + 1024, POST_LIMIT_MS);
         this.run = new Run(this, new RunListeners(runListeners));
@@ -112,8 +112,8 @@ public final class ClientWorkerCoordinator implements Closeable {
         return design;
     }
 
-    Handshakes handshakes() {
-        return handshakes;
+    Admission admission() {
+        return admission;
     }
 
     /**

@@ -78,7 +78,7 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
     record RobotLeaves(RobotPeer worker, String why) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.lost(worker, why);
+            run.left(worker, why);
         }
     }
 

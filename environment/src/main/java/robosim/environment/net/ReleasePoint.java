@@ -15,13 +15,13 @@ final class ReleasePoint {
 
     private final RunControl control;
     private final Viewers viewers;
-    private final RunRecord record;
+    private final PublishedRun record;
     private final RunListener listener;
     private final boolean paced;
     /** The computed step waits for a full recording viewer. */
     private boolean heldForViewer;
 
-    ReleasePoint(RunControl control, Viewers viewers, RunRecord record, RunListener listener,
+    ReleasePoint(RunControl control, Viewers viewers, PublishedRun record, RunListener listener,
             double speed) {
         this.control = control;
         this.viewers = viewers;

@@ -57,7 +57,7 @@ final class RobotConnection implements RobotPeer {
         int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
         String refusal = handshake.heard("robot");
         if (refusal == null) {
-            refusal = coordinator.handshakes().check(hello, wanted);
+            refusal = coordinator.admission().check(hello, wanted);
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();

@@ -60,10 +60,10 @@ final class Run {
     private final ClientWorkerCoordinator coordinator;
     private final Settings settings;
     private final WorldSpec spec;
-    private final Handshakes handshakes;
+    private final Admission admission;
     private final RunListener listener;
     private final Design design;
-    private final RunRecord record = new RunRecord();
+    private final PublishedRun record = new PublishedRun();
     private final Roster roster;
     private final GeometryLink geometry;
     private final RunControl control;
@@ -105,10 +105,10 @@ final class Run {
         this.coordinator = coordinator;
         this.settings = coordinator.settings();
         this.spec = coordinator.spec();
-        this.handshakes = coordinator.handshakes();
+        this.admission = coordinator.admission();
         this.listener = listener;
         this.design = coordinator.design();
-        this.added = handshakes.added();
+        this.added = admission.added();
         this.roster = new Roster(spec);
         this.geometry = new GeometryLink(settings);
         this.control = new RunControl(settings.speed(), spec.timeStepMs(), this::publishPhase);
@@ -120,7 +120,7 @@ final class Run {
     // ---- what other threads read --------------------------------------------------------------------------
 
     /** What the loop publishes for other threads (status, summary). */
-    RunRecord record() {
+    PublishedRun record() {
         return record;
     }
 
@@ -458,7 +458,7 @@ final class Run {
         if (roster.count(RobotSlot.State.WAITED) > 0) {
             for (RobotSlot s : roster.all()) {
                 if (s.state == RobotSlot.State.WAITED && now - s.awayNanos > stepTimeoutNanos) {
-                    removeFromWorld(s, "did not come back within " + settings.stepTimeoutMs() + " ms (step timeout)");
+                    leaveWorld(s, "did not come back within " + settings.stepTimeoutMs() + " ms (step timeout)");
                 }
             }
         }
@@ -529,7 +529,7 @@ final class Run {
             return "robot " + j.hello().name() + " is already connected";
         }
         try {
-            j.worker().welcome(handshakes.welcome(s.index));
+            j.worker().welcome(admission.welcome(s.index));
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
         }
@@ -568,13 +568,13 @@ final class Run {
             return "robot " + s.name + " is already coming back on another connection";
         }
         if (!hello.properties().equals(s.properties)) {
-            return "robot " + s.name + " comes back with " + Handshakes.difference(hello.properties(), s.properties);
+            return "robot " + s.name + " comes back with " + Admission.difference(hello.properties(), s.properties);
         }
         double x = core.map().xMm(s.index);
         double y = core.map().yMm(s.index);
         double heading = core.map().headingDeg(s.index);
         try {
-            worker.welcome(handshakes.welcome(core.map().spec().robots().get(s.index).at(x, y, heading),
+            worker.welcome(admission.welcome(core.map().spec().robots().get(s.index).at(x, y, heading),
                     roster.names()));
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
@@ -602,7 +602,7 @@ final class Run {
         if (phase == Phase.ENDED) {
             return LoopEvent.OVER;
         }
-        JoinRule rule = handshakes.rule(name);
+        JoinRule rule = admission.rule(name);
         String fixed = design.refusesJoins();
         if (fixed != null) {
             return fixed;
@@ -640,12 +640,12 @@ final class Run {
         List<String> names = roster.names();
         names.add(name);
         try {
-            worker.welcome(handshakes.welcome(robot, names));
+            worker.welcome(admission.welcome(robot, names));
         } catch (IOException e) {
             return "its welcome could not be sent: " + e.getMessage();
         }
         boolean byAdd = added.remove(name) != null; // (an added robot joins once; it may come back by name)
-        handshakes.joined().put(name, rule);
+        admission.joined().put(name, rule);
         joins++;
         int i = core.add(robot, hello.properties());
         RobotSlot s = roster.add(name, rule, RobotSlot.State.JOINING);
@@ -681,7 +681,7 @@ final class Run {
     // ---- robots leaving and coming back -------------------------------------------------------------------
 
     /** A robot's connection has closed or failed. */
-    void lost(RobotPeer peer, String why) {
+    void left(RobotPeer peer, String why) {
         RobotSlot s = roster.of(peer);
         if (s == null || phase == Phase.ENDED) {
             return;
@@ -732,7 +732,7 @@ final class Run {
     private void leaveNow(RobotSlot s, String why, boolean forGood) {
         if (s.state.away()) {
             if (forGood) {
-                removeFromWorld(s, Printable.of(why));
+                leaveWorld(s, Printable.of(why));
             }
             return;
         }
@@ -743,7 +743,7 @@ final class Run {
         }
         String safe = Printable.of(why);
         if (forGood || settings.onRobotLoss() == RobotLoss.REMOVE) {
-            removeFromWorld(s, safe);
+            leaveWorld(s, safe);
             return;
         }
         s.sinceStep = step;
@@ -768,7 +768,7 @@ final class Run {
     }
 
     /** Takes robot {@code s} out of the world for good; {@code why} is safe to print. */
-    private void removeFromWorld(RobotSlot s, String why) {
+    private void leaveWorld(RobotSlot s, String why) {
         roster.set(s, RobotSlot.State.GONE);
         s.takeover = false;
         s.sinceStep = step;
@@ -992,10 +992,10 @@ final class Run {
 
     /** Publishes the robots that have said hello and whether each takes part, and every robot's state. */
     private void publishRoster() {
-        List<RunRecord.Member> members = new ArrayList<>();
+        List<PublishedRun.Member> members = new ArrayList<>();
         for (RobotSlot s : roster.all()) {
             if (s.peer != null) {
-                members.add(new RunRecord.Member(s.name, s.peer, s.state != RobotSlot.State.GONE));
+                members.add(new PublishedRun.Member(s.name, s.peer, s.state != RobotSlot.State.GONE));
             }
         }
         record.roster = List.copyOf(members);

@@ -85,7 +85,7 @@ final class SharedConnection {
         for (int slot = 0; slot < n; slot++) {
             RobotHello hello = hellos.get(slot);
             int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
-            String why = coordinator.handshakes().check(hello, wanted);
+            String why = coordinator.admission().check(hello, wanted);
             if (why == null && !names.add(hello.name())) {
                 why = "robot " + hello.name() + " is named twice on this connection";
             }

@@ -1,5 +1,7 @@
 package robosim.environment.replay;
 
+import robosim.environment.net.RunStatus;
+
 import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -31,7 +33,7 @@ public final class ReplayClock {
     private final ClockInbox inbox = new ClockInbox();
     private final Thread thread;
     // ---- the clock thread's own ----
-    private ReplayStatus.State state;
+    private RunStatus.State state;
     private double speed;
     private long intervalNanos;
     private long nextDue;
@@ -45,7 +47,7 @@ public final class ReplayClock {
         this.viewers = viewers;
         this.exitAtEnd = exitAtEnd;
         this.startPaused = startPaused;
-        this.state = startPaused ? ReplayStatus.State.PAUSED : ReplayStatus.State.WAITING; // (held before its first step)
+        this.state = startPaused ? RunStatus.State.PAUSED : RunStatus.State.WAITING; // (held before its first step)
         setSpeed(speed);
         this.thread = new Thread(this::run, "replay-clock");
         thread.setDaemon(true);
@@ -70,11 +72,11 @@ public final class ReplayClock {
         return inbox.ask(now -> {
             viewers.add(viewer);
             WorldSnapshot world = at.snapshot();
-            if (state == ReplayStatus.State.ENDED) {
+            if (state == RunStatus.State.ENDED) {
                 viewer.queue().end(new SimulationEnd(at.step(), "the replay has ended"));
             } else {
                 viewer.queue().state(runState());
-                if (state == ReplayStatus.State.WAITING && !startPaused) {
+                if (state == RunStatus.State.WAITING && !startPaused) {
                     run(now);
                     LOG.info("replaying from step {} at x{}", at.step() + 1, speed);
                 }
@@ -105,7 +107,7 @@ public final class ReplayClock {
     public CompletableFuture<String> pause() {
         return inbox.ask(now -> {
             live();
-            if (state != ReplayStatus.State.PAUSED) {
+            if (state != RunStatus.State.PAUSED) {
                 hold();
             }
             return "paused at step " + at.step();
@@ -118,7 +120,7 @@ public final class ReplayClock {
             if (at.atEnd()) {
                 throw new IllegalStateException("at the end of the recording (step " + at.step() + "): seek first");
             }
-            if (state != ReplayStatus.State.RUNNING) {
+            if (state != RunStatus.State.RUNNING) {
                 run(now);
             }
             return "running from step " + at.step() + " at x" + speed;
@@ -132,7 +134,7 @@ public final class ReplayClock {
             if (stepping != null) {
                 throw new IllegalStateException("a step is under way");
             }
-            if (state != ReplayStatus.State.PAUSED) {
+            if (state != RunStatus.State.PAUSED) {
                 hold();
             }
             stepping = new CompletableFuture<>();
@@ -168,7 +170,7 @@ public final class ReplayClock {
     /** Sends every viewer the end and ends the replay. */
     public CompletableFuture<String> stop(String why) {
         return inbox.ask(now -> {
-            if (state != ReplayStatus.State.ENDED) {
+            if (state != RunStatus.State.ENDED) {
                 end(new SimulationEnd(at.step(), why));
             }
             return "stopped at step " + at.step();
@@ -179,7 +181,7 @@ public final class ReplayClock {
 
     private void run() {
         try {
-            while (state != ReplayStatus.State.ENDED) {
+            while (state != RunStatus.State.ENDED) {
                 inbox.runNext(waitNanos(System.nanoTime()));
                 advance(System.nanoTime());
             }
@@ -192,7 +194,7 @@ public final class ReplayClock {
     }
 
     private long waitNanos(long now) {
-        boolean due = stepsLeft > 0 || state == ReplayStatus.State.RUNNING;
+        boolean due = stepsLeft > 0 || state == RunStatus.State.RUNNING;
         if (!due || !viewers.haveRoom()) {
             return TICK_NANOS; // (a viewer with room again wakes the clock at once)
         }
@@ -202,7 +204,7 @@ public final class ReplayClock {
     /** Shows the next step if one is due and every recording viewer has room. */
     private void advance(long now) {
         boolean stepNow = stepsLeft > 0;
-        if (!stepNow && !(state == ReplayStatus.State.RUNNING && now - nextDue >= 0) || !viewers.haveRoom()) {
+        if (!stepNow && !(state == RunStatus.State.RUNNING && now - nextDue >= 0) || !viewers.haveRoom()) {
             return;
         }
         if (at.atEnd()) {
@@ -237,7 +239,7 @@ public final class ReplayClock {
         finishStepping();
         if (exitAtEnd) {
             end(at.end());
-        } else if (state != ReplayStatus.State.PAUSED) {
+        } else if (state != RunStatus.State.PAUSED) {
             hold();
             LOG.info("at the end of the recording (step {}): seek, or stop", at.step());
         }
@@ -253,25 +255,25 @@ public final class ReplayClock {
 
     private void end(SimulationEnd end) {
         finishStepping();
-        state = ReplayStatus.State.ENDED;
+        state = RunStatus.State.ENDED;
         endedAt = at.step();
         viewers.end(end);
         LOG.info("replay ended at step {}: {}", at.step(), end.reason());
     }
 
     private void run(long now) {
-        state = ReplayStatus.State.RUNNING;
+        state = RunStatus.State.RUNNING;
         nextDue = now;
         viewers.announce(runState());
     }
 
     private void hold() {
-        state = ReplayStatus.State.PAUSED;
+        state = RunStatus.State.PAUSED;
         viewers.announce(runState());
     }
 
     private void live() {
-        if (state == ReplayStatus.State.ENDED) {
+        if (state == RunStatus.State.ENDED) {
             throw new IllegalStateException("the replay has ended");
         }
     }

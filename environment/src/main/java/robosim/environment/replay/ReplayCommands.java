@@ -1,5 +1,7 @@
 package robosim.environment.replay;
 
+import robosim.environment.net.RunStatus;
+
 import static robosim.environment.control.ControlReplies.ok;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
@@ -60,7 +62,7 @@ public final class ReplayCommands implements ControlCommands {
         ObjectNode n = ok(null);
         n.put("state", s.state().name());
         n.put("step", s.step());
-        n.put("steps_per_s", s.state() == ReplayStatus.State.RUNNING ? Math.round(s.stepsPerSecond() * 10) / 10.0 : 0);
+        n.put("steps_per_s", s.state() == RunStatus.State.RUNNING ? Math.round(s.stepsPerSecond() * 10) / 10.0 : 0);
         n.put("file", String.valueOf(file));
         n.put("replay", true);
         n.put("first_step", s.firstStep());

@@ -7,7 +7,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
  * What the loop publishes about its run for other threads (the control port's status, the summary):
  * written by the loop thread only, read by anyone, never locked. Counts are as of the last step out.
  */
-final class RunRecord {
+final class PublishedRun {
     private static final long RATE_WINDOW_NANOS = 500_000_000L;
 
     volatile RunStatus.State phase = RunStatus.State.WAITING;

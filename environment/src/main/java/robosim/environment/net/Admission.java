@@ -11,7 +11,7 @@ import robosim.protocol.RobotWelcome;
  * file, or one a rule of the file or an {@code add} lets join; properties that do not contradict it) and the
  * welcome an accepted robot gets. Any thread.
  */
-final class Handshakes {
+final class Admission {
     private final WorldSpec spec;
     private final List<String> names;
     private final boolean stepMessages;
@@ -22,7 +22,7 @@ final class Handshakes {
     private final java.util.Map<String, robosim.environment.core.JoinRule> joined =
             new java.util.concurrent.ConcurrentHashMap<>();
 
-    Handshakes(WorldSpec spec, List<String> names, boolean stepMessages) {
+    Admission(WorldSpec spec, List<String> names, boolean stepMessages) {
         this.spec = spec;
         this.names = names;
         this.stepMessages = stepMessages;

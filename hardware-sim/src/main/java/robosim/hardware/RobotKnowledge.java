@@ -22,8 +22,8 @@ import robosim.protocol.StepResponse;
  * control thread while that one holds the {@link ControlLink}: one thread at a time, handed over by
  * the link, which is what makes the plain fields safe.
  */
-final class RobotState {
-    private static final Logger LOG = LoggerFactory.getLogger(RobotState.class);
+final class RobotKnowledge {
+    private static final Logger LOG = LoggerFactory.getLogger(RobotKnowledge.class);
     /** Distinct notices logged at WARN per robot; repeats and any beyond go to debug. */
     private static final int NOTICES_LOGGED = 1000;
 
@@ -42,7 +42,7 @@ final class RobotState {
     private final List<CommEvent> outbox = new ArrayList<>();
     private final Set<String> seenNotices = new HashSet<>();
 
-    RobotState(String name, RobotType type) {
+    RobotKnowledge(String name, RobotType type) {
         this.name = name;
         this.type = type;
         this.velocityMmPerS = Math.min(type.defaultVelocityMmPerS(), type.properties().maxSpeedMmPerS());
