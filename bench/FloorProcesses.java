@@ -3,19 +3,13 @@ import java.net.*;
 import java.util.concurrent.*;
 
 /**
- * The shared floor (../shared/bench/Floor.java) with one change: each client runs in its own JVM,
- * as robots do under headless.sh. Same server thread shape, same messages. It measures what
- * separate client processes cost on this machine, so our figure can be set against both floors.
- * usage: javac -d bench/classes bench/FloorProcesses.java; java -cp bench/classes FloorProcesses N STEPS
- *
- * Original description of the floor:
- * Reference floor for a lock-step, thread-per-client socket simulator on this machine.
- * One server thread per client; each step: server -> client step number, client -> server a
- * small request (an Externalizable object), a barrier across all clients, server -> client a small
- * reply. No geometry, no viewers. Prints steps/s for the given client count.
- * usage: java Floor.java N STEPS [obj|raw|obj-nostep|raw-nostep] [resetEvery]
- * obj: Externalizable objects through object streams (like the Environment); raw: DataStreams;
- * -nostep: no time-step message before each step. Prints steps/s and robot-steps/s.
+ * bench/Floor.java with one change: each client runs in its own JVM, as robots do under headless.sh. The
+ * server's thread shape (a thread per client, a barrier a step) and the messages are Floor.java's. It
+ * measures what separate client processes cost on this machine, so a figure for robots as processes can be
+ * set against both floors (scripts/bench-paper.sh runs them alternated).
+ * usage: javac -d bench/classes bench/FloorProcesses.java; java -cp bench/classes FloorProcesses N STEPS [obj]
+ * (its clients speak Floor.java's obj mode, reset every 100 messages: only obj, the default, fits them)
+ * Prints one line: clients=N steps=S mode=M wall=Ws steps/s=R robot-steps/s=R.
  */
 public class FloorProcesses {
     public static final class Req implements Externalizable {

@@ -3,12 +3,12 @@
 #   scripts/bench-designs.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # REPS defaults to 2. For N = 10, 100, 1000 robots (test-envs/bench-N.xml: Wander Scouts, 16 sonars read
 # every step, Geometry as its own process, robots in one process with a socket each), each repetition runs in turn:
-#   ../shared/bench/FloorThreads.java N S   the cheapest thread-per-client shape (a reader per socket,
+#   bench/FloorThreads.java N S             the cheapest thread-per-client shape (a reader per socket,
 #                                           one loop thread writing every reply)
 #   headless.sh --coordinator THREADS       the default, the report's design, with and without
 #                                           --no-geometry (the Geometry process's round trip, which the
 #                                           floors do not have)
-#   ../shared/bench/FloorShared.java N S    the cheapest socket-per-robot shape (one thread each side)
+#   bench/FloorShared.java N S              the cheapest socket-per-robot shape (one thread each side)
 #   headless.sh --coordinator SEQUENTIAL    the original's loop, with and without --no-geometry
 # and, for each design, where the time goes: the Environment alone driven by the floors' client shape
 # (robosim.bench.BareRobots: one thread owns every robot's socket, no control code), with requests that
@@ -21,9 +21,6 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_bench_args 2 docs/perf "$@"
 reps=$BENCH_REPS quick=$BENCH_QUICK
-for f in ../shared/bench/FloorThreads.java ../shared/bench/FloorShared.java; do
-  [ -f "$f" ] || robosim_fail "$f not found (the shared floors live beside the repository)"
-done
 dir=$(robosim_out_dir)
 robosim_build_if_stale
 out=$dir/designs.csv
@@ -78,11 +75,11 @@ for rep in $(seq "$reps"); do
   echo "== repetition $rep of $reps"
   for n in 10 100 1000; do
     s=$(steps_for "$n")
-    ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
+    ft=$(java bench/FloorThreads.java "$n" "$s" | floor_rate)
     row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
     designs THREADS "$n" "$s" "$rep" FloorThreads "$ft"
     bare_rows THREADS "$n" "$s" "$rep" FloorThreads "$ft"
-    fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
+    fs=$(java bench/FloorShared.java "$n" "$s" | floor_rate)
     row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
     designs SEQUENTIAL "$n" "$s" "$rep" FloorShared "$fs"
     bare_rows SEQUENTIAL "$n" "$s" "$rep" FloorShared "$fs"

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The original report's benchmark against the floor, in one sitting, repeated and alternated:
 #   scripts/bench-paper.sh [REPS] [STEPS] [--classpath PATH[:PATH...]] [-- headless.sh options...] [--help]
-# REPS defaults to 3, STEPS to 5000. Runs, REPS times each in turn: ../shared/bench/Floor.java (clients
+# REPS defaults to 3, STEPS to 5000. Runs, REPS times each in turn: bench/Floor.java (clients
 # as threads), bench/FloorProcesses (clients as processes), headless.sh on test-envs/paper-benchmark.xml
 # (robots as processes) and the same with --robots-in-one-process. Prints every line, then the
 # medians and the ratios to the floor; writes no file (bench/FloorProcesses compiles to bench/classes).
@@ -10,8 +10,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_paper_bench_args "$@"
 reps=$BENCH_REPS; steps=$BENCH_STEPS
 set -- "${ROBOSIM_PASS[@]}"
-floor=../shared/bench/Floor.java
-[ -f "$floor" ] || robosim_fail "$floor not found (the shared floor lives beside the repository)"
+floor=bench/Floor.java
 declare -a f fp hp ho
 rate() { grep -oE '(^| )steps(_per_s|/s)=[0-9.]+' | head -n 1 | sed -E 's/.*=//'; }
 for _ in $(seq "$reps"); do

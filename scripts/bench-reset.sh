@@ -7,7 +7,7 @@
 # STEPS defaults to 100000. Writes reset-interval.txt into a fresh temporary directory (its path is
 # printed), into DIR with --out DIR, or into docs/perf/ (which docs/PERFORMANCE.md quotes and
 # bench.sh plots) with --write-docs.
-# The floor (../shared/bench/Floor.java 10 STEPS obj) runs before and after, in the same sitting; each
+# The floor (bench/Floor.java 10 STEPS obj) runs before and after, in the same sitting; each
 # row's ratio is its steps/s over their mean.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
@@ -17,12 +17,11 @@ robosim_script_args docs/perf "$@"
 steps=${ROBOSIM_ARGS[0]:-100000}
 robosim_count STEPS "$steps"
 total=$((steps + steps * 3 / 10))
-[ -f "$ROBOSIM_HOME/../shared/bench/Floor.java" ] || robosim_fail "../shared/bench/Floor.java not found (the shared floor lives beside the repository)"
 out="$(robosim_out_dir)/reset-interval.txt"
 cd "$ROBOSIM_HOME"
 robosim_build_if_stale
 source scripts/bench-lib.sh
-floor_run() { java ../shared/bench/Floor.java 10 "$steps" obj | awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "=");
+floor_run() { java bench/Floor.java 10 "$steps" obj | awk '{ for (i = 1; i <= NF; i++) { split($i, kv, "=");
   v[kv[1]] = kv[2] } } END { sub(/s$/, "", v["wall"]); printf "%.1f", v["steps"] / v["wall"] }'; }
 f1=$(floor_run)
 echo "reset_every steps steps_per_s env_old_kb robots_old_kb geometry_old_kb" | tee "$out"

@@ -3,10 +3,10 @@
 #   scripts/bench-speed.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # REPS defaults to 2. For N = 10, 100, 1000 robots (test-envs/bench-N.xml: Wander Scouts, 16 sonars of 5 m
 # read every step, Geometry its own process, robots in one process), each repetition runs in turn:
-#   ../shared/bench/FloorThreads.java N S   the floor of the thread-per-client shape
+#   bench/FloorThreads.java N S             the floor of the thread-per-client shape
 #   headless.sh --robots-in-one-process     the default: one shared connection for the robots' process
 #   headless.sh ... --connection PER_ROBOT  a socket per robot, the default THREADS coordinator
-#   ../shared/bench/FloorShared.java N S    the floor of the one-thread-each-side shape
+#   bench/FloorShared.java N S              the floor of the one-thread-each-side shape
 #   headless.sh ... --coordinator SEQUENTIAL  a socket per robot, the original loop
 # Every run is printed with its ratio to the floor of the same repetition (the shared connection and
 # THREADS to FloorThreads, SEQUENTIAL to FloorShared), then the medians, beside the marks of ARGoS 3 and
@@ -17,9 +17,6 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_bench_args 2 docs/perf "$@"
 reps=$BENCH_REPS quick=$BENCH_QUICK
-for f in ../shared/bench/FloorThreads.java ../shared/bench/FloorShared.java; do
-  [ -f "$f" ] || robosim_fail "$f not found (the shared floors live beside the repository)"
-done
 dir=$(robosim_out_dir)
 robosim_build_if_stale
 jar=$(ls bench-jmh/target/bench-jmh-*.jar 2>/dev/null | head -n 1 || true)
@@ -48,11 +45,11 @@ for rep in $(seq "$reps"); do
   echo "== repetition $rep of $reps"
   for n in 10 100 1000; do
     s=$(steps_for "$n")
-    ft=$(java ../shared/bench/FloorThreads.java "$n" "$s" | floor_rate)
+    ft=$(java bench/FloorThreads.java "$n" "$s" | floor_rate)
     row FloorThreads "$n" "$s" "$rep" "$ft" FloorThreads "$ft"
     row shared-connection "$n" "$s" "$rep" "$(run "$n" "$s")" FloorThreads "$ft"
     row THREADS-per-robot "$n" "$s" "$rep" "$(run "$n" "$s" --connection PER_ROBOT)" FloorThreads "$ft"
-    fs=$(java ../shared/bench/FloorShared.java "$n" "$s" | floor_rate)
+    fs=$(java bench/FloorShared.java "$n" "$s" | floor_rate)
     row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
     row SEQUENTIAL-per-robot "$n" "$s" "$rep" "$(run "$n" "$s" --coordinator SEQUENTIAL)" FloorShared "$fs"
   done

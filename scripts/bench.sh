@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The benchmark suite (outside the tests): every speed question of the performance work, each run
-# next to ../shared/bench/Floor.java in the same sitting, repeated and alternated.
+# next to bench/Floor.java in the same sitting, repeated and alternated.
 #   scripts/bench.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # REPS defaults to 3. --quick: one repetition with fewer steps (a smoke run).
 # Writes results.csv (one row per run, appended) and the plots *.png (robosim.bench.Plots, which also
@@ -20,8 +20,7 @@ set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_bench_args 3 docs/perf "$@"
 reps=$BENCH_REPS quick=$BENCH_QUICK
-floor=../shared/bench/Floor.java
-[ -f "$floor" ] || robosim_fail "$floor not found (the shared floor lives beside the repository)"
+floor=bench/Floor.java
 dir=$(robosim_out_dir)
 robosim_build_if_stale
 ls bench-jmh/target/lib/xchart-*.jar >/dev/null 2>&1 || ./mvnw -q -B package -DskipTests -pl bench-jmh -am
