@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # bench-lib.sh: a library sourced by bench-reset.sh, bench-memory.sh, bench-designs.sh and bench-speed.sh, not
-# a command: reading heaps, following a headless run's progress, and a run's rate and its row beside a floor.
+# a command: reading heaps, following a headless run's progress, a run's rate and its row beside a floor (the
+# floors are this repository's own, bench/*.java), and the one table a script writes into a doc.
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;
@@ -43,4 +44,17 @@ row() {
   [ -n "$5" ] && [ -n "$7" ] && ratio=$(awk -v a="$5" -v b="$7" 'BEGIN { printf "%.3f", a / b }')
   echo "$sitting,$1,$2,$3,$4,$5,$6,$7,$ratio" >> "$out"
   printf '%-26s N=%-5s %9s steps/s   %-13s %9s steps/s   ratio %s\n' "$1" "$2" "$5" "$6" "$7" "$ratio"
+}
+
+# Replaces the lines between "<!-- $1: ..." and "<!-- /$1 -->" in the doc $3 with the file $2 (the marks stay);
+# fails, changing nothing, when the doc lacks either mark.
+replace_marked() {
+  local mark=$1 with=$2 doc=$3 tmp
+  grep -q "^<!-- $mark:" "$doc" && grep -q "^<!-- /$mark -->" "$doc" \
+    || { echo "bench: $doc has no <!-- $mark: ... --> ... <!-- /$mark --> marks" >&2; return 1; }
+  tmp=$(mktemp)
+  awk -v mark="$mark" -v with="$with" '
+    index($0, "<!-- " mark ":") == 1 { print; while ((getline line < with) > 0) print line; skip = 1; next }
+    index($0, "<!-- /" mark " -->") == 1 { skip = 0 }
+    !skip { print }' "$doc" > "$tmp" && mv "$tmp" "$doc"
 }

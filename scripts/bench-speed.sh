@@ -12,7 +12,8 @@
 # THREADS to FloorThreads, SEQUENTIAL to FloorShared), then the medians, beside the marks of ARGoS 3 and
 # Stage 4.3 (measured once on this machine kind, from the speed issue). Writes speed.csv (one row per run,
 # appended) and speed.png (robosim.bench.SpeedPlot) into a fresh temporary directory (printed), DIR with
-# --out DIR, or docs/perf/ with --write-docs. --quick: one repetition with a fifth of the steps.
+# --out DIR, or docs/perf/ with --write-docs, which also writes the medians' table into docs/PERFORMANCE.md
+# between its speed-table marks (the doc's one current table). --quick: one repetition with a fifth of the steps.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_bench_args 2 docs/perf "$@"
@@ -55,5 +56,10 @@ for rep in $(seq "$reps"); do
   done
 done
 echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"
-java -cp "bench-jmh/target/lib/*:$jar" robosim.bench.SpeedPlot "$dir"
+table=$(mktemp); trap 'rm -f "$table"' EXIT
+java -cp "bench-jmh/target/lib/*:$jar" robosim.bench.SpeedPlot "$dir" | tee "$table"
 echo "bench-speed: rows appended to $out"
+if [ "$ROBOSIM_WRITE_DOCS" = 1 ]; then
+  replace_marked speed-table "$table" docs/PERFORMANCE.md
+  echo "bench-speed: docs/PERFORMANCE.md's speed table is now this sitting's (keep this output as docs/perf/speed-DATE.txt)"
+fi
