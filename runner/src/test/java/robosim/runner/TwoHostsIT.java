@@ -68,7 +68,7 @@ class TwoHostsIT {
             start(started, b, keys, "geometry.sh", HOST_A, "10000");
             viewer.await("pose-log: recording " + HOST_A + ":3000", LONG_S);
             assertNotEquals(0, stranger.exit(LONG_S), stranger.output());
-            env.await("dropped: no hello within", LONG_S);
+            env.await("cut off: no hello within", LONG_S);
             start(started, b, keys, "robots.sh", HOST_A, "8000", "--robot", "robot1:ArRobot:robosim.examples.BackAndForth",
                     "--robot", "robot2:Scout:robosim.examples.BackAndForth");
 
