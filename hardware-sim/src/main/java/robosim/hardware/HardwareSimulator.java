@@ -96,7 +96,21 @@ public final class HardwareSimulator {
      * responses while the calling thread sends requests. Many robots of one process can also share one
      * exchange thread, and one connection ({@link ManyRobots}).
      */
-    public enum Exchange { ONE_THREAD, SEND_RECEIVE }
+    public enum Exchange {
+        ONE_THREAD(OneThreadExchange::run),
+        SEND_RECEIVE(SendReceiveExchange::run);
+
+        /** One exchange's way of running, one class each. */
+        interface Way {
+            void run(HardwareSimulator sim) throws IOException, InterruptedException;
+        }
+
+        private final Way way;
+
+        Exchange(Way way) {
+            this.way = way;
+        }
+    }
 
     /**
      * Runs {@code control} until the Environment ends the simulation; returns its reason. The
@@ -112,13 +126,7 @@ public final class HardwareSimulator {
             if (!begin(control)) {
                 return endReason;
             }
-            if (exchange == Exchange.SEND_RECEIVE) {
-                SendReceiveExchange.run(this);
-                return endReason;
-            }
-            do {
-                send();
-            } while (receive());
+            exchange.way.run(this);
             return endReason;
         } finally {
             finish();
