@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import java.io.IOException;
 import robosim.protocol.ObjectConnection;
+import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepResponse;
 
@@ -21,6 +22,7 @@ final class LoopWrites implements RobotOutput {
         this.stepMessages = stepMessages;
     }
 
+    /** Every step: written out here rather than through {@link #timed}, so the hot path allocates nothing. */
     @Override
     public void response(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
         clock.writing();
@@ -35,49 +37,49 @@ final class LoopWrites implements RobotOutput {
 
     @Override
     public void end(SimulationEnd end, boolean midStep) throws IOException {
-        clock.writing();
-        try {
-            RobotWriter.writeEnd(connection, end, midStep);
-        } catch (IOException e) {
-            throw cutOffOr(e);
-        } finally {
-            clock.written();
-        }
+        timed(() -> RobotWriter.writeEnd(connection, end, midStep));
     }
 
     /** Loop thread: the first step number. */
     void step(long step) throws IOException {
-        clock.writing();
-        try {
+        timed(() -> {
             connection.writeStep(step);
             connection.flush();
-        } catch (IOException e) {
-            throw cutOffOr(e);
-        } finally {
-            clock.written();
-        }
+        });
     }
 
     /** Loop thread: the welcome. */
-    void welcome(robosim.protocol.RobotWelcome welcome) throws IOException {
-        clock.writing();
-        try {
+    void welcome(RobotWelcome welcome) throws IOException {
+        timed(() -> {
             connection.write(welcome);
             connection.flush();
+        });
+    }
+
+    /** One write to the robot. */
+    private interface Write {
+        void run() throws IOException;
+    }
+
+    /** {@code write} on the connection's clock; its failure carries the watch's reason if it cut the robot off. */
+    private void timed(Write write) throws IOException {
+        clock.writing();
+        try {
+            write.run();
         } catch (IOException e) {
             throw cutOffOr(e);
         } finally {
             clock.written();
         }
-    }
-
-    @Override
-    public void close() {
     }
 
     /** The failure of a write: the watch's reason if it cut the robot off, else {@code e} itself. */
     private IOException cutOffOr(IOException e) {
         String why = clock.cutOffReason();
         return why == null ? e : new IOException(why, e);
+    }
+
+    @Override
+    public void close() {
     }
 }
