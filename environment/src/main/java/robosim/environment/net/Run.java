@@ -369,7 +369,9 @@ final class Run {
             record.endReason = end.reason();
             record.completed = true;
         }
-        for (RobotSlot s : roster.all()) {
+        List<RobotSlot> slots = roster.all();
+        for (int i = 0; i < slots.size(); i++) { // (every step: no iterator)
+            RobotSlot s = slots.get(i);
             if (!s.running()) {
                 continue;
             }
