@@ -31,10 +31,7 @@ final class ClientOptions {
 
     /** What is wrong with these options beside {@code design}, or null. */
     String bad(CoordinatorDesign design) {
-        if (onRobotLoss != RobotLoss.REMOVE && design == CoordinatorDesign.SEQUENTIAL) {
-            return "environment: --on-robot-loss " + onRobotLoss + " needs the THREADS or TWO_THREADS coordinator: "
-                    + "the SEQUENTIAL loop reads a fixed list of robots";
-        }
-        return null;
+        String why = design.refusesLossPolicy(onRobotLoss);
+        return why == null ? null : "environment: " + why;
     }
 }

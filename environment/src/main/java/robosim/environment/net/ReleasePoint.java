@@ -31,10 +31,12 @@ final class ReleasePoint {
     }
 
     /**
-     * True if step {@code steps - 1}, computed, may go out now; {@code released}: the steps out so far.
-     * False while a pause, the pace or a full recording viewer holds it.
+     * Judges computed step {@code steps - 1} at the release point now ({@code released}: the steps out so far):
+     * true if it passes; false while a pause, the pace or a full recording viewer holds it. A hold that begins
+     * or ends here is announced to the viewers (and a hold for a viewer to the listener), and the end of a
+     * pause restarts the pace and the rate.
      */
-    boolean mayRelease(long now, long steps, long released) {
+    boolean pass(long now, long steps, long released) {
         if (control.holdWanted()) {
             if (!control.holding()) {
                 control.held(released);

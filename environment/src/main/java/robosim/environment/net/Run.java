@@ -203,7 +203,7 @@ final class Run {
                     resolve();
                 }
                 case RELEASING -> {
-                    if (!releasePoint.mayRelease(now, step, released)) {
+                    if (!releasePoint.pass(now, step, released)) {
                         return;
                     }
                     release();
