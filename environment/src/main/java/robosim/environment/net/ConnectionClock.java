@@ -67,6 +67,10 @@ public final class ConnectionClock {
 
     /** Why the watch cut the connection off, or null if it has not. */
     public String cutOffReason() {
-        return cutOff.get();
+        String why = cutOff.get();
+        if (why == null && handshake.get() == EXPIRED) { // (expired a moment before the reason is stored)
+            return "no hello within " + TimeUnit.NANOSECONDS.toMillis(handshakeLimitNanos) + " ms";
+        }
+        return why;
     }
 }

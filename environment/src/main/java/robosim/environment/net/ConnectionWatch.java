@@ -33,7 +33,10 @@ public final class ConnectionWatch {
     private final Set<Watched> watched = ConcurrentHashMap.newKeySet();
     private final long periodMs;
     private ScheduledExecutorService timer;
-    private volatile boolean idleEnds;
+    /** Guarded by this: the owner is done, and the thread ends once nothing is left to watch. */
+    private boolean idleEnds;
+    /** Guarded by this: the thread has ended; a connection handed over now is dropped at once. */
+    private boolean ended;
 
     /** Looks every quarter of the shortest limit given (ms; 0 or less: none), between 5 and 250 ms. */
     public ConnectionWatch(long... limitsMs) {
@@ -46,9 +49,18 @@ public final class ConnectionWatch {
         this.periodMs = Math.max(5, Math.min(250, shortest / 4));
     }
 
-    /** Watches {@code w} from now until {@link #forget}. */
+    /** Watches {@code w} from now until {@link #forget}; after the watch has ended, drops it at once. */
     public void watch(Watched w) {
-        watched.add(w);
+        boolean refused;
+        synchronized (this) {
+            refused = ended;
+            if (!refused) {
+                watched.add(w);
+            }
+        }
+        if (refused) {
+            w.drop(); // (nobody would time it)
+        }
     }
 
     public void forget(Watched w) {
@@ -65,29 +77,31 @@ public final class ConnectionWatch {
         timer.scheduleWithFixedDelay(() -> check(System.nanoTime()), periodMs, periodMs, TimeUnit.MILLISECONDS);
     }
 
-    public void stop() {
-        if (timer != null) {
-            timer.shutdownNow();
-        }
-    }
-
     /** The owner is done: the thread ends once no connection is left to watch (those still open keep their clocks). */
-    public void stopWhenIdle() {
+    public synchronized void stopWhenIdle() {
         idleEnds = true;
     }
 
-    /** One look at every clock: cuts off each connection that is late. */
+    /** One look at every clock: cuts off each connection that is late (one that fails to close does not stop the rest). */
     void check(long now) {
         for (Watched w : watched) {
-            String why = w.clock().cutOffIfLate(now);
-            if (why != null) {
+            try {
+                String why = w.clock().cutOffIfLate(now);
+                if (why != null) {
+                    watched.remove(w);
+                    LOG.warn("{} cut off: {}", Printable.of(w.label(), 200), why);
+                    w.drop();
+                }
+            } catch (RuntimeException e) {
                 watched.remove(w);
-                LOG.warn("{} cut off: {}", Printable.of(w.label(), 200), why);
-                w.drop();
+                LOG.error("connection-watch: could not judge or close {}: {}", Printable.of(w.label(), 200), e.toString());
             }
         }
-        if (idleEnds && watched.isEmpty()) {
-            timer.shutdown();
+        synchronized (this) {
+            if (idleEnds && watched.isEmpty()) {
+                ended = true;
+                timer.shutdown();
+            }
         }
     }
 }

@@ -64,6 +64,11 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
                 e.apply(run);
             }
         }
+
+        @Override
+        public void refuse() {
+            events.forEach(LoopEvent::refuse);
+        }
     }
 
     /** A robot's request for the step it was last given. */

@@ -553,7 +553,7 @@ final class Run {
         }
         String noReturn = settings.onRobotLoss() == RobotLoss.REMOVE ? " (a lost robot may come back only when the "
                 + "Environment runs with --on-robot-loss HOLD or WAIT)" : "";
-        if (s.state == RobotSlot.State.GONE) {
+        if (s.state == RobotSlot.State.GONE || s.leaving != null && s.leaving.forGood()) {
             return "robot " + s.name + " has been removed from the simulation" + noReturn;
         }
         if (!s.peer.closed()) {
@@ -1037,7 +1037,16 @@ final class Run {
         rosterChanged = true;
         LOG.info("simulation over after {} steps: {}", step, Printable.of(reason));
         listener.ended(record.summary(roster.size()));
-        output.flush(); // (the end, to the robots of shared connections)
+        closeOut();
+    }
+
+    /**
+     * Once the run is over (and by the loop, last, whatever happened): the end goes out to shared connections,
+     * whoever still waits is answered (held hellos refused, pause and step N callers) and the last state is
+     * published. Again does nothing more.
+     */
+    void closeOut() {
+        output.flush();
         heldHellos.forEach(LoopEvent::refuse);
         heldHellos.clear();
         publish();

@@ -7,8 +7,8 @@ import org.slf4j.LoggerFactory;
 /**
  * The one owner of simulation time, on its own thread, {@code simulation-loop}: the only code that
  * advances the step. It takes events from its {@link Inbox}, has each apply itself to the {@link Run} and
- * lets the run move on as far as it can, and between events keeps the deadlines (pace, step timeout,
- * Geometry timeout, viewer write timeout). It blocks on its inbox, timed to the next deadline, and in the
+ * lets the run move on as far as it can, and between events keeps the run's deadlines (pace, step timeout,
+ * Geometry timeout). It blocks on its inbox, timed to the next deadline, and in the
  * run's own writes to robots, which the {@link ConnectionWatch} cuts short past the write timeout; it holds
  * no lock, ever. What it decides lives in the {@link Run}.
  */
@@ -28,10 +28,10 @@ final class SimulationLoop implements Runnable {
         this.tickNanos = tick(coordinator.settings());
     }
 
-    /** How often deadlines are checked: a quarter of the shortest one, between 5 and 100 ms. */
+    /** How often the loop's own deadlines are checked: a quarter of the shortest one, between 5 and 100 ms. */
     private static long tick(Settings s) {
         long shortest = Long.MAX_VALUE;
-        for (long ms : new long[] {s.stepTimeoutMs(), s.geometryTimeoutMs(), s.writeTimeoutMs()}) {
+        for (long ms : new long[] {s.stepTimeoutMs(), s.geometryTimeoutMs()}) {
             if (ms > 0) {
                 shortest = Math.min(shortest, ms);
             }
@@ -69,6 +69,7 @@ final class SimulationLoop implements Runnable {
             LOG.error("the simulation loop failed", e);
             run.finish("the simulation loop failed: " + e, false);
         } finally {
+            run.closeOut();
             coordinator.loopEnded();
         }
     }

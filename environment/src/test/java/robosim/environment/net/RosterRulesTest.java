@@ -202,4 +202,45 @@ class RosterRulesTest {
         assertEquals(new RobotState("e", "gone", 3), state(3));
         assertEquals("robot \"e\" has already left", roster.remove("e"));
     }
+
+    @Test
+    void aNewConnectionThatSaysHelloWhileTheOldOnesDepartureWaitsForTheStepsEndTakesOverRightAfter() throws Exception {
+        start(s -> s.onRobotLoss(RobotLoss.HOLD), NEVER, true);
+        assertEquals(3, coordinator.step(3, LONG_S, TimeUnit.SECONDS)); // (step 3 is computed and held)
+        bots.get(2).leave("its connection closed mid-step");
+        Bot c2 = new Bot(coordinator, "c", NEVER);
+        assertNull(c2.hello(2).get(LONG_S, TimeUnit.SECONDS), "welcomed while the old connection's departure waits");
+        assertEquals(new RobotState("c", "running", -1), state(2), "it still takes part in the held step");
+        assertEquals(4, coordinator.step(1, LONG_S, TimeUnit.SECONDS));
+        coordinator.pause(LONG_S, TimeUnit.SECONDS); // (returns once step 4 is computed and held)
+        assertEquals(List.of("held c 4", "returned c 4"), heard.events, "held at the step's end, back at once");
+        assertEquals(4, c2.firstStep);
+        assertEquals(3, bots.get(2).responses.size(), "the held step's response went to neither connection");
+    }
+
+    @Test
+    void aRobotRemovedWhileAStepIsHeldCannotBeTakenOverBeforeItGoes() throws Exception {
+        start(s -> s.onRobotLoss(RobotLoss.HOLD), NEVER, true);
+        assertEquals(2, coordinator.step(2, LONG_S, TimeUnit.SECONDS));
+        assertNull(coordinator.roster().remove("c"));
+        bots.get(2).leave("it was told the end");
+        assertEquals("robot c has been removed from the simulation",
+                new Bot(coordinator, "c", NEVER).hello(2).get(LONG_S, TimeUnit.SECONDS));
+        assertEquals(3, coordinator.step(1, LONG_S, TimeUnit.SECONDS));
+        assertEquals(new RobotState("c", "gone", 3), state(2));
+    }
+
+    @Test
+    void aJoinedRobotLostBeforeItsFirstStepIsLostLikeAnyRobot() throws Exception {
+        start(s -> s.onRobotLoss(RobotLoss.HOLD), NEVER, true);
+        assertEquals(2, coordinator.step(2, LONG_S, TimeUnit.SECONDS));
+        Bot d = new Bot(coordinator, "d", NEVER);
+        assertNull(d.hello(-1).get(LONG_S, TimeUnit.SECONDS));
+        d.leave("gone before its first step");
+        coordinator.pause(LONG_S, TimeUnit.SECONDS);
+        assertEquals(3, coordinator.step(1, LONG_S, TimeUnit.SECONDS));
+        assertEquals(List.of("held d 3"), heard.events);
+        assertEquals(new RobotState("d", "held", 3), state(3), "it stands where it joined, for its return");
+        assertEquals(-1, d.firstStep, "it never took part");
+    }
 }
