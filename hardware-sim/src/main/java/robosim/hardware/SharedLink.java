@@ -35,6 +35,8 @@ final class SharedLink {
     private final ObjectConnection connection;
     /** The robots by slot; null once one has ended (or was refused). */
     private final HardwareSimulator[] sims;
+    /** Every robot welcomed, ended or not: each one's control code is waited for at the end. */
+    private final List<HardwareSimulator> welcomed;
     /** Each robot's next step, and whether its request for it is due. */
     private final long[] next;
     private final boolean[] due;
@@ -51,9 +53,14 @@ final class SharedLink {
         this.sims = sims;
         this.next = new long[sims.length];
         this.due = new boolean[sims.length];
+        List<HardwareSimulator> all = new ArrayList<>();
         for (HardwareSimulator s : sims) {
-            live += s == null ? 0 : 1;
+            if (s != null) {
+                all.add(s);
+            }
         }
+        this.welcomed = List.copyOf(all);
+        this.live = welcomed.size();
     }
 
     /**
@@ -160,11 +167,11 @@ final class SharedLink {
                     sim.finish();
                 }
             }
+            // every robot's control code, those the Environment ended too, finishes (its finally blocks, a
+            // last report) before this returns and the process may exit
             long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(HardwareSimulator.CONTROL_GRACE_MS);
-            for (HardwareSimulator sim : sims) {
-                if (sim != null) {
-                    sim.awaitControlCode(TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
-                }
+            for (HardwareSimulator sim : welcomed) {
+                sim.awaitControlCode(TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
             }
         }
     }
