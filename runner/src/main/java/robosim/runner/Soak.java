@@ -15,7 +15,11 @@ import java.util.Random;
 import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ThreadFactory;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
@@ -39,6 +43,22 @@ import robosim.protocol.WorldSnapshot;
 @Command(name = "soak.sh", mixinStandardHelpOptions = true,
         description = "Runs a long simulation with faults injected at random (seeded) and checks what survived.")
 public final class Soak implements Callable<Integer> {
+    /**
+     * The soak's own clients and fault injectors, each on a thread of its own ({@code soak-client-n}, daemon):
+     * they block in socket reads and waits, which must never hold the JVM's common pool (on JDK 21+ it runs
+     * {@code runAsync} tasks even at parallelism 1, so a second blocking task would never start).
+     */
+    private final ExecutorService clients = Executors.newCachedThreadPool(new ThreadFactory() {
+        private final AtomicInteger serial = new AtomicInteger();
+
+        @Override
+        public Thread newThread(Runnable r) {
+            Thread t = new Thread(r, "soak-client-" + serial.incrementAndGet());
+            t.setDaemon(true);
+            return t;
+        }
+    });
+
     @Option(names = "--robots", defaultValue = "100", description = "Ring robots (default: ${DEFAULT-VALUE}).")
     int robots;
 
@@ -109,7 +129,8 @@ public final class Soak implements Callable<Integer> {
             for (int v = 0; v < silentRobots; v++) {
                 long at = between(random, 0.05, 0.95);
                 String name = "silent" + v;
-                silent.add(CompletableFuture.runAsync(() -> SoakClients.silentRobot(name, robotPort, at, faults::add)));
+                silent.add(CompletableFuture.runAsync(() -> SoakClients.silentRobot(name, robotPort, at, faults::add),
+                        clients));
                 faults.add(String.format(Locale.ROOT, "robot %s falls silent at step %d", name, at));
             }
             Socket frozen = SoakClients.frozenViewer(viewerPort);
@@ -264,7 +285,7 @@ public final class Soak implements Callable<Integer> {
             } catch (Exception e) {
                 faults.add("a fault could not be injected: " + e);
             }
-        });
+        }, clients);
     }
 
     /** At step k: a full GC in the Environment and its old generation, KB (-1 if it could not be read). */
