@@ -27,6 +27,13 @@ import robosim.protocol.ViewerHello;
  */
 class ReplayTest {
     private static final long LONG_S = 120;
+    /**
+     * The seek test's recording: long enough that a replay resumed at step 10 at its top speed (100 times real
+     * time, 200 steps a second) runs for some 10 s before its end, so the viewer sees it go on from where it was
+     * sought well before the end even on a loaded machine.
+     */
+    private static final int SEEK_STEPS = 2000;
+    private static final int MIDDLE = SEEK_STEPS / 2;
 
     @Test
     void aReplayGivesAViewerWhatTheLiveRunGaveIt(@TempDir Path dir) throws Exception {
@@ -77,7 +84,7 @@ class ReplayTest {
     void theControlPortSeeksStepsAndStopsAReplay(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("run.rec");
         InJvmSimulation live = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .settings(s -> s.record(file)).run(5000, true, Chatter::new);
+                .settings(s -> s.record(file)).run(SEEK_STEPS, true, Chatter::new);
         assertTrue(live.summary.completed(), live.summary.reason());
         try (ProcessLines replay = replay(file, "--paused")) {
             ViewerStream got = new ViewerStream();
@@ -91,32 +98,32 @@ class ReplayTest {
             assertEquals("it would watch \"nobody\", which is not a robot of this recording",
                     stranger.awaitEnd(LONG_S, TimeUnit.SECONDS).reason());
             try (ControlClient control = new ControlClient("127.0.0.1", port(replay, "control"), null, (int) (LONG_S * 1000))) {
-                assertEquals("at step 2500", ok(control.request("seek 2500")).path("message").asText());
-                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(2500)),
-                        RecordingRunTest.bytes(got.awaitStep(2500, 0, LONG_S)), "the poses of step 2500");
+                assertEquals("at step " + MIDDLE, ok(control.request("seek " + MIDDLE)).path("message").asText());
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE)),
+                        RecordingRunTest.bytes(got.awaitStep(MIDDLE, 0, LONG_S)), "the poses of step " + MIDDLE);
                 int seen = got.messages.size();
-                assertEquals("paused at step 2501", ok(control.request("step 1")).path("message").asText());
-                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(2501)),
-                        RecordingRunTest.bytes(got.awaitStep(2501, seen, LONG_S)), "then step 2501");
+                assertEquals("paused at step " + (MIDDLE + 1), ok(control.request("step 1")).path("message").asText());
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE + 1)),
+                        RecordingRunTest.bytes(got.awaitStep(MIDDLE + 1, seen, LONG_S)), "then step " + (MIDDLE + 1));
                 JsonNode status = ok(control.request("status"));
                 assertEquals("PAUSED", status.path("state").asText(), status.toString());
-                assertEquals(2501, status.path("step").asLong(), status.toString());
+                assertEquals(MIDDLE + 1, status.path("step").asLong(), status.toString());
                 assertEquals(0, status.path("first_step").asLong(), status.toString());
-                assertEquals(4999, status.path("last_step").asLong(), status.toString());
+                assertEquals(SEEK_STEPS - 1, status.path("last_step").asLong(), status.toString());
 
-                assertTrue(control.request("seek 5000").path("error").asText().contains("not in the recording"));
+                assertTrue(control.request("seek " + SEEK_STEPS).path("error").asText().contains("not in the recording"));
                 assertTrue(control.request("speed 1000").path("error").asText().contains("0.1 to 100"));
                 assertTrue(control.request("step -3").path("error").asText().contains("positive whole number"));
                 seen = got.messages.size();
-                ok(control.request("seek 4999"));
-                got.awaitStep(4999, seen, LONG_S);
+                ok(control.request("seek " + (SEEK_STEPS - 1)));
+                got.awaitStep(SEEK_STEPS - 1, seen, LONG_S);
                 assertTrue(control.request("resume").path("error").asText().contains("at the end of the recording"));
                 seen = got.messages.size();
                 ok(control.request("seek 10"));
                 seen = got.messages.indexOf(got.awaitStep(10, seen, LONG_S));
                 ok(control.request("speed 100"));
                 ok(control.request("resume"));
-                got.awaitStep(11, 4998, seen, LONG_S); // runs on from where it was sought (a live viewer gets the newest)
+                got.awaitStep(11, SEEK_STEPS - 2, seen, LONG_S); // runs on from where it was sought (a live viewer gets the newest)
                 ok(control.request("stop"));
             }
             viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);
