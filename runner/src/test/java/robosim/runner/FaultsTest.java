@@ -20,6 +20,8 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.parallel.Execution;
+import org.junit.jupiter.api.parallel.ExecutionMode;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -89,7 +91,7 @@ class FaultsTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
     }
 
     /** A robot client by hand: hello, welcome, then {@code steps} steps standing still. */
@@ -137,7 +139,7 @@ class FaultsTest {
                 } catch (IOException e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, TestThreads.ROBOTS);
             CompletableFuture<String> r2 = robot("r2", new ArRobot(), ports[0]);
             CompletableFuture<String> r3 = robot("r3", new Scout(), ports[0]);
             r1.get(LONG, TimeUnit.SECONDS).close(); // gone after 20 steps, mid-run
@@ -157,6 +159,7 @@ class FaultsTest {
 
     @ParameterizedTest
     @EnumSource(CoordinatorDesign.class)
+    @Execution(ExecutionMode.CONCURRENT) // (each waits out a step timeout on its own Environment and free ports)
     void aRobotThatFallsSilentIsDroppedAfterTheStepTimeout(CoordinatorDesign design) throws Exception {
         try (ClientWorkerCoordinator env = start(builder(true, 60).design(design).stepTimeoutMs(STEP_TIMEOUT_MS).build())) {
             int[] ports = env.ports();
@@ -166,7 +169,7 @@ class FaultsTest {
                 } catch (IOException e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, TestThreads.ROBOTS);
             CompletableFuture<String> r2 = robot("r2", new ArRobot(), ports[0]);
             CompletableFuture<String> r3 = robot("r3", new Scout(), ports[0]);
             try (ObjectConnection silent = r1.get(LONG, TimeUnit.SECONDS)) {
@@ -235,7 +238,7 @@ class FaultsTest {
                         } catch (IOException e) {
                             throw new IllegalStateException(e);
                         }
-                    });
+                    }, TestThreads.ROBOTS);
                     assertTrue(events.geometryAttached.await(LONG, TimeUnit.SECONDS), "the new Geometry attached");
                     second.get(LONG, TimeUnit.SECONDS);
                 });
@@ -342,7 +345,7 @@ class FaultsTest {
             } catch (IOException e) {
                 // dropped by the Environment after its bad answer: expected
             }
-        }), losses);
+        }, TestThreads.ROBOTS), losses);
         assertEquals(1, losses[0], "the lying Geometry process was lost once");
         assertEquals(reference.step(), faulty.step());
         for (int i = 0; i < reference.count(); i++) {
@@ -392,6 +395,9 @@ class FaultsTest {
         "viewer, GADGET", "viewer, HUGE_ARRAY", "viewer, DEEP",
         "geometry, GADGET", "geometry, HUGE_ARRAY", "geometry, DEEP",
     })
+    // side by side (4 at a time, junit-platform.properties): each case has its own Environment on free ports and
+    // its clients on threads of their own (TestThreads), and the NOTHING cases wait out the 5 s handshake deadline
+    @Execution(ExecutionMode.CONCURRENT)
     void badInputIsRefusedAndTheSimulationRunsOn(String port, Bad bad) throws Exception {
         Settings s = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(false).maxSteps(30)
                 .resetEvery(64).handshakeTimeoutMs(5000).build();
@@ -431,7 +437,7 @@ class FaultsTest {
                 } catch (IOException e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, TestThreads.ROBOTS);
             List<CompletableFuture<String>> robots = new ArrayList<>(List.of(robot("r1", new ArRobot(), ports[0]),
                     robot("r2", new ArRobot(), ports[0]), robot("r3", new Scout(), ports[0])));
             for (CompletableFuture<String> r : robots) {
