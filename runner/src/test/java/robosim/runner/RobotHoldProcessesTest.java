@@ -22,14 +22,19 @@ import robosim.protocol.RobotView;
 import robosim.protocol.StepRequest;
 
 /**
- * {@code --on-robot-loss HOLD} over real processes: robot ring2's process is killed (SIGKILL) in step 1000 of
- * a 2000-step run, the world runs 200 steps without it, and a new process takes it over. It goes on from where
+ * {@code --on-robot-loss HOLD} over real processes: robot ring2's process is killed (SIGKILL) in step 200 of
+ * a 600-step run, the world runs 200 steps without it, and a new process takes it over. It goes on from where
  * it stood; every message sent to it meanwhile reaches it once, in order; and every robot's pose at every step
  * equals a run in which ring2 sent what it sent and merely stood still for those 200 steps.
  */
 class RobotHoldProcessesTest {
     private static final long LONG_S = 50;
-    private static final int STEPS = 2000;
+    /** The step in which ring2's process is killed. */
+    private static final int LOSS = 200;
+    /** The steps the world runs without it (LOSS + 1 to LOSS + AWAY); it is back in step BACK. */
+    private static final int AWAY = 200;
+    private static final int BACK = LOSS + AWAY + 1;
+    private static final int STEPS = 600;
     private static final int RING2 = 1;
     private static final Path WORLD = Path.of("src/test/resources/ring-hold.xml");
 
@@ -66,7 +71,7 @@ class RobotHoldProcessesTest {
     }
 
     @Test
-    void aRobotKilledInStep1000ComesBackWhereItStoodWithItsMessagesAndTheOthersMoveAsIfItHadStoodStill(
+    void aRobotKilledMidRunComesBackWhereItStoodWithItsMessagesAndTheOthersMoveAsIfItHadStoodStill(
             @TempDir Path dir) throws Exception {
         Path held = dir.resolve("held.rec");
         try (ProcessLines env = environment(held, "--start-paused", "--on-robot-loss", "HOLD")) {
@@ -76,21 +81,21 @@ class RobotHoldProcessesTest {
                     ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(ports.get("control")), null,
                             (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
                 env.await("running robots=4", LONG_S);
-                assertEquals("paused at step 1000", ok(control, "step 1000"));
-                ok(control, "pause"); // returns once step 1000 is computed: every request of it is in
+                assertEquals("paused at step " + LOSS, ok(control, "step " + LOSS));
+                ok(control, "pause"); // returns once step LOSS is computed: every request of it is in
                 first.process.destroyForcibly();
                 assertTrue(first.process.waitFor(LONG_S, TimeUnit.SECONDS));
-                env.await("robot ring2 lost during step 1000", LONG_S);
+                env.await("robot ring2 lost during step " + LOSS, LONG_S);
                 ok(control, "step 1");
-                env.await("robot ring2 lost at step 1001", LONG_S);
+                env.await("robot ring2 lost at step " + (LOSS + 1), LONG_S);
                 assertEquals("held", state(control, "ring2"));
-                ok(control, "step 199");
-                ok(control, "pause"); // step 1200 computed without it
+                ok(control, "step " + (AWAY - 1));
+                ok(control, "pause"); // step LOSS + AWAY computed without it
                 try (ProcessLines again = ring2(port)) {
                     env.await("robot ring2 says hello again", LONG_S);
                     assertEquals("returning", state(control, "ring2"));
                     ok(control, "resume");
-                    env.await("robot ring2 is back at step 1201", LONG_S);
+                    env.await("robot ring2 is back at step " + BACK, LONG_S);
                     env.await("summary steps=" + STEPS, LONG_S);
                     assertTrue(again.process.waitFor(LONG_S, TimeUnit.SECONDS));
                     assertTrue(others.process.waitFor(LONG_S, TimeUnit.SECONDS));
@@ -147,35 +152,35 @@ class RobotHoldProcessesTest {
         }
     }
 
-    /** ring2 took part in step 1000 (nothing reached it), stood where it was from 1001 to 1200, moved on from 1201. */
+    /** ring2 took part in step LOSS (nothing reached it), stood where it was from LOSS + 1 to LOSS + AWAY, moved on from BACK. */
     private static void checkHeld(List<RecordingReader.Step> steps) {
-        PoseUpdate at1000 = steps.get(1000).update();
-        for (int k = 1001; k <= 1200; k++) {
+        PoseUpdate atLoss = steps.get(LOSS).update();
+        for (int k = LOSS + 1; k <= LOSS + AWAY; k++) {
             PoseUpdate u = steps.get(k).update();
-            assertEquals(at1000.xMm(RING2), u.xMm(RING2), "step " + k);
-            assertEquals(at1000.yMm(RING2), u.yMm(RING2), "step " + k);
-            assertEquals(at1000.headingDeg(RING2), u.headingDeg(RING2), "step " + k);
+            assertEquals(atLoss.xMm(RING2), u.xMm(RING2), "step " + k);
+            assertEquals(atLoss.yMm(RING2), u.yMm(RING2), "step " + k);
+            assertEquals(atLoss.headingDeg(RING2), u.headingDeg(RING2), "step " + k);
             assertNull(steps.get(k).view(RING2), "no view of an away robot, step " + k);
             assertEquals(List.of("ring2"), u.held(), "viewers see it held, step " + k);
         }
-        assertEquals(List.of(), steps.get(1000).update().held());
-        assertEquals(List.of(), steps.get(1201).update().held(), "viewers see it back");
+        assertEquals(List.of(), steps.get(LOSS).update().held());
+        assertEquals(List.of(), steps.get(BACK).update().held(), "viewers see it back");
         boolean bumped = false;
-        for (int k = 1001; k <= 1200; k++) {
+        for (int k = LOSS + 1; k <= LOSS + AWAY; k++) {
             for (int i = 0; i < steps.get(k).update().count(); i++) {
                 RobotView v = steps.get(k).view(i);
                 bumped |= i != RING2 && v != null && v.contact().equals("ring2");
             }
         }
         assertTrue(bumped, "another robot ran into ring2 where it stood (the world tests what it should)");
-        assertNotNull(steps.get(1000).view(RING2));
-        assertEquals(List.of(), steps.get(1000).view(RING2).delivered(), "step 1000's response never reached it");
-        assertNotNull(steps.get(1201).view(RING2), "back at step 1201");
-        assertTrue(steps.get(1201).view(RING2).moveMm() != 0 || steps.get(1201).view(RING2).turnDeg() != 0,
+        assertNotNull(steps.get(LOSS).view(RING2));
+        assertEquals(List.of(), steps.get(LOSS).view(RING2).delivered(), "step " + LOSS + "'s response never reached it");
+        assertNotNull(steps.get(BACK).view(RING2), "back at step " + BACK);
+        assertTrue(steps.get(BACK).view(RING2).moveMm() != 0 || steps.get(BACK).view(RING2).turnDeg() != 0,
                 "its new process drives it");
     }
 
-    /** What ring1 sent ring2 reached it once, in order; what was sent from step 1000 to 1201 in its first response back. */
+    /** What ring1 sent ring2 reached it once, in order; what was sent from step LOSS to BACK in its first response back. */
     private static void checkMessages(List<RecordingReader.Step> steps) {
         List<String> sent = new ArrayList<>();
         List<String> delivered = new ArrayList<>();
@@ -184,7 +189,7 @@ class RobotHoldProcessesTest {
             for (CommEvent m : steps.get(k).view(0).sent()) {
                 if (m.to().equals("ring2")) {
                     sent.add(m.payload());
-                    if (k >= 1000 && k <= 1201) {
+                    if (k >= LOSS && k <= BACK) {
                         whileAway.add(m.payload());
                     }
                 }
@@ -197,7 +202,7 @@ class RobotHoldProcessesTest {
         assertEquals(STEPS, sent.size(), "ring1 sends ring2 one message a step");
         assertEquals(sent.stream().map(p -> "ring1:" + p).toList(), delivered);
         assertEquals(whileAway.stream().map(p -> "ring1:" + p).toList(),
-                steps.get(1201).view(RING2).delivered().stream().map(m -> m.from() + ":" + m.payload()).toList());
+                steps.get(BACK).view(RING2).delivered().stream().map(m -> m.from() + ":" + m.payload()).toList());
     }
 
     private static String state(ControlClient control, String robot) throws Exception {
