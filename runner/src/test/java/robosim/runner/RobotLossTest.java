@@ -37,6 +37,11 @@ class RobotLossTest {
     private static final int STEPS = 200;
     /** r1 moves this far a step (ArRobot's limit at the file's 500 ms step is far more). */
     private static final double MOVE_MM = 40;
+    /**
+     * The step timeout where a test needs one (as FaultsTest's): long enough that a robot which answers is never
+     * late on a loaded machine, short enough for the suite.
+     */
+    private static final long STEP_TIMEOUT_MS = 2000;
 
     private static ClientWorkerCoordinator start(RobotLoss loss, CoordinatorDesign design, long stepTimeoutMs)
             throws Exception {
@@ -182,7 +187,7 @@ class RobotLossTest {
 
     @Test
     void underWaitARobotThatDoesNotComeBackWithinTheStepTimeoutIsRemoved() throws Exception {
-        try (ClientWorkerCoordinator env = start(RobotLoss.WAIT, CoordinatorDesign.THREADS, 5_000)) {
+        try (ClientWorkerCoordinator env = start(RobotLoss.WAIT, CoordinatorDesign.THREADS, STEP_TIMEOUT_MS)) {
             int port = env.ports()[0];
             CompletableFuture<Long> others = others(port, -1, new CountDownLatch(1), new CountDownLatch(0));
             try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
@@ -195,7 +200,7 @@ class RobotLossTest {
             assertEquals(1, s.robotsLeft());
             assertEquals("r1", s.departures().get(0).robot());
             assertEquals(20, s.departures().get(0).step());
-            assertTrue(s.departures().get(0).why().contains("did not come back within 5000 ms"),
+            assertTrue(s.departures().get(0).why().contains("did not come back within " + STEP_TIMEOUT_MS + " ms"),
                     s.departures().get(0).why());
         }
     }
