@@ -296,7 +296,8 @@ public final class Soak implements Callable<Integer> {
         }
         long at = step.get();
         SoakClients.run("jcmd", Long.toString(pid), "GC.run");
-        Matcher m = Pattern.compile("tenured generation\\s+total \\d+K, used (\\d+)K")
+        // (JDK 17: "tenured generation total NK, used NK"; JDK 21+: "Tenured total NK, used NK")
+        Matcher m = Pattern.compile("(?i)tenured(?: generation)?\\s+total \\d+K, used (\\d+)K")
                 .matcher(SoakClients.run("jcmd", Long.toString(pid), "GC.heap_info"));
         long kb = m.find() ? Long.parseLong(m.group(1)) : -1;
         faults.add("Environment heap read at step " + at + ": " + kb + " KB");
