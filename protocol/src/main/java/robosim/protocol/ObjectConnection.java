@@ -170,6 +170,11 @@ public final class ObjectConnection implements Closeable {
         return type.cast(o);
     }
 
+    /** The bytes the last message read took from the stream. The reading thread only. */
+    public long lastMessageBytes() {
+        return budget.used();
+    }
+
     private ProtocolException truncated(Class<?> type) {
         return new ProtocolException("the connection ended " + budget.used() + " bytes into a " + type.getSimpleName()
                 + " (a truncated message)");

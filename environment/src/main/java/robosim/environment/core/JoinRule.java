@@ -25,10 +25,7 @@ public record JoinRule(String allow, WorldSpec.RobotSpec template, Spawn spawn, 
         if (name != null && NAME.matcher(name).matches()) {
             return null;
         }
-        String shown = name == null ? "" : name.codePoints().limit(64)
-                .map(c -> Character.isISOControl(c) ? '?' : c)
-                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
-        return "\"" + shown + "\" is not a name a robot may join with (1 to 64 letters, digits and - _ . :)";
+        return "\"" + WorldSpec.shown(name) + "\" is not a name a robot may join with (1 to 64 letters, digits and - _ . :)";
     }
 
     public JoinRule {

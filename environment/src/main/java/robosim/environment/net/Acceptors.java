@@ -99,7 +99,14 @@ final class Acceptors {
                     if (held.open.incrementAndGet() > held.cap) {
                         held.open.decrementAndGet();
                         s.close();
-                        refused(held);
+                        refused(held, "it holds at most " + held.cap + " at a time (--max-connections)");
+                        continue;
+                    }
+                    if (coordinator.strangers().full()) {
+                        held.open.decrementAndGet();
+                        s.close();
+                        refused(held, "clients not yet accepted hold all the Environment keeps for them ("
+                                + (coordinator.strangers().total() >> 20) + " MiB)");
                         continue;
                     }
                     ClientWorker w = null;
@@ -132,13 +139,12 @@ final class Acceptors {
         t.start();
     }
 
-    /** One connection over a port's cap was closed: says so at most once a second per port. */
-    private static void refused(Held held) {
+    /** A connection was closed at once, for {@code why}: says so at most once a second per port. */
+    private static void refused(Held held, String why) {
         held.refusedSinceLog++;
         long now = System.nanoTime();
         if (now - held.lastLogNanos >= TimeUnit.SECONDS.toNanos(1) || held.lastLogNanos == 0) {
-            LOG.warn("{} port: {} connection(s) closed at once: it holds at most {} at a time (--max-connections)",
-                    held.what, held.refusedSinceLog, held.cap);
+            LOG.warn("{} port: {} connection(s) closed at once: {}", held.what, held.refusedSinceLog, why);
             held.refusedSinceLog = 0;
             held.lastLogNanos = now;
         }

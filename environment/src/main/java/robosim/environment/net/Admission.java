@@ -43,8 +43,8 @@ final class Admission {
                 return robosim.environment.core.JoinRule.badName(hello.name());
             }
             if (rule == null) {
-                return "no robot named \"" + hello.name() + "\" in " + spec.source() + " (robots: "
-                        + String.join(", ", names) + joiners() + ")";
+                return "no robot named \"" + Printable.of(hello.name(), 64) + "\" in " + spec.source() + " (robots: "
+                        + listed(names) + joiners() + ")";
             }
             return rule.robot(hello.name(), 0, 0).contradiction(hello.properties(), spec.source());
         }
@@ -70,13 +70,21 @@ final class Admission {
         return added;
     }
 
+    /** Names for a refusal: at most {@link #LISTED}, then how many in all (a refusal stays short in a large world). */
+    private static String listed(List<String> all) {
+        return all.size() <= LISTED ? String.join(", ", all)
+                : String.join(", ", all.subList(0, LISTED)) + ", ... (" + all.size() + " in all)";
+    }
+
+    /** Names a refusal lists at most. */
+    private static final int LISTED = 10;
+
     /** The file's join rules, for a refusal: "; may join: rover9, scout-*", or "" when there are none. */
     private String joiners() {
         if (spec.joins().isEmpty()) {
             return "";
         }
-        return "; may join: " + String.join(", ", spec.joins().stream().map(robosim.environment.core.JoinRule::allow)
-                .toList());
+        return "; may join: " + listed(spec.joins().stream().map(robosim.environment.core.JoinRule::allow).toList());
     }
 
     /** How the properties a returning robot says it has differ from those it had (the file's checks passed). */

@@ -91,7 +91,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
             configure(socket);
             ObjectConnection c = ObjectConnection.server(socket, coordinator.settings().resetEvery(),
                     coordinator.settings().keys());
-            handshake = new Handshake(this, c, coordinator.settings().keys());
+            handshake = new Handshake(this, c, coordinator.settings().keys(), coordinator.strangers());
             connection = c;
             if (dropped) {
                 c.close(); // dropped (cut off) while the streams were being opened
@@ -104,6 +104,9 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
             Thread.currentThread().interrupt();
         } finally {
             coordinator.watch().forget(this);
+            if (handshake != null) {
+                handshake.end();
+            }
             if (connection != null) {
                 connection.close();
             } else {
@@ -126,13 +129,13 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
             LOG.debug("{}: {}", name, why); // (the watch has said it)
         } else if (e instanceof ProtocolException) {
             why = e.getMessage();
-            LOG.warn("{} dropped: {}", name, Printable.of(why));
+            LOG.warn("{} dropped: {}", name, Printable.of(why, Handshake.LOGGED_CHARS));
         } else if (e instanceof EOFException) {
             why = "the client closed the connection";
             LOG.debug("{}: {}", name, why);
         } else {
             why = "connection lost: " + e.getMessage();
-            LOG.info("{}: {}", name, Printable.of(why));
+            LOG.info("{}: {}", name, Printable.of(why, Handshake.LOGGED_CHARS));
         }
         return why;
     }

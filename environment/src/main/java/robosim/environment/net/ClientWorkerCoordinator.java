@@ -43,6 +43,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final CountDownLatch startedLatch = new CountDownLatch(1);
     private volatile boolean began;
     private Thread loop;
+    /** What every client not yet accepted may hold in this Environment, all ports together. */
+    private final StrangerBudget strangers = new StrangerBudget(StrangerBudget.DEFAULT_BYTES);
     /** Cuts off every connection that misses its handshake deadline or does not take a write in time. */
     private final ConnectionWatch watch;
 
@@ -144,6 +146,11 @@ public final class ClientWorkerCoordinator implements Closeable {
         watch.stopWhenIdle();
         endedLatch.countDown();
         startedLatch.countDown();
+    }
+
+    /** The one budget of every client not yet accepted. */
+    StrangerBudget strangers() {
+        return strangers;
     }
 
     /** Times every connection's handshake and writes. */

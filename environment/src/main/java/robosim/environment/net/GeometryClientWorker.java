@@ -43,7 +43,7 @@ final class GeometryClientWorker extends ClientWorker {
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        GeometryHello hello = connection.read(GeometryHello.class);
+        GeometryHello hello = handshake.read(GeometryHello.class);
         String refusal = handshake.heard("geometry");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "

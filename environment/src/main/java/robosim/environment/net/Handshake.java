@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import java.io.Externalizable;
 import java.io.IOException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
@@ -11,15 +12,17 @@ import robosim.protocol.Challenge;
 import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Proof;
+import robosim.protocol.ProtocolException;
 import robosim.protocol.SimulationKeys;
 
 /**
  * One connection's handshake, as its worker thread does it, the same for every kind of client (a robot, a
  * shared connection, a viewer, Geometry): until it is {@link #accepted} the client is a stranger, held to
  * {@link Limits#MAX_HELLO_BYTES} a message and to the handshake deadline of its {@link ConnectionClock};
- * with a shared secret it proves it ({@link #proveSecret}); the loop's verdict on its hello is awaited
- * within a limit of the Environment's own; a refusal is logged once, its network text escaped. The
- * worker's thread only.
+ * with a shared secret it proves it ({@link #proveSecret}); what it has sent is held against the one
+ * {@link StrangerBudget} of every port until it is accepted or answered; the loop's verdict on its hello is
+ * awaited within a limit of the Environment's own; a refusal is logged once, its network text escaped and
+ * cut. The worker's thread only.
  */
 final class Handshake {
     private static final Logger LOG = LoggerFactory.getLogger(Handshake.class);
@@ -29,12 +32,47 @@ final class Handshake {
     private final ClientWorker worker;
     private final ObjectConnection connection;
     private final SimulationKeys keys;
+    private final StrangerBudget strangers;
+    /** What this connection holds of the stranger budget now, bytes. */
+    private long held;
 
-    Handshake(ClientWorker worker, ObjectConnection connection, SimulationKeys keys) {
+    Handshake(ClientWorker worker, ObjectConnection connection, SimulationKeys keys, StrangerBudget strangers) {
         this.worker = worker;
         this.connection = connection;
         this.keys = keys;
+        this.strangers = strangers;
         connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
+    }
+
+    /**
+     * Reads one message of the stranger's: the most it may take is taken from the stranger budget first (a
+     * stranger the budget cannot hold is dropped), and what it did not use is given back; the rest stays held
+     * until the handshake {@link #end}s.
+     */
+    <T extends Externalizable> T read(Class<T> type) throws IOException {
+        hold(Limits.MAX_HELLO_BYTES);
+        try {
+            return connection.read(type);
+        } finally {
+            long unused = Limits.MAX_HELLO_BYTES - Math.min(Limits.MAX_HELLO_BYTES, connection.lastMessageBytes());
+            held -= unused;
+            strangers.give(unused);
+        }
+    }
+
+    /** Takes {@code bytes} from the stranger budget for this connection (a refusal about to be written). */
+    void hold(long bytes) throws ProtocolException {
+        if (!strangers.take(bytes)) {
+            throw new ProtocolException("the Environment already holds all it keeps for clients not yet accepted ("
+                    + (strangers.total() >> 20) + " MiB); try again later");
+        }
+        held += bytes;
+    }
+
+    /** The handshake is over (accepted, refused and answered, or the connection closed): what it held is given back. */
+    void end() {
+        strangers.give(held);
+        held = 0;
     }
 
     /**
@@ -60,7 +98,7 @@ final class Handshake {
         byte[] nonce = SimulationKeys.nonce();
         connection.write(new Challenge(nonce));
         connection.flush();
-        Proof proof = connection.read(Proof.class);
+        Proof proof = read(Proof.class);
         return keys.proves(role, nonce, proof.mac()) ? null : "it did not prove the shared secret";
     }
 
@@ -85,13 +123,20 @@ final class Handshake {
         }
     }
 
-    /** The client is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}. */
+    /**
+     * The client is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}, and
+     * what it said is the world's, no longer held against the stranger budget.
+     */
     void accepted() {
         connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
+        end();
     }
 
-    /** Logs that the client was refused, and why (network text escaped). */
+    /** Logs that the client was refused, and why (network text escaped; the line at most about 1 KB). */
     void refused(String why) {
-        LOG.warn("{} refused: {}", worker.label(), Printable.of(why));
+        LOG.warn("{} refused: {}", worker.label(), Printable.of(why, LOGGED_CHARS));
     }
+
+    /** How much of a reason a log line about one connection quotes, at most. */
+    static final int LOGGED_CHARS = 900;
 }

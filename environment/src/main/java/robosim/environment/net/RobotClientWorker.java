@@ -26,7 +26,7 @@ final class RobotClientWorker extends ClientWorker {
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        Externalizable first = connection.read(Externalizable.class);
+        Externalizable first = handshake.read(Externalizable.class);
         if (first instanceof SharedHello h) {
             rename("robot-worker[shared #" + serial + "]");
             SharedConnection s = new SharedConnection(this, coordinator, connection, handshake);

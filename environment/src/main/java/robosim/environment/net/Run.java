@@ -497,14 +497,18 @@ final class Run {
             return;
         }
         s.connection().outputTo(output);
+        boolean anyWelcomed = false;
         for (LoopEvent.RobotJoins j : s.joins()) {
             String refusal = register(j);
             if (refusal != null) {
                 s.connection().replies().welcome(((SharedRobot) j.worker()).slot(), RobotWelcome.refused(refusal));
             }
+            anyWelcomed |= refusal == null;
             j.verdict().complete(refusal);
         }
-        s.connection().flush(); // (the welcomes go out before any step number)
+        if (anyWelcomed) {
+            s.connection().flush(); // (the welcomes go out before any step number)
+        } // (else the connection is no robot of the world: its own thread writes the refusals, not the loop)
         s.answered().complete(true);
         rosterChanged = true;
     }
@@ -528,7 +532,7 @@ final class Run {
         }
         RobotSlot s = roster.get(j.index());
         if (s.peer != null) {
-            return "robot " + j.hello().name() + " is already connected";
+            return "robot " + s.name + " is already connected";
         }
         try {
             j.worker().welcome(admission.welcome(s.index));

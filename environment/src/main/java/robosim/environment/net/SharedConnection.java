@@ -69,30 +69,33 @@ final class SharedConnection {
                 replies.welcome(slot, RobotWelcome.refused(refusal));
             }
             handshake.refused("a shared connection of " + n + " robot(s): " + refusal);
+            handshake.hold(n * refusalBytes(refusal)); // (held against the stranger budget until written)
             write();
             return;
         }
         write(); // (an empty frame: send the hellos)
         List<RobotHello> hellos = new ArrayList<>(n);
         for (int slot = 0; slot < n; slot++) {
-            hellos.add(connection.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
+            hellos.add(handshake.read(RobotHello.class)); // (each under the stranger's byte cap and deadline)
         }
         handshake.over();
         robots = new SharedRobot[n];
         List<LoopEvent.RobotJoins> joins = new ArrayList<>();
         java.util.Set<String> names = new java.util.HashSet<>();
         List<String> refused = new ArrayList<>();
+        long unwritten = 0;
         for (int slot = 0; slot < n; slot++) {
             RobotHello hello = hellos.get(slot);
             int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
             String why = coordinator.admission().check(hello, wanted);
             if (why == null && !names.add(hello.name())) {
-                why = "robot " + hello.name() + " is named twice on this connection";
+                why = "robot " + Printable.of(hello.name(), 64) + " is named twice on this connection";
             }
             if (why != null) {
                 replies.welcome(slot, RobotWelcome.refused(why));
+                unwritten += refusalBytes(why);
                 if (refused.size() < 3) {
-                    refused.add(hello.name() + ": " + why);
+                    refused.add(Printable.of(hello.name(), 64) + ": " + Printable.of(why, 240));
                 }
                 continue;
             }
@@ -108,26 +111,33 @@ final class SharedConnection {
             coordinator.post(new LoopEvent.SharedJoins(this, joins, answered));
             if (!handshake.verdict(answered)) { // (the loop never saw them: this thread still owns the frame)
                 joins.forEach(j -> replies.welcome(((SharedRobot) j.worker()).slot(),
-                        RobotWelcome.refused("the simulation is over")));
+                        RobotWelcome.refused(LoopEvent.OVER)));
+                unwritten += joins.size() * refusalBytes(LoopEvent.OVER);
                 joins.clear();
             }
             for (LoopEvent.RobotJoins j : joins) {
                 SharedRobot r = (SharedRobot) j.worker();
-                if (j.verdict().getNow("no answer") != null) {
+                String verdict = j.verdict().getNow("no answer");
+                if (verdict != null) {
                     robots[r.slot()] = null;
+                    unwritten += refusalBytes(verdict);
                 } else {
                     welcomed++;
                 }
             }
         }
         if (welcomed == 0) {
-            if (joins.isEmpty()) {
-                write(); // (refused before the loop saw them; with the loop's verdicts it wrote them)
-            }
+            handshake.hold(unwritten); // (held against the stranger budget until written)
+            write(); // (every robot refused: this thread writes the answers, under the connection's own clock)
             return;
         }
         handshake.accepted();
         read();
+    }
+
+    /** About what one refusal takes in a frame, bytes (its reason's characters, at most two bytes each, and a slot). */
+    private static long refusalBytes(String why) {
+        return 2L * why.length() + 16;
     }
 
     /** Every frame of requests, checked, each handed to the loop as one event. */

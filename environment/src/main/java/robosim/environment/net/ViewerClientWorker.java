@@ -40,7 +40,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     @Override
     protected void serve() throws IOException, InterruptedException {
         ViewerWrites writes = new ViewerWrites(connection, clock);
-        ViewerHello hello = connection.read(ViewerHello.class);
+        ViewerHello hello = handshake.read(ViewerHello.class);
         String refusal = handshake.heard("viewer");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "
