@@ -22,6 +22,13 @@ import org.junit.jupiter.api.Test;
 
 /** The connection wrapper over a real loopback socket pair on an ephemeral port. */
 class ObjectConnectionTest {
+    /** The peers' side, a thread each (they block in socket reads: never the common pool). */
+    private static final java.util.concurrent.Executor PEERS = r -> {
+        Thread t = new Thread(r, "test-peer");
+        t.setDaemon(true);
+        t.start();
+    };
+
     private ServerSocket server;
     private Socket clientSocket;
     private Socket serverSocket;
@@ -41,7 +48,7 @@ class ObjectConnectionTest {
     }
 
     private ObjectConnection[] pair(int resetEvery) throws Exception {
-        CompletableFuture<ObjectConnection> a = CompletableFuture.supplyAsync(() -> open(clientSocket, resetEvery));
+        CompletableFuture<ObjectConnection> a = CompletableFuture.supplyAsync(() -> open(clientSocket, resetEvery), PEERS);
         ObjectConnection b = new ObjectConnection(serverSocket, resetEvery);
         return new ObjectConnection[] {a.get(10, TimeUnit.SECONDS), b};
     }
@@ -73,7 +80,7 @@ class ObjectConnectionTest {
     void theReferenceBoundIsPerMessageNotPerStreamLife() throws Exception {
         // with a bound of 100 objects per message, 5,000 one-object messages must all pass: the JDK's
         // count only ever grows, so a bound on it would end every connection after 100 messages
-        CompletableFuture<ObjectConnection> a = CompletableFuture.supplyAsync(() -> open(clientSocket, 64));
+        CompletableFuture<ObjectConnection> a = CompletableFuture.supplyAsync(() -> open(clientSocket, 64), PEERS);
         ObjectConnection b = new ObjectConnection(serverSocket, 64, new ProtocolFilter(100));
         ObjectConnection c = a.get(10, TimeUnit.SECONDS);
         CompletableFuture<Void> writer = CompletableFuture.runAsync(() -> {
@@ -85,7 +92,7 @@ class ObjectConnectionTest {
             } catch (IOException e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, PEERS);
         for (int k = 0; k < 5000; k++) {
             assertEquals(k, b.read(StepRequest.class).step());
         }
@@ -129,7 +136,7 @@ class ObjectConnectionTest {
                 } catch (IOException e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, PEERS);
             ObjectConnection c = new ObjectConnection(client, resetEvery);
             for (int i = 0; i < messages; i++) {
                 c.write(new GeometryHello());

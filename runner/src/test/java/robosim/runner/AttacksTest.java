@@ -160,7 +160,7 @@ class AttacksTest {
                 } catch (IOException e) {
                     throw new IllegalStateException(e);
                 }
-            });
+            }, TestThreads.ROBOTS);
             assertTrue(events.geometryAttached.await(LONG_S, TimeUnit.SECONDS), "a new Geometry process attached");
             step(robots, 5, 10);
             assertTrue(env.awaitEnd(LONG_S, TimeUnit.SECONDS));

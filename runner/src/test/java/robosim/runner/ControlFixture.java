@@ -58,7 +58,7 @@ final class ControlFixture implements AutoCloseable {
             } catch (InterruptedException e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
     }
 
     ControlClient client(SimulationKeys keys) throws IOException {
@@ -80,7 +80,7 @@ final class ControlFixture implements AutoCloseable {
                 } catch (Exception e) {
                     throw new IllegalStateException(e);
                 }
-            }));
+            }, TestThreads.ROBOTS));
         }
         return out;
     }

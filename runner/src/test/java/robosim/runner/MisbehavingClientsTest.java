@@ -54,7 +54,7 @@ class MisbehavingClientsTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
     }
 
     /** A raw robot client: says hello as {@code name} and reads its welcome. */
@@ -120,7 +120,7 @@ class MisbehavingClientsTest {
                 run(connect("r2", new ArRobot(), ports[0])), run(connect("r3", new Scout(), ports[0])));
         geometry.read(robosim.protocol.GeometryWorld.class);
         geometry.read(robosim.protocol.GeometryStepRequest.class); // step 0 is now waiting for us
-        CompletableFuture<Void> stopping = CompletableFuture.runAsync(() -> env.stop("stopped by the test"));
+        CompletableFuture<Void> stopping = CompletableFuture.runAsync(() -> env.stop("stopped by the test"), TestThreads.ROBOTS);
         stopping.get(30, TimeUnit.SECONDS);
         assertFalse(env.summary().completed());
         // the stuck step holds the robots' responses, so stop closes their connections: each robot ends,

@@ -85,7 +85,7 @@ class RemoteControlKeysTest {
                     } catch (Exception e) {
                         throw new IllegalStateException(e);
                     }
-                });
+                }, TestThreads.ROBOTS);
             }
             // each robot's link is up once its control code runs, so after the first step
             assertTrue(firstStep.await(LONG, TimeUnit.SECONDS));

@@ -81,7 +81,7 @@ class RemoteControlTest {
                     } catch (Exception e) {
                         throw new IllegalStateException(e);
                     }
-                });
+                }, TestThreads.ROBOTS);
             }
             BlockingQueue<String> replies = new LinkedBlockingQueue<>();
             RobotInfo rc1 = RobotInfo.load(info).get(0);

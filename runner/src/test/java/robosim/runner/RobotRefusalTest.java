@@ -39,9 +39,9 @@ class RobotRefusalTest {
                     refusal("r1", new ArRobot(), port));
             HardwareSimulator r2 = connect("r2", new ArRobot(), port);
             HardwareSimulator r3 = connect("r3", new Scout(), port);
-            CompletableFuture<String> a = CompletableFuture.supplyAsync(() -> run(r1));
-            CompletableFuture<String> b = CompletableFuture.supplyAsync(() -> run(r2));
-            CompletableFuture<String> c = CompletableFuture.supplyAsync(() -> run(r3));
+            CompletableFuture<String> a = CompletableFuture.supplyAsync(() -> run(r1), TestThreads.ROBOTS);
+            CompletableFuture<String> b = CompletableFuture.supplyAsync(() -> run(r2), TestThreads.ROBOTS);
+            CompletableFuture<String> c = CompletableFuture.supplyAsync(() -> run(r3), TestThreads.ROBOTS);
             assertEquals("completed 20 steps", a.get(60, TimeUnit.SECONDS));
             assertEquals("completed 20 steps", b.get(60, TimeUnit.SECONDS));
             assertEquals("completed 20 steps", c.get(60, TimeUnit.SECONDS));

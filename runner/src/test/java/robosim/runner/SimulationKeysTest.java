@@ -173,7 +173,7 @@ class SimulationKeysTest {
             } catch (IOException e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
         HardwareSimulator r1 = connect("r1", new ArRobot(), ports[0], right); // (a socket of its own)
         CompletableFuture<String> first = CompletableFuture.supplyAsync(() -> {
             try {
@@ -181,7 +181,7 @@ class SimulationKeysTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
         List<HardwareSimulator> shared = List.of(new HardwareSimulator("r2", new ArRobot()),
                 new HardwareSimulator("r3", new Scout())); // (one shared connection)
         CompletableFuture<Void> others = CompletableFuture.runAsync(() -> {
@@ -191,7 +191,7 @@ class SimulationKeysTest {
             } catch (Exception e) {
                 throw new IllegalStateException(e);
             }
-        });
+        }, TestThreads.ROBOTS);
         assertEquals("completed 20 steps", first.get(LONG_S, TimeUnit.SECONDS));
         others.get(LONG_S, TimeUnit.SECONDS);
         for (HardwareSimulator sim : shared) {

@@ -88,7 +88,7 @@ class SlowReaderTest {
                     } catch (Exception e) {
                         throw new IllegalStateException(e);
                     }
-                }));
+                }, TestThreads.ROBOTS));
             }
             assertEquals(0, slow.readStep()); // the last thing it ever reads
             // it asks for step k once step k-1 is out (a viewer saw it), never reading a response

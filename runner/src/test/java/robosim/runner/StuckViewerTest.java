@@ -69,7 +69,7 @@ class StuckViewerTest {
                 } catch (Exception e) {
                     throw new IllegalStateException(e);
                 }
-            }));
+            }, TestThreads.ROBOTS));
         }
         return out;
     }
