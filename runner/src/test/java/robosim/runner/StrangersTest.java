@@ -97,4 +97,111 @@ class StrangersTest {
             r.get(LONG_S, TimeUnit.SECONDS);
         }
     }
+
+    /** Strangers at once, each with a shared hello of the most robots and hellos of the most bytes. */
+    private static final int STRANGERS = 16;
+    private static final int STEPS = 400;
+
+    @Test
+    void sixteenStrangersOfTheLargestHellosLeaveA256MiBEnvironmentItsMemoryAndItsRun() throws Exception {
+        List<String> clean = run(false);
+        List<String> attacked = run(true);
+        assertEquals(clean, attacked, "every robot's every pose, attacked and not");
+    }
+
+    /**
+     * One run of three robots in an Environment of its own with a 256 MiB heap, paced so that it lasts a few
+     * seconds; with {@code attack}, 16 strangers send their hellos meanwhile and the status is asked every
+     * 100 ms. Every robot's pose after every step, in order.
+     */
+    private static List<String> run(boolean attack) throws Exception {
+        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Xmx256m", "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"),
+                "robosim.environment.EnvironmentMain", "src/test/resources/three-robots.xml", "--steps",
+                Integer.toString(STEPS), "--speed", "50", "--no-geometry", "--robot-port", "0", "--viewer-port", "0",
+                "--control-port", "0"));
+        try (ProcessLines env = new ProcessLines(attack ? "attacked" : "clean", new ProcessBuilder(command))) {
+            java.util.Map<String, String> ports = HeadlessRunner.fields(env.await("listening robots=", LONG_S));
+            int port = Integer.parseInt(ports.get("robots"));
+            List<CompletableFuture<List<String>>> robots = new ArrayList<>();
+            for (String name : List.of("r1", "r2", "r3")) {
+                robots.add(CompletableFuture.supplyAsync(() -> drive(name, port), TestThreads.ROBOTS));
+            }
+            env.await("running robots=3", LONG_S);
+            if (attack) {
+                List<Socket> strangers = new ArrayList<>();
+                try (robosim.control.ControlClient control = new robosim.control.ControlClient("127.0.0.1",
+                        Integer.parseInt(ports.get("control")), null, (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
+                    control.request("status"); // (the control connection set up before the strangers come)
+                    for (int k = 0; k < STRANGERS; k++) {
+                        Socket stranger = new Socket(InetAddress.getLoopbackAddress(), port);
+                        strangers.add(stranger);
+                        int serial = k;
+                        CompletableFuture.runAsync(() -> sendLargestHellos(stranger, serial), TestThreads.ROBOTS);
+                    }
+                    long slowest = 0;
+                    List<Long> took = new ArrayList<>();
+                    while (!robots.stream().allMatch(CompletableFuture::isDone)) {
+                        long t0 = System.nanoTime();
+                        com.fasterxml.jackson.databind.JsonNode status = control.request("status");
+                        slowest = Math.max(slowest, System.nanoTime() - t0);
+                        took.add(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0));
+                        assertTrue(status.path("ok").asBoolean(), status.toString());
+                        if (status.path("state").asText().equals("ENDED")) {
+                            break;
+                        }
+                        LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(100));
+                    }
+                    assertTrue(took.size() >= 5, "the status was asked while the strangers were there: " + took);
+                    assertTrue(slowest <= TimeUnit.SECONDS.toNanos(1), "the slowest status answer took "
+                            + TimeUnit.NANOSECONDS.toMillis(slowest) + " ms: " + took + "\n" + env.output());
+                } finally {
+                    for (Socket s : strangers) {
+                        s.close();
+                    }
+                }
+            }
+            List<String> poses = new ArrayList<>();
+            for (CompletableFuture<List<String>> r : robots) {
+                poses.addAll(r.get(LONG_S, TimeUnit.SECONDS));
+            }
+            env.await("summary steps=" + STEPS, LONG_S);
+            assertEquals(0, env.exit(LONG_S), env.output());
+            assertTrue(!env.output().contains("OutOfMemoryError"), env.output());
+            return poses;
+        }
+    }
+
+    /** Robot {@code name} drives ahead (100 mm a step, a turn now and then) until the end; its poses. */
+    private static List<String> drive(String name, int port) {
+        List<String> poses = new ArrayList<>();
+        try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT, port)) {
+            while (r.next()) {
+                robosim.protocol.StepResponse p = r.step(100, r.step % 50 == 0 ? 90 : 0, false, List.of());
+                if (p == null) {
+                    break;
+                }
+                poses.add(name + " " + p.step() + " " + p.xMm() + " " + p.yMm() + " " + p.headingDeg());
+            }
+        } catch (Exception e) {
+            throw new IllegalStateException(e);
+        }
+        return poses;
+    }
+
+    /** A stranger's shared hello for the most robots a connection may carry, each name as long as a hello allows. */
+    private static void sendLargestHellos(Socket stranger, int serial) {
+        try {
+            ObjectOutputStream out = new ObjectOutputStream(new BufferedOutputStream(stranger.getOutputStream()));
+            out.writeObject(new SharedHello(robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION));
+            String filler = "y".repeat(14 * 1024);
+            for (int i = 0; i < robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION; i++) {
+                out.writeObject(new RobotHello(serial + ":" + i + filler, RobotModels.AR_ROBOT));
+                out.reset();
+            }
+            out.flush();
+        } catch (java.io.IOException e) {
+            // dropped by the Environment (the budget, the deadline) or closed by the test: what a stranger gets
+        }
+    }
 }
