@@ -76,6 +76,11 @@ public final class Soak implements Callable<Integer> {
             description = "Extra robots that fall silent at random steps (default: ${DEFAULT-VALUE}).")
     int silentRobots;
 
+    @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS", description = "What the Environment does when "
+            + "the soak kills its Geometry process: IN_PROCESS (the default) goes on in-process until the new one "
+            + "attaches; WAIT holds the step until it has, so that even a short soak sees it attach.")
+    String onGeometryLoss;
+
     @Option(names = "--step-timeout-ms", defaultValue = "2000",
             description = "The Environment's step timeout (default: ${DEFAULT-VALUE}).")
     long stepTimeoutMs;
@@ -100,7 +105,8 @@ public final class Soak implements Callable<Integer> {
             Process environment = children.start("environment", List.of("-XX:+UseSerialGC"),
                     "robosim.environment.EnvironmentMain", List.of(env.toString(), "--steps", Long.toString(steps),
                             "--robot-port", "0", "--viewer-port", "0", "--geometry-port", "0",
-                            "--step-timeout-ms", Long.toString(stepTimeoutMs), "--control-port", "0"), line -> {
+                            "--step-timeout-ms", Long.toString(stepTimeoutMs), "--control-port", "0",
+                            "--on-geometry-loss", onGeometryLoss), line -> {
                         if (line.startsWith("listening ")) {
                             listening.complete(HeadlessRunner.fields(line));
                         } else if (line.startsWith("summary ")) {
