@@ -110,16 +110,17 @@ class StrangersTest {
     }
 
     /**
-     * One run of three robots in an Environment of its own with a 256 MiB heap, paced so that it lasts a few
-     * seconds; with {@code attack}, 16 strangers send their hellos meanwhile and the status is asked every
-     * 100 ms. Every robot's pose after every step, in order.
+     * One run of three robots in an Environment of its own with a 256 MiB heap, started paused; with
+     * {@code attack}, 16 strangers send their hellos, and until every one of them is done (dropped, or all
+     * sent) the status is asked and the world stepped on, 5 steps at a time; then the run goes to its end.
+     * Every robot's pose after every step, in order.
      */
     private static List<String> run(boolean attack) throws Exception {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
                 .toString(), "-Xmx256m", "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"),
                 "robosim.environment.EnvironmentMain", "src/test/resources/three-robots.xml", "--steps",
-                Integer.toString(STEPS), "--speed", "50", "--no-geometry", "--robot-port", "0", "--viewer-port", "0",
-                "--control-port", "0"));
+                Integer.toString(STEPS), "--no-geometry", "--robot-port", "0", "--viewer-port", "0",
+                "--control-port", "0", "--start-paused"));
         try (ProcessLines env = new ProcessLines(attack ? "attacked" : "clean", new ProcessBuilder(command))) {
             java.util.Map<String, String> ports = HeadlessRunner.fields(env.await("listening robots=", LONG_S));
             int port = Integer.parseInt(ports.get("robots"));
@@ -127,48 +128,48 @@ class StrangersTest {
             for (String name : List.of("r1", "r2", "r3")) {
                 robots.add(CompletableFuture.supplyAsync(() -> drive(name, port), TestThreads.ROBOTS));
             }
-            env.await("running robots=3", LONG_S);
-            if (attack) {
-                List<Socket> strangers = new ArrayList<>();
-                try (robosim.control.ControlClient control = new robosim.control.ControlClient("127.0.0.1",
-                        Integer.parseInt(ports.get("control")), null, (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
-                    control.request("status"); // (the control connection set up before the strangers come)
-                    for (int k = 0; k < STRANGERS; k++) {
-                        Socket stranger = new Socket(InetAddress.getLoopbackAddress(), port);
-                        strangers.add(stranger);
-                        int serial = k;
-                        CompletableFuture.runAsync(() -> sendLargestHellos(stranger, serial), TestThreads.ROBOTS);
-                    }
-                    long slowest = 0;
-                    List<Long> took = new ArrayList<>();
-                    while (!robots.stream().allMatch(CompletableFuture::isDone)) {
-                        long t0 = System.nanoTime();
-                        com.fasterxml.jackson.databind.JsonNode status = control.request("status");
-                        slowest = Math.max(slowest, System.nanoTime() - t0);
-                        took.add(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0));
-                        assertTrue(status.path("ok").asBoolean(), status.toString());
-                        if (status.path("state").asText().equals("ENDED")) {
-                            break;
+            try (robosim.control.ControlClient control = new robosim.control.ControlClient("127.0.0.1",
+                    Integer.parseInt(ports.get("control")), null, (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
+                env.await("paused before step 0", LONG_S);
+                if (attack) {
+                    List<Socket> strangers = new ArrayList<>();
+                    List<CompletableFuture<Void>> sending = new ArrayList<>();
+                    try {
+                        for (int k = 0; k < STRANGERS; k++) {
+                            Socket stranger = new Socket(InetAddress.getLoopbackAddress(), port);
+                            strangers.add(stranger);
+                            int serial = k;
+                            sending.add(CompletableFuture.runAsync(() -> sendLargestHellos(stranger, serial),
+                                    TestThreads.ROBOTS));
                         }
-                        LockSupport.parkNanos(TimeUnit.MILLISECONDS.toNanos(100));
-                    }
-                    assertTrue(took.size() >= 5, "the status was asked while the strangers were there: " + took);
-                    assertTrue(slowest <= TimeUnit.SECONDS.toNanos(1), "the slowest status answer took "
-                            + TimeUnit.NANOSECONDS.toMillis(slowest) + " ms: " + took + "\n" + env.output());
-                } finally {
-                    for (Socket s : strangers) {
-                        s.close();
+                        List<Long> took = new ArrayList<>();
+                        long stepped = 0;
+                        while (!sending.stream().allMatch(CompletableFuture::isDone) && stepped < STEPS - 5) {
+                            long t0 = System.nanoTime();
+                            com.fasterxml.jackson.databind.JsonNode status = control.request("status");
+                            took.add(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0));
+                            assertTrue(status.path("ok").asBoolean(), status.toString());
+                            assertTrue(control.request("step 5").path("ok").asBoolean());
+                            stepped += 5;
+                        }
+                        assertTrue(took.stream().allMatch(ms -> ms <= 1000), "every status within 1 s: " + took);
+                        CompletableFuture.allOf(sending.toArray(CompletableFuture[]::new)).get(LONG_S, TimeUnit.SECONDS);
+                    } finally {
+                        for (Socket s : strangers) {
+                            s.close();
+                        }
                     }
                 }
+                assertTrue(control.request("resume").path("ok").asBoolean());
+                List<String> poses = new ArrayList<>();
+                for (CompletableFuture<List<String>> r : robots) {
+                    poses.addAll(r.get(LONG_S, TimeUnit.SECONDS));
+                }
+                env.await("summary steps=" + STEPS, LONG_S);
+                assertEquals(0, env.exit(LONG_S), env.output());
+                assertTrue(!env.output().contains("OutOfMemoryError"), env.output());
+                return poses;
             }
-            List<String> poses = new ArrayList<>();
-            for (CompletableFuture<List<String>> r : robots) {
-                poses.addAll(r.get(LONG_S, TimeUnit.SECONDS));
-            }
-            env.await("summary steps=" + STEPS, LONG_S);
-            assertEquals(0, env.exit(LONG_S), env.output());
-            assertTrue(!env.output().contains("OutOfMemoryError"), env.output());
-            return poses;
         }
     }
 
