@@ -301,13 +301,22 @@ public final class Soak implements Callable<Integer> {
             return -1;
         }
         long at = step.get();
-        SoakClients.run("jcmd", Long.toString(pid), "GC.run");
         // (JDK 17: "tenured generation total NK, used NK"; JDK 21+: "Tenured total NK, used NK")
-        Matcher m = Pattern.compile("(?i)tenured(?: generation)?\\s+total \\d+K, used (\\d+)K")
-                .matcher(SoakClients.run("jcmd", Long.toString(pid), "GC.heap_info"));
-        long kb = m.find() ? Long.parseLong(m.group(1)) : -1;
-        faults.add("Environment heap read at step " + at + ": " + kb + " KB");
-        return kb;
+        Pattern tenured = Pattern.compile("(?i)tenured(?: generation)?\\s+total \\d+K, used (\\d+)K");
+        String answer = "";
+        for (int attempt = 1; attempt <= 3; attempt++) { // (jcmd's attach can time out on a loaded machine)
+            SoakClients.run("jcmd", Long.toString(pid), "GC.run");
+            answer = SoakClients.run("jcmd", Long.toString(pid), "GC.heap_info");
+            Matcher m = tenured.matcher(answer);
+            if (m.find()) {
+                long kb = Long.parseLong(m.group(1));
+                faults.add("Environment heap read at step " + at + ": " + kb + " KB");
+                return kb;
+            }
+        }
+        faults.add("Environment heap not read at step " + at + ": jcmd said "
+                + answer.strip().lines().findFirst().orElse("nothing"));
+        return -1;
     }
 
     public static void main(String[] args) {
