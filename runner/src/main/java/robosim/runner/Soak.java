@@ -89,6 +89,8 @@ public final class Soak implements Callable<Integer> {
     private final Object stepChanged = new Object();
     private final Map<String, String> ringLines = new ConcurrentHashMap<>();
     private final List<String> faults = java.util.Collections.synchronizedList(new ArrayList<>());
+    /** The Environment's control port, once it listens (the heap is read while the run is paused). */
+    private volatile int controlPort;
 
     @Override
     public Integer call() throws Exception {
@@ -117,6 +119,7 @@ public final class Soak implements Callable<Integer> {
             int robotPort = Integer.parseInt(ports.get("robots"));
             int viewerPort = Integer.parseInt(ports.get("viewers"));
             int geometryPort = Integer.parseInt(ports.get("geometry"));
+            controlPort = Integer.parseInt(ports.get("control"));
             children.start("geometry", List.of("-XX:+UseSerialGC"), "robosim.geometry.GeometryMain",
                     List.of("127.0.0.1", Integer.toString(geometryPort)), null);
             watch(viewerPort);
@@ -300,23 +303,30 @@ public final class Soak implements Callable<Integer> {
         if (step.get() == Long.MAX_VALUE) {
             return -1;
         }
-        long at = step.get();
-        // (JDK 17: "tenured generation total NK, used NK"; JDK 21+: "Tenured total NK, used NK")
-        Pattern tenured = Pattern.compile("(?i)tenured(?: generation)?\\s+total \\d+K, used (\\d+)K");
-        String answer = "";
-        for (int attempt = 1; attempt <= 3; attempt++) { // (jcmd's attach can time out on a loaded machine)
-            SoakClients.run("jcmd", Long.toString(pid), "GC.run");
-            answer = SoakClients.run("jcmd", Long.toString(pid), "GC.heap_info");
-            Matcher m = tenured.matcher(answer);
-            if (m.find()) {
-                long kb = Long.parseLong(m.group(1));
-                faults.add("Environment heap read at step " + at + ": " + kb + " KB");
-                return kb;
+        // the run is paused meanwhile (a short run would otherwise be over before jcmd has attached)
+        try (robosim.control.ControlClient control = new robosim.control.ControlClient("127.0.0.1", controlPort, null,
+                60_000)) {
+            control.request("pause");
+            long at = step.get();
+            // (JDK 17: "tenured generation total NK, used NK"; JDK 21+: "Tenured total NK, used NK")
+            Pattern tenured = Pattern.compile("(?i)tenured(?: generation)?\\s+total \\d+K, used (\\d+)K");
+            String answer = "";
+            for (int attempt = 1; attempt <= 3; attempt++) { // (jcmd's attach can time out on a loaded machine)
+                SoakClients.run("jcmd", Long.toString(pid), "GC.run");
+                answer = SoakClients.run("jcmd", Long.toString(pid), "GC.heap_info");
+                Matcher m = tenured.matcher(answer);
+                if (m.find()) {
+                    long kb = Long.parseLong(m.group(1));
+                    faults.add("Environment heap read at step " + at + " (paused): " + kb + " KB");
+                    control.request("resume");
+                    return kb;
+                }
             }
+            control.request("resume");
+            faults.add("Environment heap not read at step " + at + ": jcmd said "
+                    + answer.strip().lines().findFirst().orElse("nothing"));
+            return -1;
         }
-        faults.add("Environment heap not read at step " + at + ": jcmd said "
-                + answer.strip().lines().findFirst().orElse("nothing"));
-        return -1;
     }
 
     public static void main(String[] args) {
