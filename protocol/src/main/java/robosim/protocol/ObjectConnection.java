@@ -6,6 +6,7 @@ import java.io.Closeable;
 import java.io.EOFException;
 import java.io.Externalizable;
 import java.io.IOException;
+import java.util.Set;
 import java.io.InvalidClassException;
 import java.io.ObjectInputStream;
 import java.io.ObjectOutputStream;
@@ -139,14 +140,43 @@ public final class ObjectConnection implements Closeable {
 
     /** Reads one message of the expected type; anything else is a {@link ProtocolException}. */
     public <T extends Externalizable> T read(Class<T> type) throws IOException {
+        if (type != lastType) { // (one type after another on a connection: no look-up per message)
+            lastKinds = KINDS.computeIfAbsent(type, ObjectConnection::kindsOf);
+            lastType = type;
+        }
+        return type.cast(readOneOf(type, lastKinds));
+    }
+
+    /** The reading thread's: the type last read, and the message classes it takes. */
+    private Class<?> lastType;
+    private Set<Class<?>> lastKinds;
+
+    /** The protocol's message classes that are {@code type}s. */
+    private static Set<Class<?>> kindsOf(Class<?> type) {
+        Set<Class<?>> kinds = new java.util.HashSet<>();
+        for (Class<?> c : ProtocolFilter.MESSAGE_CLASSES) {
+            if (type.isAssignableFrom(c)) {
+                kinds.add(c);
+            }
+        }
+        return Set.copyOf(kinds);
+    }
+
+    private static final java.util.Map<Class<?>, Set<Class<?>>> KINDS = new java.util.concurrent.ConcurrentHashMap<>();
+
+    /**
+     * Reads the next message, which must be of one of {@code kinds} (a message of another class is refused as
+     * its class is read, before anything of it is built); {@code type} names it in errors.
+     */
+    public Externalizable readOneOf(Class<?> type, Set<Class<?>> kinds) throws IOException {
         budget.startMessage();
-        filter.beginMessage();
+        filter.beginMessage(kinds);
         Object o;
         try {
             o = in.readUnshared();
         } catch (InvalidClassException e) { // (the filter's, or the stream's own check by name)
             String why = filter.lastRejection();
-            throw new ProtocolException("refused: " + (why.isEmpty() ? e.getMessage() : why));
+            throw new ProtocolException(why.startsWith("expected ") ? why : "refused: " + (why.isEmpty() ? e.getMessage() : why));
         } catch (ClassNotFoundException e) {
             throw new ProtocolException("refused: unknown class " + e.getMessage());
         } catch (EOFException e) {
@@ -167,7 +197,7 @@ public final class ObjectConnection implements Closeable {
             throw new ProtocolException("expected a " + type.getSimpleName() + ", got a "
                     + (o == null ? "null" : o.getClass().getSimpleName()));
         }
-        return type.cast(o);
+        return (Externalizable) o;
     }
 
     /** The bytes the last message read took from the stream. The reading thread only. */

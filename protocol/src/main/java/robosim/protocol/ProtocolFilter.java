@@ -26,6 +26,8 @@ public final class ProtocolFilter implements ObjectInputFilter {
 
     private final long maxReferencesPerMessage;
     private boolean messageStart = true;
+    /** The message classes the reader takes now (checked before a message is built, so none it refuses allocates). */
+    private Set<Class<?>> expected = MESSAGE_CLASSES;
     private long referencesAtStart;
     private volatile String lastRejection = "";
 
@@ -37,8 +39,17 @@ public final class ProtocolFilter implements ObjectInputFilter {
         this.maxReferencesPerMessage = maxReferencesPerMessage;
     }
 
-    /** Called by the reader before each message: references are counted from here. */
+    /** Called by the reader before each message: references are counted from here; any message class is taken. */
     public void beginMessage() {
+        beginMessage(MESSAGE_CLASSES);
+    }
+
+    /**
+     * Called by the reader before a message that must be one of {@code kinds}: a message of any other class is
+     * refused as its class is read, before its fields are (a stranger's counts allocate nothing).
+     */
+    public void beginMessage(Set<Class<?>> kinds) {
+        expected = kinds;
         messageStart = true;
     }
 
@@ -69,9 +80,19 @@ public final class ProtocolFilter implements ObjectInputFilter {
             return Status.ALLOWED;
         }
         if (MESSAGE_CLASSES.contains(c)) {
+            if (info.depth() == 1 && !expected.contains(c)) {
+                return reject("expected " + expectedNames() + ", got a " + c.getSimpleName());
+            }
             return Status.ALLOWED;
         }
         return reject("class " + c.getName() + " is not a protocol message");
+    }
+
+    private String expectedNames() {
+        if (expected.size() > 3) {
+            return "a protocol message";
+        }
+        return "a " + String.join(" or a ", expected.stream().map(Class::getSimpleName).sorted().toList());
     }
 
     private Status reject(String why) {

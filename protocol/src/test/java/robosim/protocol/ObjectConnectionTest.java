@@ -196,6 +196,21 @@ class ObjectConnectionTest {
     }
 
     @Test
+    void aMessageOfAnotherClassIsRefusedBeforeAnyOfItIsRead() throws Exception {
+        ObjectConnection[] c = pair(0);
+        c[1].limitMessageBytes(Limits.MAX_HELLO_BYTES); // (a stranger)
+        GeometryStepResponse big = new GeometryStepResponse(1, 4000); // (its fields would take 32 KB)
+        for (int i = 0; i < 4000; i++) {
+            big.addRange(i);
+        }
+        c[0].write(big);
+        c[0].flush();
+        ProtocolException e = assertThrows(ProtocolException.class, () -> c[1].read(RobotHello.class));
+        assertEquals("expected a RobotHello, got a GeometryStepResponse", e.getMessage(),
+                "refused at its class, before its counts could allocate or its bytes run past the stranger's cap");
+    }
+
+    @Test
     void aWrongMessageTypeIsNamed() throws Exception {
         ObjectConnection[] c = pair(0);
         c[0].write(new GeometryHello());

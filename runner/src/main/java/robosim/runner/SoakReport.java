@@ -71,7 +71,8 @@ record SoakReport(int robots, int robotProcesses, int silentRobots, long steps, 
                 + " pairs, " + steps + " each (exactly once, in order)");
         if (early > 0 && late > 0) {
             double growth = (late - early) * 100.0 / early;
-            ok &= check(Math.abs(growth) <= 10, String.format(Locale.ROOT,
+            // within 10%, or 2 MB for a short run's small heap (a killed process, a new Geometry between the reads)
+            ok &= check(Math.abs(growth) <= 10 || Math.abs(late - early) <= 2048, String.format(Locale.ROOT,
                     "Environment old generation after a full GC: %d KB at 10%%, %d KB at 95%% (%+.1f%%)", early, late,
                     growth));
         } else {

@@ -38,7 +38,7 @@ class NoCommonPoolTest {
     @Test
     void theCheckFindsACallWithoutAnExecutorAndPassesOneWithIt() {
         String async = "Async("; // (so this file's own text holds no such call)
-        String src = "class A { void f() {\n CompletableFuture.run" + async + "() -> g(1, \"a,(b\"));\n"
+        String src = "class A { void f() {\n CompletableFuture.run" + async + "() -> g(1, \"a,(b\")); // the robot's\n"
                 + " CompletableFuture.supply" + async + "() -> {\n  return h(2, 3);\n }, pool);\n} }";
         assertEquals(List.of("A.java:2 runAsync"), withoutExecutor("A.java", src));
     }
@@ -53,7 +53,13 @@ class NoCommonPoolTest {
             int i = m.end();
             for (; i < source.length() && depth > 0; i++) {
                 char c = source.charAt(i);
-                if (c == '"' || c == '\'') {
+                if (source.startsWith("//", i)) {
+                    int end = source.indexOf('\n', i);
+                    i = end < 0 ? source.length() : end;
+                } else if (source.startsWith("/*", i)) {
+                    int end = source.indexOf("*/", i + 2);
+                    i = end < 0 ? source.length() : end + 1;
+                } else if (c == '"' || c == '\'') {
                     i = skipLiteral(source, i, c);
                 } else if (c == '(' || c == '{' || c == '[') {
                     depth++;

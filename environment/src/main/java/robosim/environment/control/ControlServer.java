@@ -158,7 +158,9 @@ public final class ControlServer implements Closeable {
             Thread.currentThread().interrupt();
         }
         quick.shutdownNow();
-        group.shutdownGracefully(100, 1000, TimeUnit.MILLISECONDS);
+        // the replies those requests handed to the I/O thread leave before this returns (and the process may end):
+        // a graceful shutdown runs what is queued; waited for, at most a few seconds
+        group.shutdownGracefully(100, 1000, TimeUnit.MILLISECONDS).awaitUninterruptibly(5_000);
     }
 
     /** One per connection; its fields are touched on the I/O thread only. */

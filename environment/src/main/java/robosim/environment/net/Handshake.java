@@ -35,6 +35,8 @@ final class Handshake {
     private final StrangerBudget strangers;
     /** What this connection holds of the stranger budget now, bytes. */
     private long held;
+    /** Messages read so far: a connection's first may use the budget's headroom, the others may not. */
+    private int messages;
 
     Handshake(ClientWorker worker, ObjectConnection connection, SimulationKeys keys, StrangerBudget strangers) {
         this.worker = worker;
@@ -50,9 +52,17 @@ final class Handshake {
      * until the handshake {@link #end}s.
      */
     <T extends Externalizable> T read(Class<T> type) throws IOException {
-        hold(Limits.MAX_HELLO_BYTES);
+        return type.cast(readOneOf(type, null));
+    }
+
+    /**
+     * As {@link #read}, for a message that must be one of {@code kinds} (null: any of {@code type}); one of
+     * another class is refused as its class is read, before any of it is built.
+     */
+    Externalizable readOneOf(Class<? extends Externalizable> type, java.util.Set<Class<?>> kinds) throws IOException {
+        take(Limits.MAX_HELLO_BYTES, messages++ == 0);
         try {
-            return connection.read(type);
+            return kinds == null ? connection.read(type) : connection.readOneOf(type, kinds);
         } finally {
             long unused = Limits.MAX_HELLO_BYTES - Math.min(Limits.MAX_HELLO_BYTES, connection.lastMessageBytes());
             held -= unused;
@@ -62,7 +72,12 @@ final class Handshake {
 
     /** Takes {@code bytes} from the stranger budget for this connection (a refusal about to be written). */
     void hold(long bytes) throws ProtocolException {
-        if (!strangers.take(bytes)) {
+        take(bytes, false);
+    }
+
+    /** {@code first}: the connection's first message, which may use the headroom kept for newcomers. */
+    private void take(long bytes, boolean first) throws ProtocolException {
+        if (!strangers.take(bytes, first)) {
             throw new ProtocolException("the Environment already holds all it keeps for clients not yet accepted ("
                     + (strangers.total() >> 20) + " MiB); try again later");
         }

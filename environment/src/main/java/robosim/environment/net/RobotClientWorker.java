@@ -3,7 +3,6 @@ package robosim.environment.net;
 import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
-import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
 import robosim.protocol.SharedHello;
 
@@ -12,9 +11,11 @@ import robosim.protocol.SharedHello;
  * client's first message and serves it as what that says it is: one robot over its own socket
  * ({@link RobotConnection}, the thread then named {@code robot-worker[name]}) or several robots of one
  * process over one ({@link SharedConnection}, {@code robot-worker[shared #n]}). Both use this connection's
- * {@link Handshake}. Anything else is a protocol fault (the connection is dropped with the reason).
+ * {@link Handshake}. Anything else is refused as its class is read (the connection is dropped with the reason).
  */
 final class RobotClientWorker extends ClientWorker {
+    /** What a robot port's client says first (anything else is refused before it is read). */
+    private static final java.util.Set<Class<?>> HELLOS = java.util.Set.of(RobotHello.class, SharedHello.class);
     private final int serial;
     private volatile RobotConnection robot;
     private volatile SharedConnection shared;
@@ -26,19 +27,17 @@ final class RobotClientWorker extends ClientWorker {
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        Externalizable first = handshake.read(Externalizable.class);
+        Externalizable first = handshake.readOneOf(Externalizable.class, HELLOS);
         if (first instanceof SharedHello h) {
             rename("robot-worker[shared #" + serial + "]");
             SharedConnection s = new SharedConnection(this, coordinator, connection, handshake);
             shared = s;
             s.serve(h);
-        } else if (first instanceof RobotHello hello) {
+        } else {
+            RobotHello hello = (RobotHello) first;
             RobotConnection r = new RobotConnection(this, coordinator, connection, String.valueOf(hello.name()));
             robot = r;
             r.serve(hello, handshake);
-        } else {
-            throw new ProtocolException("expected a RobotHello or a SharedHello, got a "
-                    + first.getClass().getSimpleName());
         }
     }
 

@@ -102,6 +102,8 @@ final class SharedConnection {
             robots[slot] = new SharedRobot(this, slot, hello.name());
             joins.add(new LoopEvent.RobotJoins(robots[slot], hello, wanted, new CompletableFuture<>()));
         }
+        hellos.clear(); // (the refused ones' names are garbage now; the accepted ones' are in their joins)
+        names.clear();
         if (!refused.isEmpty()) {
             handshake.refused((n - joins.size()) + " of the " + n + " robots of a shared connection, among them "
                     + String.join("; ", refused));

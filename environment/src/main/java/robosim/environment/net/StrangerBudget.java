@@ -28,17 +28,25 @@ final class StrangerBudget {
         this.free = new AtomicLong(bytes);
     }
 
-    /** Takes {@code bytes}; false (and nothing taken) if the budget does not have them. */
-    boolean take(long bytes) {
+    /**
+     * Takes {@code bytes}; false (and nothing taken) if the budget does not have them. Only a connection's
+     * {@code first} message may use the last {@link #HEADROOM} bytes: one stranger that sends much cannot keep
+     * a robot, a viewer or Geometry from saying hello.
+     */
+    boolean take(long bytes, boolean first) {
+        long keep = first ? 0 : HEADROOM;
         long f;
         do {
             f = free.get();
-            if (f < bytes) {
+            if (f - keep < bytes) {
                 return false;
             }
         } while (!free.compareAndSet(f, f - bytes));
         return true;
     }
+
+    /** Kept for connections' first messages (hellos): 64 of the largest at once. */
+    static final long HEADROOM = 64L * Limits.MAX_HELLO_BYTES;
 
     void give(long bytes) {
         free.addAndGet(bytes);
