@@ -15,30 +15,66 @@ import robosim.protocol.SimulationKeys;
 
 /**
  * The Control Panel: with no request, a window; with one, a command line for scripts:
- * {@code control-panel.sh HOST PORT status|start|stop|pause|resume|step N|load FILE|shutdown}.
+ * {@code control-panel.sh HOST [PORT] REQUEST} (the requests are listed in {@code --help}).
  * Prints the reply as {@code key=value} lines; exits 0 if the Environment said ok, 1 if it refused,
  * 2 on bad arguments or when it cannot be reached.
  */
 @Command(name = "control-panel.sh", mixinStandardHelpOptions = true,
-        description = "Loads, starts, stops, pauses and steps a running Environment through its control port.")
+        description = {"Loads, starts, stops, pauses and steps a running Environment (or a replay) through its control "
+                + "port: HOST [PORT] [REQUEST...], the port 8100 when it is left out.",
+            "Requests: status; robots (each robot and its state); start; stop; pause; resume; step N; load FILE; "
+                + "add NAME TYPE X Y HEADING [CONTROL] (a robot joins the running world at X, Y m); remove NAME; "
+                + "shutdown; and, of a replay, seek K and speed X."})
 public final class ControlPanelMain implements Callable<Integer> {
+    /** The control port when none is given. */
+    static final int DEFAULT_PORT = 8100;
+
     @Parameters(index = "0", paramLabel = "HOST", description = "The Environment's host.")
     String host;
 
-    @Parameters(index = "1", paramLabel = "PORT", defaultValue = "8100",
-            description = "The Environment's control port (default: ${DEFAULT-VALUE}).")
-    int port;
+    @Parameters(index = "1..*", paramLabel = "[PORT] [REQUEST...]", arity = "0..*",
+            description = "The control port (default: 8100), then a request (see above); no request opens the window.")
+    List<String> rest;
 
-    @Parameters(index = "2..*", paramLabel = "REQUEST",
-            description = "status, start, stop, pause, resume, step N, load FILE or shutdown; none opens the window.")
-    List<String> request;
+    /** The port, once the arguments are read. */
+    int port = DEFAULT_PORT;
+    /** The request's words, once the arguments are read; empty: the window. */
+    List<String> request = List.of();
 
     @Option(names = "--timeout-s", defaultValue = "600",
             description = "How long to wait for a reply (step N waits for its steps; default: ${DEFAULT-VALUE}).")
     int timeoutS;
 
+    /**
+     * Reads {@code rest}: a port first if it is a number (1 to 65535), then the request. Null, or the one-line
+     * error for a port out of range.
+     */
+    String readRest() {
+        List<String> words = rest == null ? List.of() : rest;
+        if (!words.isEmpty() && words.get(0).matches("[+-]?\\d+")) {
+            long p;
+            try {
+                p = Long.parseLong(words.get(0));
+            } catch (NumberFormatException e) {
+                p = -1;
+            }
+            if (p < 1 || p > 65535) {
+                return "port must be from 1 to 65535, got " + words.get(0);
+            }
+            port = (int) p;
+            words = words.subList(1, words.size());
+        }
+        request = List.copyOf(words);
+        return null;
+    }
+
     @Override
     public Integer call() throws Exception {
+        String bad = readRest();
+        if (bad != null) {
+            System.err.println("control-panel: " + bad + " (see --help)");
+            return 2;
+        }
         SimulationKeys keys;
         try {
             keys = SimulationKeys.fromEnvironment();
@@ -46,7 +82,7 @@ public final class ControlPanelMain implements Callable<Integer> {
             System.err.println("control-panel: " + e.getMessage());
             return 2;
         }
-        if (request == null || request.isEmpty()) {
+        if (request.isEmpty()) {
             if (java.awt.GraphicsEnvironment.isHeadless()) {
                 System.err.println("control-panel: no display for the window; give a request instead (see --help)");
                 return 2;
