@@ -29,7 +29,7 @@ import robosim.web.WebViewerServer;
 
 /**
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
- * {@code listening robots=P viewers=P geometry=P} when its ports are bound and, when the run ends,
+ * {@code listening robots=P viewers=P geometry=P control=P tls=on|off} when its ports are bound and, when the run ends,
  * {@code summary steps=... robots=... wall_s=... steps_per_s=... robot_steps_per_s=...} as its last
  * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option, port), 3 it lost a robot.
  */
@@ -226,7 +226,8 @@ public final class EnvironmentMain implements Callable<Integer> {
         Runtime.getRuntime().addShutdownHook(new Thread(host::stopOnSignal, "shutdown"));
         int[] ports = host.ports();
         System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
-                + " control=" + (control == null ? -1 : control.port()) + (web == null ? "" : " web=" + web.port()));
+                + " control=" + (control == null ? -1 : control.port()) + (web == null ? "" : " web=" + web.port())
+                + " tls=" + (keys != null && keys.tls() != null ? "on" : "off"));
         System.out.flush();
         announceStart(host.current());
         try {

@@ -169,7 +169,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         }
         System.out.println("listening robots=" + bound.get("robots") + " viewers=" + bound.get("viewers")
                 + " geometry=" + bound.get("geometry") + " control=" + bound.get("control")
-                + (bound.containsKey("web") ? " web=" + bound.get("web") : ""));
+                + (bound.containsKey("web") ? " web=" + bound.get("web") : "") + " tls=" + bound.get("tls"));
         int viewerPort = Integer.parseInt(bound.get("viewers"));
         RunWatch watch = RunWatch.connect("127.0.0.1", viewerPort, poseLog, progress, steps, 10_000);
         ExtraViewers extras = extraViewers.connect(viewerPort);
