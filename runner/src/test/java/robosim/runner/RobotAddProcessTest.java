@@ -43,7 +43,8 @@ class RobotAddProcessTest {
                 ok(control, "pause");
                 assertEquals("added r9 and started its robot process (robosim.examples.BackAndForth)",
                         ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
-                env.await("robot r9 joins at (11000.0, 2000.0) mm heading 180.0 deg", LONG_S);
+                env.await("robot r9 added from the control port: a Scout at (11000, 2000) mm heading 180.0 deg", LONG_S);
+                env.await("robot r9 joins at (11000, 2000) mm heading 180.0 deg", LONG_S); // (to the mm)
                 JsonNode r9 = control.request("robots").path("robots").get(3);
                 assertEquals("r9 joining", r9.path("name").asText() + " " + r9.path("state").asText());
                 ok(control, "resume");

@@ -595,7 +595,7 @@ final class Run {
         rosterChanged = true;
         record.states = roster.states();
         LOG.info("robot {} says hello again: it takes part from the next step, at ({}, {}) mm heading {} deg", s.name,
-                x, y, heading);
+                mm(x), mm(y), deg(heading));
         if (phase == Phase.COLLECTING && s.leaving == null) {
             bringBack(s); // the step being collected is its first
         }
@@ -668,13 +668,28 @@ final class Run {
         rosterChanged = true;
         record.states = roster.states();
         LOG.info("robot {} joins at ({}, {}) mm heading {} deg ({}): it takes part from the next step", name,
-                at[0], at[1], robot.headingDeg(), byAdd ? "added from the control port" : (rule.spawn() == null
+                mm(at[0]), mm(at[1]), deg(robot.headingDeg()), byAdd ? "added from the control port" : (rule.spawn() == null
                         ? "any-time" : rule.allow()) + " of " + spec.source());
         listener.robotJoined(name, step);
         if (phase == Phase.COLLECTING) {
             bringBack(s); // the step being collected is its first
         }
         return null;
+    }
+
+    /** A coordinate for a log line, to the millimetre. */
+    private static long mm(double v) {
+        return Math.round(v);
+    }
+
+    /** A heading for a log line, to a tenth of a degree. */
+    private static double deg(double v) {
+        return Math.round(v * 10) / 10.0;
+    }
+
+    /** "an ArRobot", "a Scout". */
+    private static String withArticle(String type) {
+        return ("AEIOUaeiou".indexOf(type.isEmpty() ? 'x' : type.charAt(0)) >= 0 ? "an " : "a ") + type;
     }
 
     private SpawnPlacer placer() {
@@ -900,8 +915,8 @@ final class Run {
             return "(" + r.xMm() / 1000 + ", " + r.yMm() / 1000 + ") m is taken: " + why;
         }
         added.put(name, rule);
-        LOG.info("robot {} added from the control port: a {} at ({}, {}) mm heading {} deg; it joins when it says hello",
-                name, r.type(), r.xMm(), r.yMm(), r.headingDeg());
+        LOG.info("robot {} added from the control port: {} at ({}, {}) mm heading {} deg; it joins when it says hello",
+                name, withArticle(r.type()), mm(r.xMm()), mm(r.yMm()), deg(r.headingDeg()));
         return null;
     }
 
