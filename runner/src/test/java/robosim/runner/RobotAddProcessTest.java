@@ -40,6 +40,14 @@ class RobotAddProcessTest {
                             (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
                 env.await("running robots=3", LONG_S);
                 assertEquals("paused at step 10", ok(control, "step 10"));
+                JsonNode noSuch = control.request("add w10 Scout 1.0 3.5 0 no.such.Class");
+                assertTrue(noSuch.path("error").asText().startsWith("add w10: there is no class no.such.Class on the "
+                        + "class path its robot process would run with"), noSuch.toString());
+                JsonNode notControl = control.request("add w11 Scout 1.0 3.5 0 java.lang.String");
+                assertEquals("add w11: java.lang.String is not a RobotControl", notControl.path("error").asText());
+                assertEquals("w10 w11 not in the list", java.util.stream.StreamSupport.stream(
+                        control.request("robots").path("robots").spliterator(), false)
+                        .anyMatch(r -> r.path("name").asText().startsWith("w1")) ? "listed" : "w10 w11 not in the list");
                 ok(control, "pause");
                 assertEquals("added r9 and started its robot process (robosim.examples.BackAndForth)",
                         ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));

@@ -32,13 +32,39 @@ public final class RobotLaunches implements AutoCloseable {
     private final List<Process> running = new ArrayList<>();
     private final List<Thread> outputs = new ArrayList<>();
 
-    /** Null if a robot process with this control class may start now, else why not (a bad class name, too many). */
+    /**
+     * Null if a robot process with this control class may start now, else why not: a bad class name, a class
+     * the robot process would not find (it runs on this JVM's class path) or that is no control class, too many
+     * processes. The class is looked up, never initialised.
+     */
     public synchronized String check(String control) {
         running.removeIf(p -> !p.isAlive());
         if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
             return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
         }
+        String missing = controlClassProblem(control);
+        if (missing != null) {
+            return missing;
+        }
         return running.size() >= MAX ? "this Environment runs " + MAX + " robot processes already" : null;
+    }
+
+    /** Why {@code control} could not be a robot process's control class, or null. */
+    private static String controlClassProblem(String control) {
+        ClassLoader loader = RobotLaunches.class.getClassLoader();
+        Class<?> c;
+        try {
+            c = Class.forName(control, false, loader);
+        } catch (ClassNotFoundException | LinkageError e) {
+            return "there is no class " + control + " on the class path its robot process would run with (a class "
+                    + "of your own: --classpath or ROBOSIM_CLASSPATH)";
+        }
+        try {
+            Class<?> api = Class.forName("robosim.api.RobotControl", false, loader);
+            return api.isAssignableFrom(c) ? null : control + " is not a RobotControl";
+        } catch (ClassNotFoundException e) {
+            return null; // (no robot API here to check against: the robot process says)
+        }
     }
 
     /**
