@@ -5,6 +5,7 @@ import java.net.BindException;
 import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ServiceLoader;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -17,11 +18,13 @@ import robosim.environment.control.EnvironmentCommands;
 import robosim.environment.control.WebViewers;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
+import robosim.environment.control.RobotLaunches;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.Departure;
 import robosim.environment.net.Settings;
+import robosim.protocol.InMemoryLink;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.SimulationKeys;
@@ -59,6 +62,11 @@ public final class EnvironmentMain implements Callable<Integer> {
     @Option(names = "--no-geometry",
             description = "Do collision and sonar in-process instead of in a Geometry process.")
     boolean noGeometry;
+
+    @Option(names = "--one-jvm", description = "Run every robot of the file (its control class) and collision and "
+            + "sonar in this JVM, through in-memory links: no robot or Geometry process, no socket, the same results "
+            + "(robots that join later still connect; see environment/README.md for when to pick it).")
+    boolean oneJvm;
 
     @Option(names = "--steps", defaultValue = "0",
             description = "End after this many steps (default: ${DEFAULT-VALUE} = run until stopped).")
@@ -162,6 +170,17 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println(bad);
             return 2;
         }
+        InMemoryLink.Starter inMemory = null;
+        if (oneJvm) {
+            inMemory = ServiceLoader.load(InMemoryLink.Starter.class).findFirst().orElse(null);
+            String problem = inMemory == null
+                    ? "environment: --one-jvm needs the Hardware Simulator (robosim hardware-sim) on the class path"
+                    : oneJvmProblem(spec);
+            if (problem != null) {
+                System.err.println(problem);
+                return 2;
+            }
+        }
         InetAddress bindAddress = InetAddress.getByName(bind);
         SimulationKeys keys;
         try {
@@ -190,7 +209,7 @@ public final class EnvironmentMain implements Callable<Integer> {
         Settings settings = Settings.builder().record(record).ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
                 .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
                 .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
-                .design(design).inProcessGeometry(noGeometry).onGeometryLoss(clients.onGeometryLoss)
+                .design(design).inProcessGeometry(noGeometry || oneJvm).onGeometryLoss(clients.onGeometryLoss)
                 .onRobotLoss(clients.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages)
                 .resetEvery(resetEvery).build();
         EnvironmentDirectories directories;
@@ -203,6 +222,9 @@ public final class EnvironmentMain implements Callable<Integer> {
         boolean stay = keepRunning != null ? keepRunning : steps == 0;
         EnvironmentHost host = new EnvironmentHost(file, spec, settings, stay, startPaused);
         host.launchRobots(clients.launchRobots ? new robosim.environment.control.RobotLaunches() : null);
+        if (inMemory != null) {
+            host.robotsInThisJvm(inMemory);
+        }
         ControlServer control = null;
         WebViewerServer web = null;
         try {
@@ -247,6 +269,19 @@ public final class EnvironmentMain implements Callable<Integer> {
             }
             host.stopLaunched();
         }
+    }
+
+    /** Why a robot of the file cannot run in this JVM (it has no control class this JVM finds), or null. */
+    private String oneJvmProblem(WorldSpec spec) {
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            String problem = r.control().isBlank()
+                    ? "it has no control class (control=\"...\") to run in this JVM (--one-jvm)"
+                    : RobotLaunches.controlClassProblem(r.control(), "this Environment runs with");
+            if (problem != null) {
+                return file + ": robot " + r.name() + ": " + problem;
+            }
+        }
+        return null;
     }
 
     /**

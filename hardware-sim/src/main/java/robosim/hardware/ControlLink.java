@@ -15,6 +15,16 @@ final class ControlLink {
     private Command pending;
     private boolean controlRunning = true;
     private boolean shutdown;
+    /** Called on the control thread each time it yields, holding no lock (a robot in the Environment's JVM). */
+    private Runnable onYield;
+
+    /**
+     * Before the control code starts: {@code hook} runs on the control thread each time the control code
+     * yields (blocks in a call or returns), after the simulator side may take over and outside every lock.
+     */
+    void onYield(Runnable hook) {
+        onYield = hook;
+    }
 
     /** Control thread: starts a blocking call and waits until the simulator thread completes it. */
     void execute(Command c) throws InterruptedException {
@@ -26,6 +36,14 @@ final class ControlLink {
             pending = c;
             controlRunning = false;
             changed.signalAll();
+            if (onYield != null) {
+                lock.unlock();
+                try {
+                    onYield.run();
+                } finally {
+                    lock.lock();
+                }
+            }
             while (!c.done) {
                 if (shutdown) {
                     throw new InterruptedException("the simulation is over");
@@ -46,6 +64,9 @@ final class ControlLink {
             changed.signalAll();
         } finally {
             lock.unlock();
+        }
+        if (onYield != null) {
+            onYield.run();
         }
     }
 

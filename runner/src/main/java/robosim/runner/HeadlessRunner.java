@@ -19,6 +19,8 @@ import picocli.CommandLine.Option;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.api.RobotControl;
+import robosim.control.ControlClient;
+import robosim.protocol.SimulationKeys;
 import robosim.environment.core.WorldSpec;
 
 /**
@@ -54,6 +56,11 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     @Option(names = "--no-geometry", description = "Do collision and sonar inside the Environment.")
     boolean noGeometry;
+
+    @Option(names = "--one-jvm", description = "Run the Environment, collision and sonar and every robot (its Hardware "
+            + "Simulator and control code) in one JVM, through in-memory links: the same messages and results as "
+            + "separate processes, without their start-up, sockets and serialization (robots_in=one-jvm).")
+    boolean oneJvm;
 
     @Option(names = "--pose-log", paramLabel = "FILE.csv",
             description = "Write every robot's pose after every step: step,robot,x_m,y_m,heading_deg,state (running, held or gone).")
@@ -145,9 +152,13 @@ public final class HeadlessRunner implements Callable<Integer> {
         CompletableFuture<Map<String, String>> summary = new CompletableFuture<>();
         CompletableFuture<Void> started = new CompletableFuture<>();
         List<String> removed = new CopyOnWriteArrayList<>();
+        List<String> environmentArgs = new ArrayList<>(environmentOptions.args(env, steps, noGeometry, resetArgs()));
+        if (oneJvm) {
+            // its robots are there at once: it holds before step 0 until the watch and viewers are connected
+            environmentArgs.addAll(List.of("--one-jvm", "--start-paused"));
+        }
         Process environment = children.start("environment", jvm.environment(),
-                "robosim.environment.EnvironmentMain",
-                environmentOptions.args(env, steps, noGeometry, resetArgs()), line -> {
+                "robosim.environment.EnvironmentMain", environmentArgs, line -> {
                     if (line.startsWith("listening ")) {
                         listening.complete(fields(line));
                     } else if (line.startsWith("running ")) {
@@ -180,13 +191,24 @@ public final class HeadlessRunner implements Callable<Integer> {
                     List.of("127.0.0.1", Integer.toString(viewerPort), "--next-run-wait-s", "5"));
         }
         List<ChildProcesses.Child> clients = new ArrayList<>();
-        if (!noGeometry) {
+        if (!noGeometry && !oneJvm) {
             List<String> geometryArgs = new ArrayList<>(List.of("127.0.0.1", bound.get("geometry")));
             geometryArgs.addAll(resetArgs());
             clients.add(children.startChild("geometry", jvm.geometry(),
                     "robosim.geometry.GeometryMain", geometryArgs, null));
         }
-        clients.addAll(startRobots(spec, children, bound.get("robots")));
+        if (oneJvm) {
+            try (ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(bound.get("control")),
+                    SimulationKeys.fromEnvironment(), 60_000)) {
+                com.fasterxml.jackson.databind.JsonNode answer = control.request("resume");
+                if (!answer.path("ok").asBoolean()) {
+                    System.err.println("headless: the Environment did not start: " + answer.path("error").asText());
+                    return 1;
+                }
+            }
+        } else {
+            clients.addAll(startRobots(spec, children, bound.get("robots")));
+        }
         String early = EarlyExit.await(started, environment, clients);
         if (early != null) {
             System.err.println("headless: " + early + "; stopping everything");
@@ -230,9 +252,9 @@ public final class HeadlessRunner implements Callable<Integer> {
                 "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s robots_left=%s "
                         + "geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
-                s.get("messages"), s.get("robots_left"), noGeometry ? "in-process" : "process",
-                robotsInOneProcess ? "one-process" + (connectionKind() == Connection.SHARED ? "" : "-per-robot")
-                        : "processes"));
+                s.get("messages"), s.get("robots_left"), noGeometry || oneJvm ? "in-process" : "process",
+                oneJvm ? "one-jvm" : robotsInOneProcess ? "one-process"
+                        + (connectionKind() == Connection.SHARED ? "" : "-per-robot") : "processes"));
         return code;
     }
 

@@ -13,6 +13,7 @@ import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.RunStatus;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
+import robosim.protocol.InMemoryLink;
 
 /**
  * Runs simulations one after another on the same ports: the first from the file given at start-up,
@@ -32,6 +33,8 @@ public final class EnvironmentHost {
     private boolean shutdown;
     private boolean startPaused;
     private volatile RobotLaunches launches;
+    /** Starts each simulation's robots in this JVM (a one-JVM run), or null. */
+    private volatile InMemoryLink.Starter inMemory;
     /** True while {@code load} replaces the simulation: {@link #run} must not take its end for the last. */
     private boolean replacing;
 
@@ -53,6 +56,11 @@ public final class EnvironmentHost {
     /** The control port's {@code add ... CONTROL} starts robot processes with this ({@code --launch-robots}). */
     public void launchRobots(RobotLaunches with) {
         launches = with;
+    }
+
+    /** Every simulation's robots run in this JVM, started by {@code starter} ({@code --one-jvm}). Call before {@link #open}. */
+    public void robotsInThisJvm(InMemoryLink.Starter starter) {
+        inMemory = starter;
     }
 
     /** The robot launcher, or null: {@code add} then waits for a robot process started elsewhere. */
@@ -91,6 +99,9 @@ public final class EnvironmentHost {
         ClientWorkerCoordinator c = new ClientWorkerCoordinator(s, settings);
         if (paused) {
             c.startPaused();
+        }
+        if (inMemory != null) {
+            c.robotsInThisJvm(inMemory);
         }
         c.start();
         int[] p = c.ports();

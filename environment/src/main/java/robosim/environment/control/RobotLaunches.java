@@ -42,22 +42,25 @@ public final class RobotLaunches implements AutoCloseable {
         if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
             return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
         }
-        String missing = controlClassProblem(control);
+        String missing = controlClassProblem(control, "its robot process would run with");
         if (missing != null) {
             return missing;
         }
         return running.size() >= MAX ? "this Environment runs " + MAX + " robot processes already" : null;
     }
 
-    /** Why {@code control} could not be a robot process's control class, or null. */
-    private static String controlClassProblem(String control) {
+    /**
+     * Why {@code control} could not be a control class on this JVM's class path, or null; {@code whose} says whose
+     * class path that is ("its robot process would run with"). The class is looked up, never initialised.
+     */
+    public static String controlClassProblem(String control, String whose) {
         ClassLoader loader = RobotLaunches.class.getClassLoader();
         Class<?> c;
         try {
             c = Class.forName(control, false, loader);
         } catch (ClassNotFoundException | LinkageError e) {
-            return "there is no class " + control + " on the class path its robot process would run with (a class "
-                    + "of your own: --classpath or ROBOSIM_CLASSPATH)";
+            return "there is no class " + control + " on the class path " + whose + " (a class of your own: "
+                    + "--classpath or ROBOSIM_CLASSPATH)";
         }
         try {
             Class<?> api = Class.forName("robosim.api.RobotControl", false, loader);

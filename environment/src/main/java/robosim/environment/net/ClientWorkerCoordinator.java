@@ -12,6 +12,8 @@ import java.util.concurrent.TimeoutException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.core.WorldSpec;
+import robosim.protocol.InMemoryLink;
+import robosim.protocol.RobotHello;
 
 /**
  * Runs one simulation over sockets: the report's {@code ClientWorkerCoordinator}, the Environment's
@@ -43,6 +45,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final CountDownLatch startedLatch = new CountDownLatch(1);
     private volatile boolean began;
     private Thread loop;
+    /** Starts the file's robots in this JVM (a one-JVM run), or null: every robot connects. */
+    private InMemoryLink.Starter inMemory;
     /** What every client not yet accepted may hold in this Environment, all ports together. */
     private final StrangerBudget strangers = new StrangerBudget(StrangerBudget.DEFAULT_BYTES);
     /** Cuts off every connection that misses its handshake deadline or does not take a write in time. */
@@ -79,13 +83,55 @@ public final class ClientWorkerCoordinator implements Closeable {
         run.startPaused();
     }
 
+    /**
+     * Runs every robot the file names in this JVM, started by {@code starter} with its type and control class,
+     * through an in-memory link ({@link InMemoryLink}): no socket and no serialization between them and the
+     * loop. Robots that join later still connect. Call before {@link #start}.
+     */
+    public void robotsInThisJvm(InMemoryLink.Starter starter) {
+        if (loop != null) {
+            throw new IllegalStateException("robotsInThisJvm() after start()");
+        }
+        inMemory = starter;
+    }
+
     /** Binds the three ports and starts accepting; a port in use is a {@link java.net.BindException} naming it. */
     public void start() throws IOException {
         acceptors.bind();
         startLoop();
         acceptors.accept();
+        if (inMemory != null) {
+            startInMemory();
+        }
         LOG.info("waiting for {} robot(s){}", robotNames.size(),
                 settings.inProcessGeometry() ? "" : " and a Geometry process");
+    }
+
+    /** Says every file robot's hello through its in-memory link; one that cannot start ends the run, saying why. */
+    private void startInMemory() {
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            String refusal;
+            InMemoryPeer peer = new InMemoryPeer(run.inMemory(), r.name());
+            RobotHello hello = null;
+            try {
+                peer.attach(inMemory.start(r.name(), r.type(), r.control(), peer));
+                hello = peer.hello();
+                refusal = admission.check(hello, spec.indexOf(r.name()));
+            } catch (IllegalArgumentException e) {
+                refusal = e.getMessage();
+            }
+            if (refusal != null) {
+                stop("robot " + r.name() + " could not start in this JVM: " + refusal);
+                return;
+            }
+            CompletableFuture<String> verdict = new CompletableFuture<>();
+            post(new LoopEvent.RobotJoins(peer, hello, spec.indexOf(r.name()), verdict));
+            verdict.thenAccept(why -> {
+                if (why != null && !LoopEvent.OVER.equals(why)) {
+                    LOG.error("robot {} (in this JVM) was refused: {}", r.name(), why);
+                }
+            });
+        }
     }
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */

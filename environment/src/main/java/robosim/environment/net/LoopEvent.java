@@ -79,6 +79,14 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
         }
     }
 
+    /** Robots in the Environment's JVM: the last request owed has come from a control thread ({@link InMemoryRequests}). */
+    record InMemoryArrived() implements LoopEvent {
+        @Override
+        public void apply(Run run) {
+            run.inMemoryArrived();
+        }
+    }
+
     /** A robot's connection has closed or failed, or it broke the protocol. */
     record RobotLeaves(RobotPeer worker, String why) implements LoopEvent {
         @Override

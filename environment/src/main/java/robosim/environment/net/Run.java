@@ -71,6 +71,8 @@ final class Run {
     private final ReleasePoint releasePoint;
     /** Shared connections with a frame to write once the loop has done what it does now. */
     private final SharedOutput output = new SharedOutput();
+    /** The requests of robots in the Environment's JVM, on their way in. */
+    private final InMemoryRequests inMemory;
     private final long stepTimeoutNanos;
     /** Hellos that came while a step was being resolved: answered once it is complete. */
     private final List<LoopEvent> heldHellos = new ArrayList<>();
@@ -113,6 +115,7 @@ final class Run {
         this.geometry = new GeometryLink(settings);
         this.control = new RunControl(settings.speed(), spec.timeStepMs(), this::publishPhase);
         this.viewers = new Viewers();
+        this.inMemory = new InMemoryRequests(coordinator::post);
         this.releasePoint = new ReleasePoint(control, viewers, record, listener, settings.speed());
         this.stepTimeoutNanos = settings.stepTimeoutMs() <= 0 ? Long.MAX_VALUE : settings.stepTimeoutMs() * 1_000_000L;
     }
@@ -150,6 +153,21 @@ final class Run {
         return phase == Phase.RELEASING ? releasePoint.paceDue(step) : Long.MAX_VALUE;
     }
 
+    /** True while requests of robots in this JVM wait to be applied: the loop advances again without waiting. */
+    boolean busy() {
+        return inMemory.pending();
+    }
+
+    /** Where the requests of robots in the Environment's JVM come in. */
+    InMemoryRequests inMemory() {
+        return inMemory;
+    }
+
+    /** The last request owed by robots in this JVM has come (or the last one owing has gone). */
+    void inMemoryArrived() {
+        inMemory.take(this);
+    }
+
     /** True from the start until the end: a pause or step N acts on this run. */
     private boolean running() {
         return phase != Phase.WAITING && phase != Phase.ENDED;
@@ -169,6 +187,9 @@ final class Run {
     /** Moves the run on as far as it can go now, then writes what shared connections were given. */
     void advance(long now) {
         move(now);
+        if (inMemory.settle(this)) {
+            move(now); // (what it gives now is applied at the next advance: the loop looks at its inbox between)
+        }
         output.flush();
     }
 
@@ -448,6 +469,7 @@ final class Run {
 
     /** Deadlines: a Geometry process late with its answer, robots late with requests. */
     void tick(long now) {
+        inMemory.take(this); // (what has come is not late, whether or not everything owed is in)
         GeometryClientWorker late = geometry.overdue(now);
         if (late != null) {
             LOG.warn("Geometry process has not answered within {} ms (step {}); dropping it",

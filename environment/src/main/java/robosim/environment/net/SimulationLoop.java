@@ -46,7 +46,7 @@ final class SimulationLoop implements Runnable {
             run.publish();
             while (!run.ended()) {
                 long now = System.nanoTime();
-                Inbox.Event<Run> e = inbox.poll(Math.max(0, Math.min(nextTick, run.paceDue()) - now));
+                Inbox.Event<Run> e = inbox.poll(run.busy() ? 0 : Math.max(0, Math.min(nextTick, run.paceDue()) - now));
                 // everything queued by now is taken before any deadline is judged (a request or an answer
                 // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
                 for (int more = e == null ? 0 : inbox.size(); e != null; more--) {

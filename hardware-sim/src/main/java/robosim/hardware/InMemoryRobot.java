@@ -1,0 +1,108 @@
+package robosim.hardware;
+
+import java.util.concurrent.locks.ReentrantLock;
+import robosim.api.RobotControl;
+import robosim.protocol.InMemoryLink;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+
+/**
+ * One robot's Hardware Simulator in the Environment's JVM (a one-JVM run): the same
+ * {@link HardwareSimulator}, the same step splitting and the same requests as over a socket, with no
+ * exchange thread. The Environment's loop thread hands it each step number with the last response; the
+ * request for it is built by whichever of two threads finds the control code yielded first: the loop
+ * thread, at once, when the control code is still blocked in a call that goes on (or has returned), or the
+ * control thread itself as it makes its next call ({@link ControlLink#onYield}). The step due is taken
+ * under a lock, so each step gets exactly one request; the lock is never held across a wait.
+ */
+final class InMemoryRobot implements InMemoryLink.Robot {
+    private final HardwareSimulator sim;
+    private final RobotControl control;
+    private final InMemoryLink.Environment environment;
+    private final ReentrantLock lock = new ReentrantLock();
+    /** The step whose request nobody has built yet, or -1. */
+    private long due = -1;
+    private boolean started;
+
+    InMemoryRobot(HardwareSimulator sim, RobotControl control, InMemoryLink.Environment environment) {
+        this.sim = sim;
+        this.control = control;
+        this.environment = environment;
+    }
+
+    @Override
+    public RobotHello hello() {
+        return sim.hello();
+    }
+
+    @Override
+    public void welcome(RobotWelcome welcome) {
+        sim.welcomed(welcome);
+    }
+
+    @Override
+    public StepRequest step(long k) {
+        owe(k);
+        if (!started) {
+            started = true;
+            sim.link().onYield(this::yielded);
+            sim.startControl(control);
+        }
+        return take();
+    }
+
+    @Override
+    public StepRequest respond(StepResponse response, long next) {
+        if (next >= 0) {
+            owe(next); // (before the response: a call it completes may yield again at once)
+        }
+        sim.apply(response);
+        return next >= 0 ? take() : null;
+    }
+
+    @Override
+    public void end(SimulationEnd end) {
+        owe(-1);
+        sim.endedHere(end.reason());
+    }
+
+    private void owe(long k) {
+        lock.lock();
+        try {
+            due = k;
+        } finally {
+            lock.unlock();
+        }
+    }
+
+    /** The control thread has yielded: it builds the request if its step is due and nobody has. */
+    private void yielded() {
+        StepRequest request = take();
+        if (request != null) {
+            environment.request(request);
+        }
+    }
+
+    /** The request for the step due, if the control code has yielded and nobody has built it yet; else null. */
+    private StepRequest take() {
+        lock.lock();
+        try {
+            // only the loop thread sets the control code running again (completing its call), and the loop is
+            // not completing this robot's call while its step is due: the control code stays yielded here
+            if (due < 0 || !sim.link().awaitControlFor(0)) {
+                return null;
+            }
+            long k = due;
+            due = -1;
+            return sim.request(k);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt(); // (the simulation is over for it: its control thread was told)
+            return null;
+        } finally {
+            lock.unlock();
+        }
+    }
+}
