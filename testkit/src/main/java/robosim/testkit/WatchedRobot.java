@@ -1,0 +1,114 @@
+package robosim.testkit;
+
+import java.util.ArrayList;
+import java.util.List;
+import robosim.protocol.CommEvent;
+import robosim.protocol.InMemoryLink;
+import robosim.protocol.RobotHello;
+import robosim.protocol.RobotWelcome;
+import robosim.protocol.SensorReading;
+import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+
+/**
+ * One robot of a {@link Simulation} as the test sees it: its Hardware Simulator's end of the in-memory link,
+ * with what the Environment told it kept on the way (its pose, its last readings, every message and contact).
+ * The Environment's loop writes; the test reads once a step it asked for is out (the loop's answer orders
+ * the two), under this object's lock all the same.
+ */
+final class WatchedRobot implements InMemoryLink.Robot {
+    private final InMemoryLink.Robot robot;
+    private final String name;
+    private Pose pose;
+    private StepResponse last;
+    private final List<Received> received = new ArrayList<>();
+    private final List<Contact> contacts = new ArrayList<>();
+    private String end;
+
+    WatchedRobot(InMemoryLink.Robot robot, String name) {
+        this.robot = robot;
+        this.name = name;
+    }
+
+    @Override
+    public RobotHello hello() {
+        return robot.hello();
+    }
+
+    @Override
+    public void welcome(RobotWelcome welcome) {
+        synchronized (this) {
+            if (welcome.isAccepted()) {
+                pose = new Pose(welcome.xMm(), welcome.yMm(), welcome.headingDeg());
+            }
+        }
+        robot.welcome(welcome);
+    }
+
+    @Override
+    public StepRequest step(long k) {
+        return robot.step(k);
+    }
+
+    @Override
+    public StepRequest respond(StepResponse response, long next) {
+        synchronized (this) {
+            last = response;
+            pose = new Pose(response.xMm(), response.yMm(), response.headingDeg());
+            for (CommEvent m : response.inbox()) {
+                received.add(new Received(response.step(), m.from(), m.payload()));
+            }
+            if (response.contact() != null && !response.contact().isEmpty()) {
+                contacts.add(new Contact(response.step(), response.contact()));
+            }
+        }
+        return robot.respond(response, next);
+    }
+
+    @Override
+    public void end(SimulationEnd end) {
+        synchronized (this) {
+            this.end = end.reason();
+        }
+        robot.end(end);
+    }
+
+    String name() {
+        return name;
+    }
+
+    synchronized Pose pose() {
+        return pose;
+    }
+
+    /** The sonar ranges of its last step, mm (empty before step 0 or for a robot without sonar). */
+    synchronized double[] sonar() {
+        return last == null || last.sonarMm() == null ? new double[0] : last.sonarMm().clone();
+    }
+
+    /** Sensor {@code sensor}'s values in its last step, or null if it gave none. */
+    synchronized double[] reading(String sensor) {
+        if (last != null && last.readings() != null) {
+            for (SensorReading r : last.readings()) {
+                if (r.name().equals(sensor)) {
+                    return r.values().clone();
+                }
+            }
+        }
+        return null;
+    }
+
+    synchronized List<Received> received() {
+        return List.copyOf(received);
+    }
+
+    synchronized List<Contact> contacts() {
+        return List.copyOf(contacts);
+    }
+
+    /** Why the simulation ended for it, or null while it takes part. */
+    synchronized String end() {
+        return end;
+    }
+}

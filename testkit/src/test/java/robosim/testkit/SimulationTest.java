@@ -1,0 +1,126 @@
+package robosim.testkit;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertNotNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.List;
+import org.junit.jupiter.api.Test;
+import robosim.api.Robot;
+import robosim.api.RobotControl;
+
+class SimulationTest {
+    /** Drives ahead 1 m, then stands. */
+    static final class AheadOneMetre implements RobotControl {
+        @Override
+        public void run(Robot robot) throws InterruptedException {
+            robot.move(1000);
+        }
+    }
+
+    @Test
+    void aRobotThatDrivesAMetreIsAMetreFurtherOnAndStandsThere() {
+        try (Simulation sim = Simulation.of(World.arena(4, 4).robot("r1", "Scout", 1, 2, 0))
+                .control("r1", new AheadOneMetre()).start()) {
+            assertEquals(new Pose(1000, 2000, 0), sim.pose("r1"));
+            assertEquals(0, sim.steps());
+            sim.run(40);
+            assertEquals(40, sim.steps());
+            assertEquals(2000, sim.pose("r1").xMm(), 1e-6);
+            assertEquals(2000, sim.pose("r1").yMm(), 1e-6);
+            sim.run(10);
+            assertEquals(2000, sim.pose("r1").xMm(), 1e-6);
+            assertTrue(sim.contacts("r1").isEmpty());
+        }
+    }
+
+    @Test
+    void runUntilStopsAtTheFirstStepTheConditionHolds() {
+        try (Simulation sim = Simulation.of(World.arena(4, 4).robot("r1", "Scout", 1, 2, 0))
+                .control("r1", new AheadOneMetre()).start()) {
+            assertTrue(sim.runUntil(s -> s.pose("r1").xMm() >= 1500, 100));
+            long at = sim.steps();
+            assertTrue(at > 0 && at < 40, "at step " + at);
+            assertFalse(sim.runUntil(s -> s.pose("r1").yMm() > 2500, 5));
+            assertEquals(at + 5, sim.steps());
+        }
+    }
+
+    /** Drives into what is ahead until it touches it. */
+    static final class Ram implements RobotControl {
+        @Override
+        public void run(Robot robot) throws InterruptedException {
+            while (robot.lastContact() == null || robot.lastContact().isEmpty()) {
+                robot.move(200);
+            }
+        }
+    }
+
+    @Test
+    void touchingAWallIsAContactAndTheSonarSawItComing() {
+        try (Simulation sim = Simulation.of(World.arena(3, 3).robot("r1", "Scout", 1.5, 1.5, 0))
+                .control("r1", new Ram()).start()) {
+            sim.run(1);
+            double[] sonar = sim.sonar("r1");
+            assertEquals(16, sonar.length);
+            assertTrue(sim.runUntil(s -> !s.contacts("r1").isEmpty(), 200), "never touched the wall");
+            Contact c = sim.contacts("r1").get(0);
+            assertNotNull(c.with());
+            assertTrue(sim.pose("r1").xMm() > 2500, "at " + sim.pose("r1"));
+        }
+    }
+
+    /** Says hello to everyone once, then listens. */
+    static final class Greeter implements RobotControl {
+        @Override
+        public void run(Robot robot) throws InterruptedException {
+            robot.broadcast("hello from " + robot.name());
+            while (true) {
+                robot.sleep(100);
+            }
+        }
+    }
+
+    @Test
+    void aBroadcastReachesTheOtherRobots() {
+        try (Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 1, 0).robot("b", "ArRobot", 3, 3, 0))
+                .control("a", new Greeter()).control("b", new Greeter()).start()) {
+            sim.run(3);
+            List<Received> atB = sim.received("b");
+            assertEquals(1, atB.size(), atB.toString());
+            assertEquals("a", atB.get(0).from());
+            assertEquals("hello from a", atB.get(0).text());
+            assertEquals("hello from b", sim.received("a").get(0).text());
+        }
+    }
+
+    @Test
+    void anEnvironmentFileRunsItsOwnControlClassesTheSameAsEveryTime() {
+        Path maze = Path.of("..", "test-envs", "maze.xml");
+        Pose first;
+        try (Simulation sim = Simulation.of(maze).start()) {
+            sim.run(100);
+            first = sim.pose(sim.robots().get(0));
+        }
+        try (Simulation sim = Simulation.of(maze).start()) {
+            sim.run(60).run(40);
+            assertEquals(first, sim.pose(sim.robots().get(0)));
+        }
+    }
+
+    @Test
+    void whatCannotRunIsRefusedWithItsReason() {
+        IllegalArgumentException noControl = assertThrows(IllegalArgumentException.class,
+                () -> Simulation.of(World.arena(4, 4).robot("r1", "Scout", 1, 2, 0)).start());
+        assertTrue(noControl.getMessage().contains("robot r1") && noControl.getMessage().contains("control(\"r1\""),
+                noControl.getMessage());
+        assertThrows(IllegalArgumentException.class,
+                () -> Simulation.of(World.arena(4, 4)).control("nobody", new AheadOneMetre()));
+        IllegalArgumentException badFile = assertThrows(IllegalArgumentException.class,
+                () -> Simulation.of(Path.of("no-such-file.xml")));
+        assertTrue(badFile.getMessage().contains("no-such-file.xml"), badFile.getMessage());
+    }
+}
