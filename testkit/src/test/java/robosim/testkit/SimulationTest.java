@@ -111,6 +111,38 @@ class SimulationTest {
         }
     }
 
+    /** Computes without ever calling the robot, until it is told to stop. */
+    static final class Spinner implements RobotControl {
+        @Override
+        public void run(Robot robot) {
+            while (!Thread.currentThread().isInterrupted()) {
+                Thread.onSpinWait();
+            }
+        }
+    }
+
+    /** Its first call fails. */
+    static final class Crasher implements RobotControl {
+        @Override
+        public void run(Robot robot) {
+            throw new IllegalStateException("a bug in the control code");
+        }
+    }
+
+    @Test
+    void aControlThatNeverYieldsIsDroppedAfterTheStepTimeoutAndTheOthersGoOn() {
+        try (Simulation sim = Simulation.of(World.arena(6, 4).robot("spin", "Scout", 1, 1, 0)
+                .robot("crash", "Scout", 1, 3, 0).robot("go", "Scout", 3, 2, 0))
+                .control("spin", new Spinner()).control("crash", new Crasher()).control("go", new AheadOneMetre())
+                .stepTimeout(java.time.Duration.ofMillis(500)).start()) {
+            sim.run(30);
+            assertNotNull(sim.ended("spin"), "the spinning robot still takes part");
+            assertEquals(null, sim.ended("crash"), "a control class that threw stands still, it is not dropped");
+            assertEquals(new Pose(1000, 3000, 0), sim.pose("crash"));
+            assertEquals(4000, sim.pose("go").xMm(), 1e-6);
+        }
+    }
+
     @Test
     void whatCannotRunIsRefusedWithItsReason() {
         IllegalArgumentException noControl = assertThrows(IllegalArgumentException.class,
