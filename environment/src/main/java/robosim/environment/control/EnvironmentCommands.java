@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.RobotState;
 import robosim.environment.net.RunStatus;
 
@@ -96,13 +97,24 @@ public final class EnvironmentCommands implements ControlCommands {
             }
         }
         String control = w.length == 6 ? w[5] : "";
-        String cannot = control.isEmpty() || host.launches() == null ? null : host.launches().check(control);
+        ClientWorkerCoordinator current = host.current();
+        boolean here = !control.isEmpty() && current.robotsInThisJvm(); // (--one-jvm: it starts in this JVM)
+        String cannot = here ? RobotLaunches.controlClassProblem(control, "this Environment runs with")
+                : control.isEmpty() || host.launches() == null ? null : host.launches().check(control);
         if (cannot != null) {
             return error("add " + ControlReplies.abbreviate(w[0]) + ": " + cannot);
         }
-        String why = host.current().roster().add(w[0], w[1], pose[0], pose[1], pose[2], control);
+        String why = current.roster().add(w[0], w[1], pose[0], pose[1], pose[2], control);
         if (why != null) {
             return error("add " + ControlReplies.abbreviate(w[0]) + ": " + why);
+        }
+        if (here) {
+            String failed = current.helloInMemory(w[0], w[1], control);
+            if (failed != null) {
+                current.roster().remove(w[0]); // (not let in: nothing will say hello as it)
+                return error("add " + w[0] + ": it could not start in this JVM: " + failed);
+            }
+            return ok("added " + w[0] + " and started it in this JVM (" + control + ")");
         }
         if (control.isEmpty() || host.launches() == null) {
             return ok("added " + w[0] + ": it joins when a robot process says hello as " + w[0]

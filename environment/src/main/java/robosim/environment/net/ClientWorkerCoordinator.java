@@ -110,28 +110,49 @@ public final class ClientWorkerCoordinator implements Closeable {
     /** Says every file robot's hello through its in-memory link; one that cannot start ends the run, saying why. */
     private void startInMemory() {
         for (WorldSpec.RobotSpec r : spec.robots()) {
-            String refusal;
-            InMemoryPeer peer = new InMemoryPeer(run.inMemory(), r.name());
-            RobotHello hello = null;
-            try {
-                peer.attach(inMemory.start(r.name(), r.type(), r.control(), peer));
-                hello = peer.hello();
-                refusal = admission.check(hello, spec.indexOf(r.name()));
-            } catch (IllegalArgumentException e) {
-                refusal = e.getMessage();
-            }
+            String refusal = helloInMemory(r.name(), r.type(), r.control());
             if (refusal != null) {
                 stop("robot " + r.name() + " could not start in this JVM: " + refusal);
                 return;
             }
-            CompletableFuture<String> verdict = new CompletableFuture<>();
-            post(new LoopEvent.RobotJoins(peer, hello, spec.indexOf(r.name()), verdict));
-            verdict.thenAccept(why -> {
-                if (why != null && !LoopEvent.OVER.equals(why)) {
-                    LOG.error("robot {} (in this JVM) was refused: {}", r.name(), why);
-                }
-            });
         }
+    }
+
+    /**
+     * Starts robot {@code name} in this JVM ({@link #robotsInThisJvm}) and says its hello: a robot of the file, or
+     * one the control port has added. Null once its hello is posted (the loop answers it), else why it cannot
+     * start (its type or control class, or the hello's check).
+     */
+    public String helloInMemory(String name, String type, String control) {
+        if (inMemory == null) {
+            return "this Environment runs no robots in its JVM";
+        }
+        InMemoryPeer peer = new InMemoryPeer(run.inMemory(), name);
+        RobotHello hello;
+        String refusal;
+        try {
+            peer.attach(inMemory.start(name, type, control, peer));
+            hello = peer.hello();
+            refusal = admission.check(hello, spec.indexOf(name));
+        } catch (IllegalArgumentException e) {
+            return e.getMessage();
+        }
+        if (refusal != null) {
+            return refusal;
+        }
+        CompletableFuture<String> verdict = new CompletableFuture<>();
+        post(new LoopEvent.RobotJoins(peer, hello, spec.indexOf(name), verdict));
+        verdict.thenAccept(why -> {
+            if (why != null && !LoopEvent.OVER.equals(why)) {
+                LOG.error("robot {} (in this JVM) was refused: {}", name, why);
+            }
+        });
+        return null;
+    }
+
+    /** True if this simulation runs its robots in this JVM ({@link #robotsInThisJvm}). */
+    public boolean robotsInThisJvm() {
+        return inMemory != null;
     }
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
