@@ -21,12 +21,15 @@ import robosim.protocol.StepResponse;
  * degrees of ahead reads under 600 mm, a turn of 30 to 90 degrees at 90 deg/s towards the more open side), so
  * the world does the work a one-JVM run of test-envs/bench-N.xml does. The clock runs from step 0 to the
  * last, as the Environment's own clock does (JIT warm-up included, start-up left out).
- * usage: java -cp 'runner/target/lib/*' bench/Engine.java FILE.xml STEPS
+ * usage: java -cp 'runner/target/lib/*' bench/Engine.java FILE.xml|N STEPS
+ * N stands for test-envs/bench-N.xml; a third argument (the floors' mode, which the peers' side-by-side script
+ * passes) is ignored, so this runs in a floor's place there, with CLASSPATH='runner/target/lib/*'.
  * Prints one line: robots=N steps=S wall=Ws steps/s=R robot-steps/s=R.
  */
 public class Engine {
     public static void main(String[] args) throws Exception {
-        WorldSpec spec = new EnvironmentLoader().load(Path.of(args[0]));
+        Path file = args[0].matches("\\d+") ? Path.of("test-envs", "bench-" + args[0] + ".xml") : Path.of(args[0]);
+        WorldSpec spec = new EnvironmentLoader().load(file);
         long steps = Long.parseLong(args[1]);
         int n = spec.robots().size();
         List<RobotProperties> properties = new ArrayList<>();
