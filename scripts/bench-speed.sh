@@ -1,22 +1,42 @@
 #!/usr/bin/env bash
 # The speed table against ARGoS and Stage, in one sitting, alternated:
-#   scripts/bench-speed.sh [REPS] [--quick] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
+#   scripts/bench-speed.sh [REPS] [--quick] [--peers PREFIX] [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # REPS defaults to 2. For N = 10, 100, 1000 robots (test-envs/bench-N.xml: Wander Scouts, 16 sonars of 5 m
-# read every step, Geometry its own process, robots in one process), each repetition runs in turn:
+# read every step), each repetition runs in turn:
 #   bench/FloorThreads.java N S             the floor of the thread-per-client shape
 #   headless.sh --robots-in-one-process     the default: one shared connection for the robots' process
 #   headless.sh ... --connection PER_ROBOT  a socket per robot, the default THREADS coordinator
 #   bench/FloorShared.java N S              the floor of the one-thread-each-side shape
 #   headless.sh ... --coordinator SEQUENTIAL  a socket per robot, the original loop
+#   bench/Engine.java N S                   the engine alone: the floor of the one-JVM layout
+#   headless.sh --one-jvm                   the whole simulation in one JVM
+#   ARGoS 3 and Stage 4.3, with --peers PREFIX (built there by the peers' build-peers.sh): one round of the
+#                                           peers' side-by-side.sh (../shared/peers/, or PEERS_SCRIPT) at N, S
 # Every run is printed with its ratio to the floor of the same repetition (the shared connection and
-# THREADS to FloorThreads, SEQUENTIAL to FloorShared), then the medians, beside the marks of ARGoS 3 and
-# Stage 4.3 (measured once on this machine kind, from the speed issue). Writes speed.csv (one row per run,
+# THREADS to FloorThreads, SEQUENTIAL to FloorShared, one JVM to Engine, the peers to Engine too), then the
+# medians; without --peers the table shows the marks of ARGoS 3 and Stage 4.3 measured once on this machine
+# kind (the speed issue) instead. Writes speed.csv (one row per run,
 # appended) and speed.png (robosim.bench.SpeedPlot) into a fresh temporary directory (printed), DIR with
 # --out DIR, or docs/perf/ with --write-docs, which also writes the medians' table into docs/PERFORMANCE.md
 # between its speed-table marks (the doc's one current table). --quick: one repetition with a fifth of the steps.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-robosim_bench_args 2 docs/perf "$@"
+peers="" rest=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --peers) [ $# -ge 2 ] || robosim_fail "--peers needs the peers' PREFIX (see --help)"; peers=$2; shift 2 ;;
+    --peers=*) peers=${1#--peers=}; shift ;;
+    *) rest+=("$1"); shift ;;
+  esac
+done
+robosim_bench_args 2 docs/perf "${rest[@]}"
+peer_script=${PEERS_SCRIPT:-$ROBOSIM_HOME/../shared/peers/side-by-side.sh}
+if [ -n "$peers" ]; then
+  peers=$(robosim_abs "$peers")
+  [ -x "$peers/argos3/bin/argos3" ] && [ -x "$peers/stage/bin/stage" ] \
+    || robosim_fail "--peers $peers: no argos3/bin/argos3 and stage/bin/stage there (build them with the peers' build-peers.sh)"
+  [ -f "$peer_script" ] || robosim_fail "no side-by-side script at $peer_script (set PEERS_SCRIPT)"
+fi
 reps=$BENCH_REPS quick=$BENCH_QUICK
 dir=$(robosim_out_dir)
 robosim_build_if_stale
@@ -53,6 +73,19 @@ for rep in $(seq "$reps"); do
     fs=$(java bench/FloorShared.java "$n" "$s" | floor_rate)
     row FloorShared "$n" "$s" "$rep" "$fs" FloorShared "$fs"
     row SEQUENTIAL-per-robot "$n" "$s" "$rep" "$(run "$n" "$s" --coordinator SEQUENTIAL)" FloorShared "$fs"
+    en=$(java -cp "runner/target/lib/*" bench/Engine.java "$n" "$s" | floor_rate)
+    row Engine "$n" "$s" "$rep" "$en" Engine "$en"
+    row one-jvm "$n" "$s" "$rep" "$(scripts/headless.sh --env "test-envs/bench-$n.xml" --steps "$s" --one-jvm 2>/dev/null \
+      | tail -n 1 | rate || true)" Engine "$en"
+    if [ -n "$peers" ]; then
+      pd=$(mktemp -d)
+      env SIZES="$n" "STEPS_$n=$s" SKIP="robosim floor" OUT_DIR="$pd" bash "$peer_script" 1 "$peers" >/dev/null 2>&1 || true
+      for sys in argos stage; do
+        pr=$(awk -F'\t' -v s=$sys '$2 == s && $7 == "ok" { print $5 }' "$pd/raw.tsv" | tail -n 1)
+        row "$([ $sys = argos ] && echo ARGoS-3 || echo Stage-4.3)" "$n" "$s" "$rep" "$pr" Engine "$en"
+      done
+      rm -rf "$pd"
+    fi
   done
 done
 echo "== medians of this sitting (ratio: to the floor of the same shape, same repetition)"

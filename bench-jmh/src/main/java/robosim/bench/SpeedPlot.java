@@ -17,7 +17,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 /**
  * The speed table and plot from speed.csv (scripts/bench-speed.sh): for the newest sitting, the median
  * steps/s and ratio to its floor of each variant at 10, 100 and 1000 robots, printed as a Markdown table
- * beside the marks of ARGoS 3 and Stage 4.3, and drawn (steps/s against robots, log-log) into speed.png.
+ * beside ARGoS 3 and Stage 4.3 (measured in the same sitting when it has their rows, else the marks measured
+ * once on this machine kind), and drawn (steps/s against robots, log-log) into speed.png.
  *
  * <p>usage: {@code java -cp ... robosim.bench.SpeedPlot DIR}
  */
@@ -27,7 +28,9 @@ public final class SpeedPlot {
     private static final double[] ARGOS = {6540, 580, 39.9};
     private static final double[] STAGE = {3490, 194, 14.8};
     private static final List<String> VARIANTS = List.of("shared-connection", "THREADS-per-robot",
-            "SEQUENTIAL-per-robot", "FloorThreads", "FloorShared");
+            "SEQUENTIAL-per-robot", "one-jvm", "FloorThreads", "FloorShared", "Engine");
+    /** The peers' rows, when the sitting measured them (bench-speed.sh --peers). */
+    private static final List<String> PEERS = List.of("ARGoS-3", "Stage-4.3");
 
     private SpeedPlot() {
     }
@@ -52,10 +55,13 @@ public final class SpeedPlot {
                 ratios.computeIfAbsent(f[1] + "|" + f[2], k -> new ArrayList<>()).add(Double.parseDouble(f[8]));
             }
         }
-        System.out.println("sitting " + newest + ": median steps/s (ratio to its floor)");
+        boolean peersMeasured = rates.keySet().stream().anyMatch(k -> k.startsWith(PEERS.get(0) + "|"));
+        System.out.println("sitting " + newest + ": median steps/s (ratio to its floor); ARGoS 3 and Stage 4.3 "
+                + (peersMeasured ? "measured in the same sitting (ratio: to Engine)"
+                        : "are the marks measured once on this machine kind (the speed issue), not this sitting"));
         System.out.println();
         System.out.println("| robots | " + String.join(" | ", VARIANTS) + " | ARGoS 3 | Stage 4.3 |");
-        System.out.println("|---|---|---|---|---|---|---|---|");
+        System.out.println("|---|" + "---|".repeat(VARIANTS.size() + 2));
         for (int r = 0; r < ROBOTS.length; r++) {
             StringBuilder b = new StringBuilder("| " + ROBOTS[r] + " |");
             for (String v : VARIANTS) {
@@ -67,17 +73,24 @@ public final class SpeedPlot {
                 }
                 b.append(" |");
             }
-            b.append(String.format(Locale.ROOT, " %.1f | %.1f |", ARGOS[r], STAGE[r]));
+            if (peersMeasured) {
+                for (String v : PEERS) {
+                    String key = v + "|" + ROBOTS[r];
+                    b.append(String.format(Locale.ROOT, " %.1f (%.2f) |", median(rates.get(key)), median(ratios.get(key))));
+                }
+            } else {
+                b.append(String.format(Locale.ROOT, " %.1f | %.1f |", ARGOS[r], STAGE[r]));
+            }
             System.out.println(b);
         }
         XYChart chart = new XYChartBuilder().width(900).height(560)
-                .title("Steps/s against robots (Wander, 16 sonars every step, Geometry a process; " + newest + ")")
+                .title("Steps/s against robots (Wander, 16 sonars every step; " + newest + ")")
                 .xAxisTitle("robots").yAxisTitle("steps/s").build();
         chart.getStyler().setXAxisLogarithmic(true);
         chart.getStyler().setYAxisLogarithmic(true);
         chart.getStyler().setLegendPosition(Styler.LegendPosition.InsideSW);
         chart.getStyler().setMarkerSize(8);
-        for (String v : VARIANTS) {
+        for (String v : peersMeasured ? concat(VARIANTS, PEERS) : VARIANTS) {
             List<Double> x = new ArrayList<>();
             List<Double> y = new ArrayList<>();
             for (int n : ROBOTS) {
@@ -91,10 +104,18 @@ public final class SpeedPlot {
                 chart.addSeries(v, x, y).setMarker(SeriesMarkers.CIRCLE);
             }
         }
-        double[] xs = {10, 100, 1000};
-        chart.addSeries("ARGoS 3 (the issue's mark)", xs, ARGOS).setMarker(SeriesMarkers.DIAMOND);
-        chart.addSeries("Stage 4.3 (the issue's mark)", xs, STAGE).setMarker(SeriesMarkers.DIAMOND);
+        if (!peersMeasured) {
+            double[] xs = {10, 100, 1000};
+            chart.addSeries("ARGoS 3 (the issue's mark)", xs, ARGOS).setMarker(SeriesMarkers.DIAMOND);
+            chart.addSeries("Stage 4.3 (the issue's mark)", xs, STAGE).setMarker(SeriesMarkers.DIAMOND);
+        }
         BitmapEncoder.saveBitmap(chart, dir.resolve("speed").toString(), BitmapEncoder.BitmapFormat.PNG);
+    }
+
+    private static List<String> concat(List<String> a, List<String> b) {
+        List<String> all = new ArrayList<>(a);
+        all.addAll(b);
+        return all;
     }
 
     private static double median(List<Double> values) {

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# What a sweep pays per run: whole-process wall times of a short run, in one sitting, alternated:
+#   scripts/bench-whole.sh [REPS] [--peers PREFIX] [--classpath PATH[:PATH...]] [--help]
+# REPS defaults to 5. Each repetition times, as whole processes (start-up, warm-up, the run and the end):
+#   headless.sh --one-jvm --env test-envs/bench-10.xml --steps 5000     the whole simulation in one JVM
+#   headless.sh --one-jvm --env test-envs/bench-10.xml --steps 1        its start-up and end alone
+#   headless.sh --robots-in-one-process ... --steps 5000                every part its own process
+#   ARGoS 3, 10 robots, 5000 steps, with --peers PREFIX (one round of the peers' side-by-side.sh,
+#                                                                        ../shared/peers/ or PEERS_SCRIPT)
+# Prints every time, then the medians and the one-JVM run's ratio to ARGoS; writes no file.
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+peers="" rest=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --peers) [ $# -ge 2 ] || robosim_fail "--peers needs the peers' PREFIX (see --help)"; peers=$2; shift 2 ;;
+    --peers=*) peers=${1#--peers=}; shift ;;
+    *) rest+=("$1"); shift ;;
+  esac
+done
+robosim_bench_args 5 docs/perf "${rest[@]}"
+[ "$ROBOSIM_WRITE_DOCS" = 1 ] && robosim_fail "writes no file: no --write-docs"
+reps=$BENCH_REPS
+peer_script=${PEERS_SCRIPT:-$ROBOSIM_HOME/../shared/peers/side-by-side.sh}
+if [ -n "$peers" ]; then
+  peers=$(robosim_abs "$peers")
+  [ -x "$peers/argos3/bin/argos3" ] || robosim_fail "--peers $peers: no argos3/bin/argos3 there (build it with the peers' build-peers.sh)"
+  [ -f "$peer_script" ] || robosim_fail "no side-by-side script at $peer_script (set PEERS_SCRIPT)"
+fi
+robosim_build_if_stale
+echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE)"
+seconds() { # a command's whole wall time, s
+  local t0=$EPOCHREALTIME
+  "$@" >/dev/null 2>&1 || { echo "bench-whole: failed: $*" >&2; echo NaN; return 0; }
+  awk -v a="$t0" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }'
+}
+declare -a one start procs argos
+for rep in $(seq "$reps"); do
+  one+=("$(seconds scripts/headless.sh --one-jvm --env test-envs/bench-10.xml --steps 5000)")
+  start+=("$(seconds scripts/headless.sh --one-jvm --env test-envs/bench-10.xml --steps 1)")
+  procs+=("$(seconds scripts/headless.sh --robots-in-one-process --env test-envs/bench-10.xml --steps 5000)")
+  line="rep $rep: one-jvm 5000 steps ${one[-1]} s, one-jvm 1 step ${start[-1]} s, processes 5000 steps ${procs[-1]} s"
+  if [ -n "$peers" ]; then
+    pd=$(mktemp -d)
+    SIZES=10 STEPS_10=5000 SKIP="stage robosim floor" OUT_DIR=$pd bash "$peer_script" 1 "$peers" >/dev/null 2>&1 || true
+    argos+=("$(awk -F'\t' '$2 == "argos" && $7 == "ok" { print $6 }' "$pd/raw.tsv" | tail -n 1)")
+    rm -rf "$pd"
+    line="$line, ARGoS 5000 steps ${argos[-1]:-NaN} s"
+  fi
+  echo "$line"
+done
+median() { printf '%s\n' "$@" | grep -v '^NaN$' | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2) : "NaN")}'; }
+m1=$(median "${one[@]}"); ms=$(median "${start[@]}"); mp=$(median "${procs[@]}")
+echo "median whole-process s: one-jvm-5000=$m1 one-jvm-1=$ms processes-5000=$mp"
+if [ -n "$peers" ]; then
+  ma=$(median "${argos[@]}")
+  awk -v o="$m1" -v a="$ma" -v p="$mp" 'BEGIN { printf "median ARGoS-5000=%s; one-jvm / ARGoS = %.2f, processes / ARGoS = %.2f\n", a, o/a, p/a }'
+fi
