@@ -121,6 +121,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (steps <= 0) {
             return "headless: --steps must be > 0, got " + steps;
         }
+        if (oneJvm && (robotsInOneProcess || connection != null || exchange != null)) {
+            return "headless: --one-jvm starts no robot process: --robots-in-one-process, --connection and --exchange "
+                    + "do not apply";
+        }
         if (extraViewers.negative() || !(environmentOptions.speed >= 0)) {
             return "headless: --speed, --live-viewers and --frozen-viewers must be >= 0";
         }

@@ -52,6 +52,24 @@ class HeadlessRunnerTest {
     }
 
     @Test
+    void oneJvmWithAnOptionForRobotProcessesIsOneLineAndExit2() {
+        Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--one-jvm",
+                "--robots-in-one-process");
+        assertEquals(2, r.code(), r.all());
+        assertEquals(List.of("headless: --one-jvm starts no robot process: --robots-in-one-process, --connection and "
+                + "--exchange do not apply"), r.err(), r.all());
+    }
+
+    @Test
+    void aOneJvmRunIsOneEnvironmentProcessWithEveryRobotInIt() {
+        Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "50", "--one-jvm");
+        assertEquals(0, r.code(), r.all());
+        String last = r.out().get(r.out().size() - 1);
+        assertTrue(last.startsWith("steps=50 robots=3 "), r.all());
+        assertTrue(last.endsWith(" geometry=in-process robots_in=one-jvm"), r.all());
+    }
+
+    @Test
     void aRobotProcessThatEndsBeforeTheStartEndsTheRunAtOnceWithItsReason() {
         // a JVM option the robots' JVMs refuse: they end at once, and the Environment would wait for ever
         Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--no-geometry",
