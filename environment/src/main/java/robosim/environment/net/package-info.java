@@ -40,8 +40,12 @@
  *     <td>writes the recording from the queue the loop fills after each step</td><td>its queue; the
  *     disk</td></tr>
  * </table>
- * With {@code --no-geometry} the geometry library's sonar pass may also use one worker of the JVM's common
- * fork-join pool on the loop's behalf (its package-info says when); the loop waits for it within the step.
+ * With {@code --no-geometry} (and {@code --one-jvm}) the geometry library's sonar pass may also use one worker
+ * of the JVM's common fork-join pool on the loop's behalf (its package-info says when); the loop waits for it
+ * within the step. With {@code --one-jvm} the file's robots start no thread here: their control threads
+ * ({@code control[name]}, the Hardware Simulator's) hand their requests to
+ * {@link robosim.environment.net.InMemoryRequests}, and the last one owed wakes the loop; before blocking on
+ * its inbox the loop spins up to 50 microseconds for them.
  * A replay ({@code robosim.environment.replay}) has its own clock thread and uses this package's
  * {@link robosim.environment.net.Inbox}, {@link robosim.environment.net.Viewers} and
  * {@link robosim.environment.net.ConnectionWatch}.
