@@ -68,7 +68,7 @@ public final class SpeedPlot {
                 String key = v + "|" + ROBOTS[r];
                 double m = median(rates.get(key));
                 b.append(String.format(Locale.ROOT, " %.1f", m));
-                if (!v.startsWith("Floor")) {
+                if (!v.startsWith("Floor") && !v.equals("Engine")) { // (a floor: its own ratio is 1)
                     b.append(String.format(Locale.ROOT, " (%.2f)", median(ratios.get(key))));
                 }
                 b.append(" |");
