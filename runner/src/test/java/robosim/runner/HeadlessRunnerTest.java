@@ -3,13 +3,9 @@ package robosim.runner;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
-import java.nio.charset.StandardCharsets;
 import java.util.List;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
-import picocli.CommandLine;
 
 /**
  * How the headless runner ends, over real processes: a client process that ends before the start
@@ -17,34 +13,9 @@ import picocli.CommandLine;
  * by the step timeout, makes the exit code 3 and is named with its reason before the summary.
  */
 class HeadlessRunnerTest {
-    /** What one in-JVM run of headless.sh printed and returned. */
-    private record Run(int code, List<String> out, List<String> err) {
-        String all() {
-            return "exit " + code + "\nstdout:\n" + String.join("\n", out) + "\nstderr:\n" + String.join("\n", err);
-        }
-    }
-
-    private static Run headless(String... args) {
-        PrintStream savedOut = System.out;
-        PrintStream savedErr = System.err;
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        int code;
-        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
-        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-        try {
-            code = new CommandLine(new HeadlessRunner()).execute(args);
-        } finally {
-            System.setOut(savedOut);
-            System.setErr(savedErr);
-        }
-        return new Run(code, out.toString(StandardCharsets.UTF_8).lines().toList(),
-                err.toString(StandardCharsets.UTF_8).lines().toList());
-    }
-
     @Test
     void aControlClassThatIsNowhereIsOneLineAndExit2BeforeAnyProcessStarts() {
-        Run r = headless("--env", "src/test/resources/unknown-control.xml", "--steps", "10");
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/unknown-control.xml", "--steps", "10");
         assertEquals(2, r.code(), r.all());
         assertEquals(List.of("src/test/resources/unknown-control.xml: <robot name=\"r1\">: control class "
                 + "org.example.NoSuchControl is not on the class path (add its classes with --classpath or "
@@ -72,7 +43,7 @@ class HeadlessRunnerTest {
     @Test
     void aRobotProcessThatEndsBeforeTheStartEndsTheRunAtOnceWithItsReason() {
         // a JVM option the robots' JVMs refuse: they end at once, and the Environment would wait for ever
-        Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--no-geometry",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--no-geometry",
                 "--robot-jvm-opts", "-XX:+NoSuchRoboSimOption");
         assertEquals(2, r.code(), r.all());
         assertTrue(r.err().stream().anyMatch(line -> Pattern.matches("headless: robot r[123] exited \\(code 1\\) "
@@ -81,7 +52,7 @@ class HeadlessRunnerTest {
 
     @Test
     void aGeometryProcessThatEndsBeforeTheStartEndsTheRunAtOnce() {
-        Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "10",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10",
                 "--geometry-jvm-opts", "-XX:+NoSuchRoboSimOption");
         assertEquals(2, r.code(), r.all());
         assertTrue(r.err().stream().anyMatch(line -> Pattern.matches("headless: geometry exited \\(code 1\\) "
@@ -90,10 +61,10 @@ class HeadlessRunnerTest {
 
     @Test
     void aRobotWhoseProcessEndsMidRunIsNamedWithItsReasonAndTheExitCodeIs3() {
-        Run r = headless("--env", "src/test/resources/one-quits.xml", "--steps", "100", "--no-geometry",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/one-quits.xml", "--steps", "100", "--no-geometry",
                 "--timeout-s", "120");
         assertEquals(HeadlessRunner.EXIT_ROBOTS_REMOVED, r.code(), r.all());
-        String summary = r.out().get(r.out().size() - 1);
+        String summary = r.summary();
         assertTrue(summary.startsWith("steps=100 robots=3 "), r.all());
         assertTrue(summary.contains(" robots_left=1 "), r.all());
         String removed = r.out().get(r.out().size() - 2);
@@ -105,7 +76,7 @@ class HeadlessRunnerTest {
 
     @Test
     void theStepTimeoutReachesTheEnvironmentAndItsRemovalIsNamed() {
-        Run r = headless("--env", "src/test/resources/one-stuck.xml", "--steps", "60", "--no-geometry",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/one-stuck.xml", "--steps", "60", "--no-geometry",
                 "--robots-in-one-process", "--step-timeout-ms", "2000", "--timeout-s", "120");
         assertEquals(HeadlessRunner.EXIT_ROBOTS_REMOVED, r.code(), r.all());
         String removed = r.out().get(r.out().size() - 2);
