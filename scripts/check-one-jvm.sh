@@ -11,9 +11,9 @@
 # control class, and a world of RemoteControlRobots (remote.xml: they stand still, waiting for commands on
 # the fixed ports of RobotInfo.xml). Robots that may join later (join="any-time", <join>) start in neither run.
 # A world of more than R robots (default 10: bench-100, swarm-100 and bench-1000) has its robots in one
-# process in the separate run (--robots-in-one-process: still sockets, serialization and a Geometry process);
-# 100 robot JVMs take about a minute to start on 2 cores, 1000 more memory than most machines have.
-# The default check takes about 2 minutes on 2 cores.
+# process in the separate run (--robots-in-one-process: still sockets, serialization and a Geometry process).
+# The default check takes about 2 minutes on 2 cores; --process-per-robot-up-to 100 adds about 45 s for each
+# 100-robot world (a JVM per robot), and 1000 robot JVMs need more memory than most machines have.
 # Writes each world's logs, recordings and run output into a fresh temporary directory, or DIR with
 # --out DIR (both said on stderr), never into the repository; the files of a world that is the same are
 # removed unless --keep. --classpath PATH[:PATH...] (or ROBOSIM_CLASSPATH) reaches every process, as in
