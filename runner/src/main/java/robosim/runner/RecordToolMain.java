@@ -76,7 +76,7 @@ public final class RecordToolMain implements Callable<Integer> {
         }
     }
 
-    private static void messages(RecordingReader r, BufferedWriter out) throws IOException {
+    static void messages(RecordingReader r, BufferedWriter out) throws IOException {
         out.write("step,from,to,text\n");
         for (int k = 0; k < r.steps(); k++) {
             RecordingReader.Step s = r.step(k);
