@@ -24,7 +24,7 @@ class HeadlessRunnerTest {
 
     @Test
     void oneJvmWithAnOptionForRobotProcessesIsOneLineAndExit2() {
-        Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--one-jvm",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--one-jvm",
                 "--robots-in-one-process");
         assertEquals(2, r.code(), r.all());
         assertEquals(List.of("headless: --one-jvm starts no robot process: --robots-in-one-process, --connection and "
@@ -33,7 +33,7 @@ class HeadlessRunnerTest {
 
     @Test
     void aOneJvmRunIsOneEnvironmentProcessWithEveryRobotInIt() {
-        Run r = headless("--env", "src/test/resources/three-robots.xml", "--steps", "50", "--one-jvm");
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "50", "--one-jvm");
         assertEquals(0, r.code(), r.all());
         String last = r.out().get(r.out().size() - 1);
         assertTrue(last.startsWith("steps=50 robots=3 "), r.all());
