@@ -6,6 +6,7 @@ import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ServiceLoader;
+import java.util.function.Consumer;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -247,18 +248,16 @@ public final class EnvironmentMain implements Callable<Integer> {
         }
         Runtime.getRuntime().addShutdownHook(new Thread(host::stopOnSignal, "shutdown"));
         int[] ports = host.ports();
-        System.out.println("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
+        lines.accept("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
                 + " control=" + (control == null ? -1 : control.port()) + (web == null ? "" : " web=" + web.port())
                 + " tls=" + (keys != null && keys.tls() != null ? "on" : "off"));
-        System.out.flush();
-        announceStart(host.current());
+        announceStart(host.current(), lines);
         try {
             return host.run(s -> {
                 for (Departure d : s.departures()) {
-                    System.out.println("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
+                    lines.accept("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
                 }
-                System.out.println(s.line());
-                System.out.flush();
+                lines.accept(s.line());
             });
         } finally {
             if (control != null) {
@@ -288,12 +287,11 @@ public final class EnvironmentMain implements Callable<Integer> {
      * Prints {@code running robots=N} when every client of the first simulation is there, so a runner
      * knows that a client process which exits from then on has taken part (thread "start-announcer").
      */
-    private static void announceStart(ClientWorkerCoordinator first) {
+    private static void announceStart(ClientWorkerCoordinator first, Consumer<String> lines) {
         Thread t = new Thread(() -> {
             try {
                 if (first.awaitStart(Long.MAX_VALUE, java.util.concurrent.TimeUnit.DAYS)) {
-                    System.out.println("running robots=" + first.summary().robots());
-                    System.out.flush();
+                    lines.accept("running robots=" + first.summary().robots());
                 }
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
@@ -325,12 +323,33 @@ public final class EnvironmentMain implements Callable<Integer> {
         return steps == 0 ? 1 : 0;
     }
 
-    public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new EnvironmentMain());
+    /** Where its lines go (listening, running, left, summary): stdout, or a runner in the same JVM. */
+    private Consumer<String> lines = line -> {
+        System.out.println(line);
+        System.out.flush();
+    };
+
+    /**
+     * Runs the Environment in this JVM with {@code args} as {@code environment.sh} takes them, handing each line
+     * it prints ({@code listening ...}, {@code running ...}, {@code left ...}, {@code summary ...}) to
+     * {@code lines} instead (any thread); errors still go to stderr. Returns its exit code.
+     */
+    public static int run(String[] args, Consumer<String> lines) {
+        EnvironmentMain m = new EnvironmentMain();
+        m.lines = lines;
+        return commandLine(m).execute(args);
+    }
+
+    private static CommandLine commandLine(EnvironmentMain m) {
+        CommandLine cl = new CommandLine(m);
         cl.setParameterExceptionHandler((ex, a) -> {
             System.err.println("environment: " + ex.getMessage() + " (see --help)");
             return 2;
         });
-        System.exit(cl.execute(args));
+        return cl;
+    }
+
+    public static void main(String[] args) {
+        System.exit(commandLine(new EnvironmentMain()).execute(args));
     }
 }

@@ -58,8 +58,9 @@ public final class HeadlessRunner implements Callable<Integer> {
     boolean noGeometry;
 
     @Option(names = "--one-jvm", description = "Run the Environment, collision and sonar and every robot (its Hardware "
-            + "Simulator and control code) in one JVM, through in-memory links: the same messages and results as "
-            + "separate processes, without their start-up, sockets and serialization (robots_in=one-jvm).")
+            + "Simulator and control code) in one JVM, this one, through in-memory links: the same messages and results "
+            + "as separate processes, without their start-up, sockets and serialization (robots_in=one-jvm). Its JVM "
+            + "options are this script's (ROBOSIM_JAVA_OPTS), not --jvm-opt or --*-jvm-opts.")
     boolean oneJvm;
 
     @Option(names = "--pose-log", paramLabel = "FILE.csv",
@@ -121,6 +122,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (steps <= 0) {
             return "headless: --steps must be > 0, got " + steps;
         }
+        if (oneJvm && !jvm.all.isEmpty()) {
+            return "headless: --one-jvm runs the Environment in this JVM: give its JVM options in ROBOSIM_JAVA_OPTS, "
+                    + "not --jvm-opt";
+        }
         if (oneJvm && (robotsInOneProcess || connection != null || exchange != null)) {
             return "headless: --one-jvm starts no robot process: --robots-in-one-process, --connection and --exchange "
                     + "do not apply";
@@ -161,20 +166,23 @@ public final class HeadlessRunner implements Callable<Integer> {
             // its robots are there at once: it holds before step 0 until the watch and viewers are connected
             environmentArgs.addAll(List.of("--one-jvm", "--start-paused"));
         }
-        Process environment = children.start("environment", jvm.environment(),
-                "robosim.environment.EnvironmentMain", environmentArgs, line -> {
-                    if (line.startsWith("listening ")) {
-                        listening.complete(fields(line));
-                    } else if (line.startsWith("running ")) {
-                        started.complete(null);
-                    } else if (line.startsWith("left ")) {
-                        removed.add(line.substring("left ".length()));
-                    } else if (line.startsWith("summary ")) {
-                        summary.complete(fields(line));
-                    } else {
-                        System.out.println(line);
-                    }
-                });
+        java.util.function.Consumer<String> lines = line -> {
+            if (line.startsWith("listening ")) {
+                listening.complete(fields(line));
+            } else if (line.startsWith("running ")) {
+                started.complete(null);
+            } else if (line.startsWith("left ")) {
+                removed.add(line.substring("left ".length()));
+            } else if (line.startsWith("summary ")) {
+                summary.complete(fields(line));
+            } else {
+                System.out.println(line);
+            }
+        };
+        // one JVM: the Environment (and with it every robot) runs in this one, so a run starts one JVM
+        Process environment = oneJvm ? InJvmEnvironment.start(environmentArgs, lines, jvm.profile)
+                : children.start("environment", jvm.environment(), "robosim.environment.EnvironmentMain",
+                        environmentArgs, lines);
         environment.onExit().thenRun(() -> listening.complete(Map.of()));
         Map<String, String> bound = listening.get(60, TimeUnit.SECONDS);
         if (bound.isEmpty()) {
@@ -202,6 +210,11 @@ public final class HeadlessRunner implements Callable<Integer> {
                     "robosim.geometry.GeometryMain", geometryArgs, null));
         }
         if (oneJvm) {
+            // the robots are here already: the run starts once the watch is one of its viewers (its snapshot came)
+            if (watch != null && !watch.awaitSnapshot(60)) {
+                System.err.println("headless: the Environment sent the pose log's viewer no snapshot within 60 s");
+                return 1;
+            }
             try (ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(bound.get("control")),
                     SimulationKeys.fromEnvironment(), 60_000)) {
                 com.fasterxml.jackson.databind.JsonNode answer = control.request("resume");

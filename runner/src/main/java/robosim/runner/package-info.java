@@ -6,6 +6,9 @@
  * or a client that ends before the start), one {@code pipe[NAME.out]} and one {@code pipe[NAME.err]}
  * per child (copy its output; the Environment's stdout lines are the runner's events), and
  * {@code stop-children} (the JVM's shutdown hook: on SIGTERM, SIGINT or SIGHUP it stops every child).
+ * With {@code --one-jvm} there is no child: {@code environment} ({@link robosim.runner.InJvmEnvironment}) runs
+ * the Environment in the runner's JVM, with its robots and all the Environment's own threads, and hands its
+ * lines to the runner as a child's pipe would.
  * The soak ({@code scripts/soak.sh}, {@link robosim.runner.Soak}) adds {@code soak-client-n}: its silent
  * robots, frozen and visiting viewers and fault injectors, each on a thread of its own (never the common
  * pool: they block).
