@@ -94,22 +94,6 @@ final class InMemoryRequests {
         return any;
     }
 
-    /**
-     * Loop thread, before it blocks on its inbox: while control threads of this JVM owe requests (they come
-     * within microseconds of the step going out), waits for them by spinning, up to {@code nanos}, rather than
-     * parking at once: a park and the wake that ends it cost more than the wait itself. Returns at once when
-     * nothing is owed or the count is held open.
-     */
-    void awaitBriefly(long nanos) {
-        if (holding || owed.get() == 0) {
-            return;
-        }
-        long until = System.nanoTime() + nanos;
-        while (owed.get() > 0 && System.nanoTime() - until < 0) {
-            Thread.onSpinWait();
-        }
-    }
-
     /** Loop thread: requests built at once wait to be applied, or the count is held open (settle soon). */
     boolean pending() {
         return holding || !ready.isEmpty();

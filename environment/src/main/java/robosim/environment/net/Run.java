@@ -158,11 +158,6 @@ final class Run {
         return inMemory.pending();
     }
 
-    /** Before the loop blocks: spins briefly while control threads of this JVM owe requests. */
-    void awaitInMemory(long nanos) {
-        inMemory.awaitBriefly(nanos);
-    }
-
     /** Where the requests of robots in the Environment's JVM come in. */
     InMemoryRequests inMemory() {
         return inMemory;

@@ -15,9 +15,6 @@ import org.slf4j.LoggerFactory;
 final class SimulationLoop implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(SimulationLoop.class);
 
-    /** How long the loop spins for requests owed by control threads of its own JVM before it blocks, ns. */
-    private static final long SPIN_NANOS = 50_000;
-
     private final ClientWorkerCoordinator coordinator;
     private final Inbox<Run> inbox;
     private final Run run;
@@ -49,7 +46,6 @@ final class SimulationLoop implements Runnable {
             run.publish();
             while (!run.ended()) {
                 long now = System.nanoTime();
-                run.awaitInMemory(SPIN_NANOS);
                 Inbox.Event<Run> e = inbox.poll(run.busy() ? 0 : Math.max(0, Math.min(nextTick, run.paceDue()) - now));
                 // everything queued by now is taken before any deadline is judged (a request or an answer
                 // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
