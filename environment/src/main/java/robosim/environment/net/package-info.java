@@ -44,8 +44,7 @@
  * of the JVM's common fork-join pool on the loop's behalf (its package-info says when); the loop waits for it
  * within the step. With {@code --one-jvm} the file's robots start no thread here: their control threads
  * ({@code control[name]}, the Hardware Simulator's) hand their requests to
- * {@link robosim.environment.net.InMemoryRequests}, and the last one owed wakes the loop; before blocking on
- * its inbox the loop spins up to 50 microseconds for them.
+ * {@link robosim.environment.net.InMemoryRequests}, and the last one owed wakes the loop.
  * A replay ({@code robosim.environment.replay}) has its own clock thread and uses this package's
  * {@link robosim.environment.net.Inbox}, {@link robosim.environment.net.Viewers} and
  * {@link robosim.environment.net.ConnectionWatch}.
