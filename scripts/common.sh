@@ -8,9 +8,12 @@ if [ "${BASH_SOURCE[0]}" = "$0" ]; then
     *) echo "common.sh: a library for the scripts in scripts/, not a command (given: $*; see --help)" >&2; exit 2 ;;
   esac
 fi
-ROBOSIM_HOME="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# (paths by bash's own expansions, not dirname and basename: every script pays for its start-up)
+case ${BASH_SOURCE[0]} in */*) ROBOSIM_HOME=${BASH_SOURCE[0]%/*}/.. ;; *) ROBOSIM_HOME=.. ;; esac
+ROBOSIM_HOME="$(cd "$ROBOSIM_HOME" && pwd)"
 ROBOSIM_LIB="$ROBOSIM_HOME/runner/target/lib"
-ROBOSIM_SCRIPT=$(basename "$0" .sh)
+ROBOSIM_SCRIPT=${0##*/}
+ROBOSIM_SCRIPT=${ROBOSIM_SCRIPT%.sh}
 ROBOSIM_CALLER_DIR=$PWD   # where the user started the script, before any cd
 
 # The JDK every script and process runs on: JAVA_HOME's when it is set, else the newest of `java` on the
@@ -19,26 +22,34 @@ ROBOSIM_CALLER_DIR=$PWD   # where the user started the script, before any cd
 # Which one, and why, goes to the processes as ROBOSIM_JAVA_CHOICE (the robot processes and headless
 # print it in their first lines; a script prints nothing of its own, so bad input stays one line).
 # io.netty.noUnsafe: netty (the control and web links) would warn about sun.misc.Unsafe on JDK 24+.
-robosim_java_version() { # JDK home -> its feature version (17, 21, 25), or 0
-  local v=""
-  [ -f "$1/release" ] && v=$(sed -n 's/^JAVA_VERSION="\([0-9]*\).*/\1/p' "$1/release")
+# JDK home $1 -> its feature version (17, 21, 25), or 0, in ROBOSIM_JAVA_VERSION. Read by bash itself,
+# like the paths below: every script pays this at its start, and a fork and exec costs milliseconds.
+robosim_java_version() {
+  local line v=""
+  if [ -f "$1/release" ]; then
+    while IFS= read -r line || [ -n "$line" ]; do
+      case $line in JAVA_VERSION=\"*) v=${line#JAVA_VERSION=\"} v=${v%%[!0-9]*}; break ;; esac
+    done <"$1/release"
+  fi
   [ -n "$v" ] || v=$("$1/bin/java" -version 2>&1 | sed -n '1s/.*version "\([0-9]*\).*/\1/p')
   [ "$v" = 1 ] && v=8
-  echo "${v:-0}"
+  ROBOSIM_JAVA_VERSION=${v:-0}
 }
 robosim_pick_java() {
   [ -n "${ROBOSIM_JAVA_CHOICE:-}" ] && return 0 # (chosen already: a script run by another)
-  local home="" best=0 why c h v
+  local home="" best=0 why c h
   if [ -n "${JAVA_HOME:-}" ] && [ -x "$JAVA_HOME/bin/java" ]; then
     [ -x "$JAVA_HOME/bin/javac" ] || robosim_fail "JAVA_HOME=$JAVA_HOME is a JRE (no bin/javac): RoboSim needs a JDK 17 or later"
     home=$JAVA_HOME why="JAVA_HOME"
   else
     for c in "$(command -v java 2>/dev/null)" /usr/lib/jvm/*/bin/java /Library/Java/JavaVirtualMachines/*/Contents/Home/bin/java; do
       [ -n "$c" ] && [ -x "$c" ] || continue
-      h=$(dirname "$(dirname "$(readlink -f "$c")")")
+      h=$c
+      [ -L "$c" ] && h=$(readlink -f "$c") # (java on the path: a link, e.g. to /etc/alternatives/java)
+      h=${h%/bin/java}
       [ -x "$h/bin/javac" ] || continue # (a JRE cannot build the project)
-      v=$(robosim_java_version "$h")
-      if [ "$v" -gt "$best" ]; then best=$v home=$h; fi
+      robosim_java_version "$h"
+      if [ "$ROBOSIM_JAVA_VERSION" -gt "$best" ]; then best=$ROBOSIM_JAVA_VERSION home=$h; fi
     done
     why="the newest JDK found"
   fi
