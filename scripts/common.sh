@@ -56,6 +56,27 @@ robosim_pick_java() {
   [ -n "$home" ] || robosim_fail "no JDK found (java with javac, on the path or under /usr/lib/jvm): install a JDK 17 or later, or set JAVA_HOME"
   export PATH="$home/bin:$PATH"
   export ROBOSIM_JAVA_CHOICE="$home ($why)"
+  robosim_cds_dir "$home"
+}
+
+# Class-data archives (runner/README.md, "How the scripts behave"): on JDK 19 and later each JVM a script
+# starts maps the classes an earlier run of the same main class, class path and options loaded, from a
+# dynamic CDS archive under runner/target/cds/ (per JDK) that such a run wrote at its exit. The directory
+# goes to the processes as ROBOSIM_CDS_DIR (the runner's children use it, ClassDataArchives); empty when
+# ROBOSIM_CDS=off, on JDK 17 (whose dynamic dump stops the JVM when the JDK's own archive is not mapped)
+# and on a JDK without a default CDS archive.
+robosim_cds_dir() {
+  local home=$1
+  ROBOSIM_CDS_DIR=""
+  if [ "${ROBOSIM_CDS:-on}" != off ] && [ -f "$home/lib/server/classes.jsa" ] && [ -f "$home/release" ]; then
+    robosim_java_version "$home"
+    if [ "$ROBOSIM_JAVA_VERSION" -ge 19 ]; then
+      # shellcheck disable=SC2046
+      set -- $(cksum <"$home/release")
+      ROBOSIM_CDS_DIR="$ROBOSIM_HOME/runner/target/cds/java-$ROBOSIM_JAVA_VERSION-$1"
+    fi
+  fi
+  export ROBOSIM_CDS_DIR
 }
 
 # Bad input: one line naming the script, exit 2.
@@ -178,7 +199,7 @@ robosim_classpath() {
 # --help it prints the main class's usage and the options this library takes, and builds nothing: the
 # jars there are (even if older than the sources), or, before the first build, this script's own header.
 robosim_java() {
-  local main=$1 a
+  local main=$1 a cp
   shift
   robosim_take_classpath "$@"
   robosim_check_java_opts
@@ -199,8 +220,89 @@ robosim_java() {
     esac
   done
   robosim_build_if_stale
+  cp=$(robosim_classpath)
+  robosim_cds_opts "$main" "$cp"
   # shellcheck disable=SC2086
-  exec java -Dio.netty.noUnsafe=true ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}"
+  exec java -Dio.netty.noUnsafe=true "${ROBOSIM_CDS_OPTS[@]}" ${ROBOSIM_JAVA_OPTS:-} -cp "$cp" "$main" "${ROBOSIM_ARGS[@]}"
+}
+
+# The class-data archive options of the JVM that runs main class $1 on class path $2 (into
+# ROBOSIM_CDS_OPTS; none when ROBOSIM_CDS_DIR is empty): it maps KEY.jsa, the archive of its main
+# class, class path and ROBOSIM_JAVA_OPTS (the key), when that is there and newer than every jar of the
+# class path; else, unless a live process is writing it, it writes it at its exit into KEY.PID.tmp, next
+# to an empty KEY.PID.start that dates its start, for a later start to put in place (robosim_cds_settle).
+# None for a class path with a directory (the JVM refuses to archive those, and says so on every run) or
+# with ROBOSIM_JAVA_OPTS of the user's own about class-data sharing. The JVM's cds log is off: it warns
+# about the classes it cannot archive. The same rules for the runner's children: ClassDataArchives.java.
+robosim_cds_opts() {
+  local main=$1 cp=$2 dir=${ROBOSIM_CDS_DIR:-} parts=() e key pid
+  ROBOSIM_CDS_OPTS=()
+  case $dir in ''|*:*) return 0 ;; esac
+  IFS=: read -ra parts <<<"${ROBOSIM_CLASSPATH:-}"
+  for e in "${parts[@]}"; do
+    [ -d "$e" ] && return 0
+  done
+  case ${ROBOSIM_JAVA_OPTS:-} in
+    *Xshare*|*SharedArchiveFile*|*ArchiveClassesAtExit*|*AOTCache*|*AOTMode*|*AOTConfiguration*) return 0 ;;
+  esac
+  [ -d "$dir" ] || mkdir -p "$dir" 2>/dev/null || return 0
+  # shellcheck disable=SC2046
+  set -- $(printf '%s\n' "$main" "$cp" "${ROBOSIM_JAVA_OPTS:-}" | cksum)
+  key="${main##*.}-$1"
+  robosim_cds_settle "$dir" "$cp" "$key"
+  if [ -f "$dir/$key.jsa" ] && [ -z "$(robosim_cds_changed_since "$dir/$key.jsa" "$cp")" ]; then
+    ROBOSIM_CDS_OPTS=("-XX:SharedArchiveFile=$dir/$key.jsa" '-Xlog:cds*=off')
+  elif [ "$ROBOSIM_CDS_BUSY" = 0 ]; then
+    pid=${BASHPID:-$$} # (the JVM's: exec keeps it)
+    if (: >"$dir/$key.$pid.start") 2>/dev/null; then
+      ROBOSIM_CDS_OPTS=("-XX:ArchiveClassesAtExit=$dir/$key.$pid.tmp" '-Xlog:cds*=off')
+    fi
+  fi
+}
+
+# The first entry of class path $2 (a jar, or for DIR/* the directory or a file in it) that is newer
+# than file $1, or nothing.
+robosim_cds_changed_since() {
+  local paths=() parts=() e
+  IFS=: read -ra parts <<<"$2"
+  for e in "${parts[@]}"; do
+    paths+=("${e%/\*}")
+  done
+  find "${paths[@]}" -maxdepth 1 -newer "$1" -print -quit 2>/dev/null
+}
+
+# Settles the archive writes of KEY $3 in directory $1 (of JVMs on class path $2) whose writer has
+# ended (the pid its ID starts with is gone, or the claim is over an hour old): KEY.ID.tmp becomes
+# KEY.jsa (a rename: a JVM never maps a file being written) when it is whole (the JVM writes an
+# archive's header, with its magic number, last) and no jar changed since KEY.ID.start; else it is
+# removed. Then archives older than the runner's jar (the last build) go, and any claim left over an
+# hour old. Sets ROBOSIM_CDS_BUSY to 1 when a live process is writing KEY's archive, else 0.
+robosim_cds_settle() {
+  local dir=$1 cp=$2 key=$3 start id pid settled=0
+  ROBOSIM_CDS_BUSY=0
+  for start in "$dir/$key".*.start; do
+    [ -f "$start" ] || continue
+    id=${start%.start}
+    id=${id##*.}
+    pid=${id%%-*}
+    if kill -0 "$pid" 2>/dev/null && [ -z "$(find "$start" -mmin +60 2>/dev/null)" ]; then
+      ROBOSIM_CDS_BUSY=1
+      continue
+    fi
+    if [ "$(od -An -tx4 -N4 "$dir/$key.$id.tmp" 2>/dev/null | tr -d ' ')" = f00baba8 ] \
+      && [ -z "$(robosim_cds_changed_since "$start" "$cp")" ]; then
+      mv -f "$dir/$key.$id.tmp" "$dir/$key.jsa" 2>/dev/null
+    else
+      rm -f "$dir/$key.$id.tmp"
+    fi
+    rm -f "$start"
+    settled=1
+  done
+  if [ "$settled" = 1 ]; then
+    find "$dir" -maxdepth 1 \( -name '*.jsa' ! -newer "$(robosim_runner_jar)" -o -name '*.tmp' -mmin +60 \
+      -o -name '*.start' -mmin +60 \) -exec rm -f {} + 2>/dev/null
+  fi
+  return 0
 }
 
 # For the screenshot scripts: makes sure Xvfb is there (installs Debian's xvfb when we are root).

@@ -27,12 +27,14 @@ final class ChildProcesses implements AutoCloseable {
         private static final int KEPT_LINES = 3;
         final String name;
         final Process process;
+        private final ClassDataArchives.Launch archive;
         private final java.util.ArrayDeque<String> lastErrorLines = new java.util.ArrayDeque<>();
         private final java.util.concurrent.CountDownLatch stderrClosed = new java.util.concurrent.CountDownLatch(1);
 
-        private Child(String name, Process process) {
+        private Child(String name, Process process, ClassDataArchives.Launch archive) {
             this.name = name;
             this.process = process;
+            this.archive = archive;
         }
 
         private synchronized void errorLine(String line) {
@@ -60,6 +62,7 @@ final class ChildProcesses implements AutoCloseable {
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final List<String> jvmOptions;
+    private final ClassDataArchives archives = ClassDataArchives.fromEnvironment();
     private final Thread onSignal = new Thread(this::close, "stop-children");
 
     ChildProcesses(List<String> jvmOptions) {
@@ -69,8 +72,9 @@ final class ChildProcesses implements AutoCloseable {
 
     /**
      * Starts {@code mainClass} with {@code args}, and JVM options for this child before the common ones
-     * (which may override them). Its stderr is copied to ours; its stdout lines go to
-     * {@code stdoutLines} (on a pipe thread), or to our stderr when null.
+     * (which may override them), after those of its class-data archive ({@link ClassDataArchives}). Its
+     * stderr is copied to ours; its stdout lines go to {@code stdoutLines} (on a pipe thread), or to our
+     * stderr when null.
      */
     Process start(String name, List<String> ownOptions, String mainClass, List<String> args,
             Consumer<String> stdoutLines) throws IOException {
@@ -80,16 +84,19 @@ final class ChildProcesses implements AutoCloseable {
     /** As above, returning the child with its last stderr line. */
     Child startChild(String name, List<String> ownOptions, String mainClass, List<String> args,
             Consumer<String> stdoutLines) throws IOException {
+        List<String> options = new ArrayList<>(ownOptions);
+        options.addAll(jvmOptions);
+        ClassDataArchives.Launch archive = archives.launch(mainClass, classPath, options);
         List<String> cmd = new ArrayList<>();
         cmd.add(java);
         cmd.add(NETTY_QUIET);
-        cmd.addAll(ownOptions);
-        cmd.addAll(jvmOptions);
+        cmd.addAll(archive.options());
+        cmd.addAll(options);
         cmd.add("-cp");
         cmd.add(classPath);
         cmd.add(mainClass);
         cmd.addAll(args);
-        Child child = new Child(name, new ProcessBuilder(cmd).start());
+        Child child = new Child(name, startOrFinish(cmd, archive), archive);
         started.add(child);
         pipe(name + ".out", child.process.getInputStream(), stdoutLines != null ? stdoutLines : System.err::println,
                 () -> { });
@@ -100,6 +107,16 @@ final class ChildProcesses implements AutoCloseable {
             }
         }, child.stderrClosed::countDown);
         return child;
+    }
+
+    /** Starts {@code cmd}; when it cannot start, its archive claim is dropped at once. */
+    private static Process startOrFinish(List<String> cmd, ClassDataArchives.Launch archive) throws IOException {
+        try {
+            return new ProcessBuilder(cmd).start();
+        } catch (IOException | RuntimeException e) {
+            archive.finish();
+            throw e;
+        }
     }
 
     /** Copies {@code stream}'s lines to {@code sink} on a thread of its own; {@code atEnd} runs at its end. */
@@ -154,7 +171,8 @@ final class ChildProcesses implements AutoCloseable {
 
     /**
      * Asks every child still running (and its children) to stop with SIGTERM, so the Environment can
-     * tell its clients; kills what is left after a grace period. Idempotent.
+     * tell its clients; kills what is left after a grace period; then puts in place the class-data
+     * archives the ended children wrote. Idempotent.
      */
     @Override
     public void close() {
@@ -170,6 +188,11 @@ final class ChildProcesses implements AutoCloseable {
                 h.onExit().get(Math.max(0, deadline - System.nanoTime()), TimeUnit.NANOSECONDS);
             } catch (Exception stillRunning) {
                 h.destroyForcibly();
+            }
+        }
+        for (Child c : started) {
+            if (!c.process.isAlive()) {
+                c.archive.finish();
             }
         }
         if (Thread.currentThread() != onSignal) {
