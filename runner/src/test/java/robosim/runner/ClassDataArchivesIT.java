@@ -34,9 +34,10 @@ class ClassDataArchivesIT {
         Path environmentClasses = tmp.resolve("environment-classes.log");
         // (these logging options are part of the archives' keys: this test's archives are its own)
         Map<String, String> env = Map.of("ROBOSIM_JAVA_OPTS", "-Xlog:class+load:file=" + runnerClasses);
-        String[] headless = {REPO.resolve("scripts/headless.sh").toString(), "--one-jvm",
-            "--env", REPO.resolve("test-envs/bench-10.xml").toString(), "--steps", "20",
-            "--jvm-opt", "-Xlog:class+load:file=" + environmentClasses};
+        // (robots in one process, geometry in the Environment: the runner's JVM and two children)
+        String[] headless = {REPO.resolve("scripts/headless.sh").toString(), "--robots-in-one-process",
+            "--no-geometry", "--env", REPO.resolve("test-envs/bench-10.xml").toString(), "--steps", "20",
+            "--environment-jvm-opts", "-XX:+UseSerialGC -Xlog:class+load:file=" + environmentClasses};
 
         ScriptRun first = ScriptRun.of(tmp, env, tmp, headless);
         assertEquals(0, first.exit(), "stderr: " + first.stderr());
