@@ -176,6 +176,9 @@ public final class EnvironmentMain implements Callable<Integer> {
             inMemory = ServiceLoader.load(InMemoryLink.Starter.class).findFirst().orElse(null);
             String problem = inMemory == null
                     ? "environment: --one-jvm needs the Hardware Simulator (robosim hardware-sim) on the class path"
+                    : design == CoordinatorDesign.SEQUENTIAL
+                    ? "environment: --one-jvm runs its robots in memory; --coordinator SEQUENTIAL reads a socket per robot "
+                            + "(use THREADS or TWO_THREADS, which serve robots that join over the robot port)"
                     : oneJvmProblem(spec);
             if (problem != null) {
                 System.err.println(problem);
@@ -246,7 +249,8 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: cannot listen on " + bind + ": " + e.getMessage());
             return 2;
         }
-        Runtime.getRuntime().addShutdownHook(new Thread(host::stopOnSignal, "shutdown"));
+        Thread shutdown = new Thread(host::stopOnSignal, "shutdown");
+        Runtime.getRuntime().addShutdownHook(shutdown);
         int[] ports = host.ports();
         lines.accept("listening robots=" + ports[0] + " viewers=" + ports[1] + " geometry=" + ports[2]
                 + " control=" + (control == null ? -1 : control.port()) + (web == null ? "" : " web=" + web.port())
@@ -267,8 +271,19 @@ public final class EnvironmentMain implements Callable<Integer> {
                 web.close();
             }
             host.stopLaunched();
+            if (inMemory != null) {
+                inMemory.awaitControlCode(CONTROL_GRACE_MS); // (their finally blocks, as a robot process's)
+            }
+            try {
+                Runtime.getRuntime().removeShutdownHook(shutdown); // (run in a runner's JVM: one hook per run)
+            } catch (IllegalStateException e) {
+                // the JVM is shutting down (the hook is what ended the run)
+            }
         }
     }
+
+    /** How long the control code of robots in this JVM gets to end after the run, ms (a robot process's grace). */
+    private static final long CONTROL_GRACE_MS = 2000;
 
     /** Why a robot of the file cannot run in this JVM (it has no control class this JVM finds), or null. */
     private String oneJvmProblem(WorldSpec spec) {

@@ -16,7 +16,10 @@ import robosim.protocol.StepResponse;
  * request for it is built by whichever of two threads finds the control code yielded first: the loop
  * thread, at once, when the control code is still blocked in a call that goes on (or has returned), or the
  * control thread itself as it makes its next call ({@link ControlLink#onYield}). The step due is taken
- * under a lock, so each step gets exactly one request; the lock is never held across a wait.
+ * under a lock, so each step gets exactly one request, and a response is applied under the same lock, so no
+ * request is built from a call the response has not yet moved on. Only a response completes a call (sets
+ * the control code running), so under the lock a yielded control code stays yielded: building a request
+ * there never waits.
  */
 final class InMemoryRobot implements InMemoryLink.Robot {
     private final HardwareSimulator sim;
@@ -56,10 +59,15 @@ final class InMemoryRobot implements InMemoryLink.Robot {
 
     @Override
     public StepRequest respond(StepResponse response, long next) {
-        if (next >= 0) {
-            owe(next); // (before the response: a call it completes may yield again at once)
+        // the step due and the response under one hold of the lock: a call the response completes may yield
+        // again at once, and its request is built only after the response is applied, by whichever thread
+        lock.lock();
+        try {
+            due = next >= 0 ? next : -1;
+            sim.apply(response);
+        } finally {
+            lock.unlock();
         }
-        sim.apply(response);
         return next >= 0 ? take() : null;
     }
 
@@ -67,6 +75,11 @@ final class InMemoryRobot implements InMemoryLink.Robot {
     public void end(SimulationEnd end) {
         owe(-1);
         sim.endedHere(end.reason());
+    }
+
+    /** After its end: waits up to {@code ms} for its control code to end. */
+    void awaitControlCode(long ms) throws InterruptedException {
+        sim.awaitControlCode(ms);
     }
 
     private void owe(long k) {
@@ -90,8 +103,8 @@ final class InMemoryRobot implements InMemoryLink.Robot {
     private StepRequest take() {
         lock.lock();
         try {
-            // only the loop thread sets the control code running again (completing its call), and the loop is
-            // not completing this robot's call while its step is due: the control code stays yielded here
+            // only a response sets the control code running again (completing its call), and responses are
+            // applied under this lock: the control code stays yielded here
             if (due < 0 || !sim.link().awaitControlFor(0)) {
                 return null;
             }

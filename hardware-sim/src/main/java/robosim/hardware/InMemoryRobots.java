@@ -1,5 +1,9 @@
 package robosim.hardware;
 
+import java.util.ArrayList;
+import java.util.Collections;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
 import robosim.api.RobotControl;
 import robosim.protocol.InMemoryLink;
 
@@ -7,23 +11,40 @@ import robosim.protocol.InMemoryLink;
  * The Hardware Simulator's robots for a one-JVM run, found by the Environment through
  * {@code META-INF/services/robosim.protocol.InMemoryLink$Starter}: each an {@link InMemoryRobot} with its
  * type and a new instance of its control class, found on this JVM's class path; or, for a caller that
- * holds the control object itself (the testkit), {@link #robot}.
+ * holds the control object itself (the testkit), that object.
  */
 public final class InMemoryRobots implements InMemoryLink.Starter {
+    /** Every robot this starter started, for the wait at the end. */
+    private final List<InMemoryRobot> started = Collections.synchronizedList(new ArrayList<>());
+
     @Override
     public InMemoryLink.Robot start(String name, String type, String controlClass,
             InMemoryLink.Environment environment) {
-        return robot(name, type, RobotLauncher.control(controlClass), environment);
+        return start(name, type, RobotLauncher.control(controlClass), environment);
+    }
+
+    @Override
+    public void awaitControlCode(long ms) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ms);
+        List<InMemoryRobot> all;
+        synchronized (started) {
+            all = new ArrayList<>(started);
+        }
+        for (InMemoryRobot r : all) {
+            r.awaitControlCode(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+        }
     }
 
     /**
      * A robot named {@code name} of {@code type} ({@code ArRobot}, {@code Scout} or a RobotType class) running
-     * {@code control}, whose requests go to {@code environment}.
+     * {@code control}, an object of the caller's (the testkit), whose requests go to {@code environment}.
      *
      * @throws IllegalArgumentException naming an unknown type
      */
-    public static InMemoryLink.Robot robot(String name, String type, RobotControl control,
+    public InMemoryLink.Robot start(String name, String type, RobotControl control,
             InMemoryLink.Environment environment) {
-        return new InMemoryRobot(new HardwareSimulator(name, RobotType.byName(type)), control, environment);
+        InMemoryRobot r = new InMemoryRobot(new HardwareSimulator(name, RobotType.byName(type)), control, environment);
+        started.add(r);
+        return r;
     }
 }

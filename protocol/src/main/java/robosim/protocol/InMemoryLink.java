@@ -54,5 +54,11 @@ public final class InMemoryLink {
          * @throws IllegalArgumentException naming what is wrong with the type or the control class
          */
         Robot start(String name, String type, String controlClass, Environment environment);
+
+        /**
+         * After the simulation is over: waits up to {@code ms} for the control code of every robot it started
+         * to end (its {@code finally} blocks, a last report), as a robot process does before it exits.
+         */
+        void awaitControlCode(long ms) throws InterruptedException;
     }
 }

@@ -163,7 +163,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         List<String> removed = new CopyOnWriteArrayList<>();
         List<String> environmentArgs = new ArrayList<>(environmentOptions.args(env, steps, noGeometry, resetArgs()));
         if (oneJvm) {
-            // its robots are there at once: it holds before step 0 until the watch and viewers are connected
+            // its robots are there at once: it holds before step 0 until the pose log's viewer has its snapshot
             environmentArgs.addAll(List.of("--one-jvm", "--start-paused"));
         }
         java.util.function.Consumer<String> lines = line -> {

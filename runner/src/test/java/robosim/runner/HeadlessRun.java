@@ -7,7 +7,8 @@ import java.util.List;
 import picocli.CommandLine;
 
 /**
- * One run of headless.sh in this JVM (its Environment, Geometry and robots are processes as ever): what it
+ * One run of headless.sh in this JVM (its Environment, Geometry and robots are processes, or with --one-jvm
+ * all in this JVM): what it
  * printed on stdout and stderr, caught while it ran, and what it returned. Test classes run one at a time in
  * a test JVM, so nothing else prints meanwhile.
  */

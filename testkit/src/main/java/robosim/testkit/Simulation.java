@@ -125,20 +125,29 @@ public final class Simulation implements AutoCloseable {
                 throw new IllegalArgumentException(e.getMessage(), e);
             }
             Map<String, WatchedRobot> watched = new LinkedHashMap<>();
-            InMemoryLink.Starter files = new InMemoryRobots();
+            InMemoryRobots robots = new InMemoryRobots();
             ClientWorkerCoordinator c = new ClientWorkerCoordinator(spec, settings);
             c.startPaused();
-            c.robotsInThisJvm((name, type, controlClass, environment) -> {
-                RobotControl given = controls.get(name);
-                InMemoryLink.Robot robot = given != null ? InMemoryRobots.robot(name, type, given, environment)
-                        : files.start(name, type, controlClass, environment);
-                WatchedRobot w = new WatchedRobot(robot, name);
-                watched.put(name, w);
-                return w;
+            c.robotsInThisJvm(new InMemoryLink.Starter() {
+                @Override
+                public InMemoryLink.Robot start(String name, String type, String controlClass,
+                        InMemoryLink.Environment environment) {
+                    RobotControl given = controls.get(name);
+                    WatchedRobot w = new WatchedRobot(given != null ? robots.start(name, type, given, environment)
+                            : robots.start(name, type, controlClass, environment), name);
+                    watched.put(name, w);
+                    return w;
+                }
+
+                @Override
+                public void awaitControlCode(long ms) throws InterruptedException {
+                    robots.awaitControlCode(ms);
+                }
             });
             Simulation sim = new Simulation(c, watched, Math.max(1, wait.toMillis()));
             try {
                 c.start();
+                c.startRobotsInThisJvm();
                 if (!c.awaitStart(sim.waitMs, TimeUnit.MILLISECONDS)) {
                     String why = c.status().reason();
                     c.close();
@@ -250,9 +259,17 @@ public final class Simulation implements AutoCloseable {
         return w;
     }
 
-    /** Ends the simulation: every control code is told (its blocked call throws), the ports close. */
+    /**
+     * Ends the simulation: every control code is told (its blocked call throws) and gets up to 2 s to end (its
+     * {@code finally} blocks), the ports close.
+     */
     @Override
     public void close() {
         coordinator.close();
+        try {
+            coordinator.awaitControlCode(2000);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 }

@@ -98,7 +98,7 @@ public final class EnvironmentCommands implements ControlCommands {
         }
         String control = w.length == 6 ? w[5] : "";
         ClientWorkerCoordinator current = host.current();
-        boolean here = !control.isEmpty() && current.robotsInThisJvm(); // (--one-jvm: it starts in this JVM)
+        boolean here = !control.isEmpty() && current.runsRobotsInThisJvm(); // (--one-jvm: it starts in this JVM)
         String cannot = here ? RobotLaunches.controlClassProblem(control, "this Environment runs with")
                 : control.isEmpty() || host.launches() == null ? null : host.launches().check(control);
         if (cannot != null) {
@@ -109,7 +109,7 @@ public final class EnvironmentCommands implements ControlCommands {
             return error("add " + ControlReplies.abbreviate(w[0]) + ": " + why);
         }
         if (here) {
-            String failed = current.helloInMemory(w[0], w[1], control);
+            String failed = current.roster().startHere(w[0], w[1], control);
             if (failed != null) {
                 current.roster().remove(w[0]); // (not let in: nothing will say hello as it)
                 return error("add " + w[0] + ": it could not start in this JVM: " + failed);

@@ -83,8 +83,20 @@ public final class EnvironmentHost {
     }
 
     /** Binds the ports and opens the first simulation; a port in use is a BindException naming it. */
-    public synchronized void open() throws IOException {
-        current = newSession(spec, startPaused);
+    public void open() throws IOException {
+        ClientWorkerCoordinator c;
+        synchronized (this) {
+            current = newSession(spec, startPaused);
+            c = current;
+        }
+        startRobots(c);
+    }
+
+    /** Without the lock (control classes' constructors run): a one-JVM simulation's robots start. */
+    private void startRobots(ClientWorkerCoordinator c) {
+        if (c.runsRobotsInThisJvm()) {
+            c.startRobotsInThisJvm();
+        }
     }
 
     /**
@@ -214,8 +226,10 @@ public final class EnvironmentHost {
             }
             current = newSession(spec, false);
             notifyAll();
-            return "started a new simulation of " + file;
+            c = current;
         }
+        startRobots(c);
+        return "started a new simulation of " + file;
     }
 
     /**
@@ -237,6 +251,7 @@ public final class EnvironmentHost {
     public String load(Path newFile) throws IOException, EnvironmentFileException {
         WorldSpec loaded = new EnvironmentLoader().load(newFile);
         ClientWorkerCoordinator old;
+        ClientWorkerCoordinator next;
         synchronized (this) {
             if (shutdown) {
                 return "the Environment is shutting down";
@@ -251,6 +266,7 @@ public final class EnvironmentHost {
                 file = newFile;
                 spec = loaded;
                 current = newSession(loaded, false);
+                next = current;
             }
         } finally {
             synchronized (this) {
@@ -258,6 +274,7 @@ public final class EnvironmentHost {
                 notifyAll();
             }
         }
+        startRobots(next);
         LOG.info("loaded {}: waiting for its {} robot(s)", newFile, loaded.robots().size());
         return "loaded " + newFile + "; waiting for " + loaded.robots().size() + " robot(s)";
     }

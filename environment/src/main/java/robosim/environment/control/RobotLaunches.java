@@ -39,9 +39,6 @@ public final class RobotLaunches implements AutoCloseable {
      */
     public synchronized String check(String control) {
         running.removeIf(p -> !p.isAlive());
-        if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
-            return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
-        }
         String missing = controlClassProblem(control, "its robot process would run with");
         if (missing != null) {
             return missing;
@@ -54,6 +51,9 @@ public final class RobotLaunches implements AutoCloseable {
      * class path that is ("its robot process would run with"). The class is looked up, never initialised.
      */
     public static String controlClassProblem(String control, String whose) {
+        if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
+            return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
+        }
         ClassLoader loader = RobotLaunches.class.getClassLoader();
         Class<?> c;
         try {

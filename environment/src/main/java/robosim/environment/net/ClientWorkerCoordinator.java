@@ -86,7 +86,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     /**
      * Runs every robot the file names in this JVM, started by {@code starter} with its type and control class,
      * through an in-memory link ({@link InMemoryLink}): no socket and no serialization between them and the
-     * loop. Robots that join later still connect. Call before {@link #start}.
+     * loop. Robots that join later still connect. Call before {@link #start}; the robots start with
+     * {@link #startRobotsInThisJvm}, after it.
      */
     public void robotsInThisJvm(InMemoryLink.Starter starter) {
         if (loop != null) {
@@ -100,17 +101,27 @@ public final class ClientWorkerCoordinator implements Closeable {
         acceptors.bind();
         startLoop();
         acceptors.accept();
-        if (inMemory != null) {
-            startInMemory();
-        }
         LOG.info("waiting for {} robot(s){}", robotNames.size(),
                 settings.inProcessGeometry() ? "" : " and a Geometry process");
     }
 
-    /** Says every file robot's hello through its in-memory link; one that cannot start ends the run, saying why. */
-    private void startInMemory() {
+    /**
+     * After {@link #start}, with no lock held (each control class's constructor runs here): starts every robot of
+     * the file in this JVM and says its hello; one that cannot start ends the run, saying why.
+     */
+    public void startRobotsInThisJvm() {
         for (WorldSpec.RobotSpec r : spec.robots()) {
-            String refusal = helloInMemory(r.name(), r.type(), r.control());
+            String refusal;
+            try {
+                helloInMemory(r.name(), r.type(), r.control()).thenAccept(why -> {
+                    if (why != null && !LoopEvent.OVER.equals(why)) {
+                        LOG.error("robot {} (in this JVM) was refused: {}", r.name(), Printable.of(why));
+                    }
+                });
+                refusal = null;
+            } catch (IllegalArgumentException e) {
+                refusal = e.getMessage();
+            }
             if (refusal != null) {
                 stop("robot " + r.name() + " could not start in this JVM: " + refusal);
                 return;
@@ -120,39 +131,36 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /**
      * Starts robot {@code name} in this JVM ({@link #robotsInThisJvm}) and says its hello: a robot of the file, or
-     * one the control port has added. Null once its hello is posted (the loop answers it), else why it cannot
-     * start (its type or control class, or the hello's check).
+     * one the control port has added. Returns the loop's verdict (null: welcomed, else why not).
+     *
+     * @throws IllegalArgumentException why it cannot start (its type, its control class, the hello's check)
      */
-    public String helloInMemory(String name, String type, String control) {
+    public CompletableFuture<String> helloInMemory(String name, String type, String control) {
         if (inMemory == null) {
-            return "this Environment runs no robots in its JVM";
+            throw new IllegalArgumentException("this Environment runs no robots in its JVM");
         }
         InMemoryPeer peer = new InMemoryPeer(run.inMemory(), name);
-        RobotHello hello;
-        String refusal;
-        try {
-            peer.attach(inMemory.start(name, type, control, peer));
-            hello = peer.hello();
-            refusal = admission.check(hello, spec.indexOf(name));
-        } catch (IllegalArgumentException e) {
-            return e.getMessage();
-        }
+        peer.attach(inMemory.start(name, type, control, peer));
+        RobotHello hello = peer.hello();
+        String refusal = admission.check(hello, spec.indexOf(name));
         if (refusal != null) {
-            return refusal;
+            throw new IllegalArgumentException(refusal);
         }
         CompletableFuture<String> verdict = new CompletableFuture<>();
         post(new LoopEvent.RobotJoins(peer, hello, spec.indexOf(name), verdict));
-        verdict.thenAccept(why -> {
-            if (why != null && !LoopEvent.OVER.equals(why)) {
-                LOG.error("robot {} (in this JVM) was refused: {}", name, why);
-            }
-        });
-        return null;
+        return verdict;
     }
 
     /** True if this simulation runs its robots in this JVM ({@link #robotsInThisJvm}). */
-    public boolean robotsInThisJvm() {
+    public boolean runsRobotsInThisJvm() {
         return inMemory != null;
+    }
+
+    /** After the end: waits up to {@code ms} for the control code of the robots it ran in this JVM to end. */
+    public void awaitControlCode(long ms) throws InterruptedException {
+        if (inMemory != null) {
+            inMemory.awaitControlCode(ms);
+        }
     }
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */

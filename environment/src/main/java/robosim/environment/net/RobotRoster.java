@@ -47,6 +47,18 @@ public final class RobotRoster {
     }
 
     /**
+     * A one-JVM run: starts robot {@code name} (just added) in this JVM with its control class and waits for the
+     * loop to welcome it. Returns null, or why it did not start or was refused.
+     */
+    public String startHere(String name, String type, String control) throws InterruptedException {
+        try {
+            return answer(coordinator.helloInMemory(name, type, control));
+        } catch (IllegalArgumentException e) {
+            return e.getMessage();
+        }
+    }
+
+    /**
      * Removes robot {@code name} from the run for good, whatever {@code --on-robot-loss} says: it is told the
      * simulation is over for it, and stands no more in the world from the end of the step in progress; a robot
      * added and not joined yet is no longer let in. Returns null, or why not (no such robot, already gone).
