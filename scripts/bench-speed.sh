@@ -21,22 +21,10 @@
 # between its speed-table marks (the doc's one current table). --quick: one repetition with a fifth of the steps.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-peers="" rest=()
-while [ $# -gt 0 ]; do
-  case $1 in
-    --peers) [ $# -ge 2 ] || robosim_fail "--peers needs the peers' PREFIX (see --help)"; peers=$2; shift 2 ;;
-    --peers=*) peers=${1#--peers=}; shift ;;
-    *) rest+=("$1"); shift ;;
-  esac
-done
-robosim_bench_args 2 docs/perf "${rest[@]}"
-peer_script=${PEERS_SCRIPT:-$ROBOSIM_HOME/../shared/peers/side-by-side.sh}
-if [ -n "$peers" ]; then
-  peers=$(robosim_abs "$peers")
-  [ -x "$peers/argos3/bin/argos3" ] && [ -x "$peers/stage/bin/stage" ] \
-    || robosim_fail "--peers $peers: no argos3/bin/argos3 and stage/bin/stage there (build them with the peers' build-peers.sh)"
-  [ -f "$peer_script" ] || robosim_fail "no side-by-side script at $peer_script (set PEERS_SCRIPT)"
-fi
+robosim_peer_bench_args 2 "$@"
+peers=$BENCH_PEERS peer_script=$BENCH_PEER_SCRIPT
+[ -z "$peers" ] || [ -x "$peers/stage/bin/stage" ] \
+  || robosim_fail "--peers $peers: no stage/bin/stage there (build the peers with their build-peers.sh)"
 reps=$BENCH_REPS quick=$BENCH_QUICK
 dir=$(robosim_out_dir)
 robosim_build_if_stale

@@ -10,23 +10,9 @@
 # Prints every time, then the medians and the one-JVM run's ratio to ARGoS; writes no file.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
-peers="" rest=()
-while [ $# -gt 0 ]; do
-  case $1 in
-    --peers) [ $# -ge 2 ] || robosim_fail "--peers needs the peers' PREFIX (see --help)"; peers=$2; shift 2 ;;
-    --peers=*) peers=${1#--peers=}; shift ;;
-    *) rest+=("$1"); shift ;;
-  esac
-done
-robosim_bench_args 5 docs/perf "${rest[@]}"
+robosim_peer_bench_args 5 "$@"
 [ "$ROBOSIM_WRITE_DOCS" = 1 ] && robosim_fail "writes no file: no --write-docs"
-reps=$BENCH_REPS
-peer_script=${PEERS_SCRIPT:-$ROBOSIM_HOME/../shared/peers/side-by-side.sh}
-if [ -n "$peers" ]; then
-  peers=$(robosim_abs "$peers")
-  [ -x "$peers/argos3/bin/argos3" ] || robosim_fail "--peers $peers: no argos3/bin/argos3 there (build it with the peers' build-peers.sh)"
-  [ -f "$peer_script" ] || robosim_fail "no side-by-side script at $peer_script (set PEERS_SCRIPT)"
-fi
+reps=$BENCH_REPS peers=$BENCH_PEERS peer_script=$BENCH_PEER_SCRIPT
 robosim_build_if_stale
 echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE)"
 seconds() { # a command's whole wall time, s

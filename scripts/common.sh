@@ -390,6 +390,30 @@ robosim_bench_args() {
   cd "$ROBOSIM_HOME"
 }
 
+# robosim_bench_args with one more option, --peers PREFIX: the peer simulators built there by the peers'
+# build-peers.sh (ARGoS 3 at least), run through their side-by-side.sh (../shared/peers/, or PEERS_SCRIPT).
+# Sets BENCH_PEERS (absolute; empty without --peers) and BENCH_PEER_SCRIPT.
+robosim_peer_bench_args() {
+  local default=$1 rest=()
+  shift
+  BENCH_PEERS=""
+  while [ $# -gt 0 ]; do
+    case $1 in
+      --peers) [ $# -ge 2 ] || robosim_fail "--peers needs the peers' PREFIX (see --help)"; BENCH_PEERS=$2; shift 2 ;;
+      --peers=*) BENCH_PEERS=${1#--peers=}; shift ;;
+      *) rest+=("$1"); shift ;;
+    esac
+  done
+  robosim_bench_args "$default" docs/perf "${rest[@]}"
+  BENCH_PEER_SCRIPT=${PEERS_SCRIPT:-$ROBOSIM_HOME/../shared/peers/side-by-side.sh}
+  if [ -n "$BENCH_PEERS" ]; then
+    BENCH_PEERS=$(robosim_abs "$BENCH_PEERS")
+    [ -x "$BENCH_PEERS/argos3/bin/argos3" ] \
+      || robosim_fail "--peers $BENCH_PEERS: no argos3/bin/argos3 there (build the peers with their build-peers.sh)"
+    [ -f "$BENCH_PEER_SCRIPT" ] || robosim_fail "no side-by-side script at $BENCH_PEER_SCRIPT (set PEERS_SCRIPT)"
+  fi
+}
+
 # Where a benchmark or screenshot script writes (after robosim_script_args): the docs/ directory with
 # --write-docs, DIR with --out DIR (relative to where the user started the script), else a fresh
 # temporary directory. Makes it, says where on stderr, and prints it.
