@@ -208,7 +208,9 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
     record AddRobot(JoinRule rule, CompletableFuture<String> verdict) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            verdict.complete(run.add(rule));
+            String why = run.add(rule);
+            run.publish(); // (a status asked once it is answered lists it)
+            verdict.complete(why);
         }
 
         @Override
@@ -221,7 +223,9 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
     record RemoveRobot(String name, CompletableFuture<String> verdict) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            verdict.complete(run.remove(name));
+            String why = run.remove(name);
+            run.publish(); // (a status asked once it is answered shows it)
+            verdict.complete(why);
         }
 
         @Override

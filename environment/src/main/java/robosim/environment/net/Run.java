@@ -1042,7 +1042,15 @@ final class Run {
             }
         }
         record.roster = List.copyOf(members);
-        record.states = roster.states();
+        List<RobotState> states = roster.states();
+        if (!added.isEmpty()) { // (robots the control port added that have not said hello yet, by name)
+            states = new ArrayList<>(states);
+            for (String name : new java.util.TreeSet<>(added.keySet())) {
+                states.add(new RobotState(name, "added", -1));
+            }
+            states = List.copyOf(states);
+        }
+        record.states = states;
     }
 
     // ---- the end -------------------------------------------------------------------------------------------

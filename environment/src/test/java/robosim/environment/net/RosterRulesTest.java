@@ -187,7 +187,13 @@ class RosterRulesTest {
         assertEquals(1, coordinator.step(1, LONG_S, TimeUnit.SECONDS));
         RobotRoster roster = coordinator.roster();
         assertTrue(roster.add("f", "ArRobot", 2, 2, 0, "").startsWith("(2.0, 2.0) m is taken"));
+        int before = coordinator.status().states().size();
         assertNull(roster.add("e", "ArRobot", 10, 10, 90, ""));
+        assertNull(roster.add("d", "ArRobot", 14, 14, 0, ""));
+        assertEquals(List.of(new RobotState("d", "added", -1), new RobotState("e", "added", -1)),
+                coordinator.status().states().subList(before, before + 2), "listed until they say hello, by name");
+        assertNull(roster.remove("d"));
+        assertEquals(before + 1, coordinator.status().states().size(), "d is no longer let in, nor listed");
         assertEquals("a robot named e is added already", roster.add("e", "ArRobot", 12, 12, 0, ""));
         Bot e = new Bot(coordinator, "e", NEVER);
         assertNull(e.hello(-1).get(LONG_S, TimeUnit.SECONDS));
