@@ -56,12 +56,12 @@ final class StatusText {
         return b.length() == 0 ? "-" : b.toString();
     }
 
-    /** The robots a remove may name: those in the run now (running, held, waiting or returning). */
+    /** The robots a remove may name: those in the run now (running, held, waiting or returning) and those added not yet there. */
     static List<String> removable(JsonNode status) {
         List<String> names = new ArrayList<>();
         for (JsonNode r : status.path("robot_states")) {
             String state = r.path("state").asText();
-            if (List.of("running", "held", "waiting", "returning").contains(state)) {
+            if (List.of("running", "held", "waiting", "returning", "added").contains(state)) {
                 names.add(clean(r.path("name").asText()));
             }
         }

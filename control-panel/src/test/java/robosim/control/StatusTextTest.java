@@ -38,10 +38,10 @@ class StatusTextTest {
         JsonNode s = status("{'file':'ring.xml','robots':['a','b','c','d'],'connected':['a'],'left':['b','c'],"
                 + "'geometry':'in-process','robot_states':[{'name':'a','state':'running'},"
                 + "{'name':'b','state':'held','since':1001},{'name':'c','state':'gone','since':40},"
-                + "{'name':'d\\u0007','state':'returning','since':7}]}");
-        assertEquals("file:      ring.xml\nrobots:    a, b held since 1001, c gone since 40, d? returning since 7\n"
+                + "{'name':'d\\u0007','state':'returning','since':7},{'name':'e','state':'added'}]}");
+        assertEquals("file:      ring.xml\nrobots:    a, b held since 1001, c gone since 40, d? returning since 7, e added\n"
                 + "connected: a\nleft:      b, c\ngeometry:  in-process", StatusText.details(s));
-        assertEquals(java.util.List.of("a", "b", "d?"), StatusText.removable(s));
+        assertEquals(java.util.List.of("a", "b", "d?", "e"), StatusText.removable(s));
     }
 
     @Test
