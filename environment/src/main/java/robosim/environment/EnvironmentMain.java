@@ -5,6 +5,7 @@ import java.net.BindException;
 import java.net.InetAddress;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.ServiceLoader;
 import java.util.function.Consumer;
 import java.util.concurrent.Callable;
@@ -256,13 +257,23 @@ public final class EnvironmentMain implements Callable<Integer> {
                 + " control=" + (control == null ? -1 : control.port()) + (web == null ? "" : " web=" + web.port())
                 + " tls=" + (keys != null && keys.tls() != null ? "on" : "off"));
         announceStart(host.current(), lines);
+        int code;
         try {
-            return host.run(s -> {
+            code = host.run(s -> {
                 for (Departure d : s.departures()) {
                     lines.accept("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
                 }
                 lines.accept(s.line());
             });
+            if (inMemory != null) { // (their finally blocks, as a robot process's; then what failed)
+                List<String> failed = inMemory.awaitControlCode(CONTROL_GRACE_MS);
+                for (String f : failed) {
+                    lines.accept("control-failed " + f);
+                }
+                if (!failed.isEmpty() && code == 0) {
+                    code = EnvironmentHost.EXIT_CONTROL_FAILED;
+                }
+            }
         } finally {
             if (control != null) {
                 control.close();
@@ -271,15 +282,13 @@ public final class EnvironmentMain implements Callable<Integer> {
                 web.close();
             }
             host.stopLaunched();
-            if (inMemory != null) {
-                inMemory.awaitControlCode(CONTROL_GRACE_MS); // (their finally blocks, as a robot process's)
-            }
             try {
                 Runtime.getRuntime().removeShutdownHook(shutdown); // (run in a runner's JVM: one hook per run)
             } catch (IllegalStateException e) {
                 // the JVM is shutting down (the hook is what ended the run)
             }
         }
+        return code;
     }
 
     /** How long the control code of robots in this JVM gets to end after the run, ms (a robot process's grace). */

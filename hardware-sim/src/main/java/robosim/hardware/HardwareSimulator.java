@@ -39,6 +39,7 @@ public final class HardwareSimulator {
     private RobotWelcome welcome;
     private long steps;
     private String endReason = "";
+    private volatile String controlFailure;
 
     public HardwareSimulator(String name, RobotType type) {
         this.name = name;
@@ -271,6 +272,7 @@ public final class HardwareSimulator {
         } catch (InterruptedException e) {
             LOG.debug("{}: control code stopped", name);
         } catch (Exception | Error e) {
+            controlFailure = e.getClass().getName() + (e.getMessage() == null ? "" : ": " + e.getMessage());
             LOG.error("{}: control code failed; the robot stands still", name, e);
         } finally {
             link.controlFinished();
@@ -280,6 +282,17 @@ public final class HardwareSimulator {
     ControlLink link() {
         return link;
     }
+
+    /** What its control code threw out of {@code run} (its class and message), or null if it did not. */
+    public String controlFailure() {
+        return controlFailure;
+    }
+
+    /**
+     * The exit code of a robot process (and of {@code headless.sh}, {@code environment.sh --one-jvm}) whose run
+     * went on but some robot's control code threw out of {@code run}.
+     */
+    public static final int EXIT_CONTROL_FAILED = 4;
 
     /** True if the Environment has sent something this robot has not read yet. */
     boolean hasInput() {

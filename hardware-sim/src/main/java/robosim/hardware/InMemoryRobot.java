@@ -77,9 +77,11 @@ final class InMemoryRobot implements InMemoryLink.Robot {
         sim.endedHere(end.reason());
     }
 
-    /** After its end: waits up to {@code ms} for its control code to end. */
-    void awaitControlCode(long ms) throws InterruptedException {
+    /** After its end: waits up to {@code ms} for its control code to end; {@code NAME: what it threw}, or null. */
+    String awaitControlCode(long ms) throws InterruptedException {
         sim.awaitControlCode(ms);
+        String failure = sim.controlFailure();
+        return failure == null ? null : sim.name() + ": " + failure;
     }
 
     private void owe(long k) {

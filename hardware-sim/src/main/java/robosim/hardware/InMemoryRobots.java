@@ -24,15 +24,20 @@ public final class InMemoryRobots implements InMemoryLink.Starter {
     }
 
     @Override
-    public void awaitControlCode(long ms) throws InterruptedException {
+    public List<String> awaitControlCode(long ms) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ms);
         List<InMemoryRobot> all;
         synchronized (started) {
             all = new ArrayList<>(started);
         }
+        List<String> failed = new ArrayList<>();
         for (InMemoryRobot r : all) {
-            r.awaitControlCode(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+            String why = r.awaitControlCode(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+            if (why != null) {
+                failed.add(why);
+            }
         }
+        return failed;
     }
 
     /**

@@ -99,12 +99,15 @@ public final class MultiRobotMain implements Callable<Integer> {
         HardwareSimulator.Exchange each = exchange == Threading.SEND_RECEIVE
                 ? HardwareSimulator.Exchange.SEND_RECEIVE : HardwareSimulator.Exchange.ONE_THREAD;
         AtomicInteger failures = new AtomicInteger();
+        List<HardwareSimulator> ran = java.util.Collections.synchronizedList(new ArrayList<>());
         List<Thread> threads = new ArrayList<>();
         for (String[] p : parsed) {
             Thread t = new Thread(() -> {
                 try {
                     RobotControl control = RobotLauncher.control(p[2]);
-                    RobotLauncher.run(p[0], RobotType.byName(p[1]), control, host, port, connect, each);
+                    HardwareSimulator sim = RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect);
+                    ran.add(sim);
+                    sim.run(control, each);
                 } catch (Exception e) {
                     failures.incrementAndGet();
                     LOG.error("robot {}: {}", p[0], e.getMessage());
@@ -116,7 +119,21 @@ public final class MultiRobotMain implements Callable<Integer> {
         for (Thread t : threads) {
             t.join();
         }
-        return failures.get() == 0 ? 0 : 1;
+        return failures.get() > 0 ? 1 : controlFailures(ran);
+    }
+
+    /** 0, or {@link HardwareSimulator#EXIT_CONTROL_FAILED} naming each robot whose control code failed. */
+    private static int controlFailures(List<HardwareSimulator> sims) {
+        int code = 0;
+        synchronized (sims) {
+            for (HardwareSimulator sim : sims) {
+                if (sim.controlFailure() != null) {
+                    System.err.println("robot " + sim.name() + ": its control code failed: " + sim.controlFailure());
+                    code = HardwareSimulator.EXIT_CONTROL_FAILED;
+                }
+            }
+        }
+        return code;
     }
 
     /**
@@ -141,7 +158,7 @@ public final class MultiRobotMain implements Callable<Integer> {
             } else {
                 ManyRobots.runShared(sims, controls);
             }
-            return 0;
+            return controlFailures(sims);
         } catch (java.io.IOException e) {
             LOG.error("robots: {}", e.getMessage());
             return 1;

@@ -26,12 +26,6 @@ final class RobotLauncher {
         }
     }
 
-    /** Connects and runs; returns the Environment's reason for the end. */
-    static String run(String name, RobotType type, RobotControl control, String host, int port, ConnectOptions options,
-            HardwareSimulator.Exchange exchange) throws IOException, InterruptedException {
-        return connect(name, type, host, port, options).run(control, exchange);
-    }
-
     /**
      * Connects and says hello; the simulator returned is ready to run. A failure to connect is an
      * IOException whose message is one line naming the host and port.

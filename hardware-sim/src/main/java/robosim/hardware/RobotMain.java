@@ -63,8 +63,13 @@ public final class RobotMain implements Callable<Integer> {
         }
         LOG.info("robot {}: {}", name, ControlThreads.describe());
         try {
-            String reason = RobotLauncher.run(name, robotType, control, host, port, connect, exchange);
+            HardwareSimulator sim = RobotLauncher.connect(name, robotType, host, port, connect);
+            String reason = sim.run(control, exchange);
             LOG.info("robot {}: simulation over: {}", name, reason);
+            if (sim.controlFailure() != null) {
+                System.err.println("robot " + name + ": its control code failed: " + sim.controlFailure());
+                return HardwareSimulator.EXIT_CONTROL_FAILED;
+            }
             return 0;
         } catch (UnknownHostException e) {
             System.err.println("robot " + name + ": " + e.getMessage());

@@ -57,8 +57,9 @@ public final class InMemoryLink {
 
         /**
          * After the simulation is over: waits up to {@code ms} for the control code of every robot it started
-         * to end (its {@code finally} blocks, a last report), as a robot process does before it exits.
+         * to end (its {@code finally} blocks, a last report), as a robot process does before it exits; returns,
+         * for each robot whose control code threw out of {@code run}, {@code NAME: what it threw}.
          */
-        void awaitControlCode(long ms) throws InterruptedException;
+        java.util.List<String> awaitControlCode(long ms) throws InterruptedException;
     }
 }

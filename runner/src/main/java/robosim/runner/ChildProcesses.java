@@ -160,6 +160,28 @@ final class ChildProcesses implements AutoCloseable {
         return bad;
     }
 
+    /**
+     * After {@link #awaitAll}: what the robot processes that ended with {@link #EXIT_CONTROL_FAILED} said of it, one
+     * {@code robot NAME: its control code failed: ...} line each (a process of several robots names at most its
+     * last three).
+     */
+    List<String> controlFailures() throws InterruptedException {
+        List<String> lines = new ArrayList<>();
+        for (Child c : started) {
+            if (!c.process.isAlive() && c.process.exitValue() == EXIT_CONTROL_FAILED) {
+                for (String l : c.lastErrorLines(5_000).split(" \\| ")) {
+                    if (l.contains("its control code failed")) {
+                        lines.add(l);
+                    }
+                }
+            }
+        }
+        return lines;
+    }
+
+    /** A robot process's exit code when its run went on but a robot's control code threw out of {@code run}. */
+    static final int EXIT_CONTROL_FAILED = robosim.hardware.HardwareSimulator.EXIT_CONTROL_FAILED;
+
     /** Kills the child started under {@code name} at once (for fault injection). */
     void kill(String name) {
         for (Child c : started) {

@@ -34,6 +34,8 @@ import robosim.environment.core.WorldSpec;
 public final class HeadlessRunner implements Callable<Integer> {
     /** The exit code of a run that completed without some of its robots (each is named before the summary). */
     static final int EXIT_ROBOTS_REMOVED = robosim.environment.control.EnvironmentHost.EXIT_ROBOTS_REMOVED;
+    /** The exit code of a run in which a robot's control code threw out of {@code run} (each is named before the summary). */
+    static final int EXIT_CONTROL_FAILED = robosim.environment.control.EnvironmentHost.EXIT_CONTROL_FAILED;
 
     @Option(names = "--env", required = true, paramLabel = "FILE", description = "The environment file.")
     Path env;
@@ -161,6 +163,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         CompletableFuture<Map<String, String>> summary = new CompletableFuture<>();
         CompletableFuture<Void> started = new CompletableFuture<>();
         List<String> removed = new CopyOnWriteArrayList<>();
+        List<String> controlFailed = new CopyOnWriteArrayList<>(); // (one JVM: the Environment's lines)
         List<String> environmentArgs = new ArrayList<>(environmentOptions.args(env, steps, noGeometry, resetArgs()));
         if (oneJvm) {
             // its robots are there at once: it holds before step 0 until the pose log's viewer has its snapshot
@@ -173,6 +176,11 @@ public final class HeadlessRunner implements Callable<Integer> {
                 started.complete(null);
             } else if (line.startsWith("left ")) {
                 removed.add(line.substring("left ".length()));
+            } else if (line.startsWith("control-failed ")) { // (NAME: what it threw)
+                String f = line.substring("control-failed ".length());
+                int colon = Math.max(0, f.indexOf(": "));
+                controlFailed.add("robot " + f.substring(0, colon) + ": its control code failed"
+                        + f.substring(colon));
             } else if (line.startsWith("summary ")) {
                 summary.complete(fields(line));
             } else {
@@ -254,7 +262,9 @@ public final class HeadlessRunner implements Callable<Integer> {
             watch.close();
         }
         extras.close();
-        List<String> failed = children.awaitAll(30);
+        List<String> failed = new ArrayList<>(children.awaitAll(30));
+        failed.removeIf(f -> f.endsWith("(exit " + ChildProcesses.EXIT_CONTROL_FAILED + ")"));
+        controlFailed.addAll(children.controlFailures());
         if (!failed.isEmpty()) {
             System.err.println("headless: processes that did not end cleanly: " + failed);
             code = code == 0 ? 1 : code;
@@ -262,14 +272,21 @@ public final class HeadlessRunner implements Callable<Integer> {
         for (String r : removed) {
             System.out.println("removed " + r);
         }
+        for (String f : controlFailed) {
+            System.out.println(f);
+        }
         if (!removed.isEmpty() && code == 0) {
             code = EXIT_ROBOTS_REMOVED;
         }
+        if (!controlFailed.isEmpty() && (code == 0 || code == EXIT_ROBOTS_REMOVED)) {
+            code = EXIT_CONTROL_FAILED;
+        }
         System.out.println(String.format(Locale.ROOT,
                 "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s robots_left=%s "
-                        + "geometry=%s robots_in=%s",
+                        + "control_failed=%d geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
-                s.get("messages"), s.get("robots_left"), noGeometry || oneJvm ? "in-process" : "process",
+                s.get("messages"), s.get("robots_left"), controlFailed.size(),
+                noGeometry || oneJvm ? "in-process" : "process",
                 oneJvm ? "one-jvm" : robotsInOneProcess ? "one-process"
                         + (connectionKind() == Connection.SHARED ? "" : "-per-robot") : "processes"));
         return code;

@@ -41,6 +41,21 @@ class HeadlessRunnerTest {
     }
 
     @Test
+    void controlCodeThatThrowsIsNamedBeforeTheSummaryAndTheExitCodeIs4InEveryLayout() {
+        for (String[] layout : new String[][] {{"--no-geometry"}, {"--one-jvm"}}) {
+            java.util.List<String> args = new java.util.ArrayList<>(List.of("--env", "src/test/resources/one-throws.xml",
+                    "--steps", "20"));
+            args.addAll(List.of(layout));
+            HeadlessRun r = HeadlessRun.of(args.toArray(new String[0]));
+            assertEquals(HeadlessRunner.EXIT_CONTROL_FAILED, r.code(), r.all());
+            assertTrue(r.out().contains("robot r1: its control code failed: java.lang.IllegalStateException: a bug in "
+                    + "r1's control code"), r.all());
+            String summary = r.out().get(r.out().size() - 1);
+            assertTrue(summary.startsWith("steps=20 robots=2 ") && summary.contains(" control_failed=1 "), r.all());
+        }
+    }
+
+    @Test
     void aRobotProcessThatEndsBeforeTheStartEndsTheRunAtOnceWithItsReason() {
         // a JVM option the robots' JVMs refuse: they end at once, and the Environment would wait for ever
         HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--no-geometry",

@@ -140,8 +140,8 @@ public final class Simulation implements AutoCloseable {
                 }
 
                 @Override
-                public void awaitControlCode(long ms) throws InterruptedException {
-                    robots.awaitControlCode(ms);
+                public List<String> awaitControlCode(long ms) throws InterruptedException {
+                    return robots.awaitControlCode(ms);
                 }
             });
             Simulation sim = new Simulation(c, watched, Math.max(1, wait.toMillis()));

@@ -209,6 +209,12 @@ public final class EnvironmentHost {
     /** The exit code of a completed run that lost a robot (it left, or was removed). */
     public static final int EXIT_ROBOTS_REMOVED = 3;
 
+    /**
+     * The exit code of a run (in this JVM, {@code --one-jvm}) that went on while a robot's control code threw out
+     * of {@code run}: the robot process's own code for it ({@code HardwareSimulator.EXIT_CONTROL_FAILED}).
+     */
+    public static final int EXIT_CONTROL_FAILED = 4;
+
     /** {@code start}: resumes a paused simulation, or runs the current file again once it has ended. */
     public String start() throws IOException, InterruptedException {
         ClientWorkerCoordinator c = current();

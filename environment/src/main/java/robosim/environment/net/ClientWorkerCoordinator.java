@@ -156,11 +156,12 @@ public final class ClientWorkerCoordinator implements Closeable {
         return inMemory != null;
     }
 
-    /** After the end: waits up to {@code ms} for the control code of the robots it ran in this JVM to end. */
-    public void awaitControlCode(long ms) throws InterruptedException {
-        if (inMemory != null) {
-            inMemory.awaitControlCode(ms);
-        }
+    /**
+     * After the end: waits up to {@code ms} for the control code of the robots it ran in this JVM to end; returns
+     * {@code NAME: what it threw} for each whose control code threw out of {@code run}.
+     */
+    public List<String> awaitControlCode(long ms) throws InterruptedException {
+        return inMemory == null ? List.of() : inMemory.awaitControlCode(ms);
     }
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
