@@ -36,7 +36,7 @@ import robosim.web.WebViewerServer;
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
  * {@code listening robots=P viewers=P geometry=P control=P tls=on|off} when its ports are bound and, when the run ends,
  * {@code summary steps=... robots=... wall_s=... steps_per_s=... robot_steps_per_s=...} as its last
- * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option, port), 3 it lost a robot.
+ * line. Exit codes: 0 done, 1 the run failed, 2 bad input (file, option, port), 3 it lost a robot, 4 (--one-jvm) a robot's control code threw out of run.
  */
 @Command(name = "environment.sh", mixinStandardHelpOptions = true,
         description = "Loads an environment file, waits for every robot it names (and a Geometry process), "
