@@ -115,6 +115,16 @@ final class ControlLink {
         }
     }
 
+    /** True once the simulation is over ({@link #shutdown}). */
+    boolean over() {
+        lock.lock();
+        try {
+            return shutdown;
+        } finally {
+            lock.unlock();
+        }
+    }
+
     /** The simulation is over: a blocked or later call throws InterruptedException. */
     void shutdown() {
         lock.lock();

@@ -272,7 +272,10 @@ public final class HardwareSimulator {
         } catch (InterruptedException e) {
             LOG.debug("{}: control code stopped", name);
         } catch (Exception | Error e) {
-            controlFailure = e.getClass().getName() + (e.getMessage() == null ? "" : ": " + e.getMessage());
+            if (!link.over()) { // (what it throws once the simulation is over, told by an interrupt, is no failure)
+                String what = e.getClass().getName() + (e.getMessage() == null ? "" : ": " + e.getMessage());
+                controlFailure = what.replaceAll("\\s+", " "); // (one line: a runner reads it from stderr)
+            }
             LOG.error("{}: control code failed; the robot stands still", name, e);
         } finally {
             link.controlFinished();

@@ -20,6 +20,10 @@ final class RobotLauncher {
         } catch (ClassCastException e) {
             throw new IllegalArgumentException("control class " + className + " does not implement "
                     + RobotControl.class.getName());
+        } catch (java.lang.reflect.InvocationTargetException e) {
+            throw new IllegalArgumentException("control class " + className + "'s constructor threw " + e.getCause());
+        } catch (LinkageError e) {
+            throw new IllegalArgumentException("control class " + className + " could not be loaded: " + e);
         } catch (ReflectiveOperationException e) {
             throw new IllegalArgumentException("control class " + className
                     + " needs a public no-argument constructor");

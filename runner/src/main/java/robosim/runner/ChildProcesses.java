@@ -169,10 +169,14 @@ final class ChildProcesses implements AutoCloseable {
         List<String> lines = new ArrayList<>();
         for (Child c : started) {
             if (!c.process.isAlive() && c.process.exitValue() == EXIT_CONTROL_FAILED) {
+                int before = lines.size();
                 for (String l : c.lastErrorLines(5_000).split(" \\| ")) {
                     if (l.contains("its control code failed")) {
                         lines.add(l);
                     }
+                }
+                if (lines.size() == before) { // (its last lines said something else: it still counts)
+                    lines.add(c.name + ": its control code failed (exit " + EXIT_CONTROL_FAILED + "; its log says how)");
                 }
             }
         }

@@ -311,7 +311,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     public RunSummary summary() {
-        return run.record().summary(Math.max(robotNames.size(), run.record().states.size()));
+        long inWorld = run.record().states.stream().filter(r -> !RobotState.ADDED.equals(r.state())).count();
+        return run.record().summary((int) Math.max(robotNames.size(), inWorld));
     }
 
     // ---- waiting for the run ---------------------------------------------------------------------------

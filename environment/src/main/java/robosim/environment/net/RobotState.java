@@ -12,4 +12,6 @@ package robosim.environment.net;
  * @param sinceStep the step it has been held, waited for or gone since; -1 for the other states
  */
 public record RobotState(String name, String state, long sinceStep) {
+    /** The state of a robot {@code add} let in that has not said hello: listed after every robot of the world. */
+    public static final String ADDED = "added";
 }

@@ -1046,7 +1046,7 @@ final class Run {
         if (!added.isEmpty()) { // (robots the control port added that have not said hello yet, by name)
             states = new ArrayList<>(states);
             for (String name : new java.util.TreeSet<>(added.keySet())) {
-                states.add(new RobotState(name, "added", -1));
+                states.add(new RobotState(name, RobotState.ADDED, -1));
             }
             states = List.copyOf(states);
         }

@@ -76,8 +76,8 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
         int i = coordinator.spec().indexOf(name);
         if (i < 0) { // (a robot that joined the running world: the loop's published list has it)
             List<RobotState> now = coordinator.status().states();
-            for (int k = 0; k < now.size() && i < 0; k++) {
-                i = now.get(k).name().equals(name) ? k : -1;
+            for (int k = 0; k < now.size() && i < 0; k++) { // (an added robot not there yet has no place)
+                i = now.get(k).name().equals(name) && !RobotState.ADDED.equals(now.get(k).state()) ? k : -1;
             }
         }
         return i < 0 ? NO_SUCH_ROBOT : i;
