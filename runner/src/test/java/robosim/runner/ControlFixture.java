@@ -1,5 +1,6 @@
 package robosim.runner;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import java.io.IOException;
 import java.net.InetAddress;
 import java.net.Socket;
@@ -21,6 +22,13 @@ import robosim.protocol.SimulationKeys;
 
 /** An Environment host with its control port, on ephemeral ports; paused until told. */
 final class ControlFixture implements AutoCloseable {
+    /** Sends {@code request} over {@code control}, which must answer ok; its message. */
+    static String ok(ControlClient control, String request) throws IOException {
+        JsonNode r = control.request(request);
+        org.junit.jupiter.api.Assertions.assertTrue(r.path("ok").asBoolean(), request + ": " + r);
+        return r.path("message").asText();
+    }
+
     static final int TIMEOUT_MS = 60_000;
     /** The control port's proof deadline (the Environment's: its handshake deadline, 10 s by default). */
     static final int DEFAULT_PROOF_DEADLINE_MS = 10_000;

@@ -32,14 +32,14 @@ class OneJvmAddTest {
             try (ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(ports.get("control")), null,
                     (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
                 env.await("running robots=3", LONG_S);
-                assertEquals("paused at step 10", ok(control, "step 10"));
+                assertEquals("paused at step 10", ControlFixture.ok(control, "step 10"));
                 JsonNode noSuch = control.request("add w10 Scout 1.0 3.5 0 no.such.Class");
                 assertEquals("add w10: there is no class no.such.Class on the class path this Environment runs with (a "
                         + "class of your own: --classpath or ROBOSIM_CLASSPATH)", noSuch.path("error").asText());
                 assertEquals("added r9 and started it in this JVM (robosim.examples.BackAndForth)",
-                        ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
+                        ControlFixture.ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
                 env.await("robot r9 joins at (11000, 2000) mm heading 180.0 deg", LONG_S);
-                ok(control, "resume");
+                ControlFixture.ok(control, "resume");
                 // (step 10 is being collected while the run holds: r9 takes part from 10 if its hello came before
                 // every request of step 10 was in, else from 11; both are legal)
                 String from = env.await("robot r9 takes part from step ", LONG_S);
@@ -49,11 +49,5 @@ class OneJvmAddTest {
             assertTrue(env.process.waitFor(LONG_S, TimeUnit.SECONDS));
             assertEquals(0, env.process.exitValue(), env.output());
         }
-    }
-
-    private static String ok(ControlClient control, String request) throws Exception {
-        JsonNode r = control.request(request);
-        assertTrue(r.path("ok").asBoolean(), request + ": " + r);
-        return r.path("message").asText();
     }
 }

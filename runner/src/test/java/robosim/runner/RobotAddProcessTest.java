@@ -39,7 +39,7 @@ class RobotAddProcessTest {
                     ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(ports.get("control")), null,
                             (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
                 env.await("running robots=3", LONG_S);
-                assertEquals("paused at step 10", ok(control, "step 10"));
+                assertEquals("paused at step 10", ControlFixture.ok(control, "step 10"));
                 JsonNode noSuch = control.request("add w10 Scout 1.0 3.5 0 no.such.Class");
                 assertTrue(noSuch.path("error").asText().startsWith("add w10: there is no class no.such.Class on the "
                         + "class path its robot process would run with"), noSuch.toString());
@@ -48,14 +48,14 @@ class RobotAddProcessTest {
                 assertEquals("w10 w11 not in the list", java.util.stream.StreamSupport.stream(
                         control.request("robots").path("robots").spliterator(), false)
                         .anyMatch(r -> r.path("name").asText().startsWith("w1")) ? "listed" : "w10 w11 not in the list");
-                ok(control, "pause");
+                ControlFixture.ok(control, "pause");
                 assertEquals("added r9 and started its robot process (robosim.examples.BackAndForth)",
-                        ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
+                        ControlFixture.ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
                 env.await("robot r9 added from the control port: a Scout at (11000, 2000) mm heading 180.0 deg", LONG_S);
                 env.await("robot r9 joins at (11000, 2000) mm heading 180.0 deg", LONG_S); // (to the mm)
                 JsonNode r9 = control.request("robots").path("robots").get(3);
                 assertEquals("r9 joining", r9.path("name").asText() + " " + r9.path("state").asText());
-                ok(control, "resume");
+                ControlFixture.ok(control, "resume");
                 env.await("robot r9 takes part from step 11", LONG_S);
                 env.await("summary steps=400", LONG_S);
                 env.await("robot r9's process exited (0)", LONG_S);
@@ -64,11 +64,5 @@ class RobotAddProcessTest {
             assertTrue(env.process.waitFor(LONG_S, TimeUnit.SECONDS));
             assertEquals(0, env.process.exitValue(), env.output());
         }
-    }
-
-    private static String ok(ControlClient control, String request) throws Exception {
-        JsonNode r = control.request(request);
-        assertTrue(r.path("ok").asBoolean(), request + ": " + r);
-        return r.path("message").asText();
     }
 }

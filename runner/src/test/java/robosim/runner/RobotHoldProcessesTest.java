@@ -64,12 +64,6 @@ class RobotHoldProcessesTest {
                 Integer.toString(port), "--type", "ArRobot");
     }
 
-    private static String ok(ControlClient control, String request) throws Exception {
-        JsonNode r = control.request(request);
-        assertTrue(r.path("ok").asBoolean(), request + ": " + r);
-        return r.path("message").asText();
-    }
-
     @Test
     void aRobotKilledMidRunComesBackWhereItStoodWithItsMessagesAndTheOthersMoveAsIfItHadStoodStill(
             @TempDir Path dir) throws Exception {
@@ -81,20 +75,20 @@ class RobotHoldProcessesTest {
                     ControlClient control = new ControlClient("127.0.0.1", Integer.parseInt(ports.get("control")), null,
                             (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
                 env.await("running robots=4", LONG_S);
-                assertEquals("paused at step " + LOSS, ok(control, "step " + LOSS));
-                ok(control, "pause"); // returns once step LOSS is computed: every request of it is in
+                assertEquals("paused at step " + LOSS, ControlFixture.ok(control, "step " + LOSS));
+                ControlFixture.ok(control, "pause"); // returns once step LOSS is computed: every request of it is in
                 first.process.destroyForcibly();
                 assertTrue(first.process.waitFor(LONG_S, TimeUnit.SECONDS));
                 env.await("robot ring2 lost during step " + LOSS, LONG_S);
-                ok(control, "step 1");
+                ControlFixture.ok(control, "step 1");
                 env.await("robot ring2 lost at step " + (LOSS + 1), LONG_S);
                 assertEquals("held", state(control, "ring2"));
-                ok(control, "step " + (AWAY - 1));
-                ok(control, "pause"); // step LOSS + AWAY computed without it
+                ControlFixture.ok(control, "step " + (AWAY - 1));
+                ControlFixture.ok(control, "pause"); // step LOSS + AWAY computed without it
                 try (ProcessLines again = ring2(port)) {
                     env.await("robot ring2 says hello again", LONG_S);
                     assertEquals("returning", state(control, "ring2"));
-                    ok(control, "resume");
+                    ControlFixture.ok(control, "resume");
                     env.await("robot ring2 is back at step " + BACK, LONG_S);
                     env.await("summary steps=" + STEPS, LONG_S);
                     assertTrue(again.process.waitFor(LONG_S, TimeUnit.SECONDS));
