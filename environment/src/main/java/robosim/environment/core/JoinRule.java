@@ -25,7 +25,7 @@ public record JoinRule(String allow, WorldSpec.RobotSpec template, Spawn spawn, 
         if (name != null && NAME.matcher(name).matches()) {
             return null;
         }
-        return "\"" + WorldSpec.shown(name) + "\" is not a name a robot may join with (1 to 64 letters, digits and - _ . :)";
+        return "\"" + robosim.protocol.Printable.of(name, 64) + "\" is not a name a robot may join with (1 to 64 letters, digits and - _ . :)";
     }
 
     public JoinRule {

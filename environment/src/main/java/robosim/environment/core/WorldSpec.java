@@ -164,7 +164,7 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
          */
         public String contradiction(robosim.protocol.RobotProperties p, String source) {
             if (!type.equals(p.type())) {
-                return "robot " + name + " is a " + type + " in " + source + ", but says it is a " + shown(p.type());
+                return "robot " + name + " is a " + type + " in " + source + ", but says it is a " + robosim.protocol.Printable.of(p.type(), 64);
             }
             if (Math.abs(p.radiusMm() - radiusMm) > 1e-6) {
                 return "robot " + name + " has radius " + radiusMm / 1000 + " m in " + source + ", but says "
@@ -180,15 +180,5 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         public List<String> sensorNames() {
             return sensors.stream().map(SensorSpec::name).toList();
         }
-    }
-
-    /** Text from the network for one line: at most 64 characters, control characters shown as '?'. */
-    static String shown(String text) {
-        if (text == null) {
-            return "";
-        }
-        String cut = text.codePoints().limit(64).map(c -> Character.isISOControl(c) ? '?' : c)
-                .collect(StringBuilder::new, StringBuilder::appendCodePoint, StringBuilder::append).toString();
-        return text.codePointCount(0, text.length()) > 64 ? cut + "..." : cut;
     }
 }

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.protocol.Printable;
 import java.util.List;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.Protocol;

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.protocol.Printable;
 import java.io.EOFException;
 import java.io.IOException;
 import java.net.Socket;

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.protocol.Printable;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;

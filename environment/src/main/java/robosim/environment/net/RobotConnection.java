@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.protocol.Printable;
 import java.io.IOException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.protocol.Printable;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotWelcome;

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.protocol.Printable;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;

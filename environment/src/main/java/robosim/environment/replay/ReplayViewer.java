@@ -10,7 +10,7 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import robosim.environment.net.Printable;
+import robosim.protocol.Printable;
 import robosim.environment.net.ViewerQueue;
 import robosim.environment.net.ViewerSink;
 import robosim.environment.net.ConnectionClock;

@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.protocol;
 
 /** Text from the network made safe for one log line: every control character (a line break) shown as '?'. */
 public final class Printable {
