@@ -74,6 +74,15 @@ public final class EnvironmentMain implements Callable<Integer> {
             description = "End after this many steps (default: ${DEFAULT-VALUE} = run until stopped).")
     long steps;
 
+    @Option(names = "--param", paramLabel = "NAME=VALUE", description = "Give the file's parameter NAME (a "
+            + "placeholder ${NAME:default} in it, or a <param name=\"NAME\"> of the world) this value; repeat for more. "
+            + "A name the file does not have is refused (test-envs/README.md).")
+    java.util.Map<String, String> params = new java.util.LinkedHashMap<>();
+
+    @Option(names = "--seed", description = "The run's seed, in place of the file's seed attribute: sensor noise and "
+            + "each robot's Robot.seed() come from it.")
+    Long seed;
+
     @Option(names = "--speed",
             description = "Run at most this many times real time, so a person can watch; 0 = as fast as possible "
                     + "(default: 1, real time, without --steps, a session driven by hand; 0 with --steps).")
@@ -155,7 +164,8 @@ public final class EnvironmentMain implements Callable<Integer> {
     public Integer call() throws Exception {
         WorldSpec spec;
         try {
-            spec = new EnvironmentLoader().load(file);
+            spec = new EnvironmentLoader().load(file, params);
+            spec = seed == null ? spec : spec.withSeed(seed);
         } catch (EnvironmentFileException e) {
             System.err.println(e.getMessage());
             return 2;

@@ -7,8 +7,10 @@ import robosim.api.RobotControl;
 /**
  * Sonar-based obstacle avoidance: drive ahead in legs of {@link #LEG_MM}; when a sonar facing within 60
  * degrees of ahead reads closer than {@link #CLEARANCE_MM}, turn away towards the more open side by
- * 30 to 90 degrees. The turn sizes come from a generator seeded by the robot's name, so runs repeat.
- * Subclasses may act once a step ({@link #everyStep}).
+ * 30 to 90 degrees. The turn sizes come from a generator seeded by {@link Robot#seed()} (the run's seed and the
+ * robot's name), so runs with the same seed repeat. Its speed is the parameter {@code speed} (mm/s, e.g.
+ * {@code <param name="speed" value="300"/>}; default: the robot's set velocity). It reports how often it has
+ * turned away ({@code turns}, for a sweep's table). Subclasses may act once a step ({@link #everyStep}).
  */
 public class Wander implements RobotControl {
     /** How close an obstacle ahead may come before the robot turns away, mm (from the sonar). */
@@ -18,9 +20,11 @@ public class Wander implements RobotControl {
 
     @Override
     public void run(Robot robot) throws InterruptedException {
-        Random random = new Random(robot.name().hashCode());
+        Random random = new Random(robot.seed());
+        robot.setVelocity(robot.parameter("speed", robot.velocity()));
         double[] angles = robot.sonarAnglesDeg();
         robot.sleep(1);
+        int turns = 0;
         while (true) {
             everyStep(robot);
             double[] ranges = robot.sonarRanges();
@@ -41,6 +45,7 @@ public class Wander implements RobotControl {
             if (ahead < CLEARANCE_MM) {
                 double by = 30 + random.nextInt(61);
                 robot.turn(left >= right ? by : -by);
+                robot.report("turns", ++turns);
             } else {
                 robot.move(LEG_MM);
             }

@@ -169,7 +169,7 @@ public final class HardwareSimulator {
             throw new IllegalStateException("connect first");
         }
         SimulatedRobot api = new SimulatedRobot(state, link, welcome.robotNames(), welcome.timeStepMs(),
-                welcome.sensors());
+                welcome.sensors(), welcome.seed(), welcome.parameters());
         stepSeconds = welcome.timeStepMs() / 1000.0;
         sonarWanted = !type.properties().sonars().isEmpty();
         sensorsWanted = welcome.sensors();
@@ -213,7 +213,7 @@ public final class HardwareSimulator {
         }
         current = command;
         List<CommEvent> messages = state.takeOutbox();
-        return new StepRequest(k, move, turn, sonarWanted, messages, sensorsWanted, tag);
+        return new StepRequest(k, move, turn, sonarWanted, messages, sensorsWanted, tag, state.takeReports());
     }
 
     /**

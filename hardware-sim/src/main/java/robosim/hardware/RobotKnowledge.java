@@ -40,6 +40,8 @@ final class RobotKnowledge {
     /** Newest plug-in sensor readings by name. */
     private final Map<String, double[]> readings = new HashMap<>();
     private final List<CommEvent> outbox = new ArrayList<>();
+    /** What the control code reported since the last request: the newest value of each name, in first-report order. */
+    private final java.util.LinkedHashMap<String, Double> reports = new java.util.LinkedHashMap<>();
     private final Set<String> seenNotices = new HashSet<>();
 
     RobotKnowledge(String name, RobotType type) {
@@ -105,6 +107,26 @@ final class RobotKnowledge {
         List<CommEvent> out = List.copyOf(outbox);
         outbox.clear();
         return out;
+    }
+
+    /** The reports to send with this step's request; none are kept afterwards. */
+    List<robosim.protocol.Report> takeReports() {
+        if (reports.isEmpty()) {
+            return List.of();
+        }
+        List<robosim.protocol.Report> out = new ArrayList<>(reports.size());
+        reports.forEach((name, value) -> out.add(new robosim.protocol.Report(name, value)));
+        reports.clear();
+        return out;
+    }
+
+    /** Keeps {@code value} as the newest report of {@code name}; at most {@link robosim.protocol.Report#MAX_PER_STEP} names a step. */
+    void report(String name, double value) {
+        if (!reports.containsKey(name) && reports.size() == robosim.protocol.Report.MAX_PER_STEP) {
+            throw new IllegalArgumentException("more than " + robosim.protocol.Report.MAX_PER_STEP
+                    + " report names in one step");
+        }
+        reports.put(name, value);
     }
 
     void send(String to, String text) {

@@ -1,10 +1,12 @@
 package robosim.hardware;
 
 import java.util.List;
+import java.util.Map;
 import robosim.api.Message;
 import robosim.api.Robot;
 import robosim.protocol.CommEvent;
 import robosim.protocol.Limits;
+import robosim.protocol.Report;
 import robosim.protocol.SonarSpec;
 
 /** The {@link Robot} the control code gets: blocking calls become {@link Command}s on the link. */
@@ -16,9 +18,18 @@ final class SimulatedRobot implements Robot {
     private final double[] sonarAngles;
 
     private final List<String> sensorNames;
+    private final long seed;
+    private final Map<String, String> parameters;
 
-    SimulatedRobot(RobotKnowledge state, ControlLink link, List<String> robotNames, long stepMs, List<String> sensorNames) {
+    /**
+     * The robot {@code state} is of, its calls going through {@code link}; {@code worldSeed} and {@code parameters}
+     * from its welcome.
+     */
+    SimulatedRobot(RobotKnowledge state, ControlLink link, List<String> robotNames, long stepMs, List<String> sensorNames,
+            long worldSeed, Map<String, String> parameters) {
         this.state = state;
+        this.seed = seed(worldSeed, state.name());
+        this.parameters = Map.copyOf(parameters);
         this.link = link;
         this.sensorNames = List.copyOf(sensorNames);
         this.robotNames = List.copyOf(robotNames);
@@ -193,5 +204,32 @@ final class SimulatedRobot implements Robot {
             link.execute(Command.idle(stepsFor(timeoutMs), true));
         }
         return state.nextMessage();
+    }
+
+    @Override
+    public long seed() {
+        return seed;
+    }
+
+    /** The run's seed and the robot's name mixed (SplitMix64's finaliser): the same on every JVM. */
+    static long seed(long worldSeed, String name) {
+        long h = worldSeed * 0x9E3779B97F4A7C15L + name.hashCode();
+        h = (h ^ (h >>> 30)) * 0xBF58476D1CE4E5B9L;
+        h = (h ^ (h >>> 27)) * 0x94D049BB133111EBL;
+        return h ^ (h >>> 31);
+    }
+
+    @Override
+    public String parameter(String name, String defaultValue) {
+        return parameters.getOrDefault(name, defaultValue);
+    }
+
+    @Override
+    public void report(String name, double value) {
+        String bad = Report.problem(name, value);
+        if (bad != null) {
+            throw new IllegalArgumentException(bad);
+        }
+        state.report(name, value);
     }
 }

@@ -12,13 +12,13 @@ import java.nio.charset.StandardCharsets;
  * and the {@link RobotView} body of each of the n robots in the step, in world order: {@code int robot},
  * {@code double moveMm}, {@code double turnDeg}, {@code byte flags} (1 sonar asked, 2 tag asked, 4 more
  * follows) and, with flag 4, {@code UTF contact}, {@code UTF tagged}, readings, messages sent, messages
- * delivered, notices), {@link #END} (a {@link SimulationEnd}, last). The frame headers are the
+ * delivered, notices, reports), {@link #END} (a {@link SimulationEnd}, last). The frame headers are the
  * index: a reader goes from frame to frame to map each step to its frame, and stops at the first frame
  * that is incomplete or fails its checksum (where a killed writer stopped).
  */
 public final class RecordingFormat {
     static final byte[] MAGIC = "ROBOSIMREC".getBytes(StandardCharsets.US_ASCII);
-    public static final byte VERSION = 3;
+    public static final byte VERSION = 4;
     static final byte SNAPSHOT = 1;
     static final byte STEP = 2;
     static final byte END = 3;

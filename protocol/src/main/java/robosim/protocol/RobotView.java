@@ -36,6 +36,7 @@ public final class RobotView implements java.io.Externalizable {
     private List<CommEvent> sent = List.of();
     private List<CommEvent> delivered = List.of();
     private List<String> notices = List.of();
+    private List<Report> reports = List.of();
 
     public RobotView() {
     }
@@ -51,6 +52,7 @@ public final class RobotView implements java.io.Externalizable {
             v.turnDeg = request.turnDeg();
             v.flags = (byte) ((request.wantsSonar() ? SONAR : 0) | (request.wantsTag() ? TAG : 0));
             v.sent = fromIs(name, request.messages());
+            v.reports = request.reports();
         }
         v.contact = response.contact();
         v.tagged = response.tagged();
@@ -87,6 +89,7 @@ public final class RobotView implements java.io.Externalizable {
         v.delivered = joined(earlier.delivered, delivered, cut);
         v.notices = joined(earlier.notices, notices, cut);
         v.leftOut = earlier.leftOut + leftOut + cut[0];
+        v.reports = newest(earlier.reports, reports);
         return v;
     }
 
@@ -105,6 +108,23 @@ public final class RobotView implements java.io.Externalizable {
         return all;
     }
 
+    /** The reports of both, the newer's value where a name is in both; at most {@link #MAX_LOG}, the newest. */
+    private static List<Report> newest(List<Report> older, List<Report> newer) {
+        if (older.isEmpty()) {
+            return newer;
+        }
+        java.util.LinkedHashMap<String, Report> byName = new java.util.LinkedHashMap<>();
+        for (Report r : older) {
+            byName.put(r.name(), r);
+        }
+        for (Report r : newer) {
+            byName.remove(r.name());
+            byName.put(r.name(), r);
+        }
+        List<Report> all = new ArrayList<>(byName.values());
+        return List.copyOf(all.subList(Math.max(0, all.size() - MAX_LOG), all.size()));
+    }
+
     private RobotView copy() {
         RobotView v = new RobotView();
         v.step = step;
@@ -120,6 +140,7 @@ public final class RobotView implements java.io.Externalizable {
         v.sent = sent;
         v.delivered = delivered;
         v.notices = notices;
+        v.reports = reports;
         return v;
     }
 
@@ -189,6 +210,14 @@ public final class RobotView implements java.io.Externalizable {
         return notices;
     }
 
+    /**
+     * The values its control code reported in this step ({@code Robot.report}), the newest of each name (a
+     * merged view: since {@link #sinceStep}).
+     */
+    public List<Report> reports() {
+        return reports;
+    }
+
     @Override
     public void writeExternal(ObjectOutput out) throws IOException {
         out.writeLong(step);
@@ -210,7 +239,7 @@ public final class RobotView implements java.io.Externalizable {
 
     /** The robot's part (also a recording's, per robot and step): robot, command, and what it got. */
     void writeBody(ObjectOutput out) throws IOException {
-        write(out, robot, moveMm, turnDeg, flags, contact, tagged, readings, sent, null, delivered, notices);
+        write(out, robot, moveMm, turnDeg, flags, contact, tagged, readings, sent, null, delivered, notices, reports);
     }
 
     /**
@@ -222,15 +251,16 @@ public final class RobotView implements java.io.Externalizable {
         write(out, robot, request == null ? 0 : request.moveMm(), request == null ? 0 : request.turnDeg(),
                 request == null ? 0 : (byte) ((request.wantsSonar() ? SONAR : 0) | (request.wantsTag() ? TAG : 0)),
                 response.contact(), response.tagged(), response.readings(),
-                request == null ? List.of() : request.messages(), name, response.inbox(), response.notices());
+                request == null ? List.of() : request.messages(), name, response.inbox(), response.notices(),
+                request == null ? List.of() : request.reports());
     }
 
     /** The body; {@code sender}: the name every sent message is from (null: each one's own {@code from}). */
     private static void write(ObjectOutput out, int robot, double moveMm, double turnDeg, byte flags, String contact,
             String tagged, List<SensorReading> readings, List<CommEvent> sent, String sender, List<CommEvent> delivered,
-            List<String> notices) throws IOException {
+            List<String> notices, List<Report> reports) throws IOException {
         boolean more = !contact.isEmpty() || !tagged.isEmpty() || !readings.isEmpty() || !sent.isEmpty()
-                || !delivered.isEmpty() || !notices.isEmpty();
+                || !delivered.isEmpty() || !notices.isEmpty() || !reports.isEmpty();
         out.writeInt(robot);
         out.writeDouble(moveMm);
         out.writeDouble(turnDeg);
@@ -247,6 +277,7 @@ public final class RobotView implements java.io.Externalizable {
             }
             Wire.writeEvents(out, delivered);
             Wire.writeStrings(out, notices);
+            Report.write(out, reports);
         }
     }
 
@@ -265,6 +296,7 @@ public final class RobotView implements java.io.Externalizable {
             sent = List.copyOf(Wire.readEvents(in, "sent message count"));
             delivered = List.copyOf(Wire.readEvents(in, "delivered message count"));
             notices = Wire.readStrings(in, "notice count", Limits.MAX_MESSAGES_PER_STEP);
+            reports = Report.read(in, MAX_LOG);
         }
     }
 

@@ -3,7 +3,9 @@ package robosim.protocol;
 import java.io.IOException;
 import java.io.ObjectInput;
 import java.io.ObjectOutput;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 
 /**
  * Environment -> robot, once, in answer to {@link RobotHello}: either a refusal with a reason
@@ -12,7 +14,8 @@ import java.util.List;
  * of this robot's plug-in sensors (from the environment file), which it may ask for each step; and
  * whether the Environment sends the next step number after each response ({@link #stepMessages()},
  * the default) or only the first one (the report's untested idea: the robot counts the steps itself,
- * and the end of the simulation arrives as a {@link SimulationEnd} where a response would be).
+ * and the end of the simulation arrives as a {@link SimulationEnd} where a response would be); and the run's
+ * seed and this robot's parameters from the environment file ({@link #seed()}, {@link #parameters()}).
  */
 public final class RobotWelcome implements java.io.Externalizable {
     private boolean accepted;
@@ -24,6 +27,8 @@ public final class RobotWelcome implements java.io.Externalizable {
     private List<String> robotNames = List.of();
     private List<String> sensors = List.of();
     private boolean stepMessages = true;
+    private long seed;
+    private Map<String, String> parameters = Map.of();
 
     public RobotWelcome() {
     }
@@ -56,6 +61,29 @@ public final class RobotWelcome implements java.io.Externalizable {
     public RobotWelcome withStepMessages(boolean on) {
         stepMessages = on;
         return this;
+    }
+
+    /**
+     * This welcome with the run's seed (the world's, for the control code's random numbers) and this robot's
+     * parameters (name to value, at most {@link Limits#MAX_PARAMETERS}).
+     */
+    public RobotWelcome withRun(long seed, Map<String, String> parameters) {
+        if (parameters.size() > Limits.MAX_PARAMETERS) {
+            throw new IllegalArgumentException(parameters.size() + " parameters, at most " + Limits.MAX_PARAMETERS);
+        }
+        this.seed = seed;
+        this.parameters = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(parameters));
+        return this;
+    }
+
+    /** The world's seed. */
+    public long seed() {
+        return seed;
+    }
+
+    /** This robot's parameters: the world's {@code <param>}s with its own over them. */
+    public Map<String, String> parameters() {
+        return parameters;
     }
 
     /** True: a step number follows every response; false: only step 0 is sent, the robot counts on. */
@@ -119,6 +147,12 @@ public final class RobotWelcome implements java.io.Externalizable {
         }
         Wire.writeStrings(out, sensors);
         out.writeBoolean(stepMessages);
+        out.writeLong(seed);
+        out.writeInt(parameters.size());
+        for (Map.Entry<String, String> p : parameters.entrySet()) {
+            out.writeUTF(p.getKey());
+            out.writeUTF(p.getValue());
+        }
     }
 
     /** Reads a welcome; {@code names}: the robot names it was written without, or null when they are on the wire. */
@@ -132,5 +166,12 @@ public final class RobotWelcome implements java.io.Externalizable {
         robotNames = names != null ? names : Wire.readStrings(in, "robot name count", Limits.MAX_ROBOTS);
         sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
         stepMessages = in.readBoolean();
+        seed = in.readLong();
+        int n = Limits.checkCount("parameter count", in.readInt(), Limits.MAX_PARAMETERS);
+        Map<String, String> read = new LinkedHashMap<>();
+        for (int i = 0; i < n; i++) {
+            read.put(in.readUTF(), in.readUTF());
+        }
+        parameters = java.util.Collections.unmodifiableMap(read);
     }
 }

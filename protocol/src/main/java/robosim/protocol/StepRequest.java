@@ -11,6 +11,8 @@ import java.util.List;
  * route. {@code moveMm} is signed (negative drives backwards); {@code turnDeg} is counter-clockwise.
  * {@code sensors} names the plug-in sensors (laser, heat, bump, ...) to read at the end of the step.
  * {@code tag} (ACTION) tags the nearest robot or taggable object in front, after the move.
+ * {@code reports}: the values the control code reported since the last request ({@link Report}), the newest
+ * of each name.
  */
 public final class StepRequest implements java.io.Externalizable {
     private long step;
@@ -20,6 +22,7 @@ public final class StepRequest implements java.io.Externalizable {
     private List<CommEvent> messages = List.of();
     private List<String> sensors = List.of();
     private boolean tag;
+    private List<Report> reports = List.of();
 
     public StepRequest() {
     }
@@ -35,6 +38,15 @@ public final class StepRequest implements java.io.Externalizable {
 
     public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages,
             List<String> sensors, boolean tag) {
+        this(step, moveMm, turnDeg, sonar, messages, sensors, tag, List.of());
+    }
+
+    public StepRequest(long step, double moveMm, double turnDeg, boolean sonar, List<CommEvent> messages,
+            List<String> sensors, boolean tag, List<Report> reports) {
+        if (reports.size() > Report.MAX_PER_STEP) {
+            throw new IllegalArgumentException(reports.size() + " reports in one step, at most " + Report.MAX_PER_STEP);
+        }
+        this.reports = List.copyOf(reports);
         this.tag = tag;
         this.step = step;
         this.moveMm = moveMm;
@@ -52,6 +64,11 @@ public final class StepRequest implements java.io.Externalizable {
     /** Plug-in sensors to read at the end of this step, by name. */
     public List<String> sensors() {
         return sensors;
+    }
+
+    /** The values reported since the last request, the newest of each name. */
+    public List<Report> reports() {
+        return reports;
     }
 
     public long step() {
@@ -83,6 +100,7 @@ public final class StepRequest implements java.io.Externalizable {
         Wire.writeEvents(out, messages);
         Wire.writeStrings(out, sensors);
         out.writeBoolean(tag);
+        Report.write(out, reports);
     }
 
     @Override
@@ -94,5 +112,6 @@ public final class StepRequest implements java.io.Externalizable {
         messages = Wire.readEvents(in, "outgoing message count");
         sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
         tag = in.readBoolean();
+        reports = Report.read(in, Report.MAX_PER_STEP);
     }
 }

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.io.ByteArrayInputStream;
@@ -83,14 +84,35 @@ class MessageRoundTripTest {
         assertEquals(List.of("a", "b"), m.robotNames());
         assertTrue(m.stepMessages());
         assertFalse(roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of()).withStepMessages(false)).stepMessages());
-        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser") + 1,
+        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser") + 1 + 8 + 4,
                 repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"), List.of("laser"))));
+        RobotWelcome run = roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of())
+                .withRun(42, java.util.Map.of("speed", "300")));
+        assertEquals(42, run.seed());
+        assertEquals(java.util.Map.of("speed", "300"), run.parameters());
         assertEquals(List.of("laser"),
                 roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of(), List.of("laser"))).sensors());
 
         RobotWelcome r = roundTrip(RobotWelcome.refused("no robot named x"));
         assertFalse(r.isAccepted());
         assertEquals("no robot named x", r.reason());
+    }
+
+    @Test
+    void aReportWithABadNameOrValueIsRefusedOnEitherSide() throws Exception {
+        assertThrows(IllegalArgumentException.class, () -> new Report("two words", 1));
+        assertThrows(IllegalArgumentException.class, () -> new Report("x", Double.NaN));
+        java.io.ByteArrayOutputStream bytes = new java.io.ByteArrayOutputStream();
+        try (java.io.ObjectOutputStream out = new java.io.ObjectOutputStream(bytes)) {
+            out.writeShort(1);
+            out.writeUTF("line\nbreak");
+            out.writeDouble(1);
+        }
+        try (java.io.ObjectInputStream in = new java.io.ObjectInputStream(
+                new java.io.ByteArrayInputStream(bytes.toByteArray()))) {
+            ProtocolException e = assertThrows(ProtocolException.class, () -> Report.read(in, Report.MAX_PER_STEP));
+            assertTrue(e.getMessage().contains("line?break"), e.getMessage());
+        }
     }
 
     @Test
@@ -101,7 +123,10 @@ class MessageRoundTripTest {
         assertEquals(-45, m.turnDeg());
         assertTrue(m.wantsSonar());
         assertEquals(List.of(new CommEvent("", "robot2", "7")), m.messages());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4 + 1, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4 + 1 + 2, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        StepRequest reported = roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of(), false,
+                List.of(new Report("found", 3), new Report("t.goal-1", 0.5))));
+        assertEquals(List.of(new Report("found", 3), new Report("t.goal-1", 0.5)), reported.reports());
         assertTrue(roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of(), true)).wantsTag());
         StepRequest withSensors = roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of("laser", "heat")));
         assertEquals(List.of("laser", "heat"), withSensors.sensors());

@@ -114,4 +114,48 @@ public interface Robot {
      * step in which a message arrives. Null if none came.
      */
     Message waitForMessage(long timeoutMs) throws InterruptedException;
+
+    /**
+     * A seed for this robot's own random numbers ({@code new Random(robot.seed())}): made from the run's seed (the
+     * environment file's {@code seed}, or the one a sweep or {@code --seed} gives) and this robot's name, so robots
+     * of one run differ, and a run with the same seed repeats. (A driver without a run seed: its name's hash.)
+     */
+    default long seed() {
+        return name().hashCode();
+    }
+
+    /**
+     * The value of the parameter {@code name} the environment file gives this robot ({@code <param name= value=>}
+     * on the robot, else on the world; a sweep may set it), or {@code defaultValue} when it gives none (a driver
+     * without parameters: always).
+     */
+    default String parameter(String name, String defaultValue) {
+        return defaultValue;
+    }
+
+    /**
+     * As {@link #parameter(String, String)}, read as a number; a value that is not a number is an
+     * IllegalArgumentException naming the parameter and the value.
+     */
+    default double parameter(String name, double defaultValue) {
+        String value = parameter(name, (String) null);
+        if (value == null) {
+            return defaultValue;
+        }
+        try {
+            return Double.parseDouble(value.trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("parameter " + name + " is '" + value + "', not a number");
+        }
+    }
+
+    /**
+     * Reports a value of this run (items found, the step a goal was reached...): it goes out with the robot's next
+     * step and is recorded with the run; the newest value of each name counts, and a sweep's table sums each name
+     * over the robots ({@code docs/EXPERIMENTS.md}). A name is 1 to 64 letters, digits, {@code _ . -}; the value a
+     * finite number; anything else, or more than 64 names in one step, is an IllegalArgumentException at once. (A
+     * driver that records nothing: does nothing.)
+     */
+    default void report(String name, double value) {
+    }
 }

@@ -36,6 +36,13 @@ final class EnvironmentOptions {
                     + "and the world waits for it); see environment.sh --help.")
     robosim.environment.net.RobotLoss onRobotLoss;
 
+    @Option(names = "--param", paramLabel = "NAME=VALUE", description = "Give the environment file's parameter NAME "
+            + "(a placeholder ${NAME:default}, or a world <param>) this value; repeat for more.")
+    java.util.Map<String, String> params = new java.util.LinkedHashMap<>();
+
+    @Option(names = "--seed", description = "The run's seed, in place of the file's (sensor noise, Robot.seed()).")
+    Long seed;
+
     @Option(names = "--record", paramLabel = "FILE",
             description = "Record the run into FILE, a new file (scripts/record-tool.sh reads it).")
     Path record;
@@ -80,6 +87,14 @@ final class EnvironmentOptions {
         if (webPort != null) {
             envArgs.add("--web-port");
             envArgs.add(Integer.toString(webPort));
+        }
+        params.forEach((name, value) -> {
+            envArgs.add("--param");
+            envArgs.add(name + "=" + value);
+        });
+        if (seed != null) {
+            envArgs.add("--seed");
+            envArgs.add(Long.toString(seed));
         }
         if (record != null) {
             envArgs.add("--record");

@@ -102,7 +102,7 @@ public final class HeadlessRunner implements Callable<Integer> {
     public Integer call() throws Exception {
         WorldSpec spec;
         try {
-            spec = new EnvironmentLoader().load(env);
+            spec = new EnvironmentLoader().load(env, environmentOptions.params);
         } catch (EnvironmentFileException e) {
             System.err.println(e.getMessage());
             return 2;

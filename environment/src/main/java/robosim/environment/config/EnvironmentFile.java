@@ -38,6 +38,18 @@ public final class EnvironmentFile {
     @JacksonXmlElementWrapper(useWrapping = false)
     @JacksonXmlProperty(localName = "join")
     public List<JoinXml> joins = new ArrayList<>();
+    /** Parameters for every robot's control code. */
+    @JacksonXmlElementWrapper(useWrapping = false)
+    @JacksonXmlProperty(localName = "param")
+    public List<ParamXml> params = new ArrayList<>();
+
+    /** {@code <param name="speed" value="300"/>}: a value the control code reads with {@code Robot.parameter}. */
+    public static final class ParamXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public String value;
+    }
 
     /**
      * {@code <join allow="scout-*" type="Scout" control="..." max="20" heading="90"><spawn x="1" y="1"
@@ -165,6 +177,10 @@ public final class EnvironmentFile {
         @JacksonXmlElementWrapper(useWrapping = false)
         @JacksonXmlProperty(localName = "sensor")
         public List<SensorXml> sensors = new ArrayList<>();
+        /** This robot's own parameters, over the world's. */
+        @JacksonXmlElementWrapper(useWrapping = false)
+        @JacksonXmlProperty(localName = "param")
+        public List<ParamXml> params = new ArrayList<>();
     }
 
     /**

@@ -7,16 +7,19 @@ import com.fasterxml.jackson.databind.exc.InvalidFormatException;
 import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
 import com.fasterxml.jackson.dataformat.xml.XmlMapper;
 import java.io.IOException;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
+import robosim.environment.core.Parameters;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.Arena;
@@ -40,12 +43,23 @@ public final class EnvironmentLoader {
     /** {@code <robot join="any-time">}: not waited for at the start; it may join the running world. */
     static final String ANY_TIME = "any-time";
 
-    /** Loads and checks {@code file}: a regular file of at most {@link #MAX_FILE_BYTES}. */
+    /** Loads and checks {@code file}: a regular file of at most {@link #MAX_FILE_BYTES}; its placeholders' defaults. */
     public WorldSpec load(Path file) throws EnvironmentFileException {
+        return load(file, Map.of());
+    }
+
+    /**
+     * Loads and checks {@code file} with these parameters ({@code --param NAME=VALUE}): each replaces the file's
+     * placeholder of that name ({@code ${NAME:default}}) and the value of the world's {@code <param name="NAME">};
+     * a name that is neither is refused.
+     */
+    public WorldSpec load(Path file, Map<String, String> given) throws EnvironmentFileException {
         String where = file.toString();
         EnvironmentFile xml;
+        Placeholders.Replaced replaced;
         try {
-            xml = MAPPER.readValue(read(file, where), EnvironmentFile.class);
+            replaced = Placeholders.replace(where, new String(read(file, where), StandardCharsets.UTF_8), given);
+            xml = MAPPER.readValue(replaced.text(), EnvironmentFile.class);
         } catch (NoSuchFileException e) {
             throw new EnvironmentFileException(where + ": file not found");
         } catch (UnrecognizedPropertyException e) {
@@ -63,7 +77,74 @@ public final class EnvironmentLoader {
         if (xml == null) {
             throw new EnvironmentFileException(where + ": empty file");
         }
-        return check(where, xml);
+        Parameters parameters = parameters(where, xml, replaced.names(), given);
+        WorldSpec spec = check(where, xml);
+        return new WorldSpec(spec.source(), spec.name(), spec.timeStepMs(), spec.seed(), spec.arena(), spec.obstacles(),
+                spec.robots(), spec.commRangeMm(), spec.maxMessageBytes(), spec.heatSources(), spec.tagRangeMm(),
+                spec.taggable(), spec.joins(), parameters);
+    }
+
+    /**
+     * The parameters {@code file} may be given (what a sweep may vary): its placeholders and the world's
+     * {@code <param>}s, sorted. Loads it with {@code given} as {@link #load} does, so a fault is the same line.
+     */
+    public java.util.SortedSet<String> parameterNames(Path file, Map<String, String> given)
+            throws EnvironmentFileException {
+        java.util.SortedSet<String> names = new java.util.TreeSet<>(load(file, given).parameters().world().keySet());
+        try {
+            names.addAll(Placeholders.replace(file.toString(),
+                    new String(read(file, file.toString()), StandardCharsets.UTF_8), given).names());
+        } catch (IOException e) {
+            throw new EnvironmentFileException(file + ": cannot read: " + e.getMessage());
+        }
+        return names;
+    }
+
+    /** The world's and each robot's {@code <param>}s, the given values over the world's; unknown given names refused. */
+    private static Parameters parameters(String where, EnvironmentFile xml, java.util.Set<String> placeholders,
+            Map<String, String> given) throws EnvironmentFileException {
+        Map<String, String> world = params(where, "<environment>", xml.params);
+        for (String name : given.keySet()) {
+            if (!placeholders.contains(name) && !world.containsKey(name)) {
+                java.util.TreeSet<String> known = new java.util.TreeSet<>(placeholders);
+                known.addAll(world.keySet());
+                throw new EnvironmentFileException(where + ": no parameter '" + robosim.protocol.Printable.of(name, 64)
+                        + "' here (its parameters: " + (known.isEmpty() ? "none" : String.join(", ", known)) + ")");
+            }
+            if (world.containsKey(name)) {
+                world.put(name, given.get(name));
+            }
+        }
+        Map<String, Map<String, String>> robots = new java.util.LinkedHashMap<>();
+        for (EnvironmentFile.RobotXml r : xml.robots) {
+            if (!r.params.isEmpty()) {
+                robots.put(r.name, params(where, "<robot name=\"" + r.name + "\">", r.params));
+            }
+        }
+        return new Parameters(world, robots);
+    }
+
+    private static Map<String, String> params(String where, String el, List<EnvironmentFile.ParamXml> xml)
+            throws EnvironmentFileException {
+        Map<String, String> out = new java.util.LinkedHashMap<>();
+        for (EnvironmentFile.ParamXml p : xml) {
+            if (p.name == null || !Placeholders.NAME.matcher(p.name).matches()) {
+                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + (p.name == null ? "" : p.name)
+                        + "\"> needs a name of 1 to 64 letters, digits, '_', '.' or '-', not a digit first");
+            }
+            if (p.value == null) {
+                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name + "\"> needs a value");
+            }
+            if (out.put(p.name, p.value) != null) {
+                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name
+                        + "\"> is given twice");
+            }
+        }
+        if (out.size() > robosim.protocol.Limits.MAX_PARAMETERS) {
+            throw new EnvironmentFileException(where + ": " + el + " has " + out.size() + " <param>s, at most "
+                    + robosim.protocol.Limits.MAX_PARAMETERS);
+        }
+        return out;
     }
 
     /** The bytes of a regular file no larger than the cap (a FIFO or a device is never opened). */

@@ -11,10 +11,12 @@ import robosim.protocol.ObstacleShape;
  * @param source the file it came from, for messages
  * @param commRangeMm how far a COMMEVENT carries, centre to centre; 0 = everywhere
  * @param maxMessageBytes the largest payload a robot may send (modified UTF-8 bytes)
+ * @param parameters what the file gives the control code ({@code <param>})
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
         List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
-        List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins) {
+        List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
+        Parameters parameters) {
     /** How far a tag reaches from the robot's rim by default, mm. */
     public static final double DEFAULT_TAG_RANGE_MM = 1000;
     /** A tag hits only what lies within this many degrees of the heading. */
@@ -42,6 +44,15 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         }
         taggable = java.util.Set.copyOf(taggable);
         joins = List.copyOf(joins);
+        java.util.Objects.requireNonNull(parameters, "parameters");
+    }
+
+    /** Without parameters. */
+    public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
+            List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
+            List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins) {
+        this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, heatSources,
+                tagRangeMm, taggable, joins, Parameters.NONE);
     }
 
     /** Without join rules: only the file's robots, all there from the start. */
@@ -57,7 +68,13 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         List<RobotSpec> more = new java.util.ArrayList<>(robots);
         more.add(robot);
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, more, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins);
+                heatSources, tagRangeMm, taggable, joins, parameters);
+    }
+
+    /** This world with another seed (a sweep's, or {@code --seed}'s). */
+    public WorldSpec withSeed(long newSeed) {
+        return new WorldSpec(source, name, timeStepMs, newSeed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
+                heatSources, tagRangeMm, taggable, joins, parameters);
     }
 
     /** Robots the join rules let take part at once, counted up to {@link #JOINABLE_CAP} (for connection and queue caps). */

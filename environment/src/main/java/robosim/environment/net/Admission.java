@@ -104,10 +104,14 @@ final class Admission {
         return welcome(spec.robots().get(index), names);
     }
 
-    /** The welcome of a robot at its pose (a start pose, or where it stands mid-run), with every robot's name. */
+    /**
+     * The welcome of a robot at its pose (a start pose, or where it stands mid-run), with every robot's name, the
+     * run's seed and its parameters.
+     */
     RobotWelcome welcome(WorldSpec.RobotSpec robot, List<String> robotNames) {
         return RobotWelcome.accepted(spec.timeStepMs(), robot.xMm(), robot.yMm(), robot.headingDeg(), robotNames,
-                robot.sensorNames()).withStepMessages(stepMessages);
+                robot.sensorNames()).withStepMessages(stepMessages)
+                .withRun(spec.seed(), spec.parameters().of(robot.name()));
     }
 
 }
