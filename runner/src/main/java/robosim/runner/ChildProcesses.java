@@ -18,7 +18,7 @@ import java.util.function.Consumer;
  * so that killing a runner never leaves its children running.
  * Safe to use from the runner's thread and the JVM's shutdown thread at once.
  */
-final class ChildProcesses implements AutoCloseable {
+public final class ChildProcesses implements AutoCloseable {
     /** How long children get to end after SIGTERM before they are killed. */
     private static final long GRACE_MS = 5000;
 
@@ -65,7 +65,8 @@ final class ChildProcesses implements AutoCloseable {
     private final ClassDataArchives archives = ClassDataArchives.fromEnvironment();
     private final Thread onSignal = new Thread(this::close, "stop-children");
 
-    ChildProcesses(List<String> jvmOptions) {
+    /** Children with these JVM options (after each child's own); stopped on close and when this JVM is told to stop. */
+    public ChildProcesses(List<String> jvmOptions) {
         this.jvmOptions = List.copyOf(jvmOptions);
         Runtime.getRuntime().addShutdownHook(onSignal);
     }
@@ -87,16 +88,8 @@ final class ChildProcesses implements AutoCloseable {
         List<String> options = new ArrayList<>(ownOptions);
         options.addAll(jvmOptions);
         ClassDataArchives.Launch archive = archives.launch(mainClass, classPath, options);
-        List<String> cmd = new ArrayList<>();
-        cmd.add(java);
-        cmd.add(NETTY_QUIET);
-        cmd.addAll(archive.options());
-        cmd.addAll(options);
-        cmd.add("-cp");
-        cmd.add(classPath);
-        cmd.add(mainClass);
-        cmd.addAll(args);
-        Child child = new Child(name, startOrFinish(cmd, archive), archive);
+        Child child = new Child(name, startOrFinish(new ProcessBuilder(command(archive, options, mainClass, args)),
+                archive), archive);
         started.add(child);
         pipe(name + ".out", child.process.getInputStream(), stdoutLines != null ? stdoutLines : System.err::println,
                 () -> { });
@@ -109,10 +102,39 @@ final class ChildProcesses implements AutoCloseable {
         return child;
     }
 
-    /** Starts {@code cmd}; when it cannot start, its archive claim is dropped at once. */
-    private static Process startOrFinish(List<String> cmd, ClassDataArchives.Launch archive) throws IOException {
+    /**
+     * Starts {@code mainClass} with {@code args} and the common JVM options, its stdout and stderr into {@code log}
+     * (a new file) rather than ours, and puts its class-data archive in place as soon as it has exited (a sweep
+     * starts hundreds, one after another).
+     */
+    public Process startLogged(String name, String mainClass, List<String> args, Path log) throws IOException {
+        ClassDataArchives.Launch archive = archives.launch(mainClass, classPath, jvmOptions);
+        ProcessBuilder builder = new ProcessBuilder(command(archive, jvmOptions, mainClass, args))
+                .redirectErrorStream(true).redirectOutput(log.toFile());
+        Child child = new Child(name, startOrFinish(builder, archive), archive);
+        started.add(child);
+        child.process.onExit().thenRun(archive::finish);
+        return child.process;
+    }
+
+    private List<String> command(ClassDataArchives.Launch archive, List<String> options, String mainClass,
+            List<String> args) {
+        List<String> cmd = new ArrayList<>();
+        cmd.add(java);
+        cmd.add(NETTY_QUIET);
+        cmd.addAll(archive.options());
+        cmd.addAll(options);
+        cmd.add("-cp");
+        cmd.add(classPath);
+        cmd.add(mainClass);
+        cmd.addAll(args);
+        return cmd;
+    }
+
+    /** Starts {@code builder}'s command; when it cannot start, its archive claim is dropped at once. */
+    private static Process startOrFinish(ProcessBuilder builder, ClassDataArchives.Launch archive) throws IOException {
         try {
-            return new ProcessBuilder(cmd).start();
+            return builder.start();
         } catch (IOException | RuntimeException e) {
             archive.finish();
             throw e;

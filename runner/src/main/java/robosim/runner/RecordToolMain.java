@@ -6,6 +6,7 @@ import java.io.OutputStreamWriter;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
@@ -18,22 +19,35 @@ import robosim.protocol.RobotView;
  * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
  * world, the steps and how the run ended (or where the file stops); {@code poses} writes every step's
  * poses as CSV on stdout, the {@code --pose-log} columns; {@code messages} every message delivered as CSV
- * ({@code step,from,to,text}).
+ * ({@code step,from,to,text}); {@code metrics} the run's metrics as a sweep's row has them (CSV: a header and a
+ * line), from the recording alone.
  */
 @Command(name = "record-tool.sh", mixinStandardHelpOptions = true,
-        description = "Reads a recording made with --record: summary, poses (CSV) or messages (CSV) on stdout.")
+        description = "Reads a recording made with --record: summary, poses (CSV), messages (CSV) or metrics (CSV: the "
+                + "built-in metrics and every reported value, as a sweep's row has them; docs/EXPERIMENTS.md) on stdout.")
 public final class RecordToolMain implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "summary|poses|messages", description = "What to print.")
+    @Parameters(index = "0", paramLabel = "summary|poses|messages|metrics", description = "What to print.")
     String what;
+
+    @picocli.CommandLine.Option(names = "--metric", paramLabel = "CLASS", description = "With metrics: these metrics "
+            + "only, each a built-in's name, report:NAME or a robosim.sweep.Metric class; repeat for more.")
+    java.util.List<String> metrics = new java.util.ArrayList<>();
+
+    @picocli.CommandLine.Option(names = "--area-cell-m", paramLabel = "M", description = "With metrics: the side of "
+            + "area_covered's cells, m (default: " + robosim.sweep.RunMetrics.DEFAULT_AREA_CELL_M + ", as a sweep's).")
+    double areaCellM = robosim.sweep.RunMetrics.DEFAULT_AREA_CELL_M;
 
     @Parameters(index = "1", paramLabel = "FILE", description = "The recording.")
     Path file;
 
     @Override
     public Integer call() throws Exception {
-        if (!what.equals("summary") && !what.equals("poses") && !what.equals("messages")) {
-            System.err.println("record-tool: unknown request \"" + what + "\" (summary, poses or messages)");
+        if (!List.of("summary", "poses", "messages", "metrics").contains(what)) {
+            System.err.println("record-tool: unknown request \"" + what + "\" (summary, poses, messages or metrics)");
             return 2;
+        }
+        if (what.equals("metrics")) {
+            return metrics();
         }
         try (RecordingReader r = new RecordingReader(file)) {
             BufferedWriter out = new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16);
@@ -43,6 +57,30 @@ public final class RecordToolMain implements Callable<Integer> {
                 default -> messages(r, out);
             }
             out.flush();
+            return 0;
+        } catch (IOException e) {
+            System.err.println("record-tool: " + e.getMessage());
+            return e.getMessage() != null && e.getMessage().startsWith(file.toString()) ? 2 : 1;
+        }
+    }
+
+    private int metrics() {
+        java.util.List<robosim.sweep.MetricChoice> chosen = new java.util.ArrayList<>();
+        for (String m : metrics) {
+            robosim.sweep.MetricChoice c = robosim.sweep.MetricChoice.parse(m);
+            String bad = c.problem();
+            if (bad != null) {
+                System.err.println("record-tool: --metric " + m + ": " + bad);
+                return 2;
+            }
+            chosen.add(c);
+        }
+        if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
+            System.err.println("record-tool: --area-cell-m must be > 0, got " + areaCellM);
+            return 2;
+        }
+        try {
+            System.out.print(robosim.sweep.RunMetrics.csv(robosim.sweep.RunMetrics.of(file, chosen, areaCellM)));
             return 0;
         } catch (IOException e) {
             System.err.println("record-tool: " + e.getMessage());

@@ -1,0 +1,102 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.concurrent.atomic.AtomicInteger;
+import robosim.runner.ChildProcesses;
+
+/**
+ * A sweep's runs on this machine: a bounded pool of {@code jobs} threads ({@code sweep-run[k]}), each starting
+ * one run at a time as its own process (a one-JVM run keeps about one core busy). Ctrl-C (any signal that stops
+ * this JVM) stops every run at once (thread {@code sweep-stop}); the rows written stay, and the tables are made
+ * from them.
+ */
+final class LocalPool {
+    /** How long the stop waits for the runs' threads to see their processes gone, ms. */
+    private static final long STOP_WAIT_MS = 15_000;
+    private final Sweep sweep;
+    private final OutputDirectory out;
+    private final int jobs;
+    private final boolean keepRecordings;
+    private final PrintStream err;
+    private volatile boolean stopping;
+    private final AtomicInteger unfinished = new AtomicInteger();
+
+    LocalPool(Sweep sweep, OutputDirectory out, int jobs, boolean keepRecordings, PrintStream err) {
+        this.sweep = sweep;
+        this.out = out;
+        this.jobs = jobs;
+        this.keepRecordings = keepRecordings;
+        this.err = err;
+    }
+
+    /** Runs {@code todo}; returns the runs that were stopped by a signal from outside (they have no row). */
+    int run(List<Integer> todo, Progress progress) throws InterruptedException {
+        ChildProcesses children = new ChildProcesses(List.of());
+        SweepRun runner = new SweepRun(sweep, out, children, keepRecordings, () -> stopping);
+        AtomicInteger next = new AtomicInteger();
+        List<Thread> threads = new ArrayList<>();
+        for (int k = 0; k < Math.min(jobs, todo.size()); k++) {
+            threads.add(new Thread(() -> {
+                int i;
+                while (!stopping && (i = next.getAndIncrement()) < todo.size()) {
+                    int index = todo.get(i);
+                    try {
+                        Row row = runner.run(index);
+                        if (stopping) {
+                            return;
+                        }
+                        if (row == null) {
+                            unfinished.incrementAndGet();
+                        } else {
+                            progress.finished(row.ok());
+                        }
+                    } catch (IOException | RuntimeException e) {
+                        err.println("sweep: run " + index + ": " + e.getMessage());
+                        unfinished.incrementAndGet();
+                    } catch (InterruptedException e) {
+                        return;
+                    }
+                }
+            }, "sweep-run[" + k + "]"));
+        }
+        Thread stop = new Thread(() -> {
+            stopping = true;
+            children.close();
+            joinAll(threads, STOP_WAIT_MS);
+            progress.close();
+            try {
+                int rows = Gather.tables(sweep, out);
+                err.println("sweep: stopped: " + rows + " of " + sweep.runs() + " runs have rows (" + out.path()
+                        + "); --resume runs the rest");
+            } catch (IOException | RuntimeException e) {
+                err.println("sweep: stopped; the tables could not be made: " + e.getMessage());
+            }
+        }, "sweep-stop");
+        Runtime.getRuntime().addShutdownHook(stop);
+        threads.forEach(Thread::start);
+        for (Thread t : threads) {
+            t.join();
+        }
+        try {
+            Runtime.getRuntime().removeShutdownHook(stop);
+        } catch (IllegalStateException shuttingDown) {
+            Thread.currentThread().join(); // (the stop hook makes the tables; the JVM ends when it is done)
+        }
+        children.close();
+        return unfinished.get();
+    }
+
+    private static void joinAll(List<Thread> threads, long ms) {
+        long deadline = System.nanoTime() + ms * 1_000_000;
+        for (Thread t : threads) {
+            try {
+                t.join(Math.max(1, (deadline - System.nanoTime()) / 1_000_000));
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
+    }
+}

@@ -1,0 +1,154 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.apache.commons.math3.stat.descriptive.SummaryStatistics;
+import org.knowm.xchart.BitmapEncoder;
+import org.knowm.xchart.CategoryChart;
+import org.knowm.xchart.CategoryChartBuilder;
+import org.knowm.xchart.XYChart;
+import org.knowm.xchart.XYChartBuilder;
+import org.knowm.xchart.XYSeries;
+import org.knowm.xchart.internal.chartpart.Chart;
+import org.knowm.xchart.style.markers.SeriesMarkers;
+
+/**
+ * A PNG per metric against each parameter the sweep varies ({@code plots/METRIC-vs-PARAM.png}): the mean of the
+ * runs that succeeded at each value, with its 95% confidence interval as error bars, one line per combination of
+ * the other varied parameters. Numbers on the x axis when every value is one, else categories. A sweep that varies
+ * no parameter gets a plot per metric against the seed, one point per run. Drawn by XChart, headless.
+ */
+final class Plots {
+    private static final int WIDTH = 800;
+    private static final int HEIGHT = 500;
+
+    private Plots() {
+    }
+
+    /** Draws every plot of {@code tables} into {@code dir}/plots; returns the files written. */
+    static List<Path> write(Sweep sweep, Tables tables, List<Row> rows, Path dir) throws IOException {
+        System.setProperty("java.awt.headless", "true");
+        Path plots = dir.resolve("plots");
+        Files.createDirectories(plots);
+        List<Path> written = new ArrayList<>();
+        List<String> varied = new ArrayList<>();
+        sweep.values().forEach((name, values) -> {
+            if (values.size() > 1) {
+                varied.add(name);
+            }
+        });
+        for (String metric : tables.metrics) {
+            if (varied.isEmpty()) {
+                written.add(save(bySeed(metric, rows), plots.resolve(metric + "-vs-seed")));
+            }
+            for (String parameter : varied) {
+                written.add(save(against(sweep, tables, metric, parameter, varied), plots.resolve(metric + "-vs-"
+                        + parameter)));
+            }
+        }
+        return written;
+    }
+
+    private static Path save(Chart<?, ?> chart, Path withoutExtension) throws IOException {
+        BitmapEncoder.saveBitmap(chart, withoutExtension.toString(), BitmapEncoder.BitmapFormat.PNG);
+        return withoutExtension.resolveSibling(withoutExtension.getFileName() + ".png");
+    }
+
+    /** One point per successful run: the metric against its seed. */
+    private static XYChart bySeed(String metric, List<Row> rows) {
+        XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(metric + " by seed").xAxisTitle("seed")
+                .yAxisTitle(metric).build();
+        List<Double> x = new ArrayList<>();
+        List<Double> y = new ArrayList<>();
+        for (Row r : rows) {
+            String v = r.values().get(metric);
+            if (r.ok() && v != null && !v.isEmpty()) {
+                x.add(Double.parseDouble(r.values().get("seed")));
+                y.add(Double.parseDouble(v));
+            }
+        }
+        chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);
+        chart.getStyler().setLegendVisible(false);
+        if (!x.isEmpty()) {
+            chart.addSeries("runs", x, y);
+        }
+        return chart;
+    }
+
+    /** The metric's mean and interval at each value of {@code parameter}, a line per setting of the other varied ones. */
+    private static Chart<?, ?> against(Sweep sweep, Tables tables, String metric, String parameter,
+            List<String> varied) {
+        List<String> values = sweep.values().get(parameter);
+        boolean numeric = values.stream().allMatch(Plots::isNumber);
+        Map<String, double[][]> lines = new LinkedHashMap<>(); // label -> {mean[], half-width[]} by value index
+        tables.byCombination.forEach((combination, stats) -> {
+            StringBuilder label = new StringBuilder();
+            for (String other : varied) {
+                if (!other.equals(parameter)) {
+                    label.append(label.length() == 0 ? "" : ", ").append(other).append('=').append(combination.get(other));
+                }
+            }
+            double[][] line = lines.computeIfAbsent(label.length() == 0 ? metric : label.toString(), k -> {
+                double[][] empty = new double[2][values.size()];
+                java.util.Arrays.fill(empty[0], Double.NaN);
+                return empty;
+            });
+            int at = values.indexOf(combination.get(parameter));
+            SummaryStatistics s = stats.get(metric);
+            if (s != null && s.getN() > 0) {
+                line[0][at] = s.getMean();
+                double[] ci = Tables.interval(s);
+                line[1][at] = ci == null ? 0 : (ci[1] - ci[0]) / 2;
+            }
+        });
+        String title = metric + " vs " + parameter + " (mean, 95% CI)";
+        if (numeric) {
+            XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title).xAxisTitle(parameter)
+                    .yAxisTitle(metric).build();
+            chart.getStyler().setLegendVisible(lines.size() > 1);
+            double[] x = values.stream().mapToDouble(Double::parseDouble).toArray();
+            lines.forEach((label, line) -> {
+                List<Double> xs = new ArrayList<>();
+                List<Double> ys = new ArrayList<>();
+                List<Double> errors = new ArrayList<>();
+                for (int i = 0; i < x.length; i++) {
+                    if (!Double.isNaN(line[0][i])) {
+                        xs.add(x[i]);
+                        ys.add(line[0][i]);
+                        errors.add(line[1][i]);
+                    }
+                }
+                if (!xs.isEmpty()) {
+                    chart.addSeries(label, xs, ys, errors).setMarker(SeriesMarkers.CIRCLE);
+                }
+            });
+            return chart;
+        }
+        CategoryChart chart = new CategoryChartBuilder().width(WIDTH).height(HEIGHT).title(title).xAxisTitle(parameter)
+                .yAxisTitle(metric).build();
+        chart.getStyler().setLegendVisible(lines.size() > 1);
+        lines.forEach((label, line) -> {
+            List<Double> ys = new ArrayList<>();
+            List<Double> errors = new ArrayList<>();
+            for (int i = 0; i < values.size(); i++) {
+                ys.add(Double.isNaN(line[0][i]) ? 0 : line[0][i]);
+                errors.add(line[1][i]);
+            }
+            chart.addSeries(label, values, ys, errors);
+        });
+        return chart;
+    }
+
+    private static boolean isNumber(String s) {
+        try {
+            return Double.isFinite(Double.parseDouble(s));
+        } catch (NumberFormatException e) {
+            return false;
+        }
+    }
+}

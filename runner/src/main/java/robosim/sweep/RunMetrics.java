@@ -1,0 +1,170 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.nio.file.Path;
+import java.util.BitSet;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import robosim.protocol.Arena;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
+import robosim.protocol.Report;
+import robosim.protocol.RobotView;
+import robosim.protocol.WorldSnapshot;
+
+/**
+ * A run's metrics, read from its recording alone (one pass over its steps), so a kept recording gives its row
+ * again ({@code scripts/record-tool.sh metrics FILE}):
+ * <ul>
+ * <li>{@code distance_m}: the robots' paths, summed, m (each robot's straight moves from step to step);
+ * <li>{@code contacts}: times a robot touched something (a step with a contact after one without);
+ * <li>{@code messages_delivered}: messages delivered to robots;
+ * <li>{@code tags}: tags made (a robot's tag that hit a robot or a taggable obstacle);
+ * <li>{@code area_covered}: the share of the arena's square cells (side {@code areaCellM}) a robot's centre has
+ * been in at the end of some step, 0 to 1;
+ * <li>{@code robots_left}: robots still in the world at the end;
+ * <li>each name the control code reported ({@code Robot.report}): each robot's newest value, summed over the
+ * robots that reported it (a name that is also a built-in's is {@code report.NAME});
+ * <li>each {@link Metric} class asked for, by its {@link Metric#name()}.
+ * </ul>
+ */
+public final class RunMetrics {
+    /** The built-in metrics, in their column order. */
+    public static final List<String> BUILT_IN = List.of("distance_m", "contacts", "messages_delivered", "tags",
+            "area_covered", "robots_left");
+    /** The side of {@code area_covered}'s cells unless a sweep says otherwise, m. */
+    public static final double DEFAULT_AREA_CELL_M = 0.5;
+
+    private RunMetrics() {
+    }
+
+    /**
+     * The metrics {@code chosen} asks for, in its order (none chosen: every built-in one, then every reported name
+     * in alphabetical order), of the recording {@code file}; a report no robot made is left out.
+     */
+    public static Map<String, Double> of(Path file, List<MetricChoice> chosen, double areaCellM) throws IOException {
+        try (RecordingReader recording = new RecordingReader(file)) {
+            Map<String, Double> all = builtInAndReports(recording, areaCellM);
+            Map<String, Double> out = new LinkedHashMap<>();
+            if (chosen.isEmpty()) {
+                return all;
+            }
+            for (MetricChoice c : chosen) {
+                switch (c.kind()) {
+                    case BUILT_IN -> out.put(c.name(), all.get(c.name()));
+                    case REPORT -> {
+                        String column = reportColumn(c.name());
+                        if (all.containsKey(column)) {
+                            out.put(column, all.get(column));
+                        }
+                    }
+                    case CLASS -> {
+                        Metric m;
+                        try {
+                            m = c.instance();
+                        } catch (ReflectiveOperationException | LinkageError e) {
+                            throw new IOException("metric class " + c.name() + ": " + e);
+                        }
+                        double v = m.value(recording);
+                        if (Report.problem(m.name(), v) != null) {
+                            throw new IOException("metric class " + c.name() + ": " + Report.problem(m.name(), v));
+                        }
+                        out.put(m.name(), v);
+                    }
+                }
+            }
+            return out;
+        }
+    }
+
+    /** {@code metrics} as CSV: a header line and a value line, the numbers as a sweep's tables write them. */
+    public static String csv(Map<String, Double> metrics) {
+        List<String> values = new java.util.ArrayList<>();
+        metrics.values().forEach(v -> values.add(Csv.number(v)));
+        return Csv.line(new java.util.ArrayList<>(metrics.keySet())) + "\n" + Csv.line(values) + "\n";
+    }
+
+    /** The column of a reported name: the name, or {@code report.NAME} where a built-in has it. */
+    static String reportColumn(String name) {
+        return BUILT_IN.contains(name) ? "report." + name : name;
+    }
+
+    private static Map<String, Double> builtInAndReports(RecordingReader recording, double areaCellM)
+            throws IOException {
+        WorldSnapshot world = recording.snapshot();
+        Arena arena = world.arena();
+        double cell = areaCellM * 1000;
+        int columns = Math.max(1, (int) Math.ceil((arena.maxXMm() - arena.minXMm()) / cell));
+        int rows = Math.max(1, (int) Math.ceil((arena.maxYMm() - arena.minYMm()) / cell));
+        BitSet visited = new BitSet(columns * rows);
+        double[] lastX = new double[0];
+        double[] lastY = new double[0];
+        boolean[] touching = new boolean[0];
+        double distanceMm = 0;
+        long contacts = 0;
+        long delivered = 0;
+        Map<Integer, Map<String, Double>> reports = new HashMap<>();
+        PoseUpdate last = world.poses();
+        for (int i = 0; i < recording.steps(); i++) {
+            RecordingReader.Step step = recording.step(i);
+            PoseUpdate u = step.update();
+            int n = u.count();
+            if (n > lastX.length) {
+                int had = lastX.length;
+                lastX = java.util.Arrays.copyOf(lastX, n);
+                lastY = java.util.Arrays.copyOf(lastY, n);
+                touching = java.util.Arrays.copyOf(touching, n);
+                for (int r = had; r < n; r++) {
+                    lastX[r] = Double.NaN;
+                }
+            }
+            for (int r = 0; r < n; r++) {
+                double x = u.xMm(r);
+                double y = u.yMm(r);
+                if (!Double.isNaN(lastX[r])) {
+                    distanceMm += Math.hypot(x - lastX[r], y - lastY[r]);
+                }
+                lastX[r] = x;
+                lastY[r] = y;
+                int cx = (int) Math.floor((x - arena.minXMm()) / cell);
+                int cy = (int) Math.floor((y - arena.minYMm()) / cell);
+                if (cx >= 0 && cx < columns && cy >= 0 && cy < rows) {
+                    visited.set(cy * columns + cx);
+                }
+            }
+            for (RobotView v : step.views()) {
+                int r = v.robot();
+                boolean now = !v.contact().isEmpty();
+                if (r < touching.length) {
+                    if (now && !touching[r]) {
+                        contacts++;
+                    }
+                    touching[r] = now;
+                }
+                delivered += v.delivered().size();
+                for (Report report : v.reports()) {
+                    reports.computeIfAbsent(r, k -> new HashMap<>()).put(report.name(), report.value());
+                }
+            }
+            last = u;
+        }
+        int robots = recording.steps() == 0 ? world.robotNames().size()
+                : recording.snapshotAt(recording.steps() - 1).robotNames().size();
+        Map<String, Double> out = new LinkedHashMap<>();
+        out.put("distance_m", distanceMm / 1000);
+        out.put("contacts", (double) contacts);
+        out.put("messages_delivered", (double) delivered);
+        out.put("tags", (double) last.tags().size());
+        out.put("area_covered", visited.cardinality() / (double) (columns * rows));
+        out.put("robots_left", (double) Math.max(0, robots - last.departed().size()));
+        Map<String, Double> summed = new TreeMap<>();
+        for (Map<String, Double> each : reports.values()) {
+            each.forEach((name, value) -> summed.merge(reportColumn(name), value, Double::sum));
+        }
+        out.putAll(summed);
+        return out;
+    }
+}

@@ -1,0 +1,172 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.TreeMap;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * A sweep on a Slurm cluster: one {@code sbatch} job array, a task per run still missing ({@code %K} at once), each
+ * task running {@code sweep.sh task DIR INDEX}; and a gather job that waits for the whole array
+ * ({@code --dependency=afterany}: a failed task is a row, and {@code afterok} would wait for ever) and makes the
+ * tables and plots. The jobs' ids go into {@code DIR/slurm/jobs}; {@code sweep.sh status DIR} reads them. Every
+ * Slurm command has a deadline and its output is bounded.
+ */
+final class Slurm {
+    /** How long one Slurm command may take, ms. */
+    private static final long COMMAND_MS = 60_000;
+    /** The most output of one Slurm command read, bytes. */
+    private static final int MAX_OUTPUT = 1 << 20;
+    /** Job states of a job that has not ended. */
+    private static final List<String> ACTIVE = List.of("PENDING", "RUNNING", "CONFIGURING", "COMPLETING",
+            "SUSPENDED", "REQUEUED", "RESIZING", "SIGNALING", "STAGE_OUT");
+
+    /**
+     * Where and how long: {@code --partition}, {@code --time} (null: the cluster's defaults), {@code --max-parallel};
+     * and whether the tasks keep their recordings.
+     */
+    record Options(String partition, String time, int maxParallel, boolean keepRecordings) {
+    }
+
+    /** The submitted jobs: the array's id and the gather job's. */
+    record Jobs(String array, String gather) {
+    }
+
+    private Slurm() {
+    }
+
+    /** Submits the runs {@code todo} of the sweep in {@code out} and its gather job; {@code script} is sweep.sh. */
+    static Jobs submit(Sweep sweep, OutputDirectory out, List<Integer> todo, Options options, Path script)
+            throws IOException, SweepException, InterruptedException {
+        Path dir = out.slurm();
+        Files.createDirectories(dir);
+        Path task = dir.resolve("task.sh");
+        Files.writeString(task, "#!/usr/bin/env bash\n# One run of the sweep in " + out.path()
+                + " per task of the array (written by sweep.sh --slurm)\nexec " + quoted(script.toString()) + " task "
+                + quoted(out.path().toString()) + " \"$SLURM_ARRAY_TASK_ID\"" + (options.keepRecordings()
+                ? " --keep-recordings" : "") + "\n", StandardCharsets.UTF_8);
+        Files.setPosixFilePermissions(task, PosixFilePermissions.fromString("rwxr-xr-x"));
+        List<String> where = new ArrayList<>();
+        if (options.partition() != null) {
+            where.add("--partition=" + options.partition());
+        }
+        if (options.time() != null) {
+            where.add("--time=" + options.time());
+        }
+        List<String> array = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep",
+                "--array=" + ranges(todo) + "%" + options.maxParallel(), "--output=" + dir.resolve("task-%A_%a.out"),
+                "--cpus-per-task=" + (sweep.layout() == Sweep.Layout.ONE_JVM ? 1 : 2)));
+        array.addAll(where);
+        array.add(task.toString());
+        String arrayId = jobId(run(array));
+        List<String> gather = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep-gather",
+                "--dependency=afterany:" + arrayId, "--output=" + dir.resolve("gather.out")));
+        gather.addAll(where);
+        gather.add("--wrap=exec " + quoted(script.toString()) + " gather " + quoted(out.path().toString()));
+        String gatherId = jobId(run(gather));
+        Files.writeString(dir.resolve("jobs"), "array " + arrayId + "\ngather " + gatherId + "\n", StandardCharsets.UTF_8);
+        return new Jobs(arrayId, gatherId);
+    }
+
+    /** The jobs submitted for {@code out}, or null if none were. */
+    static Jobs jobs(OutputDirectory out) throws IOException {
+        Path file = out.slurm().resolve("jobs");
+        if (!Files.exists(file)) {
+            return null;
+        }
+        Map<String, String> ids = new TreeMap<>();
+        for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+            String[] kv = line.trim().split(" ");
+            if (kv.length == 2) {
+                ids.put(kv[0], kv[1]);
+            }
+        }
+        return new Jobs(ids.get("array"), ids.get("gather"));
+    }
+
+    /** True while any of the jobs (any task of the array) has not ended, as {@code squeue} says. */
+    static boolean active(Jobs jobs) throws IOException, SweepException, InterruptedException {
+        for (String state : run(List.of("squeue", "-h", "-r", "-t", "all", "-j", jobs.array() + "," + jobs.gather(),
+                "-o", "%T")).split("\n")) {
+            if (ACTIVE.contains(state.trim())) {
+                return true;
+            }
+        }
+        return false;
+    }
+
+    /** How many of the jobs' tasks are in each state, as {@code squeue -t all} still shows them. */
+    static Map<String, Integer> states(Jobs jobs) throws IOException, SweepException, InterruptedException {
+        Map<String, Integer> count = new TreeMap<>();
+        for (String line : run(List.of("squeue", "-h", "-r", "-t", "all", "-j", jobs.array() + "," + jobs.gather(),
+                "-o", "%j %T")).split("\n")) {
+            if (!line.isBlank()) {
+                count.merge(line.trim().replace("robosim-sweep-gather", "gather").replace("robosim-sweep", "run"), 1,
+                        Integer::sum);
+            }
+        }
+        return count;
+    }
+
+    /** {@code 0-5,7,9-11} for these sorted indices. */
+    static String ranges(List<Integer> indices) {
+        StringBuilder b = new StringBuilder();
+        for (int i = 0; i < indices.size(); i++) {
+            int from = indices.get(i);
+            int to = from;
+            while (i + 1 < indices.size() && indices.get(i + 1) == to + 1) {
+                to = indices.get(++i);
+            }
+            b.append(b.length() == 0 ? "" : ",").append(from).append(from == to ? "" : "-" + to);
+        }
+        return b.toString();
+    }
+
+    private static String jobId(String parsable) throws SweepException {
+        String id = parsable.trim().split(";")[0];
+        if (!id.matches("[0-9]{1,12}")) {
+            throw new SweepException("sbatch: answered '" + robosim.protocol.Printable.of(parsable.trim(), 100)
+                    + "', not a job id");
+        }
+        return id;
+    }
+
+    /** Runs a Slurm command; its output, or one line naming it and what it said when it fails or overruns. */
+    private static String run(List<String> command) throws IOException, SweepException, InterruptedException {
+        Path output = Files.createTempFile("robosim-slurm", ".out");
+        try {
+            Process p;
+            try {
+                p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(output.toFile()).start();
+            } catch (IOException e) {
+                throw new SweepException(command.get(0) + ": not found on this machine (is it a Slurm cluster's node?)");
+            }
+            if (!p.waitFor(COMMAND_MS, TimeUnit.MILLISECONDS)) {
+                p.destroyForcibly();
+                throw new SweepException(command.get(0) + ": no answer within " + COMMAND_MS / 1000 + " s");
+            }
+            String text;
+            try (InputStream in = Files.newInputStream(output)) {
+                text = new String(in.readNBytes(MAX_OUTPUT), StandardCharsets.UTF_8);
+            }
+            if (p.exitValue() != 0) {
+                throw new SweepException(command.get(0) + " failed (exit " + p.exitValue() + "): "
+                        + robosim.protocol.Printable.of(text.strip(), 300));
+            }
+            return text;
+        } finally {
+            Files.deleteIfExists(output);
+        }
+    }
+
+    private static String quoted(String s) {
+        return "'" + s.replace("'", "'\\''") + "'";
+    }
+}

@@ -1,0 +1,277 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Parameters;
+import robosim.runner.ChildProcesses;
+
+/**
+ * {@code scripts/sweep.sh SPEC}: runs every run of a sweep file and writes its tables and plots
+ * ({@code docs/EXPERIMENTS.md}); {@code status DIR}, {@code task DIR INDEX} (one Slurm task) and {@code gather DIR}
+ * (the tables again from the rows) work on an output directory.
+ */
+@Command(name = "sweep.sh", mixinStandardHelpOptions = true,
+        subcommands = {SweepMain.Status.class, SweepMain.Task.class, SweepMain.GatherRows.class},
+        description = {"Runs a seed and parameter sweep (a <sweep> file, docs/EXPERIMENTS.md): every combination of "
+                + "the parameters' values with every seed, each run its own process, on this machine (a pool as large "
+                + "as its cores) or, with --slurm, as a Slurm job array. Writes runs.csv (a row per run), summary.csv "
+                + "(mean, sd and 95%% confidence interval per combination) and a PNG plot per metric and varied "
+                + "parameter into --out.",
+                "Exit: 0 every run succeeded; 1 some failed (their rows say why) or were stopped; 2 bad input; "
+                        + "130 stopped by Ctrl-C (the rows written stay: --resume runs the rest)."})
+public final class SweepMain implements Callable<Integer> {
+    /** Exit code of a sweep some of whose runs failed or left no row. */
+    static final int EXIT_RUNS_FAILED = 1;
+    static final int EXIT_BAD_INPUT = 2;
+
+    @Parameters(index = "0", arity = "0..1", paramLabel = "SPEC.xml", description = "The sweep file.")
+    Path spec;
+
+    @Option(names = "--out", paramLabel = "DIR", description = "The output directory: new or empty, or this sweep's "
+            + "with --resume (default: sweep-NAME-DATE-TIME here). On a cluster: on the file system every node shares.")
+    Path out;
+
+    @Option(names = "--resume", description = "Run only the runs that have no row in --out yet.")
+    boolean resume;
+
+    @Option(names = "--keep-recordings", description = "Keep each run's recording in DIR/recordings "
+            + "(scripts/replay.sh plays it; scripts/record-tool.sh metrics gives its row again).")
+    boolean keepRecordings;
+
+    @Option(names = "--jobs", paramLabel = "N", description = "Runs at once on this machine (default: its cores, "
+            + "${sys:robosim.cores}).")
+    Integer jobs;
+
+    @Option(names = "--slurm", description = "Submit the runs as a Slurm job array and a gather job that makes the "
+            + "tables (sbatch); sweep.sh status DIR shows how far it is.")
+    boolean slurm;
+
+    @Option(names = "--partition", paramLabel = "NAME", description = "With --slurm: the partition (default: the "
+            + "cluster's).")
+    String partition;
+
+    @Option(names = "--time", paramLabel = "LIMIT", description = "With --slurm: each task's time limit, as sbatch "
+            + "--time takes it (default: the partition's).")
+    String time;
+
+    @Option(names = "--max-parallel", paramLabel = "K", defaultValue = "100", description = "With --slurm: tasks "
+            + "running at once (the array's %%K; default: ${DEFAULT-VALUE}).")
+    int maxParallel;
+
+    @Option(names = "--wait", description = "With --slurm: wait until the gather job has ended, showing progress, then "
+            + "exit as a local sweep does.")
+    boolean await;
+
+    @Override
+    public Integer call() throws Exception {
+        if (spec == null) {
+            return bad("sweep: a sweep file is needed (sweep.sh SPEC.xml, or status/task/gather DIR; see --help)");
+        }
+        if (!slurm && (partition != null || time != null || await)) {
+            return bad("sweep: --partition, --time and --wait go with --slurm");
+        }
+        if ((jobs != null && jobs < 1) || maxParallel < 1) {
+            return bad("sweep: --jobs and --max-parallel must be >= 1");
+        }
+        if (slurm && jobs != null) {
+            return bad("sweep: --jobs is for this machine's pool; with --slurm, --max-parallel");
+        }
+        Sweep sweep;
+        OutputDirectory dir;
+        List<Integer> todo;
+        try {
+            sweep = SweepFile.read(spec);
+            dir = new OutputDirectory(out != null ? out : Path.of("sweep-" + name(spec) + "-"
+                    + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"))));
+            dir.prepare(sweep, resume);
+            todo = dir.missing(sweep);
+        } catch (SweepException e) {
+            return bad(e.getMessage());
+        }
+        PrintStream err = System.err;
+        err.println("sweep: " + sweep.runs() + " runs (" + sweep.combinationCount() + " combinations x " + sweep.seeds()
+                + " seeds" + (sweep.repeat() > 1 ? " x " + sweep.repeat() : "") + ", " + sweep.steps() + " steps, "
+                + sweep.layout().written() + "), " + todo.size() + " to run, into " + dir.path());
+        if (slurm) {
+            return slurm(sweep, dir, todo, err);
+        }
+        int cores = Runtime.getRuntime().availableProcessors();
+        Progress progress = new Progress(todo.size(), err, System.console() != null);
+        int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, err).run(todo, progress);
+        return finish(sweep, dir, unfinished, err);
+    }
+
+    private int slurm(Sweep sweep, OutputDirectory dir, List<Integer> todo, PrintStream err) throws Exception {
+        if (todo.isEmpty()) {
+            Gather.tables(sweep, dir);
+            err.println("sweep: every run has its row: nothing submitted; tables made");
+            return finish(sweep, dir, 0, err);
+        }
+        String script = System.getenv("ROBOSIM_SWEEP_SCRIPT");
+        if (script == null) {
+            return bad("sweep: --slurm is started by scripts/sweep.sh (ROBOSIM_SWEEP_SCRIPT names it for the tasks)");
+        }
+        Slurm.Jobs jobsSubmitted;
+        try {
+            jobsSubmitted = Slurm.submit(sweep, dir, todo, new Slurm.Options(partition, time, maxParallel,
+                    keepRecordings), Path.of(script));
+        } catch (SweepException e) {
+            return bad(e.getMessage());
+        }
+        err.println("sweep: submitted job array " + jobsSubmitted.array() + " (" + todo.size() + " tasks, at most "
+                + maxParallel + " at once) and gather job " + jobsSubmitted.gather() + " (after it); sweep.sh status "
+                + dir.path());
+        if (!await) {
+            return 0;
+        }
+        Progress progress = new Progress(todo.size(), err, System.console() != null);
+        int seen = 0;
+        while (true) {
+            boolean active = Slurm.active(jobsSubmitted);
+            List<Row> rows = dir.rowsWritten();
+            List<Row> fresh = rows.stream().filter(r -> todo.contains(r.index())).toList();
+            for (int i = seen; i < fresh.size(); i++) {
+                progress.finished(fresh.get(i).ok());
+            }
+            seen = Math.max(seen, fresh.size());
+            if (!active) {
+                break;
+            }
+            Thread.sleep(1000); // (polling squeue: Slurm tells no one when a job ends)
+        }
+        progress.close();
+        return finish(sweep, dir, todo.size() - seen, err);
+    }
+
+    /** The sweep's end: tables made (again), one line, and the exit code. */
+    private static int finish(Sweep sweep, OutputDirectory dir, int unfinished, PrintStream err) throws IOException {
+        int rows = Gather.tables(sweep, dir);
+        long failed = dir.rowsWritten().stream().filter(r -> !r.ok()).count();
+        long missing = sweep.runs() - rows;
+        err.println("sweep: " + rows + " of " + sweep.runs() + " runs have rows, " + failed + " failed"
+                + (missing > 0 ? ", " + missing + " without a row (--resume runs them)" : "") + "; tables and plots in "
+                + dir.path());
+        return failed > 0 || missing > 0 || unfinished > 0 ? EXIT_RUNS_FAILED : 0;
+    }
+
+    private static String name(Path spec) {
+        String n = spec.getFileName().toString();
+        return n.endsWith(".xml") ? n.substring(0, n.length() - 4) : n;
+    }
+
+    static int bad(String line) {
+        System.err.println(line);
+        return EXIT_BAD_INPUT;
+    }
+
+    /** {@code sweep.sh status DIR}: rows written, and the Slurm jobs' states. */
+    @Command(name = "status", mixinStandardHelpOptions = true, description = "Shows how far the sweep in DIR is: rows "
+            + "written and failed, and, for a Slurm sweep, its jobs' tasks by state (squeue).")
+    static final class Status implements Callable<Integer> {
+        @Parameters(paramLabel = "DIR", description = "The sweep's output directory.")
+        Path dir;
+
+        @Override
+        public Integer call() throws Exception {
+            OutputDirectory out = new OutputDirectory(dir);
+            Sweep sweep;
+            try {
+                sweep = out.sweep();
+            } catch (SweepException e) {
+                return bad(e.getMessage());
+            }
+            List<Row> rows = out.rowsWritten();
+            long failed = rows.stream().filter(r -> !r.ok()).count();
+            System.out.println(out.path() + ": " + rows.size() + " of " + sweep.runs() + " runs have rows, " + failed
+                    + " failed" + (java.nio.file.Files.exists(out.path().resolve("runs.csv")) ? "; runs.csv written" : ""));
+            Slurm.Jobs jobs = Slurm.jobs(out);
+            if (jobs != null) {
+                try {
+                    Map<String, Integer> states = Slurm.states(jobs);
+                    System.out.println("slurm: array " + jobs.array() + ", gather " + jobs.gather() + ": " + (states.isEmpty()
+                            ? "no longer shown by squeue (ended)" : states.toString().replaceAll("[{}]", "")));
+                } catch (SweepException e) {
+                    System.out.println("slurm: " + e.getMessage());
+                }
+            }
+            return 0;
+        }
+    }
+
+    /** {@code sweep.sh task DIR INDEX}: one run of the sweep in DIR, as a Slurm task runs it. */
+    @Command(name = "task", mixinStandardHelpOptions = true, description = "Runs run INDEX of the sweep in DIR and "
+            + "writes its row (what each task of a Slurm sweep's array does); nothing if it has its row already.")
+    static final class Task implements Callable<Integer> {
+        @Parameters(index = "0", paramLabel = "DIR", description = "The sweep's output directory.")
+        Path dir;
+
+        @Parameters(index = "1", paramLabel = "INDEX", description = "The run (from 0).")
+        int index;
+
+        @Option(names = "--keep-recordings", description = "Keep the run's recording in DIR/recordings.")
+        boolean keepRecordings;
+
+        @Override
+        public Integer call() throws Exception {
+            OutputDirectory out = new OutputDirectory(dir);
+            Sweep sweep;
+            try {
+                sweep = out.sweep();
+                if (index < 0 || index >= sweep.runs()) {
+                    return bad("sweep: run " + index + " is not one of the " + sweep.runs() + " runs of " + sweep.file());
+                }
+            } catch (SweepException e) {
+                return bad(e.getMessage());
+            }
+            if (java.nio.file.Files.exists(out.row(index))) {
+                System.err.println("sweep: run " + index + " has its row already");
+                return 0;
+            }
+            java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
+            // (Slurm ends a task past its time with SIGTERM: the run then writes no row)
+            Runtime.getRuntime().addShutdownHook(new Thread(() -> stopping.set(true), "sweep-stop"));
+            try (ChildProcesses children = new ChildProcesses(List.of())) {
+                Row row = new SweepRun(sweep, out, children, keepRecordings, stopping::get).run(index);
+                System.err.println("sweep: run " + index + ": " + (row == null ? "stopped, no row" : row.values().get("status")));
+                return row == null ? EXIT_RUNS_FAILED : 0;
+            }
+        }
+    }
+
+    /** {@code sweep.sh gather DIR}: the tables and plots from the rows written. */
+    @Command(name = "gather", mixinStandardHelpOptions = true, description = "Makes runs.csv, summary.csv and the plots "
+            + "of the sweep in DIR from the rows written so far (a Slurm sweep's gather job does this).")
+    static final class GatherRows implements Callable<Integer> {
+        @Parameters(paramLabel = "DIR", description = "The sweep's output directory.")
+        Path dir;
+
+        @Override
+        public Integer call() throws Exception {
+            OutputDirectory out = new OutputDirectory(dir);
+            try {
+                return finish(out.sweep(), out, 0, System.err);
+            } catch (SweepException e) {
+                return bad(e.getMessage());
+            }
+        }
+    }
+
+    public static void main(String[] args) {
+        System.setProperty("robosim.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
+        CommandLine cl = new CommandLine(new SweepMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("sweep: " + ex.getMessage() + " (see --help)");
+            return EXIT_BAD_INPUT;
+        });
+        System.exit(cl.execute(args));
+    }
+}

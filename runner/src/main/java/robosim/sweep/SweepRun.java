@@ -1,0 +1,126 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import robosim.protocol.Printable;
+import robosim.runner.ChildProcesses;
+
+/**
+ * Runs one run of a sweep as its own process (the headless runner, in the sweep's layout, recording) and writes
+ * its row from the run's summary line and its recording. The same on this machine's pool and in a Slurm task, so
+ * both give the same rows but for the wall time. A run ended by a signal (Ctrl-C, a kill, Slurm's time limit)
+ * writes no row: {@code --resume} runs it again.
+ */
+final class SweepRun {
+    /** Exit codes from 128 up are a signal's (128 + its number): the run was stopped, not finished. */
+    private static final int SIGNALLED = 128;
+    private final Sweep sweep;
+    private final OutputDirectory out;
+    private final ChildProcesses children;
+    private final boolean keepRecordings;
+    private final java.util.function.BooleanSupplier stopped;
+
+    /** Runs of {@code sweep} into {@code out}; {@code stopped}: the sweep is being stopped (a run ending then writes no row). */
+    SweepRun(Sweep sweep, OutputDirectory out, ChildProcesses children, boolean keepRecordings,
+            java.util.function.BooleanSupplier stopped) {
+        this.sweep = sweep;
+        this.out = out;
+        this.children = children;
+        this.keepRecordings = keepRecordings;
+        this.stopped = stopped;
+    }
+
+    /** Runs run {@code index} and writes its row; null when it was stopped by a signal or the sweep's stop (no row). */
+    Row run(int index) throws IOException, InterruptedException {
+        Sweep.Run run = sweep.run(index);
+        Path recording = out.recording(index);
+        Path log = out.log(index);
+        Files.deleteIfExists(recording); // (a run stopped before: the runner records only into a new file)
+        List<String> args = new ArrayList<>(List.of("--env", sweep.world().toString(), "--steps",
+                Long.toString(sweep.steps()), "--seed", Long.toString(run.seed()), "--record", recording.toString()));
+        run.parameters().forEach((name, value) -> args.addAll(List.of("--param", name + "=" + value)));
+        args.addAll(sweep.layout().options());
+        if (sweep.runTimeoutS() > 0) {
+            args.addAll(List.of("--timeout-s", Long.toString(sweep.runTimeoutS())));
+        }
+        long start = System.nanoTime();
+        Process process = children.startLogged("run " + index, "robosim.runner.HeadlessRunner", args, log);
+        int code;
+        try {
+            code = process.waitFor();
+        } catch (InterruptedException e) {
+            process.destroy();
+            throw e;
+        }
+        double wallS = (System.nanoTime() - start) / 1e9;
+        if (code >= SIGNALLED || stopped.getAsBoolean()) {
+            return null;
+        }
+        Map<String, String> values = new LinkedHashMap<>();
+        values.put("index", Integer.toString(index));
+        values.put("seed", Long.toString(run.seed()));
+        values.put("repetition", Integer.toString(run.repetition()));
+        values.putAll(run.parameters());
+        List<String> lines = Files.readAllLines(log, StandardCharsets.UTF_8);
+        Map<String, String> summary = summary(lines);
+        String error = code == 0 ? "" : lastError(lines);
+        Map<String, Double> metrics = Map.of();
+        if (Files.exists(recording)) {
+            try {
+                metrics = RunMetrics.of(recording, sweep.metrics(), sweep.areaCellM());
+            } catch (IOException | RuntimeException e) {
+                error = error.isEmpty() ? "metrics: " + e.getMessage() : error;
+            }
+        } else if (code == 0) {
+            error = "no recording: " + recording;
+        }
+        values.put("status", code == 0 && error.isEmpty() ? Row.OK : Row.FAILED);
+        values.put("exit_code", Integer.toString(code));
+        for (String field : List.of("steps", "robots", "messages", "control_failed")) {
+            values.put(field, summary.getOrDefault(field, ""));
+        }
+        metrics.forEach((name, value) -> values.put(name, Csv.number(value)));
+        values.put("error", Printable.of(error, 300));
+        values.put("wall_s", String.format(java.util.Locale.ROOT, "%.3f", wallS));
+        Row row = new Row(values);
+        row.write(out.row(index));
+        if (!keepRecordings) {
+            Files.deleteIfExists(recording);
+        }
+        return row;
+    }
+
+    /** The fields of the runner's summary line ({@code steps=... robots=...}), the last one in its output. */
+    private static Map<String, String> summary(List<String> lines) {
+        Map<String, String> fields = new LinkedHashMap<>();
+        for (int i = lines.size() - 1; i >= 0; i--) {
+            if (lines.get(i).startsWith("steps=")) {
+                for (String part : lines.get(i).trim().split("\\s+")) {
+                    int eq = part.indexOf('=');
+                    if (eq > 0) {
+                        fields.put(part.substring(0, eq), part.substring(eq + 1));
+                    }
+                }
+                break;
+            }
+        }
+        return fields;
+    }
+
+    /** A failed run's reason: its last line that is neither the summary nor an INFO or DEBUG log line. */
+    private static String lastError(List<String> lines) {
+        for (int i = lines.size() - 1; i >= 0; i--) {
+            String l = lines.get(i).strip();
+            if (!l.isEmpty() && !l.startsWith("steps=") && !l.contains(" INFO ") && !l.contains(" DEBUG ")) {
+                return l;
+            }
+        }
+        return "(the run wrote nothing)";
+    }
+}

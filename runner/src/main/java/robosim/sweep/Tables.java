@@ -1,0 +1,138 @@
+package robosim.sweep;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.apache.commons.math3.distribution.TDistribution;
+import org.apache.commons.math3.stat.descriptive.SummaryStatistics;
+
+/**
+ * The tables made from a sweep's rows: {@code runs.csv} (every row, by index, the columns of all of them) and
+ * {@code summary.csv} (one row per combination of the parameters: how many runs, how many failed, and per metric
+ * the mean, the sample standard deviation and the 95% confidence interval of the mean, Student's t, over the runs
+ * that succeeded). Each is written whole, then renamed into place.
+ */
+final class Tables {
+    /** The metrics of the rows: every column that is neither the run's nor a parameter, in first-seen order. */
+    final List<String> metrics;
+    /** Each combination's statistics, by combination (parameter values in sweep order), in run order. */
+    final Map<Map<String, String>, Map<String, SummaryStatistics>> byCombination = new LinkedHashMap<>();
+    /** Runs and failed runs per combination. */
+    final Map<Map<String, String>, int[]> counts = new LinkedHashMap<>();
+    private final Sweep sweep;
+    private final List<Row> rows;
+    private final List<String> columns;
+
+    Tables(Sweep sweep, List<Row> rows) {
+        this.sweep = sweep;
+        this.rows = rows;
+        Set<String> metricSet = new LinkedHashSet<>();
+        Set<String> fixed = new LinkedHashSet<>(Row.FIRST);
+        fixed.addAll(sweep.values().keySet());
+        fixed.addAll(Row.RUN);
+        fixed.addAll(Row.LAST);
+        for (Row r : rows) {
+            for (String c : r.values().keySet()) {
+                if (!fixed.contains(c)) {
+                    metricSet.add(c);
+                }
+            }
+        }
+        metrics = List.copyOf(metricSet);
+        columns = new ArrayList<>(Row.FIRST);
+        columns.addAll(sweep.values().keySet());
+        columns.addAll(Row.RUN);
+        columns.addAll(metrics);
+        columns.addAll(Row.LAST);
+        for (int c = 0; c < sweep.combinationCount(); c++) {
+            byCombination.put(sweep.combination(c), new LinkedHashMap<>());
+            counts.put(sweep.combination(c), new int[2]);
+        }
+        for (Row r : rows) {
+            Map<String, String> combination = combinationOf(r);
+            int[] n = counts.get(combination);
+            if (n == null) {
+                continue; // (not a combination of this sweep: ignored)
+            }
+            n[0]++;
+            if (!r.ok()) {
+                n[1]++;
+                continue;
+            }
+            Map<String, SummaryStatistics> stats = byCombination.get(combination);
+            for (String m : metrics) {
+                String v = r.values().get(m);
+                if (v != null && !v.isEmpty()) {
+                    stats.computeIfAbsent(m, k -> new SummaryStatistics()).addValue(Double.parseDouble(v));
+                }
+            }
+        }
+    }
+
+    private Map<String, String> combinationOf(Row r) {
+        Map<String, String> c = new LinkedHashMap<>();
+        for (String p : sweep.values().keySet()) {
+            c.put(p, r.values().get(p));
+        }
+        return c;
+    }
+
+    /** Writes {@code runs.csv} and {@code summary.csv} into {@code dir}. */
+    void write(Path dir) throws IOException {
+        StringBuilder runs = new StringBuilder(Csv.line(columns)).append('\n');
+        for (Row r : rows) {
+            List<String> line = new ArrayList<>();
+            for (String c : columns) {
+                line.add(r.values().getOrDefault(c, ""));
+            }
+            runs.append(Csv.line(line)).append('\n');
+        }
+        replace(dir.resolve("runs.csv"), runs.toString());
+        List<String> header = new ArrayList<>(sweep.values().keySet());
+        header.addAll(List.of("runs", "failed"));
+        for (String m : metrics) {
+            header.addAll(List.of(m + "_mean", m + "_sd", m + "_ci95_low", m + "_ci95_high"));
+        }
+        StringBuilder summary = new StringBuilder(Csv.line(header)).append('\n');
+        byCombination.forEach((combination, stats) -> {
+            List<String> line = new ArrayList<>(combination.values());
+            int[] n = counts.get(combination);
+            line.add(Integer.toString(n[0]));
+            line.add(Integer.toString(n[1]));
+            for (String m : metrics) {
+                SummaryStatistics s = stats.get(m);
+                double[] ci = interval(s);
+                line.add(s == null ? "" : Csv.number(s.getMean()));
+                line.add(s == null || s.getN() < 2 ? "" : Csv.number(s.getStandardDeviation()));
+                line.add(ci == null ? "" : Csv.number(ci[0]));
+                line.add(ci == null ? "" : Csv.number(ci[1]));
+            }
+            summary.append(Csv.line(line)).append('\n');
+        });
+        replace(dir.resolve("summary.csv"), summary.toString());
+    }
+
+    /** The 95% confidence interval of the mean (Student's t, n - 1 degrees of freedom); null for fewer than 2 values. */
+    static double[] interval(SummaryStatistics s) {
+        if (s == null || s.getN() < 2) {
+            return null;
+        }
+        double t = new TDistribution(null, s.getN() - 1).inverseCumulativeProbability(0.975);
+        double half = t * s.getStandardDeviation() / Math.sqrt(s.getN());
+        return new double[] {s.getMean() - half, s.getMean() + half};
+    }
+
+    private static void replace(Path file, String text) throws IOException {
+        Path temporary = file.resolveSibling("." + file.getFileName() + ".tmp");
+        Files.writeString(temporary, text, StandardCharsets.UTF_8);
+        Files.move(temporary, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
+    }
+}

@@ -1,0 +1,113 @@
+package robosim.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/** Sweep files: how a good one numbers its runs, and every bad one refused in one line before any run. */
+class SweepFileTest {
+    static final Path WANDER = Path.of("../test-envs/wander.xml").toAbsolutePath().normalize();
+
+    @TempDir
+    Path dir;
+
+    private Path write(String xml) throws Exception {
+        Path f = dir.resolve("sweep.xml");
+        Files.writeString(f, xml);
+        return f;
+    }
+
+    static String sweep(String attributes, String body) {
+        return "<sweep world=\"" + WANDER + "\" steps=\"100\"" + attributes + ">" + body + "</sweep>";
+    }
+
+    @Test
+    void runsAreNumberedCombinationsThenSeedsThenRepetitions() throws Exception {
+        Sweep s = SweepFile.read(write(sweep(" repeat=\"2\"", "<seeds from=\"5\" to=\"6\"/>"
+                + "<param name=\"speed\" values=\"200 400 600\"/>")));
+        assertEquals(12, s.runs());
+        assertEquals(new Sweep.Run(0, 5, 1, Map.of("speed", "200")), s.run(0));
+        assertEquals(new Sweep.Run(1, 5, 2, Map.of("speed", "200")), s.run(1));
+        assertEquals(new Sweep.Run(2, 6, 1, Map.of("speed", "200")), s.run(2));
+        assertEquals(new Sweep.Run(4, 5, 1, Map.of("speed", "400")), s.run(4));
+        assertEquals(new Sweep.Run(11, 6, 2, Map.of("speed", "600")), s.run(11));
+        assertEquals(Sweep.Layout.ONE_JVM, s.layout());
+        assertEquals(List.of(), s.metrics(), "none named: every built-in one and every report");
+    }
+
+    @Test
+    void twoParametersMakeAGridTheFirstChangingSlowest() throws Exception {
+        Path world = dir.resolve("world.xml");
+        Files.writeString(world, Files.readString(WANDER).replace("x=\"1\" y=\"1\"", "x=\"${x:1}\" y=\"1\""));
+        Sweep s = SweepFile.read(write("<sweep world=\"world.xml\" steps=\"10\"><seeds from=\"1\" to=\"1\"/>"
+                + "<param name=\"speed\" values=\"1 2\"/><param name=\"x\" values=\"1 1.5 2\"/></sweep>"));
+        assertEquals(List.of(Map.of("speed", "1", "x", "1"), Map.of("speed", "1", "x", "1.5"),
+                Map.of("speed", "1", "x", "2"), Map.of("speed", "2", "x", "1"), Map.of("speed", "2", "x", "1.5"),
+                Map.of("speed", "2", "x", "2")), s.combinations());
+    }
+
+    private String refused(String xml) throws Exception {
+        Path f = write(xml);
+        SweepException e = assertThrows(SweepException.class, () -> SweepFile.read(f));
+        assertFalse(e.getMessage().contains("\n"), "one line: " + e.getMessage());
+        assertTrue(e.getMessage().startsWith(f.toString()), "names the file: " + e.getMessage());
+        return e.getMessage();
+    }
+
+    @Test
+    void everyBadFileIsOneLine() throws Exception {
+        String seeds = "<seeds from=\"1\" to=\"3\"/>";
+        assertTrue(refused(sweep(" stepz=\"4\"", seeds)).contains("unknown element or attribute 'stepz'"));
+        assertTrue(refused(sweep("", seeds + "<parameter name=\"speed\"/>"))
+                .contains("unknown element or attribute 'parameter'"));
+        String unknown = refused(sweep("", seeds + "<param name=\"sped\" values=\"1 2\"/>"));
+        assertTrue(unknown.contains("no parameter 'sped' here (its parameters: speed)"), unknown);
+        assertTrue(refused(sweep("", "<seeds from=\"4\" to=\"3\"/>")).contains("is an empty range"));
+        assertTrue(refused(sweep("", "")).contains("<seeds from=\"1\" to=\"10\"/> is needed"));
+        assertTrue(refused(sweep("", seeds + "<param name=\"speed\" values=\"1 1\"/>")).contains("names a value twice"));
+        assertTrue(refused(sweep(" layout=\"cloud\"", seeds)).contains("is not one of one-jvm, processes, one-process"));
+        assertTrue(refused(sweep("", seeds + "<metrics><metric name=\"speediness\"/></metrics>"))
+                .contains("'speediness' is not a built-in metric"));
+        assertTrue(refused(sweep("", seeds + "<metrics><metric class=\"no.Such\"/></metrics>"))
+                .contains("class no.Such is not a robosim.sweep.Metric"));
+        assertTrue(refused("<sweep world=\"missing.xml\" steps=\"5\">" + seeds + "</sweep>").contains("missing.xml: file not found"));
+        Path broken = dir.resolve("broken.xml");
+        Files.writeString(broken, Files.readString(WANDER).replace("timeStepMs=\"100\"", "timeStepMs=\"-1\""));
+        assertTrue(refused("<sweep world=\"broken.xml\" steps=\"5\">" + seeds + "</sweep>")
+                .contains("timeStepMs must be > 0"));
+        Path placed = dir.resolve("placed.xml");
+        Files.writeString(placed, Files.readString(WANDER).replace("x=\"1\" y=\"1\"", "x=\"${x:1}\" y=\"1\""));
+        assertTrue(refused("<sweep world=\"placed.xml\" steps=\"5\">" + seeds + "<param name=\"x\" values=\"1 99\"/></sweep>")
+                .contains("does not fit inside the arena"), "every combination must load");
+    }
+
+    @Test
+    void theCommandRefusesABadFileWithExitTwoAndRunsNothing() throws Exception {
+        Path f = write(sweep("", "<seeds from=\"4\" to=\"3\"/>"));
+        Path out = dir.resolve("out");
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream was = System.err;
+        int code;
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+        try {
+            code = new CommandLine(new SweepMain()).execute(f.toString(), "--out", out.toString());
+        } finally {
+            System.setErr(was);
+        }
+        assertEquals(2, code);
+        assertEquals(1, err.toString(StandardCharsets.UTF_8).lines().count(), err.toString(StandardCharsets.UTF_8));
+        assertFalse(Files.exists(out), "nothing written");
+    }
+}

@@ -1,0 +1,137 @@
+package robosim.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import picocli.CommandLine;
+
+/**
+ * A sweep on this machine, end to end: each run its own process; rows, tables and plots; --resume; a failed run
+ * is a row and the sweep goes on; a kept recording alone gives the row's metrics again.
+ */
+class SweepTest {
+    @TempDir
+    Path dir;
+
+    /** Runs sweep.sh's main here with these arguments: its exit code and what it wrote on stderr. */
+    private record Result(int code, String err) {
+    }
+
+    private static synchronized Result sweep(String... args) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        PrintStream was = System.err;
+        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
+        try {
+            return new Result(new CommandLine(new SweepMain()).execute(args), err.toString(StandardCharsets.UTF_8));
+        } finally {
+            System.setErr(was);
+        }
+    }
+
+    private Path spec(String world, String body) throws Exception {
+        Path f = dir.resolve("spec.xml");
+        Files.writeString(f, "<sweep world=\"" + world + "\" steps=\"300\"><seeds from=\"1\" to=\"2\"/>" + body
+                + "</sweep>");
+        return f;
+    }
+
+    @Test
+    void rowsTablesPlotsResumeAndARecordingThatGivesTheRowAgain() throws Exception {
+        Path spec = spec(SweepFileTest.WANDER.toString(), "<param name=\"speed\" values=\"300 900\"/><metrics>"
+                + "<metric name=\"distance_m\"/><metric name=\"area_covered\"/><metric report=\"turns\"/>"
+                + "<metric class=\"" + MeanFinalX.class.getName() + "\"/></metrics>");
+        Path out = dir.resolve("out");
+        Result first = sweep(spec.toString(), "--out", out.toString(), "--jobs", "2", "--keep-recordings");
+        assertEquals(0, first.code(), first.err());
+        List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
+        assertEquals("index,seed,repetition,speed,status,exit_code,steps,robots,messages,control_failed,distance_m,"
+                + "area_covered,turns,mean_final_x_m,error,wall_s", runs.get(0));
+        assertEquals(5, runs.size(), String.join("\n", runs));
+        for (int i = 1; i < runs.size(); i++) {
+            List<String> f = Csv.fields(runs.get(i));
+            assertEquals(List.of(Integer.toString(i - 1), i % 2 == 1 ? "1" : "2", "1", i <= 2 ? "300" : "900", "ok", "0",
+                    "300", "6"), f.subList(0, 8), runs.get(i));
+            assertTrue(Double.parseDouble(f.get(10)) > 0 && Double.parseDouble(f.get(12)) >= 0, runs.get(i));
+        }
+        assertNotEquals(Csv.fields(runs.get(1)).get(10), Csv.fields(runs.get(3)).get(10), "speed changes the distance");
+        assertNotEquals(Csv.fields(runs.get(1)).get(10), Csv.fields(runs.get(2)).get(10), "the seed changes the run");
+        List<String> summary = Files.readAllLines(out.resolve("summary.csv"));
+        assertEquals(3, summary.size());
+        assertTrue(summary.get(0).startsWith("speed,runs,failed,distance_m_mean,distance_m_sd,distance_m_ci95_low,"
+                + "distance_m_ci95_high,"), summary.get(0));
+        assertTrue(summary.get(1).startsWith("300,2,0,"), summary.get(1));
+        for (String metric : List.of("distance_m", "area_covered", "turns", "mean_final_x_m")) {
+            byte[] png = Files.readAllBytes(out.resolve("plots").resolve(metric + "-vs-speed.png"));
+            assertArrayEquals(new byte[] {(byte) 0x89, 'P', 'N', 'G'}, java.util.Arrays.copyOf(png, 4), metric);
+        }
+
+        // a recording alone gives the row's metrics again
+        Path recording = out.resolve("recordings").resolve("run-000002.rec");
+        Map<String, Double> again = RunMetrics.of(recording, SweepFile.read(spec).metrics(),
+                RunMetrics.DEFAULT_AREA_CELL_M);
+        List<String> row = Csv.fields(runs.get(3));
+        assertEquals(List.of(row.get(10), row.get(11), row.get(12), row.get(13)),
+                again.values().stream().map(Csv::number).toList());
+
+        // --resume with every row there runs nothing and leaves the tables as they were
+        byte[] runsBefore = Files.readAllBytes(out.resolve("runs.csv"));
+        byte[] summaryBefore = Files.readAllBytes(out.resolve("summary.csv"));
+        Result resumed = sweep(spec.toString(), "--out", out.toString(), "--resume");
+        assertEquals(0, resumed.code(), resumed.err());
+        assertTrue(resumed.err().contains(", 0 to run,"), resumed.err());
+        assertArrayEquals(runsBefore, Files.readAllBytes(out.resolve("runs.csv")));
+        assertArrayEquals(summaryBefore, Files.readAllBytes(out.resolve("summary.csv")));
+
+        // a missing row is run again, and the same run gives the same row (but its wall time)
+        Files.delete(out.resolve("rows").resolve("run-000001.csv"));
+        Result refill = sweep(spec.toString(), "--out", out.toString(), "--resume");
+        assertEquals(0, refill.code(), refill.err());
+        assertTrue(refill.err().contains(", 1 to run,"), refill.err());
+        assertEquals(withoutWallTime(runs), withoutWallTime(Files.readAllLines(out.resolve("runs.csv"))));
+
+        // without --resume a directory that holds rows is refused
+        Result again2 = sweep(spec.toString(), "--out", out.toString());
+        assertEquals(2, again2.code());
+        assertTrue(again2.err().contains("holds this sweep's rows already; --resume"), again2.err());
+    }
+
+    static List<String> withoutWallTime(List<String> csv) {
+        List<String> out = new ArrayList<>();
+        for (String line : csv) {
+            List<String> f = Csv.fields(line);
+            out.add(String.join(",", f.subList(0, f.size() - 1)));
+        }
+        return out;
+    }
+
+    @Test
+    void aFailedRunIsARowWithItsExitCodeAndReasonAndTheSweepGoesOn() throws Exception {
+        Path world = dir.resolve("broken-control.xml");
+        Files.writeString(world, Files.readString(SweepFileTest.WANDER).replace("robosim.examples.Wander",
+                "no.such.Control"));
+        Path out = dir.resolve("failed");
+        Result r = sweep(spec(world.toString(), "").toString(), "--out", out.toString());
+        assertEquals(1, r.code(), r.err());
+        List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
+        assertEquals(3, runs.size(), "both runs have rows: " + runs);
+        for (String line : runs.subList(1, 3)) {
+            List<String> f = Csv.fields(line);
+            assertEquals(List.of("failed", "2"), f.subList(3, 5), line);
+            assertTrue(f.get(f.size() - 2).contains("no.such.Control is not on the class path"), line);
+        }
+        assertTrue(r.err().contains("2 of 2 runs have rows, 2 failed"), r.err());
+        assertEquals("runs,failed", String.join(",", Csv.fields(Files.readAllLines(out.resolve("summary.csv")).get(0))));
+    }
+}
