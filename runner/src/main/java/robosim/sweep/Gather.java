@@ -16,4 +16,14 @@ final class Gather {
         Plots.write(sweep, tables, rows, out.path());
         return rows.size();
     }
+
+    /**
+     * Writes runs.csv and summary.csv only (while the JVM stops: the plots' AWT cannot start then); returns how many
+     * rows there were.
+     */
+    static int tablesWithoutPlots(Sweep sweep, OutputDirectory out) throws IOException {
+        List<Row> rows = out.rowsWritten();
+        new Tables(sweep, rows).write(out.path());
+        return rows.size();
+    }
 }

@@ -68,9 +68,9 @@ final class LocalPool {
             joinAll(threads, STOP_WAIT_MS);
             progress.close();
             try {
-                int rows = Gather.tables(sweep, out);
+                int rows = Gather.tablesWithoutPlots(sweep, out);
                 err.println("sweep: stopped: " + rows + " of " + sweep.runs() + " runs have rows (" + out.path()
-                        + "); --resume runs the rest");
+                        + ": runs.csv and summary.csv; sweep.sh gather DIR draws the plots); --resume runs the rest");
             } catch (IOException | RuntimeException e) {
                 err.println("sweep: stopped; the tables could not be made: " + e.getMessage());
             }

@@ -24,10 +24,15 @@ record ScriptRun(int exit, String stdout, String stderr) {
 
     /** Runs {@code cmd} in {@code dir} with {@code env} added (and no ROBOSIM_* of ours); logs go to {@code logs}. */
     static ScriptRun of(Path dir, Map<String, String> env, Path logs, String... cmd) throws Exception {
+        return within(RUN_SECONDS, dir, env, logs, cmd);
+    }
+
+    /** As {@link #of}, for a script that may take up to {@code seconds}. */
+    static ScriptRun within(long seconds, Path dir, Map<String, String> env, Path logs, String... cmd) throws Exception {
         Path out = Files.createTempFile(logs, "stdout", ".txt");
         Path err = Files.createTempFile(logs, "stderr", ".txt");
         Process p = start(dir, env, cmd, ProcessBuilder.Redirect.to(out.toFile()), err);
-        int exit = awaitWithEveryProcess(p, cmd);
+        int exit = awaitWithEveryProcess(p, cmd, seconds);
         return new ScriptRun(exit, Files.readString(out), Files.readString(err));
     }
 
@@ -45,7 +50,7 @@ record ScriptRun(int exit, String stdout, String stderr) {
             }
             assertTrue(l != null, String.join(" ", cmd) + " ended before printing '" + line + "': " + seen);
             p.destroy();
-            int exit = awaitWithEveryProcess(p, cmd);
+            int exit = awaitWithEveryProcess(p, cmd, RUN_SECONDS);
             return new ScriptRun(exit, seen.toString(), Files.readString(err));
         } finally {
             p.destroyForcibly();
@@ -63,12 +68,12 @@ record ScriptRun(int exit, String stdout, String stderr) {
         return pb.start();
     }
 
-    /** Waits for {@code p}, then for every process of its session; returns its exit code. */
-    private static int awaitWithEveryProcess(Process p, String[] cmd) throws Exception {
+    /** Waits for {@code p} (up to {@code seconds}), then for every process of its session; returns its exit code. */
+    private static int awaitWithEveryProcess(Process p, String[] cmd, long seconds) throws Exception {
         long session = p.pid(); // setsid execs in place: not a group leader, so its pid is the session id
         String what = String.join(" ", cmd);
         try {
-            assertTrue(p.waitFor(RUN_SECONDS, TimeUnit.SECONDS), what + " did not end within " + RUN_SECONDS + " s");
+            assertTrue(p.waitFor(seconds, TimeUnit.SECONDS), what + " did not end within " + seconds + " s");
             List<String> left = new ArrayList<>();
             for (ProcessHandle h : inSession(session)) {
                 try {

@@ -1,0 +1,79 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.DirectoryStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Ctrl-C on scripts/sweep.sh: every run stops at once, no run is left running, the rows written stay whole and
+ * the tables are made from them; --resume then runs only the rest.
+ */
+class SweepStopIT {
+    private static final Path REPO = Path.of("..").toAbsolutePath().normalize();
+
+    @TempDir
+    Path tmp;
+
+    private static List<Path> rows(Path out) throws Exception {
+        List<Path> rows = new ArrayList<>();
+        if (Files.isDirectory(out.resolve("rows"))) {
+            try (DirectoryStream<Path> s = Files.newDirectoryStream(out.resolve("rows"))) {
+                s.forEach(rows::add);
+            }
+        }
+        return rows;
+    }
+
+    @Test
+    void ctrlCStopsEveryRunKeepsTheRowsAndResumeRunsTheRest() throws Exception {
+        Path spec = tmp.resolve("spec.xml");
+        Files.writeString(spec, "<sweep world=\"" + REPO.resolve("test-envs/wander.xml") + "\" steps=\"1500\">"
+                + "<seeds from=\"1\" to=\"8\"/></sweep>");
+        Path out = tmp.resolve("out");
+        Path err = tmp.resolve("stderr.txt");
+        Process sweep = new ProcessBuilder("setsid", REPO.resolve("scripts/sweep.sh").toString(), spec.toString(),
+                "--out", out.toString(), "--jobs", "1").redirectErrorStream(true).redirectOutput(err.toFile()).start();
+        long session = sweep.pid();
+        try {
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+            while (rows(out).isEmpty()) { // (the first row: a file appearing, polled with a deadline)
+                assertTrue(sweep.isAlive(), "the sweep ended before its first row: " + Files.readString(err));
+                assertTrue(System.nanoTime() < deadline, "no row within 120 s: " + Files.readString(err));
+                Thread.sleep(50);
+            }
+            new ProcessBuilder("kill", "-INT", Long.toString(sweep.pid())).start().waitFor();
+            assertTrue(sweep.waitFor(60, TimeUnit.SECONDS), "the sweep did not stop within 60 s of Ctrl-C");
+            assertEquals(130, sweep.exitValue(), Files.readString(err));
+            String said = Files.readString(err);
+            assertTrue(said.contains("sweep: stopped: ") && said.contains("--resume runs the rest"), said);
+            assertTrue(ProcessHandle.allProcesses().noneMatch(h -> h.info().commandLine().orElse("")
+                    .contains(out.toString())), "a run of the sweep is still running");
+        } finally {
+            sweep.destroyForcibly();
+        }
+        List<Path> kept = rows(out);
+        assertFalse(kept.isEmpty());
+        assertTrue(kept.size() < 8, "stopped before the end: " + kept);
+        for (Path row : kept) {
+            assertTrue(row.getFileName().toString().matches("run-\\d{6}\\.csv"), "no half-written row: " + row);
+            assertEquals(2, Files.readAllLines(row).size(), row.toString());
+        }
+        assertEquals(kept.size() + 1, Files.readAllLines(out.resolve("runs.csv")).size(), "the tables hold the rows kept");
+
+        ScriptRun resumed = ScriptRun.within(300, tmp, Map.of(), tmp, REPO.resolve("scripts/sweep.sh").toString(),
+                spec.toString(), "--out", out.toString(), "--resume");
+        assertEquals(0, resumed.exit(), resumed.stderr());
+        assertTrue(resumed.stderr().contains(", " + (8 - kept.size()) + " to run,"), resumed.stderr());
+        assertEquals(9, Files.readAllLines(out.resolve("runs.csv")).size());
+    }
+}
