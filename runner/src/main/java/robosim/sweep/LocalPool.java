@@ -34,7 +34,7 @@ final class LocalPool {
 
     /** Runs {@code todo}; returns the runs that were stopped by a signal from outside (they have no row). */
     int run(List<Integer> todo, Progress progress) throws InterruptedException {
-        ChildProcesses children = new ChildProcesses(List.of());
+        ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
         SweepRun runner = new SweepRun(sweep, out, children, keepRecordings, () -> stopping);
         AtomicInteger next = new AtomicInteger();
         List<Thread> threads = new ArrayList<>();

@@ -18,12 +18,21 @@ import java.util.Map;
  * @param world the environment file (absolute)
  * @param values each varied parameter's values, in the file's order
  * @param runTimeoutS how long one run may take, s (0: no limit)
+ * @param jvmOptions the JVM options of each run's process
  * @param metrics the metrics asked for (none: every built-in one and every report)
  * @param areaCellM the side of the grid's cells {@code area_covered} counts, m
  */
 public record Sweep(Path file, Path world, long steps, long seedFrom, long seedTo, int repeat,
-        Map<String, List<String>> values, Layout layout, long runTimeoutS, List<MetricChoice> metrics,
-        double areaCellM) {
+        Map<String, List<String>> values, Layout layout, long runTimeoutS, List<String> jvmOptions,
+        List<MetricChoice> metrics, double areaCellM) {
+    /**
+     * The runs' JVM options unless a sweep file says otherwise ({@code jvm="..."}): for many short runs at once,
+     * compile with C1 alone and collect with one thread, which costs a short run about 40% less CPU (its JVM does
+     * not spend a second core on C2 and parallel GC threads) and a long one about as much
+     * ({@code docs/PERFORMANCE.md}, "Sweeps"). {@code jvm=""}: the JVM's defaults, for long runs of large worlds.
+     */
+    public static final List<String> SHORT_RUNS = List.of("-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC");
+
     /** How each run's parts are laid out: the headless runner's options for it. */
     public enum Layout {
         /** Everything in one JVM ({@code headless.sh --one-jvm}): the default, about one core a run. */
@@ -72,6 +81,7 @@ public record Sweep(Path file, Path world, long steps, long seedFrom, long seedT
         values.forEach((name, list) -> copy.put(name, List.copyOf(list)));
         values = Collections.unmodifiableMap(copy);
         metrics = List.copyOf(metrics);
+        jvmOptions = List.copyOf(jvmOptions);
     }
 
     /** Seeds in the range. */

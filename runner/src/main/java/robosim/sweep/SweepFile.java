@@ -46,6 +46,8 @@ public final class SweepFile {
     public String layout;
     @JacksonXmlProperty(isAttribute = true)
     public Long runTimeoutS;
+    @JacksonXmlProperty(isAttribute = true)
+    public String jvm;
     public SeedsXml seeds;
     @JacksonXmlElementWrapper(useWrapping = false)
     @JacksonXmlProperty(localName = "param")
@@ -150,6 +152,14 @@ public final class SweepFile {
         if (timeout < 0) {
             throw new SweepException(where + " runTimeoutS must be >= 0 (0: no limit), got " + timeout);
         }
+        List<String> jvmOptions = jvm == null ? Sweep.SHORT_RUNS : jvm.isBlank() ? List.of()
+                : List.of(jvm.trim().split("\\s+"));
+        for (String o : jvmOptions) {
+            if (!o.startsWith("-") || o.equals("-cp") || o.equals("-classpath") || o.startsWith("--class-path")) {
+                throw new SweepException(where + " jvm=\"" + jvm + "\": '" + o + "' is not a JVM option this can take "
+                        + "(options start with '-'; the class path is ROBOSIM_CLASSPATH's)");
+            }
+        }
         if (seeds == null || seeds.from == null || seeds.to == null) {
             throw new SweepException(file + ": <seeds from=\"1\" to=\"10\"/> is needed (the seeds each combination runs "
                     + "with)");
@@ -175,7 +185,7 @@ public final class SweepFile {
             }
         }
         Sweep sweep = new Sweep(file.toAbsolutePath(), worldFile, steps, seeds.from, seeds.to, repeats, values,
-                runLayout, timeout, metrics(file), areaCell(file));
+                runLayout, timeout, jvmOptions, metrics(file), areaCell(file));
         if (sweep.runs() > MAX_RUNS) {
             throw new SweepException(file + ": " + sweep.runs() + " runs, at most " + MAX_RUNS);
         }

@@ -239,7 +239,7 @@ public final class SweepMain implements Callable<Integer> {
             java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
             // (Slurm ends a task past its time with SIGTERM: the run then writes no row)
             Runtime.getRuntime().addShutdownHook(new Thread(() -> stopping.set(true), "sweep-stop"));
-            try (ChildProcesses children = new ChildProcesses(List.of())) {
+            try (ChildProcesses children = new ChildProcesses(sweep.jvmOptions())) {
                 Row row = new SweepRun(sweep, out, children, keepRecordings, stopping::get).run(index);
                 System.err.println("sweep: run " + index + ": " + (row == null ? "stopped, no row" : row.values().get("status")));
                 return row == null ? EXIT_RUNS_FAILED : 0;

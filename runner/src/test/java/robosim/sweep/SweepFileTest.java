@@ -45,6 +45,8 @@ class SweepFileTest {
         assertEquals(new Sweep.Run(11, 6, 2, Map.of("speed", "600")), s.run(11));
         assertEquals(Sweep.Layout.ONE_JVM, s.layout());
         assertEquals(List.of(), s.metrics(), "none named: every built-in one and every report");
+        assertEquals(Sweep.SHORT_RUNS, s.jvmOptions());
+        assertEquals(List.of(), SweepFile.read(write(sweep(" jvm=\"\"", "<seeds from=\"1\" to=\"1\"/>"))).jvmOptions());
     }
 
     @Test
@@ -78,6 +80,7 @@ class SweepFileTest {
         assertTrue(refused(sweep("", "")).contains("<seeds from=\"1\" to=\"10\"/> is needed"));
         assertTrue(refused(sweep("", seeds + "<param name=\"speed\" values=\"1 1\"/>")).contains("names a value twice"));
         assertTrue(refused(sweep(" layout=\"cloud\"", seeds)).contains("is not one of one-jvm, processes, one-process"));
+        assertTrue(refused(sweep(" jvm=\"-Xmx1g -cp /x\"", seeds)).contains("'-cp' is not a JVM option this can take"));
         assertTrue(refused(sweep("", seeds + "<metrics><metric name=\"speediness\"/></metrics>"))
                 .contains("'speediness' is not a built-in metric"));
         assertTrue(refused(sweep("", seeds + "<metrics><metric class=\"no.Such\"/></metrics>"))
