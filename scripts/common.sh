@@ -171,8 +171,13 @@ robosim_why_build() {
 
 # Builds (quietly, output on stderr) when nothing is built yet or a source is newer than the build.
 # One build at a time per repository: scripts started together wait (flock) and find it done.
+# ROBOSIM_NO_BUILD=1: never (a Slurm sweep's tasks, on nodes that share the build its submission made).
 robosim_build_if_stale() {
   local why lock
+  if [ "${ROBOSIM_NO_BUILD:-}" = 1 ]; then
+    [ -n "$(robosim_runner_jar)" ] || robosim_fail "ROBOSIM_NO_BUILD=1, but RoboSim is not built"
+    return 0
+  fi
   why=$(robosim_why_build)
   [ -n "$why" ] || return 0
   lock="${TMPDIR:-/tmp}/robosim-build-$(echo "$ROBOSIM_HOME" | cksum | cut -d' ' -f1).lock"

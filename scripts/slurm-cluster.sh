@@ -355,6 +355,15 @@ do_start() {
     do_stop
   fi
   starting=1
+  # root writes, chowns and kills by pid files there: a directory someone else made first (or a link) is refused
+  if [ -L "$dir" ] || { [ -e "$dir" ] && [ "$(stat -c %u "$dir")" != 0 ]; }; then
+    fail_usage "$dir is a link or not root's: remove it or set ROBOSIM_SLURM_DIR to a directory of root's"
+  fi
+  mkdir -p "$dir"
+  chmod 755 "$dir"
+  for d in run log slurmctld slurmd munge; do
+    [ ! -L "$dir/$d" ] || fail_usage "$dir/$d is a link: remove it"
+  done
   mkdir -p "$dir"/{run,log,slurmctld,slurmd,munge}
   chmod 755 "$dir" "$dir/run" "$dir/log"
   chmod 700 "$dir/slurmctld" "$dir/slurmd"

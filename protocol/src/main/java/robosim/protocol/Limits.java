@@ -22,8 +22,11 @@ public final class Limits {
     public static final int MAX_TAGS = 1_000_000;
     /** Plug-in sensors on one robot. */
     public static final int MAX_SENSORS = 64;
-    /** Parameters one robot is given (an environment file's {@code <param>}s). */
+    /** Parameters one robot is given (an environment file's {@code <param>}s, the world's and its own together). */
     public static final int MAX_PARAMETERS = 256;
+    /** The longest parameter value, bytes (modified UTF-8), and name, characters. */
+    public static final int MAX_PARAMETER_BYTES = 4096;
+    public static final int MAX_PARAMETER_NAME_CHARS = 64;
     /** Values in one sensor reading (a laser scan of 0.1-degree steps all round fits). */
     public static final int MAX_SENSOR_VALUES = 4096;
     /** Messages one robot may send, or receive, in one step. */

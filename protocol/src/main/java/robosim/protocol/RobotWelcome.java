@@ -170,7 +170,14 @@ public final class RobotWelcome implements java.io.Externalizable {
         int n = Limits.checkCount("parameter count", in.readInt(), Limits.MAX_PARAMETERS);
         Map<String, String> read = new LinkedHashMap<>();
         for (int i = 0; i < n; i++) {
-            read.put(in.readUTF(), in.readUTF());
+            String name = in.readUTF();
+            String value = in.readUTF();
+            if (name.isEmpty() || name.length() > Limits.MAX_PARAMETER_NAME_CHARS
+                    || Limits.utfLength(value) > Limits.MAX_PARAMETER_BYTES || read.put(name, value) != null) {
+                throw new ProtocolException("parameter '" + Printable.of(name, Limits.MAX_PARAMETER_NAME_CHARS)
+                        + "': a name of 1 to " + Limits.MAX_PARAMETER_NAME_CHARS + " characters, given once, a value of at "
+                        + "most " + Limits.MAX_PARAMETER_BYTES + " bytes");
+            }
         }
         parameters = java.util.Collections.unmodifiableMap(read);
     }

@@ -64,6 +64,8 @@ public final class ChildProcesses implements AutoCloseable {
     private final List<String> jvmOptions;
     private final ClassDataArchives archives = ClassDataArchives.fromEnvironment();
     private final Thread onSignal = new Thread(this::close, "stop-children");
+    /** Set once {@link #close} has begun: a child started after that is stopped at once (guarded by {@code this}). */
+    private boolean closed;
 
     /** Children with these JVM options (after each child's own); stopped on close and when this JVM is told to stop. */
     public ChildProcesses(List<String> jvmOptions) {
@@ -90,7 +92,7 @@ public final class ChildProcesses implements AutoCloseable {
         ClassDataArchives.Launch archive = archives.launch(mainClass, classPath, options);
         Child child = new Child(name, startOrFinish(new ProcessBuilder(command(archive, options, mainClass, args)),
                 archive), archive);
-        started.add(child);
+        keep(child);
         pipe(name + ".out", child.process.getInputStream(), stdoutLines != null ? stdoutLines : System.err::println,
                 () -> { });
         pipe(name + ".err", child.process.getErrorStream(), line -> {
@@ -112,9 +114,32 @@ public final class ChildProcesses implements AutoCloseable {
         ProcessBuilder builder = new ProcessBuilder(command(archive, jvmOptions, mainClass, args))
                 .redirectErrorStream(true).redirectOutput(log.toFile());
         Child child = new Child(name, startOrFinish(builder, archive), archive);
-        started.add(child);
-        child.process.onExit().thenRun(archive::finish);
+        keep(child);
+        child.process.onExit().thenRun(() -> {
+            archive.finish();
+            started.remove(child); // (a sweep's runs: thousands, each waited for by its caller)
+        });
         return child.process;
+    }
+
+    /**
+     * Adds a started child to those {@link #close} stops; when close has begun already (a child started while this
+     * JVM is being stopped), stops it at once and says so.
+     */
+    private void keep(Child child) throws IOException {
+        boolean late;
+        synchronized (this) {
+            late = closed;
+            if (!late) {
+                started.add(child);
+            }
+        }
+        if (late) {
+            child.process.descendants().forEach(ProcessHandle::destroyForcibly);
+            child.process.destroyForcibly();
+            child.archive.finish();
+            throw new IOException(child.name + ": started while every child is being stopped; stopped at once");
+        }
     }
 
     private List<String> command(ClassDataArchives.Launch archive, List<String> options, String mainClass,
@@ -224,6 +249,9 @@ public final class ChildProcesses implements AutoCloseable {
      */
     @Override
     public void close() {
+        synchronized (this) {
+            closed = true;
+        }
         List<ProcessHandle> all = new ArrayList<>();
         for (Child c : started) {
             c.process.descendants().forEach(all::add);

@@ -34,8 +34,10 @@ public record MetricChoice(Kind kind, String name) {
             case REPORT -> Report.problem(name, 0);
             case CLASS -> {
                 try {
-                    instance();
-                    yield null;
+                    String column = instance().name();
+                    yield Report.problem(column, 0) != null ? "class " + name + " names its metric badly: "
+                            + Report.problem(column, 0) : RunMetrics.reserved(column) ? "class " + name + " names its "
+                            + "metric '" + column + "', a built-in's or a row's own column" : null;
                 } catch (ReflectiveOperationException | LinkageError | ClassCastException e) {
                     yield "class " + name + " is not a robosim.sweep.Metric with a public no-argument constructor on "
                             + "the class path (ROBOSIM_CLASSPATH): " + e;

@@ -12,8 +12,9 @@ import java.util.Comparator;
 import java.util.List;
 
 /**
- * A sweep's output directory: {@code sweep.xml} (the sweep file it was made by, copied) and {@code origin} (where
- * that file is, so a Slurm task reads the same), {@code rows/} (one file per finished run), {@code logs/} (each
+ * A sweep's output directory: {@code sweep.xml} and {@code world.xml} (the sweep file it was made by and its world,
+ * copied: rows of another sweep or world never mix with these) and {@code origin} (where the sweep file is, so a
+ * Slurm task reads the same), {@code rows/} (one file per finished run), {@code logs/} (each
  * run's output), {@code recordings/} (with {@code --keep-recordings}), and the tables and plots made from the rows:
  * {@code runs.csv}, {@code summary.csv}, {@code plots/}. On a cluster it must be on the file system every node
  * shares.
@@ -61,6 +62,10 @@ final class OutputDirectory {
                 throw new SweepException(dir + ": holds the rows of another sweep file (its sweep.xml differs from "
                         + sweep.file() + "); give another --out");
             }
+            if (!Arrays.equals(Files.readAllBytes(dir.resolve("world.xml")), Files.readAllBytes(sweep.world()))) {
+                throw new SweepException(dir + ": its rows are of another " + sweep.world().getFileName() + " (it changed "
+                        + "since; world.xml there is the one they are of); give another --out");
+            }
             if (!resume && hasRows()) {
                 throw new SweepException(dir + ": holds this sweep's rows already; --resume runs only what is missing "
                         + "(or give another --out)");
@@ -74,8 +79,9 @@ final class OutputDirectory {
             Files.createDirectories(d);
         }
         if (!Files.exists(copy)) {
-            Files.write(copy, spec);
+            Files.copy(sweep.world(), dir.resolve("world.xml"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             Files.writeString(dir.resolve("origin"), sweep.file() + "\n", StandardCharsets.UTF_8);
+            Files.write(copy, spec); // (last: a directory with sweep.xml has the rest)
         }
     }
 
@@ -92,7 +98,11 @@ final class OutputDirectory {
         if (!Files.exists(file) || !Arrays.equals(Files.readAllBytes(file), Files.readAllBytes(dir.resolve("sweep.xml")))) {
             throw new SweepException(file + ": changed or gone since " + dir + " was made from it");
         }
-        return SweepFile.read(file);
+        Sweep sweep = SweepFile.read(file);
+        if (!Arrays.equals(Files.readAllBytes(sweep.world()), Files.readAllBytes(dir.resolve("world.xml")))) {
+            throw new SweepException(sweep.world() + ": changed since " + dir + " was made from it");
+        }
+        return sweep;
     }
 
     private boolean hasRows() throws IOException {
@@ -109,7 +119,7 @@ final class OutputDirectory {
     List<Integer> missing(Sweep sweep) throws IOException {
         BitSet done = new BitSet();
         for (Row r : rowsWritten()) {
-            done.set(r.index());
+            done.set(r.index()); // (an index beyond the sweep's is ignored: it is no run of it)
         }
         List<Integer> out = new ArrayList<>();
         for (int i = 0; i < sweep.runs(); i++) {
@@ -120,7 +130,10 @@ final class OutputDirectory {
         return out;
     }
 
-    /** Every row written so far, by index (a temporary file of a run still writing is not one). */
+    /**
+     * Every row written so far, by index (a temporary file of a run still writing is not one). A file that is not a
+     * row (damaged by hand) is left out, said once on stderr: delete it and {@code --resume} runs its run again.
+     */
     List<Row> rowsWritten() throws IOException {
         List<Row> rows = new ArrayList<>();
         if (!Files.isDirectory(rows())) {
@@ -128,10 +141,40 @@ final class OutputDirectory {
         }
         try (DirectoryStream<Path> s = Files.newDirectoryStream(rows(), "run-*.csv")) {
             for (Path p : s) {
-                rows.add(Row.read(p));
+                try {
+                    rows.add(Row.read(p));
+                } catch (IOException | RuntimeException e) {
+                    if (unreadable.add(p)) {
+                        System.err.println("sweep: " + e.getMessage() + "; left out (delete it and --resume runs it "
+                                + "again)");
+                    }
+                }
             }
         }
         rows.sort(Comparator.comparingInt(Row::index));
         return rows;
+    }
+
+    /** Row files found not to be rows, said once each. */
+    private final java.util.Set<Path> unreadable = java.util.concurrent.ConcurrentHashMap.newKeySet();
+
+    /**
+     * Holds this directory for one sweep on this machine until the lock is closed or this JVM ends ({@code .lock}):
+     * a second sweep started on it is refused rather than writing the same rows.
+     */
+    java.io.Closeable lock() throws SweepException, IOException {
+        java.nio.channels.FileChannel channel = java.nio.channels.FileChannel.open(dir.resolve(".lock"),
+                java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.WRITE);
+        java.nio.channels.FileLock lock;
+        try {
+            lock = channel.tryLock();
+        } catch (java.nio.channels.OverlappingFileLockException e) {
+            lock = null; // (held by this JVM: another sweep in it)
+        }
+        if (lock == null) {
+            channel.close();
+            throw new SweepException(dir + ": another sweep is running in it");
+        }
+        return channel; // (closing it releases the lock)
     }
 }

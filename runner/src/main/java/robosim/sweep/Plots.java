@@ -133,13 +133,19 @@ final class Plots {
                 .yAxisTitle(metric).build();
         chart.getStyler().setLegendVisible(lines.size() > 1);
         lines.forEach((label, line) -> {
+            List<String> xs = new ArrayList<>();
             List<Double> ys = new ArrayList<>();
             List<Double> errors = new ArrayList<>();
             for (int i = 0; i < values.size(); i++) {
-                ys.add(Double.isNaN(line[0][i]) ? 0 : line[0][i]);
-                errors.add(line[1][i]);
+                if (!Double.isNaN(line[0][i])) { // (a value without a successful run: no bar)
+                    xs.add(values.get(i));
+                    ys.add(line[0][i]);
+                    errors.add(line[1][i]);
+                }
             }
-            chart.addSeries(label, values, ys, errors);
+            if (!xs.isEmpty()) {
+                chart.addSeries(label, xs, ys, errors);
+            }
         });
         return chart;
     }

@@ -24,40 +24,41 @@ final class Progress {
     }
 
     /** A run has a row (failed or not). */
-    synchronized void finished(boolean ok) {
-        done++;
-        if (!ok) {
-            failed++;
-        }
-        int tenth = total == 0 ? 10 : done * 10 / total;
-        if (terminal) {
-            err.print("\r" + text());
-            if (done == total) {
-                err.println();
+    void finished(boolean ok) {
+        String line;
+        synchronized (this) {
+            done++;
+            if (!ok) {
+                failed++;
             }
-        } else if (tenth > lastTenth || done == total) {
-            lastTenth = tenth;
-            err.println(text());
+            int tenth = total == 0 ? 10 : done * 10 / total;
+            if (terminal) {
+                line = "\r" + text() + (done == total ? "\n" : "");
+            } else if (tenth > lastTenth || done == total) {
+                lastTenth = tenth;
+                line = text() + "\n";
+            } else {
+                line = null;
+            }
         }
-        err.flush();
+        if (line != null) { // (printed outside the lock: a stream may block)
+            err.print(line);
+            err.flush();
+        }
     }
 
     /** Ends a bar left open (the sweep stopped early). */
-    synchronized void close() {
-        if (terminal && done < total) {
+    void close() {
+        boolean open;
+        synchronized (this) {
+            open = terminal && done < total;
+        }
+        if (open) {
             err.println();
         }
     }
 
-    synchronized int done() {
-        return done;
-    }
-
-    synchronized int failed() {
-        return failed;
-    }
-
-    synchronized String text() {
+    private String text() {
         int filled = total == 0 ? BAR : done * BAR / total;
         double elapsed = (System.nanoTime() - start) / 1e9;
         long left = done == 0 ? -1 : Math.round(elapsed / done * (total - done));

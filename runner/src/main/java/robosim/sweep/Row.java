@@ -64,10 +64,11 @@ record Row(Map<String, String> values) {
         for (int i = 0; i < names.size(); i++) {
             values.put(names.get(i), fields.get(i));
         }
-        try {
-            Integer.parseInt(values.get("index"));
-        } catch (NumberFormatException e) {
-            throw new IOException(file + ": index '" + values.get("index") + "' is not a number");
+        String index = values.get("index");
+        if (!index.matches("[0-9]{1,9}") || !file.getFileName().equals(file(file.getParent(), Integer.parseInt(index))
+                .getFileName())) {
+            throw new IOException(file + ": index '" + robosim.protocol.Printable.of(index, 20) + "' is not this row "
+                    + "file's run");
         }
         return new Row(values);
     }

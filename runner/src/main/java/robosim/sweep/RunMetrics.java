@@ -27,7 +27,8 @@ import robosim.protocol.WorldSnapshot;
  * been in at the end of some step, 0 to 1;
  * <li>{@code robots_left}: robots still in the world at the end;
  * <li>each name the control code reported ({@code Robot.report}): each robot's newest value, summed over the
- * robots that reported it (a name that is also a built-in's is {@code report.NAME});
+ * robots that reported it (a name that is also a built-in's or a row's own column, {@code seed} say, is
+ * {@code report.NAME});
  * <li>each {@link Metric} class asked for, by its {@link Metric#name()}.
  * </ul>
  */
@@ -37,6 +38,8 @@ public final class RunMetrics {
             "area_covered", "robots_left");
     /** The side of {@code area_covered}'s cells unless a sweep says otherwise, m. */
     public static final double DEFAULT_AREA_CELL_M = 0.5;
+    /** The most cells {@code area_covered} counts (one bit each). */
+    static final long MAX_AREA_CELLS = 1L << 26;
 
     private RunMetrics() {
     }
@@ -87,15 +90,32 @@ public final class RunMetrics {
         return Csv.line(new java.util.ArrayList<>(metrics.keySet())) + "\n" + Csv.line(values) + "\n";
     }
 
-    /** The column of a reported name: the name, or {@code report.NAME} where a built-in has it. */
+    /** Why cells of {@code areaCellM} are too many for {@code arena}'s {@code area_covered}, or null. */
+    static String cellProblem(Arena arena, double areaCellM) {
+        double cells = Math.ceil((arena.maxXMm() - arena.minXMm()) / (areaCellM * 1000))
+                * Math.ceil((arena.maxYMm() - arena.minYMm()) / (areaCellM * 1000));
+        return cells <= MAX_AREA_CELLS ? null : "area cells of " + areaCellM + " m make " + (long) cells + " cells of this "
+                + "arena, at most " + MAX_AREA_CELLS;
+    }
+
+    /** The column of a reported name: the name, or {@code report.NAME} where a built-in or a row's own column has it. */
     static String reportColumn(String name) {
-        return BUILT_IN.contains(name) ? "report." + name : name;
+        return reserved(name) ? "report." + name : name;
+    }
+
+    /** A column name of a built-in metric or of every row ({@link Row}): no reported or own metric may take it. */
+    static boolean reserved(String name) {
+        return BUILT_IN.contains(name) || Row.FIRST.contains(name) || Row.RUN.contains(name) || Row.LAST.contains(name);
     }
 
     private static Map<String, Double> builtInAndReports(RecordingReader recording, double areaCellM)
             throws IOException {
         WorldSnapshot world = recording.snapshot();
         Arena arena = world.arena();
+        String tooMany = cellProblem(arena, areaCellM);
+        if (tooMany != null) {
+            throw new IOException(tooMany);
+        }
         double cell = areaCellM * 1000;
         int columns = Math.max(1, (int) Math.ceil((arena.maxXMm() - arena.minXMm()) / cell));
         int rows = Math.max(1, (int) Math.ceil((arena.maxYMm() - arena.minYMm()) / cell));

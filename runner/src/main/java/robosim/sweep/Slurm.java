@@ -26,7 +26,8 @@ final class Slurm {
     private static final int MAX_OUTPUT = 1 << 20;
     /** Job states of a job that has not ended. */
     private static final List<String> ACTIVE = List.of("PENDING", "RUNNING", "CONFIGURING", "COMPLETING",
-            "SUSPENDED", "REQUEUED", "RESIZING", "SIGNALING", "STAGE_OUT");
+            "SUSPENDED", "REQUEUED", "REQUEUE_FED", "REQUEUE_HOLD", "RESIZING", "SIGNALING", "STAGE_OUT", "STOPPED",
+            "RESV_DEL_HOLD", "SPECIAL_EXIT");
 
     /**
      * Where and how long: {@code --partition}, {@code --time} (null: the cluster's defaults), {@code --max-parallel};
@@ -35,44 +36,90 @@ final class Slurm {
     record Options(String partition, String time, int maxParallel, boolean keepRecordings) {
     }
 
-    /** The submitted jobs: the array's id and the gather job's. */
-    record Jobs(String array, String gather) {
+    /** The submitted jobs: the arrays' ids (one, unless the sweep is larger than MaxArraySize) and the gather job's. */
+    record Jobs(List<String> arrays, String gather) {
+        /** Every job id, comma-separated, as squeue -j takes them. */
+        String all() {
+            List<String> ids = new ArrayList<>(arrays);
+            if (gather != null) {
+                ids.add(gather);
+            }
+            return String.join(",", ids);
+        }
     }
+
+    /** Slurm's MaxArraySize when the cluster does not say. */
+    private static final int DEFAULT_MAX_ARRAY_SIZE = 1001;
 
     private Slurm() {
     }
 
-    /** Submits the runs {@code todo} of the sweep in {@code out} and its gather job; {@code script} is sweep.sh. */
+    /**
+     * Submits the runs {@code todo} of the sweep in {@code out} and its gather job; {@code script} is sweep.sh. A
+     * sweep of more runs than the cluster's {@code MaxArraySize} takes several arrays, each of indices from 0 with
+     * an offset; the gather job waits for all of them.
+     */
     static Jobs submit(Sweep sweep, OutputDirectory out, List<Integer> todo, Options options, Path script)
             throws IOException, SweepException, InterruptedException {
+        String where = out.path().toString();
+        if (!where.chars().allMatch(c -> c >= ' ' && c != '%' && c != 127)) {
+            throw new SweepException("sweep: --out " + robosim.protocol.Printable.of(where, 200) + ": a directory for "
+                    + "Slurm may hold no control character and no '%' (sbatch reads it as a pattern)");
+        }
         Path dir = out.slurm();
         Files.createDirectories(dir);
         Path task = dir.resolve("task.sh");
-        Files.writeString(task, "#!/usr/bin/env bash\n# One run of the sweep in " + out.path()
-                + " per task of the array (written by sweep.sh --slurm)\nexec " + quoted(script.toString()) + " task "
-                + quoted(out.path().toString()) + " \"$SLURM_ARRAY_TASK_ID\"" + (options.keepRecordings()
-                ? " --keep-recordings" : "") + "\n", StandardCharsets.UTF_8);
+        Files.writeString(task, "#!/usr/bin/env bash\n# A run of the sweep in its directory per task of the array "
+                + "(written by sweep.sh --slurm): run OFFSET + the task's index\n"
+                + "export ROBOSIM_NO_BUILD=1 # (every task runs the build the submission made: none builds)\n"
+                + "exec " + quoted(script.toString()) + " task " + quoted(where) + " \"$(($1 + SLURM_ARRAY_TASK_ID))\""
+                + (options.keepRecordings() ? " --keep-recordings" : "") + "\n", StandardCharsets.UTF_8);
         Files.setPosixFilePermissions(task, PosixFilePermissions.fromString("rwxr-xr-x"));
-        List<String> where = new ArrayList<>();
+        List<String> place = new ArrayList<>();
         if (options.partition() != null) {
-            where.add("--partition=" + options.partition());
+            place.add("--partition=" + options.partition());
         }
         if (options.time() != null) {
-            where.add("--time=" + options.time());
+            place.add("--time=" + options.time());
         }
-        List<String> array = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep",
-                "--array=" + ranges(todo) + "%" + options.maxParallel(), "--output=" + dir.resolve("task-%A_%a.out"),
-                "--cpus-per-task=" + (sweep.layout() == Sweep.Layout.ONE_JVM ? 1 : 2)));
-        array.addAll(where);
-        array.add(task.toString());
-        String arrayId = jobId(run(array));
+        int most = maxArraySize();
+        Path jobs = dir.resolve("jobs");
+        Files.deleteIfExists(jobs);
+        List<String> arrays = new ArrayList<>();
+        for (int from = 0; from < todo.size(); ) {
+            int offset = todo.get(from) / most * most;
+            List<Integer> chunk = new ArrayList<>();
+            while (from < todo.size() && todo.get(from) < offset + most) {
+                chunk.add(todo.get(from++) - offset);
+            }
+            List<String> array = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep",
+                    "--array=" + ranges(chunk) + "%" + options.maxParallel(), "--output=" + dir.resolve("task-%A_%a.out"),
+                    "--cpus-per-task=" + (sweep.layout() == Sweep.Layout.ONE_JVM ? 1 : 2)));
+            array.addAll(place);
+            array.addAll(List.of(task.toString(), Integer.toString(offset)));
+            String id = jobId(run(array));
+            arrays.add(id);
+            Files.writeString(jobs, "array " + id + "\n", StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.CREATE,
+                    java.nio.file.StandardOpenOption.APPEND); // (at once: a later failure leaves it known)
+        }
         List<String> gather = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep-gather",
-                "--dependency=afterany:" + arrayId, "--output=" + dir.resolve("gather.out")));
-        gather.addAll(where);
-        gather.add("--wrap=exec " + quoted(script.toString()) + " gather " + quoted(out.path().toString()));
+                "--dependency=afterany:" + String.join(":", arrays), "--output=" + dir.resolve("gather.out")));
+        gather.addAll(place);
+        gather.add("--wrap=export ROBOSIM_NO_BUILD=1; exec " + quoted(script.toString()) + " gather " + quoted(where));
         String gatherId = jobId(run(gather));
-        Files.writeString(dir.resolve("jobs"), "array " + arrayId + "\ngather " + gatherId + "\n", StandardCharsets.UTF_8);
-        return new Jobs(arrayId, gatherId);
+        Files.writeString(jobs, "gather " + gatherId + "\n", StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.APPEND);
+        return new Jobs(arrays, gatherId);
+    }
+
+    /** The cluster's largest array index + 1 ({@code scontrol show config}: MaxArraySize); Slurm's default when unsaid. */
+    private static int maxArraySize() throws IOException, SweepException, InterruptedException {
+        for (String line : run(List.of("scontrol", "show", "config")).split("\n")) {
+            String[] kv = line.split("=", 2);
+            if (kv.length == 2 && kv[0].trim().equals("MaxArraySize") && kv[1].trim().matches("[0-9]{1,9}")) {
+                return Math.max(1, Integer.parseInt(kv[1].trim()));
+            }
+        }
+        return DEFAULT_MAX_ARRAY_SIZE;
     }
 
     /** The jobs submitted for {@code out}, or null if none were. */
@@ -81,20 +128,24 @@ final class Slurm {
         if (!Files.exists(file)) {
             return null;
         }
-        Map<String, String> ids = new TreeMap<>();
+        List<String> arrays = new ArrayList<>();
+        String gather = null;
         for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
             String[] kv = line.trim().split(" ");
-            if (kv.length == 2) {
-                ids.put(kv[0], kv[1]);
+            if (kv.length == 2 && kv[1].matches("[0-9]{1,12}")) {
+                if (kv[0].equals("array")) {
+                    arrays.add(kv[1]);
+                } else if (kv[0].equals("gather")) {
+                    gather = kv[1];
+                }
             }
         }
-        return new Jobs(ids.get("array"), ids.get("gather"));
+        return new Jobs(arrays, gather);
     }
 
     /** True while any of the jobs (any task of the array) has not ended, as {@code squeue} says. */
     static boolean active(Jobs jobs) throws IOException, SweepException, InterruptedException {
-        for (String state : run(List.of("squeue", "-h", "-r", "-t", "all", "-j", jobs.array() + "," + jobs.gather(),
-                "-o", "%T")).split("\n")) {
+        for (String state : run(List.of("squeue", "-h", "-r", "-t", "all", "-j", jobs.all(), "-o", "%T")).split("\n")) {
             if (ACTIVE.contains(state.trim())) {
                 return true;
             }
@@ -102,11 +153,22 @@ final class Slurm {
         return false;
     }
 
-    /** How many of the jobs' tasks are in each state, as {@code squeue -t all} still shows them. */
+    /**
+     * How many of the jobs' tasks are in each state, as {@code squeue -t all} still shows them (none once Slurm has
+     * forgotten the jobs: it then says their ids are invalid).
+     */
     static Map<String, Integer> states(Jobs jobs) throws IOException, SweepException, InterruptedException {
         Map<String, Integer> count = new TreeMap<>();
-        for (String line : run(List.of("squeue", "-h", "-r", "-t", "all", "-j", jobs.array() + "," + jobs.gather(),
-                "-o", "%j %T")).split("\n")) {
+        String shown;
+        try {
+            shown = run(List.of("squeue", "-h", "-r", "-t", "all", "-j", jobs.all(), "-o", "%j %T"));
+        } catch (SweepException e) {
+            if (e.getMessage().contains("Invalid job id")) {
+                return count;
+            }
+            throw e;
+        }
+        for (String line : shown.split("\n")) {
             if (!line.isBlank()) {
                 count.merge(line.trim().replace("robosim-sweep-gather", "gather").replace("robosim-sweep", "run"), 1,
                         Integer::sum);

@@ -168,10 +168,19 @@ public final class SweepFile {
             throw new SweepException(file + ": <seeds from=\"" + seeds.from + "\" to=\"" + seeds.to
                     + "\"> is an empty range");
         }
+        if (seeds.to - seeds.from < 0 || seeds.to - seeds.from >= MAX_RUNS) { // (the first: it overflowed)
+            throw new SweepException(file + ": <seeds from=\"" + seeds.from + "\" to=\"" + seeds.to
+                    + "\"> holds more than " + MAX_RUNS + " seeds");
+        }
         Map<String, List<String>> values = new LinkedHashMap<>();
         for (ParamXml p : params) {
             if (p.name == null || p.name.isBlank()) {
                 throw new SweepException(file + ": <param> needs a name (one of the world's parameters)");
+            }
+            if (RunMetrics.reserved(p.name)) {
+                throw new SweepException(file + ": <param name=\"" + p.name + "\">: a row's own column or a built-in "
+                        + "metric has that name" + (p.name.equals("seed") ? " (the seeds are <seeds from to>: each run "
+                        + "gets its seed as the world's, whatever the file says)" : "; give the world's parameter another"));
             }
             List<String> list = p.values == null ? List.of() : List.of(p.values.trim().split("\\s+"));
             if (p.values == null || p.values.isBlank()) {
@@ -233,7 +242,10 @@ public final class SweepFile {
         EnvironmentLoader loader = new EnvironmentLoader();
         try {
             for (Map<String, String> combination : sweep.combinations()) {
-                loader.load(sweep.world(), combination);
+                String cells = RunMetrics.cellProblem(loader.load(sweep.world(), combination).arena(), sweep.areaCellM());
+                if (cells != null) {
+                    throw new SweepException(file + ": <metrics areaCellM>: " + cells);
+                }
             }
         } catch (EnvironmentFileException e) {
             throw new SweepException(file + ": " + e.getMessage());

@@ -31,6 +31,8 @@ import robosim.runner.ChildProcesses;
 public final class SweepMain implements Callable<Integer> {
     /** Exit code of a sweep some of whose runs failed or left no row. */
     static final int EXIT_RUNS_FAILED = 1;
+    /** How long --wait goes on asking squeue when it fails, ns. */
+    private static final long SQUEUE_PATIENCE_NS = 120_000_000_000L;
     static final int EXIT_BAD_INPUT = 2;
 
     @Parameters(index = "0", arity = "0..1", paramLabel = "SPEC.xml", description = "The sweep file.")
@@ -87,30 +89,45 @@ public final class SweepMain implements Callable<Integer> {
         }
         Sweep sweep;
         OutputDirectory dir;
-        List<Integer> todo;
         try {
             sweep = SweepFile.read(spec);
             dir = new OutputDirectory(out != null ? out : Path.of("sweep-" + name(spec) + "-"
                     + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"))));
             dir.prepare(sweep, resume);
-            todo = dir.missing(sweep);
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
-        PrintStream err = System.err;
-        err.println("sweep: " + sweep.runs() + " runs (" + sweep.combinationCount() + " combinations x " + sweep.seeds()
-                + " seeds" + (sweep.repeat() > 1 ? " x " + sweep.repeat() : "") + ", " + sweep.steps() + " steps, "
-                + sweep.layout().written() + "), " + todo.size() + " to run, into " + dir.path());
         if (slurm) {
-            return slurm(sweep, dir, todo, err);
+            return slurm(sweep, dir, dir.missing(sweep), System.err);
         }
+        java.io.Closeable lock;
+        try {
+            lock = dir.lock();
+        } catch (SweepException e) {
+            return bad(e.getMessage());
+        }
+        try (lock) {
+            return local(sweep, dir, dir.missing(sweep), System.err);
+        }
+    }
+
+    private int local(Sweep sweep, OutputDirectory dir, List<Integer> todo, PrintStream err) throws Exception {
+        say(sweep, dir, todo, err);
         int cores = Runtime.getRuntime().availableProcessors();
         Progress progress = new Progress(todo.size(), err, System.console() != null);
         int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, err).run(todo, progress);
         return finish(sweep, dir, unfinished, err);
     }
 
+    /** The sweep's first line: how many runs, how many to run, where. */
+    private static void say(Sweep sweep, OutputDirectory dir, List<Integer> todo, PrintStream err) {
+        err.println("sweep: " + sweep.runs() + " runs (" + sweep.combinationCount() + " combinations x " + sweep.seeds()
+                + " seeds" + (sweep.repeat() > 1 ? " x " + sweep.repeat() : "") + ", " + sweep.steps() + " steps, "
+                + sweep.layout().written() + "), " + todo.size() + " to run, into " + dir.path());
+    }
+
     private int slurm(Sweep sweep, OutputDirectory dir, List<Integer> todo, PrintStream err) throws Exception {
+        say(sweep, dir, todo, err);
         if (todo.isEmpty()) {
             Gather.tables(sweep, dir);
             err.println("sweep: every run has its row: nothing submitted; tables made");
@@ -127,29 +144,45 @@ public final class SweepMain implements Callable<Integer> {
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
-        err.println("sweep: submitted job array " + jobsSubmitted.array() + " (" + todo.size() + " tasks, at most "
-                + maxParallel + " at once) and gather job " + jobsSubmitted.gather() + " (after it); sweep.sh status "
-                + dir.path());
+        err.println("sweep: submitted job array " + String.join(", ", jobsSubmitted.arrays()) + " (" + todo.size()
+                + " tasks, at most " + maxParallel + " at once) and gather job " + jobsSubmitted.gather() + " (after it); "
+                + "sweep.sh status " + dir.path());
         if (!await) {
             return 0;
         }
         Progress progress = new Progress(todo.size(), err, System.console() != null);
-        int seen = 0;
+        java.util.BitSet submitted = new java.util.BitSet();
+        todo.forEach(submitted::set);
+        java.util.BitSet seen = new java.util.BitSet();
+        long squeueFailingSince = 0;
         while (true) {
-            boolean active = Slurm.active(jobsSubmitted);
-            List<Row> rows = dir.rowsWritten();
-            List<Row> fresh = rows.stream().filter(r -> todo.contains(r.index())).toList();
-            for (int i = seen; i < fresh.size(); i++) {
-                progress.finished(fresh.get(i).ok());
+            boolean active;
+            try {
+                active = Slurm.active(jobsSubmitted);
+                squeueFailingSince = 0;
+            } catch (SweepException e) { // (a slow or restarting slurmctld: asked again, for a while)
+                squeueFailingSince = squeueFailingSince == 0 ? System.nanoTime() : squeueFailingSince;
+                if (System.nanoTime() - squeueFailingSince > SQUEUE_PATIENCE_NS) {
+                    progress.close();
+                    err.println("sweep: " + e.getMessage() + " for " + SQUEUE_PATIENCE_NS / 1_000_000_000
+                            + " s; the jobs go on: sweep.sh status " + dir.path());
+                    return EXIT_RUNS_FAILED;
+                }
+                active = true;
             }
-            seen = Math.max(seen, fresh.size());
+            for (Row r : dir.rowsWritten()) {
+                if (submitted.get(r.index()) && !seen.get(r.index())) {
+                    seen.set(r.index());
+                    progress.finished(r.ok());
+                }
+            }
             if (!active) {
                 break;
             }
             Thread.sleep(1000); // (polling squeue: Slurm tells no one when a job ends)
         }
         progress.close();
-        return finish(sweep, dir, todo.size() - seen, err);
+        return finish(sweep, dir, todo.size() - seen.cardinality(), err);
     }
 
     /** The sweep's end: tables made (again), one line, and the exit code. */
@@ -197,7 +230,8 @@ public final class SweepMain implements Callable<Integer> {
             if (jobs != null) {
                 try {
                     Map<String, Integer> states = Slurm.states(jobs);
-                    System.out.println("slurm: array " + jobs.array() + ", gather " + jobs.gather() + ": " + (states.isEmpty()
+                    System.out.println("slurm: array " + String.join(", ", jobs.arrays()) + ", gather " + jobs.gather() + ": "
+                            + (states.isEmpty()
                             ? "no longer shown by squeue (ended)" : states.toString().replaceAll("[{}]", "")));
                 } catch (SweepException e) {
                     System.out.println("slurm: " + e.getMessage());
@@ -267,11 +301,21 @@ public final class SweepMain implements Callable<Integer> {
 
     public static void main(String[] args) {
         System.setProperty("robosim.cores", Integer.toString(Runtime.getRuntime().availableProcessors()));
+        System.exit(commandLine().execute(args));
+    }
+
+    /** sweep.sh's command line: a bad option or a failure is one line, not a stack trace. */
+    static CommandLine commandLine() {
         CommandLine cl = new CommandLine(new SweepMain());
         cl.setParameterExceptionHandler((ex, a) -> {
             System.err.println("sweep: " + ex.getMessage() + " (see --help)");
             return EXIT_BAD_INPUT;
         });
-        System.exit(cl.execute(args));
+        cl.setExecutionExceptionHandler((ex, c, parsed) -> {
+            System.err.println("sweep: " + (ex instanceof java.nio.file.AccessDeniedException ? "permission denied: "
+                    : ex instanceof java.nio.file.NoSuchFileException ? "no such file: " : "") + ex.getMessage());
+            return EXIT_RUNS_FAILED;
+        });
+        return cl;
     }
 }

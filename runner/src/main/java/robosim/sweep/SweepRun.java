@@ -14,12 +14,17 @@ import robosim.runner.ChildProcesses;
 /**
  * Runs one run of a sweep as its own process (the headless runner, in the sweep's layout, recording) and writes
  * its row from the run's summary line and its recording. The same on this machine's pool and in a Slurm task, so
- * both give the same rows but for the wall time. A run ended by a signal (Ctrl-C, a kill, Slurm's time limit)
- * writes no row: {@code --resume} runs it again.
+ * both give the same rows but for the wall time. A run stopped (the sweep's Ctrl-C; SIGINT or SIGTERM from anyone,
+ * Slurm ending its task) writes no row: {@code --resume} runs it again. One killed by another signal (SIGKILL from
+ * the kernel's out-of-memory killer, a crash) is a failed row that says which.
  */
 final class SweepRun {
     /** Exit codes from 128 up are a signal's (128 + its number): the run was stopped, not finished. */
     private static final int SIGNALLED = 128;
+    private static final int SIGINT = 2;
+    private static final int SIGTERM = 15;
+    /** How much of the end of a run's log is read for its summary line and its last error, bytes. */
+    static final int LOG_TAIL_BYTES = 64 * 1024;
     private final Sweep sweep;
     private final OutputDirectory out;
     private final ChildProcesses children;
@@ -59,7 +64,7 @@ final class SweepRun {
             throw e;
         }
         double wallS = (System.nanoTime() - start) / 1e9;
-        if (code >= SIGNALLED || stopped.getAsBoolean()) {
+        if (stopped.getAsBoolean() || code == SIGNALLED + SIGINT || code == SIGNALLED + SIGTERM) {
             return null;
         }
         Map<String, String> values = new LinkedHashMap<>();
@@ -67,25 +72,31 @@ final class SweepRun {
         values.put("seed", Long.toString(run.seed()));
         values.put("repetition", Integer.toString(run.repetition()));
         values.putAll(run.parameters());
-        List<String> lines = Files.readAllLines(log, StandardCharsets.UTF_8);
+        List<String> lines = tail(log);
         Map<String, String> summary = summary(lines);
-        String error = code == 0 ? "" : lastError(lines);
+        String error = code == 0 ? "" : code > SIGNALLED && code < SIGNALLED + 65
+                ? "killed by signal " + (code - SIGNALLED) : lastError(lines);
         Map<String, Double> metrics = Map.of();
         if (Files.exists(recording)) {
             try {
                 metrics = RunMetrics.of(recording, sweep.metrics(), sweep.areaCellM());
             } catch (IOException | RuntimeException e) {
-                error = error.isEmpty() ? "metrics: " + e.getMessage() : error;
+                // (the message names the recording: without the directory, so rows of the same run are the same anywhere)
+                error = error.isEmpty() ? "metrics: " + String.valueOf(e.getMessage()).replace(recording.toString(),
+                        recording.getFileName().toString()) : error;
             }
         } else if (code == 0) {
-            error = "no recording: " + recording;
+            error = "no recording";
         }
         values.put("status", code == 0 && error.isEmpty() ? Row.OK : Row.FAILED);
         values.put("exit_code", Integer.toString(code));
         for (String field : List.of("steps", "robots", "messages", "control_failed")) {
             values.put(field, summary.getOrDefault(field, ""));
         }
-        metrics.forEach((name, value) -> values.put(name, Csv.number(value)));
+        for (Map.Entry<String, Double> m : metrics.entrySet()) { // (a name the row has already: a reported one)
+            values.put(values.containsKey(m.getKey()) || Row.LAST.contains(m.getKey()) ? "report." + m.getKey()
+                    : m.getKey(), Csv.number(m.getValue()));
+        }
         values.put("error", Printable.of(error, 300));
         values.put("wall_s", String.format(java.util.Locale.ROOT, "%.3f", wallS));
         Row row = new Row(values);
@@ -94,6 +105,21 @@ final class SweepRun {
             Files.deleteIfExists(recording);
         }
         return row;
+    }
+
+    /** The last lines of a run's log, at most {@link #LOG_TAIL_BYTES} of it, bytes that are not UTF-8 replaced. */
+    static List<String> tail(Path log) throws IOException {
+        try (java.io.RandomAccessFile in = new java.io.RandomAccessFile(log.toFile(), "r")) {
+            long from = Math.max(0, in.length() - LOG_TAIL_BYTES);
+            byte[] bytes = new byte[(int) (in.length() - from)];
+            in.seek(from);
+            in.readFully(bytes);
+            List<String> lines = new ArrayList<>(new String(bytes, StandardCharsets.UTF_8).lines().toList());
+            if (from > 0 && !lines.isEmpty()) {
+                lines.remove(0); // (a line cut in two)
+            }
+            return lines;
+        }
     }
 
     /** The fields of the runner's summary line ({@code steps=... robots=...}), the last one in its output. */

@@ -74,6 +74,7 @@ class SweepSlurmIT {
     }
 
     @Test
+    @org.junit.jupiter.api.Timeout(value = 900, unit = TimeUnit.SECONDS) // (three sweeps, two of them through Slurm)
     void aSlurmSweepGivesTheLocalSweepsRowsAndAResubmissionFillsTheHoles() throws Exception {
         Path spec = tmp.resolve("spec.xml");
         Files.writeString(spec, SPEC);

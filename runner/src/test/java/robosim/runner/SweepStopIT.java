@@ -4,6 +4,9 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.io.BufferedReader;
+import java.io.InputStreamReader;
+import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -40,22 +43,25 @@ class SweepStopIT {
         Files.writeString(spec, "<sweep world=\"" + REPO.resolve("test-envs/wander.xml") + "\" steps=\"1500\">"
                 + "<seeds from=\"1\" to=\"8\"/></sweep>");
         Path out = tmp.resolve("out");
-        Path err = tmp.resolve("stderr.txt");
         Process sweep = new ProcessBuilder("setsid", REPO.resolve("scripts/sweep.sh").toString(), spec.toString(),
-                "--out", out.toString(), "--jobs", "1").redirectErrorStream(true).redirectOutput(err.toFile()).start();
-        long session = sweep.pid();
-        try {
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-            while (rows(out).isEmpty()) { // (the first row: a file appearing, polled with a deadline)
-                assertTrue(sweep.isAlive(), "the sweep ended before its first row: " + Files.readString(err));
-                assertTrue(System.nanoTime() < deadline, "no row within 120 s: " + Files.readString(err));
-                Thread.sleep(50);
+                "--out", out.toString(), "--jobs", "1").redirectErrorStream(true).start();
+        StringBuilder said = new StringBuilder();
+        try (BufferedReader lines = new BufferedReader(new InputStreamReader(sweep.getInputStream(),
+                StandardCharsets.UTF_8))) {
+            String line = lines.readLine();
+            while (line != null && !line.startsWith("sweep: [")) { // (the progress line after the first row: an event)
+                said.append(line).append('\n');
+                line = lines.readLine();
             }
+            assertTrue(line != null, "the sweep ended before its first row: " + said);
             new ProcessBuilder("kill", "-INT", Long.toString(sweep.pid())).start().waitFor();
+            for (; line != null; line = lines.readLine()) { // (to its end: the output closes when it exits)
+                said.append(line).append('\n');
+            }
             assertTrue(sweep.waitFor(60, TimeUnit.SECONDS), "the sweep did not stop within 60 s of Ctrl-C");
-            assertEquals(130, sweep.exitValue(), Files.readString(err));
-            String said = Files.readString(err);
-            assertTrue(said.contains("sweep: stopped: ") && said.contains("--resume runs the rest"), said);
+            assertEquals(130, sweep.exitValue(), said.toString());
+            assertTrue(said.indexOf("sweep: stopped: ") >= 0 && said.indexOf("--resume runs the rest") >= 0,
+                    said.toString());
             assertTrue(ProcessHandle.allProcesses().noneMatch(h -> h.info().commandLine().orElse("")
                     .contains(out.toString())), "a run of the sweep is still running");
         } finally {

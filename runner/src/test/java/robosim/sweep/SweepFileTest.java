@@ -14,7 +14,6 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 /** Sweep files: how a good one numbers its runs, and every bad one refused in one line before any run. */
 class SweepFileTest {
@@ -97,6 +96,21 @@ class SweepFileTest {
     }
 
     @Test
+    void columnsAreNeverTakenTwice() throws Exception {
+        String e = refused(sweep("", "<seeds from=\"1\" to=\"2\"/><param name=\"seed\" values=\"1 2\"/>"));
+        assertTrue(e.contains("a row's own column or a built-in metric has that name (the seeds are <seeds"), e);
+        assertEquals("report.seed", RunMetrics.reportColumn("seed"));
+        assertEquals("report.distance_m", RunMetrics.reportColumn("distance_m"));
+        assertEquals("turns", RunMetrics.reportColumn("turns"));
+        Path rows = Files.createDirectories(dir.resolve("rows"));
+        Files.writeString(rows.resolve("run-000017.csv"), "index,seed,repetition\n3,1,1\n");
+        java.io.IOException bad = assertThrows(java.io.IOException.class, () -> Row.read(rows.resolve("run-000017.csv")));
+        assertTrue(bad.getMessage().endsWith("index '3' is not this row file's run"), bad.getMessage());
+        Files.writeString(rows.resolve("run-000003.csv"), "index,seed,repetition\n3,1,1\n");
+        assertEquals(3, Row.read(rows.resolve("run-000003.csv")).index());
+    }
+
+    @Test
     void theCommandRefusesABadFileWithExitTwoAndRunsNothing() throws Exception {
         Path f = write(sweep("", "<seeds from=\"4\" to=\"3\"/>"));
         Path out = dir.resolve("out");
@@ -105,7 +119,7 @@ class SweepFileTest {
         int code;
         System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
         try {
-            code = new CommandLine(new SweepMain()).execute(f.toString(), "--out", out.toString());
+            code = SweepMain.commandLine().execute(f.toString(), "--out", out.toString());
         } finally {
             System.setErr(was);
         }

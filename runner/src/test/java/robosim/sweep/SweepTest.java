@@ -15,7 +15,6 @@ import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 
 /**
  * A sweep on this machine, end to end: each run its own process; rows, tables and plots; --resume; a failed run
@@ -34,7 +33,7 @@ class SweepTest {
         PrintStream was = System.err;
         System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
         try {
-            return new Result(new CommandLine(new SweepMain()).execute(args), err.toString(StandardCharsets.UTF_8));
+            return new Result(SweepMain.commandLine().execute(args), err.toString(StandardCharsets.UTF_8));
         } finally {
             System.setErr(was);
         }

@@ -84,22 +84,6 @@ public final class EnvironmentLoader {
                 spec.taggable(), spec.joins(), parameters);
     }
 
-    /**
-     * The parameters {@code file} may be given (what a sweep may vary): its placeholders and the world's
-     * {@code <param>}s, sorted. Loads it with {@code given} as {@link #load} does, so a fault is the same line.
-     */
-    public java.util.SortedSet<String> parameterNames(Path file, Map<String, String> given)
-            throws EnvironmentFileException {
-        java.util.SortedSet<String> names = new java.util.TreeSet<>(load(file, given).parameters().world().keySet());
-        try {
-            names.addAll(Placeholders.replace(file.toString(),
-                    new String(read(file, file.toString()), StandardCharsets.UTF_8), given).names());
-        } catch (IOException e) {
-            throw new EnvironmentFileException(file + ": cannot read: " + e.getMessage());
-        }
-        return names;
-    }
-
     /** The world's and each robot's {@code <param>}s, the given values over the world's; unknown given names refused. */
     private static Parameters parameters(String where, EnvironmentFile xml, java.util.Set<String> placeholders,
             Map<String, String> given) throws EnvironmentFileException {
@@ -118,7 +102,15 @@ public final class EnvironmentLoader {
         Map<String, Map<String, String>> robots = new java.util.LinkedHashMap<>();
         for (EnvironmentFile.RobotXml r : xml.robots) {
             if (!r.params.isEmpty()) {
-                robots.put(r.name, params(where, "<robot name=\"" + r.name + "\">", r.params));
+                String el = "<robot name=\"" + r.name + "\">";
+                Map<String, String> own = params(where, el, r.params);
+                java.util.Set<String> all = new java.util.HashSet<>(world.keySet());
+                all.addAll(own.keySet());
+                if (all.size() > robosim.protocol.Limits.MAX_PARAMETERS) {
+                    throw new EnvironmentFileException(where + ": " + el + " has " + all.size() + " parameters with the "
+                            + "world's, at most " + robosim.protocol.Limits.MAX_PARAMETERS);
+                }
+                robots.put(r.name, own);
             }
         }
         return new Parameters(world, robots);
@@ -134,6 +126,10 @@ public final class EnvironmentLoader {
             }
             if (p.value == null) {
                 throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name + "\"> needs a value");
+            }
+            if (robosim.protocol.Limits.utfLength(p.value) > robosim.protocol.Limits.MAX_PARAMETER_BYTES) {
+                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name + "\"> has a value "
+                        + "longer than " + robosim.protocol.Limits.MAX_PARAMETER_BYTES + " bytes");
             }
             if (out.put(p.name, p.value) != null) {
                 throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name

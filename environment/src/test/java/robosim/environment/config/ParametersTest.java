@@ -67,8 +67,12 @@ class ParametersTest {
         assertEquals("600", w.parameters().of("r2").get("speed"));
         assertEquals("250", w.parameters().of("r1").get("speed"), "the robot's own <param> is over the world's");
         assertEquals("a<\"b\">&c", w.parameters().of("r2").get("mode"), "a value is text, never markup");
-        assertEquals(new java.util.TreeSet<>(List.of("mode", "speed", "step", "x")),
-                new EnvironmentLoader().parameterNames(write(WORLD), Map.of()));
+    }
+
+    @Test
+    void aDollarBraceOfTheFilesOwnIsWrittenTwice() throws Exception {
+        WorldSpec w = new EnvironmentLoader().load(write(WORLD.replace("\"scout\"", "\"$${scout}\"")));
+        assertEquals("${scout}", w.parameters().of("r1").get("role"));
     }
 
     @Test
@@ -89,6 +93,9 @@ class ParametersTest {
     void badPlaceholdersAndParams() throws Exception {
         assertTrue(failure(WORLD.replace("${x:1.5}", "${1x:1.5}"), Map.of()).contains("is not a placeholder"));
         assertTrue(failure(WORLD.replace("${x:1.5}", "${x:1.5"), Map.of()).contains("without its closing"));
+        assertTrue(failure(WORLD.replace("${x:1.5}", "${x:${y}}"), Map.of()).contains("do not nest"));
+        assertTrue(failure(WORLD.replace("value=\"scout\"", "value=\"" + "v".repeat(5000) + "\""), Map.of())
+                .contains("longer than 4096 bytes"));
         assertTrue(failure(WORLD.replace("\"role\" value=\"scout\"", "\"role\""), Map.of()).contains("needs a value"));
         assertTrue(failure(WORLD.replace("name=\"mode\"", "name=\"speed\""), Map.of()).contains("given twice"));
         assertTrue(failure(WORLD, Map.of("x", "abc")).contains("'abc' is not a double"));
