@@ -6,6 +6,8 @@
 #           speeds, one JVM a run, a pool as large as the cores; its floor is its own rows: the sum of their
 #           wall times / runs at once (what the pool would take with no cost of its own)
 #   loop    the same 200 runs by hand: xargs -P CORES of headless.sh --one-jvm (no recording, no metrics)
+#   cpu     one of these runs alone, its CPU time (user + system), with the sweep's JVM options for its runs
+#           (C1 alone, serial GC) and with the JVM's defaults
 # --slurm   also the sweep through the one-node Slurm (scripts/slurm-cluster.sh start first), --max-parallel
 #           CORES: the overhead per task = (wall x CORES - the rows' wall times) / runs (submission to row
 #           written, less the run)
@@ -42,6 +44,11 @@ seconds() { # a command's whole wall time, s
   "$@" >/dev/null 2>&1 || { echo "bench-sweep: failed: $*" >&2; echo NaN; return 0; }
   awk -v a="$t0" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.2f", b - a }'
 }
+cpu() { # a command's CPU time (user + system, its children's), s
+  local TIMEFORMAT='%3U %3S' t
+  t=$( { time "$@" >/dev/null 2>&1; } 2>&1 ) || { echo NaN; return 0; }
+  awk -v t="$t" 'BEGIN { split(t, a, " "); printf "%.2f", a[1] + a[2] }'
+}
 rowsum() { awk -F, 'NR > 1 { s += $NF } END { printf "%.2f", s }' "$1/runs.csv"; }
 loop() {
   for s in $(seq 1 "$seeds"); do for v in $speeds; do echo "$s $v"; done; done \
@@ -53,7 +60,10 @@ for rep in $(seq "$reps"); do
   sweep=$(seconds scripts/sweep.sh "$work/spec.xml" --out "$work/local" --jobs "$cores")
   sum=$(rowsum "$work/local")
   by_hand=$(seconds loop)
-  line=$(awk -v w="$sweep" -v s="$sum" -v c="$cores" -v l="$by_hand" 'BEGIN { printf "sweep %.2f s; its rows %.2f s / %d at once = %.2f s (sweep / that = %.2f); loop %.2f s (sweep / loop = %.2f)", w, s, c, s / c, w / (s / c), l, w / l }')
+  one=(scripts/headless.sh --one-jvm --env test-envs/bench-10.xml --steps 2000)
+  short=$(ROBOSIM_JAVA_OPTS="-XX:TieredStopAtLevel=1 -XX:+UseSerialGC" cpu "${one[@]}")
+  defaults=$(cpu "${one[@]}")
+  line=$(awk -v w="$sweep" -v s="$sum" -v c="$cores" -v l="$by_hand" -v a="$short" -v d="$defaults" 'BEGIN { printf "sweep %.2f s; its rows %.2f s / %d at once = %.2f s (sweep / that = %.2f); loop %.2f s (sweep / loop = %.2f); one run CPU %.2f s with the sweep'"'"'s JVM options, %.2f s with the defaults (%.2f)", w, s, c, s / c, w / (s / c), l, w / l, a, d, a / d }')
   if [ "$slurm" = 1 ]; then
     rm -rf "$work/slurm"
     through=$(seconds scripts/sweep.sh "$work/spec.xml" --out "$work/slurm" --slurm --wait --max-parallel "$cores")
