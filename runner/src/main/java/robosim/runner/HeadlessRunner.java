@@ -165,9 +165,16 @@ public final class HeadlessRunner implements Callable<Integer> {
         List<String> removed = new CopyOnWriteArrayList<>();
         List<String> controlFailed = new CopyOnWriteArrayList<>(); // (one JVM: the Environment's lines)
         List<String> environmentArgs = new ArrayList<>(environmentOptions.args(env, steps, noGeometry, resetArgs()));
+        // one JVM: its robots are there at once, so when a viewer of ours must see step 0 (the pose log's, the
+        // progress's, extra viewers, a window) it holds before step 0 until that viewer has its snapshot; otherwise
+        // (a sweep's runs) it starts at once
+        boolean holdForViewers = poseLog != null || progress || viewer || extraViewers.liveViewers > 0
+                || extraViewers.frozenViewers > 0;
         if (oneJvm) {
-            // its robots are there at once: it holds before step 0 until the pose log's viewer has its snapshot
-            environmentArgs.addAll(List.of("--one-jvm", "--start-paused"));
+            environmentArgs.add("--one-jvm");
+            if (holdForViewers) {
+                environmentArgs.add("--start-paused");
+            }
         }
         java.util.function.Consumer<String> lines = line -> {
             if (line.startsWith("listening ")) {
@@ -217,7 +224,7 @@ public final class HeadlessRunner implements Callable<Integer> {
             clients.add(children.startChild("geometry", jvm.geometry(),
                     "robosim.geometry.GeometryMain", geometryArgs, null));
         }
-        if (oneJvm) {
+        if (oneJvm && holdForViewers) {
             // the robots are here already: the run starts once the watch is one of its viewers (its snapshot came)
             if (watch != null && !watch.awaitSnapshot(60)) {
                 System.err.println("headless: the Environment sent the pose log's viewer no snapshot within 60 s");
@@ -231,7 +238,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                     return 1;
                 }
             }
-        } else {
+        } else if (!oneJvm) {
             clients.addAll(startRobots(spec, children, bound.get("robots")));
         }
         String early = EarlyExit.await(started, environment, clients);

@@ -98,7 +98,7 @@ final class OutputDirectory {
         if (!Files.exists(file) || !Arrays.equals(Files.readAllBytes(file), Files.readAllBytes(dir.resolve("sweep.xml")))) {
             throw new SweepException(file + ": changed or gone since " + dir + " was made from it");
         }
-        Sweep sweep = SweepFile.read(file);
+        Sweep sweep = SweepFile.readAgain(file);
         if (!Arrays.equals(Files.readAllBytes(sweep.world()), Files.readAllBytes(dir.resolve("world.xml")))) {
             throw new SweepException(sweep.world() + ": changed since " + dir + " was made from it");
         }

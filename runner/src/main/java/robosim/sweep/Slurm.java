@@ -82,21 +82,15 @@ final class Slurm {
         if (options.time() != null) {
             place.add("--time=" + options.time());
         }
-        int most = maxArraySize();
         Path jobs = dir.resolve("jobs");
         Files.deleteIfExists(jobs);
         List<String> arrays = new ArrayList<>();
-        for (int from = 0; from < todo.size(); ) {
-            int offset = todo.get(from) / most * most;
-            List<Integer> chunk = new ArrayList<>();
-            while (from < todo.size() && todo.get(from) < offset + most) {
-                chunk.add(todo.get(from++) - offset);
-            }
+        for (Map.Entry<Integer, String> a : arrays(todo, maxArraySize()).entrySet()) {
             List<String> array = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep",
-                    "--array=" + ranges(chunk) + "%" + options.maxParallel(), "--output=" + dir.resolve("task-%A_%a.out"),
+                    "--array=" + a.getValue() + "%" + options.maxParallel(), "--output=" + dir.resolve("task-%A_%a.out"),
                     "--cpus-per-task=" + (sweep.layout() == Sweep.Layout.ONE_JVM ? 1 : 2)));
             array.addAll(place);
-            array.addAll(List.of(task.toString(), Integer.toString(offset)));
+            array.addAll(List.of(task.toString(), Integer.toString(a.getKey())));
             String id = jobId(run(array));
             arrays.add(id);
             Files.writeString(jobs, "array " + id + "\n", StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.CREATE,
@@ -175,6 +169,24 @@ final class Slurm {
             }
         }
         return count;
+    }
+
+    /**
+     * The job arrays for the runs {@code todo} (sorted) when an array's indices must stay under {@code most}
+     * (MaxArraySize): each array's offset (a multiple of {@code most}) and its {@code --array} indices, the runs
+     * less the offset, in order.
+     */
+    static Map<Integer, String> arrays(List<Integer> todo, int most) {
+        Map<Integer, String> out = new java.util.LinkedHashMap<>();
+        for (int from = 0; from < todo.size(); ) {
+            int offset = todo.get(from) / most * most;
+            List<Integer> chunk = new ArrayList<>();
+            while (from < todo.size() && todo.get(from) < offset + most) {
+                chunk.add(todo.get(from++) - offset);
+            }
+            out.put(offset, ranges(chunk));
+        }
+        return out;
     }
 
     /** {@code 0-5,7,9-11} for these sorted indices. */

@@ -94,6 +94,17 @@ public final class SweepFile {
 
     /** Reads and checks {@code file}: the world loads with every combination of the values, every name is known. */
     public static Sweep read(Path file) throws SweepException {
+        Sweep sweep = readAgain(file);
+        checkWorld(file, sweep);
+        return sweep;
+    }
+
+    /**
+     * Reads {@code file} as {@link #read} does, without loading its world for every combination: for a sweep whose
+     * output directory holds the same sweep file and world as when {@link #read} checked them (a Slurm task, the
+     * gather job, status), which every run then loads again anyway.
+     */
+    static Sweep readAgain(Path file) throws SweepException {
         String where = file.toString();
         SweepFile xml;
         try {
@@ -198,7 +209,6 @@ public final class SweepFile {
         if (sweep.runs() > MAX_RUNS) {
             throw new SweepException(file + ": " + sweep.runs() + " runs, at most " + MAX_RUNS);
         }
-        checkWorld(file, sweep);
         return sweep;
     }
 

@@ -69,8 +69,8 @@ public final class SweepMain implements Callable<Integer> {
             + "running at once (the array's %%K; default: ${DEFAULT-VALUE}).")
     int maxParallel;
 
-    @Option(names = "--wait", description = "With --slurm: wait until the gather job has ended, showing progress, then "
-            + "exit as a local sweep does.")
+    @Option(names = "--wait", description = "With --slurm: wait until the gather job has ended, showing progress (squeue "
+            + "twice a second), then exit as a local sweep does.")
     boolean await;
 
     @Override
@@ -145,7 +145,8 @@ public final class SweepMain implements Callable<Integer> {
             return bad(e.getMessage());
         }
         err.println("sweep: submitted job array " + String.join(", ", jobsSubmitted.arrays()) + " (" + todo.size()
-                + " tasks, at most " + maxParallel + " at once) and gather job " + jobsSubmitted.gather() + " (after it); "
+                + (todo.size() == 1 ? " task" : " tasks") + ", at most " + maxParallel + " at once) and gather job "
+                + jobsSubmitted.gather() + " (after it); "
                 + "sweep.sh status " + dir.path());
         if (!await) {
             return 0;
@@ -179,7 +180,7 @@ public final class SweepMain implements Callable<Integer> {
             if (!active) {
                 break;
             }
-            Thread.sleep(1000); // (polling squeue: Slurm tells no one when a job ends)
+            Thread.sleep(500); // (polling squeue: Slurm tells no one when a job ends)
         }
         progress.close();
         return finish(sweep, dir, todo.size() - seen.cardinality(), err);

@@ -7,7 +7,7 @@
  * and plots are made from the rows ({@link robosim.sweep.Tables}, {@link robosim.sweep.Plots}). On this machine
  * ({@link robosim.sweep.LocalPool}) or as a Slurm job array ({@link robosim.sweep.Slurm}).
  * Threads: {@code main} (reads the file, starts the pool or submits to Slurm, makes the tables; with
- * {@code --slurm --wait} polls {@code squeue} once a second), {@code sweep-run[k]} (one per run at once: starts a
+ * {@code --slurm --wait} polls {@code squeue} twice a second), {@code sweep-run[k]} (one per run at once: starts a
  * run's process, waits for it and writes its row), {@code sweep-stop} (the JVM's shutdown hook: on Ctrl-C it stops
  * every run and makes the tables from the rows written; in a Slurm task it marks the run stopped, so it writes no
  * row), and {@code stop-children} ({@link robosim.runner.ChildProcesses}' hook).

@@ -96,6 +96,14 @@ class SweepFileTest {
     }
 
     @Test
+    void aResubmissionsArraysHoldOnlyTheMissingRunsUnderMaxArraySize() {
+        assertEquals(Map.of(0, "0-3,5,9-11"), Slurm.arrays(List.of(0, 1, 2, 3, 5, 9, 10, 11), 1001));
+        assertEquals(List.of(0, 4, 8), List.copyOf(Slurm.arrays(List.of(1, 2, 3, 4, 9, 11), 4).keySet()));
+        assertEquals(List.of("1-3", "0", "1,3"), List.copyOf(Slurm.arrays(List.of(1, 2, 3, 4, 9, 11), 4).values()),
+                "each array's indices are the runs less its offset: run 9 is offset 8's index 1");
+    }
+
+    @Test
     void columnsAreNeverTakenTwice() throws Exception {
         String e = refused(sweep("", "<seeds from=\"1\" to=\"2\"/><param name=\"seed\" values=\"1 2\"/>"));
         assertTrue(e.contains("a row's own column or a built-in metric has that name (the seeds are <seeds"), e);
