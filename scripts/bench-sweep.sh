@@ -6,8 +6,8 @@
 #           speeds, one JVM a run, a pool as large as the cores; its floor is its own rows: the sum of their
 #           wall times / runs at once (what the pool would take with no cost of its own)
 #   loop    the same 200 runs by hand: xargs -P CORES of headless.sh --one-jvm (no recording, no metrics)
-#   cpu     one of these runs alone, its CPU time (user + system), with the sweep's JVM options for its runs
-#           (C1 alone, serial GC) and with the JVM's defaults
+#   cpu     one of these runs alone, its CPU time (user + system; the median of 3, alternated, after one of each
+#           unmeasured), with the sweep's JVM options for its runs (C1 alone, serial GC) and with the JVM's defaults
 # --slurm   also the sweep through the one-node Slurm (scripts/slurm-cluster.sh start first), --max-parallel
 #           CORES: the overhead per task = (wall x CORES - the rows' wall times) / runs (submission to row
 #           written, less the run)
@@ -61,9 +61,18 @@ for rep in $(seq "$reps"); do
   sum=$(rowsum "$work/local")
   by_hand=$(seconds loop)
   one=(scripts/headless.sh --one-jvm --env test-envs/bench-10.xml --steps 2000)
-  short=$(ROBOSIM_JAVA_OPTS="-XX:TieredStopAtLevel=1 -XX:+UseSerialGC" cpu "${one[@]}")
-  defaults=$(cpu "${one[@]}")
-  line=$(awk -v w="$sweep" -v s="$sum" -v c="$cores" -v l="$by_hand" -v a="$short" -v d="$defaults" 'BEGIN { printf "sweep %.2f s; its rows %.2f s / %d at once = %.2f s (sweep / that = %.2f); loop %.2f s (sweep / loop = %.2f); one run CPU %.2f s with the sweep'"'"'s JVM options, %.2f s with the defaults (%.2f)", w, s, c, s / c, w / (s / c), l, w / l, a, d, a / d }')
+  fast="-XX:TieredStopAtLevel=1 -XX:+UseSerialGC"
+  # each first once unmeasured: its class-data archive (one per JVM options) is made at the end of a first run
+  ROBOSIM_JAVA_OPTS=$fast cpu "${one[@]}" >/dev/null
+  cpu "${one[@]}" >/dev/null
+  shorts=() defaults=()
+  for i in 1 2 3; do
+    shorts+=("$(ROBOSIM_JAVA_OPTS=$fast cpu "${one[@]}")")
+    defaults+=("$(cpu "${one[@]}")")
+  done
+  short=$(printf '%s\n' "${shorts[@]}" | sort -g | sed -n 2p)
+  defaults=$(printf '%s\n' "${defaults[@]}" | sort -g | sed -n 2p)
+  line=$(awk -v w="$sweep" -v s="$sum" -v c="$cores" -v l="$by_hand" -v a="$short" -v d="$defaults" 'BEGIN { printf "sweep %.2f s; its rows %.2f s / %d at once = %.2f s (sweep / that = %.2f); loop %.2f s (sweep / loop = %.2f); one run'"'"'s CPU %.2f s with the sweep'"'"'s JVM options, %.2f s with the defaults (%.2f)", w, s, c, s / c, w / (s / c), l, w / l, a, d, a / d }')
   if [ "$slurm" = 1 ]; then
     rm -rf "$work/slurm"
     through=$(seconds scripts/sweep.sh "$work/spec.xml" --out "$work/slurm" --slurm --wait --max-parallel "$cores")
