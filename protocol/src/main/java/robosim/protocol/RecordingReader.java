@@ -33,6 +33,8 @@ public final class RecordingReader implements Closeable {
 
     private final Path file;
     private final RandomAccessFile in;
+    /** The file's version: {@link RecordingFormat#VERSION}, or the one before it (views without reports). */
+    private int version;
     private final WorldSnapshot snapshot;
     private long[] stepOffsets = new long[1024];
     private long[] stepNumbers = new long[1024];
@@ -57,8 +59,8 @@ public final class RecordingReader implements Closeable {
             if (!Arrays.equals(magic, RecordingFormat.MAGIC)) {
                 throw new IOException(file + ": not a RoboSim recording");
             }
-            int version = in.readByte();
-            if (version != RecordingFormat.VERSION) {
+            version = in.readByte();
+            if (version != RecordingFormat.VERSION && version != RecordingFormat.VERSION_WITHOUT_REPORTS) {
                 throw new IOException(file + ": recording version " + version + ", this RoboSim reads "
                         + RecordingFormat.VERSION);
             }
@@ -225,7 +227,7 @@ public final class RecordingReader implements Closeable {
             int n = count(o, update.count());
             List<RobotView> views = new ArrayList<>(n);
             for (int k = 0; k < n; k++) {
-                RobotView v = RobotView.readRecorded(o, update.step());
+                RobotView v = RobotView.readRecorded(o, update.step(), version == RecordingFormat.VERSION);
                 if (v.robot() >= update.count() || (k > 0 && v.robot() <= views.get(k - 1).robot())) {
                     throw new IOException("a view of robot " + v.robot() + " out of order");
                 }

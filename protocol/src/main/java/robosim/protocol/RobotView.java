@@ -283,6 +283,11 @@ public final class RobotView implements java.io.Externalizable {
 
     /** Reads a body as {@link #writeBody} wrote it, for the step released as {@code stepNumber}. */
     void readBody(ObjectInput in, long stepNumber) throws IOException {
+        readBody(in, stepNumber, true);
+    }
+
+    /** As {@link #readBody(ObjectInput, long)}; without {@code reports} for a recording made before views had them. */
+    private void readBody(ObjectInput in, long stepNumber, boolean withReports) throws IOException {
         step = stepNumber;
         robot = Limits.checkCount("robot index", in.readInt(), Limits.MAX_ROBOTS - 1);
         moveMm = in.readDouble();
@@ -296,14 +301,14 @@ public final class RobotView implements java.io.Externalizable {
             sent = List.copyOf(Wire.readEvents(in, "sent message count"));
             delivered = List.copyOf(Wire.readEvents(in, "delivered message count"));
             notices = Wire.readStrings(in, "notice count", Limits.MAX_MESSAGES_PER_STEP);
-            reports = Report.read(in, MAX_LOG);
+            reports = withReports ? Report.read(in, MAX_LOG) : List.of();
         }
     }
 
-    /** A view read from a recording: the step it was recorded in, nothing merged. */
-    static RobotView readRecorded(ObjectInput in, long stepNumber) throws IOException {
+    /** A view read from a recording: the step it was recorded in, nothing merged; {@code withReports}: version 4 on. */
+    static RobotView readRecorded(ObjectInput in, long stepNumber, boolean withReports) throws IOException {
         RobotView v = new RobotView();
-        v.readBody(in, stepNumber);
+        v.readBody(in, stepNumber, withReports);
         v.sinceStep = stepNumber;
         return v;
     }

@@ -62,6 +62,29 @@ class RecordingTest {
     }
 
     @Test
+    void aVersionThreeRecordingReadsAsViewsWithoutReportsAndVersionTwoIsRefused(@TempDir Path dir) throws IOException {
+        Path file = dir.resolve("v3.rec");
+        try (RecordingWriter w = new RecordingWriter(file)) { // (views with nothing more: the same bytes in 3 and 4)
+            w.snapshot(new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), NAMES,
+                    List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT), update(0)));
+            StepRequest still = new StepRequest(0, 0, 0, false, List.of());
+            StepResponse nothing = new StepResponse(0, 0, 0, "", 0, 1, 0, new double[0], List.of(), List.of(), List.of());
+            w.step(update(0), new StepRequest[] {still, null}, new StepResponse[] {nothing, null});
+        }
+        byte[] bytes = Files.readAllBytes(file);
+        bytes[RecordingFormat.MAGIC.length] = 3;
+        Files.write(file, bytes);
+        try (RecordingReader r = new RecordingReader(file)) {
+            assertEquals(1, r.steps());
+            assertEquals(List.of(), r.step(0).views().get(0).reports());
+        }
+        bytes[RecordingFormat.MAGIC.length] = 2;
+        Files.write(file, bytes);
+        IOException e = assertThrows(IOException.class, () -> new RecordingReader(file));
+        assertEquals(file + ": recording version 2, this RoboSim reads 4", e.getMessage());
+    }
+
+    @Test
     void aRecordingReadsBackAsWritten(@TempDir Path dir) throws IOException {
         Path file = dir.resolve("run.rec");
         write(file, 10, true);

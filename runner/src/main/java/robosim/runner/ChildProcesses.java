@@ -122,6 +122,11 @@ public final class ChildProcesses implements AutoCloseable {
         return child.process;
     }
 
+    /** True once {@link #close} has begun (this JVM stopping, or its owner done). */
+    public synchronized boolean closing() {
+        return closed;
+    }
+
     /**
      * Adds a started child to those {@link #close} stops; when close has begun already (a child started while this
      * JVM is being stopped), stops it at once and says so.

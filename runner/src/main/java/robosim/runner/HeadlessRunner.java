@@ -165,11 +165,9 @@ public final class HeadlessRunner implements Callable<Integer> {
         List<String> removed = new CopyOnWriteArrayList<>();
         List<String> controlFailed = new CopyOnWriteArrayList<>(); // (one JVM: the Environment's lines)
         List<String> environmentArgs = new ArrayList<>(environmentOptions.args(env, steps, noGeometry, resetArgs()));
-        // one JVM: its robots are there at once, so when a viewer of ours must see step 0 (the pose log's, the
-        // progress's, extra viewers, a window) it holds before step 0 until that viewer has its snapshot; otherwise
-        // (a sweep's runs) it starts at once
-        boolean holdForViewers = poseLog != null || progress || viewer || extraViewers.liveViewers > 0
-                || extraViewers.frozenViewers > 0;
+        // one JVM: its robots are there at once, so when the watch must see step 0 (the pose log's, the progress's
+        // viewer) it holds before step 0 until the watch has its snapshot; otherwise (a sweep's runs) it starts at once
+        boolean holdForViewers = poseLog != null || progress;
         if (oneJvm) {
             environmentArgs.add("--one-jvm");
             if (holdForViewers) {

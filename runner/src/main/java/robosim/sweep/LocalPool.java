@@ -35,18 +35,19 @@ final class LocalPool {
     /** Runs {@code todo}; returns the runs that were stopped by a signal from outside (they have no row). */
     int run(List<Integer> todo, Progress progress) throws InterruptedException {
         ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
-        SweepRun runner = new SweepRun(sweep, out, children, keepRecordings, () -> stopping);
+        SweepRun runner = new SweepRun(sweep, out, children, keepRecordings,
+                () -> stopping || children.closing());
         AtomicInteger next = new AtomicInteger();
         List<Thread> threads = new ArrayList<>();
         for (int k = 0; k < Math.min(jobs, todo.size()); k++) {
             threads.add(new Thread(() -> {
                 int i;
-                while (!stopping && (i = next.getAndIncrement()) < todo.size()) {
+                while (!stopping && !children.closing() && (i = next.getAndIncrement()) < todo.size()) {
                     int index = todo.get(i);
                     try {
                         Row row = runner.run(index);
-                        if (stopping) {
-                            return;
+                        if (stopping || children.closing()) {
+                            return; // (this JVM is stopping: the run was stopped with it)
                         }
                         if (row == null) {
                             unfinished.incrementAndGet();
@@ -54,6 +55,9 @@ final class LocalPool {
                             progress.finished(row.ok());
                         }
                     } catch (IOException | RuntimeException e) {
+                        if (stopping || children.closing()) {
+                            return; // (started as the stop came: stopped at once, nothing to say)
+                        }
                         err.println("sweep: run " + index + ": " + e.getMessage());
                         unfinished.incrementAndGet();
                     } catch (InterruptedException e) {

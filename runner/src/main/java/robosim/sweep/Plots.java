@@ -66,10 +66,10 @@ final class Plots {
         List<Double> x = new ArrayList<>();
         List<Double> y = new ArrayList<>();
         for (Row r : rows) {
-            String v = r.values().get(metric);
-            if (r.ok() && v != null && !v.isEmpty()) {
+            double v = Tables.number(r, metric);
+            if (r.ok() && !Double.isNaN(v)) {
                 x.add(Double.parseDouble(r.values().get("seed")));
-                y.add(Double.parseDouble(v));
+                y.add(v);
             }
         }
         chart.getStyler().setDefaultSeriesRenderStyle(XYSeries.XYSeriesRenderStyle.Scatter);

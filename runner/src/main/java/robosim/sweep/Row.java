@@ -54,7 +54,12 @@ record Row(Map<String, String> values) {
 
     /** The row in {@code file}; an IOException naming it when it is not a row. */
     static Row read(Path file) throws IOException {
-        List<String> lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        List<String> lines;
+        try {
+            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+        } catch (java.nio.charset.CharacterCodingException e) {
+            throw new IOException(file + ": not a run's row (bytes that are not UTF-8)");
+        }
         List<String> names = lines.size() == 2 ? Csv.fields(lines.get(0)) : null;
         List<String> fields = lines.size() == 2 ? Csv.fields(lines.get(1)) : null;
         if (names == null || fields == null || names.size() != fields.size() || !names.containsAll(FIRST)) {
@@ -63,6 +68,11 @@ record Row(Map<String, String> values) {
         Map<String, String> values = new LinkedHashMap<>();
         for (int i = 0; i < names.size(); i++) {
             values.put(names.get(i), fields.get(i));
+        }
+        if (!List.of(OK, FAILED).contains(values.getOrDefault("status", "")) || !values.getOrDefault("exit_code", "")
+                .matches("-?[0-9]{1,9}")) {
+            throw new IOException(file + ": not a run's row (status '" + robosim.protocol.Printable.of(values.get("status"),
+                    20) + "', exit_code '" + robosim.protocol.Printable.of(values.get("exit_code"), 20) + "')");
         }
         String index = values.get("index");
         if (!index.matches("[0-9]{1,9}") || !file.getFileName().equals(file(file.getParent(), Integer.parseInt(index))

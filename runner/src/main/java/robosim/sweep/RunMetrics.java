@@ -120,9 +120,14 @@ public final class RunMetrics {
         int columns = Math.max(1, (int) Math.ceil((arena.maxXMm() - arena.minXMm()) / cell));
         int rows = Math.max(1, (int) Math.ceil((arena.maxYMm() - arena.minYMm()) / cell));
         BitSet visited = new BitSet(columns * rows);
-        double[] lastX = new double[0];
-        double[] lastY = new double[0];
-        boolean[] touching = new boolean[0];
+        PoseUpdate start = world.poses(); // (where the robots stood before step 0: its moves count too)
+        double[] lastX = new double[start.count()];
+        double[] lastY = new double[start.count()];
+        for (int r = 0; r < start.count(); r++) {
+            lastX[r] = start.xMm(r);
+            lastY[r] = start.yMm(r);
+        }
+        boolean[] touching = new boolean[start.count()];
         double distanceMm = 0;
         long contacts = 0;
         long delivered = 0;

@@ -69,12 +69,16 @@ final class Slurm {
         Path dir = out.slurm();
         Files.createDirectories(dir);
         Path task = dir.resolve("task.sh");
-        Files.writeString(task, "#!/usr/bin/env bash\n# A run of the sweep in its directory per task of the array "
+        Path written = dir.resolve(".task.sh.tmp-" + ProcessHandle.current().pid());
+        Files.writeString(written, "#!/usr/bin/env bash\n# A run of the sweep in its directory per task of the array "
                 + "(written by sweep.sh --slurm): run OFFSET + the task's index\n"
                 + "export ROBOSIM_NO_BUILD=1 # (every task runs the build the submission made: none builds)\n"
                 + "exec " + quoted(script.toString()) + " task " + quoted(where) + " \"$(($1 + SLURM_ARRAY_TASK_ID))\""
                 + (options.keepRecordings() ? " --keep-recordings" : "") + "\n", StandardCharsets.UTF_8);
-        Files.setPosixFilePermissions(task, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Files.setPosixFilePermissions(written, PosixFilePermissions.fromString("rwxr-xr-x"));
+        // (renamed into place: a pending task of an earlier submission may be starting the old one)
+        Files.move(written, task, java.nio.file.StandardCopyOption.ATOMIC_MOVE,
+                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
         List<String> place = new ArrayList<>();
         if (options.partition() != null) {
             place.add("--partition=" + options.partition());
@@ -135,6 +139,18 @@ final class Slurm {
             }
         }
         return new Jobs(arrays, gather);
+    }
+
+    /**
+     * True while any of the jobs has not ended, as far as this machine can tell: false where there is no
+     * {@code squeue} (the directory was made on a cluster and is resumed elsewhere) or Slurm has forgotten them.
+     */
+    static boolean stillActive(Jobs jobs) throws IOException, InterruptedException {
+        try {
+            return active(jobs);
+        } catch (SweepException noSqueueOrForgotten) {
+            return false;
+        }
     }
 
     /** True while any of the jobs (any task of the array) has not ended, as {@code squeue} says. */

@@ -98,7 +98,7 @@ public record Sweep(Path file, Path world, long steps, long seedFrom, long seedT
         return n;
     }
 
-    /** Every run, saturated at {@link Integer#MAX_VALUE}. */
+    /** Every run, saturated at {@link Long#MAX_VALUE}. */
     public long runs() {
         try {
             return Math.multiplyExact(Math.multiplyExact(combinationCount(), seeds()), repeat);

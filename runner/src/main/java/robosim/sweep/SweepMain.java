@@ -97,17 +97,21 @@ public final class SweepMain implements Callable<Integer> {
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
-        if (slurm) {
-            return slurm(sweep, dir, dir.missing(sweep), System.err);
-        }
         java.io.Closeable lock;
         try {
             lock = dir.lock();
+            Slurm.Jobs earlier = Slurm.jobs(dir);
+            if (earlier != null && Slurm.stillActive(earlier)) {
+                lock.close();
+                return bad(dir.path() + ": its Slurm jobs (" + earlier.all() + ") are still running their runs: wait "
+                        + "for them (sweep.sh status " + dir.path() + ") or scancel them first");
+            }
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
-        try (lock) {
-            return local(sweep, dir, dir.missing(sweep), System.err);
+        try (lock) { // (held while submitting, or while the local pool runs)
+            return slurm ? slurm(sweep, dir, dir.missing(sweep), System.err)
+                    : local(sweep, dir, dir.missing(sweep), System.err);
         }
     }
 

@@ -97,7 +97,8 @@ final class SweepRun {
             values.put(values.containsKey(m.getKey()) || Row.LAST.contains(m.getKey()) ? "report." + m.getKey()
                     : m.getKey(), Csv.number(m.getValue()));
         }
-        values.put("error", Printable.of(error, 300));
+        // (the output directory named as DIR: the same run's row is the same wherever the sweep writes)
+        values.put("error", Printable.of(error.replace(out.path().toString(), "DIR"), 300));
         values.put("wall_s", String.format(java.util.Locale.ROOT, "%.3f", wallS));
         Row row = new Row(values);
         row.write(out.row(index));

@@ -69,13 +69,40 @@ final class Tables {
             }
             Map<String, SummaryStatistics> stats = byCombination.get(combination);
             for (String m : metrics) {
-                String v = r.values().get(m);
-                if (v != null && !v.isEmpty()) {
-                    stats.computeIfAbsent(m, k -> new SummaryStatistics()).addValue(Double.parseDouble(v));
+                double v = number(r, m);
+                if (!Double.isNaN(v)) {
+                    stats.computeIfAbsent(m, k -> new SummaryStatistics()).addValue(v);
                 }
             }
         }
     }
+
+    /**
+     * Metric {@code m} of row {@code r}: NaN when the row has none, or (a row damaged by hand) has something that is
+     * not a number there, which is said once on stderr and left out.
+     */
+    static double number(Row r, String m) {
+        String v = r.values().get(m);
+        if (v == null || v.isEmpty()) {
+            return Double.NaN;
+        }
+        try {
+            double d = Double.parseDouble(v);
+            if (Double.isFinite(d)) {
+                return d;
+            }
+        } catch (NumberFormatException e) {
+            // (said below)
+        }
+        if (SAID.add(r.index() + " " + m)) {
+            System.err.println("sweep: run " + r.index() + ": " + m + " '" + robosim.protocol.Printable.of(v, 40)
+                    + "' is not a number; left out of the summary and the plots");
+        }
+        return Double.NaN;
+    }
+
+    /** The row metrics already said not to be numbers. */
+    private static final java.util.Set<String> SAID = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     private Map<String, String> combinationOf(Row r) {
         Map<String, String> c = new LinkedHashMap<>();

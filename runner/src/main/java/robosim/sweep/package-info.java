@@ -10,6 +10,7 @@
  * {@code --slurm --wait} polls {@code squeue} twice a second), {@code sweep-run[k]} (one per run at once: starts a
  * run's process, waits for it and writes its row), {@code sweep-stop} (the JVM's shutdown hook: on Ctrl-C it stops
  * every run and makes the tables from the rows written; in a Slurm task it marks the run stopped, so it writes no
- * row), and {@code stop-children} ({@link robosim.runner.ChildProcesses}' hook).
+ * row), {@code stop-children} ({@link robosim.runner.ChildProcesses}' hook), and the JVM's {@code process reaper}
+ * (puts an ended run's class-data archive in place, {@code ChildProcesses.startLogged}).
  */
 package robosim.sweep;

@@ -111,11 +111,20 @@ class SweepFileTest {
         assertEquals("report.distance_m", RunMetrics.reportColumn("distance_m"));
         assertEquals("turns", RunMetrics.reportColumn("turns"));
         Path rows = Files.createDirectories(dir.resolve("rows"));
-        Files.writeString(rows.resolve("run-000017.csv"), "index,seed,repetition\n3,1,1\n");
+        String header = "index,seed,repetition,status,exit_code\n";
+        Files.writeString(rows.resolve("run-000017.csv"), header + "3,1,1,ok,0\n");
         java.io.IOException bad = assertThrows(java.io.IOException.class, () -> Row.read(rows.resolve("run-000017.csv")));
         assertTrue(bad.getMessage().endsWith("index '3' is not this row file's run"), bad.getMessage());
-        Files.writeString(rows.resolve("run-000003.csv"), "index,seed,repetition\n3,1,1\n");
+        Files.writeString(rows.resolve("run-000003.csv"), header + "3,1,1,ok,0\n");
         assertEquals(3, Row.read(rows.resolve("run-000003.csv")).index());
+        Files.writeString(rows.resolve("run-000004.csv"), header + "4,1,1,fine,0\n");
+        assertTrue(assertThrows(java.io.IOException.class, () -> Row.read(rows.resolve("run-000004.csv"))).getMessage()
+                .endsWith("not a run's row (status 'fine', exit_code '0')"));
+        Files.write(rows.resolve("run-000005.csv"), new byte[] {'i', (byte) 0xff, '\n'});
+        assertEquals(rows.resolve("run-000005.csv") + ": not a run's row (bytes that are not UTF-8)", assertThrows(
+                java.io.IOException.class, () -> Row.read(rows.resolve("run-000005.csv"))).getMessage());
+        Row odd = new Row(Map.of("index", "6", "status", "ok", "distance_m", "abc"));
+        assertTrue(Double.isNaN(Tables.number(odd, "distance_m")), "not a number: left out");
     }
 
     @Test

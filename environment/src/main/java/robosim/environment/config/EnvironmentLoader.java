@@ -55,6 +55,14 @@ public final class EnvironmentLoader {
      */
     public WorldSpec load(Path file, Map<String, String> given) throws EnvironmentFileException {
         String where = file.toString();
+        for (Map.Entry<String, String> g : given.entrySet()) {
+            if (!Placeholders.NAME.matcher(g.getKey()).matches()
+                    || robosim.protocol.Limits.utfLength(g.getValue()) > robosim.protocol.Limits.MAX_PARAMETER_BYTES) {
+                throw new EnvironmentFileException(where + ": --param " + robosim.protocol.Printable.of(g.getKey(), 64)
+                        + ": a name of 1 to 64 letters, digits, '_', '.' or '-' (not a digit first) and a value of at most "
+                        + robosim.protocol.Limits.MAX_PARAMETER_BYTES + " bytes");
+            }
+        }
         EnvironmentFile xml;
         Placeholders.Replaced replaced;
         try {

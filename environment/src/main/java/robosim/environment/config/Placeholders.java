@@ -15,7 +15,7 @@ import java.util.regex.Pattern;
  * (a value holds no line break), so a later error's line number is the file's.
  */
 final class Placeholders {
-    /** What a parameter's name may be: as a report's, 1 to 64 of {@code A-Z a-z 0-9 _ . -}, not a digit first. */
+    /** What a parameter's name may be: 1 to 64 of {@code A-Z a-z 0-9 _ . -}, not a digit first. */
     static final Pattern NAME = Pattern.compile("[A-Za-z_][A-Za-z0-9_.-]{0,63}");
     /** {@code $${} (a literal), or {@code ${name}} / {@code ${name:default}} within one line, nothing nested. */
     private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\$\\{|\\$\\{([^}:\\n\\r${]*)(?::([^}\\n\\r${]*))?}");
@@ -41,9 +41,8 @@ final class Placeholders {
                 continue;
             }
             String name = m.group(1);
-            String at = where + at(text, m.start());
             if (!NAME.matcher(name).matches()) {
-                throw new EnvironmentFileException(at + ": '" + robosim.protocol.Printable.of(m.group(), 80)
+                throw new EnvironmentFileException(where + at(text, m.start()) + ": '" + robosim.protocol.Printable.of(m.group(), 80)
                         + "' is not a placeholder: a name is 1 to 64 letters, digits, '_', '.' or '-', not a digit first");
             }
             String value;
@@ -52,11 +51,12 @@ final class Placeholders {
             } else if (m.group(2) != null) {
                 value = m.group(2);
             } else {
-                throw new EnvironmentFileException(at + ": ${" + name + "} has no default (write ${" + name
-                        + ":VALUE}) and no value was given for it (--param " + name + "=VALUE)");
+                throw new EnvironmentFileException(where + at(text, m.start()) + ": ${" + name + "} has no default (write ${"
+                        + name + ":VALUE}) and no value was given for it (--param " + name + "=VALUE)");
             }
             if (value.indexOf('\n') >= 0 || value.indexOf('\r') >= 0) {
-                throw new EnvironmentFileException(at + ": the value of ${" + name + "} holds a line break");
+                throw new EnvironmentFileException(where + at(text, m.start()) + ": the value of ${" + name
+                        + "} holds a line break");
             }
             names.add(name);
             out.append(text, from, m.start()).append(value);
@@ -76,7 +76,7 @@ final class Placeholders {
         }
     }
 
-    /** {@code :line:column} of offset {@code i}, both from 1. */
+    /** {@code :line:column} of offset {@code i}, both from 1 (counted only for an error's line). */
     private static String at(String text, int i) {
         int line = 1;
         int lineStart = 0;

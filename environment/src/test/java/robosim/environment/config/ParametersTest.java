@@ -99,5 +99,6 @@ class ParametersTest {
         assertTrue(failure(WORLD.replace("\"role\" value=\"scout\"", "\"role\""), Map.of()).contains("needs a value"));
         assertTrue(failure(WORLD.replace("name=\"mode\"", "name=\"speed\""), Map.of()).contains("given twice"));
         assertTrue(failure(WORLD, Map.of("x", "abc")).contains("'abc' is not a double"));
+        assertTrue(failure(WORLD, Map.of("speed", "v".repeat(5000))).contains(": --param speed: a name of 1 to 64"));
     }
 }
