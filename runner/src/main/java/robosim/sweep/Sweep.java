@@ -27,7 +27,7 @@ public record Sweep(Path file, Path world, long steps, long seedFrom, long seedT
         List<MetricChoice> metrics, double areaCellM) {
     /**
      * The runs' JVM options unless a sweep file says otherwise ({@code jvm="..."}): for many short runs at once,
-     * compile with C1 alone and collect with one thread, which costs a short run about 40% less CPU (its JVM does
+     * compile with C1 alone and collect with one thread, which costs a short run about a third less CPU (its JVM does
      * not spend a second core on C2 and parallel GC threads) and a long one about as much
      * ({@code docs/PERFORMANCE.md}, "Sweeps"). {@code jvm=""}: the JVM's defaults, for long runs of large worlds.
      */
