@@ -109,12 +109,17 @@ class FaultsTest {
         return c;
     }
 
-    /** A recording viewer that keeps every update in {@code seen}; its end is waited for with awaitEnd. */
+    /**
+     * A recording viewer that keeps every update in {@code seen}, returned once the Environment has taken it in (its
+     * snapshot came), so it sees every step of a run that starts after; its end is waited for with awaitEnd.
+     */
     private static ViewerClient record(int viewerPort, List<PoseUpdate> seen) throws Exception {
         ViewerClient v = ViewerClient.connect("127.0.0.1", viewerPort, true, 10_000);
+        java.util.concurrent.CountDownLatch joined = new java.util.concurrent.CountDownLatch(1);
         v.start(new ViewerClient.Listener() {
             @Override
             public void snapshot(WorldSnapshot snapshot) {
+                joined.countDown();
             }
 
             @Override
@@ -122,6 +127,7 @@ class FaultsTest {
                 seen.add(update);
             }
         });
+        assertTrue(joined.await(LONG, TimeUnit.SECONDS), "the recording viewer got no snapshot");
         return v;
     }
 
