@@ -140,6 +140,7 @@ final class InJvmSimulation {
             int[] ports = env.ports();
             ViewerHello hello = new ViewerHello(true, 0, spec.robots().isEmpty() ? "" : spec.robots().get(0).name());
             ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], hello, 10_000, keys);
+            java.util.concurrent.CountDownLatch joined = new java.util.concurrent.CountDownLatch(1);
             viewer.start(new ViewerClient.Listener() {
                 @Override
                 public void robotView(robosim.protocol.RobotView view) {
@@ -149,6 +150,7 @@ final class InJvmSimulation {
                 @Override
                 public void snapshot(WorldSnapshot first) {
                     snapshot = first;
+                    joined.countDown();
                 }
 
                 @Override
@@ -162,6 +164,10 @@ final class InJvmSimulation {
                     onUpdate.accept(update, ports[1]);
                 }
             });
+            // (in the world before any robot comes: under load it could join after the run began and miss steps)
+            if (!joined.await(60, java.util.concurrent.TimeUnit.SECONDS)) {
+                throw new IllegalStateException("the recording viewer got no snapshot within 60 s");
+            }
             List<ViewerClient> lives = new ArrayList<>();
             PoseUpdate[] lastSeen = new PoseUpdate[liveViewers];
             for (int v = 0; v < liveViewers; v++) {
