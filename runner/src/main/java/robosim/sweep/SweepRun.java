@@ -81,9 +81,7 @@ final class SweepRun {
             try {
                 metrics = RunMetrics.of(recording, sweep.metrics(), sweep.areaCellM());
             } catch (IOException | RuntimeException e) {
-                // (the message names the recording: without the directory, so rows of the same run are the same anywhere)
-                error = error.isEmpty() ? "metrics: " + String.valueOf(e.getMessage()).replace(recording.toString(),
-                        recording.getFileName().toString()) : error;
+                error = error.isEmpty() ? "metrics: " + e.getMessage() : error;
             }
         } else if (code == 0) {
             error = "no recording";
