@@ -33,7 +33,12 @@ public final class GeometryClient {
 
     /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
     public GeometryClient(Socket socket, int resetEvery, SimulationKeys secret) throws IOException {
-        this.connection = ObjectConnection.client(socket, resetEvery, secret);
+        this(socket, resetEvery, secret, ObjectConnection.DEFAULT_ANSWER_MS);
+    }
+
+    /** As above, the Environment's first bytes awaited at most {@code answerWithinMs} (the connect timeout). */
+    GeometryClient(Socket socket, int resetEvery, SimulationKeys secret, long answerWithinMs) throws IOException {
+        this.connection = ObjectConnection.client(socket, resetEvery, secret, answerWithinMs);
         this.secret = secret;
     }
 
@@ -45,14 +50,17 @@ public final class GeometryClient {
         return this;
     }
 
-    /** Runs the session; returns the Environment's reason for ending it. */
+    /**
+     * Runs the session; returns the Environment's reason for ending it. A refusal (a port of another kind, the
+     * wrong keys, another Geometry already there) is a {@link ProtocolException} giving the Environment's reason.
+     */
     public String run() throws IOException {
         try (connection) {
             connection.write(new GeometryHello());
             connection.flush();
             Externalizable first = SimulationKeys.answerChallenge(connection, secret, "geometry");
             if (first instanceof SimulationEnd end) {
-                return "refused by the Environment: " + end.reason();
+                throw new ProtocolException(end.reason());
             }
             if (!(first instanceof GeometryWorld world)) {
                 throw new ProtocolException("expected a GeometryWorld, got a " + first.getClass().getSimpleName());

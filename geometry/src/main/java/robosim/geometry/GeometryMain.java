@@ -10,6 +10,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.protocol.Connector;
+import robosim.protocol.SimulationKeys;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 
@@ -64,11 +65,18 @@ public final class GeometryMain implements Callable<Integer> {
                     + " s (is the Environment running?)");
             return 1;
         }
-        GeometryClient client = new GeometryClient(socket, resetEvery);
-        if (splitSonarFrom != null) {
-            client.splitSonarFrom(splitSonarFrom);
+        String reason;
+        GeometryClient client;
+        try {
+            client = new GeometryClient(socket, resetEvery, SimulationKeys.fromEnvironment(), connectTimeoutS * 1000L);
+            if (splitSonarFrom != null) {
+                client.splitSonarFrom(splitSonarFrom);
+            }
+            reason = client.run();
+        } catch (IOException e) {
+            System.err.println("geometry: " + host + ":" + port + ": " + e.getMessage());
+            return 1;
         }
-        String reason = client.run();
         LOG.info("session over after {} steps: {}", client.steps(), reason);
         return 0;
     }

@@ -58,7 +58,12 @@ public final class HardwareSimulator {
 
     /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
     public void connect(Socket socket, int resetEvery, SimulationKeys secret) throws IOException {
-        connection = ObjectConnection.client(socket, resetEvery, secret);
+        connect(socket, resetEvery, secret, ObjectConnection.DEFAULT_ANSWER_MS);
+    }
+
+    /** As above, the Environment's first bytes awaited at most {@code answerWithinMs} (its connect timeout). */
+    void connect(Socket socket, int resetEvery, SimulationKeys secret, long answerWithinMs) throws IOException {
+        connection = ObjectConnection.client(socket, resetEvery, secret, answerWithinMs);
         connection.write(hello());
         connection.flush();
         Externalizable answer;
@@ -67,6 +72,10 @@ public final class HardwareSimulator {
         } catch (IOException e) {
             connection.close(); // (e.g. asked for a secret this process does not have)
             throw e;
+        }
+        if (answer instanceof SimulationEnd refusal) { // (a port for another kind of client, or one that speaks TLS)
+            connection.close();
+            throw new ProtocolException(refusal.reason());
         }
         if (!(answer instanceof RobotWelcome w)) {
             connection.close();

@@ -160,7 +160,8 @@ public final class MultiRobotMain implements Callable<Integer> {
             }
             return controlFailures(sims);
         } catch (java.io.IOException e) {
-            LOG.error("robots: {}", e.getMessage());
+            System.err.println("robots: " + (e.getMessage().contains(host + ":" + port) ? e.getMessage()
+                    : host + ":" + port + ": " + e.getMessage()));
             return 1;
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();

@@ -5,6 +5,7 @@ import java.net.Socket;
 import java.net.UnknownHostException;
 import robosim.api.RobotControl;
 import robosim.protocol.Connector;
+import robosim.protocol.SimulationKeys;
 
 /** Starts one robot: finds its control class and type, connects, runs until the simulation ends. */
 final class RobotLauncher {
@@ -31,13 +32,19 @@ final class RobotLauncher {
     }
 
     /**
-     * Connects and says hello; the simulator returned is ready to run. A failure to connect is an
-     * IOException whose message is one line naming the host and port.
+     * Connects and says hello; the simulator returned is ready to run. A failure to connect, or a refusal, is
+     * an IOException whose message is one line naming the host and port and what answered there (a port of
+     * another kind says which it is; one that answers nothing ends within the connect timeout).
      */
     static HardwareSimulator connect(String name, RobotType type, String host, int port, ConnectOptions options)
             throws IOException, InterruptedException {
         HardwareSimulator sim = new HardwareSimulator(name, type);
-        sim.connect(open(host, port, options), options.resetEvery);
+        Socket socket = open(host, port, options);
+        try {
+            sim.connect(socket, options.resetEvery, SimulationKeys.fromEnvironment(), options.connectTimeoutMs());
+        } catch (IOException e) {
+            throw new IOException(host + ":" + port + ": " + e.getMessage(), e);
+        }
         return sim;
     }
 

@@ -124,6 +124,9 @@ final class SharedLink {
     }
 
     private static SharedReplies frame(Externalizable answer) throws ProtocolException {
+        if (answer instanceof robosim.protocol.SimulationEnd refusal) { // (a port for another kind of client, or TLS)
+            throw new ProtocolException(refusal.reason());
+        }
         if (!(answer instanceof SharedReplies f)) {
             throw new ProtocolException("expected a frame of replies, got a " + answer.getClass().getSimpleName());
         }

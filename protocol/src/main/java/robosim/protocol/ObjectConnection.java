@@ -6,6 +6,7 @@ import java.io.Closeable;
 import java.io.EOFException;
 import java.io.Externalizable;
 import java.io.IOException;
+import java.io.InputStream;
 import java.util.Set;
 import java.io.InvalidClassException;
 import java.io.ObjectInputStream;
@@ -30,6 +31,8 @@ public final class ObjectConnection implements Closeable {
      */
     public static final int DEFAULT_RESET_EVERY = 256;
     private static final int BUFFER_BYTES = 64 * 1024;
+    /** How long a client waits for the server's stream header when it sets no time (the tools' connect timeout). */
+    public static final long DEFAULT_ANSWER_MS = 30_000;
 
     private final Socket socket;
     /** The TCP socket under {@link #socket} (the same socket without TLS). */
@@ -49,37 +52,85 @@ public final class ObjectConnection implements Closeable {
      * @param resetEvery messages between resets; 0 never resets (for measurement only)
      */
     public ObjectConnection(Socket socket, int resetEvery) throws IOException {
-        this(socket, socket, resetEvery, new ProtocolFilter());
+        this(socket, socket, null, resetEvery, new ProtocolFilter());
     }
 
     /**
      * The client's end over the connected {@code raw} socket: TLS first (handshake done) when {@code keys}
-     * hold the simulation's key pair, else the socket as it is.
+     * hold the simulation's key pair, else the socket as it is. A server that answers with anything but an
+     * object stream is a {@link ProtocolException} saying what it answered ({@link Greeting#describe}).
      */
     public static ObjectConnection client(Socket raw, int resetEvery, SimulationKeys keys) throws IOException {
+        return client(raw, resetEvery, keys, DEFAULT_ANSWER_MS);
+    }
+
+    /**
+     * As above, the server's stream header awaited at most {@code answerWithinMs} (at least
+     * {@link HandshakeDeadline#MIN_MS}) from now: a port that answers nothing is then a {@link ProtocolException}
+     * saying so.
+     */
+    public static ObjectConnection client(Socket raw, int resetEvery, SimulationKeys keys, long answerWithinMs)
+            throws IOException {
         Tls tls = keys == null ? null : keys.tls();
-        if (tls != null) {
-            return new ObjectConnection(tls.client(raw), raw, resetEvery, new ProtocolFilter());
-        }
-        try {
-            return new ObjectConnection(raw, raw, resetEvery, new ProtocolFilter());
-        } catch (EOFException e) { // (a TLS port waits for a TLS record, then its handshake deadline closes)
-            throw new EOFException("the Environment closed the connection before its stream header: does it use the "
-                    + "simulation's keys? (set ROBOSIM_KEYS)");
+        try (HandshakeDeadline deadline = HandshakeDeadline.start(raw, answerWithinMs)) {
+            try {
+                return new ObjectConnection(tls == null ? raw : tls.client(raw), raw, null, resetEvery,
+                        new ProtocolFilter());
+            } catch (IOException e) {
+                throw deadline.explain(e);
+            }
         }
     }
 
-    /** The Environment's end over the accepted {@code raw} socket: TLS first when {@code keys} hold a key pair. */
-    public static ObjectConnection server(Socket raw, int resetEvery, SimulationKeys keys) throws IOException {
+    /**
+     * The Environment's end over the accepted {@code raw} socket, {@code port} saying what this port is (for a
+     * peer that speaks another protocol: "the Environment's robot port"). The client's first bytes are read
+     * first: TLS is taken up when {@code keys} hold a key pair; a client without TLS at a port that has it is
+     * answered, in its own object protocol, with a {@link SimulationEnd} saying to set ROBOSIM_KEYS; an HTTP
+     * or text client gets a line saying what this port is; each of these, and a TLS client at a port without
+     * keys, is then a {@link ProtocolException} saying what the client spoke.
+     */
+    public static ObjectConnection server(Socket raw, int resetEvery, SimulationKeys keys, String port)
+            throws IOException {
         Tls tls = keys == null ? null : keys.tls();
-        return new ObjectConnection(tls == null ? raw : tls.server(raw), raw, resetEvery, new ProtocolFilter());
+        Greeting greeting = Greeting.read(raw.getInputStream());
+        switch (greeting.kind()) {
+            case OBJECT_STREAM:
+                if (tls == null) {
+                    return new ObjectConnection(raw, raw, greeting, resetEvery, new ProtocolFilter());
+                }
+                WrongClients.refuse(raw, new SimulationEnd(-1, "the Environment speaks TLS (tls=on): set ROBOSIM_KEYS "
+                        + "to the simulation's keys"));
+                throw new ProtocolException("it spoke without TLS; told it the Environment speaks TLS");
+            case TLS:
+                if (tls != null) {
+                    return new ObjectConnection(tls.server(raw, greeting), raw, null, resetEvery, new ProtocolFilter());
+                }
+                raw.close();
+                throw new ProtocolException("it began TLS, but this Environment has no keys (tls=off)");
+            case HTTP:
+                WrongClients.answerHttp(raw, port);
+                throw new ProtocolException("it spoke HTTP; told it this is " + port);
+            case TEXT:
+                WrongClients.answerLine(raw, port);
+                throw new ProtocolException("it spoke a line of text; told it this is " + port);
+            case NOTHING:
+                throw new EOFException("it closed the connection without a word");
+            default:
+                throw new ProtocolException(greeting.describe(raw.getInputStream()));
+        }
     }
 
     ObjectConnection(Socket socket, int resetEvery, ProtocolFilter filter) throws IOException {
-        this(socket, socket, resetEvery, filter);
+        this(socket, socket, null, resetEvery, filter);
     }
 
-    private ObjectConnection(Socket socket, Socket transport, int resetEvery, ProtocolFilter filter) throws IOException {
+    /**
+     * @param greeting the peer's first bytes if they have been read already (null: read here, after this end's
+     *                 header has gone out)
+     */
+    private ObjectConnection(Socket socket, Socket transport, Greeting greeting, int resetEvery, ProtocolFilter filter)
+            throws IOException {
         this.filter = filter;
         if (resetEvery < 0) {
             throw new IllegalArgumentException("resetEvery must be >= 0, got " + resetEvery);
@@ -91,7 +142,13 @@ public final class ObjectConnection implements Closeable {
             socket.setTcpNoDelay(true);
             out = new ObjectOutputStream(new BufferedOutputStream(socket.getOutputStream(), BUFFER_BYTES));
             out.flush();
-            buffered = new BufferedInputStream(socket.getInputStream(), BUFFER_BYTES);
+            InputStream raw = socket.getInputStream();
+            Greeting first = greeting != null ? greeting : Greeting.read(raw);
+            if (first.kind() != Greeting.Kind.OBJECT_STREAM) {
+                throw first.kind() == Greeting.Kind.NOTHING ? new EOFException(first.describe(raw))
+                        : new ProtocolException(first.describe(raw));
+            }
+            buffered = new BufferedInputStream(first.before(raw), BUFFER_BYTES);
             budget = new MessageBudgetInputStream(buffered, Limits.MAX_MESSAGE_BYTES);
             budget.startMessage();
             try {

@@ -106,9 +106,12 @@ public final class Tls {
         return handshake(s, raw);
     }
 
-    /** The server's end of TLS over the accepted {@code raw} socket, handshake done; the client must show the key pair. */
-    public SSLSocket server(Socket raw) throws IOException {
-        SSLSocket s = (SSLSocket) context.getSocketFactory().createSocket(raw, null, true);
+    /**
+     * The server's end of TLS over the accepted {@code raw} socket, whose first bytes ({@code greeting}) have been
+     * read already, handshake done; the client must show the key pair.
+     */
+    public SSLSocket server(Socket raw, Greeting greeting) throws IOException {
+        SSLSocket s = (SSLSocket) context.getSocketFactory().createSocket(raw, greeting.replay(), true);
         s.setUseClientMode(false);
         s.setNeedClientAuth(true);
         return handshake(s, raw);

@@ -37,14 +37,15 @@ public final class ViewerClient implements Closeable {
     }
 
     private final ObjectConnection connection;
-    private final SimulationKeys secret;
+    /** The Environment's first answer: its {@link WorldSnapshot}, or a {@link SimulationEnd} (refused, or over). */
+    private final Externalizable first;
     private final CountDownLatch done = new CountDownLatch(1);
     private volatile SimulationEnd end;
     private volatile IOException failure;
 
-    private ViewerClient(ObjectConnection connection, SimulationKeys secret) {
+    private ViewerClient(ObjectConnection connection, Externalizable first) {
         this.connection = connection;
-        this.secret = secret;
+        this.first = first;
     }
 
     /**
@@ -63,7 +64,12 @@ public final class ViewerClient implements Closeable {
         return connect(host, port, hello, timeoutMs, SimulationKeys.fromEnvironment());
     }
 
-    /** As above, proving {@code secret} if the Environment asks for one (null: this process has none). */
+    /**
+     * As above, proving {@code secret} if the Environment asks for one (null: this process has none). Returns
+     * once the Environment has answered (its snapshot, or an end: see {@link #refusal}); a port that answers
+     * nothing, or not as an Environment's viewer port, is an IOException naming it and what answered there
+     * within the timeout (at least {@link HandshakeDeadline#MIN_MS}).
+     */
     public static ViewerClient connect(String host, int port, ViewerHello hello, long timeoutMs, SimulationKeys secret)
             throws IOException, InterruptedException {
         Socket s = Connector.connect(host, port, timeoutMs);
@@ -71,14 +77,32 @@ public final class ViewerClient implements Closeable {
             throw new IOException("cannot connect to the viewer port " + host + ":" + port);
         }
         try {
-            ObjectConnection c = ObjectConnection.client(s, ObjectConnection.DEFAULT_RESET_EVERY, secret);
+            ObjectConnection c = ObjectConnection.client(s, ObjectConnection.DEFAULT_RESET_EVERY, secret, timeoutMs);
             c.write(hello);
             c.flush();
-            return new ViewerClient(c, secret);
-        } catch (IOException | RuntimeException e) {
+            Externalizable first = SimulationKeys.answerChallenge(c, secret, "viewer");
+            if (!(first instanceof WorldSnapshot) && !(first instanceof SimulationEnd)) {
+                throw new ProtocolException("expected a WorldSnapshot, got a " + first.getClass().getSimpleName());
+            }
+            return new ViewerClient(c, first);
+        } catch (ProtocolException e) {
+            s.close();
+            throw new ProtocolException(host + ":" + port + ": " + e.getMessage());
+        } catch (IOException e) {
+            s.close();
+            throw new IOException(host + ":" + port + ": " + e.getMessage(), e);
+        } catch (RuntimeException e) {
             s.close();
             throw e;
         }
+    }
+
+    /**
+     * The Environment's end if it answered this viewer with one instead of its snapshot (a refusal: a port of
+     * another kind, a robot to watch that is not there, the wrong keys; or the run was over), else null.
+     */
+    public SimulationEnd refusal() {
+        return first instanceof SimulationEnd e ? e : null;
     }
 
     /** Starts the reading thread. */
@@ -90,16 +114,12 @@ public final class ViewerClient implements Closeable {
 
     private void read(Listener listener) {
         try (connection) {
-            Externalizable first = SimulationKeys.answerChallenge(connection, secret, "viewer");
             if (first instanceof SimulationEnd e) {
                 end = e;
                 listener.end(e);
                 return;
             }
-            if (!(first instanceof WorldSnapshot snapshot)) {
-                throw new ProtocolException("expected a WorldSnapshot, got a " + first.getClass().getSimpleName());
-            }
-            listener.snapshot(snapshot);
+            listener.snapshot((WorldSnapshot) first);
             while (true) {
                 Externalizable m = connection.read(Externalizable.class);
                 if (m instanceof PoseUpdate u) {

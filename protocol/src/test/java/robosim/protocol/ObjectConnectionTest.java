@@ -225,7 +225,7 @@ class ObjectConnectionTest {
         out.write("GET / HTTP/1.0\r\n\r\n".getBytes(java.nio.charset.StandardCharsets.US_ASCII));
         out.flush();
         ProtocolException e = assertThrows(ProtocolException.class, () -> new ObjectConnection(serverSocket, 0));
-        assertTrue(e.getMessage().startsWith("not an object stream"), e.getMessage());
+        assertEquals("it sent \"GET / HTTP/1.0\" (HTTP), not RoboSim's object protocol", e.getMessage());
     }
 
     @Test

@@ -193,7 +193,7 @@ class ControlPortTest {
             try (Socket raw = new Socket(InetAddress.getLoopbackAddress(), f.control.port())) {
                 raw.setSoTimeout(TIMEOUT_MS);
                 OutputStream out = raw.getOutputStream();
-                out.write(new byte[] {(byte) 0xac, (byte) 0xed, 0, 5, (byte) 0xff, (byte) 0xfe, '\n'});
+                out.write(new byte[] {(byte) 0xff, (byte) 0xfe, 'x', 'y', (byte) 0xfd, '\n'});
                 out.flush();
                 java.io.BufferedReader in = new java.io.BufferedReader(new java.io.InputStreamReader(raw.getInputStream(),
                         StandardCharsets.UTF_8));
@@ -226,13 +226,13 @@ class ControlPortTest {
     void withKeysEveryRequestWaitsForTheProofOverTls(@TempDir Path dir) throws Exception {
         SimulationKeys keys = TestKeys.keys(dir, "keys");
         try (ControlFixture f = new ControlFixture(THREE, keys)) {
-            // no keys at all: TLS never lets it in
-            IOException plain = assertThrows(IOException.class, () -> {
-                try (ControlClient c = f.client(null)) {
-                    c.request("status");
-                }
-            });
-            assertNotNull(plain.getMessage());
+            // no keys at all: TLS never lets it in, and it is told so at once
+            try (ControlClient c = f.client(null)) {
+                JsonNode told = c.request("status");
+                assertFalse(told.path("ok").asBoolean(), told.toString());
+                assertEquals("the Environment speaks TLS (tls=on): set ROBOSIM_KEYS to the simulation's keys",
+                        told.path("error").asText());
+            }
             // another simulation's keys: refused at TLS (its key pair is not this one)
             IOException other = assertThrows(IOException.class, () -> f.client(TestKeys.keys(dir, "other")).close());
             assertTrue(other.getMessage().contains("TLS handshake with 127.0.0.1:" + f.control.port() + " failed"),

@@ -117,16 +117,17 @@ class SimulationKeysTest {
     void withTheKeyPairEveryConnectionIsTlsAndStrangersNeverGetIn(@TempDir Path dir) throws Exception {
         SimulationKeys keys = TestKeys.keys(dir, "keys");
         SimulationKeys others = TestKeys.keys(dir, "others");
-        // strangers first, under a short handshake deadline: a plain object stream sends 4 bytes and waits
-        // for the Environment's, which waits for a whole TLS record header, so only the deadline ends it
+        // strangers first, under a short handshake deadline
         Settings strict = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).keys(keys)
                 .maxSteps(20).resetEvery(64).handshakeTimeoutMs(1000).build();
         try (ClientWorkerCoordinator env = new ClientWorkerCoordinator(
                 new EnvironmentLoader().load(Path.of("src/test/resources/three-robots.xml")), strict)) {
             env.start();
             int[] ports = env.ports();
-            // no keys: its object stream is no TLS, so it never gets a byte of the protocol
-            assertThrows(IOException.class, () -> connect("r1", new ArRobot(), ports[0], null));
+            // no keys: its object stream is no TLS; it is told so at once, and never gets a byte of the protocol
+            IOException plain = assertThrows(IOException.class, () -> connect("r1", new ArRobot(), ports[0], null));
+            assertEquals("the Environment speaks TLS (tls=on): set ROBOSIM_KEYS to the simulation's keys",
+                    plain.getMessage());
             assertThrows(IOException.class, () -> new GeometryClient(socket(ports[2]), 64, null).run());
             // the secret alone (right, but no key pair): no TLS, not let in either
             assertThrows(IOException.class, () -> connect("r1", new ArRobot(), ports[0], secret(

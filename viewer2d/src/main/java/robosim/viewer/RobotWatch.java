@@ -30,6 +30,10 @@ final class RobotWatch {
         ViewerClient client;
         try {
             client = ViewerClient.connect(host, port, hello, connectTimeoutMs);
+            if (client.refusal() != null) {
+                client.close();
+                throw new IOException(host + ":" + port + ": " + client.refusal().reason());
+            }
         } catch (IOException | InterruptedException | RuntimeException e) {
             OPEN.remove(robot);
             throw e;

@@ -84,6 +84,11 @@ public final class Viewer2DMain implements Callable<Integer> {
             System.err.println("viewer2d: " + e.getMessage());
             return 1;
         }
+        if (client.refusal() != null) { // (a port of another kind, the wrong keys: no window for it)
+            client.close();
+            System.err.println("viewer2d: " + host + ":" + port + ": " + client.refusal().reason());
+            return 1;
+        }
         new RunFollower(host, port, hello, feed, FIRST_RETRY_MS, MAX_RETRY_MS, nextRunWaitS * 1000L).start(client);
         ViewerWindow.open("RoboSim - " + host + ":" + port, feed, new SceneRenderer.Options(true, !noTrails, sonar),
                 fps, robot -> RobotWatch.openLater(host, port, robot, fps,

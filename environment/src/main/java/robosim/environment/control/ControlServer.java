@@ -15,7 +15,6 @@ import io.netty.handler.codec.LineBasedFrameDecoder;
 import io.netty.handler.codec.TooLongFrameException;
 import io.netty.handler.codec.string.StringDecoder;
 import io.netty.handler.codec.string.StringEncoder;
-import io.netty.handler.ssl.SslHandler;
 import io.netty.handler.timeout.IdleStateEvent;
 import io.netty.handler.timeout.IdleStateHandler;
 import io.netty.handler.timeout.WriteTimeoutHandler;
@@ -109,9 +108,7 @@ public final class ControlServer implements Closeable {
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
-                        if (tls != null) {
-                            ch.pipeline().addLast(new SslHandler(tls.serverEngine()));
-                        }
+                        ch.pipeline().addLast(new FirstBytes(tls)); // (TLS, when the client begins it, after it)
                         // (the idle clock after the decoders: only a whole request line resets it)
                         ch.pipeline().addLast(new WriteTimeoutHandler(WRITE_TIMEOUT_S),
                                 new LineBasedFrameDecoder(MAX_LINE, true, true),

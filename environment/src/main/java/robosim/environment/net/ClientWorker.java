@@ -27,11 +27,14 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     /** Its handshake, once the connection's streams are open. */
     protected Handshake handshake;
     private Runnable release = () -> { };
+    /** The port it came to. */
+    protected final Port port;
     /** Its clocks, from its arrival (the accept thread makes it). */
     protected final ConnectionClock clock;
 
-    ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name) {
+    ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name, Port port) {
         this.coordinator = coordinator;
+        this.port = port;
         this.socket = socket;
         this.name = name;
         Settings settings = coordinator.settings();
@@ -91,7 +94,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
         try {
             configure(socket);
             ObjectConnection c = ObjectConnection.server(socket, coordinator.settings().resetEvery(),
-                    coordinator.settings().keys());
+                    coordinator.settings().keys(), port.description());
             handshake = new Handshake(this, c, coordinator.settings().keys(), coordinator.strangers());
             connection = c;
             if (dropped) {

@@ -38,12 +38,12 @@ final class GeometryClientWorker extends ClientWorker {
     private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
 
     GeometryClientWorker(ClientWorkerCoordinator coordinator, Socket socket) {
-        super(coordinator, socket, "geometry-worker");
+        super(coordinator, socket, "geometry-worker", Port.GEOMETRY);
     }
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        GeometryHello hello = handshake.read(GeometryHello.class);
+        GeometryHello hello = (GeometryHello) handshake.hello(port, coordinator.ports());
         String refusal = handshake.heard("geometry");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "

@@ -14,6 +14,7 @@ import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Proof;
 import robosim.protocol.ProtocolException;
+import robosim.protocol.SimulationEnd;
 import robosim.protocol.SimulationKeys;
 
 /**
@@ -60,7 +61,8 @@ final class Handshake {
      * As {@link #read}, for a message that must be one of {@code kinds} (null: any of {@code type}); one of
      * another class is refused as its class is read, before any of it is built.
      */
-    Externalizable readOneOf(Class<? extends Externalizable> type, java.util.Set<Class<?>> kinds) throws IOException {
+    private Externalizable readOneOf(Class<? extends Externalizable> type, java.util.Set<Class<?>> kinds)
+            throws IOException {
         take(Limits.MAX_HELLO_BYTES, messages++ == 0);
         try {
             return kinds == null ? connection.read(type) : connection.readOneOf(type, kinds);
@@ -69,6 +71,22 @@ final class Handshake {
             held -= unused;
             strangers.give(unused);
         }
+    }
+
+    /**
+     * Reads the client's hello, of any kind of client ({@link Port#HELLOS}; anything else is refused as its class
+     * is read): one {@code here} does not take is answered with a {@link SimulationEnd} saying which port it
+     * wants ({@link Port#refusal}) and is a {@link ProtocolException}, the connection's end.
+     */
+    Externalizable hello(Port here, int[] ports) throws IOException {
+        Externalizable hello = readOneOf(Externalizable.class, Port.HELLOS);
+        if (!here.takes(hello)) {
+            String why = here.refusal(hello, ports);
+            worker.send(new SimulationEnd(-1, why));
+            throw new ProtocolException("a " + hello.getClass().getSimpleName() + " on " + here.description()
+                    + "; told it: " + why);
+        }
+        return hello;
     }
 
     /** Takes {@code bytes} from the stranger budget for this connection (a refusal about to be written). */

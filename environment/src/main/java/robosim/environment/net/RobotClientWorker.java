@@ -11,23 +11,22 @@ import robosim.protocol.SharedHello;
  * client's first message and serves it as what that says it is: one robot over its own socket
  * ({@link RobotConnection}, the thread then named {@code robot-worker[name]}) or several robots of one
  * process over one ({@link SharedConnection}, {@code robot-worker[shared #n]}). Both use this connection's
- * {@link Handshake}. Anything else is refused as its class is read (the connection is dropped with the reason).
+ * {@link Handshake}. Another kind of client's hello is told which port it wants ({@link Port}); anything else
+ * is refused as its class is read (the connection is dropped with the reason).
  */
 final class RobotClientWorker extends ClientWorker {
-    /** What a robot port's client says first (anything else is refused before it is read). */
-    private static final java.util.Set<Class<?>> HELLOS = java.util.Set.of(RobotHello.class, SharedHello.class);
     private final int serial;
     private volatile RobotConnection robot;
     private volatile SharedConnection shared;
 
     RobotClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
-        super(coordinator, socket, "robot-worker[#" + serial + "]");
+        super(coordinator, socket, "robot-worker[#" + serial + "]", Port.ROBOT);
         this.serial = serial;
     }
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        Externalizable first = handshake.readOneOf(Externalizable.class, HELLOS);
+        Externalizable first = handshake.hello(port, coordinator.ports());
         if (first instanceof SharedHello h) {
             rename("robot-worker[shared #" + serial + "]");
             SharedConnection s = new SharedConnection(this, coordinator, connection, handshake);

@@ -30,7 +30,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     private volatile ViewerQueue queue;
 
     ViewerClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
-        super(coordinator, socket, "viewer-worker[" + serial + "]");
+        super(coordinator, socket, "viewer-worker[" + serial + "]", Port.VIEWER);
     }
 
     @Override
@@ -41,7 +41,7 @@ final class ViewerClientWorker extends ClientWorker implements ViewerSink {
     @Override
     protected void serve() throws IOException, InterruptedException {
         ViewerWrites writes = new ViewerWrites(connection, clock);
-        ViewerHello hello = handshake.read(ViewerHello.class);
+        ViewerHello hello = (ViewerHello) handshake.hello(port, coordinator.ports());
         String refusal = handshake.heard("viewer");
         if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
             refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment "

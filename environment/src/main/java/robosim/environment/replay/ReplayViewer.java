@@ -1,6 +1,7 @@
 package robosim.environment.replay;
 
 import java.io.EOFException;
+import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.List;
@@ -15,8 +16,10 @@ import robosim.environment.net.ViewerQueue;
 import robosim.environment.net.ViewerSink;
 import robosim.environment.net.ConnectionClock;
 import robosim.environment.net.ConnectionWatch;
+import robosim.environment.net.Port;
 import robosim.environment.net.ViewerWrites;
 import robosim.protocol.Challenge;
+import robosim.protocol.GeometryHello;
 import robosim.protocol.Limits;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Proof;
@@ -38,6 +41,8 @@ final class ReplayViewer implements ViewerSink, ConnectionWatch.Watched, Runnabl
     private static final Logger LOG = LoggerFactory.getLogger(ReplayViewer.class);
     /** As the Environment's viewer worker: a viewer that stops reading blocks this thread after this much. */
     static final int SEND_BUFFER_BYTES = 64 * 1024;
+    /** What this port is, for a client that speaks another protocol. */
+    private static final String DESCRIPTION = "a replay's viewer port";
     private static final long JOIN_LIMIT_MS = 30_000;
 
     private final Socket socket;
@@ -83,7 +88,7 @@ final class ReplayViewer implements ViewerSink, ConnectionWatch.Watched, Runnabl
         String why = "finished";
         try {
             socket.setSendBufferSize(SEND_BUFFER_BYTES);
-            connection = ObjectConnection.server(socket, resetEvery, keys);
+            connection = ObjectConnection.server(socket, resetEvery, keys, DESCRIPTION);
             writes = new ViewerWrites(connection, connectionClock);
             connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
             serve();
@@ -110,7 +115,14 @@ final class ReplayViewer implements ViewerSink, ConnectionWatch.Watched, Runnabl
     }
 
     private void serve() throws IOException, InterruptedException {
-        ViewerHello hello = connection.read(ViewerHello.class);
+        Externalizable said = connection.readOneOf(Externalizable.class, Port.HELLOS);
+        if (!(said instanceof ViewerHello hello)) {
+            String why = "that is a replay's viewer port (a recording played back); "
+                    + (said instanceof GeometryHello ? "Geometry connects" : "robots connect") + " to a live Environment";
+            writes.send(new SimulationEnd(-1, why));
+            throw new ProtocolException("a " + said.getClass().getSimpleName() + " on " + DESCRIPTION + "; told it: "
+                    + why);
+        }
         String refusal = null;
         if (keys != null) {
             byte[] nonce = SimulationKeys.nonce();
