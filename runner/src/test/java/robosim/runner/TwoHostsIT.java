@@ -52,12 +52,13 @@ class TwoHostsIT {
                     "--steps", "200");
             env.await("listening robots=8000 viewers=3000 geometry=10000 control=8100", LONG_S);
 
-            // host B without the keys: the robot's plain stream never gets a byte of the protocol (the
-            // handshake deadline closes it, 10 s on), the Control Panel's plain request is closed unanswered
+            // host B without the keys: the robot's plain stream never gets a byte of the protocol, the Control
+            // Panel's plain request is not served; each is told at once to set ROBOSIM_KEYS
             ProcessLines stranger = start(started, b, null, "robot.sh", "robosim.examples.BackAndForth", "robot1",
                     HOST_A, "8000", "--type", "ArRobot");
             ProcessLines panel = start(started, b, null, "control-panel.sh", HOST_A, "8100", "status");
-            assertEquals(2, panel.exit(LONG_S), panel.output());
+            assertEquals(1, panel.exit(LONG_S), panel.output());
+            panel.await("error=the Environment speaks TLS (tls=on): set ROBOSIM_KEYS to the simulation's keys", LONG_S);
 
             // host B with the keys (the robots last, once the stranger is gone)
             ProcessLines status = start(started, b, keys, "control-panel.sh", HOST_A, "8100", "status");
@@ -68,7 +69,9 @@ class TwoHostsIT {
             start(started, b, keys, "geometry.sh", HOST_A, "10000");
             viewer.await("pose-log: recording " + HOST_A + ":3000", LONG_S);
             assertNotEquals(0, stranger.exit(LONG_S), stranger.output());
-            env.await("cut off: no hello within", LONG_S);
+            stranger.await("robot robot1: " + HOST_A + ":8000: the Environment speaks TLS (tls=on): set ROBOSIM_KEYS to "
+                    + "the simulation's keys", LONG_S);
+            env.await("it spoke without TLS; told it the Environment speaks TLS", LONG_S);
             start(started, b, keys, "robots.sh", HOST_A, "8000", "--robot", "robot1:ArRobot:robosim.examples.BackAndForth",
                     "--robot", "robot2:Scout:robosim.examples.BackAndForth");
 
