@@ -13,6 +13,7 @@ import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationKeys;
 import robosim.protocol.SimulationEnd;
@@ -32,8 +33,9 @@ public final class HardwareSimulator {
     private static final Logger LOG = LoggerFactory.getLogger(HardwareSimulator.class);
 
     private final String name;
-    private final RobotType type;
-    private final RobotKnowledge state;
+    /** Its type: given, or (any type) the one its welcome names; then what it knows of itself. */
+    private RobotType type;
+    private RobotKnowledge state;
     private final ControlLink link = new ControlLink();
     private ObjectConnection connection;
     private RobotWelcome welcome;
@@ -41,10 +43,11 @@ public final class HardwareSimulator {
     private String endReason = "";
     private volatile String controlFailure;
 
+    /** @param type its type, or null: any type, the one the environment file gives it (ArRobot or Scout) */
     public HardwareSimulator(String name, RobotType type) {
         this.name = name;
         this.type = type;
-        this.state = new RobotKnowledge(name, type);
+        this.state = type == null ? null : new RobotKnowledge(name, type);
     }
 
     /**
@@ -88,15 +91,26 @@ public final class HardwareSimulator {
         welcomed(w);
     }
 
-    /** The Environment has welcomed this robot (over its own connection or a shared one): it stands where it says. */
-    void welcomed(RobotWelcome w) {
+    /**
+     * The Environment has welcomed this robot (over its own connection or a shared one): it stands where it says,
+     * and a robot of any type is of the type it names, which must be one every process knows by name.
+     */
+    void welcomed(RobotWelcome w) throws ProtocolException {
+        if (type == null) {
+            if (RobotModels.byName(w.type()) == null) {
+                throw new ProtocolException("the Environment gave robot " + name + " the type \""
+                        + robosim.protocol.Printable.of(w.type(), 64) + "\", which it cannot take unnamed: give --type");
+            }
+            type = RobotType.byName(w.type());
+            state = new RobotKnowledge(name, type);
+        }
         welcome = w;
         state.place(w.xMm(), w.yMm(), w.headingDeg());
     }
 
     /** The hello this robot says (on a shared connection, one of several). */
     RobotHello hello() {
-        return new RobotHello(name, type.properties());
+        return type == null ? RobotHello.anyType(name) : new RobotHello(name, type.properties());
     }
 
     /**

@@ -43,7 +43,11 @@ final class InMemoryRobot implements InMemoryLink.Robot {
 
     @Override
     public void welcome(RobotWelcome welcome) {
-        sim.welcomed(welcome);
+        try {
+            sim.welcomed(welcome);
+        } catch (robosim.protocol.ProtocolException e) {
+            throw new IllegalStateException("a robot in the Environment's JVM is started with its type", e);
+        }
     }
 
     @Override

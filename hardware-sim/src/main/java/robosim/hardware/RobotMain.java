@@ -34,8 +34,9 @@ public final class RobotMain implements Callable<Integer> {
             description = "Environment robot port (default: ${DEFAULT-VALUE}).")
     int port;
 
-    @Option(names = "--type", defaultValue = "ArRobot",
-            description = "Robot type: ArRobot, Scout or a RobotType class name (default: ${DEFAULT-VALUE}).")
+    @Option(names = "--type",
+            description = "Robot type: ArRobot, Scout or a RobotType class name (default: the type the environment "
+                    + "file gives this robot, when it is ArRobot or Scout; a RobotType class must be named).")
     String type;
 
     @Mixin
@@ -56,7 +57,7 @@ public final class RobotMain implements Callable<Integer> {
         RobotType robotType;
         try {
             control = RobotLauncher.control(controlClass);
-            robotType = RobotType.byName(type);
+            robotType = type == null ? null : RobotType.byName(type);
         } catch (IllegalArgumentException e) {
             System.err.println("robot " + name + ": " + e.getMessage());
             return 2;

@@ -6,7 +6,8 @@ import java.io.ObjectOutput;
 
 /**
  * Robot -> Environment, once, first on the robot port: protocol version, robot name and the
- * robot's properties. Answered by {@link RobotWelcome}. When the version differs nothing after it
+ * robot's properties, or none: "any type", the robot takes the type the environment file gives it (its
+ * {@link RobotWelcome#type()}). Answered by {@link RobotWelcome}. When the version differs nothing after it
  * is read (its layout may differ), and the Environment refuses the robot with a reason.
  */
 public final class RobotHello implements java.io.Externalizable {
@@ -23,6 +24,16 @@ public final class RobotHello implements java.io.Externalizable {
         this.properties = properties;
     }
 
+    /** A robot of any type: it takes the file's ({@link RobotWelcome#type()}). */
+    public static RobotHello anyType(String name) {
+        return new RobotHello(name, null);
+    }
+
+    /** True if the robot takes the type the file gives it (it sent no properties). */
+    public boolean anyType() {
+        return protocolVersion == Protocol.VERSION && properties == null;
+    }
+
     public int protocolVersion() {
         return protocolVersion;
     }
@@ -32,7 +43,7 @@ public final class RobotHello implements java.io.Externalizable {
         return name;
     }
 
-    /** Null when {@link #protocolVersion()} is not {@link Protocol#VERSION}. */
+    /** Null when {@link #protocolVersion()} is not {@link Protocol#VERSION}, or for {@link #anyType()}. */
     public RobotProperties properties() {
         return properties;
     }
@@ -41,7 +52,10 @@ public final class RobotHello implements java.io.Externalizable {
     public void writeExternal(ObjectOutput out) throws IOException {
         out.writeInt(protocolVersion);
         out.writeUTF(name);
-        properties.write(out);
+        out.writeBoolean(properties == null);
+        if (properties != null) {
+            properties.write(out);
+        }
     }
 
     @Override
@@ -51,6 +65,6 @@ public final class RobotHello implements java.io.Externalizable {
             return;
         }
         name = in.readUTF();
-        properties = RobotProperties.read(in);
+        properties = in.readBoolean() ? null : RobotProperties.read(in);
     }
 }

@@ -29,6 +29,7 @@ public final class RobotWelcome implements java.io.Externalizable {
     private boolean stepMessages = true;
     private long seed;
     private Map<String, String> parameters = Map.of();
+    private String type = "";
 
     public RobotWelcome() {
     }
@@ -74,6 +75,17 @@ public final class RobotWelcome implements java.io.Externalizable {
         this.seed = seed;
         this.parameters = java.util.Collections.unmodifiableMap(new LinkedHashMap<>(parameters));
         return this;
+    }
+
+    /** This welcome naming the robot's type as the environment file gives it (a robot that said any type takes it). */
+    public RobotWelcome withType(String robotType) {
+        this.type = robotType;
+        return this;
+    }
+
+    /** The robot's type in the environment file ("" in a refusal). */
+    public String type() {
+        return type;
     }
 
     /** The world's seed. */
@@ -153,6 +165,7 @@ public final class RobotWelcome implements java.io.Externalizable {
             out.writeUTF(p.getKey());
             out.writeUTF(p.getValue());
         }
+        out.writeUTF(type);
     }
 
     /** Reads a welcome; {@code names}: the robot names it was written without, or null when they are on the wire. */
@@ -180,5 +193,6 @@ public final class RobotWelcome implements java.io.Externalizable {
             }
         }
         parameters = java.util.Collections.unmodifiableMap(read);
+        type = in.readUTF();
     }
 }

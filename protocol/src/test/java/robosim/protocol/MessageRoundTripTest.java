@@ -70,7 +70,11 @@ class MessageRoundTripTest {
         assertEquals("robot1", m.name());
         assertEquals(PROPS, m.properties());
         int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
-        assertEquals(OVERHEAD + 4 + utf("robot1") + props, repeatedSize(new RobotHello("robot1", PROPS)));
+        assertEquals(OVERHEAD + 4 + utf("robot1") + 1 + props, repeatedSize(new RobotHello("robot1", PROPS)));
+        RobotHello any = roundTrip(RobotHello.anyType("robot1"));
+        assertTrue(any.anyType());
+        assertNull(any.properties());
+        assertEquals(OVERHEAD + 4 + utf("robot1") + 1, repeatedSize(RobotHello.anyType("robot1")));
     }
 
     @Test
@@ -84,8 +88,10 @@ class MessageRoundTripTest {
         assertEquals(List.of("a", "b"), m.robotNames());
         assertTrue(m.stepMessages());
         assertFalse(roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of()).withStepMessages(false)).stepMessages());
-        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser") + 1 + 8 + 4,
-                repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"), List.of("laser"))));
+        assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser") + 1 + 8 + 4
+                + utf("Scout"), repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"),
+                        List.of("laser")).withType("Scout")));
+        assertEquals("Scout", roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of()).withType("Scout")).type());
         RobotWelcome run = roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of())
                 .withRun(42, java.util.Map.of("speed", "300")));
         assertEquals(42, run.seed());

@@ -16,7 +16,6 @@ import robosim.environment.net.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.ArRobot;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.Scout;
 import robosim.protocol.ProtocolException;
 
 /** Unknown, duplicate and mistyped robots are refused with a reason; the Environment keeps waiting. */
@@ -32,19 +31,32 @@ class RobotRefusalTest {
             assertEquals("the Environment refused robot ghost: no robot named \"ghost\" in "
                     + "src/test/resources/three-robots.xml (robots: r1, r2, r3)", refusal("ghost", new ArRobot(), port));
             assertEquals("the Environment refused robot r3: robot r3 is a Scout in "
-                    + "src/test/resources/three-robots.xml, but says it is a ArRobot", refusal("r3", new ArRobot(), port));
+                    + "src/test/resources/three-robots.xml, but says it is an ArRobot (robot.sh: give --type Scout, or "
+                    + "leave --type out to take the file's)", refusal("r3", new ArRobot(), port));
 
             HardwareSimulator r1 = connect("r1", new ArRobot(), port);
             assertEquals("the Environment refused robot r1: robot r1 is already connected",
                     refusal("r1", new ArRobot(), port));
             HardwareSimulator r2 = connect("r2", new ArRobot(), port);
-            HardwareSimulator r3 = connect("r3", new Scout(), port);
+            // of any type (robot.sh without --type): it takes the file's, a Scout, with the Scout's 16 sonars
+            HardwareSimulator r3 = connect("r3", null, port);
             CompletableFuture<String> a = CompletableFuture.supplyAsync(() -> run(r1), TestThreads.ROBOTS);
             CompletableFuture<String> b = CompletableFuture.supplyAsync(() -> run(r2), TestThreads.ROBOTS);
-            CompletableFuture<String> c = CompletableFuture.supplyAsync(() -> run(r3), TestThreads.ROBOTS);
+            CompletableFuture<Integer> sonars = new CompletableFuture<>();
+            CompletableFuture<String> c = CompletableFuture.supplyAsync(() -> {
+                try {
+                    return r3.run(robot -> {
+                        sonars.complete(robot.sonarAnglesDeg().length);
+                        new BackAndForth().run(robot);
+                    });
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }, TestThreads.ROBOTS);
             assertEquals("completed 20 steps", a.get(60, TimeUnit.SECONDS));
             assertEquals("completed 20 steps", b.get(60, TimeUnit.SECONDS));
             assertEquals("completed 20 steps", c.get(60, TimeUnit.SECONDS));
+            assertEquals(16, sonars.get(60, TimeUnit.SECONDS));
             assertTrue(env.summary().completed());
         } finally {
             env.close();

@@ -181,7 +181,9 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
          */
         public String contradiction(robosim.protocol.RobotProperties p, String source) {
             if (!type.equals(p.type())) {
-                return "robot " + name + " is a " + type + " in " + source + ", but says it is a " + robosim.protocol.Printable.of(p.type(), 64);
+                return "robot " + name + " is " + article(type) + " " + type + " in " + source + ", but says it is "
+                        + article(p.type()) + " " + robosim.protocol.Printable.of(p.type(), 64) + " (robot.sh: give --type "
+                        + type + ", or leave --type out to take the file's)";
             }
             if (Math.abs(p.radiusMm() - radiusMm) > 1e-6) {
                 return "robot " + name + " has radius " + radiusMm / 1000 + " m in " + source + ", but says "
@@ -192,6 +194,11 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
                         + p.sonars().size();
             }
             return null;
+        }
+
+        /** "an" before a vowel ("an ArRobot"), else "a". */
+        private static String article(String word) {
+            return !word.isEmpty() && "AEIOUaeiou".indexOf(word.charAt(0)) >= 0 ? "an" : "a";
         }
 
         public List<String> sensorNames() {

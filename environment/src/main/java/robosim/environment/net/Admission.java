@@ -5,6 +5,8 @@ import java.util.List;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.Protocol;
 import robosim.protocol.RobotHello;
+import robosim.protocol.RobotModels;
+import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotWelcome;
 
 /**
@@ -47,9 +49,29 @@ final class Admission {
                 return "no robot named \"" + Printable.of(hello.name(), 64) + "\" in " + spec.source() + " (robots: "
                         + listed(names) + joiners() + ")";
             }
-            return rule.robot(hello.name(), 0, 0).contradiction(hello.properties(), spec.source());
         }
-        return spec.robots().get(index).contradiction(hello.properties(), spec.source());
+        WorldSpec.RobotSpec entry = entry(hello.name(), index);
+        if (hello.anyType()) {
+            RobotProperties model = RobotModels.byName(entry.type());
+            return model == null ? "robot " + entry.name() + " is a " + entry.type() + " in " + spec.source()
+                    + ", a type a robot must name itself: give --type " + entry.type()
+                    : entry.contradiction(model, spec.source());
+        }
+        return entry.contradiction(hello.properties(), spec.source());
+    }
+
+    /**
+     * The hello as the loop takes it, once {@link #check} has passed it: a robot of any type has the properties of
+     * the type the file gives it.
+     */
+    RobotHello typed(RobotHello hello, int index) {
+        return hello.anyType() ? new RobotHello(hello.name(), RobotModels.byName(entry(hello.name(), index).type()))
+                : hello;
+    }
+
+    /** The file's entry for robot {@code name} ({@code index} in the file, or -1 for one that joins by a rule). */
+    private WorldSpec.RobotSpec entry(String name, int index) {
+        return index >= 0 ? spec.robots().get(index) : rule(name).robot(name, 0, 0);
     }
 
     /** The rule a robot of this name joins (or joined) by: an {@code add}, one it joined by, or the file's; or null. */
@@ -111,7 +133,7 @@ final class Admission {
     RobotWelcome welcome(WorldSpec.RobotSpec robot, List<String> robotNames) {
         return RobotWelcome.accepted(spec.timeStepMs(), robot.xMm(), robot.yMm(), robot.headingDeg(), robotNames,
                 robot.sensorNames()).withStepMessages(stepMessages)
-                .withRun(spec.seed(), spec.parameters().of(robot.name()));
+                .withRun(spec.seed(), spec.parameters().of(robot.name())).withType(robot.type());
     }
 
 }

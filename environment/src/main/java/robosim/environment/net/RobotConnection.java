@@ -62,7 +62,8 @@ final class RobotConnection implements RobotPeer {
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.RobotJoins(this, hello, wanted, verdict));
+            coordinator.post(new LoopEvent.RobotJoins(this, coordinator.admission().typed(hello, wanted), wanted,
+                    verdict));
             refusal = handshake.verdict(verdict);
         }
         if (refusal != null) {

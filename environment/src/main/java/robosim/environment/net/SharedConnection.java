@@ -101,7 +101,8 @@ final class SharedConnection {
                 continue;
             }
             robots[slot] = new SharedRobot(this, slot, hello.name());
-            joins.add(new LoopEvent.RobotJoins(robots[slot], hello, wanted, new CompletableFuture<>()));
+            joins.add(new LoopEvent.RobotJoins(robots[slot], coordinator.admission().typed(hello, wanted), wanted,
+                    new CompletableFuture<>()));
         }
         hellos.clear(); // (the refused ones' names are garbage now; the accepted ones' are in their joins)
         names.clear();
