@@ -75,7 +75,8 @@ class WebViewerKeysTest {
         assertTrue(got[0].startsWith("HTTP/1.1 200"), "the page, to a browser with the key pair, by any host name: " + got[0]);
         assertTrue(got[1].startsWith("{\"type\":\"snapshot\""), "and its feed over wss: " + got[1]);
         assertTrue(got[2].startsWith("refused: "), "a client without the key pair gets nothing: " + got[2]);
-        assertFalse(got[3].contains("HTTP/1.1 200"), "nor one without TLS: " + got[3]);
+        assertTrue(got[3].startsWith("answered: HTTP/1.1 400"), "nor one without TLS, which is told to use https: "
+                + got[3]);
 
         IllegalArgumentException secretOnly = assertThrows(IllegalArgumentException.class,
                 () -> new WebViewerServer("127.0.0.1", 1, SimulationKeys.of("a secret of more than sixteen", "test"),

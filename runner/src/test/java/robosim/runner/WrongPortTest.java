@@ -45,6 +45,7 @@ class WrongPortTest {
     private static int viewers;
     private static int geometry;
     private static int controlPort;
+    private static robosim.web.WebViewerServer web;
 
     /** Exit code and stderr lines of one command line run in this JVM. */
     private record Run(int code, List<String> err, String out) {
@@ -101,10 +102,13 @@ class WrongPortTest {
         viewers = ports[1];
         geometry = ports[2];
         controlPort = control.port();
+        web = new robosim.web.WebViewerServer("127.0.0.1", viewers, null, (verb, arg) -> "{\"ok\":true}");
+        web.start(InetAddress.getLoopbackAddress(), 0);
     }
 
     @AfterAll
     static void close() throws Exception {
+        web.close();
         control.close();
         host.shutdown();
     }
@@ -121,6 +125,31 @@ class WrongPortTest {
         Run atControl = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + controlPort);
         assertEquals(1, atControl.code(), atControl.err().toString());
         assertEquals(List.of("robot rc1: 127.0.0.1:" + controlPort + ": " + robosimControlRefusal()), atControl.err());
+    }
+
+    @Test
+    void aRobotAtTheWebPortIsToldAndTheControlPanelToo() {
+        Run robot = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + web.port());
+        assertEquals(1, robot.code(), robot.err().toString());
+        assertEquals(List.of("robot rc1: 127.0.0.1:" + web.port() + ": that is the Environment's web port (a browser's); "
+                + "robots, viewers and Geometry use the Environment's own ports (8000, 3000 and 10000 by default)"),
+                robot.err());
+        Run panel = run(new ControlPanelMain(), "127.0.0.1", "" + web.port(), "status");
+        assertEquals(1, panel.code(), panel.out() + panel.err());
+        assertTrue(panel.out().contains("error=that is the Environment's web port (a browser's); the Control Panel uses "
+                + "the control port (8100 by default)"), panel.out());
+    }
+
+    @Test
+    void aBrowserAtTheRobotPortGetsA400SayingWhatThePortIs() throws Exception {
+        try (Socket s = new Socket(InetAddress.getLoopbackAddress(), robots)) {
+            s.getOutputStream().write("GET / HTTP/1.1\r\nHost: localhost\r\n\r\n".getBytes(StandardCharsets.US_ASCII));
+            String answer = new String(s.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            assertTrue(answer.startsWith("HTTP/1.1 400 Bad Request\r\n"), answer);
+            assertTrue(answer.endsWith("\r\n\r\nthis is the Environment's robot port, which speaks RoboSim's object "
+                    + "protocol (robots, viewers, Geometry); the Control Panel uses the control port (8100 by default), a "
+                    + "browser the web port (--web-port)\n"), answer);
+        }
     }
 
     @Test

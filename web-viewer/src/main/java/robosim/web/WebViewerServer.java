@@ -12,7 +12,6 @@ import io.netty.channel.socket.nio.NioServerSocketChannel;
 import io.netty.handler.codec.http.HttpObjectAggregator;
 import io.netty.handler.codec.http.HttpServerCodec;
 import io.netty.handler.codec.http.websocketx.WebSocketServerProtocolHandler;
-import io.netty.handler.ssl.SslHandler;
 import io.netty.handler.timeout.ReadTimeoutHandler;
 import io.netty.handler.timeout.WriteTimeoutHandler;
 import java.io.Closeable;
@@ -128,9 +127,9 @@ public final class WebViewerServer implements Closeable {
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
-                        if (tls != null) {
-                            ch.pipeline().addLast(new SslHandler(tls.serverEngine())); // (the browser shows the key pair)
-                        }
+                        // (TLS, the browser showing the key pair, after it when the browser begins it)
+                        ch.pipeline().addLast(new FirstBytes(tls, robosim.protocol.Greeting.Kind.HTTP,
+                                "the Environment's web port (a browser's)"));
                         ch.pipeline().addLast(new ReadTimeoutHandler(REQUEST_TIMEOUT_S), // (off once a page's socket is open)
                                 new WriteTimeoutHandler(WRITE_TIMEOUT_S), new HttpServerCodec(),
                                 new HttpObjectAggregator(MAX_REQUEST), new HttpGate(files, tls != null),

@@ -108,7 +108,9 @@ public final class ControlServer implements Closeable {
                             return;
                         }
                         ch.closeFuture().addListener(f -> connections.decrementAndGet());
-                        ch.pipeline().addLast(new FirstBytes(tls)); // (TLS, when the client begins it, after it)
+                        // (TLS, when the client begins it, after it)
+                        ch.pipeline().addLast(new robosim.web.FirstBytes(tls, robosim.protocol.Greeting.Kind.TEXT,
+                                "the Environment's control port (the Control Panel's)"));
                         // (the idle clock after the decoders: only a whole request line resets it)
                         ch.pipeline().addLast(new WriteTimeoutHandler(WRITE_TIMEOUT_S),
                                 new LineBasedFrameDecoder(MAX_LINE, true, true),
