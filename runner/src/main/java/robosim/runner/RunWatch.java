@@ -6,6 +6,7 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepNumbers;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.WorldSnapshot;
 
@@ -74,7 +75,7 @@ final class RunWatch implements AutoCloseable {
                     lastStep = u.step();
                 } else if (progress && now - lastPrint >= 1_000_000_000L) {
                     double rate = (u.step() - lastStep) / ((now - lastPrint) / 1e9);
-                    System.out.printf(Locale.ROOT, "step %d%s  %.0f steps/s%n", u.step() + 1,
+                    System.out.printf(Locale.ROOT, "step %d%s  %.0f steps/s%n", StepNumbers.shown(u.step()),
                             steps > 0 ? "/" + steps : "", rate);
                     lastPrint = now;
                     lastStep = u.step();

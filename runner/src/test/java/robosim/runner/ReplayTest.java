@@ -20,6 +20,8 @@ import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
+import robosim.viewer.SceneFeed;
+import robosim.viewer.StatusLine;
 
 /**
  * {@code scripts/replay.sh}: a recording replayed in its own process gives a viewer what the live run gave
@@ -98,32 +100,40 @@ class ReplayTest {
             assertEquals("it would watch \"nobody\", which is not a robot of this recording",
                     stranger.awaitEnd(LONG_S, TimeUnit.SECONDS).reason());
             try (ControlClient control = new ControlClient("127.0.0.1", port(replay, "control"), null, (int) (LONG_S * 1000))) {
+                // steps as every display numbers them (steps completed): seek N shows the world after N steps,
+                // the update of wire step N - 1, and the viewer's status line says step N (issue 31, item 5)
                 assertEquals("at step " + MIDDLE, ok(control.request("seek " + MIDDLE)).path("message").asText());
-                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE)),
-                        RecordingRunTest.bytes(got.awaitStep(MIDDLE, 0, LONG_S)), "the poses of step " + MIDDLE);
+                PoseUpdate sought = got.awaitStep(MIDDLE - 1, 0, LONG_S);
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE - 1)), RecordingRunTest.bytes(sought),
+                        "the poses after " + MIDDLE + " steps");
+                SceneFeed shown = new SceneFeed(0);
+                shown.snapshot(got.snapshot());
+                shown.update(sought);
+                assertTrue(StatusLine.text(shown.latest()).startsWith("step " + MIDDLE + " "), StatusLine.text(shown.latest()));
                 int seen = got.messages.size();
                 assertEquals("paused at step " + (MIDDLE + 1), ok(control.request("step 1")).path("message").asText());
-                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE + 1)),
-                        RecordingRunTest.bytes(got.awaitStep(MIDDLE + 1, seen, LONG_S)), "then step " + (MIDDLE + 1));
+                assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE)),
+                        RecordingRunTest.bytes(got.awaitStep(MIDDLE, seen, LONG_S)), "then step " + (MIDDLE + 1));
                 JsonNode status = ok(control.request("status"));
                 assertEquals("PAUSED", status.path("state").asText(), status.toString());
                 assertEquals(MIDDLE + 1, status.path("step").asLong(), status.toString());
-                assertEquals(0, status.path("first_step").asLong(), status.toString());
-                assertEquals(SEEK_STEPS - 1, status.path("last_step").asLong(), status.toString());
+                assertEquals(1, status.path("first_step").asLong(), status.toString());
+                assertEquals(SEEK_STEPS, status.path("last_step").asLong(), status.toString());
 
-                assertTrue(control.request("seek " + SEEK_STEPS).path("error").asText().contains("not in the recording"));
+                assertTrue(control.request("seek " + (SEEK_STEPS + 1)).path("error").asText().contains("not in the recording"));
+                assertTrue(control.request("seek 0").path("error").asText().contains("steps 1 to " + SEEK_STEPS));
                 assertTrue(control.request("speed 1000").path("error").asText().contains("0.1 to 100"));
                 assertTrue(control.request("step -3").path("error").asText().contains("positive whole number"));
                 seen = got.messages.size();
-                ok(control.request("seek " + (SEEK_STEPS - 1)));
+                assertEquals("at step " + SEEK_STEPS, ok(control.request("seek " + SEEK_STEPS)).path("message").asText());
                 got.awaitStep(SEEK_STEPS - 1, seen, LONG_S);
                 assertTrue(control.request("resume").path("error").asText().contains("at the end of the recording"));
                 seen = got.messages.size();
                 ok(control.request("seek 10"));
-                seen = got.messages.indexOf(got.awaitStep(10, seen, LONG_S));
+                seen = got.messages.indexOf(got.awaitStep(9, seen, LONG_S));
                 ok(control.request("speed 100"));
                 ok(control.request("resume"));
-                got.awaitStep(11, SEEK_STEPS - 2, seen, LONG_S); // runs on from where it was sought (a live viewer gets the newest)
+                got.awaitStep(10, SEEK_STEPS - 2, seen, LONG_S); // runs on from where it was sought (a live viewer gets the newest)
                 ok(control.request("stop"));
             }
             viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);

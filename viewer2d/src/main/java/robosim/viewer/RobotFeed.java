@@ -8,6 +8,7 @@ import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepNumbers;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -71,7 +72,8 @@ public final class RobotFeed implements RunFollower.Listener {
 
     @Override
     public void robotView(RobotView v) {
-        String at = v.sinceStep() == v.step() ? "step " + v.step() : "steps " + v.sinceStep() + "-" + v.step();
+        long step = StepNumbers.shown(v.step());
+        String at = v.sinceStep() == v.step() ? "step " + step : "steps " + StepNumbers.shown(v.sinceStep()) + "-" + step;
         if (v.leftOut() > 0) {
             note(at + ": " + v.leftOut() + " earlier messages and notices left out (this window skipped steps)");
         }
@@ -95,7 +97,7 @@ public final class RobotFeed implements RunFollower.Listener {
     @Override
     public void end(SimulationEnd end) {
         scenes.end(end);
-        noteOnce("-- the simulation ended at step " + end.lastStep() + ": " + clean(end.reason()));
+        noteOnce("-- the simulation ended at step " + StepNumbers.shown(end.lastStep()) + ": " + clean(end.reason()));
     }
 
     @Override

@@ -15,6 +15,7 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.SensorReading;
 import robosim.protocol.SonarSpec;
+import robosim.protocol.StepNumbers;
 
 /**
  * Draws one robot as it senses the world: on the left a polar plot in the robot's own frame (heading
@@ -111,33 +112,7 @@ public final class RobotRenderer {
     }
 
     private static void facts(Graphics2D g, Scene s, int robot, RobotView v, int x, int width) {
-        List<String> lines = new ArrayList<>();
-        lines.add(s.names().get(robot) + "  (" + s.robots().get(robot).type() + ")");
-        lines.add("step " + s.step() + "   " + StatusLine.state(s));
-        if (s.poses().departed().contains(s.names().get(robot))) {
-            lines.add("it has left the simulation");
-        } else if (s.poses().held().contains(s.names().get(robot))) {
-            lines.add("held: lost, standing where it was until it comes back");
-        } else if (robot < s.poses().count()) {
-            lines.add(String.format(Locale.ROOT, "pose  x %.0f  y %.0f mm  heading %.1f deg", s.poses().xMm(robot),
-                    s.poses().yMm(robot), s.poses().headingDeg(robot)));
-        }
-        if (v != null) {
-            lines.add("");
-            lines.add(String.format(Locale.ROOT, "command (step %d)  move %.1f mm  turn %.1f deg", v.step(),
-                    v.moveMm(), v.turnDeg()));
-            lines.add("  sonar " + (v.askedSonar() ? "asked" : "not asked") + "   tag " + (v.askedTag() ? "asked" : "no"));
-            lines.add("contact  " + (v.contact().isEmpty() ? "none" : RobotFeed.clean(v.contact())));
-            lines.add("tagged   " + (v.tagged().isEmpty() ? "none" : RobotFeed.clean(v.tagged())));
-            for (SensorReading r : v.readings()) {
-                lines.add(RobotFeed.clean(r.name()) + "  " + RobotFeed.values(r.values()));
-            }
-            lines.add("messages: " + v.sent().size() + " sent, " + v.delivered().size() + " delivered"
-                    + (v.sinceStep() == v.step() ? "" : " since step " + v.sinceStep()));
-        } else {
-            lines.add("");
-            lines.add("(waiting for its first step)");
-        }
+        List<String> lines = facts(s, robot, v);
         g.setColor(TEXT);
         g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         int y = 20;
@@ -157,6 +132,38 @@ public final class RobotRenderer {
                 g.drawString(sides[k], x + k * 62 + 6, y + 13);
             }
         }
+    }
+
+    /** The lines of text beside the plot: the robot, the step and state, its pose, its newest view (null: none yet). */
+    public static List<String> facts(Scene s, int robot, RobotView v) {
+        List<String> lines = new ArrayList<>();
+        lines.add(s.names().get(robot) + "  (" + s.robots().get(robot).type() + ")");
+        lines.add("step " + StatusLine.step(s) + "   " + StatusLine.state(s));
+        if (s.poses().departed().contains(s.names().get(robot))) {
+            lines.add("it has left the simulation");
+        } else if (s.poses().held().contains(s.names().get(robot))) {
+            lines.add("held: lost, standing where it was until it comes back");
+        } else if (robot < s.poses().count()) {
+            lines.add(String.format(Locale.ROOT, "pose  x %.0f  y %.0f mm  heading %.1f deg", s.poses().xMm(robot),
+                    s.poses().yMm(robot), s.poses().headingDeg(robot)));
+        }
+        if (v != null) {
+            lines.add("");
+            lines.add(String.format(Locale.ROOT, "command (step %d)  move %.1f mm  turn %.1f deg",
+                    StepNumbers.shown(v.step()), v.moveMm(), v.turnDeg()));
+            lines.add("  sonar " + (v.askedSonar() ? "asked" : "not asked") + "   tag " + (v.askedTag() ? "asked" : "no"));
+            lines.add("contact  " + (v.contact().isEmpty() ? "none" : RobotFeed.clean(v.contact())));
+            lines.add("tagged   " + (v.tagged().isEmpty() ? "none" : RobotFeed.clean(v.tagged())));
+            for (SensorReading r : v.readings()) {
+                lines.add(RobotFeed.clean(r.name()) + "  " + RobotFeed.values(r.values()));
+            }
+            lines.add("messages: " + v.sent().size() + " sent, " + v.delivered().size() + " delivered"
+                    + (v.sinceStep() == v.step() ? "" : " since step " + StepNumbers.shown(v.sinceStep())));
+        } else {
+            lines.add("");
+            lines.add("(waiting for its first step)");
+        }
+        return lines;
     }
 
     /** The larger of {@code reach} and {@code d}, at most {@link #MAX_REACH_MM}; a value that is not finite changes nothing. */

@@ -1,6 +1,7 @@
 package robosim.viewer;
 
 import java.util.Locale;
+import robosim.protocol.StepNumbers;
 
 /**
  * The viewer's status line, from a {@link Scene}: the step, the robot count, the run's state (with
@@ -29,10 +30,14 @@ public final class StatusLine {
         return r.next().isEmpty() ? text : text + " - " + r.next();
     }
 
+    /** The step a window shows for {@code s}: steps completed ({@link StepNumbers}; 0 before the first). */
+    public static long step(Scene s) {
+        return StepNumbers.shown(s.step());
+    }
+
     /** The whole line under the world. */
     public static String text(Scene s) {
-        return String.format(Locale.ROOT, "step %d   %d robots   %s      %s", s.step() + 1, s.robotCount(), state(s),
-                KEYS);
+        return String.format(Locale.ROOT, "step %d   %d robots   %s      %s", step(s), s.robotCount(), state(s), KEYS);
     }
 
     private static String clean(String reason) {

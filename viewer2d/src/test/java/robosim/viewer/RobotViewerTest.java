@@ -50,14 +50,15 @@ class RobotViewerTest {
         feed.robotView(merged);
         assertEquals(merged, feed.view());
         List<String> log = feed.log();
-        assertEquals(List.of("-- watching a in a run of 2 robots", "steps 3-9  out  to b: ping?",
-                "steps 3-9  in   from b: pong", "steps 3-9  notice: b is out of range"), log);
+        // steps as every display numbers them: the wire's steps 3 to 9 are the 4th to the 10th (protocol/README.md)
+        assertEquals(List.of("-- watching a in a run of 2 robots", "steps 4-10  out  to b: ping?",
+                "steps 4-10  in   from b: pong", "steps 4-10  notice: b is out of range"), log);
         for (int k = 0; k < RobotFeed.LOG_LINES + 10; k++) {
             feed.robotView(view(10 + k, filled(181, 2000), new double[4], List.of(new CommEvent("", "b", "" + k)),
                     List.of(), List.of()));
         }
         assertEquals(RobotFeed.LOG_LINES, feed.log().size(), "the newest lines, bounded");
-        assertEquals("step " + (10 + RobotFeed.LOG_LINES + 9) + "  out  to b: " + (RobotFeed.LOG_LINES + 9),
+        assertEquals("step " + (10 + RobotFeed.LOG_LINES + 10) + "  out  to b: " + (RobotFeed.LOG_LINES + 9),
                 feed.log().get(RobotFeed.LOG_LINES - 1));
         assertEquals(RobotFeed.MAX_TEXT + 3, RobotFeed.clean("x".repeat(5000)).length(), "network text is cut");
     }
@@ -74,7 +75,13 @@ class RobotViewerTest {
         Arrays.fill(laser, 0, 10, 1000); // (its rightmost beams, 90 to 81 degrees right of the heading, see close)
         int w = 900;
         int h = 500;
-        BufferedImage front = draw(scene, view(41, laser, new double[] {1, 0, 0, 0}, List.of(), List.of(), List.of()), w, h);
+        RobotView at41 = view(41, laser, new double[] {1, 0, 0, 0}, List.of(), List.of(), List.of());
+        List<String> facts = RobotRenderer.facts(scene, 0, at41);
+        assertTrue(facts.get(1).startsWith("step 42   RUNNING"), "after wire step 41: 42 steps completed, as the status "
+                + "line says: " + facts.get(1));
+        assertTrue(facts.contains("command (step 42)  move 250.0 mm  turn 0.0 deg"), facts.toString());
+        assertTrue(StatusLine.text(scene).startsWith("step 42 "), StatusLine.text(scene));
+        BufferedImage front = draw(scene, at41, w, h);
         double scale = (h / 2.0 - 12) / (5000 + 190); // the plot fills the height; its reach: a sonar's
         int cx = h / 2;
         int cy = h / 2;

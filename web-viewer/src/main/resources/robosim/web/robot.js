@@ -49,7 +49,8 @@ export class RobotPanel {
   show(v) {
     if (v.name !== this.name) return;
     this.view = v;
-    const at = v.since === v.step ? `step ${v.step}` : `steps ${v.since}-${v.step}`;
+    // steps as every display numbers them: steps completed, the wire's step + 1 (protocol/README.md, "Step numbers")
+    const at = v.since === v.step ? `step ${v.step + 1}` : `steps ${v.since + 1}-${v.step + 1}`;
     if (v.leftOut > 0) this.line(`${at}: ${v.leftOut} earlier messages and notices left out`);
     for (const m of v.sent) this.line(`${at}  out  to ${m.to}: ${m.text}`);
     for (const m of v.delivered) this.line(`${at}  in   from ${m.from}: ${m.text}`);
@@ -85,10 +86,10 @@ export class RobotPanel {
     const lines = [`${this.name} (${r ? r.type : '?'})`];
     if (p) lines.push(p.gone ? 'it has left the simulation'
       : p.held ? `held since it was lost: standing at x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m`
-      : `step ${p.step}  x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m  ${p.heading.toFixed(1)} deg`);
+      : `step ${p.step + 1}  x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m  ${p.heading.toFixed(1)} deg`);
     let bump = null;
     if (v) {
-      lines.push(`command (step ${v.step}): move ${v.move.toFixed(1)} mm, turn ${v.turn.toFixed(1)} deg`,
+      lines.push(`command (step ${v.step + 1}): move ${v.move.toFixed(1)} mm, turn ${v.turn.toFixed(1)} deg`,
         `  sonar ${v.sonar ? 'asked' : 'not asked'}, tag ${v.tag ? 'asked' : 'no'}`,
         `contact ${v.contact || 'none'}   tagged ${v.tagged || 'none'}`);
       for (const s of v.readings) {

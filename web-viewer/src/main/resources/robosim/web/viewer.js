@@ -50,7 +50,7 @@ function handle(m) {
       poses = m; gone = new Set(m.departed); held = new Set(m.held || []);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
       panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
-    case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 1}`); redraw(); break;
+    case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 2}`); redraw(); break;
     case 'view': panel.show(m); redraw(); break;
     case 'viewEnded': watched = ''; panel.ended(m.reason); redraw(); break;
     case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; redraw(); break;
@@ -216,7 +216,7 @@ function frame(now) {
   scheduled = false;
   if (dirty) {
     dirty = false;
-    $('step').textContent = poses ? poses.step : '-';
+    $('step').textContent = poses ? poses.step + 1 : '-'; // steps completed (protocol/README.md, "Step numbers")
     $('rate').textContent = rate.toFixed(1);
     if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
     panel.draw();

@@ -11,7 +11,6 @@ final class PublishedRun {
     private static final long RATE_WINDOW_NANOS = 500_000_000L;
 
     volatile RunStatus.State phase = RunStatus.State.WAITING;
-    volatile long stepsComputed;
     volatile long stepsReleased;
     volatile double recentRate;
     volatile long startNanos;
@@ -68,11 +67,12 @@ final class PublishedRun {
         messagesRefused = refused;
     }
 
+    /** The run's summary; its steps are those released (a step computed and held by the pace is not one yet). */
     RunSummary summary(int robots) {
         long start = startNanos;
         long end = endNanos;
         double wall = start == 0 ? 0 : ((end == 0 ? System.nanoTime() : end) - start) / 1e9;
-        return new RunSummary(stepsComputed, robots, wall, endReason, completed, messagesDelivered,
+        return new RunSummary(stepsReleased, robots, wall, endReason, completed, messagesDelivered,
                 messagesOutOfRange, messagesRefused, departures.size(), geometryLosses, geometryAttaches,
                 List.copyOf(departures));
     }

@@ -340,7 +340,6 @@ final class Run {
         geometry.resolved();
         roster.resolved();
         step++;
-        record.stepsComputed = step;
         phase = Phase.RELEASING;
     }
 
@@ -1085,7 +1084,7 @@ final class Run {
             rec.end(end);
         }
         rosterChanged = true;
-        LOG.info("simulation over after {} steps: {}", step, Printable.of(reason));
+        LOG.info("simulation over after {} steps: {}", released, Printable.of(reason));
         listener.ended(record.summary(roster.size()));
         closeOut();
     }
@@ -1103,7 +1102,8 @@ final class Run {
         control.settle(released, true);
     }
 
+    /** The end; its last step is the last whose responses went out (a step computed and held by the pace is not). */
     private SimulationEnd endMessage() {
-        return new SimulationEnd(step - 1, record.endReason);
+        return new SimulationEnd(released - 1, record.endReason);
     }
 }

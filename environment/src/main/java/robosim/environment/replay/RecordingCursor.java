@@ -7,6 +7,7 @@ import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RobotView;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepNumbers;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -77,6 +78,11 @@ final class RecordingCursor {
         return index < 0 ? recording.snapshot().step() : recording.stepNumber(index);
     }
 
+    /** The step shown as a person is shown it: steps completed ({@link StepNumbers}; 0 before the first). */
+    long shown() {
+        return StepNumbers.shown(step());
+    }
+
     long firstStep() {
         return steps == 0 ? -1 : recording.stepNumber(0);
     }
@@ -85,11 +91,16 @@ final class RecordingCursor {
         return steps == 0 ? -1 : recording.stepNumber(steps - 1);
     }
 
-    /** The index of the last recorded step at or before {@code k}, which must be in the recording. */
-    int indexOf(long k) {
+    /**
+     * The index of the last recorded step at or before the one shown as {@code shown} ({@link StepNumbers}), which
+     * must be in the recording: from {@code shown(firstStep())} to {@code shown(lastStep())}.
+     */
+    int indexOf(long shown) {
+        long k = StepNumbers.wire(shown);
         if (steps == 0 || k < firstStep() || k > lastStep()) {
-            throw new IllegalArgumentException("step " + k + " is not in the recording ("
-                    + (steps == 0 ? "it has no steps" : "steps " + firstStep() + " to " + lastStep()) + ")");
+            throw new IllegalArgumentException("step " + shown + " is not in the recording (" + (steps == 0
+                    ? "it has no steps" : "steps " + StepNumbers.shown(firstStep()) + " to " + StepNumbers.shown(lastStep()))
+                    + ")");
         }
         int lo = 0;
         int hi = steps - 1;
@@ -114,7 +125,7 @@ final class RecordingCursor {
     SimulationEnd end() {
         SimulationEnd recorded = recording.end();
         return recorded != null && steps == recording.steps() ? recorded : new SimulationEnd(step(),
-                "the recording stops at step " + step() + (recording.cutShort() == null ? "" : ": " + recording.cutShort()));
+                "the recording stops at step " + shown() + (recording.cutShort() == null ? "" : ": " + recording.cutShort()));
     }
 
     /** The world as the replay shows it now. */

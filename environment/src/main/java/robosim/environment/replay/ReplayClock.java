@@ -11,6 +11,7 @@ import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepNumbers;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -62,7 +63,7 @@ public final class ReplayClock {
         return inbox.awaitClosed(ms);
     }
 
-    /** The step shown when the replay ended (after {@link #awaitEnd}). */
+    /** The step shown when the replay ended, as displays number it ({@link StepNumbers}; after {@link #awaitEnd}). */
     public long endedAt() {
         return endedAt;
     }
@@ -78,7 +79,7 @@ public final class ReplayClock {
                 viewer.queue().state(runState());
                 if (state == RunStatus.State.WAITING && !startPaused) {
                     run(now);
-                    LOG.info("replaying from step {} at x{}", at.step() + 1, speed);
+                    LOG.info("replaying from step {} at x{}", at.shown(), speed);
                 }
             }
             return world;
@@ -100,7 +101,8 @@ public final class ReplayClock {
     }
 
     public CompletableFuture<ReplayStatus> status() {
-        return inbox.ask(now -> new ReplayStatus(state, at.step(), at.firstStep(), at.lastStep(), at.steps(), speed, viewers.count(), at.atEnd(),
+        return inbox.ask(now -> new ReplayStatus(state, at.shown(), StepNumbers.shown(at.firstStep()),
+                StepNumbers.shown(at.lastStep()), at.steps(), speed, viewers.count(), at.atEnd(),
                 1e9 / intervalNanos));
     }
 
@@ -110,7 +112,7 @@ public final class ReplayClock {
             if (state != RunStatus.State.PAUSED) {
                 hold();
             }
-            return "paused at step " + at.step();
+            return "paused at step " + at.shown();
         });
     }
 
@@ -118,12 +120,12 @@ public final class ReplayClock {
         return inbox.ask(now -> {
             live();
             if (at.atEnd()) {
-                throw new IllegalStateException("at the end of the recording (step " + at.step() + "): seek first");
+                throw new IllegalStateException("at the end of the recording (step " + at.shown() + "): seek first");
             }
             if (state != RunStatus.State.RUNNING) {
                 run(now);
             }
-            return "running from step " + at.step() + " at x" + speed;
+            return "running from step " + at.shown() + " at x" + speed;
         });
     }
 
@@ -146,7 +148,7 @@ public final class ReplayClock {
         }).thenCompose(f -> f);
     }
 
-    /** Shows recorded step {@code k} (the last recorded at or before it) at once, and goes on from there. */
+    /** Shows step {@code k} as displays number it ({@link StepNumbers}; the last recorded at or before it) at once, and goes on from there. */
     public CompletableFuture<String> seek(long k) {
         return inbox.ask(now -> {
             live();
@@ -154,7 +156,7 @@ public final class ReplayClock {
             finishStepping();
             show(i);
             nextDue = now + intervalNanos;
-            return "at step " + at.step();
+            return "at step " + at.shown();
         });
     }
 
@@ -173,7 +175,7 @@ public final class ReplayClock {
             if (state != RunStatus.State.ENDED) {
                 end(new SimulationEnd(at.step(), why));
             }
-            return "stopped at step " + at.step();
+            return "stopped at step " + at.shown();
         });
     }
 
@@ -241,14 +243,14 @@ public final class ReplayClock {
             end(at.end());
         } else if (state != RunStatus.State.PAUSED) {
             hold();
-            LOG.info("at the end of the recording (step {}): seek, or stop", at.step());
+            LOG.info("at the end of the recording (step {}): seek, or stop", at.shown());
         }
     }
 
     private void finishStepping() {
         stepsLeft = 0;
         if (stepping != null) {
-            stepping.complete(at.atEnd() ? "at the end of the recording (step " + at.step() + ")" : "paused at step " + at.step());
+            stepping.complete(at.atEnd() ? "at the end of the recording (step " + at.shown() + ")" : "paused at step " + at.shown());
             stepping = null;
         }
     }
@@ -256,9 +258,9 @@ public final class ReplayClock {
     private void end(SimulationEnd end) {
         finishStepping();
         state = RunStatus.State.ENDED;
-        endedAt = at.step();
+        endedAt = at.shown();
         viewers.end(end);
-        LOG.info("replay ended at step {}: {}", at.step(), end.reason());
+        LOG.info("replay ended at step {}: {}", at.shown(), end.reason());
     }
 
     private void run(long now) {
@@ -294,6 +296,6 @@ public final class ReplayClock {
             case PAUSED -> RunState.Phase.PAUSED;
             default -> RunState.Phase.WAITING;
         };
-        return new RunState(at.step() + 1, phase);
+        return new RunState(at.shown(), phase);
     }
 }

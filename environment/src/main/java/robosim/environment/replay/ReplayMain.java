@@ -19,6 +19,7 @@ import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.SimulationKeys;
+import robosim.protocol.StepNumbers;
 import robosim.web.WebViewerServer;
 
 /**
@@ -133,8 +134,8 @@ public final class ReplayMain implements Callable<Integer> {
         System.out.println("listening viewers=" + port.port() + " control=" + (control == null ? -1 : control.port())
                 + (web == null ? "" : " web=" + web.port()));
         System.out.println("replaying " + file + ": " + recording.steps() + " steps"
-                + (recording.steps() == 0 ? "" : " (" + recording.stepNumber(0) + " to "
-                + recording.stepNumber(recording.steps() - 1) + ")")
+                + (recording.steps() == 0 ? "" : " (" + StepNumbers.shown(recording.stepNumber(0)) + " to "
+                + StepNumbers.shown(recording.stepNumber(recording.steps() - 1)) + ")")
                 + (recording.end() == null ? ", cut short" + (recording.cutShort() == null ? "" : ": " + recording.cutShort())
                 : ", ended: " + recording.end().reason()));
         System.out.flush();
