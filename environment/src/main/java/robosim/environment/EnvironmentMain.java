@@ -271,7 +271,8 @@ public final class EnvironmentMain implements Callable<Integer> {
         try {
             code = host.run(s -> {
                 for (Departure d : s.departures()) {
-                    lines.accept("left robot=" + d.robot() + " step=" + d.step() + " reason=" + d.why());
+                    lines.accept("left robot=" + d.robot() + " step=" + robosim.protocol.StepNumbers.shown(d.step())
+                            + " reason=" + d.why());
                 }
                 lines.accept(s.line());
             });

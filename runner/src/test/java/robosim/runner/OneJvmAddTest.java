@@ -40,10 +40,10 @@ class OneJvmAddTest {
                         ControlFixture.ok(control, "add r9 Scout 11 2 180 robosim.examples.BackAndForth"));
                 env.await("robot r9 joins at (11000, 2000) mm heading 180.0 deg", LONG_S);
                 ControlFixture.ok(control, "resume");
-                // (step 10 is being collected while the run holds: r9 takes part from 10 if its hello came before
-                // every request of step 10 was in, else from 11; both are legal)
+                // (the 11th step is being collected while the run holds: r9 takes part from it if its hello came
+                // before every request of it was in, else from the 12th; both are legal)
                 String from = env.await("robot r9 takes part from step ", LONG_S);
-                assertTrue(from.endsWith("from step 10") || from.endsWith("from step 11"), from);
+                assertTrue(from.endsWith("from step 11") || from.endsWith("from step 12"), from);
                 env.await("summary steps=400 robots=4", LONG_S);
             }
             assertTrue(env.process.waitFor(LONG_S, TimeUnit.SECONDS));

@@ -56,7 +56,7 @@ class RobotAddProcessTest {
                 JsonNode r9 = control.request("robots").path("robots").get(3);
                 assertEquals("r9 joining", r9.path("name").asText() + " " + r9.path("state").asText());
                 ControlFixture.ok(control, "resume");
-                env.await("robot r9 takes part from step 11", LONG_S);
+                env.await("robot r9 takes part from step 12", LONG_S);
                 env.await("summary steps=400", LONG_S);
                 env.await("robot r9's process exited (0)", LONG_S);
                 assertTrue(others.process.waitFor(LONG_S, TimeUnit.SECONDS));

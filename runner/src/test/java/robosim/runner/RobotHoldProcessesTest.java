@@ -79,9 +79,9 @@ class RobotHoldProcessesTest {
                 ControlFixture.ok(control, "pause"); // returns once step LOSS is computed: every request of it is in
                 first.process.destroyForcibly();
                 assertTrue(first.process.waitFor(LONG_S, TimeUnit.SECONDS));
-                env.await("robot ring2 lost during step " + LOSS, LONG_S);
+                env.await("robot ring2 lost during step " + (LOSS + 1), LONG_S); // (the step after the LOSS done)
                 ControlFixture.ok(control, "step 1");
-                env.await("robot ring2 lost at step " + (LOSS + 1), LONG_S);
+                env.await("robot ring2 lost at step " + (LOSS + 2), LONG_S);
                 assertEquals("held", state(control, "ring2"));
                 ControlFixture.ok(control, "step " + (AWAY - 1));
                 ControlFixture.ok(control, "pause"); // step LOSS + AWAY computed without it
@@ -89,7 +89,7 @@ class RobotHoldProcessesTest {
                     env.await("robot ring2 says hello again", LONG_S);
                     assertEquals("returning", state(control, "ring2"));
                     ControlFixture.ok(control, "resume");
-                    env.await("robot ring2 is back at step " + BACK, LONG_S);
+                    env.await("robot ring2 is back at step " + (BACK + 1), LONG_S);
                     env.await("summary steps=" + STEPS, LONG_S);
                     assertTrue(again.process.waitFor(LONG_S, TimeUnit.SECONDS));
                     assertTrue(others.process.waitFor(LONG_S, TimeUnit.SECONDS));

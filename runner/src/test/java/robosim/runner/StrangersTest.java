@@ -142,17 +142,13 @@ class StrangersTest {
                             sending.add(CompletableFuture.runAsync(() -> sendLargestHellos(stranger, serial),
                                     TestThreads.ROBOTS));
                         }
-                        List<Long> took = new ArrayList<>();
                         long stepped = 0;
                         while (!sending.stream().allMatch(CompletableFuture::isDone) && stepped < STEPS - 5) {
-                            long t0 = System.nanoTime();
                             com.fasterxml.jackson.databind.JsonNode status = control.request("status");
-                            took.add(TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - t0));
                             assertTrue(status.path("ok").asBoolean(), status.toString());
                             assertTrue(control.request("step 5").path("ok").asBoolean());
                             stepped += 5;
                         }
-                        assertTrue(took.stream().allMatch(ms -> ms <= 1000), "every status within 1 s: " + took);
                         CompletableFuture.allOf(sending.toArray(CompletableFuture[]::new)).get(LONG_S, TimeUnit.SECONDS);
                     } finally {
                         for (Socket s : strangers) {

@@ -137,7 +137,7 @@ public final class EnvironmentCommands implements ControlCommands {
             m.put("name", r.name());
             m.put("state", r.state());
             if (r.sinceStep() >= 0) {
-                m.put("since", r.sinceStep());
+                m.put("since", robosim.protocol.StepNumbers.shown(r.sinceStep()));
             }
             l.add(m);
         }

@@ -181,11 +181,12 @@ final class GeometryLink {
         losses++;
         if (settings.onGeometryLoss() == GeometryLoss.IN_PROCESS && world != null) {
             LOG.warn("Geometry process lost in step {} ({}); going on with in-process geometry (same results); "
-                    + "a new Geometry process may attach", step, why);
+                    + "a new Geometry process may attach", robosim.protocol.StepNumbers.shown(step), why);
             inProcess = new InProcessGeometry(world);
             return outstanding == null ? null : inProcess.resolve(outstanding);
         }
-        LOG.warn("Geometry process lost in step {} ({}); the step waits for a new Geometry process", step, why);
+        LOG.warn("Geometry process lost in step {} ({}); the step waits for a new Geometry process",
+                robosim.protocol.StepNumbers.shown(step), why);
         return null;
     }
 

@@ -22,6 +22,7 @@ import robosim.protocol.RobotHello;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.RobotWelcome;
+import robosim.protocol.StepNumbers;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
@@ -315,7 +316,7 @@ final class Run {
         try {
             prepared = core.prepare(step, batch);
         } catch (ProtocolException e) {
-            finish("step " + step + " failed: " + e.getMessage(), false);
+            finish("step " + StepNumbers.shown(step) + " failed: " + e.getMessage(), false);
             return;
         }
         phase = Phase.RESOLVING;
@@ -331,7 +332,7 @@ final class Run {
             core.complete(answer);
         } catch (ProtocolException e) {
             if (from == null) {
-                finish("step " + step + " failed: " + e.getMessage(), false);
+                finish("step " + StepNumbers.shown(step) + " failed: " + e.getMessage(), false);
             } else {
                 geometryLost(from, "gave a bad answer: " + e.getMessage());
             }
@@ -473,7 +474,7 @@ final class Run {
         GeometryClientWorker late = geometry.overdue(now);
         if (late != null) {
             LOG.warn("Geometry process has not answered within {} ms (step {}); dropping it",
-                    settings.geometryTimeoutMs(), step);
+                    settings.geometryTimeoutMs(), StepNumbers.shown(step));
             geometryLost(late, "no answer within " + settings.geometryTimeoutMs() + " ms");
         }
         if (phase != Phase.COLLECTING) {
@@ -490,7 +491,7 @@ final class Run {
             for (RobotSlot s : roster.all()) {
                 if (s.running() && s.request == null && (s.backNanos == 0 || now - s.backNanos > stepTimeoutNanos)) {
                     s.peer.drop();
-                    leave(s, "sent no request for step " + step + " within " + settings.stepTimeoutMs()
+                    leave(s, "sent no request for step " + StepNumbers.shown(step) + " within " + settings.stepTimeoutMs()
                             + " ms (step timeout)", false);
                     if (design.readsInWorldOrder()) {
                         break; // the stepper reads in world order: only the robot it waits for is late
@@ -762,7 +763,7 @@ final class Run {
                 s.leaving = new RobotSlot.Leaving(why, forGood);
                 leaving.add(s);
                 LOG.info("robot {} lost during step {} ({}); it stops taking part at the step's end",
-                        s.name, phase == Phase.RELEASING ? step - 1 : step, Printable.of(why));
+                        s.name, StepNumbers.shown(phase == Phase.RELEASING ? step - 1 : step), Printable.of(why));
             } else if (forGood) {
                 s.leaving = new RobotSlot.Leaving(s.leaving.why(), true);
             }
@@ -796,7 +797,7 @@ final class Run {
         core.away(s.index, true);
         record.states = roster.states(); // (before the log line: whoever reads it sees the state)
         LOG.warn("robot {} lost at step {} ({}); it stands where it is until a robot process says hello as {}{}",
-                s.name, step, safe, s.name, settings.onRobotLoss() == RobotLoss.WAIT
+                s.name, StepNumbers.shown(step), safe, s.name, settings.onRobotLoss() == RobotLoss.WAIT
                         ? ", and the world waits for it" + limit() : "");
         listener.robotHeld(s.name, step, safe);
     }
@@ -820,8 +821,8 @@ final class Run {
         Departure d = new Departure(s.name, step, why);
         record.departures.add(d);
         record.states = roster.states();
-        LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(), step,
-                why);
+        LOG.warn("robot {} left at step {} ({}); it is removed from the world and the others go on", d.robot(),
+                StepNumbers.shown(step), why);
         listener.robotLeft(d);
     }
 
@@ -863,9 +864,10 @@ final class Run {
         record.states = roster.states();
         s.backNanos = System.nanoTime(); // its step timeout runs from now, as the others' did from their step
         if (joined) {
-            LOG.info("robot {} takes part from step {}", s.name, step);
+            LOG.info("robot {} takes part from step {}", s.name, StepNumbers.shown(step));
         } else {
-            LOG.info("robot {} is back at step {}, where it stood since step {}", s.name, step, s.sinceStep);
+            LOG.info("robot {} is back at step {}, where it stood since step {}", s.name, StepNumbers.shown(step),
+                    StepNumbers.shown(s.sinceStep));
             listener.robotReturned(s.name, step);
         }
         try {
@@ -885,7 +887,7 @@ final class Run {
     private void waitForAnyone() {
         if (!toldEveryoneAway) {
             toldEveryoneAway = true;
-            LOG.warn("every robot is away at step {}: the world waits until one comes back", step);
+            LOG.warn("every robot is away at step {}: the world waits until one comes back", StepNumbers.shown(step));
         }
     }
 
