@@ -89,15 +89,16 @@ class ControlPortTest {
             assertEquals("expected", ok(c, "robots").path("robots").get(0).path("state").asText());
             List<CompletableFuture<String>> robots = f.robots();
             assertEquals("paused at step 10", ok(c, "step 10").path("message").asText());
-            ok(c, "pause"); // returns once step 10 is computed and held
+            ok(c, "pause"); // returns once the 11th step is computed and held
             assertEquals("removed r2", ok(c, "remove r2").path("message").asText());
             assertEquals("removed from the simulation from the control port",
                     robots.get(1).get(TIMEOUT_MS, TimeUnit.MILLISECONDS), "the robot is told");
             assertEquals("paused at step 11", ok(c, "step 1").path("message").asText());
             JsonNode list = ok(c, "robots").path("robots");
             assertEquals("r1 running", list.get(0).path("name").asText() + " " + list.get(0).path("state").asText());
-            assertEquals("r2 gone 11", list.get(1).path("name").asText() + " " + list.get(1).path("state").asText()
-                    + " " + list.get(1).path("since").asLong(), "it went at the end of step 10, the one it was removed in");
+            assertEquals("r2 gone 12", list.get(1).path("name").asText() + " " + list.get(1).path("state").asText()
+                    + " " + list.get(1).path("since").asLong(), "it went at the end of step 11, the one held when it was "
+                    + "removed: the 12th is the first it took no part in");
             assertEquals(list, ok(c, "status").path("robot_states"));
             for (String[] bad : new String[][] {{"remove r2", "robot \"r2\" has already left"},
                     {"remove nobody\u0007", "no robot named \"nobody?\" in"}, {"remove", "remove needs a robot's name"}}) {
