@@ -11,7 +11,9 @@ import java.nio.charset.StandardCharsets;
 import org.junit.jupiter.api.Test;
 import picocli.CommandLine;
 
-/** The Environment's command line: bad input exits 2 with one line naming what is wrong. */
+/**
+ * The Environment's command line: bad input exits 2 with one line naming what is wrong (a bad file: a line per fault).
+ */
 class EnvironmentMainTest {
     private record Result(int code, String err) {
     }
@@ -49,6 +51,21 @@ class EnvironmentMainTest {
         assertEquals(2, r.code());
         String line = r.err().strip();
         assertTrue(line.startsWith(f.toString()) && line.contains(expected) && !line.contains("\n"), line);
+    }
+
+    @Test
+    void aFileWithSeveralFaultsExits2WithEachOnItsOwnLine(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path f = dir.resolve("bad.xml");
+        java.nio.file.Files.writeString(f, "<environment timeStepMs='-500'>\n<arena width='5' height='5'/>\n<robots>\n"
+                + "<robot name='a' type='Roomba' x='1' y='1'/>\n<robot name='a' type='ArRobot' x='3' y='1'/>\n"
+                + "</robots></environment>");
+        Result r = run(f.toString());
+        assertEquals(2, r.code());
+        assertEquals(java.util.List.of(f + ":1:1: <environment> timeStepMs must be > 0, got -500",
+                f + ":4:1: <robot name=\"a\"> type \"Roomba\" is not a known robot type (known: [ArRobot, Scout], or the "
+                        + "class name of a RobotType with radius=\"...\")",
+                f + ":5:1: <robot name=\"a\"> the name is used twice"), r.err().strip().lines().toList());
     }
 
     @Test

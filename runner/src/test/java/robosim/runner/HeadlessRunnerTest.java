@@ -23,6 +23,18 @@ class HeadlessRunnerTest {
     }
 
     @Test
+    void aFileWithSeveralFaultsIsALineForEachAndExit2BeforeAnyProcessStarts() {
+        String f = "src/test/resources/three-faults.xml";
+        HeadlessRun r = HeadlessRun.of("--env", f, "--steps", "10");
+        assertEquals(2, r.code(), r.all());
+        assertEquals(3, r.err().size(), r.all());
+        assertTrue(r.err().get(0).startsWith(f + ":3:1: unknown element or attribute 'colour' (known here: "), r.all());
+        assertEquals(f + ":7:5: <robot name=\"r2\"> overlaps robot \"r1\"", r.err().get(1), r.all());
+        assertEquals(f + ":8:5: <robot name=\"r3\"> at (20.0, 1.0) m does not fit inside the arena (radius 0.25 m)",
+                r.err().get(2), r.all());
+    }
+
+    @Test
     void oneJvmWithAnOptionForRobotProcessesIsOneLineAndExit2() {
         HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--one-jvm",
                 "--robots-in-one-process");

@@ -8,10 +8,11 @@ import java.util.List;
 
 /**
  * The XML environment file as written (metres and degrees); see {@code test-envs/README.md}.
- * Boxed fields stay null when an attribute is missing, so the loader can name it.
+ * Boxed fields stay null when an attribute is missing, so the loader can name it; each element knows where it
+ * starts ({@link FileElement}), so a fault in it can say where.
  */
 @JacksonXmlRootElement(localName = "environment")
-public final class EnvironmentFile {
+public final class EnvironmentFile extends FileElement {
     @JacksonXmlProperty(isAttribute = true)
     public String name;
     @JacksonXmlProperty(isAttribute = true)
@@ -44,7 +45,7 @@ public final class EnvironmentFile {
     public List<ParamXml> params = new ArrayList<>();
 
     /** {@code <param name="speed" value="300"/>}: a value the control code reads with {@code Robot.parameter}. */
-    public static final class ParamXml {
+    public static final class ParamXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         @JacksonXmlProperty(isAttribute = true)
@@ -56,7 +57,7 @@ public final class EnvironmentFile {
      * width="4" height="3"/></join>}: robots whose names match may join the running world, entering at the
      * first free pose of the spawn region; {@code <sensor>} children as on a robot.
      */
-    public static final class JoinXml {
+    public static final class JoinXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String allow;
         @JacksonXmlProperty(isAttribute = true)
@@ -80,7 +81,7 @@ public final class EnvironmentFile {
     }
 
     /** {@code <spawn x="1" y="1" width="4" height="3"/>}: lower-left corner and size, metres. */
-    public static final class SpawnXml {
+    public static final class SpawnXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public Double x;
         @JacksonXmlProperty(isAttribute = true)
@@ -92,7 +93,7 @@ public final class EnvironmentFile {
     }
 
     /** {@code <arena width="12" height="8"/>}: metres, lower-left corner at the origin unless x/y say. */
-    public static final class ArenaXml {
+    public static final class ArenaXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public Double x;
         @JacksonXmlProperty(isAttribute = true)
@@ -108,7 +109,7 @@ public final class EnvironmentFile {
      * setters (called once per element) keep them in file order, as one list.
      */
     public static final class ObstaclesXml {
-        public final List<Object> all = new ArrayList<>();
+        public final List<FileElement> all = new ArrayList<>();
 
         @JacksonXmlProperty(localName = "rectangle")
         public void setRectangle(RectangleXml r) {
@@ -122,7 +123,7 @@ public final class EnvironmentFile {
     }
 
     /** {@code <rectangle name="wall" x="1" y="2" width="3" height="0.2"/>}: lower-left corner, metres. */
-    public static final class RectangleXml {
+    public static final class RectangleXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         /** A robot's tag can hit it. */
@@ -139,7 +140,7 @@ public final class EnvironmentFile {
     }
 
     /** {@code <polygon name="rock" points="1,1 2,1 1.5,2"/>}: vertices in metres. */
-    public static final class PolygonXml {
+    public static final class PolygonXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         @JacksonXmlProperty(isAttribute = true)
@@ -149,7 +150,7 @@ public final class EnvironmentFile {
     }
 
     /** {@code <robot name="robot1" type="ArRobot" control="robosim.examples.BackAndForth" x="1" y="1" heading="0"/>}. */
-    public static final class RobotXml {
+    public static final class RobotXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         @JacksonXmlProperty(isAttribute = true)
@@ -187,7 +188,7 @@ public final class EnvironmentFile {
      * {@code <sensor name="front-laser" type="laser" noise="5" fovDeg="180"/>} inside a robot: any
      * other attribute goes to the sensor's own {@code configure}.
      */
-    public static final class SensorXml {
+    public static final class SensorXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         @JacksonXmlProperty(isAttribute = true)
@@ -203,7 +204,7 @@ public final class EnvironmentFile {
     }
 
     /** {@code <heat name="fire" x="5" y="3" intensity="10"/>}: metres; intensity is the reading at the source. */
-    public static final class HeatXml {
+    public static final class HeatXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         @JacksonXmlProperty(isAttribute = true)

@@ -1,10 +1,8 @@
 package robosim.environment.config;
 
-import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
-import com.fasterxml.jackson.databind.exc.InvalidFormatException;
-import com.fasterxml.jackson.databind.exc.UnrecognizedPropertyException;
+import com.fasterxml.jackson.databind.ObjectReader;
 import com.fasterxml.jackson.dataformat.xml.XmlMapper;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
@@ -13,28 +11,36 @@ import java.nio.file.NoSuchFileException;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.HashSet;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.TreeSet;
 import org.locationtech.jts.geom.Coordinate;
 import org.locationtech.jts.geom.Geometry;
 import org.locationtech.jts.geom.GeometryFactory;
+import robosim.environment.core.JoinRule;
 import robosim.environment.core.Parameters;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.Arena;
+import robosim.protocol.Limits;
 import robosim.protocol.ObstacleShape;
+import robosim.protocol.Printable;
 
 /**
- * Reads an environment file and checks it: metres become millimetres, every fault becomes one
- * {@link EnvironmentFileException} line that names the file, the element and what is wrong.
+ * Reads an environment file and checks it: metres become millimetres. A file with faults is refused with one
+ * {@link EnvironmentFileException} listing every fault found in one pass over it, each one line naming the file, the
+ * line and column where the element at fault starts, the element and what is wrong ({@link FileFaults}: in file
+ * order, at most {@link FileFaults#SHOWN}, then how many more). Two kinds of fault end the reading where they are,
+ * after those found before them: XML that is not well-formed (the parser cannot go on) and faults of the
+ * placeholders (the text to read is not known).
  */
 public final class EnvironmentLoader {
     private static final double MM_PER_M = 1000.0;
-    private static final XmlMapper MAPPER = XmlMapper.builder()
-            .enable(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES)
-            .enable(DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
-            .build();
+    private static final ObjectReader READER = new XmlMapper(new PositionedXmlModule())
+            .readerFor(EnvironmentFile.class)
+            .with(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES);
 
     /** The largest environment file, bytes (a 1000-robot world is about 100 KB). */
     public static final int MAX_FILE_BYTES = 16 * 1024 * 1024;
@@ -42,6 +48,10 @@ public final class EnvironmentLoader {
     private final GeometryFactory jts = new GeometryFactory();
     /** {@code <robot join="any-time">}: not waited for at the start; it may join the running world. */
     static final String ANY_TIME = "any-time";
+
+    /** The robots that could be placed: those there from the start and those that may join at any time. */
+    private record Robots(List<RobotSpec> fromStart, List<RobotSpec> anyTime) {
+    }
 
     /** Loads and checks {@code file}: a regular file of at most {@link #MAX_FILE_BYTES}; its placeholders' defaults. */
     public WorldSpec load(Path file) throws EnvironmentFileException {
@@ -57,66 +67,77 @@ public final class EnvironmentLoader {
         String where = file.toString();
         for (Map.Entry<String, String> g : given.entrySet()) {
             if (!Placeholders.NAME.matcher(g.getKey()).matches()
-                    || robosim.protocol.Limits.utfLength(g.getValue()) > robosim.protocol.Limits.MAX_PARAMETER_BYTES) {
-                throw new EnvironmentFileException(where + ": --param " + robosim.protocol.Printable.of(g.getKey(), 64)
+                    || Limits.utfLength(g.getValue()) > Limits.MAX_PARAMETER_BYTES) {
+                throw new EnvironmentFileException(where + ": --param " + Printable.of(g.getKey(), 64)
                         + ": a name of 1 to 64 letters, digits, '_', '.' or '-' (not a digit first) and a value of at most "
-                        + robosim.protocol.Limits.MAX_PARAMETER_BYTES + " bytes");
+                        + Limits.MAX_PARAMETER_BYTES + " bytes");
             }
         }
-        EnvironmentFile xml;
-        Placeholders.Replaced replaced;
+        String text;
         try {
-            replaced = Placeholders.replace(where, new String(read(file, where), StandardCharsets.UTF_8), given);
-            xml = MAPPER.readValue(replaced.text(), EnvironmentFile.class);
+            text = new String(read(file, where), StandardCharsets.UTF_8);
         } catch (NoSuchFileException e) {
             throw new EnvironmentFileException(where + ": file not found");
-        } catch (UnrecognizedPropertyException e) {
-            throw new EnvironmentFileException(where + at(e.getLocation()) + ": unknown element or attribute '"
-                    + e.getPropertyName() + "' (known here: " + e.getKnownPropertyIds() + ")");
-        } catch (InvalidFormatException e) {
-            throw new EnvironmentFileException(where + at(e.getLocation()) + ": " + path(e) + " value '"
-                    + e.getValue() + "' is not a " + e.getTargetType().getSimpleName().toLowerCase());
-        } catch (JsonProcessingException e) {
-            throw new EnvironmentFileException(where + at(e.getLocation()) + ": malformed XML: "
-                    + e.getOriginalMessage().lines().findFirst().orElse(""));
         } catch (IOException e) {
             throw new EnvironmentFileException(where + ": cannot read: " + e.getMessage());
         }
-        if (xml == null) {
-            throw new EnvironmentFileException(where + ": empty file");
-        }
-        Parameters parameters = parameters(where, xml, replaced.names(), given);
-        WorldSpec spec = check(where, xml);
-        return new WorldSpec(spec.source(), spec.name(), spec.timeStepMs(), spec.seed(), spec.arena(), spec.obstacles(),
-                spec.robots(), spec.commRangeMm(), spec.maxMessageBytes(), spec.heatSources(), spec.tagRangeMm(),
-                spec.taggable(), spec.joins(), parameters);
+        FileFaults faults = new FileFaults(where);
+        Placeholders.Replaced replaced = Placeholders.replace(faults, text, given);
+        faults.throwIfAny();
+        EnvironmentFile xml = bind(faults, replaced.text());
+        Parameters parameters = parameters(faults, xml, replaced.names(), given);
+        return check(where, faults, xml, parameters); // (which throws every fault recorded, the parameters' too)
     }
 
-    /** The world's and each robot's {@code <param>}s, the given values over the world's; unknown given names refused. */
-    private static Parameters parameters(String where, EnvironmentFile xml, java.util.Set<String> placeholders,
-            Map<String, String> given) throws EnvironmentFileException {
-        Map<String, String> world = params(where, "<environment>", xml.params);
-        for (String name : given.keySet()) {
-            if (!placeholders.contains(name) && !world.containsKey(name)) {
-                java.util.TreeSet<String> known = new java.util.TreeSet<>(placeholders);
-                known.addAll(world.keySet());
-                throw new EnvironmentFileException(where + ": no parameter '" + robosim.protocol.Printable.of(name, 64)
-                        + "' here (its parameters: " + (known.isEmpty() ? "none" : String.join(", ", known)) + ")");
-            }
-            if (world.containsKey(name)) {
-                world.put(name, given.get(name));
+    /**
+     * The file's text bound to {@link EnvironmentFile}, each unknown element or attribute and each value not of its
+     * type recorded on the way ({@link ProblemRecorder}); XML that is not well-formed, or no environment at all, ends
+     * it, thrown with the faults found before.
+     */
+    private static EnvironmentFile bind(FileFaults faults, String text) throws EnvironmentFileException {
+        EnvironmentFile xml;
+        try {
+            xml = READER.withHandler(new ProblemRecorder(faults)).readValue(text);
+        } catch (JsonProcessingException e) {
+            faults.add(FilePosition.of(e.getLocation()), "malformed XML: "
+                    + e.getOriginalMessage().lines().findFirst().orElse(""));
+            throw faults.exception();
+        }
+        if (xml == null) {
+            faults.add(null, "empty file");
+            throw faults.exception();
+        }
+        return xml;
+    }
+
+    /**
+     * The world's and each robot's {@code <param>}s, the given values over the world's; a given name that is neither
+     * a placeholder nor a world's {@code <param>} is a fault.
+     */
+    private static Parameters parameters(FileFaults faults, EnvironmentFile xml, Set<String> placeholders,
+            Map<String, String> given) {
+        Map<String, String> world = params(faults, xml, "<environment>", xml.params);
+        Set<String> known = new TreeSet<>(placeholders);
+        xml.params.stream().filter(p -> p.name != null && Placeholders.NAME.matcher(p.name).matches())
+                .forEach(p -> known.add(p.name));
+        for (Map.Entry<String, String> g : given.entrySet()) {
+            if (!known.contains(g.getKey())) {
+                faults.add(null, "no parameter '" + Printable.of(g.getKey(), 64) + "' here (its parameters: "
+                        + (known.isEmpty() ? "none" : String.join(", ", known)) + ")");
+            } else if (world.containsKey(g.getKey())) {
+                world.put(g.getKey(), g.getValue());
             }
         }
-        Map<String, Map<String, String>> robots = new java.util.LinkedHashMap<>();
+        Map<String, Map<String, String>> robots = new LinkedHashMap<>();
         for (EnvironmentFile.RobotXml r : xml.robots) {
             if (!r.params.isEmpty()) {
                 String el = "<robot name=\"" + r.name + "\">";
-                Map<String, String> own = params(where, el, r.params);
-                java.util.Set<String> all = new java.util.HashSet<>(world.keySet());
+                Map<String, String> own = params(faults, r, el, r.params);
+                Set<String> all = new HashSet<>(world.keySet());
                 all.addAll(own.keySet());
-                if (all.size() > robosim.protocol.Limits.MAX_PARAMETERS) {
-                    throw new EnvironmentFileException(where + ": " + el + " has " + all.size() + " parameters with the "
-                            + "world's, at most " + robosim.protocol.Limits.MAX_PARAMETERS);
+                if (all.size() > Limits.MAX_PARAMETERS) {
+                    faults.add(r.at, el + " has " + all.size() + " parameters with the world's, at most "
+                            + Limits.MAX_PARAMETERS);
                 }
                 robots.put(r.name, own);
             }
@@ -124,29 +145,25 @@ public final class EnvironmentLoader {
         return new Parameters(world, robots);
     }
 
-    private static Map<String, String> params(String where, String el, List<EnvironmentFile.ParamXml> xml)
-            throws EnvironmentFileException {
-        Map<String, String> out = new java.util.LinkedHashMap<>();
+    /** The {@code <param>}s of {@code owner} ({@code el} in a fault) that have no fault. */
+    private static Map<String, String> params(FileFaults faults, FileElement owner, String el,
+            List<EnvironmentFile.ParamXml> xml) {
+        Map<String, String> out = new LinkedHashMap<>();
         for (EnvironmentFile.ParamXml p : xml) {
             if (p.name == null || !Placeholders.NAME.matcher(p.name).matches()) {
-                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + (p.name == null ? "" : p.name)
-                        + "\"> needs a name of 1 to 64 letters, digits, '_', '.' or '-', not a digit first");
-            }
-            if (p.value == null) {
-                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name + "\"> needs a value");
-            }
-            if (robosim.protocol.Limits.utfLength(p.value) > robosim.protocol.Limits.MAX_PARAMETER_BYTES) {
-                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name + "\"> has a value "
-                        + "longer than " + robosim.protocol.Limits.MAX_PARAMETER_BYTES + " bytes");
-            }
-            if (out.put(p.name, p.value) != null) {
-                throw new EnvironmentFileException(where + ": " + el + " <param name=\"" + p.name
-                        + "\"> is given twice");
+                faults.add(p.at, el + " <param name=\"" + (p.name == null ? "" : p.name) + "\"> needs a name of 1 to "
+                        + "64 letters, digits, '_', '.' or '-', not a digit first");
+            } else if (p.value == null) {
+                faults.add(p.at, el + " <param name=\"" + p.name + "\"> needs a value");
+            } else if (Limits.utfLength(p.value) > Limits.MAX_PARAMETER_BYTES) {
+                faults.add(p.at, el + " <param name=\"" + p.name + "\"> has a value longer than "
+                        + Limits.MAX_PARAMETER_BYTES + " bytes");
+            } else if (out.put(p.name, p.value) != null) {
+                faults.add(p.at, el + " <param name=\"" + p.name + "\"> is given twice");
             }
         }
-        if (out.size() > robosim.protocol.Limits.MAX_PARAMETERS) {
-            throw new EnvironmentFileException(where + ": " + el + " has " + out.size() + " <param>s, at most "
-                    + robosim.protocol.Limits.MAX_PARAMETERS);
+        if (out.size() > Limits.MAX_PARAMETERS) {
+            faults.add(owner.at, el + " has " + out.size() + " <param>s, at most " + Limits.MAX_PARAMETERS);
         }
         return out;
     }
@@ -172,153 +189,175 @@ public final class EnvironmentLoader {
         return bytes;
     }
 
-    private static String at(JsonLocation location) {
-        return location == null || location.getLineNr() < 0 ? ""
-                : ":" + location.getLineNr() + ":" + location.getColumnNr();
-    }
-
-    private static String path(InvalidFormatException e) {
-        StringBuilder b = new StringBuilder();
-        for (var ref : e.getPath()) {
-            if (ref.getFieldName() != null) {
-                b.append(b.length() == 0 ? "" : "/").append(ref.getFieldName());
-            }
-        }
-        return "<" + b + ">";
-    }
-
-    private WorldSpec check(String where, EnvironmentFile xml) throws EnvironmentFileException {
-        String env = where + ": <environment>";
+    /** The world the file describes; or, when a fault has been recorded (here or before), every fault thrown. */
+    private WorldSpec check(String where, FileFaults faults, EnvironmentFile xml, Parameters parameters)
+            throws EnvironmentFileException {
+        String env = "<environment>";
         if (xml.timeStepMs == null) {
-            throw new EnvironmentFileException(env + " needs timeStepMs (the time step in milliseconds)");
-        }
-        if (xml.timeStepMs <= 0) {
-            throw new EnvironmentFileException(env + " timeStepMs must be > 0, got " + xml.timeStepMs);
-        }
-        if (xml.arena == null) {
-            throw new EnvironmentFileException(env + " needs an <arena width=\"..\" height=\"..\"/> (metres)");
-        }
-        EnvironmentFile.ArenaXml a = xml.arena;
-        double ax = orZero(a.x);
-        double ay = orZero(a.y);
-        double w = ObstacleReader.required(where, "<arena>", "width", a.width);
-        double h = ObstacleReader.required(where, "<arena>", "height", a.height);
-        if (!(w > 0) || !(h > 0) || !Double.isFinite(ax) || !Double.isFinite(ay)) {
-            throw new EnvironmentFileException(where + ": <arena> width and height must be > 0 m, got " + w + " x " + h);
-        }
-        Arena arena = new Arena(ax * MM_PER_M, ay * MM_PER_M, (ax + w) * MM_PER_M, (ay + h) * MM_PER_M);
-        List<ObstacleShape> obstacles = ObstacleReader.obstacles(where, xml);
-        java.util.Set<String> taggable = new java.util.HashSet<>();
-        for (int o = 0; o < xml.obstacles.all.size(); o++) {
-            Object x = xml.obstacles.all.get(o);
-            Boolean t = x instanceof EnvironmentFile.RectangleXml r ? r.taggable : ((EnvironmentFile.PolygonXml) x).taggable;
-            if (Boolean.TRUE.equals(t)) {
-                taggable.add(obstacles.get(o).name());
+            if (!xml.hadBadValue("timeStepMs")) {
+                faults.add(xml.at, env + " needs timeStepMs (the time step in milliseconds)");
             }
+        } else if (xml.timeStepMs <= 0) {
+            faults.add(xml.at, env + " timeStepMs must be > 0, got " + xml.timeStepMs);
         }
+        Arena arena = arena(faults, xml);
+        ObstacleReader.Obstacles obstacles = ObstacleReader.obstacles(faults, xml);
         double tagRange = xml.tagRangeM == null ? WorldSpec.DEFAULT_TAG_RANGE_MM / MM_PER_M : xml.tagRangeM;
         if (!(tagRange > 0) || Double.isInfinite(tagRange)) {
-            throw new EnvironmentFileException(env + " tagRangeM must be > 0 m, got " + tagRange);
+            faults.add(xml.at, env + " tagRangeM must be > 0 m, got " + tagRange);
         }
-        List<RobotSpec> all = robots(where, xml, arena, obstacles);
-        List<RobotSpec> robots = new ArrayList<>();
-        List<RobotSpec> anyTime = new ArrayList<>();
-        for (int i = 0; i < all.size(); i++) {
-            (ANY_TIME.equals(xml.robots.get(i).join) ? anyTime : robots).add(all.get(i));
+        Robots robots = robots(faults, xml, arena, obstacles.shapes());
+        if (!xml.robots.isEmpty() && xml.robots.stream().allMatch(r -> ANY_TIME.equals(r.join))) {
+            faults.add(xml.at, "<robots> must name at least one <robot> there from the start (without "
+                    + "join=\"any-time\")");
         }
-        if (robots.isEmpty()) {
-            throw new EnvironmentFileException(where + ": <robots> must name at least one <robot> there from the "
-                    + "start (without join=\"any-time\")");
-        }
-        List<robosim.environment.core.JoinRule> joins = JoinReader.rules(where, xml, arena, anyTime);
+        List<JoinRule> joins = JoinReader.rules(faults, xml, arena, robots.anyTime());
         long seed = xml.seed == null ? 1L : xml.seed;
         String name = xml.name == null ? Path.of(where).getFileName().toString() : xml.name;
         double range = 0;
         if (xml.commRangeM != null) {
             if (!(xml.commRangeM > 0) || Double.isInfinite(xml.commRangeM)) {
-                throw new EnvironmentFileException(env + " commRangeM must be > 0 m, got " + xml.commRangeM);
+                faults.add(xml.at, env + " commRangeM must be > 0 m, got " + xml.commRangeM);
             }
             range = xml.commRangeM * MM_PER_M;
         }
         int maxBytes = xml.maxMessageBytes == null ? WorldSpec.DEFAULT_MAX_MESSAGE_BYTES : xml.maxMessageBytes;
-        if (maxBytes < 1 || maxBytes > robosim.protocol.Limits.MAX_UTF_BYTES) {
-            throw new EnvironmentFileException(env + " maxMessageBytes must be in 1.."
-                    + robosim.protocol.Limits.MAX_UTF_BYTES + ", got " + maxBytes);
+        if (maxBytes < 1 || maxBytes > Limits.MAX_UTF_BYTES) {
+            faults.add(xml.at, env + " maxMessageBytes must be in 1.." + Limits.MAX_UTF_BYTES + ", got " + maxBytes);
         }
-        List<WorldSpec.HeatSource> heat = new ArrayList<>();
-        for (EnvironmentFile.HeatXml src : xml.heatSources) {
-            String el = "<heat name=\"" + (src.name == null ? "heat" + (heat.size() + 1) : src.name) + "\">";
-            double hx = ObstacleReader.required(where, el, "x", src.x);
-            double hy = ObstacleReader.required(where, el, "y", src.y);
-            double intensity = ObstacleReader.required(where, el, "intensity", src.intensity);
-            if (!(intensity >= 0)) {
-                throw new EnvironmentFileException(where + ": " + el + " intensity must be >= 0, got " + intensity);
-            }
-            heat.add(new WorldSpec.HeatSource(src.name == null ? "heat" + (heat.size() + 1) : src.name, hx * MM_PER_M,
-                    hy * MM_PER_M, intensity));
+        List<WorldSpec.HeatSource> heat = heatSources(faults, xml);
+        faults.throwIfAny();
+        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles.shapes(), robots.fromStart(), range,
+                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters);
+    }
+
+    /** The arena, mm; null, its fault recorded, when it is missing or at fault. */
+    private static Arena arena(FileFaults faults, EnvironmentFile xml) {
+        EnvironmentFile.ArenaXml a = xml.arena;
+        if (a == null) {
+            faults.add(xml.at, "<environment> needs an <arena width=\"..\" height=\"..\"/> (metres)");
+            return null;
         }
-        return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles, robots, range, maxBytes, heat,
-                tagRange * MM_PER_M, taggable, joins);
+        double ax = orZero(a.x);
+        double ay = orZero(a.y);
+        Double w = ObstacleReader.required(faults, a, "<arena>", "width", a.width);
+        Double h = ObstacleReader.required(faults, a, "<arena>", "height", a.height);
+        if (w == null || h == null) {
+            return null;
+        }
+        if (!(w > 0) || !(h > 0) || !Double.isFinite(ax) || !Double.isFinite(ay)) {
+            faults.add(a.at, "<arena> width and height must be > 0 m, got " + w + " x " + h);
+            return null;
+        }
+        return new Arena(ax * MM_PER_M, ay * MM_PER_M, (ax + w) * MM_PER_M, (ay + h) * MM_PER_M);
     }
 
     private static double orZero(Double v) {
         return v == null ? 0 : v;
     }
 
-    private List<RobotSpec> robots(String where, EnvironmentFile xml, Arena arena, List<ObstacleShape> obstacles)
-            throws EnvironmentFileException {
+    /** The heat sources that have no fault, mm. */
+    private static List<WorldSpec.HeatSource> heatSources(FileFaults faults, EnvironmentFile xml) {
+        List<WorldSpec.HeatSource> out = new ArrayList<>();
+        for (int i = 0; i < xml.heatSources.size(); i++) {
+            EnvironmentFile.HeatXml src = xml.heatSources.get(i);
+            String name = src.name == null ? "heat" + (i + 1) : src.name;
+            String el = "<heat name=\"" + name + "\">";
+            Double x = ObstacleReader.required(faults, src, el, "x", src.x);
+            Double y = ObstacleReader.required(faults, src, el, "y", src.y);
+            Double intensity = ObstacleReader.required(faults, src, el, "intensity", src.intensity);
+            if (intensity != null && !(intensity >= 0)) {
+                faults.add(src.at, el + " intensity must be >= 0, got " + intensity);
+            } else if (x != null && y != null && intensity != null) {
+                out.add(new WorldSpec.HeatSource(name, x * MM_PER_M, y * MM_PER_M, intensity));
+            }
+        }
+        return out;
+    }
+
+    /**
+     * Every robot whose radius and pose could be read, each checked where it stands (inside the arena unless that is at
+     * fault, clear of the obstacles and of the robots before it); the others' faults recorded.
+     */
+    private Robots robots(FileFaults faults, EnvironmentFile xml, Arena arena, List<ObstacleShape> obstacles) {
         if (xml.robots.isEmpty()) {
-            throw new EnvironmentFileException(where + ": <robots> must name at least one <robot>");
+            faults.add(xml.at, "<robots> must name at least one <robot>");
         }
         List<Geometry> walls = new ArrayList<>();
         for (ObstacleShape o : obstacles) {
             walls.add(robosim.environment.core.Obstacles.polygon(o));
         }
-        List<RobotSpec> out = new ArrayList<>();
+        List<RobotSpec> placed = new ArrayList<>();
+        Robots out = new Robots(new ArrayList<>(), new ArrayList<>());
         Set<String> names = new HashSet<>();
-        for (EnvironmentFile.RobotXml r : xml.robots) {
-            if (r.name == null || r.name.isBlank()) {
-                throw new EnvironmentFileException(where + ": <robot> number " + (out.size() + 1) + " needs a name");
+        for (int i = 0; i < xml.robots.size(); i++) {
+            EnvironmentFile.RobotXml r = xml.robots.get(i);
+            boolean named = r.name != null && !r.name.isBlank();
+            String el = named ? "<robot name=\"" + r.name + "\">" : "<robot> number " + (i + 1);
+            if (!named) {
+                faults.add(r.at, el + " needs a name");
+            } else if (r.name.equals(robosim.protocol.CommEvent.EVERYONE)) {
+                faults.add(r.at, el + " \"*\" is reserved: it addresses every robot");
+            } else if (!names.add(r.name)) {
+                faults.add(r.at, el + " the name is used twice");
             }
-            String el = "<robot name=\"" + r.name + "\">";
-            if (r.name.equals(robosim.protocol.CommEvent.EVERYONE)) {
-                throw new EnvironmentFileException(where + ": " + el + " \"*\" is reserved: it addresses every robot");
+            boolean anyTime = ANY_TIME.equals(r.join);
+            if (r.join != null && !anyTime) {
+                faults.add(r.at, el + " join must be \"" + ANY_TIME + "\" (or left out: there from the start), got \""
+                        + r.join + "\"");
             }
-            if (!names.add(r.name)) {
-                throw new EnvironmentFileException(where + ": " + el + " the name is used twice");
+            if (anyTime && named && JoinRule.badName(r.name) != null) {
+                faults.add(r.at, "<robot name=\"" + r.name + "\" join=\"any-time\"> a robot that joins needs a name "
+                        + "of 1 to 64 letters, digits and - _ . :");
             }
-            if (r.join != null && !r.join.equals(ANY_TIME)) {
-                throw new EnvironmentFileException(where + ": " + el + " join must be \"" + ANY_TIME + "\" (or left "
-                        + "out: there from the start), got \"" + r.join + "\"");
-            }
-            double x = ObstacleReader.required(where, el, "x", r.x) * MM_PER_M;
-            double y = ObstacleReader.required(where, el, "y", r.y) * MM_PER_M;
+            Double x = ObstacleReader.required(faults, r, el, "x", r.x);
+            Double y = ObstacleReader.required(faults, r, el, "y", r.y);
             double heading = r.heading == null ? 0 : r.heading;
             if (!Double.isFinite(heading)) {
-                throw new EnvironmentFileException(where + ": " + el + " heading must be a finite number");
+                faults.add(r.at, el + " heading must be a finite number");
+                heading = 0; // (the world is not built: it only keeps the robot's place checked)
             }
-            RobotSpec robot = RobotReader.robot(where, el, r, x, y, robosim.geometry.Kinematics.turn(heading, 0));
-            double rad = robot.radiusMm();
-            if (x - rad < arena.minXMm() || x + rad > arena.maxXMm() || y - rad < arena.minYMm()
-                    || y + rad > arena.maxYMm()) {
-                throw new EnvironmentFileException(where + ": " + el + " at (" + r.x + ", " + r.y
-                        + ") m does not fit inside the arena (radius " + rad / MM_PER_M + " m)");
+            RobotSpec robot = RobotReader.robot(faults, el, r);
+            if (robot == null || x == null || y == null) {
+                continue; // (where it stands cannot be checked)
             }
-            Geometry body = jts.createPoint(new Coordinate(x, y));
-            for (int o = 0; o < walls.size(); o++) {
-                if (walls.get(o).distance(body) < rad) {
-                    throw new EnvironmentFileException(where + ": " + el + " at (" + r.x + ", " + r.y
-                            + ") m overlaps obstacle \"" + obstacles.get(o).name() + "\"");
-                }
+            robot = robot.at(x * MM_PER_M, y * MM_PER_M, robosim.geometry.Kinematics.turn(heading, 0));
+            place(faults, r, el, robot, arena, walls, obstacles, placed);
+            if (named) {
+                placed.add(robot);
             }
-            for (RobotSpec other : out) {
-                double minimum = rad + other.radiusMm();
-                if (Math.hypot(other.xMm() - x, other.yMm() - y) < minimum) {
-                    throw new EnvironmentFileException(where + ": " + el + " overlaps robot \"" + other.name() + "\"");
-                }
-            }
-            out.add(robot);
+            (anyTime ? out.anyTime() : out.fromStart()).add(robot);
         }
         return out;
+    }
+
+    /**
+     * Records where {@code robot} stands at fault: outside the arena (unless that is at fault), over an obstacle, over
+     * a robot placed before it (the first of each).
+     */
+    private void place(FileFaults faults, EnvironmentFile.RobotXml r, String el, RobotSpec robot, Arena arena,
+            List<Geometry> walls, List<ObstacleShape> obstacles, List<RobotSpec> placed) {
+        double x = robot.xMm();
+        double y = robot.yMm();
+        double rad = robot.radiusMm();
+        if (arena != null && (x - rad < arena.minXMm() || x + rad > arena.maxXMm() || y - rad < arena.minYMm()
+                || y + rad > arena.maxYMm())) {
+            faults.add(r.at, el + " at (" + r.x + ", " + r.y + ") m does not fit inside the arena (radius "
+                    + rad / MM_PER_M + " m)");
+        }
+        Geometry body = jts.createPoint(new Coordinate(x, y));
+        for (int o = 0; o < walls.size(); o++) {
+            if (walls.get(o).distance(body) < rad) {
+                faults.add(r.at, el + " at (" + r.x + ", " + r.y + ") m overlaps obstacle \"" + obstacles.get(o).name()
+                        + "\"");
+                break;
+            }
+        }
+        for (RobotSpec other : placed) {
+            if (Math.hypot(other.xMm() - x, other.yMm() - y) < rad + other.radiusMm()) {
+                faults.add(r.at, el + " overlaps robot \"" + other.name() + "\"");
+                break;
+            }
+        }
     }
 }

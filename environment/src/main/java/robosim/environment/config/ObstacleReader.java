@@ -8,73 +8,115 @@ import robosim.protocol.ObstacleShape;
 
 /**
  * The {@code <obstacles>} of an environment file (rectangles and simple polygons, metres to millimetres,
- * names unique) and the checked numbers every part of the file reads; each fault is one
- * {@link EnvironmentFileException} line naming the file, the element and what is wrong.
+ * names unique) and the checked numbers every part of the file reads; each fault is recorded as one line naming the
+ * element and what is wrong, at the element.
  */
 final class ObstacleReader {
     private static final double MM_PER_M = 1000.0;
 
+    /** The obstacles that could be read, in file order, and the names of those a robot's tag can hit. */
+    record Obstacles(List<ObstacleShape> shapes, Set<String> taggable) {
+    }
+
     private ObstacleReader() {
     }
 
-    /** A number the element must have, finite. */
-    static double required(String where, String element, String attribute, Double v)
-            throws EnvironmentFileException {
+    /**
+     * A number {@code element} must have, finite; null, its fault recorded, when it has none or one not finite (or
+     * one not a number: that fault was recorded as it was read).
+     */
+    static Double required(FileFaults faults, FileElement element, String label, String attribute, Double v) {
         if (v == null) {
-            throw new EnvironmentFileException(where + ": " + element + " needs the attribute " + attribute);
+            if (!element.hadBadValue(attribute)) {
+                faults.add(element.at, label + " needs the attribute " + attribute);
+            }
+            return null;
         }
         if (!Double.isFinite(v)) {
-            throw new EnvironmentFileException(where + ": " + element + " " + attribute + " must be a finite number, got "
-                    + v);
+            faults.add(element.at, label + " " + attribute + " must be a finite number, got " + v);
+            return null;
         }
         return v;
     }
 
-    static List<ObstacleShape> obstacles(String where, EnvironmentFile xml) throws EnvironmentFileException {
+    /**
+     * Every obstacle whose shape could be read (one that could not is left out, its fault recorded, so no robot is
+     * checked against it).
+     */
+    static Obstacles obstacles(FileFaults faults, EnvironmentFile xml) {
         List<ObstacleShape> out = new ArrayList<>();
+        Set<String> taggable = new HashSet<>();
         Set<String> names = new HashSet<>();
-        for (Object o : xml.obstacles.all) {
+        for (int i = 0; i < xml.obstacles.all.size(); i++) {
+            FileElement o = xml.obstacles.all.get(i);
+            String name;
             ObstacleShape shape;
+            Boolean tag;
             if (o instanceof EnvironmentFile.RectangleXml r) {
-                String el = "<rectangle name=\"" + nameOr(r.name, out.size()) + "\">";
-                double x = required(where, el, "x", r.x);
-                double y = required(where, el, "y", r.y);
-                double w = required(where, el, "width", r.width);
-                double h = required(where, el, "height", r.height);
-                if (!(w > 0) || !(h > 0)) {
-                    throw new EnvironmentFileException(where + ": " + el + " width and height must be > 0 m, got "
-                            + w + " x " + h);
-                }
-                shape = ObstacleShape.rectangle(nameOr(r.name, out.size()), x * MM_PER_M, y * MM_PER_M, w * MM_PER_M,
-                        h * MM_PER_M);
+                name = nameOr(r.name, i);
+                shape = rectangle(faults, r, name);
+                tag = r.taggable;
             } else {
                 EnvironmentFile.PolygonXml p = (EnvironmentFile.PolygonXml) o;
-                String el = "<polygon name=\"" + nameOr(p.name, out.size()) + "\">";
-                shape = new ObstacleShape(nameOr(p.name, out.size()), points(where, el, p.points));
-                if (!robosim.environment.core.Obstacles.polygon(shape).isValid()) {
-                    throw new EnvironmentFileException(where + ": " + el + " points do not form a simple polygon"
-                            + " (edges cross or repeat)");
+                name = nameOr(p.name, i);
+                shape = polygon(faults, p, name);
+                tag = p.taggable;
+            }
+            if (!names.add(name)) {
+                faults.add(o.at, "obstacle name \"" + name + "\" is used twice");
+            }
+            if (shape != null) {
+                out.add(shape);
+                if (Boolean.TRUE.equals(tag)) {
+                    taggable.add(name);
                 }
             }
-            if (!names.add(shape.name())) {
-                throw new EnvironmentFileException(where + ": obstacle name \"" + shape.name() + "\" is used twice");
-            }
-            out.add(shape);
         }
-        return out;
+        return new Obstacles(out, taggable);
+    }
+
+    private static ObstacleShape rectangle(FileFaults faults, EnvironmentFile.RectangleXml r, String name) {
+        String el = "<rectangle name=\"" + name + "\">";
+        Double x = required(faults, r, el, "x", r.x);
+        Double y = required(faults, r, el, "y", r.y);
+        Double w = required(faults, r, el, "width", r.width);
+        Double h = required(faults, r, el, "height", r.height);
+        if (w != null && h != null && (!(w > 0) || !(h > 0))) {
+            faults.add(r.at, el + " width and height must be > 0 m, got " + w + " x " + h);
+            return null;
+        }
+        return x == null || y == null || w == null || h == null ? null
+                : ObstacleShape.rectangle(name, x * MM_PER_M, y * MM_PER_M, w * MM_PER_M, h * MM_PER_M);
+    }
+
+    private static ObstacleShape polygon(FileFaults faults, EnvironmentFile.PolygonXml p, String name) {
+        String el = "<polygon name=\"" + name + "\">";
+        double[] xy = points(faults, p, el);
+        if (xy == null) {
+            return null;
+        }
+        ObstacleShape shape = new ObstacleShape(name, xy);
+        if (!robosim.environment.core.Obstacles.polygon(shape).isValid()) {
+            faults.add(p.at, el + " points do not form a simple polygon (edges cross or repeat)");
+            return null;
+        }
+        return shape;
     }
 
     private static String nameOr(String name, int index) {
         return name == null || name.isBlank() ? "obstacle" + (index + 1) : name;
     }
 
-    private static double[] points(String where, String el, String text) throws EnvironmentFileException {
-        if (text == null || text.isBlank()) {
-            throw new EnvironmentFileException(where + ": " + el + " needs points=\"x1,y1 x2,y2 x3,y3 ...\" (metres)");
+    /** The polygon's points, mm; null, its fault recorded, when they are not 3 or more pairs x,y of finite numbers. */
+    private static double[] points(FileFaults faults, EnvironmentFile.PolygonXml p, String el) {
+        if (p.points == null || p.points.isBlank()) {
+            faults.add(p.at, el + " needs points=\"x1,y1 x2,y2 x3,y3 ...\" (metres)");
+            return null;
         }
-        String[] pairs = text.trim().split("\\s+");
+        String[] pairs = p.points.trim().split("\\s+");
         if (pairs.length < 3) {
-            throw new EnvironmentFileException(where + ": " + el + " needs at least 3 points, got " + pairs.length);
+            faults.add(p.at, el + " needs at least 3 points, got " + pairs.length);
+            return null;
         }
         double[] xy = new double[pairs.length * 2];
         for (int i = 0; i < pairs.length; i++) {
@@ -89,8 +131,8 @@ final class ObstacleReader {
                     throw new NumberFormatException();
                 }
             } catch (NumberFormatException e) {
-                throw new EnvironmentFileException(where + ": " + el + " point '" + pairs[i]
-                        + "' is not of the form x,y (metres)");
+                faults.add(p.at, el + " point '" + pairs[i] + "' is not of the form x,y (metres)");
+                return null;
             }
         }
         return xy;

@@ -27,23 +27,34 @@ final class Placeholders {
     private Placeholders() {
     }
 
-    /** Replaces every placeholder of {@code text} (from file {@code where}); one line naming the first fault. */
-    static Replaced replace(String where, String text, Map<String, String> given) throws EnvironmentFileException {
+    /**
+     * Replaces every placeholder of {@code text}; each fault is recorded in {@code faults} (the text is then of no
+     * use). The rest of a line after a {@code ${} that is not closed on it is not read for placeholders.
+     */
+    static Replaced replace(FileFaults faults, String text, Map<String, String> given) {
         Set<String> names = new TreeSet<>();
+        Lines lines = new Lines(text);
         Matcher m = PLACEHOLDER.matcher(text);
         StringBuilder out = new StringBuilder(text.length());
         int from = 0;
-        while (m.find()) {
-            unclosed(where, text, from, m.start());
+        while (m.find(from)) {
+            int open = text.indexOf("${", from);
+            if (open >= 0 && open < m.start()) {
+                faults.add(lines.at(open), unclosed());
+                from = lines.end(open);
+                continue;
+            }
+            out.append(text, from, m.start());
+            from = m.end();
             if (m.group().equals("$${")) {
-                out.append(text, from, m.start()).append("${");
-                from = m.end();
+                out.append("${");
                 continue;
             }
             String name = m.group(1);
             if (!NAME.matcher(name).matches()) {
-                throw new EnvironmentFileException(where + at(text, m.start()) + ": '" + robosim.protocol.Printable.of(m.group(), 80)
-                        + "' is not a placeholder: a name is 1 to 64 letters, digits, '_', '.' or '-', not a digit first");
+                faults.add(lines.at(m.start()), "'" + robosim.protocol.Printable.of(m.group(), 80) + "' is not a "
+                        + "placeholder: a name is 1 to 64 letters, digits, '_', '.' or '-', not a digit first");
+                continue;
             }
             String value;
             if (given.containsKey(name)) {
@@ -51,42 +62,58 @@ final class Placeholders {
             } else if (m.group(2) != null) {
                 value = m.group(2);
             } else {
-                throw new EnvironmentFileException(where + at(text, m.start()) + ": ${" + name + "} has no default (write ${"
-                        + name + ":VALUE}) and no value was given for it (--param " + name + "=VALUE)");
+                faults.add(lines.at(m.start()), "${" + name + "} has no default (write ${" + name + ":VALUE}) and no "
+                        + "value was given for it (--param " + name + "=VALUE)");
+                continue;
             }
             if (value.indexOf('\n') >= 0 || value.indexOf('\r') >= 0) {
-                throw new EnvironmentFileException(where + at(text, m.start()) + ": the value of ${" + name
-                        + "} holds a line break");
+                faults.add(lines.at(m.start()), "the value of ${" + name + "} holds a line break");
+                continue;
             }
             names.add(name);
-            out.append(text, from, m.start()).append(value);
-            from = m.end();
+            out.append(value);
         }
-        unclosed(where, text, from, text.length());
+        for (int open = text.indexOf("${", from); open >= 0; open = text.indexOf("${", lines.end(open))) {
+            faults.add(lines.at(open), unclosed());
+        }
         out.append(text, from, text.length());
         return new Replaced(out.toString(), names);
     }
 
-    /** A {@code ${} between {@code from} and {@code to} is not a placeholder: it is not closed on its line, or nests. */
-    private static void unclosed(String where, String text, int from, int to) throws EnvironmentFileException {
-        int open = text.indexOf("${", from);
-        if (open >= 0 && open < to) {
-            throw new EnvironmentFileException(where + at(text, open) + ": '${' without its closing '}' on its line "
-                    + "(placeholders do not nest; $${ is a '${' of the file's own)");
-        }
+    private static String unclosed() {
+        return "'${' without its closing '}' on its line (placeholders do not nest; $${ is a '${' of the file's own)";
     }
 
-    /** {@code :line:column} of offset {@code i}, both from 1 (counted only for an error's line). */
-    private static String at(String text, int i) {
-        int line = 1;
-        int lineStart = 0;
-        for (int k = 0; k < i; k++) {
-            if (text.charAt(k) == '\n') {
-                line++;
-                lineStart = k + 1;
-            }
+    /**
+     * Line and column of offsets of one text, asked in increasing order (faults are found so), so counting them costs
+     * one pass over the text however many faults it has.
+     */
+    private static final class Lines {
+        private final String text;
+        private int counted;
+        private int line = 1;
+        private int lineStart;
+
+        Lines(String text) {
+            this.text = text;
         }
-        return ":" + line + ":" + (i - lineStart + 1);
+
+        /** Where offset {@code i} is; at least the offset asked before. */
+        FilePosition at(int i) {
+            for (; counted < i; counted++) {
+                if (text.charAt(counted) == '\n') {
+                    line++;
+                    lineStart = counted + 1;
+                }
+            }
+            return new FilePosition(line, i - lineStart + 1);
+        }
+
+        /** The offset where the line of offset {@code i} ends (its line break, or the end of the text). */
+        int end(int i) {
+            int end = text.indexOf('\n', i);
+            return end < 0 ? text.length() : end;
+        }
     }
 
     private static String escaped(String value) {

@@ -12,7 +12,7 @@ import robosim.protocol.RobotProperties;
 /**
  * What a robot is, as a {@code <robot>} or a {@code <join>} rule of an environment file says: its type
  * (a known model, or a RobotType class with its radius), sonar count and noise, control class and
- * plug-in sensors, each checked; where it stands is the caller's to check.
+ * plug-in sensors, each checked, each fault recorded at the element; where it stands is the caller's to check.
  */
 final class RobotReader {
     private static final double MM_PER_M = 1000.0;
@@ -20,77 +20,99 @@ final class RobotReader {
     private RobotReader() {
     }
 
-    /** The robot of element {@code el} ({@code robot}'s fields), at the given pose (mm, degrees). */
-    static RobotSpec robot(String where, String el, EnvironmentFile.RobotXml robot, double x, double y, double heading)
-            throws EnvironmentFileException {
-        return robot(where, el, robot.name, robot.type, robot.radius, robot.sonars, robot.sonarNoiseMm, robot.control,
-                robot.sensors, x, y, heading);
+    /** The robot a {@code <robot>} describes ({@code el} in a fault), as the other {@code robot} reads it. */
+    static RobotSpec robot(FileFaults faults, String el, EnvironmentFile.RobotXml robot) {
+        return robot(faults, robot, el, robot.name, robot.type, robot.radius, robot.sonars, robot.sonarNoiseMm,
+                robot.control, robot.sensors);
     }
 
-    static RobotSpec robot(String where, String el, String name, String type, Double radius, Integer sonars,
-            Double noise, String control, List<EnvironmentFile.SensorXml> sensorXml, double x, double y,
-            double heading) throws EnvironmentFileException {
-        if (type == null) {
-            throw new EnvironmentFileException(where + ": " + el + " needs a type (known: " + RobotModels.names()
-                    + ")");
-        }
-        RobotProperties props = RobotModels.byName(type);
-        boolean classType = props == null && type.contains(".");
-        if (props == null && !classType) {
-            throw new EnvironmentFileException(where + ": " + el + " type \"" + type
-                    + "\" is not a known robot type (known: " + RobotModels.names()
-                    + ", or the class name of a RobotType with radius=\"...\")");
-        }
-        if (classType && radius == null) {
-            throw new EnvironmentFileException(where + ": " + el + " a robot of type class " + type
-                    + " needs radius=\"...\" (metres)");
-        }
-        double radiusMm = radius == null ? props.radiusMm() : ObstacleReader.required(where, el, "radius", radius) * MM_PER_M;
-        if (!(radiusMm > 0)) {
-            throw new EnvironmentFileException(where + ": " + el + " radius must be > 0 m, got " + radius);
-        }
-        if (props != null && Math.abs(radiusMm - props.radiusMm()) > 1e-6) {
-            throw new EnvironmentFileException(where + ": " + el + " radius " + radius + " m contradicts the "
-                    + type + "'s " + props.radiusMm() / MM_PER_M + " m");
-        }
+    /**
+     * The robot {@code element} ({@code el} in a fault) describes, standing at the origin heading 0 (the caller puts
+     * it where it stands), with the sensors that have no fault; null when its radius cannot be told (its type or
+     * radius at fault). Every fault is recorded.
+     */
+    static RobotSpec robot(FileFaults faults, FileElement element, String el, String name, String type, Double radius,
+            Integer sonars, Double noise, String control, List<EnvironmentFile.SensorXml> sensorXml) {
+        Double radiusMm = radiusMm(faults, element, el, type, radius);
         if (sonars != null && (sonars < 0 || sonars > robosim.protocol.Limits.MAX_SONARS)) {
-            throw new EnvironmentFileException(where + ": " + el + " sonars must be in 0.."
-                    + robosim.protocol.Limits.MAX_SONARS + ", got " + sonars);
+            faults.add(element.at, el + " sonars must be in 0.." + robosim.protocol.Limits.MAX_SONARS + ", got "
+                    + sonars);
         }
         double sonarNoise = noise == null ? 0 : noise;
         if (!(sonarNoise >= 0) || Double.isInfinite(sonarNoise)) {
-            throw new EnvironmentFileException(where + ": " + el + " sonarNoiseMm must be >= 0, got " + sonarNoise);
+            faults.add(element.at, el + " sonarNoiseMm must be >= 0, got " + sonarNoise);
         }
-        return new RobotSpec(name, type, control == null ? "" : control, x, y, heading, sensors(where, el, sensorXml),
+        List<WorldSpec.SensorSpec> sensors = sensors(faults, el, sensorXml);
+        return radiusMm == null ? null : new RobotSpec(name, type, control == null ? "" : control, 0, 0, 0, sensors,
                 sonarNoise, radiusMm, sonars == null ? -1 : sonars);
     }
 
-    static List<WorldSpec.SensorSpec> sensors(String where, String robot, List<EnvironmentFile.SensorXml> xml)
-            throws EnvironmentFileException {
+    /** The radius of a robot of {@code type}, mm: its model's, or the file's for a RobotType class; null at a fault. */
+    private static Double radiusMm(FileFaults faults, FileElement element, String el, String type, Double radius) {
+        if (type == null) {
+            faults.add(element.at, el + " needs a type (known: " + RobotModels.names() + ")");
+            return null;
+        }
+        RobotProperties props = RobotModels.byName(type);
+        if (props == null && !type.contains(".")) {
+            faults.add(element.at, el + " type \"" + type + "\" is not a known robot type (known: "
+                    + RobotModels.names() + ", or the class name of a RobotType with radius=\"...\")");
+            return null;
+        }
+        if (radius == null) {
+            if (props == null && !element.hadBadValue("radius")) {
+                faults.add(element.at, el + " a robot of type class " + type + " needs radius=\"...\" (metres)");
+            }
+            return props == null ? null : props.radiusMm();
+        }
+        Double metres = ObstacleReader.required(faults, element, el, "radius", radius);
+        if (metres == null) {
+            return null;
+        }
+        if (!(metres > 0)) {
+            faults.add(element.at, el + " radius must be > 0 m, got " + radius);
+            return null;
+        }
+        if (props != null && Math.abs(metres * MM_PER_M - props.radiusMm()) > 1e-6) {
+            faults.add(element.at, el + " radius " + radius + " m contradicts the " + type + "'s "
+                    + props.radiusMm() / MM_PER_M + " m");
+            return null;
+        }
+        return metres * MM_PER_M;
+    }
+
+    /** The sensors of {@code robot} that have no fault; each fault recorded at its {@code <sensor>}. */
+    private static List<WorldSpec.SensorSpec> sensors(FileFaults faults, String robot,
+            List<EnvironmentFile.SensorXml> xml) {
         List<WorldSpec.SensorSpec> out = new ArrayList<>();
         Set<String> names = new HashSet<>();
         for (EnvironmentFile.SensorXml s : xml) {
             if (s.type == null || s.type.isBlank()) {
-                throw new EnvironmentFileException(where + ": " + robot + " <sensor> needs a type (laser, heat, bump "
-                        + "or a RobotSensor class name)");
+                faults.add(s.at, robot + " <sensor> needs a type (laser, heat, bump or a RobotSensor class name)");
+                continue;
             }
             String name = s.name == null || s.name.isBlank() ? s.type : s.name;
             String el = robot + " <sensor name=\"" + name + "\">";
+            boolean usable = true;
             if (!names.add(name)) {
-                throw new EnvironmentFileException(where + ": " + el + " the name is used twice on this robot");
+                faults.add(s.at, el + " the name is used twice on this robot");
+                usable = false;
             }
             double noise = s.noise == null ? 0 : s.noise;
             if (!(noise >= 0) || Double.isInfinite(noise)) {
-                throw new EnvironmentFileException(where + ": " + el + " noise must be >= 0, got " + noise);
+                faults.add(s.at, el + " noise must be >= 0, got " + noise);
+                usable = false;
             }
             try {
                 robosim.environment.sensors.RobotSensors.create(s.type, s.attributes);
             } catch (IllegalArgumentException e) {
-                throw new EnvironmentFileException(where + ": " + el + " " + e.getMessage());
+                faults.add(s.at, el + " " + e.getMessage());
+                usable = false;
             }
-            out.add(new WorldSpec.SensorSpec(name, s.type, noise, s.attributes));
+            if (usable) {
+                out.add(new WorldSpec.SensorSpec(name, s.type, noise, s.attributes));
+            }
         }
         return out;
     }
-
 }

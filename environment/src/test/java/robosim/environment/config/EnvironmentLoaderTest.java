@@ -13,7 +13,10 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.environment.core.WorldSpec;
 
-/** Environment files: a good one loads with units converted; each bad one gets one line naming what is wrong. */
+/**
+ * Environment files: a good one loads with units converted; each fault of a bad one is one line naming where it is and
+ * what is wrong, every fault of the file at once.
+ */
 class EnvironmentLoaderTest {
     @TempDir
     Path dir;
@@ -37,6 +40,12 @@ class EnvironmentLoaderTest {
         assertFalse(e.getMessage().contains("\n"), "one line: " + e.getMessage());
         assertTrue(e.getMessage().startsWith(f.toString()), "names the file: " + e.getMessage());
         return e.getMessage();
+    }
+
+    /** The lines of the refusal of {@code f}, one per fault. */
+    private static List<String> faults(Path f) {
+        return assertThrows(EnvironmentFileException.class, () -> new EnvironmentLoader().load(f)).getMessage().lines()
+                .toList();
     }
 
     @Test
@@ -230,5 +239,69 @@ class EnvironmentLoaderTest {
     void missingArenaAndNoRobots() throws Exception {
         assertTrue(failure("<environment timeStepMs=\"500\">" + ROBOT + "</environment>").contains("needs an <arena"));
         assertTrue(failure(env("timeStepMs=\"500\"", "")).contains("must name at least one <robot>"));
+    }
+
+    @Test
+    void everyFaultOfAFileIsReportedAtOnceInFileOrderEachWithItsLineAndColumn() throws Exception {
+        // heat sources are checked after the robots, and the unknown attribute is found while the file is read,
+        // before any check: the lines come in file order all the same
+        Path f = write("""
+                <environment timeStepMs="500">
+                  <arena width="10" height="5"/>
+                  <heatSources>
+                      <heat name="h" x="1" y="1"/>
+                  </heatSources>
+                  <robots>
+                    <robot name="r1" type="Roomba" x="1" y="1"/>  <robot name="r2" type="Scout" x="5" y="3" colour="red"/>
+                  </robots>
+                </environment>
+                """);
+        List<String> lines = faults(f);
+        assertEquals(3, lines.size(), String.join("\n", lines));
+        assertEquals(f + ":4:7: <heat name=\"h\"> needs the attribute intensity", lines.get(0));
+        assertEquals(f + ":7:5: <robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: [ArRobot, "
+                + "Scout], or the class name of a RobotType with radius=\"...\")", lines.get(1));
+        assertTrue(lines.get(2).startsWith(f + ":7:51: unknown element or attribute 'colour' (known here: ["),
+                lines.get(2));
+    }
+
+    @Test
+    void theFirstTwentyFaultsInFileOrderAreShownThenHowManyMore() throws Exception {
+        StringBuilder robots = new StringBuilder();
+        for (int i = 1; i <= 25; i++) {
+            robots.append("<robot name=\"r").append(i).append("\" type=\"Hover\" x=\"1\" y=\"1\"/>\n");
+        }
+        // the heat source is checked last, but it comes first in the file
+        Path f = write("<environment timeStepMs=\"500\"><arena width=\"10\" height=\"5\"/>\n<heatSources><heat x=\"1\" "
+                + "y=\"1\" intensity=\"-1\"/></heatSources>\n<robots>\n" + robots + "</robots></environment>");
+        List<String> lines = faults(f);
+        assertEquals(FileFaults.SHOWN + 1, lines.size(), String.join("\n", lines));
+        assertEquals(f + ":2:14: <heat name=\"heat1\"> intensity must be >= 0, got -1.0", lines.get(0));
+        for (int i = 1; i < FileFaults.SHOWN; i++) {
+            assertTrue(lines.get(i).startsWith(f + ":" + (i + 3) + ":1: <robot name=\"r" + i + "\"> type \"Hover\""),
+                    lines.get(i));
+        }
+        assertEquals("... and 6 more", lines.get(FileFaults.SHOWN));
+    }
+
+    @Test
+    void malformedXmlEndsTheReadingAfterTheFaultsFoundBeforeIt() throws Exception {
+        Path f = write("<environment timeStepMs=\"500\" colour=\"red\">\n<arena width=\"1\" height=\"1\">\n"
+                + "</environment>");
+        List<String> lines = faults(f);
+        assertEquals(2, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(0).startsWith(f + ":1:1: unknown element or attribute 'colour'"), lines.get(0));
+        assertTrue(lines.get(1).matches(".*env\\.xml:3:\\d+: malformed XML: .*"), lines.get(1));
+    }
+
+    @Test
+    void aValueNotOfItsTypeIsOneFaultAndAValueWithALineBreakStaysOnItsFaultsLine() throws Exception {
+        Path f = write(env("timeStepMs=\"500\"", "\n<robots><robot name=\"r1\" type=\"Arr&#10;obot\" x=\"one\" "
+                + "y=\"1\"/></robots>"));
+        List<String> lines = faults(f);
+        assertEquals(2, lines.size(), String.join("\n", lines));
+        assertEquals(f + ":2:9: x value 'one' is not a double", lines.get(0), "not also \"needs the attribute x\"");
+        assertTrue(lines.get(1).startsWith(f + ":2:9: <robot name=\"r1\"> type \"Arr?obot\" is not a known robot "
+                + "type"), lines.get(1));
     }
 }

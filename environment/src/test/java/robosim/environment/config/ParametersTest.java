@@ -101,4 +101,19 @@ class ParametersTest {
         assertTrue(failure(WORLD, Map.of("x", "abc")).contains("'abc' is not a double"));
         assertTrue(failure(WORLD, Map.of("speed", "v".repeat(5000))).contains(": --param speed: a name of 1 to 64"));
     }
+
+    @Test
+    void everyPlaceholderFaultIsReportedAtOnceAndTheFileIsReadNoFurther() throws Exception {
+        // (the robot outside the arena is not reported: the text to read is not known while a placeholder is at fault)
+        Path f = write(WORLD.replace("${x:1.5}", "${x}").replace("x=\"4\"", "x=\"${1x:40}\"")
+                .replace("name=\"role\"", "name=\"${role\""));
+        EnvironmentFileException e = assertThrows(EnvironmentFileException.class,
+                () -> new EnvironmentLoader().load(f, Map.of()));
+        assertEquals(List.of(
+                f + ":6:54: ${x} has no default (write ${x:VALUE}) and no value was given for it (--param x=VALUE)",
+                f + ":8:20: '${' without its closing '}' on its line (placeholders do not nest; $${ is a '${' of the "
+                        + "file's own)",
+                f + ":10:54: '${1x:40}' is not a placeholder: a name is 1 to 64 letters, digits, '_', '.' or '-', "
+                        + "not a digit first"), e.getMessage().lines().toList());
+    }
 }
