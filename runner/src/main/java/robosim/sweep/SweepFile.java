@@ -23,7 +23,8 @@ import robosim.environment.config.EnvironmentLoader;
 
 /**
  * A sweep file as written ({@code <sweep>}, {@code docs/EXPERIMENTS.md}), and its reading: every fault is one
- * line naming the file, where and what is wrong, before any run starts.
+ * line naming the file, where and what is wrong, before any run starts (a world that does not load: a line for each
+ * of its faults, each naming the sweep file first).
  */
 @JacksonXmlRootElement(localName = "sweep")
 public final class SweepFile {
@@ -246,7 +247,7 @@ public final class SweepFile {
 
     /**
      * The world loads with each combination of the values (which also refuses a parameter it does not have, naming
-     * those it has).
+     * those it has); the first that does not is refused with each of its faults on a line of its own.
      */
     private static void checkWorld(Path file, Sweep sweep) throws SweepException {
         EnvironmentLoader loader = new EnvironmentLoader();
@@ -258,7 +259,8 @@ public final class SweepFile {
                 }
             }
         } catch (EnvironmentFileException e) {
-            throw new SweepException(file + ": " + e.getMessage());
+            throw new SweepException(e.getMessage().lines().map(fault -> file + ": " + fault)
+                    .collect(java.util.stream.Collectors.joining("\n")));
         }
     }
 }

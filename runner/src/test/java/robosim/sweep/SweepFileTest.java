@@ -96,6 +96,21 @@ class SweepFileTest {
     }
 
     @Test
+    void aWorldWithSeveralFaultsIsALineForEachNamingTheSweepFile() throws Exception {
+        Path broken = dir.resolve("broken.xml");
+        Files.writeString(broken, Files.readString(WANDER).replace("timeStepMs=\"100\"", "timeStepMs=\"-1\"")
+                .replace("x=\"1\" y=\"1\"", "x=\"99\" y=\"1\""));
+        Path f = write("<sweep world=\"broken.xml\" steps=\"5\"><seeds from=\"1\" to=\"3\"/></sweep>");
+        SweepException e = assertThrows(SweepException.class, () -> SweepFile.read(f));
+        List<String> lines = e.getMessage().lines().toList();
+        assertEquals(2, lines.size(), e.getMessage());
+        assertTrue(lines.get(0).startsWith(f + ": " + broken + ":") && lines.get(0).endsWith("timeStepMs must be > 0, "
+                + "got -1"), e.getMessage());
+        assertTrue(lines.get(1).startsWith(f + ": " + broken + ":") && lines.get(1).contains("does not fit inside the "
+                + "arena"), e.getMessage());
+    }
+
+    @Test
     void aResubmissionsArraysHoldOnlyTheMissingRunsUnderMaxArraySize() {
         assertEquals(Map.of(0, "0-3,5,9-11"), Slurm.arrays(List.of(0, 1, 2, 3, 5, 9, 10, 11), 1001));
         assertEquals(List.of(0, 4, 8), List.copyOf(Slurm.arrays(List.of(1, 2, 3, 4, 9, 11), 4).keySet()));
