@@ -87,6 +87,11 @@ class ControlPortAttacksTest {
                 // the port, and its one thread for waiting requests, still answer
                 assertTrue(c.request("status").path("ok").asBoolean());
             }
+            Path faults = Files.writeString(dir.resolve("faults.xml"), Files.readString(file)
+                    .replace("timeStepMs=\"", "timeStepMs=\"-").replace("type=\"ArRobot\"", "type=\"Roomba\""));
+            String error = c.request("load " + faults).path("error").asText();
+            assertTrue(error.matches(".*faults\\.xml:\\d+:\\d+: <environment> timeStepMs must be > 0, got -\\d+; "
+                    + ".*faults\\.xml:\\d+:\\d+: <robot name=.*"), "a file's faults on one line: " + error);
             assertTrue(c.request("load " + file).path("ok").asBoolean(), "a file inside still loads");
             assertEquals("WAITING", c.request("status").path("state").asText());
         }

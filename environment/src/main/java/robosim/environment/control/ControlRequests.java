@@ -94,7 +94,9 @@ final class ControlRequests {
             ObjectNode n = commands.handle(verb, arg);
             return n != null ? n : error("unknown request \"" + abbreviate(verb) + "\" (requests: "
                     + commands.known() + ", challenge, prove HEX)");
-        } catch (EnvironmentFileException | IllegalArgumentException | IOException e) {
+        } catch (EnvironmentFileException e) {
+            return error(abbreviate(e.getMessage().replace("\n", "; "), 400)); // (a line per fault: one on the wire)
+        } catch (IllegalArgumentException | IOException e) {
             return error(abbreviate(e.getMessage(), 400));
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
