@@ -4,6 +4,7 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.ObjectReader;
 import com.fasterxml.jackson.dataformat.xml.XmlMapper;
+import com.fasterxml.jackson.dataformat.xml.deser.FromXmlParser;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -38,9 +39,11 @@ import robosim.protocol.Printable;
  */
 public final class EnvironmentLoader {
     private static final double MM_PER_M = 1000.0;
+    /** Binds a file; {@code xsi:nil} is an attribute like any other (no element of the file is ever null). */
     private static final ObjectReader READER = new XmlMapper(new PositionedXmlModule())
             .readerFor(EnvironmentFile.class)
-            .with(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES);
+            .with(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, DeserializationFeature.FAIL_ON_NULL_FOR_PRIMITIVES)
+            .without(FromXmlParser.Feature.PROCESS_XSI_NIL);
 
     /** The largest environment file, bytes (a 1000-robot world is about 100 KB). */
     public static final int MAX_FILE_BYTES = 16 * 1024 * 1024;

@@ -304,4 +304,17 @@ class EnvironmentLoaderTest {
         assertTrue(lines.get(1).startsWith(f + ":2:9: <robot name=\"r1\"> type \"Arr?obot\" is not a known robot "
                 + "type"), lines.get(1));
     }
+
+    @Test
+    void xsiNilIsAnUnknownAttributeNotAMissingElement() throws Exception {
+        Path f = write("<environment timeStepMs=\"500\" xmlns:xsi=\"http://www.w3.org/2001/XMLSchema-instance\">\n"
+                + "<arena width=\"10\" height=\"5\"/><obstacles><rectangle name=\"box\" x=\"5\" y=\"2\" width=\"1\" "
+                + "height=\"1\" xsi:nil=\"true\"/></obstacles>\n<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" "
+                + "y=\"1\"><sensor type=\"laser\" xsi:nil=\"true\"/></robot></robots>\n</environment>");
+        List<String> lines = faults(f);
+        assertEquals(2, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(0).startsWith(f + ":2:42: unknown element or attribute 'nil'"), lines.get(0));
+        assertEquals(f + ":3:53: <robot name=\"r1\"> <sensor name=\"laser\"> unknown attribute(s) [nil] for a laser "
+                + "sensor", lines.get(1));
+    }
 }
