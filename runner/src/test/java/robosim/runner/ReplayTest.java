@@ -3,6 +3,7 @@ package robosim.runner;
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertInstanceOf;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -20,6 +21,7 @@ import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
+import robosim.protocol.WorldSnapshot;
 import robosim.viewer.SceneFeed;
 import robosim.viewer.StatusLine;
 
@@ -106,6 +108,10 @@ class ReplayTest {
                 PoseUpdate sought = got.awaitStep(MIDDLE - 1, 0, LONG_S);
                 assertArrayEquals(RecordingRunTest.bytes(live.updates.get(MIDDLE - 1)), RecordingRunTest.bytes(sought),
                         "the poses after " + MIDDLE + " steps");
+                WorldSnapshot world = assertInstanceOf(WorldSnapshot.class, got.messages.get(got.messages.indexOf(sought) - 1),
+                        "a seek: the world at the sought step right before its update (the viewer starts afresh there)");
+                assertEquals(MIDDLE - 1, world.step());
+                assertArrayEquals(RecordingRunTest.bytes(sought), RecordingRunTest.bytes(world.poses()), "the world's poses");
                 SceneFeed shown = new SceneFeed(0);
                 shown.snapshot(got.snapshot());
                 shown.update(sought);

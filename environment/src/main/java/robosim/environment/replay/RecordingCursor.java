@@ -49,7 +49,7 @@ final class RecordingCursor {
         }
     }
 
-    /** The world of the step just shown if it is not the one before (robots joined, or a seek), once; else null. */
+    /** The world of the step just shown if it is not the one before (robots joined, or a seek across a join), once; else null. */
     WorldSnapshot takeWorldChange() {
         boolean changed = worldChanged;
         worldChanged = false;

@@ -148,13 +148,17 @@ public final class ReplayClock {
         }).thenCompose(f -> f);
     }
 
-    /** Shows step {@code k} as displays number it ({@link StepNumbers}; the last recorded at or before it) at once, and goes on from there. */
+    /**
+     * Shows step {@code k} as displays number it ({@link StepNumbers}; the last recorded at or before it) at once,
+     * and goes on from there. Every viewer gets the world at that step right before its update, so it starts its
+     * picture afresh there (trails, its steps per second) instead of joining the steps across the jump.
+     */
     public CompletableFuture<String> seek(long k) {
         return inbox.ask(now -> {
             live();
             int i = at.indexOf(k);
             finishStepping();
-            show(i);
+            show(i, true);
             nextDue = now + intervalNanos;
             return "at step " + at.shown();
         });
@@ -213,7 +217,7 @@ public final class ReplayClock {
             reachedEnd();
             return;
         }
-        show(at.index() + 1);
+        show(at.index() + 1, false);
         if (exitAtEnd && at.atEnd()) {
             reachedEnd(); // (the end follows the last step at once, as in the live run)
             return;
@@ -230,10 +234,12 @@ public final class ReplayClock {
         }
     }
 
-    private void show(int i) {
+    /** Shows the i-th recorded step; {@code sought}: a seek, whose update goes with the world at that step. */
+    private void show(int i, boolean sought) {
         PoseUpdate u = at.show(i);
         if (u != null) {
-            viewers.publish(at.takeWorldChange(), u, at::view);
+            WorldSnapshot changed = at.takeWorldChange();
+            viewers.publish(sought ? at.snapshot() : changed, u, at::view);
         }
     }
 
