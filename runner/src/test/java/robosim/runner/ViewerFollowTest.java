@@ -33,7 +33,7 @@ class ViewerFollowTest {
 
     /** What a viewer window would show ({@link SceneFeed}), and every event in order, to wait on. */
     private static final class Recorder implements RunFollower.Listener {
-        final SceneFeed feed = new SceneFeed(0);
+        final SceneFeed feed = new SceneFeed(System::nanoTime);
         final BlockingQueue<Object> events = new LinkedBlockingQueue<>();
 
         @Override

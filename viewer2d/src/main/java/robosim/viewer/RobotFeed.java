@@ -28,10 +28,10 @@ public final class RobotFeed implements RunFollower.Listener {
     private volatile RobotView view;
     private volatile long logged;
 
-    /** Watches the robot called {@code name}; a new world picture at most every {@code frameNanos}. */
-    public RobotFeed(String name, long frameNanos) {
+    /** Watches the robot called {@code name}. */
+    public RobotFeed(String name) {
         this.name = name;
-        this.scenes = new SceneFeed(frameNanos);
+        this.scenes = new SceneFeed(System::nanoTime);
     }
 
     public String name() {

@@ -38,7 +38,7 @@ final class RobotWatch {
             OPEN.remove(robot);
             throw e;
         }
-        RobotFeed feed = new RobotFeed(robot, 1_000_000_000L / fps);
+        RobotFeed feed = new RobotFeed(robot);
         RunFollower follower = new RunFollower(host, port, hello, feed, Viewer2DMain.FIRST_RETRY_MS,
                 Viewer2DMain.MAX_RETRY_MS, nextRunWaitMs);
         Runnable closed = () -> {

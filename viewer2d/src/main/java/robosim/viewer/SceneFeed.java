@@ -1,6 +1,7 @@
 package robosim.viewer;
 
 import java.util.concurrent.atomic.AtomicReference;
+import java.util.function.LongSupplier;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
@@ -8,33 +9,38 @@ import robosim.protocol.WorldSnapshot;
 
 /**
  * Turns the Environment's snapshot and updates into {@link Scene}s, on the network thread. Trails
- * are kept here in ring buffers ({@link #TRAIL_POINTS} per robot); a new Scene (with copies) is
- * published at most every {@code frameNanos}, so copying costs per frame, not per step. Changes of
- * the run's state (running, paused, stopped, lost, waiting for the next run) are published at once.
- * A new snapshot (the next run, after a reconnect) starts afresh: new world, empty trails, no rate.
- * Called by one thread at a time: a session's {@code viewer-client} thread, then, between sessions,
- * the {@link RunFollower}'s.
+ * are kept here in ring buffers ({@link #TRAIL_POINTS} per robot); every update is published at once as a new
+ * Scene (with copies): the Environment sends a window at most its frame rate's updates a second
+ * ({@code ViewerHello.maxUpdatesPerSecond}), so copying costs per frame, not per step, and the picture is
+ * always the newest update's. Changes of the run's state (running, paused, stopped, lost, waiting for the
+ * next run) are published at once. A snapshot starts the picture afresh at its step: its world, empty
+ * trails, no rate; the next run's (after the end or a lost connection) also starts the run's state afresh,
+ * one of the same run (a replay's seek) keeps it. A snapshot of the world shown and more robots (robots
+ * joined the running world) keeps the others' trails and the rate. Called by one thread at a time: a
+ * session's {@code viewer-client} thread, then, between sessions, the {@link RunFollower}'s.
  */
 public final class SceneFeed implements RunFollower.Listener {
     public static final int TRAIL_POINTS = 400;
     /** A trail point is kept only when the robot moved at least this far (mm) since the last one. */
     private static final double TRAIL_SPACING_MM = 20;
+    /** The steps per second are measured over at least this long (ns). */
+    private static final long RATE_WINDOW_NANOS = 500_000_000L;
 
     private final AtomicReference<Scene> latest = new AtomicReference<>();
-    private final long frameNanos;
+    private final LongSupplier nanoClock;
     private WorldSnapshot world;
     private double[][] ring;
     private int[] ringStart;
     private int[] ringSize;
-    private long lastPublish;
     private long rateStep = -1;
     private long rateNanos;
     private double stepsPerSecond = Double.NaN;
     private PoseUpdate poses;
     private ViewedRun status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
 
-    public SceneFeed(long frameNanos) {
-        this.frameNanos = frameNanos;
+    /** {@code nanoClock}: the time the steps per second are measured by, ns ({@code System::nanoTime}). */
+    public SceneFeed(LongSupplier nanoClock) {
+        this.nanoClock = nanoClock;
     }
 
     /** The newest scene, or null before the snapshot has arrived. */
@@ -45,7 +51,9 @@ public final class SceneFeed implements RunFollower.Listener {
     @Override
     public void snapshot(WorldSnapshot snapshot) {
         int n = snapshot.robotNames().size();
-        if (world != null && n > world.robotNames().size()
+        boolean sameRun = world != null && status.kind() != ViewedRun.Kind.STOPPED
+                && status.kind() != ViewedRun.Kind.LOST;
+        if (sameRun && n > world.robotNames().size()
                 && snapshot.robotNames().subList(0, world.robotNames().size()).equals(world.robotNames())) {
             // robots joined the running world: the others keep their trails, the run its state and rate
             world = snapshot;
@@ -64,8 +72,9 @@ public final class SceneFeed implements RunFollower.Listener {
         ringSize = new int[n];
         rateStep = -1;
         stepsPerSecond = Double.NaN;
-        lastPublish = 0;
-        status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
+        if (!sameRun) {
+            status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
+        }
         record(snapshot.poses());
         publish(snapshot.poses());
     }
@@ -89,19 +98,16 @@ public final class SceneFeed implements RunFollower.Listener {
     @Override
     public void update(PoseUpdate u) {
         record(u);
-        long now = System.nanoTime();
+        long now = nanoClock.getAsLong();
         if (rateStep < 0) {
             rateStep = u.step();
             rateNanos = now;
-        } else if (now - rateNanos >= 500_000_000L) {
+        } else if (now - rateNanos >= RATE_WINDOW_NANOS) {
             stepsPerSecond = (u.step() - rateStep) / ((now - rateNanos) / 1e9);
             rateStep = u.step();
             rateNanos = now;
         }
-        if (now - lastPublish >= frameNanos) {
-            publish(u);
-            lastPublish = now;
-        }
+        publish(u);
     }
 
     /** The simulation is over: keep the last picture (with the newest poses), say why. */

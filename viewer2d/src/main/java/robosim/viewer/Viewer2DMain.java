@@ -75,7 +75,7 @@ public final class Viewer2DMain implements Callable<Integer> {
             windowOpen = true;
             return 0;
         }
-        SceneFeed feed = new SceneFeed(1_000_000_000L / fps);
+        SceneFeed feed = new SceneFeed(System::nanoTime);
         ViewerHello hello = new ViewerHello(false, fps);
         ViewerClient client;
         try {

@@ -1,6 +1,6 @@
 /**
  * The 2D viewer. Threads: {@code viewer-client} (network, one per connection: reads the Environment's
- * updates and publishes an immutable {@link robosim.viewer.Scene} at most once a frame, through
+ * updates and publishes an immutable {@link robosim.viewer.Scene} for each update (at most the frame rate's a second), through
  * {@link robosim.viewer.SceneFeed}), {@code viewer-follow} ({@link robosim.viewer.RunFollower}: waits
  * for each connection to end, then reconnects to the next run with backoff; it touches the feed only
  * between connections) and the Swing event thread (everything in

@@ -40,7 +40,7 @@ class RobotViewerTest {
 
     @Test
     void theFeedLogsWhatTheRobotSentAndGotAndSaysWhatItSkipped() {
-        RobotFeed feed = new RobotFeed("a", 0);
+        RobotFeed feed = new RobotFeed("a");
         feed.snapshot(new WorldSnapshot(500, ARENA, List.of(), List.of("a", "b"),
                 List.of(RobotModels.SCOUT, RobotModels.SCOUT), new PoseUpdate(-1, new double[2], new double[2], new double[2])));
         assertNull(feed.view());

@@ -1,5 +1,6 @@
 package robosim.viewer;
 
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertSame;
@@ -14,17 +15,26 @@ import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.WorldSnapshot;
 
-/** Scenes from the network: trails bounded, scenes immutable, the end shown in the status. */
+/**
+ * Scenes from the network: trails bounded, scenes immutable, the end shown in the status, every update shown at
+ * once, a replay's seek starting the picture afresh at the sought step.
+ */
 class SceneFeedTest {
+    private static final Arena ARENA = new Arena(0, 0, 100_000, 2000);
+
     private static PoseUpdate at(long step, double x) {
         return new PoseUpdate(step, new double[] {x}, new double[] {1000}, new double[] {0});
     }
 
+    /** The world of robot "a" standing where {@code poses} say, as a replay's seek or the start sends it. */
+    private static WorldSnapshot world(PoseUpdate poses) {
+        return new WorldSnapshot(500, ARENA, List.of(), List.of("a"), List.of(RobotModels.SCOUT), poses);
+    }
+
     @Test
     void trailsAreBoundedAndScenesAreNotChangedAfterPublication() {
-        SceneFeed feed = new SceneFeed(0);
-        feed.snapshot(new WorldSnapshot(500, new Arena(0, 0, 100_000, 2000), List.of(), List.of("a"),
-                List.of(RobotModels.SCOUT), at(-1, 1000)));
+        SceneFeed feed = new SceneFeed(System::nanoTime);
+        feed.snapshot(world(at(-1, 1000)));
         Scene first = feed.latest();
         assertEquals(ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS), first.status());
         for (int k = 0; k < 2000; k++) {
@@ -44,9 +54,8 @@ class SceneFeedTest {
 
     @Test
     void pauseResumeStopAndTheNextRunShowInTheStatusAtOnce() {
-        SceneFeed feed = new SceneFeed(1_000_000_000_000L); // updates published rarely; states at once
-        feed.snapshot(new WorldSnapshot(500, new Arena(0, 0, 10_000, 2000), List.of(), List.of("a"),
-                List.of(RobotModels.SCOUT), at(-1, 1000)));
+        SceneFeed feed = new SceneFeed(System::nanoTime);
+        feed.snapshot(world(at(-1, 1000)));
         feed.runState(new RunState(0, RunState.Phase.RUNNING));
         assertEquals("RUNNING", StatusLine.state(feed.latest()), "no rate before one is measured");
         for (int k = 0; k < 5; k++) {
@@ -54,12 +63,12 @@ class SceneFeedTest {
         }
         feed.runState(new RunState(5, RunState.Phase.PAUSED));
         assertEquals("PAUSED", StatusLine.state(feed.latest()));
-        assertEquals(4, feed.latest().step(), "the newest poses, though not yet published as a frame");
+        assertEquals(4, feed.latest().step(), "the newest poses");
         feed.end(new SimulationEnd(4, "stopped from the control port"));
         feed.between("waiting for the next run on localhost:3000");
         assertEquals("STOPPED: stopped from the control port - waiting for the next run on localhost:3000",
                 StatusLine.state(feed.latest()));
-        feed.snapshot(new WorldSnapshot(500, new Arena(0, 0, 10_000, 2000), List.of(), List.of("b", "c"),
+        feed.snapshot(new WorldSnapshot(500, ARENA, List.of(), List.of("b", "c"),
                 List.of(RobotModels.SCOUT, RobotModels.AR_ROBOT), new PoseUpdate(-1, new double[] {1, 2},
                 new double[] {1, 2}, new double[] {0, 0})));
         Scene next = feed.latest();
@@ -67,5 +76,65 @@ class SceneFeedTest {
         assertEquals(List.of("b", "c"), next.names());
         assertEquals(-1, next.step());
         assertEquals(2, next.trails()[1].length, "the new run's trails start afresh");
+    }
+
+    @Test
+    void everyUpdateIsShownAtOnceWithItsOwnStep() {
+        long[] now = {0};
+        SceneFeed feed = new SceneFeed(() -> now[0]);
+        feed.snapshot(world(at(-1, 1000)));
+        feed.runState(new RunState(0, RunState.Phase.PAUSED));
+        for (int k = 0; k < 3; k++) { // (steps a paused run is stepped through, a millisecond apart)
+            now[0] += 1_000_000;
+            feed.update(at(k, 2000 + 100 * k));
+            assertEquals(k, feed.latest().step(), "the picture is the newest update's");
+            assertEquals(2000 + 100 * k, feed.latest().poses().xMm(0), "its poses are that update's");
+        }
+    }
+
+    @Test
+    void aSeekStartsThePictureAfreshAtTheSoughtStepAndKeepsTheRunsState() {
+        long[] now = {0};
+        SceneFeed feed = new SceneFeed(() -> now[0]);
+        feed.snapshot(world(at(-1, 1000)));
+        feed.runState(new RunState(0, RunState.Phase.RUNNING));
+        for (int k = 0; k <= 1606; k++) { // 10 steps a second, 50 mm a step
+            now[0] += 100_000_000;
+            feed.update(at(k, 1000 + 50.0 * k));
+        }
+        assertEquals(10, feed.latest().stepsPerSecond(), 1e-9);
+        feed.runState(new RunState(1607, RunState.Phase.PAUSED));
+
+        now[0] += 1_000_000; // a seek back while paused, as the replay sends it: the world at step 100, its update
+        PoseUpdate sought = at(100, 1000 + 50.0 * 100);
+        feed.snapshot(world(sought));
+        feed.update(sought);
+        Scene s = feed.latest();
+        assertEquals(100, s.step());
+        assertEquals(sought.xMm(0), s.poses().xMm(0), "the robot where the sought step has it");
+        assertEquals("PAUSED", StatusLine.state(s), "still paused: the run's state is kept");
+        assertTrue(StatusLine.text(s).startsWith("step 101 "), StatusLine.text(s));
+        assertArrayEquals(new double[] {sought.xMm(0), 1000}, s.trails()[0], "the trail starts afresh there");
+        assertTrue(Double.isNaN(s.stepsPerSecond()), "the rate is measured afresh");
+
+        feed.runState(new RunState(101, RunState.Phase.RUNNING)); // resumed at x0.1: a step a second
+        for (int k = 101; k <= 103; k++) {
+            now[0] += 1_000_000_000;
+            feed.update(at(k, 1000 + 50.0 * k));
+        }
+        assertEquals(1, feed.latest().stepsPerSecond(), 1e-9);
+
+        now[0] += 300_000_000; // a seek forward while running
+        sought = at(1500, 90_000);
+        feed.snapshot(world(sought));
+        feed.update(sought);
+        assertEquals("RUNNING", StatusLine.state(feed.latest()), "running on, the rate not yet measured afresh");
+        assertArrayEquals(new double[] {90_000, 1000}, feed.latest().trails()[0], "no line across the jump");
+        for (int k = 1501; k <= 1502; k++) {
+            now[0] += 1_000_000_000;
+            feed.update(at(k, 90_000 + 50.0 * (k - 1500)));
+        }
+        assertEquals(1, feed.latest().stepsPerSecond(), 1e-9, "a step a second, as the replay runs");
+        assertEquals(3, feed.latest().trails()[0].length / 2, "the sought step's point and the two after it");
     }
 }
