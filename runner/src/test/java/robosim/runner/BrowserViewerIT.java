@@ -3,6 +3,7 @@ package robosim.runner;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -11,9 +12,12 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.Timeout;
+import org.junit.jupiter.api.io.TempDir;
 import org.openqa.selenium.By;
 import org.openqa.selenium.JavascriptExecutor;
 import org.openqa.selenium.WebDriver;
@@ -21,6 +25,7 @@ import org.openqa.selenium.chrome.ChromeDriver;
 import org.openqa.selenium.chrome.ChromeDriverService;
 import org.openqa.selenium.chrome.ChromeOptions;
 import org.openqa.selenium.support.ui.WebDriverWait;
+import robosim.control.ControlClient;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.WorldSnapshot;
 import robosim.web.WebViewerServer;
@@ -29,20 +34,38 @@ import robosim.web.WebViewerServer;
  * The browser viewer in a real headless browser (Debian's chromium and chromedriver, which {@code .ci/run}
  * installs; nothing is downloaded): the page connects to a running 10-robot simulation, its step
  * advances, and, the run paused, every robot is drawn where the run put it (the robot table says the
- * same poses) and the 3D view renders the robots. The run goes on until the test stops it.
+ * same poses) and the 3D view renders the robots. The run goes on until the test stops it. On a replay of a
+ * recorded run, a seek starts the picture afresh at the sought step: no trail across the jump, the robots
+ * where that step has them, the steps per second measured anew.
  */
 class BrowserViewerIT {
     private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
     private static final Path CHROMEDRIVER = Path.of("/usr/bin/chromedriver");
     private static final long LONG_S = 120;
+    /** The replayed recording's steps: a seek forward, a seek back and a seek forward while running fit in it. */
+    private static final int RECORDED_STEPS = 300;
     /** The 2D view's robot colour (#2a62c9), as drawn. */
     private static final int[] ROBOT = {0x2a, 0x62, 0xc9};
+    /** The one browser of the tests here (its start is much of a test's time on a loaded machine). */
+    private static WebDriver page;
+
+    @BeforeAll
+    static void startTheBrowser() {
+        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && Files.isExecutable(CHROMEDRIVER),
+                "needs Debian's chromium and chromium-driver (.ci/run installs them)");
+        page = browser();
+    }
+
+    @AfterAll
+    static void quitTheBrowser() {
+        if (page != null) {
+            page.quit();
+        }
+    }
 
     @Test
     @Timeout(value = 10, unit = TimeUnit.MINUTES)
     void thePageShowsTheRunIn2DAnd3D() throws Exception {
-        Assumptions.assumeTrue(Files.isExecutable(CHROMIUM) && Files.isExecutable(CHROMEDRIVER),
-                "needs Debian's chromium and chromium-driver (.ci/run installs them)");
         Map<Long, PoseUpdate> seen = new ConcurrentHashMap<>();
         CountDownLatch pageHasTheWorld = new CountDownLatch(1);
         Object[] shown = new Object[4]; // the paused step, the table's rows, the pixels at each robot, the robot panel
@@ -53,7 +76,6 @@ class BrowserViewerIT {
                     try (WebViewerServer web = new WebViewerServer("127.0.0.1", ports[1], null,
                             (verb, arg) -> "{\"ok\":true}")) {
                         web.start(java.net.InetAddress.getLoopbackAddress(), 0);
-                        WebDriver page = browser();
                         try {
                             String watched = sim.spec.robots().get(0).name();
                             page.get("http://localhost:" + web.port() + "/?watch=" + watched);
@@ -87,7 +109,6 @@ class BrowserViewerIT {
                             });
                             assertTrue(blue > 50, "the 3D view draws the robots: " + blue + " robot-blue pixels");
                         } finally {
-                            page.quit();
                             env.stop("the test has seen what it needed"); // (whatever happened above)
                         }
                     }
@@ -116,6 +137,125 @@ class BrowserViewerIT {
         assertTrue(facts.startsWith(sim.spec.robots().get(0).name() + " ("), facts);
         assertTrue(facts.contains(String.format(java.util.Locale.ROOT, "command (step %d): move %.1f mm, turn %.1f deg",
                 step, v.moveMm(), v.turnDeg())), "the panel shows the robot's own command: " + facts);
+    }
+
+    @Test
+    @Timeout(value = 10, unit = TimeUnit.MINUTES)
+    void aSeekStartsThePictureAfreshAtTheSoughtStep(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("run.rec");
+        InJvmSimulation live = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> s.record(file)).run(RECORDED_STEPS, true, Chatter::new);
+        assertTrue(live.summary.completed(), live.summary.reason());
+        try (ProcessLines replay = ReplayTest.replay(file, "--paused", "--web-port", "0");
+                ControlClient control = new ControlClient("127.0.0.1", ReplayTest.port(replay, "control"), null,
+                        (int) (LONG_S * 1000))) {
+            page.get("http://localhost:" + ReplayTest.port(replay, "web") + "/");
+            WebDriverWait wait = new WebDriverWait(page, Duration.ofSeconds(LONG_S));
+            wait.until(p -> p.findElements(By.cssSelector("#robots tbody tr")).size() == 10);
+            ok(control, "speed 10"); // (20 steps a second: the page, 10 updates a second, draws trails)
+            ok(control, "resume");
+            wait.until(p -> stepShown(p) >= 30);
+            long paused = stepOf(ok(control, "pause"));
+            shows(wait, live, paused);
+            assertTrue(trailPixels(page, live, paused) > 0, "the trails drawn so far");
+
+            long forward = seekForward(live, paused);
+            ok(control, "seek " + forward);
+            shows(wait, live, forward);
+            assertEquals(0, trailPixels(page, live, forward), "no trail across a seek forward");
+            assertEquals(List.of(), notDrawn(page, live, forward), "robots not where step " + forward + " has them");
+            long back = paused / 2;
+            ok(control, "seek " + back);
+            shows(wait, live, back);
+            assertEquals(0, trailPixels(page, live, back), "no trail across a seek back");
+
+            ((JavascriptExecutor) page).executeScript(RATES_SHOWN);
+            ok(control, "speed 2"); // (4 steps a second)
+            ok(control, "resume");
+            wait.until(p -> !rates(p, 0).isEmpty()); // (measured once: a seek comes in a measure under way)
+            long jump = back + Math.min(150, (RECORDED_STEPS - back) / 2);
+            ok(control, "seek " + jump);
+            wait.until(p -> stepShown(p) >= jump + 6); // (1.5 s on: the page has measured since the seek)
+            List<Double> after = rates(page, jump);
+            assertTrue(after.stream().allMatch(r -> r < 20), "steps per second after a seek forward by "
+                    + (jump - back) + " steps while running at 4 steps a second: " + after);
+            ok(control, "stop");
+            assertEquals(0, replay.exit(LONG_S), replay.output());
+        }
+    }
+
+    /** Waits until the page shows step {@code step}: its number, its poses in the table, PAUSED. */
+    private static void shows(WebDriverWait wait, InJvmSimulation live, long step) {
+        wait.until(p -> stepShown(p) == step && tableShows(p, live.updates.get((int) step))
+                && p.findElement(By.id("state")).getText().equals("PAUSED"));
+    }
+
+    /** A step well ahead of {@code from} where robot 0 stands away from where it stood then (its lane's length is 10 m). */
+    private static long seekForward(InJvmSimulation live, long from) {
+        PoseUpdate a = live.updates.get((int) from);
+        for (long k = from + 20; k < RECORDED_STEPS - 1; k++) {
+            PoseUpdate b = live.updates.get((int) k);
+            if (Math.hypot(b.xMm(0) - a.xMm(0), b.yMm(0) - a.yMm(0)) > 2000) {
+                return k;
+            }
+        }
+        throw new AssertionError("robot 0 never left the place it had at step " + from);
+    }
+
+    private static JsonNode ok(ControlClient control, String request) throws java.io.IOException {
+        JsonNode reply = control.request(request);
+        assertTrue(reply.path("ok").asBoolean(), request + ": " + reply);
+        return reply;
+    }
+
+    private static long stepOf(JsonNode pauseReply) {
+        String message = pauseReply.path("message").asText(); // "paused at step N"
+        return Long.parseLong(message.substring(message.lastIndexOf(' ') + 1));
+    }
+
+    /** Records each steps-per-second figure the page shows, with the step it shows beside it (the same frame). */
+    private static final String RATES_SHOWN = "window.ratesShown = [];"
+            + "new MutationObserver(() => window.ratesShown.push([Number(document.getElementById('step').textContent),"
+            + " Number(document.getElementById('rate').textContent)]))"
+            + ".observe(document.getElementById('rate'), {childList: true, characterData: true, subtree: true});";
+
+    /** The steps-per-second figures above 0 the page has shown beside a step from {@code step} on. */
+    private static List<Double> rates(WebDriver page, long step) {
+        @SuppressWarnings("unchecked")
+        List<Number> shown = (List<Number>) ((JavascriptExecutor) page).executeScript(
+                "return window.ratesShown.filter(([s, r]) => s >= arguments[0] && r > 0).map(([s, r]) => r);", step);
+        return shown.stream().map(Number::doubleValue).toList();
+    }
+
+    /**
+     * Trail-blue pixels of the 2D view away from the robots (their discs and 3 px around) at the poses of
+     * {@code step}, by the page's own fit of the arena: what its trails draw (nothing else there is blue).
+     */
+    private static long trailPixels(WebDriver page, InJvmSimulation live, long step) {
+        View2d v = View2d.of(page, live.snapshot);
+        PoseUpdate u = live.updates.get((int) step);
+        List<List<Double>> centres = new java.util.ArrayList<>();
+        double radius = 0;
+        for (int i = 0; i < u.count(); i++) {
+            centres.add(List.of(v.x(u.xMm(i)), v.y(u.yMm(i))));
+            radius = Math.max(radius, live.snapshot.radiusMm(i) * v.scale() + 3);
+        }
+        Object n = ((JavascriptExecutor) page).executeScript("const c = document.getElementById('view2d');"
+                + "const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;"
+                + "const centres = arguments[0], r = arguments[1]; let n = 0;"
+                + "for (let i = 0; i < d.length; i += 4) {"
+                + "  if (!(d[i + 2] > d[i] + 20 && d[i + 2] > d[i + 1] + 10)) continue;"
+                + "  const x = (i / 4) % c.width, y = Math.floor(i / 4 / c.width);"
+                + "  if (!centres.some(([cx, cy]) => (x - cx) ** 2 + (y - cy) ** 2 <= r * r)) n++;"
+                + "}"
+                + "return n;", centres, radius);
+        return ((Number) n).longValue();
+    }
+
+    /** The robots (indexes) the 2D view does not draw at their poses of {@code step}. */
+    private static List<Integer> notDrawn(WebDriver page, InJvmSimulation live, long step) {
+        List<Boolean> drawn = robotPixels(page, live.snapshot, live.updates.get((int) step));
+        return java.util.stream.IntStream.range(0, drawn.size()).filter(i -> !drawn.get(i)).boxed().toList();
     }
 
     /** The pixel at the centre of the robot panel's polar plot is the page's robot blue. */
@@ -163,22 +303,12 @@ class BrowserViewerIT {
      */
     private static List<Boolean> robotPixels(WebDriver page, WorldSnapshot world, PoseUpdate u) {
         JavascriptExecutor js = (JavascriptExecutor) page;
-        @SuppressWarnings("unchecked")
-        Map<String, Object> fit = (Map<String, Object>) js.executeScript("const c = document.getElementById('view2d');"
-                + "return {w: c.width, h: c.height};");
-        double w = ((Number) fit.get("w")).doubleValue();
-        double h = ((Number) fit.get("h")).doubleValue();
-        robosim.protocol.Arena a = world.arena();
-        double aw = a.maxXMm() - a.minXMm();
-        double ah = a.maxYMm() - a.minYMm();
-        double scale = 0.95 * Math.min(w / aw, h / ah);
-        double offX = (w - aw * scale) / 2 - a.minXMm() * scale;
-        double offY = (h - ah * scale) / 2 - a.minYMm() * scale;
+        View2d v = View2d.of(page, world);
         List<Boolean> drawn = new java.util.ArrayList<>();
         for (int i = 0; i < u.count(); i++) {
-            double radiusPx = world.radiusMm(i) * scale;
-            double x = u.xMm(i) * scale + offX;
-            double y = h - (u.yMm(i) * scale + offY);
+            double radiusPx = world.radiusMm(i) * v.scale();
+            double x = v.x(u.xMm(i));
+            double y = v.y(u.yMm(i));
             int blue = 0;
             for (double[] d : new double[][] {{1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
                 @SuppressWarnings("unchecked")
@@ -194,6 +324,30 @@ class BrowserViewerIT {
             drawn.add(blue >= 2);
         }
         return drawn;
+    }
+
+    /** The 2D view's fit of the arena (no zoom or pan made): world mm to canvas px, as the page computes it. */
+    private record View2d(double scale, double offX, double offY, double height) {
+        static View2d of(WebDriver page, WorldSnapshot world) {
+            @SuppressWarnings("unchecked")
+            Map<String, Object> size = (Map<String, Object>) ((JavascriptExecutor) page).executeScript(
+                    "const c = document.getElementById('view2d'); return {w: c.width, h: c.height};");
+            double w = ((Number) size.get("w")).doubleValue();
+            double h = ((Number) size.get("h")).doubleValue();
+            robosim.protocol.Arena a = world.arena();
+            double aw = a.maxXMm() - a.minXMm();
+            double ah = a.maxYMm() - a.minYMm();
+            double scale = 0.95 * Math.min(w / aw, h / ah);
+            return new View2d(scale, (w - aw * scale) / 2 - a.minXMm() * scale, (h - ah * scale) / 2 - a.minYMm() * scale, h);
+        }
+
+        double x(double xMm) {
+            return xMm * scale + offX;
+        }
+
+        double y(double yMm) {
+            return height - (yMm * scale + offY);
+        }
     }
 
     /** Robot-blue pixels in the 3D view's canvas (copied into a 2D canvas to read them). */

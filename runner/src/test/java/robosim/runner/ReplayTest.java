@@ -162,13 +162,13 @@ class ReplayTest {
         return reply;
     }
 
-    private static int port(ProcessLines replay, String which) throws InterruptedException {
+    static int port(ProcessLines replay, String which) throws InterruptedException {
         Map<String, String> ports = HeadlessRunner.fields(replay.await("listening viewers=", LONG_S));
         return Integer.parseInt(ports.get(which));
     }
 
     /** The replay in its own process, on this JDK, on free ports. */
-    private static ProcessLines replay(Path file, String... options) throws java.io.IOException {
+    static ProcessLines replay(Path file, String... options) throws java.io.IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-cp", System.getProperty("java.class.path"), "robosim.environment.replay.ReplayMain", file.toString(),
                 "--viewer-port", "0", "--control-port", "0"));

@@ -67,14 +67,20 @@ final class WebClients {
         }
     }
 
-    /** Feed thread: a new world (a simulation, or the same one after a reconnection) and its robots' names. */
-    void snapshot(String json, List<String> names) {
+    /**
+     * Feed thread: a new world (a simulation, or the same one after a reconnection) and its robots' names;
+     * {@code sameRun}: the run goes on in it (robots joined, or a replay's seek), so its state and the views
+     * held for pages stay.
+     */
+    void snapshot(String json, List<String> names, boolean sameRun) {
         onIo(() -> {
             snapshot = json;
             robots = List.copyOf(names);
-            heldView.clear(); // (views of the world before are no use)
             update = null;
-            state = null;
+            if (!sameRun) {
+                state = null;
+                heldView.clear(); // (views of the run before are no use)
+            }
             for (Channel p : List.copyOf(pages.keySet())) { // (a failed write closes and removes a page)
                 pages.replace(p, null); // (an update of the world before is no use)
                 send(p, json);

@@ -43,6 +43,8 @@ final class WebFeed implements ViewerClient.Listener {
     private volatile ViewerClient viewer;
     /** Updates of the current connection (its reading thread counts; the feed thread reads it after the end). */
     private volatile long updates;
+    /** Whether the current connection has had its first snapshot (its reading thread's, reset by the feed thread). */
+    private volatile boolean worldSeen;
     private volatile WebClients clients;
 
     WebFeed(String host, int viewerPort, SimulationKeys keys) {
@@ -82,6 +84,7 @@ final class WebFeed implements ViewerClient.Listener {
                         return;
                     }
                     told = false;
+                    worldSeen = false;
                     v.start(this);
                     v.awaitEnd();
                 } catch (IOException e) {
@@ -101,8 +104,10 @@ final class WebFeed implements ViewerClient.Listener {
 
     @Override
     public void snapshot(WorldSnapshot snapshot) {
+        boolean sameRun = worldSeen; // (a later snapshot of a connection: robots joined, or a replay's seek)
+        worldSeen = true;
         if (watch.isEmpty()) {
-            clients.snapshot(WebJson.snapshot(snapshot), snapshot.robotNames());
+            clients.snapshot(WebJson.snapshot(snapshot), snapshot.robotNames(), sameRun);
         } else {
             clients.watchStarted(watch, snapshot.step()); // (its views follow from the next step on)
         }

@@ -22,13 +22,15 @@ export class RobotPanel {
     this.select.onchange = () => onWatch(this.select.value);
   }
 
-  // a new world: its robots to choose from; the robot watched stays chosen if it is in it
+  // a new world: its robots to choose from; the robot watched stays chosen if it is in it. A view of a later
+  // step than the world's is of another time (the run before, or the steps a replay's seek went back from);
+  // one of the world's step may have come first (views come on a connection of their own)
   world(snapshot) {
     this.robots = snapshot.robots;
     const keep = this.name;
     this.select.replaceChildren(new Option('(none)', ''), ...snapshot.robots.map((r) => new Option(r.name, r.name)));
     this.select.value = this.robots.some((r) => r.name === keep) ? keep : '';
-    this.view = null;
+    if (this.view && this.view.step > snapshot.step) this.view = null;
   }
 
   // the page now watches this robot ('' for none)

@@ -12,7 +12,8 @@ export class View3D {
     this.yaw = -Math.PI / 2; this.pitch = 0.9; this.distance = 10; this.center = new THREE.Vector3();
   }
 
-  world(w) {
+  // a world to show; keepCamera: it is the same arena (robots joined, a replay's seek): the camera stays
+  world(w, keepCamera) {
     this.w = w;
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xf4f6fa);
@@ -42,7 +43,7 @@ export class View3D {
       this.scene.add(g);
       return { group: g, body };
     });
-    this.fit();
+    if (!keepCamera) this.fit();
   }
 
   fit() {

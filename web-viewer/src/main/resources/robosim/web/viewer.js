@@ -31,29 +31,36 @@ function ask(request) {
   ws.send(request);
 }
 
+const sameArena = (a, b) => a.minX === b.minX && a.minY === b.minY && a.maxX === b.maxX && a.maxY === b.maxY;
+
+function measureAfresh() { lastStep = -1; rateSteps = 0; rateSince = performance.now(); rate = 0; }
+
 function handle(m) {
   switch (m.type) {
     case 'snapshot':
-      // (robots joined the running world: the others keep their trails and the view its zoom)
+      // a world starts the picture afresh at its step (a new run, or a replay's seek: no trail across the
+      // jump, the steps per second measured anew) but for robots that joined the running world: the
+      // others keep their trails; the same arena keeps the view's zoom
       const grown = world && m.robots.length > world.robots.length
         && world.robots.every((r, i) => r.name === m.robots[i].name);
       trails = grown ? m.robots.map((r, i) => trails[i] || []) : m.robots.map(() => []);
-      if (!grown) { gone = new Set(); held = new Set(); fitted = false; }
+      if (!grown) { gone = new Set(); held = new Set(); measureAfresh(); }
+      const arenaKept = world !== null && sameArena(world.arena, m.arena);
+      if (!arenaKept) fitted = false;
       world = m; poses = m.poses;
       $('ended').textContent = '';
-      buildTable(); view3d.world(m); panel.world(m); dirty = tableDirty = true; wake();
+      buildTable(); view3d.world(m, arenaKept); panel.world(m); dirty = tableDirty = true; wake();
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);
       if (!watched && watchName && m.robots.some((r) => r.name === watchName)) watch(watchName);
       break;
     case 'update':
-      if (poses && m.step < poses.step) trails = trails.map(() => []); // (a seek back)
       poses = m; gone = new Set(m.departed); held = new Set(m.held || []);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
       panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
     case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 2}`); redraw(); break;
     case 'view': panel.show(m); redraw(); break;
     case 'viewEnded': watched = ''; panel.ended(m.reason); redraw(); break;
-    case 'state': $('state').textContent = m.phase; if (m.phase !== 'RUNNING') rate = 0; redraw(); break;
+    case 'state': $('state').textContent = m.phase; if (m.phase === 'RUNNING') measureAfresh(); else rate = 0; redraw(); break;
     case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; rate = 0; redraw(); break;
     case 'reply': replied(m); break;
   }
