@@ -34,7 +34,8 @@ import robosim.web.WebViewerServer;
  * The browser viewer in a real headless browser (Debian's chromium and chromedriver, which {@code .ci/run}
  * installs; nothing is downloaded): the page connects to a running 10-robot simulation, its step
  * advances, and, the run paused, every robot is drawn where the run put it (the robot table says the
- * same poses) and the 3D view renders the robots. The run goes on until the test stops it. On a replay of a
+ * same poses) and the 3D view renders the robots, the arena's walls, each robot's name and, while the trails box
+ * is checked, their trails. The run goes on until the test stops it. On a replay of a
  * recorded run, a seek starts the picture afresh at the sought step: no trail across the jump, the robots
  * where that step has them, the steps per second measured anew.
  */
@@ -83,7 +84,7 @@ class BrowserViewerIT {
                             wait.until(p -> p.findElements(By.cssSelector("#robots tbody tr")).size() == 10);
                             pageHasTheWorld.countDown(); // the robots start now
                             long first = wait.until(p -> stepShown(p) >= 0 ? stepShown(p) : null);
-                            wait.until(p -> stepShown(p) > first); // the step advances
+                            wait.until(p -> stepShown(p) > first && stepShown(p) >= 20); // the step advances (trails grow)
                             env.pause(LONG_S, TimeUnit.SECONDS);
                             long last = env.status().step() - 1;
                             PoseUpdate expected = wait.until(p -> seen.get(last));
@@ -108,6 +109,14 @@ class BrowserViewerIT {
                                 return n > 50 ? n : null;
                             });
                             assertTrue(blue > 50, "the 3D view draws the robots: " + blue + " robot-blue pixels");
+                            List<String> names = sim.spec.robots().stream().map(r -> r.name()).toList();
+                            assertEquals(names, wait.until(p -> labels3d(p).size() == names.size() ? labels3d(p) : null),
+                                    "the 3D view names each robot, in the view");
+                            long walls = wallPixels3d(page);
+                            assertTrue(walls > 2000, "the 3D view draws the arena's walls: " + walls + " wall-grey pixels");
+                            long trails = trailPixels3d(page);
+                            page.findElement(By.id("trails")).click(); // (the run is paused: only the trails can go)
+                            wait.until(p -> trailPixels3d(p) < trails - 100); // the 3D view drew them
                         } finally {
                             env.stop("the test has seen what it needed"); // (whatever happened above)
                         }
@@ -348,6 +357,38 @@ class BrowserViewerIT {
         double y(double yMm) {
             return height - (yMm * scale + offY);
         }
+    }
+
+    /** The names over the 3D view, in robot order, of the labels shown whole inside it. */
+    private static List<String> labels3d(WebDriver page) {
+        @SuppressWarnings("unchecked")
+        List<String> shown = (List<String>) ((JavascriptExecutor) page).executeScript(
+                "const v = document.getElementById('view3d').getBoundingClientRect();"
+                + "return [...document.querySelectorAll('#view3d .label')].filter((l) => { const r = l.getBoundingClientRect();"
+                + "  return !l.hidden && r.width > 0 && r.left >= v.left && r.right <= v.right && r.top >= v.top"
+                + "    && r.bottom <= v.bottom; }).map((l) => l.textContent);");
+        return shown;
+    }
+
+    /** Wall-grey pixels in the 3D view's canvas: grey, darker than the floor, lighter than the robots' noses. */
+    private static long wallPixels3d(WebDriver page) {
+        return pixels3d(page, "Math.max(r, g, b) - Math.min(r, g, b) <= 6 && r >= 0x38 && r <= 0xb0");
+    }
+
+    /** Trail-blue pixels in the 3D view's canvas (and robots' edges: bluer than the floor, less than a robot). */
+    private static long trailPixels3d(WebDriver page) {
+        return pixels3d(page, "b > r + 20 && b > g + 10 && !(b > r + 60 && b > g + 30)");
+    }
+
+    /** Pixels of the 3D view's canvas (copied into a 2D canvas to read them) for which {@code test} of r, g, b holds. */
+    private static long pixels3d(WebDriver page, String test) {
+        Object n = ((JavascriptExecutor) page).executeScript("const g = document.querySelector('#view3d canvas');"
+                + "if (!g || g.width === 0) return 0; const c = document.createElement('canvas');"
+                + "c.width = g.width; c.height = g.height; const x = c.getContext('2d'); x.drawImage(g, 0, 0);"
+                + "const d = x.getImageData(0, 0, c.width, c.height).data; let n = 0;"
+                + "for (let i = 0; i < d.length; i += 4) { const r = d[i], g = d[i + 1], b = d[i + 2]; if (" + test + ") n++; }"
+                + "return n;");
+        return ((Number) n).longValue();
     }
 
     /** Robot-blue pixels in the 3D view's canvas (copied into a 2D canvas to read them). */

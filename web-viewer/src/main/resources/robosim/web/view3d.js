@@ -1,14 +1,20 @@
-// The 3D view (three.js, served from the jar): the arena as a floor, obstacles as extruded polygons,
-// robots as cylinders of their radius with a nose for their heading. Metres; z up. Drag orbits, wheel zooms.
+// The 3D view (three.js, served from the jar): the arena as a floor with low walls round it, obstacles as
+// extruded polygons, robots as cylinders of their radius with a nose for their heading and their name above
+// them, and their trails on the floor. Metres; z up. Drag orbits, wheel zooms. Names are text laid over the
+// canvas (set as textContent), placed where each robot is drawn.
 import * as THREE from '/three/three.module.min.js';
 
-const WALL_M = 0.4, ROBOT_M = 0.3;
+const WALL_M = 0.4, ROBOT_M = 0.3, BOUNDS_M = 0.05, TRAIL_Z = 0.01, LABEL_Z = ROBOT_M + 0.15;
 
 export class View3D {
-  constructor(element) {
+  // trailPoints: the most points a trail the page keeps has
+  constructor(element, trailPoints) {
     this.element = element;
+    this.trailPoints = trailPoints;
     this.renderer = null; // (made when first shown: a hidden page needs no WebGL)
     this.robots = [];
+    this.labels = document.createElement('div');
+    element.appendChild(this.labels);
     this.yaw = -Math.PI / 2; this.pitch = 0.9; this.distance = 10; this.center = new THREE.Vector3();
   }
 
@@ -19,11 +25,20 @@ export class View3D {
     this.scene.background = new THREE.Color(0xf4f6fa);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x777777, 2.2));
     const sun = new THREE.DirectionalLight(0xffffff, 1.5); sun.position.set(3, -4, 10); this.scene.add(sun);
-    const a = w.arena, wm = (a.maxX - a.minX) / 1000, hm = (a.maxY - a.minY) / 1000;
-    const floor = new THREE.Mesh(new THREE.PlaneGeometry(wm, hm), new THREE.MeshLambertMaterial({ color: 0xdadada }));
-    floor.position.set((a.minX + a.maxX) / 2000, (a.minY + a.maxY) / 2000, 0);
+    const a = w.arena, x0 = a.minX / 1000, y0 = a.minY / 1000, x1 = a.maxX / 1000, y1 = a.maxY / 1000;
+    const floor = new THREE.Mesh(new THREE.PlaneGeometry(x1 - x0, y1 - y0), new THREE.MeshLambertMaterial({ color: 0xdadada }));
+    floor.position.set((x0 + x1) / 2, (y0 + y1) / 2, 0);
     this.scene.add(floor);
     const wall = new THREE.MeshLambertMaterial({ color: 0x8a8a8a });
+    const block = (bx0, by0, bx1, by1) => { // (the arena's walls, just outside it, as the 2D view's outline)
+      const m = new THREE.Mesh(new THREE.BoxGeometry(bx1 - bx0, by1 - by0, WALL_M), wall);
+      m.position.set((bx0 + bx1) / 2, (by0 + by1) / 2, WALL_M / 2);
+      this.scene.add(m);
+    };
+    block(x0 - BOUNDS_M, y0 - BOUNDS_M, x1 + BOUNDS_M, y0);
+    block(x0 - BOUNDS_M, y1, x1 + BOUNDS_M, y1 + BOUNDS_M);
+    block(x0 - BOUNDS_M, y0, x0, y1);
+    block(x1, y0, x1 + BOUNDS_M, y1);
     for (const o of w.obstacles) {
       const shape = new THREE.Shape();
       for (let k = 0; k < o.xy.length; k += 2) {
@@ -31,6 +46,7 @@ export class View3D {
       }
       this.scene.add(new THREE.Mesh(new THREE.ExtrudeGeometry(shape, { depth: WALL_M, bevelEnabled: false }), wall));
     }
+    const trailLine = new THREE.LineBasicMaterial({ color: 0x285ac8, transparent: true, opacity: 0.35 }); // (the 2D view's)
     this.robots = w.robots.map((r) => {
       const g = new THREE.Group();
       const rm = r.radius / 1000;
@@ -41,8 +57,16 @@ export class View3D {
       nose.position.set(rm / 2, 0, ROBOT_M + rm / 8);
       g.add(body, nose);
       this.scene.add(g);
-      return { group: g, body };
+      const points = new THREE.BufferGeometry();
+      points.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * this.trailPoints), 3));
+      const trail = new THREE.Line(points, trailLine);
+      trail.frustumCulled = false; // (its bounds change with every point)
+      this.scene.add(trail);
+      const label = document.createElement('span');
+      label.className = 'label';
+      return { group: g, body, trail, label, text: '' };
     });
+    this.labels.replaceChildren(...this.robots.map((r) => r.label));
     if (!keepCamera) this.fit();
   }
 
@@ -72,7 +96,9 @@ export class View3D {
       { passive: false });
   }
 
-  render(poses, gone, follow) {
+  // poses: the update to show; gone, held: names of robots that left or are held (drawn grey, said so);
+  // trails: each robot's trail (x, y mm pairs, oldest first), or null for none
+  render(poses, gone, held, follow, trails) {
     if (!this.scene || !poses) return;
     if (!this.renderer) this.start();
     const w = this.element.clientWidth, h = this.element.clientHeight;
@@ -81,14 +107,36 @@ export class View3D {
       this.renderer.domElement.style.width = '100%'; this.renderer.domElement.style.height = '100%';
     }
     this.robots.forEach((r, i) => {
+      const name = this.w.robots[i].name, out = gone.has(name) || held.has(name);
       r.group.position.set(poses.x[i] / 1000, poses.y[i] / 1000, 0);
       r.group.rotation.z = poses.heading[i] * Math.PI / 180;
-      r.body.material.color.set(gone.has(this.w.robots[i].name) ? 0xcccccc : i === follow ? 0xe8a200 : 0x2a62c9);
+      r.body.material.color.set(out ? 0xcccccc : i === follow ? 0xe8a200 : 0x2a62c9);
+      this.trail(r.trail, trails && trails[i]);
     });
     const c = follow >= 0 ? new THREE.Vector3(poses.x[follow] / 1000, poses.y[follow] / 1000, 0) : this.center;
     this.camera.position.set(c.x + this.distance * Math.cos(this.pitch) * Math.cos(this.yaw),
       c.y + this.distance * Math.cos(this.pitch) * Math.sin(this.yaw), this.distance * Math.sin(this.pitch));
     this.camera.lookAt(c);
     this.renderer.render(this.scene, this.camera);
+    this.robots.forEach((r, i) => {
+      const name = this.w.robots[i].name;
+      this.label(r, name + (held.has(name) ? ' (held)' : gone.has(name) ? ' (left)' : ''),
+        new THREE.Vector3(poses.x[i] / 1000, poses.y[i] / 1000, LABEL_Z).project(this.camera), w, h);
+    });
+  }
+
+  // a robot's trail line: the points of t (x, y mm pairs), or none
+  trail(line, t) {
+    const n = t ? Math.min(t.length / 2, this.trailPoints) : 0, at = line.geometry.attributes.position;
+    for (let k = 0; k < n; k++) at.setXYZ(k, t[2 * k] / 1000, t[2 * k + 1] / 1000, TRAIL_Z);
+    at.needsUpdate = n > 0;
+    line.geometry.setDrawRange(0, n);
+  }
+
+  // a robot's name over the canvas where p (projected, -1 to 1 across the view) is; hidden behind the camera
+  label(r, text, p, w, h) {
+    if (r.text !== text) { r.label.textContent = text; r.text = text; }
+    r.label.hidden = p.z > 1;
+    r.label.style.transform = `translate(${((p.x + 1) / 2 * w).toFixed(1)}px, ${((1 - p.y) / 2 * h).toFixed(1)}px) translate(-50%, -100%)`;
   }
 }

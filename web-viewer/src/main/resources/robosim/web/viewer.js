@@ -12,7 +12,7 @@ let ws = null;
 // draw only what changed (a page should cost the machine it runs on little): the views when there is
 // something new to show, the table at most 5 times a second
 let dirty = true, tableDirty = true, tableAt = 0;
-const view3d = new View3D($('view3d'));
+const view3d = new View3D($('view3d'), TRAIL);
 let watched = ''; // the robot the page watches ('' none): asked again after a reconnection
 const panel = new RobotPanel($('robotPanel'), (name) => watch(name));
 function watch(name) { watched = name; panel.watching(name); ask('watch ' + name); redraw(); }
@@ -225,7 +225,8 @@ function frame(now) {
     dirty = false;
     $('step').textContent = poses ? poses.step + 1 : '-'; // steps completed (protocol/README.md, "Step numbers")
     $('rate').textContent = rate.toFixed(1);
-    if (!canvas.classList.contains('hidden')) draw2d(); else view3d.render(poses, gone, follow);
+    if (!canvas.classList.contains('hidden')) draw2d();
+    else view3d.render(poses, gone, held, follow, $('trails').checked ? trails : null);
     panel.draw();
   }
   if (tableDirty) {
