@@ -1,6 +1,7 @@
 package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
@@ -35,7 +36,8 @@ import robosim.web.WebViewerServer;
  * installs; nothing is downloaded): the page connects to a running 10-robot simulation, its step
  * advances, and, the run paused, every robot is drawn where the run put it (the robot table says the
  * same poses) and the 3D view renders the robots, the arena's walls, each robot's name and, while the trails box
- * is checked, their trails. The run goes on until the test stops it. On a replay of a
+ * is checked, their trails; the watch panel shows the robot's sonar and no bump sensor, which it does not have.
+ * The run goes on until the test stops it. On a replay of a
  * recorded run, a seek starts the picture afresh at the sought step: no trail across the jump, the robots
  * where that step has them, the steps per second measured anew.
  */
@@ -99,6 +101,8 @@ class BrowserViewerIT {
                                 String facts = p.findElement(By.id("facts")).getText();
                                 return facts.contains(command) ? facts : null;
                             });
+                            assertFalse(page.findElement(By.id("bump")).isDisplayed(),
+                                    "no bump row: " + watched + " has no bump sensor");
                             String log = page.findElement(By.id("log")).getText();
                             assertTrue(log.replaceAll("\\s+", " ").contains(" in from "),
                                     "its inbox in the panel's log: " + log);
@@ -144,6 +148,7 @@ class BrowserViewerIT {
         robosim.protocol.RobotView v = sim.views.get((int) step); // (robot 0's, as the run's own viewer got it)
         String facts = (String) shown[3];
         assertTrue(facts.startsWith(sim.spec.robots().get(0).name() + " ("), facts);
+        assertTrue(facts.contains("\n  sonar "), "its sonar (an ArRobot has sonars): " + facts);
         assertTrue(facts.contains(String.format(java.util.Locale.ROOT, "command (step %d): move %.1f mm, turn %.1f deg",
                 step, v.moveMm(), v.turnDeg())), "the panel shows the robot's own command: " + facts);
     }

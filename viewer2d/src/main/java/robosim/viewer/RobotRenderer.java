@@ -21,8 +21,9 @@ import robosim.protocol.StepNumbers;
  * Draws one robot as it senses the world: on the left a polar plot in the robot's own frame (heading
  * up, a ring every metre, or every few when it reaches far: at most ten; nothing beyond
  * {@link #MAX_REACH_MM}), its sonar cones filled out to each range and laser-like readings (more than
- * {@link #POLAR_VALUES} values) as points; on the right its step, pose, command, contact, tag, bump
- * (front, left, back, right) and the other readings. A laser's field of view is not on the wire: its
+ * {@link #POLAR_VALUES} values) as points; on the right its step, pose, command, contact, tag and only the
+ * sensors it has: sonar when its type has any, bump (front, left, back, right) and the other readings when its
+ * view holds them. A laser's field of view is not on the wire: its
  * beams are drawn at the default resolution of one degree each, centred on the heading. Pure drawing.
  */
 public final class RobotRenderer {
@@ -45,7 +46,7 @@ public final class RobotRenderer {
         g.fillRect(0, 0, width, height);
         int plot = Math.max(100, Math.min(height, width - 260));
         polar(g, s, robot, v, plot);
-        facts(g, s, robot, v, plot + 16, width);
+        drawFacts(g, facts(s, robot, v), v, plot + 16);
     }
 
     private static void polar(Graphics2D g, Scene s, int robot, RobotView v, int size) {
@@ -111,8 +112,46 @@ public final class RobotRenderer {
         g.drawString(String.format(Locale.ROOT, "1 ring = %.0f m, heading up", ring / 1000), 6, size - 6);
     }
 
-    private static void facts(Graphics2D g, Scene s, int robot, RobotView v, int x, int width) {
-        List<String> lines = facts(s, robot, v);
+    /**
+     * The text beside the plot, a line each: the robot, the step and the run's state, its pose, and of its
+     * newest view the command, the sensors it has (sonar when its type has any; the plug-in readings the view
+     * holds), contact, tag and messages.
+     */
+    public static List<String> facts(Scene s, int robot, RobotView v) {
+        List<String> lines = new ArrayList<>();
+        lines.add(s.names().get(robot) + "  (" + s.robots().get(robot).type() + ")");
+        lines.add("step " + StatusLine.step(s) + "   " + StatusLine.state(s));
+        if (s.poses().departed().contains(s.names().get(robot))) {
+            lines.add("it has left the simulation");
+        } else if (s.poses().held().contains(s.names().get(robot))) {
+            lines.add("held: lost, standing where it was until it comes back");
+        } else if (robot < s.poses().count()) {
+            lines.add(String.format(Locale.ROOT, "pose  x %.0f  y %.0f mm  heading %.1f deg", s.poses().xMm(robot),
+                    s.poses().yMm(robot), s.poses().headingDeg(robot)));
+        }
+        if (v != null) {
+            lines.add("");
+            lines.add(String.format(Locale.ROOT, "command (step %d)  move %.1f mm  turn %.1f deg",
+                    StepNumbers.shown(v.step()), v.moveMm(), v.turnDeg()));
+            boolean sonars = !s.robots().get(robot).sonars().isEmpty();
+            lines.add("  " + (sonars ? "sonar " + (v.askedSonar() ? "asked" : "not asked") + "   " : "") + "tag "
+                    + (v.askedTag() ? "asked" : "no"));
+            lines.add("contact  " + (v.contact().isEmpty() ? "none" : RobotFeed.clean(v.contact())));
+            lines.add("tagged   " + (v.tagged().isEmpty() ? "none" : RobotFeed.clean(v.tagged())));
+            for (SensorReading r : v.readings()) {
+                lines.add(RobotFeed.clean(r.name()) + "  " + RobotFeed.values(r.values()));
+            }
+            lines.add("messages: " + v.sent().size() + " sent, " + v.delivered().size() + " delivered"
+                    + (v.sinceStep() == v.step() ? "" : " since step " + StepNumbers.shown(v.sinceStep())));
+        } else {
+            lines.add("");
+            lines.add("(waiting for its first step)");
+        }
+        return lines;
+    }
+
+    /** The facts, and under them the bump sensor's sides (lit when touching) when the view holds its reading. */
+    private static void drawFacts(Graphics2D g, List<String> lines, RobotView v, int x) {
         g.setColor(TEXT);
         g.setFont(new Font(Font.MONOSPACED, Font.PLAIN, 12));
         int y = 20;
@@ -132,38 +171,6 @@ public final class RobotRenderer {
                 g.drawString(sides[k], x + k * 62 + 6, y + 13);
             }
         }
-    }
-
-    /** The lines of text beside the plot: the robot, the step and state, its pose, its newest view (null: none yet). */
-    public static List<String> facts(Scene s, int robot, RobotView v) {
-        List<String> lines = new ArrayList<>();
-        lines.add(s.names().get(robot) + "  (" + s.robots().get(robot).type() + ")");
-        lines.add("step " + StatusLine.step(s) + "   " + StatusLine.state(s));
-        if (s.poses().departed().contains(s.names().get(robot))) {
-            lines.add("it has left the simulation");
-        } else if (s.poses().held().contains(s.names().get(robot))) {
-            lines.add("held: lost, standing where it was until it comes back");
-        } else if (robot < s.poses().count()) {
-            lines.add(String.format(Locale.ROOT, "pose  x %.0f  y %.0f mm  heading %.1f deg", s.poses().xMm(robot),
-                    s.poses().yMm(robot), s.poses().headingDeg(robot)));
-        }
-        if (v != null) {
-            lines.add("");
-            lines.add(String.format(Locale.ROOT, "command (step %d)  move %.1f mm  turn %.1f deg",
-                    StepNumbers.shown(v.step()), v.moveMm(), v.turnDeg()));
-            lines.add("  sonar " + (v.askedSonar() ? "asked" : "not asked") + "   tag " + (v.askedTag() ? "asked" : "no"));
-            lines.add("contact  " + (v.contact().isEmpty() ? "none" : RobotFeed.clean(v.contact())));
-            lines.add("tagged   " + (v.tagged().isEmpty() ? "none" : RobotFeed.clean(v.tagged())));
-            for (SensorReading r : v.readings()) {
-                lines.add(RobotFeed.clean(r.name()) + "  " + RobotFeed.values(r.values()));
-            }
-            lines.add("messages: " + v.sent().size() + " sent, " + v.delivered().size() + " delivered"
-                    + (v.sinceStep() == v.step() ? "" : " since step " + StepNumbers.shown(v.sinceStep())));
-        } else {
-            lines.add("");
-            lines.add("(waiting for its first step)");
-        }
-        return lines;
     }
 
     /** The larger of {@code reach} and {@code d}, at most {@link #MAX_REACH_MM}; a value that is not finite changes nothing. */

@@ -14,13 +14,17 @@ import robosim.protocol.Arena;
 import robosim.protocol.CommEvent;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotModels;
+import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.SensorReading;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
 
-/** The robot-specific viewer: its feed's log of messages and notices, and its drawing, off-screen. */
+/**
+ * The robot-specific viewer: its feed's log of messages and notices, its drawing, off-screen, and its facts, which
+ * name only the sensors the robot has.
+ */
 class RobotViewerTest {
     private static final Arena ARENA = new Arena(0, 0, 10_000, 5_000);
 
@@ -107,6 +111,23 @@ class RobotViewerTest {
         BufferedImage left = draw(scene, view(41, laser, new double[] {0, 1, 0, 0}, List.of(), List.of(), List.of()), w, h);
         assertFalse(laserRed(left, box, box + 56), "front not lit");
         assertTrue(laserRed(left, box + 62, box + 62 + 56), "the left bump lit");
+    }
+
+    @Test
+    void theFactsNameOnlyTheSensorsTheRobotHas() {
+        RobotProperties noSonar = new RobotProperties("Crawler", 200, 500, 90, List.of());
+        Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(noSonar, RobotModels.SCOUT),
+                new PoseUpdate(7, new double[] {2000, 8000}, new double[] {2500, 4000}, new double[] {0, 90}),
+                new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
+        StepRequest q = new StepRequest(7, 100, 0, false, List.of(), List.of("heat"));
+        StepResponse r = new StepResponse(7, 100, 0, "", 0, 0, 0, new double[0], List.of(), List.of(),
+                List.of(new SensorReading("heat", new double[] {21.5})));
+        String crawler = String.join("\n", RobotRenderer.facts(scene, 0, RobotView.of(7, 0, "a", q, r)));
+        assertFalse(crawler.contains("sonar"), "no sonar on a type without any: " + crawler);
+        assertTrue(crawler.contains("\nheat  21.5\n"), "the heat sensor it read: " + crawler);
+        assertFalse(crawler.contains("bump") || crawler.contains("laser"), "nothing it has not: " + crawler);
+        String scout = String.join("\n", RobotRenderer.facts(scene, 1, RobotView.of(7, 1, "b", q, r)));
+        assertTrue(scout.contains("  sonar not asked   tag no"), "a Scout's sonar: " + scout);
     }
 
     private static BufferedImage draw(Scene s, RobotView v, int w, int h) {

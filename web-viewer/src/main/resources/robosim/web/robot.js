@@ -1,8 +1,9 @@
 // The robot panel (the robot-specific viewer in the page): one robot as it senses the world - a polar
 // plot in its own frame (heading up, a ring every metre, or every few when it reaches far) of its sonar cones out to each range and its
 // laser (a reading of more than 8 values, drawn one degree a beam, centred on the heading), its pose,
-// command, contact, tag, bump (front, left, back, right), heat and other readings, and a log of the
-// messages it sent and got and its notices. Network text is only ever set as textContent.
+// command, contact, tag and only the sensors it has: sonar when its type has any, bump (front, left, back,
+// right), heat and other readings when its view holds them; and a log of the messages it sent and got and
+// its notices. Network text is only ever set as textContent.
 const LOG_LINES = 200;
 const MAX_REACH = 100000; // mm
 
@@ -12,7 +13,8 @@ export class RobotPanel {
     this.select = root.querySelector('#watch');
     this.canvas = root.querySelector('#polar');
     this.facts = root.querySelector('#facts');
-    this.bumps = [...root.querySelectorAll('#bump span')];
+    this.bumpRow = root.querySelector('#bump');
+    this.bumps = [...this.bumpRow.querySelectorAll('span')];
     this.log = root.querySelector('#log');
     this.robots = [];
     this.name = '';
@@ -91,8 +93,9 @@ export class RobotPanel {
       : `step ${p.step + 1}  x ${(p.x / 1000).toFixed(3)} y ${(p.y / 1000).toFixed(3)} m  ${p.heading.toFixed(1)} deg`);
     let bump = null;
     if (v) {
+      const sonar = r && r.sonars.length > 0 ? `sonar ${v.sonar ? 'asked' : 'not asked'}, ` : '';
       lines.push(`command (step ${v.step + 1}): move ${v.move.toFixed(1)} mm, turn ${v.turn.toFixed(1)} deg`,
-        `  sonar ${v.sonar ? 'asked' : 'not asked'}, tag ${v.tag ? 'asked' : 'no'}`,
+        `  ${sonar}tag ${v.tag ? 'asked' : 'no'}`,
         `contact ${v.contact || 'none'}   tagged ${v.tagged || 'none'}`);
       for (const s of v.readings) {
         if (s.values.length === 4 && /bump/i.test(s.name)) bump = s.values;
@@ -101,6 +104,7 @@ export class RobotPanel {
       }
     } else lines.push('(waiting for its first step)');
     this.facts.textContent = lines.join('\n');
+    this.bumpRow.classList.toggle('hidden', !bump);
     this.bumps.forEach((b, k) => b.classList.toggle('hit', !!bump && bump[k] !== 0));
     this.polar(r, v, p);
   }
