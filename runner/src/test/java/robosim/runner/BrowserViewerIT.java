@@ -35,11 +35,11 @@ import robosim.web.WebViewerServer;
  * The browser viewer in a real headless browser (Debian's chromium and chromedriver, which {@code .ci/run}
  * installs; nothing is downloaded): the page connects to a running 10-robot simulation, its step
  * advances, and, the run paused, every robot is drawn where the run put it (the robot table says the
- * same poses) and the 3D view renders the robots, the arena's walls, each robot's name and, while the trails box
- * is checked, their trails; the watch panel shows the robot's sonar and no bump sensor, which it does not have.
- * The run goes on until the test stops it. On a replay of a
- * recorded run, a seek starts the picture afresh at the sought step: no trail across the jump, the robots
- * where that step has them, the steps per second measured anew.
+ * same poses), the watch panel shows the robot's sonar and no bump sensor, which it does not have, and the 3D
+ * view renders the robots, the arena's walls, each robot's name and, while the trails box is checked, their
+ * trails. The run goes on until the test stops it. On a replay of a recorded run, a seek starts the picture
+ * afresh at the sought step: no trail across the jump, the robots where that step has them, the steps per
+ * second measured anew.
  */
 class BrowserViewerIT {
     private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
