@@ -88,15 +88,15 @@ class BrowserViewerIT {
                             long first = wait.until(p -> stepShown(p) >= 0 ? stepShown(p) : null);
                             wait.until(p -> stepShown(p) > first && stepShown(p) >= 20); // the step advances (trails grow)
                             env.pause(LONG_S, TimeUnit.SECONDS);
-                            long last = env.status().step() - 1;
+                            long last = env.status().step() - 1; // (the wire's step: the page shows it as last + 1)
                             PoseUpdate expected = wait.until(p -> seen.get(last));
-                            wait.until(p -> stepShown(p) == last && page.findElement(By.id("state")).getText()
+                            wait.until(p -> stepShown(p) == last + 1 && page.findElement(By.id("state")).getText()
                                     .equals("PAUSED") && tableShows(p, expected));
                             shown[0] = last;
                             shown[1] = page.findElements(By.cssSelector("#robots tbody tr")).stream()
                                     .map(r -> r.getText()).toList();
                             shown[2] = robotPixels(page, wait.until(p -> sim.snapshot), expected);
-                            String command = "command (step " + last + "): move ";
+                            String command = "command (step " + (last + 1) + "): move ";
                             shown[3] = wait.until(p -> { // (the robot panel: the watched robot's last step)
                                 String facts = p.findElement(By.id("facts")).getText();
                                 return facts.contains(command) ? facts : null;
@@ -150,7 +150,7 @@ class BrowserViewerIT {
         assertTrue(facts.startsWith(sim.spec.robots().get(0).name() + " ("), facts);
         assertTrue(facts.contains("\n  sonar "), "its sonar (an ArRobot has sonars): " + facts);
         assertTrue(facts.contains(String.format(java.util.Locale.ROOT, "command (step %d): move %.1f mm, turn %.1f deg",
-                step, v.moveMm(), v.turnDeg())), "the panel shows the robot's own command: " + facts);
+                step + 1, v.moveMm(), v.turnDeg())), "the panel shows the robot's own command: " + facts);
     }
 
     @Test
@@ -198,17 +198,23 @@ class BrowserViewerIT {
         }
     }
 
-    /** Waits until the page shows step {@code step}: its number, its poses in the table, PAUSED. */
+    /**
+     * Waits until the page shows step {@code step} (as displays number steps: the world after that many, the update
+     * of wire step {@code step - 1}): its number, its poses in the table, PAUSED.
+     */
     private static void shows(WebDriverWait wait, InJvmSimulation live, long step) {
-        wait.until(p -> stepShown(p) == step && tableShows(p, live.updates.get((int) step))
+        wait.until(p -> stepShown(p) == step && tableShows(p, live.updates.get((int) step - 1))
                 && p.findElement(By.id("state")).getText().equals("PAUSED"));
     }
 
-    /** A step well ahead of {@code from} where robot 0 stands away from where it stood then (its lane's length is 10 m). */
+    /**
+     * A step well ahead of {@code from} where robot 0 stands away from where it stood then (its lane's length is 10 m);
+     * steps as displays number them.
+     */
     private static long seekForward(InJvmSimulation live, long from) {
-        PoseUpdate a = live.updates.get((int) from);
-        for (long k = from + 20; k < RECORDED_STEPS - 1; k++) {
-            PoseUpdate b = live.updates.get((int) k);
+        PoseUpdate a = live.updates.get((int) from - 1);
+        for (long k = from + 20; k < RECORDED_STEPS; k++) {
+            PoseUpdate b = live.updates.get((int) k - 1);
             if (Math.hypot(b.xMm(0) - a.xMm(0), b.yMm(0) - a.yMm(0)) > 2000) {
                 return k;
             }
@@ -243,11 +249,12 @@ class BrowserViewerIT {
 
     /**
      * Trail-blue pixels of the 2D view away from the robots (their discs and 3 px around) at the poses of
-     * {@code step}, by the page's own fit of the arena: what its trails draw (nothing else there is blue).
+     * {@code step} (as displays number it), by the page's own fit of the arena: what its trails draw (nothing else
+     * there is blue).
      */
     private static long trailPixels(WebDriver page, InJvmSimulation live, long step) {
         View2d v = View2d.of(page, live.snapshot);
-        PoseUpdate u = live.updates.get((int) step);
+        PoseUpdate u = live.updates.get((int) step - 1);
         List<List<Double>> centres = new java.util.ArrayList<>();
         double radius = 0;
         for (int i = 0; i < u.count(); i++) {
@@ -266,9 +273,9 @@ class BrowserViewerIT {
         return ((Number) n).longValue();
     }
 
-    /** The robots (indexes) the 2D view does not draw at their poses of {@code step}. */
+    /** The robots (indexes) the 2D view does not draw at their poses of {@code step} (as displays number it). */
     private static List<Integer> notDrawn(WebDriver page, InJvmSimulation live, long step) {
-        List<Boolean> drawn = robotPixels(page, live.snapshot, live.updates.get((int) step));
+        List<Boolean> drawn = robotPixels(page, live.snapshot, live.updates.get((int) step - 1));
         return java.util.stream.IntStream.range(0, drawn.size()).filter(i -> !drawn.get(i)).boxed().toList();
     }
 

@@ -112,7 +112,7 @@ class ReplayTest {
                         "a seek: the world at the sought step right before its update (the viewer starts afresh there)");
                 assertEquals(MIDDLE - 1, world.step());
                 assertArrayEquals(RecordingRunTest.bytes(sought), RecordingRunTest.bytes(world.poses()), "the world's poses");
-                SceneFeed shown = new SceneFeed(0);
+                SceneFeed shown = new SceneFeed(System::nanoTime);
                 shown.snapshot(got.snapshot());
                 shown.update(sought);
                 assertTrue(StatusLine.text(shown.latest()).startsWith("step " + MIDDLE + " "), StatusLine.text(shown.latest()));

@@ -37,7 +37,7 @@ class StepNumbersTest {
 
     /** What a robot window would show ({@link RobotFeed}, which holds the 2D viewer's scene), and each update, to wait on. */
     private static final class Window implements ViewerClient.Listener {
-        final RobotFeed feed = new RobotFeed("r1", 0);
+        final RobotFeed feed = new RobotFeed("r1");
         final BlockingQueue<PoseUpdate> updates = new LinkedBlockingQueue<>();
 
         @Override
