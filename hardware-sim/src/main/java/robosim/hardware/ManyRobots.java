@@ -23,7 +23,8 @@ public final class ManyRobots {
      */
     public static void runOverOneConnection(List<HardwareSimulator> sims, List<RobotControl> controls, Socket socket,
             int resetEvery, SimulationKeys keys) throws IOException, InterruptedException {
-        SharedLink.connect(sims, socket, resetEvery, keys).run(controls);
+        SharedLink.connect(sims, socket, resetEvery, keys, robosim.protocol.ObjectConnection.DEFAULT_ANSWER_MS)
+                .run(controls);
     }
 
     /**

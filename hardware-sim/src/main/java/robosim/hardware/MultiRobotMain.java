@@ -153,8 +153,8 @@ public final class MultiRobotMain implements Callable<Integer> {
             java.net.Socket socket = oneConnection ? RobotLauncher.open(host, port, connect) : null;
             Thread.currentThread().setName("exchange");
             if (oneConnection) {
-                ManyRobots.runOverOneConnection(sims, controls, socket, connect.resetEvery,
-                        robosim.protocol.SimulationKeys.fromEnvironment());
+                SharedLink.connect(sims, socket, connect.resetEvery, robosim.protocol.SimulationKeys.fromEnvironment(),
+                        connect.connectTimeoutMs()).run(controls);
             } else {
                 ManyRobots.runShared(sims, controls);
             }

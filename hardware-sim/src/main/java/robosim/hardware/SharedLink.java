@@ -65,11 +65,12 @@ final class SharedLink {
 
     /**
      * Says every robot's hello over {@code socket} and reads their welcomes; a robot refused is logged and
-     * left out. Throws naming the reasons if every robot was refused.
+     * left out. Throws naming the reasons if every robot was refused. The Environment's first bytes are awaited
+     * at most {@code answerWithinMs} (the connect timeout).
      */
-    static SharedLink connect(List<HardwareSimulator> robots, Socket socket, int resetEvery, SimulationKeys keys)
-            throws IOException {
-        ObjectConnection c = ObjectConnection.client(socket, resetEvery, keys);
+    static SharedLink connect(List<HardwareSimulator> robots, Socket socket, int resetEvery, SimulationKeys keys,
+            long answerWithinMs) throws IOException {
+        ObjectConnection c = ObjectConnection.client(socket, resetEvery, keys, answerWithinMs);
         try {
             c.write(new SharedHello(robots.size()));
             c.flush();

@@ -6,6 +6,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 
 /**
  * A client's deadline for the start of its connection: from the moment it is made until the server's stream
@@ -14,7 +15,7 @@ import java.util.concurrent.TimeUnit;
  * throws is replaced by a line saying that nothing answered in time ({@link #explain}). A port that answers
  * nothing ends here; every RoboSim port answers a client of another kind at once ({@link WrongClients}).
  */
-final class HandshakeDeadline implements AutoCloseable {
+final class HandshakeDeadline {
     /** The least a handshake is given, however short the connect timeout (a loaded machine still answers). */
     public static final long MIN_MS = 5_000;
 
@@ -22,16 +23,21 @@ final class HandshakeDeadline implements AutoCloseable {
 
     private final long ms;
     private final ScheduledFuture<?> close;
-    private volatile boolean passed;
+    /** {@link #RUNNING}, then {@link #OVER} (in time) or {@link #PASSED} (the socket closed), whichever comes first. */
+    private final AtomicInteger state = new AtomicInteger(RUNNING);
+    private static final int RUNNING = 0;
+    private static final int OVER = 1;
+    private static final int PASSED = 2;
 
     private HandshakeDeadline(Socket socket, long ms) {
         this.ms = ms;
         this.close = TIMER.schedule(() -> {
-            passed = true;
-            try {
-                socket.close();
-            } catch (IOException ignored) {
-                // closing is all there was to do
+            if (state.compareAndSet(RUNNING, PASSED)) {
+                try {
+                    socket.close();
+                } catch (IOException ignored) {
+                    // closing is all there was to do
+                }
             }
         }, ms, TimeUnit.MILLISECONDS);
     }
@@ -43,14 +49,22 @@ final class HandshakeDeadline implements AutoCloseable {
 
     /** {@code e}, or, if the deadline closed the socket under it, the deadline's own line. */
     IOException explain(IOException e) {
-        return passed ? new ProtocolException("no answer within " + (ms + 999) / 1000 + " s: nothing there speaks "
-                + "RoboSim's object protocol") : e;
+        return over() ? e : passed();
     }
 
-    /** The handshake is over (or failed): the deadline no longer applies. */
-    @Override
-    public void close() {
+    /** The deadline's own line. */
+    ProtocolException passed() {
+        return new ProtocolException("no answer within " + (ms + 999) / 1000 + " s: nothing there speaks RoboSim's "
+                + "object protocol");
+    }
+
+    /**
+     * The handshake is over (in time, or failed on its own): the deadline no longer applies. False if the deadline
+     * came first and closed the socket.
+     */
+    boolean over() {
         close.cancel(false);
+        return state.compareAndSet(RUNNING, OVER) || state.get() == OVER;
     }
 
     private static ScheduledExecutorService timer() {

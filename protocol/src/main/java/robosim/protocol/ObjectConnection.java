@@ -72,14 +72,18 @@ public final class ObjectConnection implements Closeable {
     public static ObjectConnection client(Socket raw, int resetEvery, SimulationKeys keys, long answerWithinMs)
             throws IOException {
         Tls tls = keys == null ? null : keys.tls();
-        try (HandshakeDeadline deadline = HandshakeDeadline.start(raw, answerWithinMs)) {
-            try {
-                return new ObjectConnection(tls == null ? raw : tls.client(raw), raw, null, resetEvery,
-                        new ProtocolFilter());
-            } catch (IOException e) {
-                throw deadline.explain(e);
-            }
+        HandshakeDeadline deadline = HandshakeDeadline.start(raw, answerWithinMs);
+        ObjectConnection c;
+        try {
+            c = new ObjectConnection(tls == null ? raw : tls.client(raw), raw, null, resetEvery, new ProtocolFilter());
+        } catch (IOException e) {
+            throw deadline.explain(e);
         }
+        if (!deadline.over()) { // (the header came just as the deadline closed the socket)
+            c.close();
+            throw deadline.passed();
+        }
+        return c;
     }
 
     /**
@@ -103,21 +107,40 @@ public final class ObjectConnection implements Closeable {
                         + "to the simulation's keys"));
                 throw new ProtocolException("it spoke without TLS; told it the Environment speaks TLS");
             case TLS:
-                if (tls != null) {
-                    return new ObjectConnection(tls.server(raw, greeting), raw, null, resetEvery, new ProtocolFilter());
+                if (tls == null) {
+                    WrongClients.turnAway(raw);
+                    throw new ProtocolException("it began TLS, but this Environment has no keys (tls=off)");
                 }
-                raw.close();
-                throw new ProtocolException("it began TLS, but this Environment has no keys (tls=off)");
+                javax.net.ssl.SSLSocket secured = tls.server(raw, greeting);
+                Greeting inside = Greeting.read(secured.getInputStream());
+                if (inside.kind() == Greeting.Kind.OBJECT_STREAM) {
+                    return new ObjectConnection(secured, raw, inside, resetEvery, new ProtocolFilter());
+                }
+                return refuse(secured, inside, port);
+            default:
+                return refuse(raw, greeting, port);
+        }
+    }
+
+    /**
+     * Answers a client on {@code socket} (plain, or inside TLS) whose first bytes are not an object stream, in its
+     * own protocol where it has one; always a {@link ProtocolException} (an EOFException when it said nothing).
+     */
+    private static ObjectConnection refuse(Socket socket, Greeting greeting, String port) throws IOException {
+        switch (greeting.kind()) {
             case HTTP:
-                WrongClients.answerHttp(raw, port);
+                WrongClients.answerHttp(socket, port);
                 throw new ProtocolException("it spoke HTTP; told it this is " + port);
             case TEXT:
-                WrongClients.answerLine(raw, port);
+                WrongClients.answerLine(socket, port);
                 throw new ProtocolException("it spoke a line of text; told it this is " + port);
             case NOTHING:
+                socket.close();
                 throw new EOFException("it closed the connection without a word");
             default:
-                throw new ProtocolException(greeting.describe(raw.getInputStream()));
+                String what = greeting.describe(socket.getInputStream());
+                WrongClients.turnAway(socket);
+                throw new ProtocolException(what);
         }
     }
 

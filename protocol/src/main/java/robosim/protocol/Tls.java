@@ -124,9 +124,12 @@ public final class Tls {
             return s;
         } catch (IOException e) {
             raw.close();
+            String why = String.valueOf(e.getMessage());
+            boolean noTls = !(e instanceof javax.net.ssl.SSLHandshakeException) || why.contains("terminated the handshake");
             throw new ProtocolException("TLS handshake with " + raw.getInetAddress().getHostAddress() + ":"
-                    + raw.getPort() + " failed: " + e.getMessage() + (e instanceof javax.net.ssl.SSLHandshakeException
-                            ? " (does every process use the same ROBOSIM_KEYS?)" : ""));
+                    + raw.getPort() + " failed: " + why + (noTls ? " (it may not speak TLS: an "
+                    + "Environment's listening line says tls=on or tls=off)"
+                    : " (does every process use the same ROBOSIM_KEYS?)"));
         }
     }
 

@@ -56,7 +56,13 @@ public final class WrongClients {
     /** What an object-protocol port says to an HTTP or line client: what it is, and where the Control Panel goes. */
     public static String objectPortIs(String port) {
         return "this is " + port + ", which speaks RoboSim's object protocol (robots, viewers, Geometry); the Control "
-                + "Panel uses the control port (8100 by default), a browser the web port (--web-port)";
+                + "Panel uses the control port (" + Protocol.DEFAULT_CONTROL_PORT + " by default), a browser the web "
+                + "port (--web-port)";
+    }
+
+    /** Turns a client away without a word (its protocol is none this port could answer in), then closes. */
+    static void turnAway(Socket raw) throws IOException {
+        answer(raw, new byte[0]);
     }
 
     /** Answers an object-protocol client on {@code raw} with {@code end}, then closes (see the class comment). */
@@ -74,12 +80,15 @@ public final class WrongClients {
         answer(raw, lineRefusal(objectPortIs(port)));
     }
 
+    /** (Over TLS, {@code raw} is the TLS socket: the answer goes encrypted, and the sending side stays open.) */
     private static void answer(Socket raw, byte[] answer) throws IOException {
         try (raw) {
             OutputStream out = raw.getOutputStream();
             out.write(answer);
             out.flush();
-            raw.shutdownOutput();
+            if (!(raw instanceof javax.net.ssl.SSLSocket)) {
+                raw.shutdownOutput();
+            }
             InputStream in = raw.getInputStream();
             byte[] sink = new byte[4096];
             int drained = 0;

@@ -102,7 +102,8 @@ public final class RecordToolMain implements Callable<Integer> {
         if (r.end() != null) {
             out.println("end=" + r.end().reason());
         } else {
-            out.println("end=none: the file stops after step " + (r.steps() == 0 ? "-" : r.stepNumber(r.steps() - 1))
+            out.println("end=none: the file stops after step " + (r.steps() == 0 ? "-"
+                    : robosim.protocol.StepNumbers.shown(r.stepNumber(r.steps() - 1)))
                     + (r.cutShort() == null ? "" : " (" + r.cutShort() + ")"));
         }
     }

@@ -130,7 +130,7 @@ class StrangersTest {
             }
             try (robosim.control.ControlClient control = new robosim.control.ControlClient("127.0.0.1",
                     Integer.parseInt(ports.get("control")), null, (int) TimeUnit.SECONDS.toMillis(LONG_S))) {
-                env.await("paused before step 0", LONG_S);
+                env.await("paused before step 1", LONG_S);
                 if (attack) {
                     List<Socket> strangers = new ArrayList<>();
                     List<CompletableFuture<Void>> sending = new ArrayList<>();

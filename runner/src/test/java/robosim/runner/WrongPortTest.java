@@ -231,6 +231,17 @@ class WrongPortTest {
             assertEquals(1, panel.code(), panel.out() + panel.err());
             assertTrue(panel.out().contains("error=the Environment speaks TLS (tls=on): set ROBOSIM_KEYS to the "
                     + "simulation's keys"), panel.out());
+            // with the keys, at a port of another kind: told inside TLS as without it
+            try (Socket atControl = new Socket(InetAddress.getLoopbackAddress(), tlsControl.port())) {
+                java.io.IOException told = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
+                        () -> new robosim.hardware.HardwareSimulator("robot1", null).connect(atControl, 64, keys));
+                assertEquals(robosimControlRefusal(), told.getMessage());
+            }
+            java.io.IOException panelTold = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
+                    () -> new ControlClient("127.0.0.1", port, keys, ControlFixture.TIMEOUT_MS).close());
+            assertEquals("the Environment gave no challenge: this is the Environment's robot port, which speaks RoboSim's "
+                    + "object protocol (robots, viewers, Geometry); the Control Panel uses the control port (8100 by "
+                    + "default), a browser the web port (--web-port)", panelTold.getMessage());
         } finally {
             tlsControl.close();
             tls.shutdown();

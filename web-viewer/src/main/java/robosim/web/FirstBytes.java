@@ -11,6 +11,7 @@ import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.Greeting;
+import robosim.protocol.Protocol;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.Tls;
 import robosim.protocol.WrongClients;
@@ -22,8 +23,10 @@ import robosim.protocol.WrongClients;
  * {@link SslHandler} when the port has the key pair; anything else is answered in the client's own protocol
  * with what this port is ({@link WrongClients}): a robot, viewer or Geometry process gets a
  * {@link SimulationEnd}, a browser a {@code 400}, a Control Panel a refusal line, and a client of the port's
- * own protocol without TLS at a port that speaks TLS is told so. A client answered so has its further bytes
- * dropped until it closes, or for at most {@value #DRAIN_S} s. Not shared: one per connection; the I/O thread.
+ * own protocol without TLS at a port that speaks TLS is told so. Inside TLS a second one looks at what the client
+ * says there, with the same answers. A client answered (or turned away without a word: TLS at a port without keys,
+ * bytes of no protocol) has its further bytes dropped until it closes, or for at most {@value #DRAIN_S} s, so that
+ * what it is told is not lost to a reset; it is logged once. Not shared: one per connection; the I/O thread.
  */
 public final class FirstBytes extends ByteToMessageDecoder {
     private static final Logger LOG = LoggerFactory.getLogger(FirstBytes.class);
@@ -73,34 +76,35 @@ public final class FirstBytes extends ByteToMessageDecoder {
         }
         switch (kind) {
             case TLS -> {
-                if (tls != null) {
+                if (tls != null) { // (what the client says inside TLS is looked at again, as plain)
                     ctx.pipeline().addAfter(ctx.name(), "tls", new SslHandler(tls.serverEngine()));
+                    ctx.pipeline().addAfter("tls", "first-bytes-in-tls", new FirstBytes(null, speaks, port));
                     ctx.pipeline().remove(this);
                 } else {
-                    LOG.info("{}: {} began TLS, but this Environment has no keys (tls=off); closed", port,
-                            ctx.channel().remoteAddress());
-                    ctx.close();
+                    answer(ctx, in, new byte[0], "TLS, but this Environment has no keys (tls=off)");
                 }
             }
             case OBJECT_STREAM -> answer(ctx, in, WrongClients.objectRefusal(new SimulationEnd(-1, "that is " + port
-                    + "; robots, viewers and Geometry use the Environment's own ports (8000, 3000 and 10000 by default)")),
+                    + "; robots, viewers and Geometry use the Environment's own ports (" + Protocol.DEFAULT_ROBOT_PORT
+                    + ", " + Protocol.DEFAULT_VIEWER_PORT + " and " + Protocol.DEFAULT_GEOMETRY_PORT + " by default)")),
                     "RoboSim's object protocol (a robot, viewer or Geometry process)");
             case HTTP -> answer(ctx, in, WrongClients.httpRefusal("that is " + port + ", not a web page; the browser "
                     + "viewer is on the web port (--web-port)"), "HTTP");
             case TEXT -> answer(ctx, in, WrongClients.lineRefusal("that is " + port + "; the Control Panel uses the "
-                    + "control port (8100 by default)"), "a line of text");
-            default -> {
-                LOG.info("{}: {} sent bytes of no protocol this port knows; closed", port, ctx.channel().remoteAddress());
-                ctx.close();
-            }
+                    + "control port (" + Protocol.DEFAULT_CONTROL_PORT + " by default)"), "a line of text");
+            default -> answer(ctx, in, new byte[0], "bytes of no protocol this port knows");
         }
     }
 
-    /** Writes {@code answer}, shuts the sending side, and drops what the client sends until it closes. */
+    /**
+     * Writes {@code answer} (nothing: turned away without a word), shuts the sending side, and drops what the client
+     * sends until it closes.
+     */
     private void answer(ChannelHandlerContext ctx, ByteBuf in, byte[] answer, String spoke) {
         answered = true;
         in.skipBytes(in.readableBytes());
-        LOG.info("{}: {} spoke {}; told it what this port is", port, ctx.channel().remoteAddress(), spoke);
+        LOG.info("{}: {} spoke {}; {}", port, ctx.channel().remoteAddress(), spoke,
+                answer.length > 0 ? "told it what this port is" : "closed");
         ctx.writeAndFlush(Unpooled.wrappedBuffer(answer))
                 .addListener(f -> ((SocketChannel) ctx.channel()).shutdownOutput());
         ctx.executor().schedule(() -> ctx.close(), DRAIN_S, TimeUnit.SECONDS);

@@ -31,6 +31,10 @@ final class Admission {
         this.stepMessages = stepMessages;
     }
 
+    /** The refusal of a robot of any type whose rule went while its hello was checked ({@link #typed}). */
+    static final String RULE_WENT = "the place it would take in the world went while its hello was checked (removed from "
+            + "the control port?)";
+
     /** Null if the hello may go to the loop, else the refusal. */
     String check(RobotHello hello, int index) {
         if (hello.protocolVersion() != Protocol.VERSION) {
@@ -40,6 +44,7 @@ final class Admission {
         if (hello.name() == null) {
             return "a robot must say its name";
         }
+        WorldSpec.RobotSpec entry;
         if (index < 0) {
             robosim.environment.core.JoinRule rule = rule(hello.name());
             if (rule != null && robosim.environment.core.JoinRule.badName(hello.name()) != null) {
@@ -49,8 +54,10 @@ final class Admission {
                 return "no robot named \"" + Printable.of(hello.name(), 64) + "\" in " + spec.source() + " (robots: "
                         + listed(names) + joiners() + ")";
             }
+            entry = rule.robot(hello.name(), 0, 0);
+        } else {
+            entry = spec.robots().get(index);
         }
-        WorldSpec.RobotSpec entry = entry(hello.name(), index);
         if (hello.anyType()) {
             RobotProperties model = RobotModels.byName(entry.type());
             return model == null ? "robot " + entry.name() + " is a " + entry.type() + " in " + spec.source()
@@ -62,16 +69,28 @@ final class Admission {
 
     /**
      * The hello as the loop takes it, once {@link #check} has passed it: a robot of any type has the properties of
-     * the type the file gives it.
+     * the type the file gives it. Null if that is no longer one every process knows (the rule it joins by went, or
+     * changed, since the check: {@code remove}, {@code add} from the control port meanwhile).
      */
     RobotHello typed(RobotHello hello, int index) {
-        return hello.anyType() ? new RobotHello(hello.name(), RobotModels.byName(entry(hello.name(), index).type()))
-                : hello;
+        if (!hello.anyType()) {
+            return hello;
+        }
+        WorldSpec.RobotSpec entry = entry(hello.name(), index);
+        RobotProperties model = entry == null ? null : RobotModels.byName(entry.type());
+        return model == null ? null : new RobotHello(hello.name(), model);
     }
 
-    /** The file's entry for robot {@code name} ({@code index} in the file, or -1 for one that joins by a rule). */
+    /**
+     * The file's entry for robot {@code name} ({@code index} in the file, or -1 for one that joins by a rule), or null
+     * when there is no rule by that name (any more).
+     */
     private WorldSpec.RobotSpec entry(String name, int index) {
-        return index >= 0 ? spec.robots().get(index) : rule(name).robot(name, 0, 0);
+        if (index >= 0) {
+            return spec.robots().get(index);
+        }
+        robosim.environment.core.JoinRule rule = rule(name);
+        return rule == null ? null : rule.robot(name, 0, 0);
     }
 
     /** The rule a robot of this name joins (or joined) by: an {@code add}, one it joined by, or the file's; or null. */

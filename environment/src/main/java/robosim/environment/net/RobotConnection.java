@@ -60,10 +60,13 @@ final class RobotConnection implements RobotPeer {
         if (refusal == null) {
             refusal = coordinator.admission().check(hello, wanted);
         }
+        RobotHello typed = refusal == null ? coordinator.admission().typed(hello, wanted) : null;
+        if (refusal == null && typed == null) {
+            refusal = Admission.RULE_WENT;
+        }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.RobotJoins(this, coordinator.admission().typed(hello, wanted), wanted,
-                    verdict));
+            coordinator.post(new LoopEvent.RobotJoins(this, typed, wanted, verdict));
             refusal = handshake.verdict(verdict);
         }
         if (refusal != null) {

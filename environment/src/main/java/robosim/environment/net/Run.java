@@ -259,7 +259,7 @@ final class Run {
                 beginHeld = true;
                 control.held(released);
                 coordinator.started();
-                LOG.info("every client is here; paused before step 0 (start or step from the control port)");
+                LOG.info("every client is here; paused before step 1 (start or step from the control port)");
                 viewers.announce(new RunState(released, RunState.Phase.PAUSED));
             }
             return false;

@@ -89,6 +89,10 @@ final class SharedConnection {
             RobotHello hello = hellos.get(slot);
             int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
             String why = coordinator.admission().check(hello, wanted);
+            RobotHello typed = why == null ? coordinator.admission().typed(hello, wanted) : null;
+            if (why == null && typed == null) {
+                why = Admission.RULE_WENT;
+            }
             if (why == null && !names.add(hello.name())) {
                 why = "robot " + Printable.of(hello.name(), 64) + " is named twice on this connection";
             }
@@ -101,8 +105,7 @@ final class SharedConnection {
                 continue;
             }
             robots[slot] = new SharedRobot(this, slot, hello.name());
-            joins.add(new LoopEvent.RobotJoins(robots[slot], coordinator.admission().typed(hello, wanted), wanted,
-                    new CompletableFuture<>()));
+            joins.add(new LoopEvent.RobotJoins(robots[slot], typed, wanted, new CompletableFuture<>()));
         }
         hellos.clear(); // (the refused ones' names are garbage now; the accepted ones' are in their joins)
         names.clear();
