@@ -16,7 +16,9 @@ public final class Printable {
 
     /** As {@link #of}, at most {@code max} characters of it ("..." after when cut). */
     public static String of(String text, int max) {
-        String p = of(text);
-        return p.length() <= max ? p : p.substring(0, max) + "...";
+        if (text == null || text.length() <= max) {
+            return of(text);
+        }
+        return of(text.substring(0, max)) + "..."; // (cut first: a long text costs no more than its head)
     }
 }

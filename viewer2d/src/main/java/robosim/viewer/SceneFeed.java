@@ -55,8 +55,11 @@ public final class SceneFeed implements RunFollower.Listener {
                 && status.kind() != ViewedRun.Kind.LOST;
         if (sameRun && n > world.robotNames().size()
                 && snapshot.robotNames().subList(0, world.robotNames().size()).equals(world.robotNames())) {
-            // robots joined the running world: the others keep their trails, the run its state and rate
+            // robots joined the running world: the others keep their trails, the run its state; the steps per second
+            // are measured afresh (a replay sought forward across a join looks the same, and its jump is no rate)
             world = snapshot;
+            rateStep = -1;
+            stepsPerSecond = Double.NaN;
             ring = java.util.Arrays.copyOf(ring, n);
             for (int i = 0; i < n; i++) {
                 ring[i] = ring[i] == null ? new double[2 * TRAIL_POINTS] : ring[i];

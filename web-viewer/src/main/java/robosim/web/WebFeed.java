@@ -108,7 +108,7 @@ final class WebFeed implements ViewerClient.Listener {
         worldSeen = true;
         if (watch.isEmpty()) {
             clients.snapshot(WebJson.snapshot(snapshot), snapshot.robotNames(), sameRun);
-        } else {
+        } else if (!sameRun) { // (a later world is of the same watch: joined robots, a seek; no new start)
             clients.watchStarted(watch, snapshot.step()); // (its views follow from the next step on)
         }
     }

@@ -44,7 +44,8 @@ function handle(m) {
       const grown = world && m.robots.length > world.robots.length
         && world.robots.every((r, i) => r.name === m.robots[i].name);
       trails = grown ? m.robots.map((r, i) => trails[i] || []) : m.robots.map(() => []);
-      if (!grown) { gone = new Set(); held = new Set(); measureAfresh(); }
+      if (!grown) { gone = new Set(); held = new Set(); }
+      measureAfresh(); // (also when robots joined: a replay sought forward across a join looks the same)
       const arenaKept = world !== null && sameArena(world.arena, m.arena);
       if (!arenaKept) fitted = false;
       world = m; poses = m.poses;

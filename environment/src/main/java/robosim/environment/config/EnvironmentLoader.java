@@ -87,6 +87,7 @@ public final class EnvironmentLoader {
         FileFaults faults = new FileFaults(where);
         Placeholders.Replaced replaced = Placeholders.replace(faults, text, given);
         faults.throwIfAny();
+        faults.placedBy(replaced.columns()); // (from here on, places in the replaced text)
         EnvironmentFile xml = bind(faults, replaced.text());
         Parameters parameters = parameters(faults, xml, replaced.names(), given);
         return check(where, faults, xml, parameters); // (which throws every fault recorded, the parameters' too)
@@ -134,7 +135,7 @@ public final class EnvironmentLoader {
         Map<String, Map<String, String>> robots = new LinkedHashMap<>();
         for (EnvironmentFile.RobotXml r : xml.robots) {
             if (!r.params.isEmpty()) {
-                String el = "<robot name=\"" + r.name + "\">";
+                String el = "<robot name=\"" + FileFaults.cut(r.name) + "\">";
                 Map<String, String> own = params(faults, r, el, r.params);
                 Set<String> all = new HashSet<>(world.keySet());
                 all.addAll(own.keySet());
@@ -154,15 +155,15 @@ public final class EnvironmentLoader {
         Map<String, String> out = new LinkedHashMap<>();
         for (EnvironmentFile.ParamXml p : xml) {
             if (p.name == null || !Placeholders.NAME.matcher(p.name).matches()) {
-                faults.add(p.at, el + " <param name=\"" + (p.name == null ? "" : p.name) + "\"> needs a name of 1 to "
+                faults.add(p.at, el + " <param name=\"" + FileFaults.cut(p.name) + "\"> needs a name of 1 to "
                         + "64 letters, digits, '_', '.' or '-', not a digit first");
             } else if (p.value == null) {
-                faults.add(p.at, el + " <param name=\"" + p.name + "\"> needs a value");
+                faults.add(p.at, el + " <param name=\"" + FileFaults.cut(p.name) + "\"> needs a value");
             } else if (Limits.utfLength(p.value) > Limits.MAX_PARAMETER_BYTES) {
-                faults.add(p.at, el + " <param name=\"" + p.name + "\"> has a value longer than "
+                faults.add(p.at, el + " <param name=\"" + FileFaults.cut(p.name) + "\"> has a value longer than "
                         + Limits.MAX_PARAMETER_BYTES + " bytes");
             } else if (out.put(p.name, p.value) != null) {
-                faults.add(p.at, el + " <param name=\"" + p.name + "\"> is given twice");
+                faults.add(p.at, el + " <param name=\"" + FileFaults.cut(p.name) + "\"> is given twice");
             }
         }
         if (out.size() > Limits.MAX_PARAMETERS) {
@@ -265,7 +266,7 @@ public final class EnvironmentLoader {
         for (int i = 0; i < xml.heatSources.size(); i++) {
             EnvironmentFile.HeatXml src = xml.heatSources.get(i);
             String name = src.name == null ? "heat" + (i + 1) : src.name;
-            String el = "<heat name=\"" + name + "\">";
+            String el = "<heat name=\"" + FileFaults.cut(name) + "\">";
             Double x = ObstacleReader.required(faults, src, el, "x", src.x);
             Double y = ObstacleReader.required(faults, src, el, "y", src.y);
             Double intensity = ObstacleReader.required(faults, src, el, "intensity", src.intensity);
@@ -296,7 +297,7 @@ public final class EnvironmentLoader {
         for (int i = 0; i < xml.robots.size(); i++) {
             EnvironmentFile.RobotXml r = xml.robots.get(i);
             boolean named = r.name != null && !r.name.isBlank();
-            String el = named ? "<robot name=\"" + r.name + "\">" : "<robot> number " + (i + 1);
+            String el = named ? "<robot name=\"" + FileFaults.cut(r.name) + "\">" : "<robot> number " + (i + 1);
             if (!named) {
                 faults.add(r.at, el + " needs a name");
             } else if (r.name.equals(robosim.protocol.CommEvent.EVERYONE)) {
@@ -310,7 +311,7 @@ public final class EnvironmentLoader {
                         + r.join + "\"");
             }
             if (anyTime && named && JoinRule.badName(r.name) != null) {
-                faults.add(r.at, "<robot name=\"" + r.name + "\" join=\"any-time\"> a robot that joins needs a name "
+                faults.add(r.at, "<robot name=\"" + FileFaults.cut(r.name) + "\" join=\"any-time\"> a robot that joins needs a name "
                         + "of 1 to 64 letters, digits and - _ . :");
             }
             Double x = ObstacleReader.required(faults, r, el, "x", r.x);
@@ -358,7 +359,7 @@ public final class EnvironmentLoader {
         }
         for (RobotSpec other : placed) {
             if (Math.hypot(other.xMm() - x, other.yMm() - y) < rad + other.radiusMm()) {
-                faults.add(r.at, el + " overlaps robot \"" + other.name() + "\"");
+                faults.add(r.at, el + " overlaps robot \"" + FileFaults.cut(other.name()) + "\"");
                 break;
             }
         }

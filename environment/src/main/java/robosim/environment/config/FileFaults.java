@@ -24,6 +24,8 @@ final class FileFaults {
     /** The first {@link #SHOWN} faults in file order. */
     private final TreeSet<Fault> first = new TreeSet<>(IN_FILE_ORDER);
     private int count;
+    /** How places in the text read (its placeholders replaced) are the file's: none until {@link #placedBy}. */
+    private Placeholders.Columns columns;
 
     /** One fault: where, the how-manieth found, and its line. */
     private record Fault(FilePosition at, int found, String line) {
@@ -34,18 +36,27 @@ final class FileFaults {
         this.file = file;
     }
 
+    /**
+     * A name from the file as a fault's line shows it: at most 64 characters, control characters as '?' (a fault
+     * line repeats its element's name, so a name of megabytes must not be copied into every one).
+     */
+    static String cut(String name) {
+        return Printable.of(name, 64);
+    }
+
     /** A fault at {@code at} (null: of no one place); {@code what} is shown on one line, control characters as '?'. */
     void add(FilePosition at, String what) {
-        first.add(new Fault(at, count, Printable.of(file + (at == null ? "" : ":" + at) + ": " + what)));
+        FilePosition place = columns == null ? at : columns.inFile(at);
+        first.add(new Fault(place, count, Printable.of(file + (place == null ? "" : ":" + place) + ": " + what)));
         count++;
         if (first.size() > SHOWN) {
             first.pollLast();
         }
     }
 
-    /** How many faults have been found. */
-    int count() {
-        return count;
+    /** Faults added from now on are at places in the text as read, its placeholders replaced as {@code c} says. */
+    void placedBy(Placeholders.Columns c) {
+        columns = c;
     }
 
     /** Throws every fault found, if there is one. */

@@ -63,7 +63,7 @@ final class ObstacleReader {
                 tag = p.taggable;
             }
             if (!names.add(name)) {
-                faults.add(o.at, "obstacle name \"" + name + "\" is used twice");
+                faults.add(o.at, "obstacle name \"" + FileFaults.cut(name) + "\" is used twice");
             }
             if (shape != null) {
                 out.add(shape);
@@ -76,7 +76,7 @@ final class ObstacleReader {
     }
 
     private static ObstacleShape rectangle(FileFaults faults, EnvironmentFile.RectangleXml r, String name) {
-        String el = "<rectangle name=\"" + name + "\">";
+        String el = "<rectangle name=\"" + FileFaults.cut(name) + "\">";
         Double x = required(faults, r, el, "x", r.x);
         Double y = required(faults, r, el, "y", r.y);
         Double w = required(faults, r, el, "width", r.width);
@@ -90,7 +90,7 @@ final class ObstacleReader {
     }
 
     private static ObstacleShape polygon(FileFaults faults, EnvironmentFile.PolygonXml p, String name) {
-        String el = "<polygon name=\"" + name + "\">";
+        String el = "<polygon name=\"" + FileFaults.cut(name) + "\">";
         double[] xy = points(faults, p, el);
         if (xy == null) {
             return null;

@@ -12,7 +12,8 @@ import java.util.regex.Pattern;
  * as written. A given value is escaped for XML (it is text, never markup); a default is part of the file and
  * taken as written. A placeholder without a default needs a value. {@code $${} is a {@code ${} of the file's own
  * (not a placeholder). Placeholders are found anywhere, comments included. Replacing keeps every line where it was
- * (a value holds no line break), so a later error's line number is the file's.
+ * (a value holds no line break), so a later error's line number is the file's; its column is the file's through
+ * {@link Columns} (a place inside a value is the placeholder's).
  */
 final class Placeholders {
     /** What a parameter's name may be: 1 to 64 of {@code A-Z a-z 0-9 _ . -}, not a digit first. */
@@ -20,8 +21,41 @@ final class Placeholders {
     /** {@code $${} (a literal), or {@code ${name}} / {@code ${name:default}} within one line, nothing nested. */
     private static final Pattern PLACEHOLDER = Pattern.compile("\\$\\$\\{|\\$\\{([^}:\\n\\r${]*)(?::([^}\\n\\r${]*))?}");
 
-    /** The file's text with every placeholder replaced, and the names it held. */
-    record Replaced(String text, Set<String> names) {
+    /** The file's text with every placeholder replaced, the names it held, and where its columns were the file's. */
+    record Replaced(String text, Set<String> names, Columns columns) {
+    }
+
+    /**
+     * Where each replacement moved a line's columns: a place in the replaced text is taken back to the file's (one
+     * inside a replaced value to where its placeholder starts).
+     */
+    static final class Columns {
+        /** Per line: each replacement's {out start, out end, file start, file end} columns, in line order. */
+        private final Map<Integer, java.util.List<int[]>> byLine = new java.util.HashMap<>();
+
+        private void replaced(int line, int outStart, int outEnd, int fileStart, int fileEnd) {
+            byLine.computeIfAbsent(line, k -> new java.util.ArrayList<>())
+                    .add(new int[] {outStart, outEnd, fileStart, fileEnd});
+        }
+
+        /** The file's place of {@code at}, a place in the replaced text (null stays null). */
+        FilePosition inFile(FilePosition at) {
+            java.util.List<int[]> on = at == null ? null : byLine.get(at.line());
+            if (on == null) {
+                return at;
+            }
+            int shift = 0;
+            for (int[] r : on) {
+                if (at.column() < r[0]) {
+                    break;
+                }
+                if (at.column() < r[1]) {
+                    return new FilePosition(at.line(), r[2]);
+                }
+                shift = r[3] - r[1];
+            }
+            return new FilePosition(at.line(), at.column() + shift);
+        }
     }
 
     private Placeholders() {
@@ -33,7 +67,10 @@ final class Placeholders {
      */
     static Replaced replace(FileFaults faults, String text, Map<String, String> given) {
         Set<String> names = new TreeSet<>();
+        Columns columns = new Columns();
         Lines lines = new Lines(text);
+        int shiftLine = 0;
+        int shift = 0; // (how far this line's replacements so far moved its columns)
         Matcher m = PLACEHOLDER.matcher(text);
         StringBuilder out = new StringBuilder(text.length());
         int from = 0;
@@ -46,8 +83,15 @@ final class Placeholders {
             }
             out.append(text, from, m.start());
             from = m.end();
+            FilePosition at = lines.at(m.start());
+            if (at.line() != shiftLine) {
+                shiftLine = at.line();
+                shift = 0;
+            }
             if (m.group().equals("$${")) {
                 out.append("${");
+                columns.replaced(at.line(), at.column() + shift, at.column() + shift + 2, at.column(), at.column() + 3);
+                shift -= 1;
                 continue;
             }
             String name = m.group(1);
@@ -72,12 +116,15 @@ final class Placeholders {
             }
             names.add(name);
             out.append(value);
+            columns.replaced(at.line(), at.column() + shift, at.column() + shift + value.length(), at.column(),
+                    at.column() + m.group().length());
+            shift += value.length() - m.group().length();
         }
         for (int open = text.indexOf("${", from); open >= 0; open = text.indexOf("${", lines.end(open))) {
             faults.add(lines.at(open), unclosed());
         }
         out.append(text, from, text.length());
-        return new Replaced(out.toString(), names);
+        return new Replaced(out.toString(), names, columns);
     }
 
     private static String unclosed() {

@@ -92,7 +92,7 @@ final class RobotReader {
                 continue;
             }
             String name = s.name == null || s.name.isBlank() ? s.type : s.name;
-            String el = robot + " <sensor name=\"" + name + "\">";
+            String el = robot + " <sensor name=\"" + FileFaults.cut(name) + "\">";
             boolean usable = true;
             if (!names.add(name)) {
                 faults.add(s.at, el + " the name is used twice on this robot");

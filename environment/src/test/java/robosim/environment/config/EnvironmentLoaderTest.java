@@ -266,6 +266,40 @@ class EnvironmentLoaderTest {
     }
 
     @Test
+    void aFaultAfterAPlaceholderOnItsLineIsAtTheFilesColumnNotTheReplacedTexts() throws Exception {
+        Path f = write("""
+                <environment timeStepMs="500">
+                  <arena width="${w:10}" height="5"/>
+                  <robots>
+                    <robot name="${n:r1}" type="ArRobot" x="1" y="1"/> <robot name="r2" type="Hover" x="5" y="3"/>
+                  </robots>
+                </environment>
+                """);
+        List<String> lines = faults(f);
+        assertEquals(1, lines.size(), String.join("\n", lines));
+        assertTrue(lines.get(0).startsWith(f + ":4:56: <robot name=\"r2\"> type \"Hover\""), lines.get(0));
+        // the same with a longer value given for the placeholder: the file's column still
+        EnvironmentFileException e = assertThrows(EnvironmentFileException.class,
+                () -> new EnvironmentLoader().load(f, java.util.Map.of("n", "a-much-longer-name")));
+        assertTrue(e.getMessage().startsWith(f + ":4:56: <robot name=\"r2\"> type \"Hover\""), e.getMessage());
+    }
+
+    @Test
+    void aNameOfMegabytesIsCutInEveryFaultThatNamesIt() throws Exception {
+        String name = "n".repeat(400_000);
+        StringBuilder params = new StringBuilder();
+        for (int i = 0; i < 30; i++) {
+            params.append("<param/>");
+        }
+        Path f = write("<environment timeStepMs=\"500\"><arena width=\"10\" height=\"5\"/><robots>\n<robot name=\""
+                + name + "\" type=\"ArRobot\" x=\"1\" y=\"1\">" + params + "</robot></robots></environment>");
+        List<String> lines = faults(f);
+        assertEquals(FileFaults.SHOWN + 1, lines.size(), lines.get(0));
+        assertTrue(lines.stream().allMatch(l -> l.length() < 400), "each line names the robot cut: " + lines.get(0));
+        assertTrue(lines.get(0).contains("<robot name=\"" + "n".repeat(64) + "...\">"), lines.get(0));
+    }
+
+    @Test
     void theFirstTwentyFaultsInFileOrderAreShownThenHowManyMore() throws Exception {
         StringBuilder robots = new StringBuilder();
         for (int i = 1; i <= 25; i++) {
