@@ -1,17 +1,13 @@
 package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static robosim.runner.InJvmCommand.run;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.Socket;
-import java.nio.charset.StandardCharsets;
 import java.util.List;
-import java.util.concurrent.Callable;
 import org.junit.jupiter.api.Test;
-import picocli.CommandLine;
 import robosim.geometry.GeometryMain;
 import robosim.hardware.MultiRobotMain;
 import robosim.hardware.RobotMain;
@@ -22,26 +18,10 @@ import robosim.hardware.RobotMain;
  * once while it waits.
  */
 class ConnectionErrorsTest {
-    /** Exit code and stderr lines of one command line run in this JVM. */
-    private record Run(int code, List<String> err) {
-    }
-
-    private static Run run(Callable<Integer> command, String... args) {
-        PrintStream saved = System.err;
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-        int code;
-        try {
-            code = new CommandLine(command).execute(args);
-        } finally {
-            System.setErr(saved);
-        }
-        return new Run(code, err.toString(StandardCharsets.UTF_8).lines().toList());
-    }
 
     @Test
     void aRobotGivenAHostThatDoesNotExistSaysSoInOneLine() {
-        Run r = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "nosuchhost.invalid", "8000");
+        var r = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "nosuchhost.invalid", "8000");
         assertEquals(2, r.code(), r.err().toString());
         assertEquals(List.of("robot r1: cannot connect to the Environment at nosuchhost.invalid:8000: unknown host "
                 + "nosuchhost.invalid"), r.err());
@@ -49,7 +29,7 @@ class ConnectionErrorsTest {
 
     @Test
     void geometryGivenAHostThatDoesNotExistSaysSoInOneLine() {
-        Run r = run(new GeometryMain(), "nosuchhost.invalid", "10000");
+        var r = run(new GeometryMain(), "nosuchhost.invalid", "10000");
         assertEquals(2, r.code(), r.err().toString());
         assertEquals(List.of("geometry: cannot connect to nosuchhost.invalid:10000: unknown host nosuchhost.invalid"),
                 r.err());
@@ -57,14 +37,14 @@ class ConnectionErrorsTest {
 
     @Test
     void aPortOutOfRangeIsOneLineAndExit2ForRobotsAndGeometry() {
-        Run robot = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "localhost", "99999");
+        var robot = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "localhost", "99999");
         assertEquals(2, robot.code(), robot.err().toString());
         assertEquals(List.of("robot r1: localhost:99999: port 99999 is not a TCP port (1..65535)"), robot.err());
-        Run robots = run(new robosim.hardware.MultiRobotMain(), "--robot", "r1:ArRobot:robosim.examples.BackAndForth",
+        var robots = run(new robosim.hardware.MultiRobotMain(), "--robot", "r1:ArRobot:robosim.examples.BackAndForth",
                 "localhost", "70000");
         assertEquals(2, robots.code(), robots.err().toString());
         assertEquals(List.of("robots: localhost:70000: port 70000 is not a TCP port (1..65535)"), robots.err());
-        Run geometry = run(new GeometryMain(), "localhost", "-1");
+        var geometry = run(new GeometryMain(), "localhost", "-1");
         assertEquals(2, geometry.code(), geometry.err().toString());
         assertEquals(List.of("geometry: localhost:-1: port -1 is not a TCP port (1..65535)"), geometry.err());
     }
@@ -74,7 +54,7 @@ class ConnectionErrorsTest {
         try (Socket reserved = new Socket()) {
             reserved.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0)); // bound, never listening
             String port = Integer.toString(reserved.getLocalPort());
-            Run r = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "127.0.0.1", port,
+            var r = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "127.0.0.1", port,
                     "--connect-timeout-s", "1");
             assertEquals(1, r.code(), r.err().toString());
             assertEquals(List.of(
@@ -89,7 +69,7 @@ class ConnectionErrorsTest {
         try (Socket reserved = new Socket()) {
             reserved.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0));
             String port = Integer.toString(reserved.getLocalPort());
-            Run r = run(new MultiRobotMain(), "127.0.0.1", port, "--connect-timeout-s", "1",
+            var r = run(new MultiRobotMain(), "127.0.0.1", port, "--connect-timeout-s", "1",
                     "--robot", "a:ArRobot:robosim.examples.BackAndForth",
                     "--robot", "b:ArRobot:robosim.examples.BackAndForth");
             assertEquals(1, r.code(), r.err().toString());

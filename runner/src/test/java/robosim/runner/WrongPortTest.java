@@ -1,23 +1,20 @@
 package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static robosim.runner.InJvmCommand.run;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
-import java.io.ByteArrayOutputStream;
-import java.io.PrintStream;
 import java.net.InetAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.concurrent.Callable;
 import java.util.concurrent.CompletableFuture;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import picocli.CommandLine;
 import robosim.control.ControlClient;
 import robosim.control.ControlPanelMain;
 import robosim.environment.config.EnvironmentLoader;
@@ -47,32 +44,7 @@ class WrongPortTest {
     private static int controlPort;
     private static robosim.web.WebViewerServer web;
 
-    /** Exit code and stderr lines of one command line run in this JVM. */
-    private record Run(int code, List<String> err, String out) {
-    }
 
-    private static Run run(Callable<Integer> command, String... args) {
-        PrintStream savedErr = System.err;
-        PrintStream savedOut = System.out;
-        ByteArrayOutputStream err = new ByteArrayOutputStream();
-        ByteArrayOutputStream out = new ByteArrayOutputStream();
-        System.setErr(new PrintStream(err, true, StandardCharsets.UTF_8));
-        System.setOut(new PrintStream(out, true, StandardCharsets.UTF_8));
-        int code;
-        try {
-            code = new CommandLine(command).execute(args);
-        } finally {
-            System.setErr(savedErr);
-            System.setOut(savedOut);
-        }
-        return new Run(code, err.toString(StandardCharsets.UTF_8).lines().filter(WrongPortTest::said).toList(),
-                out.toString(StandardCharsets.UTF_8));
-    }
-
-    /** A line the client said (not the Environment's log, which shares this JVM's stderr: "12:00:00.000 [thread] ..."). */
-    private static boolean said(String line) {
-        return !line.matches("^\\d\\d:\\d\\d:\\d\\d\\.\\d+ \\[.*");
-    }
 
     /** What the control port tells a client of the object protocol. */
     private static String robosimControlRefusal() {
@@ -115,26 +87,26 @@ class WrongPortTest {
 
     @Test
     void aRobotAtAnotherPortIsToldWhichPortItWants() {
-        Run atViewers = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + viewers);
+        var atViewers = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + viewers);
         assertEquals(1, atViewers.code(), atViewers.err().toString());
         assertEquals(List.of("robot rc1: 127.0.0.1:" + viewers + ": that is the Environment's viewer port; robots use "
                 + robots), atViewers.err());
-        Run atGeometry = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + geometry);
+        var atGeometry = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + geometry);
         assertEquals(List.of("robot rc1: 127.0.0.1:" + geometry + ": that is the Environment's Geometry port; robots use "
                 + robots), atGeometry.err());
-        Run atControl = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + controlPort);
+        var atControl = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + controlPort);
         assertEquals(1, atControl.code(), atControl.err().toString());
         assertEquals(List.of("robot rc1: 127.0.0.1:" + controlPort + ": " + robosimControlRefusal()), atControl.err());
     }
 
     @Test
     void aRobotAtTheWebPortIsToldAndTheControlPanelToo() {
-        Run robot = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + web.port());
+        var robot = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + web.port());
         assertEquals(1, robot.code(), robot.err().toString());
         assertEquals(List.of("robot rc1: 127.0.0.1:" + web.port() + ": that is the Environment's web port (a browser's); "
                 + "robots, viewers and Geometry use the Environment's own ports (8000, 3000 and 10000 by default)"),
                 robot.err());
-        Run panel = run(new ControlPanelMain(), "127.0.0.1", "" + web.port(), "status");
+        var panel = run(new ControlPanelMain(), "127.0.0.1", "" + web.port(), "status");
         assertEquals(1, panel.code(), panel.out() + panel.err());
         assertTrue(panel.out().contains("error=that is the Environment's web port (a browser's); the Control Panel uses "
                 + "the control port (8100 by default)"), panel.out());
@@ -154,7 +126,7 @@ class WrongPortTest {
 
     @Test
     void severalRobotsOverOneConnectionAtTheViewerPortAreToldToo() {
-        Run r = run(new MultiRobotMain(), "127.0.0.1", "" + viewers, "--robot", "a:ArRobot:robosim.examples.BackAndForth");
+        var r = run(new MultiRobotMain(), "127.0.0.1", "" + viewers, "--robot", "a:ArRobot:robosim.examples.BackAndForth");
         assertEquals(1, r.code(), r.err().toString());
         assertEquals(List.of("robots: 127.0.0.1:" + viewers + ": that is the Environment's viewer port; robots use "
                 + robots), r.err());
@@ -173,7 +145,7 @@ class WrongPortTest {
 
     @Test
     void geometryAtTheViewerPortIsToldAndExitsNonZero() {
-        Run r = run(new GeometryMain(), "127.0.0.1", "" + viewers);
+        var r = run(new GeometryMain(), "127.0.0.1", "" + viewers);
         assertEquals(1, r.code(), r.err().toString());
         assertEquals(List.of("geometry: 127.0.0.1:" + viewers + ": that is the Environment's viewer port; Geometry uses "
                 + geometry), r.err());
@@ -181,7 +153,7 @@ class WrongPortTest {
 
     @Test
     void theControlPanelAtTheRobotPortIsToldWhereTheControlPortIs() {
-        Run r = run(new ControlPanelMain(), "127.0.0.1", "" + robots, "status");
+        var r = run(new ControlPanelMain(), "127.0.0.1", "" + robots, "status");
         assertEquals(1, r.code(), r.out() + r.err());
         assertTrue(r.out().contains("ok=false"), r.out());
         assertTrue(r.out().contains("error=this is the Environment's robot port, which speaks RoboSim's object protocol "
@@ -191,7 +163,7 @@ class WrongPortTest {
     @Test
     void aRobotAtAPortThatNeverAnswersEndsWithinItsTimeoutSayingSo() throws Exception {
         try (ServerSocket silent = new ServerSocket(0, 4, InetAddress.getLoopbackAddress())) {
-            Run r = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + silent.getLocalPort(),
+            var r = run(new RobotMain(), "robosim.examples.BackAndForth", "rc1", "127.0.0.1", "" + silent.getLocalPort(),
                     "--connect-timeout-s", "1");
             assertEquals(1, r.code(), r.err().toString());
             assertEquals(List.of("robot rc1: 127.0.0.1:" + silent.getLocalPort() + ": no answer within 5 s: nothing "
@@ -223,11 +195,11 @@ class WrongPortTest {
         tlsControl.start(InetAddress.getLoopbackAddress(), 0);
         try {
             int port = tls.ports()[0];
-            Run robot = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "127.0.0.1", "" + port);
+            var robot = run(new RobotMain(), "robosim.examples.BackAndForth", "r1", "127.0.0.1", "" + port);
             assertEquals(1, robot.code(), robot.err().toString());
             assertEquals(List.of("robot r1: 127.0.0.1:" + port + ": the Environment speaks TLS (tls=on): set "
                     + "ROBOSIM_KEYS to the simulation's keys"), robot.err());
-            Run panel = run(new ControlPanelMain(), "127.0.0.1", "" + tlsControl.port(), "status");
+            var panel = run(new ControlPanelMain(), "127.0.0.1", "" + tlsControl.port(), "status");
             assertEquals(1, panel.code(), panel.out() + panel.err());
             assertTrue(panel.out().contains("error=the Environment speaks TLS (tls=on): set ROBOSIM_KEYS to the "
                     + "simulation's keys"), panel.out());
