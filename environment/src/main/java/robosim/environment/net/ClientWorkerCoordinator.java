@@ -13,6 +13,11 @@ import java.util.concurrent.TimeoutException;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.server.Acceptors;
+import robosim.environment.server.Port;
+import robosim.environment.server.ServerContext;
+import robosim.environment.server.ViewerClientWorker;
+import robosim.environment.server.ViewerSink;
 import robosim.protocol.InMemoryLink;
 import robosim.protocol.RobotHello;
 
@@ -41,6 +46,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     private final Design design;
     private final Inbox<Run> inbox;
     private final Run run;
+    private final ServerContext server;
+    private final RunViewers viewers;
     private final Acceptors acceptors;
     private final CountDownLatch endedLatch = new CountDownLatch(1);
     private final CountDownLatch startedLatch = new CountDownLatch(1);
@@ -48,10 +55,6 @@ public final class ClientWorkerCoordinator implements Closeable {
     private Thread loop;
     /** Starts the file's robots in this JVM (a one-JVM run), or null: every robot connects. */
     private InMemoryLink.Starter inMemory;
-    /** What every client not yet accepted may hold in this Environment, all ports together. */
-    private final StrangerBudget strangers = new StrangerBudget(StrangerBudget.DEFAULT_BYTES);
-    /** Cuts off every connection that misses its handshake deadline or does not take a write in time. */
-    private final ConnectionWatch watch;
 
     /** @throws IllegalArgumentException for {@code SEQUENTIAL} with a lost robot held (its stepper reads a fixed list) */
     public ClientWorkerCoordinator(WorldSpec spec, Settings settings) {
@@ -66,9 +69,11 @@ public final class ClientWorkerCoordinator implements Closeable {
         this.admission = new Admission(spec, robotNames, settings.stepMessages());
         // each robot has at most a request and a departure outstanding; the rest is rare
         this.inbox = new Inbox<>(2 * (robotNames.size() + spec.joinable()) + 1024, POST_LIMIT_MS);
+        this.server = ServerContext.of(settings.keys(), settings.resetEvery(), settings.handshakeTimeoutMs(),
+                settings.writeTimeoutMs(), Port.environment(this::ports));
+        this.viewers = new RunViewers(this::post, spec, this::status);
         this.run = new Run(this, new RunListeners(runListeners));
-        this.acceptors = new Acceptors(this);
-        this.watch = new ConnectionWatch(settings.handshakeTimeoutMs(), settings.writeTimeoutMs());
+        this.acceptors = new Acceptors(server, settings.bind(), 1024);
     }
 
     /** Adds a listener; call before {@link #start} to hear everything. */
@@ -99,7 +104,14 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** Binds the three ports and starts accepting; a port in use is a {@link java.net.BindException} naming it. */
     public void start() throws IOException {
-        acceptors.bind();
+        int cap = settings.maxConnections();
+        int robots = spec.robots().size() + spec.joinable(); // (and its join rules')
+        acceptors.bind(Port.ROBOT, settings.robotPort(), robots + cap, (s, n) -> new RobotClientWorker(this, s, n));
+        acceptors.bind(Port.VIEWER, settings.viewerPort(), cap,
+                (s, n) -> new ViewerClientWorker(server, s, "viewer-worker[" + n + "]", viewers));
+        if (!settings.inProcessGeometry()) {
+            acceptors.bind(Port.GEOMETRY, settings.geometryPort(), cap, (s, n) -> new GeometryClientWorker(this, s));
+        }
         startLoop();
         acceptors.accept();
         LOG.info("waiting for {} robot(s){}", robotNames.size(),
@@ -167,7 +179,6 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** Starts the {@code simulation-loop} thread; events posted from now on are taken. */
     void startLoop() {
-        watch.start();
         loop = new Thread(new SimulationLoop(this, inbox, run), "simulation-loop");
         loop.setDaemon(true);
         loop.start();
@@ -175,7 +186,17 @@ public final class ClientWorkerCoordinator implements Closeable {
 
     /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */
     public int[] ports() {
-        return acceptors.ports();
+        return new int[] {acceptors.port(Port.ROBOT), acceptors.port(Port.VIEWER), acceptors.port(Port.GEOMETRY)};
+    }
+
+    /** What every connection is served with. */
+    ServerContext server() {
+        return server;
+    }
+
+    /** The run's viewers. */
+    RunViewers viewers() {
+        return viewers;
     }
 
     Settings settings() {
@@ -220,24 +241,8 @@ public final class ClientWorkerCoordinator implements Closeable {
     void loopEnded() {
         inbox.close();
         acceptors.close();
-        watch.stopWhenIdle();
         endedLatch.countDown();
         startedLatch.countDown();
-    }
-
-    /** The one budget of every client not yet accepted. */
-    StrangerBudget strangers() {
-        return strangers;
-    }
-
-    /** Times every connection's handshake and writes. */
-    ConnectionWatch watch() {
-        return watch;
-    }
-
-    /** A viewer's worker has ended after the run (any thread): it is no longer one of the run's viewers. */
-    void viewerLeft(ViewerClientWorker viewer, String why) {
-        run.viewers().remove(viewer, why);
     }
 
     /** Blocks until the simulation is over. */

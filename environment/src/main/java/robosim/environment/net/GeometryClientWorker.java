@@ -1,5 +1,7 @@
 package robosim.environment.net;
 
+import robosim.environment.server.ClientWorker;
+import robosim.environment.server.Port;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -37,17 +39,19 @@ final class GeometryClientWorker extends ClientWorker {
     /** At most two worlds (the first and one after robots joined), one step and the end are ever outstanding. */
     private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
 
+    private final ClientWorkerCoordinator coordinator;
+
     GeometryClientWorker(ClientWorkerCoordinator coordinator, Socket socket) {
-        super(coordinator, socket, "geometry-worker", Port.GEOMETRY);
+        super(coordinator.server(), socket, "geometry-worker", Port.GEOMETRY);
+        this.coordinator = coordinator;
     }
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        GeometryHello hello = (GeometryHello) handshake.hello(port, coordinator.ports());
+        GeometryHello hello = (GeometryHello) handshake.hello(port);
         String refusal = handshake.heard("geometry");
-        if (refusal == null && hello.protocolVersion() != Protocol.VERSION) {
-            refusal = "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
-                    + Protocol.VERSION + ")";
+        if (refusal == null) {
+            refusal = handshake.version(hello.protocolVersion());
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();

@@ -4,6 +4,8 @@ import java.io.IOException;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import robosim.environment.core.JoinRule;
+import robosim.environment.server.ViewerSink;
+import robosim.environment.server.Viewers;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.RobotHello;
 import robosim.protocol.StepRequest;
@@ -133,7 +135,7 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
     }
 
     /** A viewer said hello; it gets the snapshot it starts from, and updates follow without a gap. */
-    record ViewerJoins(ViewerClientWorker viewer, CompletableFuture<WorldSnapshot> snapshot) implements LoopEvent {
+    record ViewerJoins(ViewerSink viewer, CompletableFuture<WorldSnapshot> snapshot) implements LoopEvent {
         @Override
         public void apply(Run run) {
             run.addViewer(viewer, snapshot);
@@ -145,8 +147,11 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
         }
     }
 
-    /** A viewer's worker has ended; {@code cutOff}: the connection watch cut it off (it did not take a write). */
-    record ViewerLeaves(ViewerClientWorker viewer, String why, boolean cutOff) implements LoopEvent {
+    /**
+     * A viewer's worker has ended; {@code cutOff}: the connection watch cut it off (it did not take a write). Once
+     * the run is over it leaves {@code viewers} at once.
+     */
+    record ViewerLeaves(ViewerSink viewer, String why, boolean cutOff, Viewers viewers) implements LoopEvent {
         @Override
         public void apply(Run run) {
             run.viewerLeft(viewer, why, cutOff);
@@ -154,12 +159,12 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
 
         @Override
         public void refuse() {
-            viewer.leftAfterTheRun(why);
+            viewers.remove(viewer, why);
         }
     }
 
     /** A recording viewer that was full has taken updates: a step held for it may go out (the loop tries again). */
-    record ViewerHasRoom(ViewerClientWorker viewer) implements LoopEvent {
+    record ViewerHasRoom() implements LoopEvent {
         @Override
         public void apply(Run run) {
         }

@@ -1,5 +1,7 @@
 package robosim.environment.net;
 
+import robosim.environment.server.ConnectionWatch;
+import robosim.environment.server.ConnectionClock;
 import java.io.IOException;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.RobotWelcome;

@@ -1,5 +1,7 @@
 package robosim.environment.net;
 
+import robosim.environment.server.Viewers;
+import robosim.environment.server.ViewerQueue;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.RunState;

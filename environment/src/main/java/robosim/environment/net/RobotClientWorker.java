@@ -1,5 +1,8 @@
 package robosim.environment.net;
 
+import robosim.environment.server.Handshake;
+import robosim.environment.server.ClientWorker;
+import robosim.environment.server.Port;
 import java.io.Externalizable;
 import java.io.IOException;
 import java.net.Socket;
@@ -15,18 +18,20 @@ import robosim.protocol.SharedHello;
  * is refused as its class is read (the connection is dropped with the reason).
  */
 final class RobotClientWorker extends ClientWorker {
+    private final ClientWorkerCoordinator coordinator;
     private final int serial;
     private volatile RobotConnection robot;
     private volatile SharedConnection shared;
 
     RobotClientWorker(ClientWorkerCoordinator coordinator, Socket socket, int serial) {
-        super(coordinator, socket, "robot-worker[#" + serial + "]", Port.ROBOT);
+        super(coordinator.server(), socket, "robot-worker[#" + serial + "]", Port.ROBOT);
+        this.coordinator = coordinator;
         this.serial = serial;
     }
 
     @Override
     protected void serve() throws IOException, InterruptedException {
-        Externalizable first = handshake.hello(port, coordinator.ports());
+        Externalizable first = handshake.hello(port);
         if (first instanceof SharedHello h) {
             rename("robot-worker[shared #" + serial + "]");
             SharedConnection s = new SharedConnection(this, coordinator, connection, handshake);

@@ -1,5 +1,7 @@
 package robosim.environment.net;
 
+import robosim.environment.server.Handshake;
+import robosim.environment.server.ConnectionClock;
 import robosim.protocol.Printable;
 import java.io.IOException;
 import java.util.concurrent.CompletableFuture;

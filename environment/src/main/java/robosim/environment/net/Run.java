@@ -12,6 +12,8 @@ import robosim.environment.core.JoinRule;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.SpawnPlacer;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.server.ViewerSink;
+import robosim.environment.server.Viewers;
 import robosim.protocol.Arena;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
@@ -116,7 +118,7 @@ final class Run {
         this.roster = new Roster(spec);
         this.geometry = new GeometryLink(settings);
         this.control = new RunControl(settings.speed(), spec.timeStepMs(), this::publishPhase);
-        this.viewers = new Viewers();
+        this.viewers = coordinator.viewers().list();
         this.inMemory = new InMemoryRequests(coordinator::post);
         this.releasePoint = new ReleasePoint(control, viewers, record, listener, settings.speed());
         this.stepTimeoutNanos = settings.stepTimeoutMs() <= 0 ? Long.MAX_VALUE : settings.stepTimeoutMs() * 1_000_000L;
@@ -973,7 +975,7 @@ final class Run {
     // ---- viewers and the recording -------------------------------------------------------------------------
 
     /** A viewer joins: it gets the snapshot it starts from, then the run's state (or its end). */
-    void addViewer(ViewerClientWorker viewer, CompletableFuture<WorldSnapshot> snapshot) {
+    void addViewer(ViewerSink viewer, CompletableFuture<WorldSnapshot> snapshot) {
         viewers.add(viewer);
         snapshot.complete(snapshot());
         if (phase == Phase.ENDED) {
@@ -985,7 +987,7 @@ final class Run {
     }
 
     /** A viewer's worker has ended; one the connection watch cut off is reported as dropped. */
-    void viewerLeft(ViewerClientWorker viewer, String why, boolean cutOff) {
+    void viewerLeft(ViewerSink viewer, String why, boolean cutOff) {
         if (viewers.remove(viewer, why) && cutOff) {
             listener.viewerDropped(viewer.viewerName(), why);
         }

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.environment.server.Handshake;
 import robosim.protocol.Printable;
 import java.io.IOException;
 import java.util.ArrayList;

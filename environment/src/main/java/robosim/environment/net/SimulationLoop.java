@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.environment.server.ConnectionWatch;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;

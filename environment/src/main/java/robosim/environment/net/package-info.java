@@ -27,13 +27,13 @@
  * <tr><td>{@code geometry-worker}</td><td>{@link robosim.environment.net.GeometryClientWorker}</td><td>the
  *     Geometry connection: the world, each step's round trip, the end</td><td>its task queue; the round
  *     trip</td></tr>
- * <tr><td>{@code viewer-worker[n]}</td><td>{@link robosim.environment.net.ViewerClientWorker}</td><td>one
+ * <tr><td>{@code viewer-worker[n]}</td><td>{@link robosim.environment.server.ViewerClientWorker}</td><td>one
  *     per viewer: the snapshot, then its bounded, coalescing queue</td><td>its queue; its socket
  *     write</td></tr>
  * <tr><td>{@code accept-robots}, {@code accept-viewers}, {@code accept-geometry}</td><td>{@link
- *     robosim.environment.net.Acceptors}</td><td>accept connections; close at once one over the port's
+ *     robosim.environment.server.Acceptors}</td><td>accept connections; close at once one over the port's
  *     cap</td><td>accept</td></tr>
- * <tr><td>{@code connection-watch}</td><td>{@link robosim.environment.net.ConnectionWatch}</td><td>cuts off
+ * <tr><td>{@code connection-watch}</td><td>{@link robosim.environment.server.ConnectionWatch}</td><td>cuts off
  *     any connection (robot, shared, viewer, Geometry) that misses its handshake deadline or does not take a
  *     write within the write timeout</td><td>sleeps between looks</td></tr>
  * <tr><td>{@code recorder}</td><td>{@link robosim.environment.net.RunRecorder} ({@code --record})</td>
@@ -45,8 +45,8 @@
  * within the step. With {@code --one-jvm} the file's robots start no thread here: their control threads
  * ({@code control[name]}, the Hardware Simulator's) hand their requests to
  * {@link robosim.environment.net.InMemoryRequests}, and the last one owed wakes the loop.
- * A replay ({@code robosim.environment.replay}) has its own clock thread and uses this package's
- * {@link robosim.environment.net.Inbox}, {@link robosim.environment.net.Viewers} and
- * {@link robosim.environment.net.ConnectionWatch}.
+ * A replay ({@code robosim.environment.replay}) has its own clock thread and this package's
+ * {@link robosim.environment.net.Inbox}, and serves its viewers with the same server layer as the Environment
+ * ({@code robosim.environment.server}).
  */
 package robosim.environment.net;

@@ -5,8 +5,9 @@ import robosim.environment.net.RunStatus;
 import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import robosim.environment.net.ViewerSink;
-import robosim.environment.net.Viewers;
+import robosim.environment.server.ViewerHost;
+import robosim.environment.server.ViewerSink;
+import robosim.environment.server.Viewers;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RunState;
@@ -20,7 +21,7 @@ import robosim.protocol.WorldSnapshot;
  * answers on its thread. Like the Environment's loop it publishes to each viewer's coalescing queue and never
  * waits on one; a recording viewer a whole backlog behind holds the next step until it has room.
  */
-public final class ReplayClock {
+public final class ReplayClock implements ViewerHost {
     private static final Logger LOG = LoggerFactory.getLogger(ReplayClock.class);
     public static final double MIN_SPEED = 0.1;
     public static final double MAX_SPEED = 100;
@@ -33,6 +34,8 @@ public final class ReplayClock {
     private final boolean startPaused;
     private final ClockInbox inbox = new ClockInbox();
     private final Thread thread;
+    /** The recorded robots' names, world order: what a viewer may watch. */
+    private final java.util.List<String> robots;
     // ---- the clock thread's own ----
     private RunStatus.State state;
     private double speed;
@@ -45,6 +48,7 @@ public final class ReplayClock {
     /** {@code exitAtEnd}: end after the last step (else hold there until stopped); {@code startPaused}: hold before the first. */
     public ReplayClock(RecordingReader recording, Viewers viewers, double speed, boolean exitAtEnd, boolean startPaused) {
         this.at = new RecordingCursor(recording);
+        this.robots = java.util.List.copyOf(recording.snapshot().robotNames());
         this.viewers = viewers;
         this.exitAtEnd = exitAtEnd;
         this.startPaused = startPaused;
@@ -68,7 +72,18 @@ public final class ReplayClock {
         return endedAt;
     }
 
+    @Override
+    public String world() {
+        return "this recording";
+    }
+
+    @Override
+    public int robot(String name) {
+        return robots.indexOf(name);
+    }
+
     /** A viewer has said hello: it is added, and gets the world as the replay shows it now. */
+    @Override
     public CompletableFuture<WorldSnapshot> join(ViewerSink viewer) {
         return inbox.ask(now -> {
             viewers.add(viewer);
@@ -87,7 +102,8 @@ public final class ReplayClock {
     }
 
     /** A viewer's worker has ended (any thread). */
-    public void left(ViewerSink viewer, String why) {
+    @Override
+    public void left(ViewerSink viewer, String why, boolean cutOff) {
         viewers.remove(viewer, why);
         inbox.ask(now -> { // (and again after a join of it still queued, if any)
             viewers.remove(viewer, why);
@@ -96,7 +112,8 @@ public final class ReplayClock {
     }
 
     /** A viewer's queue has room again: the clock looks at once. */
-    public void roomFreed() {
+    @Override
+    public void roomFreed(ViewerSink viewer) {
         inbox.wake();
     }
 

@@ -1,5 +1,6 @@
 package robosim.environment.replay;
 
+import java.io.Externalizable;
 import java.io.IOException;
 import java.net.BindException;
 import java.net.InetAddress;
@@ -14,7 +15,13 @@ import robosim.environment.control.ControlServer;
 import robosim.environment.control.WebViewers;
 import robosim.environment.net.RunListener;
 import robosim.environment.net.Settings;
-import robosim.environment.net.Viewers;
+import robosim.environment.server.Acceptors;
+import robosim.environment.server.Port;
+import robosim.environment.server.PortGuide;
+import robosim.environment.server.ServerContext;
+import robosim.environment.server.ViewerClientWorker;
+import robosim.environment.server.Viewers;
+import robosim.protocol.GeometryHello;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.RecordingReader;
@@ -109,18 +116,19 @@ public final class ReplayMain implements Callable<Integer> {
         }
         Viewers viewers = new Viewers();
         ReplayClock clock = new ReplayClock(recording, viewers, speed, exitAtEnd, paused);
-        ReplayPort port = null;
+        ServerContext server = ServerContext.of(keys, resetEvery, handshakeTimeoutMs, writeTimeoutMs, GUIDE);
+        Acceptors port = new Acceptors(server, bindAddress, 256);
         ControlServer control = null;
         WebViewerServer web = null;
         try {
-            port = new ReplayPort(bindAddress, viewerPort, clock, recording.snapshot().robotNames(), keys,
-                    maxConnections, handshakeTimeoutMs, writeTimeoutMs, resetEvery);
+            port.bind(Port.VIEWER, viewerPort, maxConnections,
+                    (s, n) -> new ViewerClientWorker(server, s, "replay-viewer[" + n + "]", clock));
             if (controlPort >= 0) {
                 control = new ControlServer(new ReplayCommands(clock, file), keys, handshakeTimeoutMs);
                 control.start(bindAddress, controlPort);
             }
             if (webPort >= 0) {
-                web = WebViewers.start(webPort, bindAddress, port.port(), keys, new ReplayCommands(clock, file));
+                web = WebViewers.start(webPort, bindAddress, port.port(Port.VIEWER), keys, new ReplayCommands(clock, file));
             }
         } catch (IOException e) {
             close(port, control, recording);
@@ -131,7 +139,7 @@ public final class ReplayMain implements Callable<Integer> {
         clock.start();
         port.accept();
         Runtime.getRuntime().addShutdownHook(new Thread(() -> stopOnSignal(clock, viewers), "shutdown"));
-        System.out.println("listening viewers=" + port.port() + " control=" + (control == null ? -1 : control.port())
+        System.out.println("listening viewers=" + port.port(Port.VIEWER) + " control=" + (control == null ? -1 : control.port())
                 + (web == null ? "" : " web=" + web.port()));
         System.out.println("replaying " + file + ": " + recording.steps() + " steps"
                 + (recording.steps() == 0 ? "" : " (" + StepNumbers.shown(recording.stepNumber(0)) + " to "
@@ -185,10 +193,8 @@ public final class ReplayMain implements Callable<Integer> {
         }
     }
 
-    private static void close(ReplayPort port, ControlServer control, RecordingReader recording) {
-        if (port != null) {
-            port.close();
-        }
+    private static void close(Acceptors port, ControlServer control, RecordingReader recording) {
+        port.close();
         if (control != null) {
             control.close();
         }
@@ -198,6 +204,25 @@ public final class ReplayMain implements Callable<Integer> {
             // read only
         }
     }
+
+    /** What a replay's viewer port says of itself: a recording played back, not a live Environment. */
+    private static final PortGuide GUIDE = new PortGuide() {
+        @Override
+        public String description(Port port) {
+            return "a replay's viewer port";
+        }
+
+        @Override
+        public String wrongPort(Port here, Externalizable hello) {
+            return "that is a replay's viewer port (a recording played back); "
+                    + (hello instanceof GeometryHello ? "Geometry connects" : "robots connect") + " to a live Environment";
+        }
+
+        @Override
+        public String speaker() {
+            return "this replay";
+        }
+    };
 
     public static void main(String[] args) {
         CommandLine cl = new CommandLine(new ReplayMain());

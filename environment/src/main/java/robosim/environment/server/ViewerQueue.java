@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import java.util.ArrayDeque;
 import robosim.protocol.PoseUpdate;

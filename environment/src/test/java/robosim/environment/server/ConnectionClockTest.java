@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertFalse;

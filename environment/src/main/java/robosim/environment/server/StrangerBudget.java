@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import java.util.concurrent.atomic.AtomicLong;
 import robosim.protocol.Limits;
@@ -12,7 +12,7 @@ import robosim.protocol.Limits;
  * wants more is dropped; accepted clients and the world go on. Sized so that every port's connection cap
  * full of the largest strangers fits a 256 MiB heap. Any thread.
  */
-final class StrangerBudget {
+public final class StrangerBudget {
     /** The default: 16 MiB, a thousand strangers' largest hellos at once, or a few legitimate shared connections of thousands of robots. */
     static final long DEFAULT_BYTES = 16L << 20;
 

@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import java.io.Externalizable;
 import java.util.Set;
@@ -29,6 +29,34 @@ public enum Port {
         this.name = name;
         this.clients = clients;
         this.hellos = hellos;
+    }
+
+    /**
+     * The live Environment's words for its ports ({@link #description}, {@link #refusal}); {@code bound}: the robot,
+     * viewer and Geometry ports as bound (-1 for one not listening), asked when a client is at the wrong port.
+     */
+    public static PortGuide environment(java.util.function.Supplier<int[]> bound) {
+        return new PortGuide() {
+            @Override
+            public String description(Port port) {
+                return port.description();
+            }
+
+            @Override
+            public String wrongPort(Port here, Externalizable hello) {
+                return here.refusal(hello, bound.get());
+            }
+
+            @Override
+            public String speaker() {
+                return "the Environment";
+            }
+        };
+    }
+
+    /** "robot", "viewer", "geometry": the port's word in a log line and in its thread's name. */
+    public String word() {
+        return name.toLowerCase(java.util.Locale.ROOT);
     }
 
     /** "the Environment's robot port" */

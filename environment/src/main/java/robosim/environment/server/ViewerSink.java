@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 /**
  * One viewer as the one who publishes to it sees it: its {@link ViewerQueue}, filled by the publisher and

@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import robosim.protocol.Printable;
 import java.io.Externalizable;
@@ -26,7 +26,7 @@ import robosim.protocol.SimulationKeys;
  * awaited within a limit of the Environment's own; a refusal is logged once, its network text escaped and
  * cut. The worker's thread only.
  */
-final class Handshake {
+public final class Handshake {
     private static final Logger LOG = LoggerFactory.getLogger(Handshake.class);
     /** How long a worker waits for the loop's verdict on a hello (the loop never blocks that long), ms. */
     private static final long VERDICT_LIMIT_MS = 30_000;
@@ -35,16 +35,18 @@ final class Handshake {
     private final ObjectConnection connection;
     private final SimulationKeys keys;
     private final StrangerBudget strangers;
+    private final PortGuide guide;
     /** What this connection holds of the stranger budget now, bytes. */
     private long held;
     /** Messages read so far: a connection's first may use the budget's headroom, the others may not. */
     private int messages;
 
-    Handshake(ClientWorker worker, ObjectConnection connection, SimulationKeys keys, StrangerBudget strangers) {
+    Handshake(ClientWorker worker, ObjectConnection connection, ServerContext context) {
         this.worker = worker;
         this.connection = connection;
-        this.keys = keys;
-        this.strangers = strangers;
+        this.keys = context.keys();
+        this.strangers = context.strangers();
+        this.guide = context.guide();
         connection.limitMessageBytes(Limits.MAX_HELLO_BYTES);
     }
 
@@ -53,7 +55,7 @@ final class Handshake {
      * stranger the budget cannot hold is dropped), and what it did not use is given back; the rest stays held
      * until the handshake {@link #end}s.
      */
-    <T extends Externalizable> T read(Class<T> type) throws IOException {
+    public <T extends Externalizable> T read(Class<T> type) throws IOException {
         return type.cast(readOneOf(type, null));
     }
 
@@ -76,28 +78,33 @@ final class Handshake {
     /**
      * Reads the client's hello, of any kind of client ({@link Port#HELLOS}; anything else is refused as its class
      * is read): one {@code here} does not take is answered with a {@link SimulationEnd} saying which port it
-     * wants ({@link Port#refusal}) and is a {@link ProtocolException}, the connection's end.
+     * wants ({@link PortGuide#wrongPort}) and is a {@link ProtocolException}, the connection's end.
      */
-    Externalizable hello(Port here, int[] ports) throws IOException {
+    public Externalizable hello(Port here) throws IOException {
         Externalizable hello = readOneOf(Externalizable.class, Port.HELLOS);
         if (!here.takes(hello)) {
-            String why = here.refusal(hello, ports);
+            String why = guide.wrongPort(here, hello);
             worker.send(new SimulationEnd(-1, why));
-            throw new ProtocolException("a " + hello.getClass().getSimpleName() + " on " + here.description()
+            throw new ProtocolException("a " + hello.getClass().getSimpleName() + " on " + guide.description(here)
                     + "; told it: " + why);
         }
         return hello;
     }
 
+    /** The refusal of a client that speaks protocol {@code version}, or null if it is this server's. */
+    public String version(int version) {
+        return guide.version(version);
+    }
+
     /** Takes {@code bytes} from the stranger budget for this connection (a refusal about to be written). */
-    void hold(long bytes) throws ProtocolException {
+    public void hold(long bytes) throws ProtocolException {
         take(bytes, false);
     }
 
     /** {@code first}: the connection's first message, which may use the headroom kept for newcomers. */
     private void take(long bytes, boolean first) throws ProtocolException {
         if (!strangers.take(bytes, first)) {
-            throw new ProtocolException("the Environment already holds all it keeps for clients not yet accepted ("
+            throw new ProtocolException(guide.speaker() + " already holds all it keeps for clients not yet accepted ("
                     + (strangers.total() >> 20) + " MiB); try again later");
         }
         held += bytes;
@@ -114,7 +121,7 @@ final class Handshake {
      * deadline stops (what follows, the loop's verdict, is the Environment's own time, not the client's).
      * Null if the client proved the secret for {@code role} (or there is none), else the refusal.
      */
-    String heard(String role) throws IOException {
+    public String heard(String role) throws IOException {
         String refusal = proveSecret(role);
         over();
         return refusal;
@@ -125,7 +132,7 @@ final class Handshake {
      * deadline and the stranger's byte cap: null if it proved the secret for {@code role} (or there is none),
      * else the refusal.
      */
-    String proveSecret(String role) throws IOException {
+    public String proveSecret(String role) throws IOException {
         if (keys == null) {
             return null;
         }
@@ -137,7 +144,7 @@ final class Handshake {
     }
 
     /** The client's hello is all in: the deadline no longer applies (or it has already cut the client off). */
-    void over() throws IOException {
+    public void over() throws IOException {
         if (!worker.clock().handshakeOver()) {
             throw new IOException(worker.clock().cutOffReason()); // (the deadline closed the connection just before)
         }
@@ -147,7 +154,7 @@ final class Handshake {
      * Waits for the loop's answer to the client's hello, at most {@link #VERDICT_LIMIT_MS}; a loop that does
      * not answer in that time (it never blocks that long) is taken as a refusal.
      */
-    <T> T verdict(CompletableFuture<T> verdict) throws IOException, InterruptedException {
+    public <T> T verdict(CompletableFuture<T> verdict) throws IOException, InterruptedException {
         try {
             return verdict.get(VERDICT_LIMIT_MS, TimeUnit.MILLISECONDS);
         } catch (TimeoutException e) {
@@ -161,16 +168,16 @@ final class Handshake {
      * The client is accepted: from now on its messages may take up to {@link Limits#MAX_MESSAGE_BYTES}, and
      * what it said is the world's, no longer held against the stranger budget.
      */
-    void accepted() {
+    public void accepted() {
         connection.limitMessageBytes(Limits.MAX_MESSAGE_BYTES);
         end();
     }
 
     /** Logs that the client was refused, and why (network text escaped; the line at most about 1 KB). */
-    void refused(String why) {
+    public void refused(String why) {
         LOG.warn("{} refused: {}", worker.label(), Printable.of(why, LOGGED_CHARS));
     }
 
     /** How much of a reason a log line about one connection quotes, at most. */
-    static final int LOGGED_CHARS = 900;
+    public static final int LOGGED_CHARS = 900;
 }

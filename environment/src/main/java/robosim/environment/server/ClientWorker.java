@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import robosim.protocol.Printable;
 import java.io.EOFException;
@@ -17,10 +17,11 @@ import robosim.protocol.ProtocolException;
  * proof) are not in by the handshake deadline, however slowly its bytes trickle in, or if it does not take a
  * write within the write timeout, whoever writes to it.
  */
-abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
+public abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     private static final Logger LOG = LoggerFactory.getLogger(ClientWorker.class);
 
-    protected final ClientWorkerCoordinator coordinator;
+    /** What this connection is served with. */
+    protected final ServerContext context;
     private final Socket socket;
     private volatile String name;
     protected volatile ObjectConnection connection;
@@ -32,13 +33,12 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     /** Its clocks, from its arrival (the accept thread makes it). */
     protected final ConnectionClock clock;
 
-    ClientWorker(ClientWorkerCoordinator coordinator, Socket socket, String name, Port port) {
-        this.coordinator = coordinator;
+    protected ClientWorker(ServerContext context, Socket socket, String name, Port port) {
+        this.context = context;
         this.port = port;
         this.socket = socket;
         this.name = name;
-        Settings settings = coordinator.settings();
-        this.clock = new ConnectionClock(settings.handshakeTimeoutMs(), settings.writeTimeoutMs());
+        this.clock = new ConnectionClock(context.handshakeTimeoutMs(), context.writeTimeoutMs());
     }
 
     final void start() {
@@ -54,7 +54,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
      */
     final void admit(Runnable onClose) {
         this.release = onClose;
-        coordinator.watch().watch(this);
+        context.watch().watch(this);
     }
 
     @Override
@@ -68,7 +68,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     }
 
     /** Writes one message on this connection's write clock: a client that does not take it in time is cut off. */
-    protected final void send(java.io.Externalizable message) throws IOException {
+    public final void send(java.io.Externalizable message) throws IOException {
         clock.writing();
         try {
             connection.write(message);
@@ -83,7 +83,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     }
 
     /** Renames the worker and its thread once the client has said who it is. */
-    protected final void rename(String newName) {
+    public final void rename(String newName) {
         name = newName;
         Thread.currentThread().setName(newName);
     }
@@ -93,9 +93,9 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
         String why = "finished";
         try {
             configure(socket);
-            ObjectConnection c = ObjectConnection.server(socket, coordinator.settings().resetEvery(),
-                    coordinator.settings().keys(), port.description());
-            handshake = new Handshake(this, c, coordinator.settings().keys(), coordinator.strangers());
+            ObjectConnection c = ObjectConnection.server(socket, context.resetEvery(), context.keys(),
+                    context.guide().description(port));
+            handshake = new Handshake(this, c, context);
             connection = c;
             if (dropped) {
                 c.close(); // dropped (cut off) while the streams were being opened
@@ -107,7 +107,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
             why = "interrupted";
             Thread.currentThread().interrupt();
         } finally {
-            coordinator.watch().forget(this);
+            context.watch().forget(this);
             if (handshake != null) {
                 handshake.end();
             }
@@ -145,7 +145,7 @@ abstract class ClientWorker implements Runnable, ConnectionWatch.Watched {
     }
 
     /** True once {@link #drop} has been called. */
-    final boolean dropped() {
+    public final boolean dropped() {
         return dropped;
     }
 

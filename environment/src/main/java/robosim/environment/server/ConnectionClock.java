@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;

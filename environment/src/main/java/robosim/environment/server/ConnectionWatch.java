@@ -1,4 +1,4 @@
-package robosim.environment.net;
+package robosim.environment.server;
 
 import robosim.protocol.Printable;
 import java.util.Set;
