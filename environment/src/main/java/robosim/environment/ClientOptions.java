@@ -1,7 +1,6 @@
 package robosim.environment;
 
 import picocli.CommandLine.Option;
-import robosim.environment.net.CoordinatorDesign;
 import robosim.environment.net.GeometryLoss;
 import robosim.environment.net.RobotLoss;
 
@@ -29,9 +28,4 @@ final class ClientOptions {
             + "for a robot process started elsewhere.")
     boolean launchRobots;
 
-    /** What is wrong with these options beside {@code design}, or null. */
-    String bad(CoordinatorDesign design) {
-        String why = design.refusesLossPolicy(onRobotLoss);
-        return why == null ? null : "environment: " + why;
-    }
 }

@@ -176,10 +176,8 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: --steps, --speed, --reset-every and the --*-timeout-ms options must be >= 0");
             return 2;
         }
-        String bad = maxConnections < 1 ? "environment: --max-connections must be >= 1, got " + maxConnections
-                : clients.bad(design);
-        if (bad != null) {
-            System.err.println(bad);
+        if (maxConnections < 1) {
+            System.err.println("environment: --max-connections must be >= 1, got " + maxConnections);
             return 2;
         }
         InMemoryLink.Starter inMemory = null;
@@ -187,9 +185,6 @@ public final class EnvironmentMain implements Callable<Integer> {
             inMemory = ServiceLoader.load(InMemoryLink.Starter.class).findFirst().orElse(null);
             String problem = inMemory == null
                     ? "environment: --one-jvm needs the Hardware Simulator (robosim hardware-sim) on the class path"
-                    : design == CoordinatorDesign.SEQUENTIAL
-                    ? "environment: --one-jvm runs its robots in memory; --coordinator SEQUENTIAL reads a socket per robot "
-                            + "(use THREADS or TWO_THREADS, which serve robots that join over the robot port)"
                     : oneJvmProblem(spec);
             if (problem != null) {
                 System.err.println(problem);
@@ -221,12 +216,18 @@ public final class EnvironmentMain implements Callable<Integer> {
                     ? "already exists (not overwritten)" : "its directory does not exist"));
             return 2;
         }
-        Settings settings = Settings.builder().record(record).ports(bindAddress, robotPort, viewerPort, geometryPort).keys(keys)
-                .maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs).stepTimeoutMs(stepTimeoutMs)
-                .geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
-                .design(design).inProcessGeometry(noGeometry || oneJvm).onGeometryLoss(clients.onGeometryLoss)
-                .onRobotLoss(clients.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages)
-                .resetEvery(resetEvery).build();
+        Settings settings;
+        try {
+            settings = Settings.builder().record(record).ports(bindAddress, robotPort, viewerPort, geometryPort)
+                    .keys(keys).maxConnections(maxConnections).handshakeTimeoutMs(handshakeTimeoutMs)
+                    .stepTimeoutMs(stepTimeoutMs).geometryTimeoutMs(geometryTimeoutMs).writeTimeoutMs(writeTimeoutMs)
+                    .design(design).inProcessGeometry(noGeometry || oneJvm).onGeometryLoss(clients.onGeometryLoss)
+                    .onRobotLoss(clients.onRobotLoss).maxSteps(steps).speed(pace).stepMessages(!noStepMessages)
+                    .resetEvery(resetEvery).robotsInThisJvm(inMemory).build();
+        } catch (IllegalArgumentException e) { // (what the coordinator design does not allow)
+            System.err.println("environment: " + e.getMessage());
+            return 2;
+        }
         EnvironmentDirectories directories;
         try {
             directories = envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs);
@@ -237,9 +238,6 @@ public final class EnvironmentMain implements Callable<Integer> {
         boolean stay = keepRunning != null ? keepRunning : steps == 0;
         EnvironmentHost host = new EnvironmentHost(file, spec, settings, stay, startPaused);
         host.launchRobots(clients.launchRobots ? new robosim.environment.control.RobotLaunches() : null);
-        if (inMemory != null) {
-            host.robotsInThisJvm(inMemory);
-        }
         ControlServer control = null;
         WebViewerServer web = null;
         try {

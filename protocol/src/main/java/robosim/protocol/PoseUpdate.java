@@ -76,6 +76,14 @@ public final class PoseUpdate implements java.io.Externalizable {
         this.held = held;
     }
 
+    /**
+     * The poses alone: the same step, robots, poses and who has left or is away, without sonar ranges or tags (what a
+     * {@link WorldSnapshot} carries). Shares this update's arrays.
+     */
+    public PoseUpdate posesOnly() {
+        return new PoseUpdate(step, xMm, yMm, headingDeg, null, List.of(), departed, held);
+    }
+
     /** The robots away now, standing where they were until they come back, in the order they were lost. */
     public List<String> held() {
         return held;

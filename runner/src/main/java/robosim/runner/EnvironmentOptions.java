@@ -14,7 +14,7 @@ final class EnvironmentOptions {
 
     @Option(names = "--coordinator", paramLabel = "DESIGN", defaultValue = "THREADS",
             description = "The Environment's coordinator design: THREADS (the report's, the default), SEQUENTIAL or TWO_THREADS.")
-    String coordinator;
+    robosim.environment.net.CoordinatorDesign coordinator;
 
     @Option(names = "--no-step-messages",
             description = "The Environment sends the step number only before step 0 (see environment.sh --help).")
@@ -68,7 +68,7 @@ final class EnvironmentOptions {
     List<String> args(Path env, long steps, boolean noGeometry, List<String> resetArgs) {
         List<String> envArgs = new ArrayList<>(List.of(env.toString(), "--steps", Long.toString(steps),
                 "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port",
-                "0", "--coordinator", coordinator, "--on-robot-loss", onRobotLoss.name(), "--launch-robots"));
+                "0", "--coordinator", coordinator.name(), "--on-robot-loss", onRobotLoss.name(), "--launch-robots"));
         if (noGeometry) {
             envArgs.add("--no-geometry");
         }

@@ -22,6 +22,7 @@ import robosim.api.RobotControl;
 import robosim.control.ControlClient;
 import robosim.protocol.SimulationKeys;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.net.Transport;
 
 /**
  * {@code scripts/headless.sh --env FILE --steps N}: runs a whole simulation with every part as its
@@ -299,7 +300,7 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     /** How robots in one process connect: as {@code --connection} says, else shared unless that cannot be. */
     private Connection connectionKind() {
-        boolean perRobot = exchange != null || "SEQUENTIAL".equals(environmentOptions.coordinator);
+        boolean perRobot = exchange != null || environmentOptions.coordinator.refuses(Transport.SHARED) != null;
         return connection != null ? connection : perRobot ? Connection.PER_ROBOT : Connection.SHARED;
     }
 

@@ -117,18 +117,9 @@ public final class Simulation implements AutoCloseable {
                             + " has no control code: give it one with control(\"" + r.name() + "\", ...)");
                 }
             }
-            Settings settings;
-            try {
-                settings = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                        .stepTimeoutMs(stepTimeout.toMillis()).speed(0).build();
-            } catch (RuntimeException e) {
-                throw new IllegalArgumentException(e.getMessage(), e);
-            }
             Map<String, WatchedRobot> watched = new LinkedHashMap<>();
             InMemoryRobots robots = new InMemoryRobots();
-            ClientWorkerCoordinator c = new ClientWorkerCoordinator(spec, settings);
-            c.startPaused();
-            c.robotsInThisJvm(new InMemoryLink.Starter() {
+            InMemoryLink.Starter starter = new InMemoryLink.Starter() {
                 @Override
                 public InMemoryLink.Robot start(String name, String type, String controlClass,
                         InMemoryLink.Environment environment) {
@@ -143,7 +134,16 @@ public final class Simulation implements AutoCloseable {
                 public List<String> awaitControlCode(long ms) throws InterruptedException {
                     return robots.awaitControlCode(ms);
                 }
-            });
+            };
+            Settings settings;
+            try {
+                settings = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
+                        .stepTimeoutMs(stepTimeout.toMillis()).speed(0).robotsInThisJvm(starter).build();
+            } catch (RuntimeException e) {
+                throw new IllegalArgumentException(e.getMessage(), e);
+            }
+            ClientWorkerCoordinator c = new ClientWorkerCoordinator(spec, settings);
+            c.startPaused();
             Simulation sim = new Simulation(c, watched, Math.max(1, wait.toMillis()));
             try {
                 c.start();

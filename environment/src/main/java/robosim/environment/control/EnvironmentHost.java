@@ -13,7 +13,6 @@ import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.RunStatus;
 import robosim.environment.net.RunSummary;
 import robosim.environment.net.Settings;
-import robosim.protocol.InMemoryLink;
 
 /**
  * Runs simulations one after another on the same ports: the first from the file given at start-up,
@@ -33,8 +32,6 @@ public final class EnvironmentHost {
     private boolean shutdown;
     private boolean startPaused;
     private volatile RobotLaunches launches;
-    /** Starts each simulation's robots in this JVM (a one-JVM run), or null. */
-    private volatile InMemoryLink.Starter inMemory;
     /** True while {@code load} replaces the simulation: {@link #run} must not take its end for the last. */
     private boolean replacing;
 
@@ -56,11 +53,6 @@ public final class EnvironmentHost {
     /** The control port's {@code add ... CONTROL} starts robot processes with this ({@code --launch-robots}). */
     public void launchRobots(RobotLaunches with) {
         launches = with;
-    }
-
-    /** Every simulation's robots run in this JVM, started by {@code starter} ({@code --one-jvm}). Call before {@link #open}. */
-    public void robotsInThisJvm(InMemoryLink.Starter starter) {
-        inMemory = starter;
     }
 
     /** The robot launcher, or null: {@code add} then waits for a robot process started elsewhere. */
@@ -89,15 +81,9 @@ public final class EnvironmentHost {
             current = newSession(spec, startPaused);
             c = current;
         }
-        startRobots(c);
+        c.startRobotsInThisJvm(); // (without the lock: control classes' constructors run)
     }
 
-    /** Without the lock (control classes' constructors run): a one-JVM simulation's robots start. */
-    private void startRobots(ClientWorkerCoordinator c) {
-        if (c.runsRobotsInThisJvm()) {
-            c.startRobotsInThisJvm();
-        }
-    }
 
     /**
      * Under this host's lock: opens the next simulation on the same ports. The previous one's ports
@@ -111,9 +97,6 @@ public final class EnvironmentHost {
         ClientWorkerCoordinator c = new ClientWorkerCoordinator(s, settings);
         if (paused) {
             c.startPaused();
-        }
-        if (inMemory != null) {
-            c.robotsInThisJvm(inMemory);
         }
         c.start();
         int[] p = c.ports();
@@ -234,7 +217,7 @@ public final class EnvironmentHost {
             notifyAll();
             c = current;
         }
-        startRobots(c);
+        c.startRobotsInThisJvm(); // (without the lock: control classes' constructors run)
         return "started a new simulation of " + file;
     }
 
@@ -280,7 +263,7 @@ public final class EnvironmentHost {
                 notifyAll();
             }
         }
-        startRobots(next);
+        next.startRobotsInThisJvm();
         LOG.info("loaded {}: waiting for its {} robot(s)", newFile, loaded.robots().size());
         return "loaded " + newFile + "; waiting for " + loaded.robots().size() + " robot(s)";
     }

@@ -69,6 +69,11 @@ public final class EnvironmentMap {
         return spec.robots().get(robot).name();
     }
 
+    /** Every robot's properties, world order (an immutable list, replaced when a robot joins). */
+    public List<RobotProperties> properties() {
+        return properties;
+    }
+
     public RobotProperties properties(int robot) {
         return properties.get(robot);
     }

@@ -1,136 +1,274 @@
 package robosim.environment.net;
 
-import robosim.protocol.Printable;
+import java.io.IOException;
+import java.util.ArrayList;
 import java.util.List;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.environment.core.JoinRule;
+import robosim.environment.core.SimulationCore;
+import robosim.environment.core.SpawnPlacer;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.Protocol;
+import robosim.protocol.Arena;
+import robosim.protocol.Limits;
+import robosim.protocol.Printable;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotWelcome;
 
 /**
- * What a robot's hello is checked against before the loop sees it (the protocol version, a name in the
- * file, or one a rule of the file or an {@code add} lets join; properties that do not contradict it) and the
- * welcome an accepted robot gets. Any thread.
+ * Who comes into the run, on the loop thread: the verdict on every robot's hello (a robot of the file before the
+ * start; after it, one of the world that comes back on a new connection, or one that joins by a rule of the file
+ * or an {@code add}), the welcome an accepted robot gets, and the control port's {@code add} and {@code remove}.
+ * What a hello is checked against before it reaches the loop is the {@link HelloCheck}'s; what happens to a robot
+ * once it is in is the {@link Roster}'s. Hellos that come while a step is resolved wait for its end: robots come
+ * and go between steps only.
  */
 final class Admission {
+    private static final Logger LOG = LoggerFactory.getLogger(Admission.class);
+
+    /** Robots one run lets join, at most (each join grows the world and sends Geometry the world). */
+    static final int MAX_JOINS = 10_000;
+    /** Robots added from the control port and not joined yet, at most. */
+    static final int MAX_ADDED = 64;
+
     private final WorldSpec spec;
-    private final List<String> names;
-    private final boolean stepMessages;
-    /** Robots the control port has added that have not joined yet (the loop writes it). */
-    private final java.util.Map<String, robosim.environment.core.JoinRule> added =
-            new java.util.concurrent.ConcurrentHashMap<>();
-    /** Robots that joined the running world, by name, with the rule they joined by (the loop writes it). */
-    private final java.util.Map<String, robosim.environment.core.JoinRule> joined =
-            new java.util.concurrent.ConcurrentHashMap<>();
+    private final Settings settings;
+    private final HelloCheck check;
+    private final Roster roster;
+    private final Progress progress;
+    private final GeometryLink geometry;
+    private final RunListener listener;
+    /** The file's robots' names, world order (what a robot of the file is welcomed with). */
+    private final List<String> fileNames;
+    /** Publishes the status; run before a log line about a robot, so whoever reads the line sees it. */
+    private final Runnable publish;
+    /** Hellos that came while a step was being resolved: answered once it is complete. */
+    private final List<Hellos> held = new ArrayList<>();
+    /** Changes of the robots added and not joined yet, so far: the status is published anew when it moves. */
+    private long version;
+    private int joins;
+    private SpawnPlacer placer;
+    private SimulationCore core;
 
-    Admission(WorldSpec spec, List<String> names, boolean stepMessages) {
+    Admission(WorldSpec spec, Settings settings, HelloCheck check, Roster roster, Progress progress,
+            GeometryLink geometry, RunListener listener, Runnable publish) {
         this.spec = spec;
-        this.names = names;
-        this.stepMessages = stepMessages;
+        this.settings = settings;
+        this.check = check;
+        this.roster = roster;
+        this.progress = progress;
+        this.geometry = geometry;
+        this.listener = listener;
+        this.publish = publish;
+        this.fileNames = spec.robots().stream().map(WorldSpec.RobotSpec::name).toList();
     }
 
-    /** The refusal of a robot of any type whose rule went while its hello was checked ({@link #typed}). */
-    static final String RULE_WENT = "the place it would take in the world went while its hello was checked (removed from "
-            + "the control port?)";
+    /** The run starts in {@code world}: from now on robots join it, or come back to it. */
+    void start(SimulationCore world) {
+        this.core = world;
+    }
 
-    /** Null if the hello may go to the loop, else the refusal. */
-    String check(RobotHello hello, int index) {
-        if (hello.protocolVersion() != Protocol.VERSION) {
-            return "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
-                    + Protocol.VERSION + ")";
+    /** Changes of the robots added and not joined yet, so far. */
+    long version() {
+        return version;
+    }
+
+    /** The names of the robots added and not joined yet, sorted. */
+    List<String> added() {
+        return check.addedNames();
+    }
+
+    // ---- hellos ----------------------------------------------------------------------------------------------
+
+    /** Hellos that came together: answered now, or once the step being resolved is complete. */
+    void hellos(Hellos h) {
+        if (progress.phase() == Progress.Phase.RESOLVING) {
+            held.add(h); // (a robot joins between steps: after this one is resolved)
+            return;
         }
-        if (hello.name() == null) {
-            return "a robot must say its name";
-        }
-        WorldSpec.RobotSpec entry;
-        if (index < 0) {
-            robosim.environment.core.JoinRule rule = rule(hello.name());
-            if (rule != null && robosim.environment.core.JoinRule.badName(hello.name()) != null) {
-                return robosim.environment.core.JoinRule.badName(hello.name());
+        for (Hellos.Hello j : h.hellos()) {
+            String refusal = register(j);
+            if (refusal != null) {
+                j.peer().refused(refusal);
             }
-            if (rule == null) {
-                return "no robot named \"" + Printable.of(hello.name(), 64) + "\" in " + spec.source() + " (robots: "
-                        + listed(names) + joiners() + ")";
-            }
-            entry = rule.robot(hello.name(), 0, 0);
-        } else {
-            entry = spec.robots().get(index);
+            j.verdict().complete(refusal);
         }
-        if (hello.anyType()) {
-            RobotProperties model = RobotModels.byName(entry.type());
-            return model == null ? "robot " + entry.name() + " is a " + entry.type() + " in " + spec.source()
-                    + ", a type a robot must name itself: give --type " + entry.type()
-                    : entry.contradiction(model, spec.source());
+        h.answered().answered(true);
+    }
+
+    /** Between steps: answers the next hellos held while a step was resolved; false if there were none. */
+    boolean answerHeld() {
+        if (held.isEmpty() || progress.phase() == Progress.Phase.RESOLVING) {
+            return false;
         }
-        return entry.contradiction(hello.properties(), spec.source());
+        hellos(held.remove(0));
+        return true;
+    }
+
+    /** The run is over: the hellos still held are refused. */
+    void refuseHeld() {
+        held.forEach(Hellos::refuse);
+        held.clear();
+    }
+
+    /** A robot's hello, already checked against the file: null (its welcome is sent) or the refusal. */
+    private String register(Hellos.Hello j) {
+        if (progress.phase() != Progress.Phase.WAITING) {
+            int live = indexOf(j.hello().name());
+            return live >= 0 ? rejoin(j.peer(), j.hello(), roster.get(live)) : join(j.peer(), j.hello());
+        }
+        if (j.index() < 0) {
+            return "the simulation has not started: a robot that joins a running world says hello once it runs";
+        }
+        Roster.Slot s = roster.get(j.index());
+        if (s.peer() != null) {
+            return "robot " + s.name() + " is already connected";
+        }
+        try {
+            j.peer().welcome(welcome(spec.robots().get(s.index()), fileNames));
+        } catch (IOException e) {
+            return "its welcome could not be sent: " + e.getMessage();
+        }
+        j.peer().assign(s.index());
+        roster.connect(s, j.peer(), j.hello().properties());
+        return null;
     }
 
     /**
-     * The hello as the loop takes it, once {@link #check} has passed it: a robot of any type has the properties of
-     * the type the file gives it. Null if that is no longer one every process knows (the rule it joins by went, or
-     * changed, since the check: {@code remove}, {@code add} from the control port meanwhile).
+     * A hello naming a robot of the world after the start: null (its welcome, with its current pose, is sent,
+     * and it takes part from the next step) or the refusal.
      */
-    RobotHello typed(RobotHello hello, int index) {
-        if (!hello.anyType()) {
-            return hello;
+    private String rejoin(RobotPeer peer, RobotHello hello, Roster.Slot s) {
+        if (progress.over()) {
+            return Progress.OVER;
         }
-        WorldSpec.RobotSpec entry = entry(hello.name(), index);
-        RobotProperties model = entry == null ? null : RobotModels.byName(entry.type());
-        return model == null ? null : new RobotHello(hello.name(), model);
+        String noReturn = settings.onRobotLoss() == RobotLoss.REMOVE ? " (a lost robot may come back only when the "
+                + "Environment runs with --on-robot-loss HOLD or WAIT)" : "";
+        if (s.goneForGood()) {
+            return "robot " + s.name() + " has been removed from the simulation" + noReturn;
+        }
+        if (!s.peer().closed()) {
+            return "robot " + s.name() + " is already connected (a new process takes over only once the old "
+                    + "connection has closed)";
+        }
+        if (s.running() && !s.leaving()) {
+            roster.leave(s, "its connection closed", false); // before the loop heard of it: it hears now
+        }
+        if (!noReturn.isEmpty()) {
+            return "robot " + s.name() + " has left the simulation" + noReturn;
+        }
+        if (s.comingBack()) {
+            return "robot " + s.name() + " is already coming back on another connection";
+        }
+        if (!hello.properties().equals(s.properties())) {
+            return "robot " + s.name() + " comes back with " + difference(hello.properties(), s.properties());
+        }
+        // (where it stands in the world it comes back to: a step held at the release point is computed already)
+        double x = core.map().xMm(s.index());
+        double y = core.map().yMm(s.index());
+        double heading = core.map().headingDeg(s.index());
+        try {
+            peer.welcome(welcome(core.map().spec().robots().get(s.index()).at(x, y, heading), roster.names()));
+        } catch (IOException e) {
+            return "its welcome could not be sent: " + e.getMessage();
+        }
+        peer.assign(s.index());
+        roster.takeOver(s, peer);
+        LOG.info("robot {} says hello again: it takes part from the next step, at ({}, {}) mm heading {} deg",
+                s.name(), mm(x), mm(y), deg(heading));
+        if (progress.phase() == Progress.Phase.COLLECTING && !s.leaving()) {
+            roster.bringBack(s); // the step being collected is its first
+        }
+        return null;
+    }
+
+    /** A hello after the start naming no robot of the world now: null (welcome sent, robot added) or the refusal. */
+    private String join(RobotPeer peer, RobotHello hello) {
+        String name = hello.name();
+        if (progress.over()) {
+            return Progress.OVER;
+        }
+        JoinRule rule = check.rule(name);
+        String fixed = settings.design().refusesJoins();
+        if (fixed != null) {
+            return fixed;
+        }
+        if (rule == null) {
+            return "no robot named \"" + Printable.of(name, 64) + "\" in " + spec.source() + " may join";
+        }
+        if (JoinRule.badName(name) != null) {
+            return JoinRule.badName(name);
+        }
+        if (joins >= MAX_JOINS) {
+            return "this run has let " + MAX_JOINS + " robots join, the most one run may";
+        }
+        long members = 0;
+        for (Roster.Slot s : roster.all()) {
+            members += s.rule() == rule && s.state() != Roster.Slot.State.GONE ? 1 : 0;
+        }
+        if (members >= rule.max()) {
+            return "the rule " + rule.allow() + " of " + spec.source() + " lets at most " + rule.max()
+                    + " robot(s) take part at once";
+        }
+        if (roster.size() >= Limits.MAX_ROBOTS) {
+            return "the world holds " + roster.size() + " robots, the most it may";
+        }
+        StringBuilder why = new StringBuilder();
+        double[] at = placer().place(rule, core.map(), why);
+        if (at == null) {
+            return rule.spawn() == null
+                    ? "robot " + name + "'s start pose (" + rule.template().xMm() / 1000 + ", "
+                            + rule.template().yMm() / 1000 + ") m in " + spec.source() + " is taken: " + why
+                    : "the spawn region of " + rule.allow() + " in " + spec.source() + " has no free pose for "
+                            + name + " (" + why + ")";
+        }
+        WorldSpec.RobotSpec robot = rule.robot(name, at[0], at[1]);
+        List<String> names = roster.names();
+        names.add(name);
+        try {
+            peer.welcome(welcome(robot, names));
+        } catch (IOException e) {
+            return "its welcome could not be sent: " + e.getMessage();
+        }
+        boolean byAdd = check.disallow(name) != null; // (an added robot joins once; it may come back by name)
+        if (byAdd) {
+            version++;
+        }
+        check.joined(name, rule);
+        joins++;
+        int i = core.add(robot, hello.properties());
+        Roster.Slot s = roster.join(name, rule, peer, hello.properties());
+        if (s.index() != i) {
+            throw new IllegalStateException("robot " + name + " joined the core at " + i + " and the roster at "
+                    + s.index());
+        }
+        peer.assign(i);
+        core.arriving(i);
+        geometry.worldChanged(core.map().geometryWorld());
+        publish.run(); // (before the log line: whoever reads it sees the robot)
+        LOG.info("robot {} joins at ({}, {}) mm heading {} deg ({}): it takes part from the next step", name,
+                mm(at[0]), mm(at[1]), deg(robot.headingDeg()), byAdd ? "added from the control port"
+                        : (rule.spawn() == null ? "any-time" : rule.allow()) + " of " + spec.source());
+        listener.robotJoined(name, progress.step());
+        if (progress.phase() == Progress.Phase.COLLECTING) {
+            roster.bringBack(s); // the step being collected is its first
+        }
+        return null;
     }
 
     /**
-     * The file's entry for robot {@code name} ({@code index} in the file, or -1 for one that joins by a rule), or null
-     * when there is no rule by that name (any more).
+     * The welcome of a robot at its pose (a start pose, or where it stands mid-run), with every robot's name, the
+     * run's seed and its parameters.
      */
-    private WorldSpec.RobotSpec entry(String name, int index) {
-        if (index >= 0) {
-            return spec.robots().get(index);
-        }
-        robosim.environment.core.JoinRule rule = rule(name);
-        return rule == null ? null : rule.robot(name, 0, 0);
-    }
-
-    /** The rule a robot of this name joins (or joined) by: an {@code add}, one it joined by, or the file's; or null. */
-    robosim.environment.core.JoinRule rule(String name) {
-        robosim.environment.core.JoinRule r = added.get(name);
-        if (r == null) {
-            r = joined.get(name);
-        }
-        return r != null ? r : spec.joinRule(name);
-    }
-
-    /** Robots that joined the running world, by name, with their rules; the loop's to change. */
-    java.util.Map<String, robosim.environment.core.JoinRule> joined() {
-        return joined;
-    }
-
-    /** Robots added from the control port that have not joined yet, by name; the loop's to change. */
-    java.util.Map<String, robosim.environment.core.JoinRule> added() {
-        return added;
-    }
-
-    /** Names for a refusal: at most {@link #LISTED}, then how many in all (a refusal stays short in a large world). */
-    private static String listed(List<String> all) {
-        return all.size() <= LISTED ? String.join(", ", all)
-                : String.join(", ", all.subList(0, LISTED)) + ", ... (" + all.size() + " in all)";
-    }
-
-    /** Names a refusal lists at most. */
-    private static final int LISTED = 10;
-
-    /** The file's join rules, for a refusal: "; may join: rover9, scout-*", or "" when there are none. */
-    private String joiners() {
-        if (spec.joins().isEmpty()) {
-            return "";
-        }
-        return "; may join: " + listed(spec.joins().stream().map(robosim.environment.core.JoinRule::allow).toList());
+    private RobotWelcome welcome(WorldSpec.RobotSpec robot, List<String> robotNames) {
+        return RobotWelcome.accepted(spec.timeStepMs(), robot.xMm(), robot.yMm(), robot.headingDeg(), robotNames,
+                robot.sensorNames()).withStepMessages(settings.stepMessages())
+                .withRun(spec.seed(), spec.parameters().of(robot.name())).withType(robot.type());
     }
 
     /** How the properties a returning robot says it has differ from those it had (the file's checks passed). */
-    static String difference(robosim.protocol.RobotProperties now, robosim.protocol.RobotProperties was) {
+    private static String difference(RobotProperties now, RobotProperties was) {
         if (now.maxSpeedMmPerS() != was.maxSpeedMmPerS()) {
             return "a top speed of " + now.maxSpeedMmPerS() + " mm/s where it had " + was.maxSpeedMmPerS();
         }
@@ -140,19 +278,91 @@ final class Admission {
         return "other sonars or properties than it had";
     }
 
-    /** The welcome of robot {@code index}: the time step, its start pose, every robot's name, its sensors. */
-    RobotWelcome welcome(int index) {
-        return welcome(spec.robots().get(index), names);
-    }
+    // ---- the control port ------------------------------------------------------------------------------------
 
     /**
-     * The welcome of a robot at its pose (a start pose, or where it stands mid-run), with every robot's name, the
-     * run's seed and its parameters.
+     * The control port's {@code add}: null (a hello with the rule's name joins at its pose, once) or why not.
+     * The name must be new (not in the world, not added already), the pose inside the arena and free now.
      */
-    RobotWelcome welcome(WorldSpec.RobotSpec robot, List<String> robotNames) {
-        return RobotWelcome.accepted(spec.timeStepMs(), robot.xMm(), robot.yMm(), robot.headingDeg(), robotNames,
-                robot.sensorNames()).withStepMessages(stepMessages)
-                .withRun(spec.seed(), spec.parameters().of(robot.name())).withType(robot.type());
+    String add(JoinRule rule) {
+        String name = rule.allow();
+        String fixed = settings.design().refusesJoins();
+        if (fixed != null) {
+            return fixed;
+        }
+        if (progress.over() || progress.phase() == Progress.Phase.WAITING) {
+            return "the simulation is " + (progress.over() ? "over" : "not running yet: add robots once it runs");
+        }
+        if (check.addedCount() >= MAX_ADDED) {
+            return MAX_ADDED + " added robots wait for their hello already (remove NAME cancels one)";
+        }
+        if (indexOf(name) >= 0 || check.added(name)) {
+            return "a robot named " + name + " is " + (check.added(name) ? "added already" : "in the simulation");
+        }
+        WorldSpec.RobotSpec r = rule.template();
+        Arena arena = spec.arena();
+        if (r.xMm() - r.radiusMm() < arena.minXMm() || r.xMm() + r.radiusMm() > arena.maxXMm()
+                || r.yMm() - r.radiusMm() < arena.minYMm() || r.yMm() + r.radiusMm() > arena.maxYMm()) {
+            return "(" + r.xMm() / 1000 + ", " + r.yMm() / 1000 + ") m is not inside the arena for a " + r.type();
+        }
+        StringBuilder why = new StringBuilder();
+        if (placer().place(rule, core.map(), why) == null) {
+            return "(" + r.xMm() / 1000 + ", " + r.yMm() / 1000 + ") m is taken: " + why;
+        }
+        check.allow(rule);
+        version++;
+        LOG.info("robot {} added from the control port: {} at ({}, {}) mm heading {} deg; it joins when it says hello",
+                name, withArticle(r.type()), mm(r.xMm()), mm(r.yMm()), deg(r.headingDeg()));
+        return null;
     }
 
+    /** The control port's {@code remove NAME}: null (removed now, or at the end of the step in progress) or why not. */
+    String remove(String name) {
+        int i = indexOf(name);
+        String shown = "\"" + Printable.of(name, 64) + "\"";
+        if (i < 0) {
+            if (check.disallow(name) != null) {
+                version++;
+                LOG.info("robot {}, added from the control port, is no longer let in (removed before it joined)", name);
+                return null;
+            }
+            return "no robot named " + shown + " in this simulation";
+        }
+        if (core == null || progress.over()) {
+            return "the simulation is " + (progress.over() ? "over" : "not running yet");
+        }
+        Roster.Slot s = roster.get(i);
+        if (s.state() == Roster.Slot.State.GONE) {
+            return "robot " + shown + " has already left";
+        }
+        roster.remove(s);
+        return null;
+    }
+
+    /** The index of the robot of this name in the world now, or -1. */
+    private int indexOf(String robotName) {
+        return core != null ? core.map().spec().indexOf(robotName) : spec.indexOf(robotName);
+    }
+
+    private SpawnPlacer placer() {
+        if (placer == null) {
+            placer = new SpawnPlacer(spec);
+        }
+        return placer;
+    }
+
+    /** A coordinate for a log line, to the millimetre. */
+    private static long mm(double v) {
+        return Math.round(v);
+    }
+
+    /** A heading for a log line, to a tenth of a degree. */
+    private static double deg(double v) {
+        return Math.round(v * 10) / 10.0;
+    }
+
+    /** "an ArRobot", "a Scout". */
+    private static String withArticle(String type) {
+        return ("AEIOUaeiou".indexOf(type.isEmpty() ? 'x' : type.charAt(0)) >= 0 ? "an " : "a ") + type;
+    }
 }

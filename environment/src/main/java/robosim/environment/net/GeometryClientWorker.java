@@ -2,6 +2,7 @@ package robosim.environment.net;
 
 import robosim.environment.server.ClientWorker;
 import robosim.environment.server.Port;
+import robosim.environment.server.ServerContext;
 import java.io.IOException;
 import java.net.Socket;
 import java.util.concurrent.ArrayBlockingQueue;
@@ -12,7 +13,6 @@ import robosim.protocol.GeometryHello;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.GeometryWorld;
-import robosim.protocol.Protocol;
 import robosim.protocol.SimulationEnd;
 
 /**
@@ -23,7 +23,7 @@ import robosim.protocol.SimulationEnd;
  * (then it is lost at once, and a new Geometry process may attach). The simulation loop never touches this socket, so a Geometry process that hangs holds up
  * nobody but the step that waits for it, and only until the Geometry timeout.
  */
-final class GeometryClientWorker extends ClientWorker {
+final class GeometryClientWorker extends ClientWorker implements GeometryPeer {
     private record SendWorld(GeometryWorld world) {
     }
 
@@ -39,11 +39,11 @@ final class GeometryClientWorker extends ClientWorker {
     /** At most two worlds (the first and one after robots joined), one step and the end are ever outstanding. */
     private final BlockingQueue<Object> tasks = new ArrayBlockingQueue<>(4);
 
-    private final ClientWorkerCoordinator coordinator;
+    private final SimulationLoop loop;
 
-    GeometryClientWorker(ClientWorkerCoordinator coordinator, Socket socket) {
-        super(coordinator.server(), socket, "geometry-worker", Port.GEOMETRY);
-        this.coordinator = coordinator;
+    GeometryClientWorker(ServerContext server, SimulationLoop loop, Socket socket) {
+        super(server, socket, "geometry-worker", Port.GEOMETRY);
+        this.loop = loop;
     }
 
     @Override
@@ -55,7 +55,7 @@ final class GeometryClientWorker extends ClientWorker {
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.GeometryJoins(this, verdict));
+            loop.post(new LoopEvent.GeometryJoins(this, verdict));
             refusal = handshake.verdict(verdict);
         }
         if (refusal != null) {
@@ -76,11 +76,11 @@ final class GeometryClientWorker extends ClientWorker {
             }
             if (task instanceof SendWorld w) {
                 send(w.world());
-                coordinator.post(new LoopEvent.GeometryReady(this));
+                loop.post(new LoopEvent.GeometryReady(this));
             } else if (task instanceof Resolve r) {
                 send(r.request());
                 GeometryStepResponse answer = connection.read(GeometryStepResponse.class);
-                coordinator.post(new LoopEvent.GeometryAnswer(this, answer));
+                loop.post(new LoopEvent.GeometryAnswer(this, answer));
             } else {
                 send(((End) task).end());
                 return;
@@ -88,18 +88,18 @@ final class GeometryClientWorker extends ClientWorker {
         }
     }
 
-    /** Loop thread: send the world (when the run starts, when this process takes over mid-run, after robots joined). */
-    void sendWorld(GeometryWorld world) {
+    @Override
+    public void sendWorld(GeometryWorld world) {
         tasks.add(new SendWorld(world));
     }
 
-    /** Loop thread: resolve {@code request}; the answer comes back as a {@link LoopEvent.GeometryAnswer}. */
-    void resolve(GeometryStepRequest request) {
+    @Override
+    public void resolve(GeometryStepRequest request) {
         tasks.add(new Resolve(request));
     }
 
-    /** Loop thread: tell the Geometry process the simulation is over, after whatever it is doing. */
-    void end(SimulationEnd end) {
+    @Override
+    public void end(SimulationEnd end) {
         if (!tasks.offer(new End(end))) {
             drop();
         }
@@ -107,6 +107,6 @@ final class GeometryClientWorker extends ClientWorker {
 
     @Override
     protected void exited(String why) {
-        coordinator.post(new LoopEvent.GeometryLeaves(this, why));
+        loop.post(new LoopEvent.GeometryLeaves(this, why));
     }
 }

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import java.util.function.LongSupplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.core.InProcessGeometry;
@@ -9,7 +10,7 @@ import robosim.protocol.GeometryWorld;
 
 /**
  * Where the loop's steps are resolved, and what happens when that fails: the attached Geometry process
- * (through its {@link GeometryClientWorker}, asynchronously: the answer comes back as an event), or the
+ * (through its {@link GeometryPeer}, asynchronously: the answer comes back as an event), or the
  * geometry library in-process ({@code --no-geometry}, or after a loss under
  * {@link GeometryLoss#IN_PROCESS}). Owns the Geometry timeout and the failover.
  * Loop thread only.
@@ -18,12 +19,13 @@ final class GeometryLink {
     private static final Logger LOG = LoggerFactory.getLogger(GeometryLink.class);
 
     private final Settings settings;
+    private final LongSupplier clock;
     private GeometryWorld world;
     private InProcessGeometry inProcess;
     /** The Geometry process that takes steps now, or null. */
-    private GeometryClientWorker attached;
+    private GeometryPeer attached;
     /** A Geometry process that has said hello and is being sent the world (or waits for the start). */
-    private GeometryClientWorker joining;
+    private GeometryPeer joining;
     /**
      * The step being resolved (sent to {@link #attached}, or waiting for a Geometry process under WAIT)
      * until {@link #resolved}: a loss before then resolves it again.
@@ -38,8 +40,10 @@ final class GeometryLink {
     /** The world last sent to a Geometry process: when robots have joined since, the next step sends the new one. */
     private GeometryWorld sentWorld;
 
-    GeometryLink(Settings settings) {
+    /** {@code clock}: the run's (ns), for the Geometry timeout. */
+    GeometryLink(Settings settings, LongSupplier clock) {
         this.settings = settings;
+        this.clock = clock;
     }
 
     /**
@@ -47,7 +51,7 @@ final class GeometryLink {
      * hello while one is live is refused (nobody takes over a live Geometry process's world); a new one
      * is let in only once the live one is lost.
      */
-    String join(GeometryClientWorker worker) {
+    String join(GeometryPeer worker) {
         if (settings.inProcessGeometry()) {
             return "this Environment resolves geometry in-process (--no-geometry)";
         }
@@ -90,9 +94,9 @@ final class GeometryLink {
         }
     }
 
-    private void send(GeometryClientWorker worker, GeometryWorld w) {
+    private void send(GeometryPeer worker, GeometryWorld w) {
         sentWorld = w;
-        joinSentNanos = System.nanoTime();
+        joinSentNanos = clock.getAsLong();
         worker.sendWorld(w);
     }
 
@@ -105,7 +109,7 @@ final class GeometryLink {
      * A Geometry process has the world and takes over (mid-run: after the one before it was lost); a step
      * waiting for it (WAIT) is sent to it now.
      */
-    void attached(GeometryClientWorker worker) {
+    void attached(GeometryPeer worker) {
         if (worker != joining) {
             return;
         }
@@ -125,7 +129,7 @@ final class GeometryLink {
                 sentWorld = world;
                 worker.sendWorld(world);
             }
-            sentNanos = System.nanoTime();
+            sentNanos = clock.getAsLong();
             worker.resolve(outstanding);
         }
     }
@@ -141,7 +145,7 @@ final class GeometryLink {
                 sentWorld = world;
                 attached.sendWorld(world);
             }
-            sentNanos = System.nanoTime();
+            sentNanos = clock.getAsLong();
             attached.resolve(request);
             return null;
         }
@@ -152,7 +156,7 @@ final class GeometryLink {
     }
 
     /** An answer: the step's, if it comes from the process it was sent to; else null (stale). */
-    GeometryStepResponse answer(GeometryClientWorker from, GeometryStepResponse answer) {
+    GeometryStepResponse answer(GeometryPeer from, GeometryStepResponse answer) {
         return from == attached && outstanding != null ? answer : null;
     }
 
@@ -166,7 +170,7 @@ final class GeometryLink {
      * Returns the answer to the outstanding step if the loss policy resolves it at once (IN_PROCESS),
      * else null (no step outstanding, or WAIT: the step waits for a new Geometry process).
      */
-    GeometryStepResponse lost(GeometryClientWorker worker, String why, long step) {
+    GeometryStepResponse lost(GeometryPeer worker, String why, long step) {
         worker.drop();
         if (worker == joining) {
             joining = null;
@@ -194,7 +198,7 @@ final class GeometryLink {
      * A Geometry process that has taken longer than the Geometry timeout over a step's answer, or over
      * taking the world it was sent; else null.
      */
-    GeometryClientWorker overdue(long now) {
+    GeometryPeer overdue(long now) {
         long limit = settings.geometryTimeoutMs() * 1_000_000L;
         if (limit <= 0) {
             return null;

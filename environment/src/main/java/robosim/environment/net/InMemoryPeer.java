@@ -12,12 +12,12 @@ import robosim.protocol.StepResponse;
 /**
  * A robot in the Environment's own JVM (a one-JVM run), as the {@link SimulationLoop} sees it: its welcome,
  * step numbers, responses and end go straight to its Hardware Simulator ({@link InMemoryLink.Robot}), on the
- * loop thread, and its requests come back through {@link InMemoryRequests}, at once or from its control
+ * loop thread, and its requests come back through {@link InMemoryTransport}, at once or from its control
  * thread. It cannot break the protocol (nothing is read), so it leaves only when the loop drops it or the run
  * ends.
  */
 final class InMemoryPeer implements RobotPeer, InMemoryLink.Environment {
-    private final InMemoryRequests requests;
+    private final InMemoryTransport transport;
     private final String name;
     private InMemoryLink.Robot robot;
     private volatile int index = -1;
@@ -26,8 +26,8 @@ final class InMemoryPeer implements RobotPeer, InMemoryLink.Environment {
     /** A step has been given whose request has not come yet (set by the loop, cleared by whoever settles it). */
     final AtomicBoolean owes = new AtomicBoolean();
 
-    InMemoryPeer(InMemoryRequests requests, String name) {
-        this.requests = requests;
+    InMemoryPeer(InMemoryTransport transport, String name) {
+        this.transport = transport;
         this.name = name;
     }
 
@@ -63,8 +63,8 @@ final class InMemoryPeer implements RobotPeer, InMemoryLink.Environment {
     @Override
     public void begin(long firstStep) {
         given = firstStep;
-        requests.owe(this);
-        requests.given(this, robot.step(firstStep));
+        transport.owe(this);
+        transport.given(this, robot.step(firstStep));
     }
 
     @Override
@@ -75,8 +75,8 @@ final class InMemoryPeer implements RobotPeer, InMemoryLink.Environment {
             return;
         }
         given = nextStep;
-        requests.owe(this);
-        requests.given(this, robot.respond(response, nextStep));
+        transport.owe(this);
+        transport.given(this, robot.respond(response, nextStep));
     }
 
     @Override
@@ -87,7 +87,7 @@ final class InMemoryPeer implements RobotPeer, InMemoryLink.Environment {
     private void close(SimulationEnd end) {
         if (!closed) {
             closed = true;
-            requests.forgive(this);
+            transport.forgive(this);
             robot.end(end);
         }
     }
@@ -111,6 +111,6 @@ final class InMemoryPeer implements RobotPeer, InMemoryLink.Environment {
     /** Its control thread: the request for the step it was last given. */
     @Override
     public void request(StepRequest request) {
-        requests.arrived(this, request);
+        transport.arrived(this, request);
     }
 }

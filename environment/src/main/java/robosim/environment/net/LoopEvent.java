@@ -13,48 +13,27 @@ import robosim.protocol.WorldSnapshot;
 
 /**
  * What other threads post to the {@link SimulationLoop}, the one owner of simulation time, through its
- * {@link Inbox}: socket readers hand in requests and say who came and went, the Geometry worker hands in
- * answers, the control port asks for pause, resume, step N, add, remove and stop. Each applies itself to
- * the {@link Run} on the loop thread, and each knows how it is refused when the run is over, so nobody
- * waits on an answer that will not come. Nothing else changes the run.
+ * {@link Inbox}: robots' transports hand in hellos, requests and departures, the Geometry worker hands in
+ * answers, viewer workers say who came and went, the control port asks for pause, resume, step N, add, remove
+ * and stop. Each applies itself to the {@link Run} on the loop thread, and each knows how it is refused when the
+ * run is over, so nobody waits on an answer that will not come. Nothing else changes the run. No event is any
+ * one transport's: a socket per robot, a shared connection and a robot in this JVM all post these.
  */
 sealed interface LoopEvent extends Inbox.Event<Run> {
-    /** Why an event that needs the run is refused once it is over. */
-    String OVER = "the simulation is over";
-
     @Override
     default void refuse() {
     }
 
-    /** A robot said hello (already checked against the file); the verdict is null (welcome sent) or a refusal. */
-    record RobotJoins(RobotPeer worker, RobotHello hello, int index, CompletableFuture<String> verdict)
-            implements LoopEvent {
+    /** Robots' hellos that came together, for the run's {@link Admission} (refused: each is told the run is over). */
+    record HellosCome(Hellos hellos) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.hello(this);
+            run.hellos(hellos);
         }
 
         @Override
         public void refuse() {
-            verdict.complete(OVER);
-        }
-    }
-
-    /**
-     * The robots of a shared connection said hello, each already checked: the loop answers them all at
-     * once (each {@code RobotJoins}'s verdict), writes their welcomes in one frame, then completes
-     * {@code answered} with true; false when the loop never took it (the worker then refuses them itself).
-     */
-    record SharedJoins(SharedConnection connection, List<RobotJoins> joins, CompletableFuture<Boolean> answered)
-            implements LoopEvent {
-        @Override
-        public void apply(Run run) {
-            run.hello(this);
-        }
-
-        @Override
-        public void refuse() {
-            answered.complete(false);
+            hellos.refuse();
         }
     }
 
@@ -74,76 +53,80 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
     }
 
     /** A robot's request for the step it was last given. */
-    record Request(RobotPeer worker, StepRequest request) implements LoopEvent {
+    record Request(RobotPeer peer, StepRequest request) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.request(worker, request);
+            run.request(peer, request);
         }
     }
 
-    /** Robots in the Environment's JVM: the last request owed has come from a control thread ({@link InMemoryRequests}). */
-    record InMemoryArrived() implements LoopEvent {
+    /**
+     * Something the loop looks at between events has changed: requests have come from robots in this JVM (a
+     * {@link LoopHook} hands them in), a recording viewer has room again. The loop moves the run on.
+     */
+    record Wake() implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.inMemoryArrived();
         }
     }
 
     /** A robot's connection has closed or failed, or it broke the protocol. */
-    record RobotLeaves(RobotPeer worker, String why) implements LoopEvent {
+    record RobotLeaves(RobotPeer peer, String why) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.left(worker, why);
+            run.left(peer, why);
         }
     }
 
     /** A Geometry process said hello; the verdict is null (accepted) or a refusal. */
-    record GeometryJoins(GeometryClientWorker worker, CompletableFuture<String> verdict) implements LoopEvent {
+    record GeometryJoins(GeometryPeer peer, CompletableFuture<String> verdict) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            verdict.complete(run.geometryJoins(worker));
+            verdict.complete(run.geometryJoins(peer));
         }
 
         @Override
         public void refuse() {
-            verdict.complete(OVER);
+            verdict.complete(Progress.OVER);
         }
     }
 
     /** A Geometry process has been sent the world and takes steps now. */
-    record GeometryReady(GeometryClientWorker worker) implements LoopEvent {
+    record GeometryReady(GeometryPeer peer) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.geometryReady(worker);
+            run.geometryReady(peer);
         }
     }
 
     /** A Geometry process's answer to the step it was asked. */
-    record GeometryAnswer(GeometryClientWorker worker, GeometryStepResponse answer) implements LoopEvent {
+    record GeometryAnswer(GeometryPeer peer, GeometryStepResponse answer) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.geometryAnswer(worker, answer);
+            run.geometryAnswer(peer, answer);
         }
     }
 
     /** A Geometry process's connection has closed or failed. */
-    record GeometryLeaves(GeometryClientWorker worker, String why) implements LoopEvent {
+    record GeometryLeaves(GeometryPeer peer, String why) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.geometryLost(worker, why);
+            run.geometryLost(peer, why);
         }
     }
 
-    /** A viewer said hello; it gets the snapshot it starts from, and updates follow without a gap. */
-    record ViewerJoins(ViewerSink viewer, CompletableFuture<WorldSnapshot> snapshot) implements LoopEvent {
+    /** A viewer said hello: it joins {@code viewers} and gets the snapshot it starts from; updates follow without a gap. */
+    record ViewerJoins(ViewerSink viewer, Viewers viewers, CompletableFuture<WorldSnapshot> snapshot)
+            implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.addViewer(viewer, snapshot);
+            viewers.add(viewer);
+            run.greet(viewer.queue(), snapshot);
         }
 
         @Override
         public void refuse() {
-            snapshot.completeExceptionally(new IOException(OVER));
+            snapshot.completeExceptionally(new IOException(Progress.OVER));
         }
     }
 
@@ -154,19 +137,14 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
     record ViewerLeaves(ViewerSink viewer, String why, boolean cutOff, Viewers viewers) implements LoopEvent {
         @Override
         public void apply(Run run) {
-            run.viewerLeft(viewer, why, cutOff);
+            if (viewers.remove(viewer, why) && cutOff) {
+                run.viewerDropped(viewer.viewerName(), why);
+            }
         }
 
         @Override
         public void refuse() {
             viewers.remove(viewer, why);
-        }
-    }
-
-    /** A recording viewer that was full has taken updates: a step held for it may go out (the loop tries again). */
-    record ViewerHasRoom() implements LoopEvent {
-        @Override
-        public void apply(Run run) {
         }
     }
 
@@ -220,7 +198,7 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
 
         @Override
         public void refuse() {
-            verdict.complete(OVER);
+            verdict.complete(Progress.OVER);
         }
     }
 
@@ -235,7 +213,7 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
 
         @Override
         public void refuse() {
-            verdict.complete(OVER);
+            verdict.complete(Progress.OVER);
         }
     }
 

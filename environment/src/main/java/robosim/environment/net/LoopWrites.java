@@ -4,6 +4,7 @@ import robosim.environment.server.ConnectionWatch;
 import robosim.environment.server.ConnectionClock;
 import java.io.IOException;
 import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepResponse;
@@ -29,7 +30,7 @@ final class LoopWrites implements RobotOutput {
     public void response(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
         clock.writing();
         try {
-            RobotWriter.writeResponse(connection, stepMessages, response, nextStep, end);
+            writeResponse(connection, stepMessages, response, nextStep, end);
         } catch (IOException e) {
             throw cutOffOr(e);
         } finally {
@@ -39,7 +40,7 @@ final class LoopWrites implements RobotOutput {
 
     @Override
     public void end(SimulationEnd end, boolean midStep) throws IOException {
-        timed(() -> RobotWriter.writeEnd(connection, end, midStep));
+        timed(() -> writeEnd(connection, end, midStep));
     }
 
     /** Loop thread: the first step number. */
@@ -83,5 +84,31 @@ final class LoopWrites implements RobotOutput {
 
     @Override
     public void close() {
+    }
+
+    /** A response, then the next step number (unless step messages are off) or the end, in one flush. */
+    static void writeResponse(ObjectConnection c, boolean stepMessages, StepResponse response, long nextStep,
+            SimulationEnd end) throws IOException {
+        c.write(response);
+        if (end == null) {
+            if (stepMessages) {
+                c.writeStep(nextStep);
+            }
+        } else {
+            if (stepMessages) {
+                c.writeStep(Protocol.END_OF_SIMULATION);
+            }
+            c.write(end);
+        }
+        c.flush();
+    }
+
+    /** The end out of turn; {@code midStep}: the robot will read an object next, not a step number. */
+    static void writeEnd(ObjectConnection c, SimulationEnd end, boolean midStep) throws IOException {
+        if (!midStep) {
+            c.writeStep(Protocol.END_OF_SIMULATION);
+        }
+        c.write(end);
+        c.flush();
     }
 }

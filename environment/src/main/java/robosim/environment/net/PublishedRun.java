@@ -1,17 +1,34 @@
 package robosim.environment.net;
 
+import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.function.LongSupplier;
 
 /**
- * What the loop publishes about its run for other threads (the control port's status, the summary):
- * written by the loop thread only, read by anyone, never locked. Counts are as of the last step out.
+ * What the loop publishes about its run for other threads (the control port's status and queries, the summary,
+ * whoever waits for the start): written by the {@link StatusBoard} on the loop thread only, read by anyone, never
+ * locked. What the run has released is one {@link ReleasedWorld}; counts are as of the last step out.
  */
 final class PublishedRun {
     private static final long RATE_WINDOW_NANOS = 500_000_000L;
 
+    /** A robot that has said hello, and whether it takes part (waits for the start, or has not left). */
+    record Member(String name, RobotPeer peer, boolean takesPart) {
+        /** Its connection is open and it takes part; read when asked, so a connection closed after the end counts. */
+        boolean connected() {
+            return takesPart && !peer.closed();
+        }
+    }
+
+    private final LongSupplier clock;
+    private final CountDownLatch ready = new CountDownLatch(1);
+    private volatile boolean began;
+
     volatile RunStatus.State phase = RunStatus.State.WAITING;
-    volatile long stepsReleased;
+    /** The world as last released (from step 0 on), or null before. */
+    volatile ReleasedWorld world;
     volatile double recentRate;
     volatile long startNanos;
     volatile long endNanos;
@@ -23,31 +40,52 @@ final class PublishedRun {
     volatile int geometryLosses;
     volatile int geometryAttaches;
     volatile String geometry = "waiting";
-    /** A robot that has said hello, and whether it takes part (waits for the start, or has not left). */
-    record Member(String name, RobotPeer worker, boolean takesPart) {
-        /** Its connection is open and it takes part; read when asked, so a connection closed after the end counts. */
-        boolean connected() {
-            return takesPart && !worker.closed();
-        }
-    }
-
     volatile List<Member> roster = List.of();
     /** Every robot in the world (the file's, then those that joined) and its state, in world order. */
     volatile List<RobotState> states = List.of();
-    final List<Departure> departures = new CopyOnWriteArrayList<>();
+    /** Robots that left mid-run, in the order they did. */
+    volatile List<Departure> departures = List.of();
     private long rateMarkNanos;
     private long rateMarkSteps;
+
+    /** {@code clock}: the run's (ns), for the wall time of a run under way. */
+    PublishedRun(LongSupplier clock) {
+        this.clock = clock;
+    }
+
+    /** Steps whose responses have gone out. */
+    long stepsReleased() {
+        ReleasedWorld w = world;
+        return w == null ? 0 : w.steps();
+    }
 
     /** The run begins (step 0 goes out) at {@code now}. */
     void begin(long now) {
         startNanos = now;
         rateMarkNanos = now;
-        rateMarkSteps = stepsReleased;
+        rateMarkSteps = stepsReleased();
     }
 
-    /** A step's responses went out at {@code now}; the rate is the steps per second over the last half second. */
-    void released(long steps, long now) {
-        stepsReleased = steps;
+    /**
+     * Every client is there and the run has begun or holds before step 1 ({@code began}), or it ended first
+     * (false): whoever waits for the start is answered, once.
+     */
+    void ready(boolean hasBegun) {
+        if (ready.getCount() > 0) {
+            began = hasBegun;
+            ready.countDown();
+        }
+    }
+
+    /** Waits until every client is there and the run has begun (or holds before step 1): true, or false if it ended first or on timeout. */
+    boolean awaitReady(long timeout, TimeUnit unit) throws InterruptedException {
+        return ready.await(timeout, unit) && began;
+    }
+
+    /** A step's responses went out at {@code now}: the world after it; the rate is the steps per second over the last half second. */
+    void released(ReleasedWorld w, long now) {
+        world = w;
+        long steps = w.steps();
         if (now - rateMarkNanos >= RATE_WINDOW_NANOS) {
             recentRate = (steps - rateMarkSteps) * 1e9 / (now - rateMarkNanos);
             rateMarkNanos = now;
@@ -58,7 +96,7 @@ final class PublishedRun {
     /** A hold ended at {@code now}: the rate counts from here (the hold is not a slow step). */
     void resumed(long now) {
         rateMarkNanos = now;
-        rateMarkSteps = stepsReleased;
+        rateMarkSteps = stepsReleased();
     }
 
     void messages(long delivered, long outOfRange, long refused) {
@@ -71,17 +109,17 @@ final class PublishedRun {
     RunSummary summary(int robots) {
         long start = startNanos;
         long end = endNanos;
-        double wall = start == 0 ? 0 : ((end == 0 ? System.nanoTime() : end) - start) / 1e9;
-        return new RunSummary(stepsReleased, robots, wall, endReason, completed, messagesDelivered,
-                messagesOutOfRange, messagesRefused, departures.size(), geometryLosses, geometryAttaches,
-                List.copyOf(departures));
+        double wall = start == 0 ? 0 : ((end == 0 ? clock.getAsLong() : end) - start) / 1e9;
+        List<Departure> left = departures;
+        return new RunSummary(stepsReleased(), robots, wall, endReason, completed, messagesDelivered,
+                messagesOutOfRange, messagesRefused, left.size(), geometryLosses, geometryAttaches, left);
     }
 
     /** What the control port reports now; {@code fileNames}: the file's robots, until the loop has published its own. */
     RunStatus status(List<String> fileNames, int viewers) {
         RunStatus.State state = phase;
-        List<String> connected = new java.util.ArrayList<>();
-        List<String> left = new java.util.ArrayList<>();
+        List<String> connected = new ArrayList<>();
+        List<String> left = new ArrayList<>();
         for (Member m : roster) {
             if (m.connected()) {
                 connected.add(m.name());
@@ -91,7 +129,7 @@ final class PublishedRun {
         }
         List<RobotState> now = states;
         List<String> names = now.isEmpty() ? fileNames : now.stream().map(RobotState::name).toList();
-        return new RunStatus(state, stepsReleased, state == RunStatus.State.RUNNING ? recentRate : 0, names,
+        return new RunStatus(state, stepsReleased(), state == RunStatus.State.RUNNING ? recentRate : 0, names,
                 List.copyOf(connected), List.copyOf(left), geometry, endReason, viewers, now);
     }
 }

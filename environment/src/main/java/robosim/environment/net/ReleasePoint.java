@@ -1,9 +1,9 @@
 package robosim.environment.net;
 
-import robosim.environment.server.Viewers;
-import robosim.environment.server.ViewerQueue;
+import java.util.List;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.environment.server.ViewerQueue;
 import robosim.protocol.RunState;
 
 /**
@@ -16,17 +16,17 @@ final class ReleasePoint {
     private static final Logger LOG = LoggerFactory.getLogger(ReleasePoint.class);
 
     private final RunControl control;
-    private final Viewers viewers;
+    private final List<ReleaseListener> outputs;
     private final PublishedRun record;
     private final RunListener listener;
     private final boolean paced;
     /** The computed step waits for a full recording viewer. */
     private boolean heldForViewer;
 
-    ReleasePoint(RunControl control, Viewers viewers, PublishedRun record, RunListener listener,
+    ReleasePoint(RunControl control, List<ReleaseListener> outputs, PublishedRun record, RunListener listener,
             double speed) {
         this.control = control;
-        this.viewers = viewers;
+        this.outputs = outputs;
         this.record = record;
         this.listener = listener;
         this.paced = speed > 0;
@@ -42,19 +42,19 @@ final class ReleasePoint {
         if (control.holdWanted()) {
             if (!control.holding()) {
                 control.held(released);
-                viewers.announce(new RunState(released, RunState.Phase.PAUSED));
+                announce(new RunState(released, RunState.Phase.PAUSED));
             }
             return false;
         }
         if (control.holding()) {
             control.unheld(now, steps - 1); // pace on from here: no rush to catch up the pause
             record.resumed(now);
-            viewers.announce(new RunState(released, RunState.Phase.RUNNING));
+            announce(new RunState(released, RunState.Phase.RUNNING));
         }
         if (!heldForViewer && paced && control.paceDue(steps) - now > 0) {
             return false;
         }
-        if (!viewers.haveRoom()) {
+        if (!haveRoom()) {
             if (!heldForViewer) {
                 heldForViewer = true;
                 LOG.debug("step {} waits for a recording viewer that is {} updates behind", steps - 1,
@@ -66,6 +66,22 @@ final class ReleasePoint {
         if (heldForViewer) {
             heldForViewer = false;
             control.restartPace(now, steps - 1); // no rush to catch up the time held
+        }
+        return true;
+    }
+
+    private void announce(RunState state) {
+        for (int i = 0; i < outputs.size(); i++) {
+            outputs.get(i).state(state);
+        }
+    }
+
+    /** True if every listener can take one more step now (a recording viewer a whole backlog behind cannot). */
+    private boolean haveRoom() {
+        for (int i = 0; i < outputs.size(); i++) {
+            if (!outputs.get(i).hasRoom()) {
+                return false;
+            }
         }
         return true;
     }

@@ -1,15 +1,15 @@
 package robosim.environment.net;
 
-import robosim.environment.server.Handshake;
-import robosim.environment.server.ConnectionClock;
-import robosim.protocol.Printable;
 import java.io.IOException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.environment.server.ConnectionClock;
+import robosim.environment.server.ClientWorker;
+import robosim.environment.server.Handshake;
 import robosim.protocol.ObjectConnection;
-import robosim.protocol.ProtocolException;
+import robosim.protocol.Printable;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
@@ -17,27 +17,21 @@ import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * One robot's Hardware Simulator over a socket of its own, as the {@link SimulationLoop} sees it (a
- * {@link RobotPeer}) and as its worker thread serves it: the handshake, then its requests, read as the
- * {@link Design} says (each posted to the loop, or left to the {@code SEQUENTIAL} stepper after step 0).
- * The loop's writes go through its {@link RobotOutput} (the loop writes them itself, or a writer thread of
- * its own does). A request for a step this robot was not given, or with a non-finite action, drops this
- * robot alone.
+ * One robot's Hardware Simulator over a socket of its own, as the loop sees it (a {@link RobotPeer}) and as its
+ * worker thread serves it: the handshake, then its requests, read as the {@link Design} says (each posted to the
+ * loop, or left to the {@code SEQUENTIAL} stepper after step 0) and checked in their {@link RequestOrder}. The
+ * loop's writes go through its {@link RobotOutput} (the loop writes them itself, or a writer thread of its own
+ * does). A request for a step this robot was not given, or with a non-finite action, drops this robot alone.
  */
 final class RobotConnection implements RobotPeer {
     private static final Logger LOG = LoggerFactory.getLogger(RobotConnection.class);
-    /** {@link #readRequest}'s step for the first request, whichever step that is. */
-    static final long FIRST = -1;
 
-    private final RobotClientWorker worker;
-    private final ClientWorkerCoordinator coordinator;
+    private final ClientWorker worker;
+    private final RobotContext robots;
     private final ObjectConnection connection;
     private final String name;
+    private final RequestOrder order = new RequestOrder(null);
     private volatile int index = -1;
-    /** The last step number the loop has handed this robot (-1 before the first). */
-    private volatile long given = -1;
-    /** The first step number the loop handed this robot: 0, or a later one for a robot that came back. */
-    private volatile long first = -1;
     /** The loop's own writes (the welcome, the first step; every response unless the design has a writer). */
     private volatile LoopWrites loopWrites;
     private volatile RobotOutput output;
@@ -45,10 +39,9 @@ final class RobotConnection implements RobotPeer {
     /** SEQUENTIAL: counted down once the worker has read (or failed to read) the step-0 request. */
     private final CountDownLatch firstRead = new CountDownLatch(1);
 
-    RobotConnection(RobotClientWorker worker, ClientWorkerCoordinator coordinator, ObjectConnection connection,
-            String name) {
+    RobotConnection(ClientWorker worker, RobotContext robots, ObjectConnection connection, String name) {
         this.worker = worker;
-        this.coordinator = coordinator;
+        this.robots = robots;
         this.connection = connection;
         this.name = name;
         this.loopWrites = new LoopWrites(connection, worker.clock(), true);
@@ -57,18 +50,16 @@ final class RobotConnection implements RobotPeer {
 
     /** The worker's thread: the handshake of {@code hello}, then every request until the connection ends. */
     void serve(RobotHello hello, Handshake handshake) throws IOException, InterruptedException {
-        int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
         String refusal = handshake.heard("robot");
+        HelloCheck.Checked checked = null;
         if (refusal == null) {
-            refusal = coordinator.admission().check(hello, wanted);
-        }
-        RobotHello typed = refusal == null ? coordinator.admission().typed(hello, wanted) : null;
-        if (refusal == null && typed == null) {
-            refusal = Admission.RULE_WENT;
+            checked = robots.check().admit(hello);
+            refusal = checked.refusal();
         }
         if (refusal == null) {
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.RobotJoins(this, typed, wanted, verdict));
+            robots.loop().post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(this, checked.hello(),
+                    checked.index(), verdict))));
             refusal = handshake.verdict(verdict);
         }
         if (refusal != null) {
@@ -79,31 +70,16 @@ final class RobotConnection implements RobotPeer {
         worker.rename("robot-worker[" + Printable.of(name) + "]");
         handshake.accepted();
         try {
-            coordinator.design().read(this, coordinator);
+            robots.design().read(this, robots.loop());
         } finally {
             output.close();
         }
     }
 
-    /**
-     * Reads and checks this robot's request for step k ({@link #FIRST}: the first it was given), on its
-     * worker's or the stepper's thread: it must be for that step, a step this robot has been given, with
-     * finite numbers.
-     */
-    StepRequest readRequest(long due) throws IOException {
+    /** Reads and checks this robot's next request, on its worker's or the stepper's thread. */
+    StepRequest readRequest() throws IOException {
         StepRequest request = connection.read(StepRequest.class);
-        if (given < 0) {
-            throw new ProtocolException("sent a request before the simulation started");
-        }
-        long k = due == FIRST ? first : due;
-        if (request.step() != k || k > given) {
-            throw new ProtocolException("sent a request for step " + request.step() + " where step "
-                    + Math.min(k, given) + " was due");
-        }
-        if (!Double.isFinite(request.moveMm()) || !Double.isFinite(request.turnDeg())) {
-            throw new ProtocolException("asked to move " + request.moveMm() + " mm and turn "
-                    + request.turnDeg() + " deg");
-        }
+        order.check(request);
         return request;
     }
 
@@ -131,6 +107,16 @@ final class RobotConnection implements RobotPeer {
         return worker.clock();
     }
 
+    /** Its connection, for a writer thread of its own ({@code TWO_THREADS}). */
+    ObjectConnection connection() {
+        return connection;
+    }
+
+    /** The name it said, for its threads' names. */
+    String name() {
+        return name;
+    }
+
     @Override
     public int index() {
         return index;
@@ -147,14 +133,13 @@ final class RobotConnection implements RobotPeer {
         LoopWrites writes = new LoopWrites(connection, worker.clock(), welcome.stepMessages());
         loopWrites = writes;
         writes.welcome(welcome);
-        output = coordinator.design().output(this, writes, connection, welcome.stepMessages(), name);
+        output = robots.design().output(this, writes, welcome.stepMessages());
     }
 
     /** Loop thread: sends the first step number. */
     @Override
     public void begin(long firstStep) throws IOException {
-        first = firstStep;
-        given = firstStep;
+        order.begin(firstStep);
         loopWrites.step(firstStep);
     }
 
@@ -162,7 +147,7 @@ final class RobotConnection implements RobotPeer {
     @Override
     public void deliver(StepResponse response, long nextStep, SimulationEnd end) throws IOException {
         if (end == null) {
-            given = nextStep;
+            order.given(nextStep);
         }
         output.response(response, nextStep, end);
     }
@@ -183,7 +168,7 @@ final class RobotConnection implements RobotPeer {
 
     @Override
     public boolean begun() {
-        return given >= 0;
+        return order.begun();
     }
 
     /** True once the connection has closed (the robot left, was dropped, or the run ended). */
@@ -202,7 +187,7 @@ final class RobotConnection implements RobotPeer {
         closed = true;
         firstRead.countDown();
         if (index >= 0) {
-            coordinator.post(new LoopEvent.RobotLeaves(this, why));
+            robots.loop().post(new LoopEvent.RobotLeaves(this, why));
         }
     }
 }

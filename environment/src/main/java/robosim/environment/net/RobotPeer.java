@@ -6,9 +6,10 @@ import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepResponse;
 
 /**
- * One robot as the {@link SimulationLoop} sees it: where its welcome, step numbers, responses and end
- * go. {@link RobotClientWorker} is the one over a socket; the loop never reads from a robot, it is
- * handed requests as events.
+ * One robot as the {@link Run} sees it, whatever carries it ({@link Transport}): where its welcome, step numbers,
+ * responses and end go. {@link RobotConnection} is the one over a socket of its own, {@link SharedRobot} one of a
+ * shared connection, {@link InMemoryPeer} one in the Environment's JVM; the run never reads from a robot, it is
+ * handed requests as events, and never asks which kind a robot is.
  */
 interface RobotPeer {
     /** Its place in the world's robot list (-1 before it has said hello). */
@@ -18,6 +19,13 @@ interface RobotPeer {
     void assign(int index);
 
     void welcome(RobotWelcome welcome) throws IOException;
+
+    /**
+     * Its hello is refused for {@code why} (the loop completes its verdict too): a peer whose own thread writes the
+     * refusal does nothing; a robot of a shared connection puts it into the connection's frame.
+     */
+    default void refused(String why) {
+    }
 
     /** Sends the first step number. */
     void begin(long firstStep) throws IOException;

@@ -16,10 +16,13 @@ public final class RobotRoster {
     /** How long a caller waits for the loop's answer, ms. */
     private static final long ANSWER_MS = 5_000;
 
-    private final ClientWorkerCoordinator coordinator;
+    private final SimulationLoop loop;
+    /** Starts robots in the Environment's JVM, or null when it runs none there. */
+    private final InMemoryTransport inMemory;
 
-    RobotRoster(ClientWorkerCoordinator coordinator) {
-        this.coordinator = coordinator;
+    RobotRoster(SimulationLoop loop, InMemoryTransport inMemory) {
+        this.loop = loop;
+        this.inMemory = inMemory;
     }
 
     /**
@@ -29,22 +32,40 @@ public final class RobotRoster {
      */
     public String add(String name, String type, double xM, double yM, double headingDeg, String control)
             throws InterruptedException {
+        JoinRule rule;
+        try {
+            rule = rule(name, type, xM, yM, headingDeg, control);
+        } catch (IllegalArgumentException e) {
+            return e.getMessage();
+        }
+        CompletableFuture<String> verdict = new CompletableFuture<>();
+        loop.post(new LoopEvent.AddRobot(rule, verdict));
+        return answer(verdict);
+    }
+
+    /**
+     * The rule by which robot {@code name}, a {@code type} (a known model), joins at (x, y) m heading
+     * {@code headingDeg}, once.
+     *
+     * @throws IllegalArgumentException why there is none (an unknown type, a bad name, a pose that is no number)
+     */
+    static JoinRule rule(String name, String type, double xM, double yM, double headingDeg, String control) {
         RobotProperties model = RobotModels.byName(type);
         if (model == null) {
-            return "type \"" + Printable.of(type, 64) + "\" is not a known robot type (known: " + RobotModels.names()
-                    + "; a RobotType class needs a <join> rule with its radius in the file)";
+            throw new IllegalArgumentException("type \"" + Printable.of(type, 64) + "\" is not a known robot type "
+                    + "(known: " + RobotModels.names() + "; a RobotType class needs a <join> rule with its radius in the "
+                    + "file)");
         }
         if (JoinRule.badName(name) != null) {
-            return JoinRule.badName(name);
+            throw new IllegalArgumentException(JoinRule.badName(name));
         }
         if (!Double.isFinite(xM) || !Double.isFinite(yM) || !Double.isFinite(headingDeg)) {
-            return "the pose must be finite numbers, got " + xM + " " + yM + " " + headingDeg;
+            throw new IllegalArgumentException("the pose must be finite numbers, got " + xM + " " + yM + " "
+                    + headingDeg);
         }
         WorldSpec.RobotSpec robot = new WorldSpec.RobotSpec(name, type, control == null ? "" : control, xM * 1000,
                 yM * 1000, robosim.geometry.Kinematics.turn(headingDeg, 0));
-        CompletableFuture<String> verdict = new CompletableFuture<>();
-        coordinator.post(new LoopEvent.AddRobot(new JoinRule(name, robot, null, 1), verdict));
-        return answer(verdict);
+        return new JoinRule(name, robot, null, 1);
     }
 
     /**
@@ -52,8 +73,11 @@ public final class RobotRoster {
      * loop to welcome it. Returns null, or why it did not start or was refused.
      */
     public String startHere(String name, String type, String control) throws InterruptedException {
+        if (inMemory == null) {
+            return "this Environment runs no robots in its JVM";
+        }
         try {
-            return answer(coordinator.helloInMemory(name, type, control));
+            return answer(inMemory.start(name, type, control));
         } catch (IllegalArgumentException e) {
             return e.getMessage();
         }
@@ -66,12 +90,15 @@ public final class RobotRoster {
      */
     public String remove(String name) throws InterruptedException {
         CompletableFuture<String> verdict = new CompletableFuture<>();
-        coordinator.post(new LoopEvent.RemoveRobot(name, verdict));
+        loop.post(new LoopEvent.RemoveRobot(name, verdict));
         return answer(verdict);
     }
 
     private static String answer(CompletableFuture<String> verdict) throws InterruptedException {
-        String why = ClientWorkerCoordinator.await(verdict, ANSWER_MS, TimeUnit.MILLISECONDS);
-        return why == null && !verdict.isDone() ? "the simulation loop did not answer" : why;
+        try {
+            return verdict.get(ANSWER_MS, TimeUnit.MILLISECONDS);
+        } catch (java.util.concurrent.TimeoutException | java.util.concurrent.ExecutionException e) {
+            return "the simulation loop did not answer";
+        }
     }
 }

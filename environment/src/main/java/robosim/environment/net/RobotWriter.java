@@ -6,7 +6,6 @@ import java.util.concurrent.ArrayBlockingQueue;
 import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.TimeUnit;
 import robosim.protocol.ObjectConnection;
-import robosim.protocol.Protocol;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepResponse;
 
@@ -30,11 +29,11 @@ final class RobotWriter implements RobotOutput {
     private final BlockingQueue<Outgoing> outgoing = new ArrayBlockingQueue<>(4);
     private final Thread thread;
 
-    RobotWriter(RobotConnection robot, ObjectConnection connection, boolean stepMessages, String robotName) {
+    RobotWriter(RobotConnection robot, boolean stepMessages) {
         this.robot = robot;
-        this.connection = connection;
+        this.connection = robot.connection();
         this.stepMessages = stepMessages;
-        this.thread = new Thread(this::writeLoop, "robot-writer[" + Printable.of(robotName) + "]");
+        this.thread = new Thread(this::writeLoop, "robot-writer[" + Printable.of(robot.name()) + "]");
         thread.setDaemon(true);
         thread.start();
     }
@@ -73,9 +72,9 @@ final class RobotWriter implements RobotOutput {
                 robot.clock().writing();
                 try {
                     if (o.response() == null) {
-                        writeEnd(connection, o.end(), o.midStep());
+                        LoopWrites.writeEnd(connection, o.end(), o.midStep());
                     } else {
-                        writeResponse(connection, stepMessages, o.response(), o.nextStep(), o.end());
+                        LoopWrites.writeResponse(connection, stepMessages, o.response(), o.nextStep(), o.end());
                     }
                 } finally {
                     robot.clock().written();
@@ -86,31 +85,5 @@ final class RobotWriter implements RobotOutput {
         } catch (IOException | RuntimeException e) {
             robot.drop();
         }
-    }
-
-    /** A response, then the next step number (unless step messages are off) or the end, in one flush. */
-    static void writeResponse(ObjectConnection c, boolean stepMessages, StepResponse response, long nextStep,
-            SimulationEnd end) throws IOException {
-        c.write(response);
-        if (end == null) {
-            if (stepMessages) {
-                c.writeStep(nextStep);
-            }
-        } else {
-            if (stepMessages) {
-                c.writeStep(Protocol.END_OF_SIMULATION);
-            }
-            c.write(end);
-        }
-        c.flush();
-    }
-
-    /** The end out of turn; {@code midStep}: the robot will read an object next, not a step number. */
-    static void writeEnd(ObjectConnection c, SimulationEnd end, boolean midStep) throws IOException {
-        if (!midStep) {
-            c.writeStep(Protocol.END_OF_SIMULATION);
-        }
-        c.write(end);
-        c.flush();
     }
 }

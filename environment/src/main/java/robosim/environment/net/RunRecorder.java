@@ -14,14 +14,15 @@ import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * Records a run ({@code --record FILE}) on its own {@code recorder} thread: the loop hands it each step's
- * viewer update, requests and responses (immutable, shared) through a queue of {@link #QUEUE} steps and goes on; the
- * thread writes them ({@link RecordingWriter}) and hands the file to the operating system whenever it has
- * caught up, so a killed Environment leaves every step it wrote whole. Nothing is dropped: should the disk
- * fall a whole queue behind, the loop waits for it (said in the log). A write that fails stops the
- * recording with a logged error; the run goes on.
+ * Records a run ({@code --record FILE}) on its own {@code recorder} thread, a {@link ReleaseListener} of the run:
+ * it opens the file as the run begins, from the world as a viewer would get it, then the loop hands it each
+ * released step's viewer update, requests and responses (immutable, shared) through a queue of {@link #QUEUE}
+ * steps and goes on; the thread writes them ({@link RecordingWriter}) and hands the file to the operating system
+ * whenever it has caught up, so a killed Environment leaves every step it wrote whole. Nothing is dropped: should
+ * the disk fall a whole queue behind, the loop waits for it (said in the log). A file that cannot be made, or a
+ * write that fails, stops the recording with a logged error; the run goes on.
  */
-final class RunRecorder {
+final class RunRecorder implements ReleaseListener {
     private static final Logger LOG = LoggerFactory.getLogger(RunRecorder.class);
     /** Steps the loop may be ahead of the disk. */
     static final int QUEUE = 4096;
@@ -30,39 +31,79 @@ final class RunRecorder {
     }
 
     private final Path file;
-    private final RecordingWriter writer;
     private final BlockingQueue<Object> queue = new ArrayBlockingQueue<>(QUEUE);
-    private final Thread thread;
+    /** The file's writer and thread, once the run has begun. */
+    private volatile RecordingWriter writer;
+    private volatile Thread thread;
     private volatile boolean failed;
     private boolean toldFull;
 
-    /** Creates the file (it must not exist) and starts the {@code recorder} thread. */
-    RunRecorder(Path file, WorldSnapshot start) throws IOException {
+    /** Records into {@code file}, which must not exist, once the run begins. */
+    RunRecorder(Path file) {
         this.file = file;
-        this.writer = new RecordingWriter(file);
-        try {
-            writer.snapshot(start);
-            writer.flush();
-        } catch (IOException | RuntimeException e) {
-            writer.close();
-            throw e;
-        }
-        thread = new Thread(this::write, "recorder");
-        thread.setDaemon(true);
-        thread.start();
     }
 
-    /** Loop thread: one released step. */
-    void step(WorldSnapshot roster, PoseUpdate update, StepRequest[] requests, StepResponse[] responses) {
-        if (roster != null) {
-            hand(roster);
+    /** Loop thread: creates the file (it must not exist) and starts the {@code recorder} thread. */
+    @Override
+    public void begun(WorldSnapshot start) {
+        RecordingWriter w;
+        try {
+            w = new RecordingWriter(file);
+        } catch (IOException | RuntimeException e) {
+            cannot(e);
+            return;
         }
-        hand(new Step(update, requests, responses));
+        try {
+            w.snapshot(start);
+            w.flush();
+        } catch (IOException | RuntimeException e) {
+            try {
+                w.close();
+            } catch (IOException ignored) {
+                // it failed already
+            }
+            cannot(e);
+            return;
+        }
+        writer = w;
+        Thread t = new Thread(this::write, "recorder");
+        t.setDaemon(true);
+        thread = t;
+        t.start();
+    }
+
+    private void cannot(Exception e) {
+        failed = true;
+        LOG.error("cannot record into {}: {}", file, e.toString());
+    }
+
+    /** Loop thread: one released step (the world it grew to first, if robots joined). */
+    @Override
+    public void released(ReleasedWorld world, ReleaseListener.Step step) {
+        if (failed || writer == null) {
+            return;
+        }
+        int n = world.robots();
+        StepRequest[] asked = new StepRequest[n];
+        StepResponse[] responses = new StepResponse[n];
+        for (int i = 0; i < n; i++) {
+            if (step.tookPart(i)) {
+                asked[i] = step.request(i);
+                responses[i] = step.response(i);
+            }
+        }
+        if (world.grown()) {
+            hand(world.snapshot());
+        }
+        hand(new Step(world.update(), asked, responses));
     }
 
     /** Loop thread: the end; the thread finishes the file and ends. */
-    void end(SimulationEnd end) {
-        hand(end);
+    @Override
+    public void ended(SimulationEnd end) {
+        if (writer != null) {
+            hand(end);
+        }
     }
 
     private void hand(Object item) {
@@ -82,20 +123,20 @@ final class RunRecorder {
         }
     }
 
-    /** False once a write has failed: the loop then hands nothing more. */
-    boolean recording() {
-        return !failed;
-    }
-
-    /** Waits up to {@code ms} for the file to be finished (after {@link #end}); logs it if it is not. */
+    /** Waits up to {@code ms} for the file to be finished (after the end); logs it if it is not. */
     void awaitWritten(long ms) throws InterruptedException {
-        thread.join(ms);
-        if (thread.isAlive()) {
+        Thread t = thread;
+        if (t == null) {
+            return;
+        }
+        t.join(ms);
+        if (t.isAlive()) {
             LOG.warn("recording {} was not finished within {} ms of the end; its last steps may be missing", file, ms);
         }
     }
 
     private void write() {
+        RecordingWriter writer = this.writer;
         try (writer) {
             while (true) {
                 Object item = queue.take();

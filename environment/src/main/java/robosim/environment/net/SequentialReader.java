@@ -12,17 +12,17 @@ import java.util.List;
  * who breaks the protocol is dropped and skipped from then on. The thread ends with the simulation.
  */
 final class SequentialReader implements Runnable {
-    private final ClientWorkerCoordinator coordinator;
+    private final SimulationLoop loop;
     private final List<RobotConnection> robots;
 
-    private SequentialReader(ClientWorkerCoordinator coordinator, List<RobotConnection> robots) {
-        this.coordinator = coordinator;
+    private SequentialReader(SimulationLoop loop, List<RobotConnection> robots) {
+        this.loop = loop;
         this.robots = robots;
     }
 
     /** Starts the {@code stepper} thread over {@code robots} (workers over sockets), in world order. */
-    static void start(ClientWorkerCoordinator coordinator, List<RobotConnection> robots) {
-        Thread t = new Thread(new SequentialReader(coordinator, List.copyOf(robots)), "stepper");
+    static void start(SimulationLoop loop, List<RobotConnection> robots) {
+        Thread t = new Thread(new SequentialReader(loop, List.copyOf(robots)), "stepper");
         t.setDaemon(true);
         t.start();
     }
@@ -43,10 +43,10 @@ final class SequentialReader implements Runnable {
      */
     private void readAll() throws InterruptedException {
         List<LoopEvent> batch = new ArrayList<>();
-        for (long k = 1; !coordinator.isOver(); k++) {
+        for (long k = 1; !loop.over(); k++) {
             boolean anyone = false;
             for (RobotConnection robot : robots) {
-                if (robot.dropped() || coordinator.isOver()) {
+                if (robot.dropped() || loop.over()) {
                     continue;
                 }
                 anyone = true;
@@ -57,7 +57,7 @@ final class SequentialReader implements Runnable {
                     if (!batch.isEmpty() && !robot.hasInput()) {
                         handOver(batch);
                     }
-                    batch.add(new LoopEvent.Request(robot, robot.readRequest(k)));
+                    batch.add(new LoopEvent.Request(robot, robot.readRequest()));
                 } catch (IOException e) {
                     robot.drop();
                     batch.add(new LoopEvent.RobotLeaves(robot, e.getMessage() == null ? e.toString() : e.getMessage()));
@@ -72,7 +72,7 @@ final class SequentialReader implements Runnable {
 
     private void handOver(List<LoopEvent> batch) {
         if (!batch.isEmpty()) {
-            coordinator.post(new LoopEvent.Batch(List.copyOf(batch)));
+            loop.post(new LoopEvent.Batch(List.copyOf(batch)));
             batch.clear();
         }
     }

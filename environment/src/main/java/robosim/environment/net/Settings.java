@@ -1,6 +1,7 @@
 package robosim.environment.net;
 
 import java.net.InetAddress;
+import robosim.protocol.InMemoryLink;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.SimulationKeys;
 
@@ -9,10 +10,12 @@ import robosim.protocol.SimulationKeys;
  * ({@link Timeouts}) and the run's shape ({@link Shape}: design, geometry, steps, pace). Build one with
  * {@link #builder()}; every value has a default a user would expect: loopback, the paper's ports, the
  * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped, a lost robot
- * removed; and the file the
- * run is recorded into ({@code record}, null: none).
+ * removed; the file the run is recorded into ({@code record}, null: none); and what starts the file's robots in
+ * the Environment's own JVM ({@code robotsInThisJvm}, {@code --one-jvm}; null: every robot connects). Whether the
+ * coordinator design allows these (the loss policy, robots in this JVM) is checked once, as one is built.
  */
-public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.file.Path record) {
+public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.file.Path record,
+        InMemoryLink.Starter robotsInThisJvm) {
     /** Default step and Geometry timeouts, ms. */
     public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
     public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
@@ -73,6 +76,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         b.resetEvery = shape.resetEvery();
         b.onRobotLoss = shape.onRobotLoss();
         b.record = record;
+        b.robotsInThisJvm = robotsInThisJvm;
         return b;
     }
 
@@ -169,6 +173,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
         private java.nio.file.Path record;
         private RobotLoss onRobotLoss = RobotLoss.REMOVE;
+        private InMemoryLink.Starter robotsInThisJvm;
 
         private Builder() {
         }
@@ -259,12 +264,30 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
             return this;
         }
 
+        /**
+         * Runs every robot the file names in the Environment's JVM, started by {@code starter} with its type and
+         * control class, through an in-memory link (no socket, no serialization); robots that join later still
+         * connect. Null: every robot connects.
+         */
+        public Builder robotsInThisJvm(InMemoryLink.Starter starter) {
+            this.robotsInThisJvm = starter;
+            return this;
+        }
+
+        /** @throws IllegalArgumentException what the coordinator design does not allow of these settings, saying why */
         public Settings build() {
+            String refusal = design.refusesLossPolicy(onRobotLoss);
+            if (refusal == null && robotsInThisJvm != null) {
+                refusal = design.refuses(Transport.IN_MEMORY);
+            }
+            if (refusal != null) {
+                throw new IllegalArgumentException(refusal);
+            }
             return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, keys),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery,
                             onRobotLoss),
-                    record);
+                    record, robotsInThisJvm);
         }
     }
 }

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.environment.server.ClientWorker;
 import robosim.environment.server.Handshake;
 import robosim.protocol.Printable;
 import java.io.IOException;
@@ -9,7 +10,6 @@ import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.ObjectConnection;
-import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;
@@ -22,31 +22,33 @@ import robosim.protocol.SharedRequests;
  * {@link RobotClientWorker} thread (the report's thread per client, a client being a connection). Each
  * robot still says hello with its own name and properties and is welcomed or refused alone; then each
  * frame the worker reads carries requests of several robots, handed to the loop as one event, and the
- * loop answers each robot into one frame per connection ({@link SharedOutput}). A frame that names a
+ * loop answers each robot into one frame per connection ({@link SharedOutput}, written after each event). A frame that names a
  * robot not on this connection, holds more requests than it has robots, or breaks off drops the
  * connection with every robot on it; the other connections go on.
  */
 final class SharedConnection {
     private static final Logger LOG = LoggerFactory.getLogger(SharedConnection.class);
 
-    private final RobotClientWorker worker;
+    private final ClientWorker worker;
     private final Handshake handshake;
-    private final ClientWorkerCoordinator coordinator;
+    private final RobotContext context;
+    /** Where this connection waits with a frame to write, once the loop has put something in it. */
+    private final SharedOutput frames;
     private final ObjectConnection connection;
     /** Its robots by slot; null where one was refused. */
     private SharedRobot[] robots = new SharedRobot[0];
     private int welcomed;
     /** The next frame; the worker's until the loop has its robots' hellos, then the loop's. */
     private final SharedReplies replies = new SharedReplies();
-    private SharedOutput output;
     private boolean pending;
     private volatile boolean closed;
 
-    SharedConnection(RobotClientWorker worker, ClientWorkerCoordinator coordinator, ObjectConnection connection,
+    SharedConnection(ClientWorker worker, RobotContext context, SharedOutput frames, ObjectConnection connection,
             Handshake handshake) {
         this.worker = worker;
         this.handshake = handshake;
-        this.coordinator = coordinator;
+        this.context = context;
+        this.frames = frames;
         this.connection = connection;
     }
 
@@ -57,14 +59,14 @@ final class SharedConnection {
      * for every slot instead of the empty frame.
      */
     void serve(SharedHello header) throws IOException, InterruptedException {
-        if (header.protocolVersion() != Protocol.VERSION) {
-            throw new ProtocolException("protocol version " + header.protocolVersion() + " is not supported (the "
-                    + "Environment speaks " + Protocol.VERSION + ")");
+        String version = handshake.version(header.protocolVersion());
+        if (version != null) {
+            throw new ProtocolException(version);
         }
         int n = header.robots();
         String refusal = handshake.proveSecret("robot");
         if (refusal == null) {
-            refusal = coordinator.design().refusesSharedConnections();
+            refusal = context.sharedRefusal();
         }
         if (refusal != null) { // (refused as a whole, still under the handshake deadline)
             for (int slot = 0; slot < n; slot++) {
@@ -82,18 +84,14 @@ final class SharedConnection {
         }
         handshake.over();
         robots = new SharedRobot[n];
-        List<LoopEvent.RobotJoins> joins = new ArrayList<>();
+        List<Hellos.Hello> joins = new ArrayList<>();
         java.util.Set<String> names = new java.util.HashSet<>();
         List<String> refused = new ArrayList<>();
         long unwritten = 0;
         for (int slot = 0; slot < n; slot++) {
             RobotHello hello = hellos.get(slot);
-            int wanted = hello.name() == null ? -1 : coordinator.spec().indexOf(hello.name());
-            String why = coordinator.admission().check(hello, wanted);
-            RobotHello typed = why == null ? coordinator.admission().typed(hello, wanted) : null;
-            if (why == null && typed == null) {
-                why = Admission.RULE_WENT;
-            }
+            HelloCheck.Checked checked = context.check().admit(hello);
+            String why = checked.refusal();
             if (why == null && !names.add(hello.name())) {
                 why = "robot " + Printable.of(hello.name(), 64) + " is named twice on this connection";
             }
@@ -106,7 +104,7 @@ final class SharedConnection {
                 continue;
             }
             robots[slot] = new SharedRobot(this, slot, hello.name());
-            joins.add(new LoopEvent.RobotJoins(robots[slot], typed, wanted, new CompletableFuture<>()));
+            joins.add(new Hellos.Hello(robots[slot], checked.hello(), checked.index(), new CompletableFuture<>()));
         }
         hellos.clear(); // (the refused ones' names are garbage now; the accepted ones' are in their joins)
         names.clear();
@@ -115,19 +113,31 @@ final class SharedConnection {
                     + String.join("; ", refused));
         }
         if (!joins.isEmpty()) {
+            List<Hellos.Hello> asked = List.copyOf(joins);
             CompletableFuture<Boolean> answered = new CompletableFuture<>();
-            coordinator.post(new LoopEvent.SharedJoins(this, joins, answered));
+            context.loop().post(new LoopEvent.HellosCome(new Hellos(asked, byLoop -> {
+                if (byLoop && asked.stream().anyMatch(j -> j.verdict().getNow("") == null)) {
+                    flush(); // (the welcomes go out before any step number)
+                } // (else the connection is no robot of the world: its own thread writes the refusals, not the loop)
+                answered.complete(byLoop);
+            })));
             if (!handshake.verdict(answered)) { // (the loop never saw them: this thread still owns the frame)
-                joins.forEach(j -> replies.welcome(((SharedRobot) j.worker()).slot(),
-                        RobotWelcome.refused(LoopEvent.OVER)));
-                unwritten += joins.size() * refusalBytes(LoopEvent.OVER);
-                joins.clear();
+                for (SharedRobot r : robots) {
+                    if (r != null) {
+                        replies.welcome(r.slot(), RobotWelcome.refused(Progress.OVER));
+                    }
+                }
+                unwritten += asked.size() * refusalBytes(Progress.OVER);
+                java.util.Arrays.fill(robots, null);
             }
-            for (LoopEvent.RobotJoins j : joins) {
-                SharedRobot r = (SharedRobot) j.worker();
-                String verdict = j.verdict().getNow("no answer");
+            int k = 0;
+            for (int slot = 0; slot < n; slot++) { // (the hellos asked are those of the robots left, in slot order)
+                if (robots[slot] == null) {
+                    continue;
+                }
+                String verdict = asked.get(k++).verdict().getNow("no answer");
                 if (verdict != null) {
-                    robots[r.slot()] = null;
+                    robots[slot] = null;
                     unwritten += refusalBytes(verdict);
                 } else {
                     welcomed++;
@@ -176,14 +186,9 @@ final class SharedConnection {
                 }
             }
             if (!batch.isEmpty()) {
-                coordinator.post(new LoopEvent.Batch(batch));
+                context.loop().post(new LoopEvent.Batch(batch));
             }
         }
-    }
-
-    /** Loop thread, as it takes this connection's hellos: where its frames wait to be written. */
-    void outputTo(SharedOutput out) {
-        output = out;
     }
 
     SharedReplies replies() {
@@ -192,9 +197,9 @@ final class SharedConnection {
 
     /** Loop thread: something went into the next frame. */
     void buffered() {
-        if (!pending && output != null) {
+        if (!pending) {
             pending = true;
-            output.add(this);
+            frames.add(this);
         }
     }
 
@@ -243,7 +248,7 @@ final class SharedConnection {
             }
         }
         if (!leaves.isEmpty()) {
-            coordinator.post(new LoopEvent.Batch(leaves));
+            context.loop().post(new LoopEvent.Batch(leaves));
         }
     }
 }

@@ -4,11 +4,11 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The shared connections the loop has put something into since it last wrote: after each event (and
- * each deadline check) the loop writes one frame to each, so a step's responses to every robot of a
- * process go out in one write. Loop thread only.
+ * The shared connections the loop has put something into since it last wrote, the {@link LoopHook} of that
+ * transport: after each event (and each deadline check) the loop writes one frame to each, so a step's responses
+ * to every robot of a process go out in one write. Loop thread only.
  */
-final class SharedOutput {
+final class SharedOutput implements LoopHook {
     private final List<SharedConnection> pending = new ArrayList<>();
 
     /** {@code c} has a frame to write. */
@@ -17,7 +17,8 @@ final class SharedOutput {
     }
 
     /** Writes every pending frame. */
-    void flush() {
+    @Override
+    public void flush() {
         if (pending.isEmpty()) {
             return;
         }

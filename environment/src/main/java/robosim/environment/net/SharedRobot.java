@@ -1,6 +1,5 @@
 package robosim.environment.net;
 
-import robosim.protocol.Printable;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotWelcome;
@@ -18,13 +17,8 @@ final class SharedRobot implements RobotPeer {
     private final SharedConnection connection;
     private final int slot;
     private final String name;
+    private final RequestOrder order;
     private volatile int index = -1;
-    /** The last step number the loop has handed this robot (-1 before the first). */
-    private volatile long given = -1;
-    /** The first step number the loop handed this robot. */
-    private volatile long first = -1;
-    /** The reader's: the step this robot's next request must be for (-1: its first). */
-    private long due = -1;
     /** Ended or dropped: nothing more goes to it, what it sends is ignored. */
     private volatile boolean ended;
 
@@ -32,6 +26,7 @@ final class SharedRobot implements RobotPeer {
         this.connection = connection;
         this.slot = slot;
         this.name = name;
+        this.order = new RequestOrder(name);
     }
 
     String name() {
@@ -58,10 +53,15 @@ final class SharedRobot implements RobotPeer {
         connection.buffered();
     }
 
+    /** Loop thread: its refusal goes into the connection's frame (written by the loop if a robot of it was welcomed). */
+    @Override
+    public void refused(String why) {
+        connection.replies().welcome(slot, RobotWelcome.refused(why));
+    }
+
     @Override
     public void begin(long firstStep) {
-        first = firstStep;
-        given = firstStep;
+        order.begin(firstStep);
         connection.replies().step(slot, firstStep);
         connection.buffered();
     }
@@ -69,7 +69,7 @@ final class SharedRobot implements RobotPeer {
     @Override
     public void deliver(StepResponse response, long nextStep, SimulationEnd end) {
         if (end == null) {
-            given = nextStep;
+            order.given(nextStep);
             connection.replies().response(slot, response, nextStep);
         } else {
             ended = true;
@@ -90,7 +90,7 @@ final class SharedRobot implements RobotPeer {
 
     @Override
     public boolean begun() {
-        return given >= 0;
+        return order.begun();
     }
 
     @Override
@@ -101,7 +101,7 @@ final class SharedRobot implements RobotPeer {
     /** Loop thread: ends this robot alone (the loop says why in its log and in the run's record). */
     @Override
     public void drop() {
-        end(new SimulationEnd(given - 1, "dropped by the Environment"), true);
+        end(new SimulationEnd(order.given() - 1, "dropped by the Environment"), true);
     }
 
     /** True once it has been ended or dropped: what it sends is ignored. */
@@ -109,25 +109,8 @@ final class SharedRobot implements RobotPeer {
         return ended;
     }
 
-    /**
-     * The reader: checks this robot's request, which must be for the step due (its first, then one after
-     * another), a step it has been given, with finite numbers.
-     */
+    /** The reader: checks this robot's request ({@link RequestOrder}). */
     void check(StepRequest request) throws ProtocolException {
-        long g = given;
-        if (g < 0) {
-            throw new ProtocolException("sent a request for robot " + Printable.of(name)
-                    + " before the simulation started");
-        }
-        long k = due < 0 ? first : due;
-        if (request.step() != k || k > g) {
-            throw new ProtocolException("sent a request for step " + request.step() + " for robot "
-                    + Printable.of(name) + " where step " + Math.min(k, g) + " was due");
-        }
-        if (!Double.isFinite(request.moveMm()) || !Double.isFinite(request.turnDeg())) {
-            throw new ProtocolException("asked robot " + Printable.of(name) + " to move " + request.moveMm()
-                    + " mm and turn " + request.turnDeg() + " deg");
-        }
-        due = k + 1;
+        order.check(request);
     }
 }

@@ -1,32 +1,43 @@
 package robosim.environment.net;
 
-import robosim.environment.server.ConnectionWatch;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 
 /**
- * The one owner of simulation time, on its own thread, {@code simulation-loop}: the only code that
- * advances the step. It takes events from its {@link Inbox}, has each apply itself to the {@link Run} and
- * lets the run move on as far as it can, and between events keeps the run's deadlines (pace, step timeout,
- * Geometry timeout). It blocks on its inbox, timed to the next deadline, and in the
- * run's own writes to robots, which the {@link ConnectionWatch} cuts short past the write timeout; it holds
- * no lock, ever. What it decides lives in the {@link Run}.
+ * The one owner of simulation time, on its own thread, {@code simulation-loop}: the only code that advances the
+ * step. Other threads hand it events through its {@link Inbox} ({@link #post}); it has each apply itself to the
+ * {@link Run}, lets the run move on as far as it can, lets the transports' {@link LoopHook}s hand in what came
+ * without an event and write what the run gave them, and between events keeps the run's deadlines (pace, step
+ * timeout, Geometry timeout). It blocks on its inbox, timed to the next deadline, and in the run's own writes to
+ * robots, which the connection watch cuts short past the write timeout; it holds no lock, ever. What it decides
+ * lives in the {@link Run}; this class only drives it, as a test may by hand.
  */
 final class SimulationLoop implements Runnable {
     private static final Logger LOG = LoggerFactory.getLogger(SimulationLoop.class);
+    /** How long a thread posting an event waits for room in the loop's queue before giving up, ms. */
+    private static final long POST_LIMIT_MS = 5_000;
 
-    private final ClientWorkerCoordinator coordinator;
     private final Inbox<Run> inbox;
-    private final Run run;
     private final long tickNanos;
+    private final CountDownLatch ended = new CountDownLatch(1);
+    /** What else ends with the loop (the ports close), run last on the loop thread. */
+    private final Runnable onEnd;
+    /** The run it drives and the transports' hooks, from {@link #start} on (the loop thread's). */
+    private Run run;
+    private List<LoopHook> hooks;
     private long nextTick;
 
-    SimulationLoop(ClientWorkerCoordinator coordinator, Inbox<Run> inbox, Run run) {
-        this.coordinator = coordinator;
-        this.inbox = inbox;
-        this.run = run;
-        this.tickNanos = tick(coordinator.settings());
+    /**
+     * {@code capacity}: events its inbox holds; {@code onEnd}: runs last, on the loop thread, once the run is
+     * over. Events may be posted from now on; they are taken once it {@link #start}s.
+     */
+    SimulationLoop(int capacity, Settings settings, Runnable onEnd) {
+        this.inbox = new Inbox<>(capacity, POST_LIMIT_MS);
+        this.tickNanos = tick(settings);
+        this.onEnd = onEnd;
     }
 
     /** How often the loop's own deadlines are checked: a quarter of the shortest one, between 5 and 100 ms. */
@@ -40,28 +51,76 @@ final class SimulationLoop implements Runnable {
         return TimeUnit.MILLISECONDS.toNanos(Math.max(5, Math.min(100, shortest / 4)));
     }
 
+    /**
+     * Starts the {@code simulation-loop} thread, driving {@code driven}, with the transports' {@code loopHooks}
+     * (in-memory robots, shared connections).
+     */
+    void start(Run driven, List<LoopHook> loopHooks) {
+        this.run = driven;
+        this.hooks = List.copyOf(loopHooks);
+        Thread t = new Thread(this, "simulation-loop");
+        t.setDaemon(true);
+        t.start();
+    }
+
+    /**
+     * Any thread: hands {@code event} to the loop; if the run is over (or the loop's queue stays full past the
+     * post limit), the event is refused instead, so whoever waits on its answer is answered.
+     */
+    void post(LoopEvent event) {
+        if (!inbox.post(event) && !inbox.closed()) {
+            LOG.warn("the simulation loop has not taken an event for {} ms; {} is refused", POST_LIMIT_MS,
+                    event.getClass().getSimpleName());
+        }
+    }
+
+    /** True once the loop is done: every later event is refused. */
+    boolean over() {
+        return inbox.closed();
+    }
+
+    /** Blocks until the loop is done. */
+    void awaitEnd() throws InterruptedException {
+        ended.await();
+    }
+
+    boolean awaitEnd(long timeout, TimeUnit unit) throws InterruptedException {
+        return ended.await(timeout, unit);
+    }
+
+    /** Before {@link #start}, or instead of it: the loop will never run; events are refused. */
+    void never() {
+        inbox.close();
+        ended.countDown();
+    }
+
     @Override
     public void run() {
         try {
-            run.advance(System.nanoTime());
+            settle(System.nanoTime());
             run.publish();
             while (!run.ended()) {
                 long now = System.nanoTime();
-                Inbox.Event<Run> e = inbox.poll(run.busy() ? 0 : Math.max(0, Math.min(nextTick, run.paceDue()) - now));
+                Inbox.Event<Run> e = inbox.poll(pending() ? 0 : Math.max(0, Math.min(nextTick, run.paceDue()) - now));
                 // everything queued by now is taken before any deadline is judged (a request or an answer
                 // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
                 for (int more = e == null ? 0 : inbox.size(); e != null; more--) {
                     e.apply(run);
-                    run.advance(System.nanoTime());
+                    settle(System.nanoTime());
                     e = more > 0 ? inbox.poll() : null;
                 }
-                run.answerHeldHellos();
+                while (run.answerHeldHellos()) { // (hellos held while a step was resolved)
+                    settle(System.nanoTime());
+                }
                 now = System.nanoTime();
                 if (now - nextTick >= 0) {
+                    for (LoopHook hook : hooks) {
+                        hook.handIn(run, true);
+                    }
                     run.tick(now);
                     nextTick = now + tickNanos;
                 }
-                run.advance(now);
+                settle(now);
                 run.publish();
             }
         } catch (InterruptedException e) {
@@ -70,8 +129,43 @@ final class SimulationLoop implements Runnable {
             LOG.error("the simulation loop failed", e);
             run.finish("the simulation loop failed: " + e, false);
         } finally {
+            flush();
             run.closeOut();
-            coordinator.loopEnded();
+            inbox.close();
+            onEnd.run();
+            ended.countDown();
         }
+    }
+
+    /**
+     * After an event: the run moves on as far as it can, the hooks hand in what came without one (and the run
+     * moves on again; what they give after that is applied at the next settle, the inbox looked at between),
+     * then the hooks write what the run gave them.
+     */
+    private void settle(long now) {
+        run.advance(now);
+        boolean handed = false;
+        for (int i = 0; i < hooks.size(); i++) {
+            handed |= hooks.get(i).handIn(run, false);
+        }
+        if (handed) {
+            run.advance(now);
+        }
+        flush();
+    }
+
+    private void flush() {
+        for (int i = 0; i < hooks.size(); i++) {
+            hooks.get(i).flush();
+        }
+    }
+
+    private boolean pending() {
+        for (int i = 0; i < hooks.size(); i++) {
+            if (hooks.get(i).pending()) {
+                return true;
+            }
+        }
+        return false;
     }
 }

@@ -1,7 +1,5 @@
 package robosim.environment.net;
 
-import robosim.protocol.ObjectConnection;
-
 /**
  * {@code TWO_THREADS}: per robot one thread reads its requests (as {@link ThreadsDesign}) and one,
  * {@code robot-writer[name]} ({@link RobotWriter}), writes what the loop queues, so responses go out in
@@ -9,8 +7,7 @@ import robosim.protocol.ObjectConnection;
  */
 final class TwoThreadsDesign implements Design {
     @Override
-    public RobotOutput output(RobotConnection robot, LoopWrites loopWrites, ObjectConnection connection,
-            boolean stepMessages, String robotName) {
-        return new RobotWriter(robot, connection, stepMessages, robotName);
+    public RobotOutput output(RobotConnection robot, LoopWrites loopWrites, boolean stepMessages) {
+        return new RobotWriter(robot, stepMessages);
     }
 }

@@ -114,7 +114,7 @@ public final class Acceptors {
                 if (context.strangers().full()) {
                     l.open.decrementAndGet();
                     s.close();
-                    refused(l, "clients not yet accepted hold all " + context.guide().speaker() + " keeps for them ("
+                    refused(l, "clients not yet accepted hold all the Environment keeps for them ("
                             + (context.strangers().total() >> 20) + " MiB)");
                     continue;
                 }

@@ -104,7 +104,7 @@ public final class Handshake {
     /** {@code first}: the connection's first message, which may use the headroom kept for newcomers. */
     private void take(long bytes, boolean first) throws ProtocolException {
         if (!strangers.take(bytes, first)) {
-            throw new ProtocolException(guide.speaker() + " already holds all it keeps for clients not yet accepted ("
+            throw new ProtocolException("the Environment already holds all it keeps for clients not yet accepted ("
                     + (strangers.total() >> 20) + " MiB); try again later");
         }
         held += bytes;

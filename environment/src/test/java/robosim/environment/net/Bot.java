@@ -1,9 +1,8 @@
 package robosim.environment.net;
 
+import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
-import java.util.concurrent.LinkedBlockingQueue;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
@@ -12,40 +11,50 @@ import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * Test fixture: a robot without a socket whose place in the world the loop assigns (a file's robot, one that
- * joins, one that takes over). It answers each step it is given at once, on the loop thread, by posting its
- * request - so nothing depends on timing - and at step {@code leaveAt} posts that its connection closed
- * instead.
+ * Test fixture: a robot without a socket, driven by a {@link Hand}, whose place in the world the run assigns (a
+ * file's robot, one that joins, one that takes over). It answers each step it is given by posting its request -
+ * queued, as over a socket, so nothing depends on timing - until step {@code silentFrom} (from which it says
+ * nothing), and at step {@code leaveAt} posts that its connection closed instead.
  */
 final class Bot implements RobotPeer {
-    private final ClientWorkerCoordinator coordinator;
-    final String name;
-    private final long leaveAt;
-    private volatile int index = -1;
-    volatile RobotWelcome welcome;
-    /** The first step it was given (-1 before). */
-    volatile long firstStep = -1;
-    final BlockingQueue<StepResponse> responses = new LinkedBlockingQueue<>();
-    final CompletableFuture<SimulationEnd> end = new CompletableFuture<>();
-    private volatile boolean closed;
+    static final long NEVER = Long.MAX_VALUE;
 
-    Bot(ClientWorkerCoordinator coordinator, String name, long leaveAt) {
-        this.coordinator = coordinator;
+    final String name;
+    private final Hand hand;
+    private final long leaveAt;
+    private final long silentFrom;
+    private int index = -1;
+    RobotWelcome welcome;
+    /** The first step it was given (-1 before). */
+    long firstStep = -1;
+    final List<StepResponse> responses = new ArrayList<>();
+    SimulationEnd end;
+    private boolean closed;
+    private boolean dropped;
+
+    Bot(Hand hand, String name, long leaveAt, long silentFrom) {
+        this.hand = hand;
         this.name = name;
         this.leaveAt = leaveAt;
+        this.silentFrom = silentFrom;
     }
 
-    /** Says hello (as the file's robot {@code fileIndex}, or -1 for one that is not in the file); the verdict. */
+    Bot(Hand hand, String name) {
+        this(hand, name, NEVER, NEVER);
+    }
+
+    /** Says hello (as the file's robot {@code fileIndex}, or -1 for one that is not in the file); its verdict, once drained. */
     CompletableFuture<String> hello(int fileIndex) {
         CompletableFuture<String> verdict = new CompletableFuture<>();
-        coordinator.post(new LoopEvent.RobotJoins(this, new RobotHello(name, RobotModels.AR_ROBOT), fileIndex, verdict));
+        hand.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(this, new RobotHello(name, RobotModels.AR_ROBOT),
+                fileIndex, verdict))));
         return verdict;
     }
 
     /** Its connection closes now. */
     void leave(String why) {
         closed = true;
-        coordinator.post(new LoopEvent.RobotLeaves(this, why));
+        hand.post(new LoopEvent.RobotLeaves(this, why));
     }
 
     @Override
@@ -73,26 +82,26 @@ final class Bot implements RobotPeer {
     public void deliver(StepResponse response, long nextStep, SimulationEnd e) {
         responses.add(response);
         if (e != null) {
-            end.complete(e);
+            end = e;
         } else {
             answer(nextStep);
         }
     }
 
     private void answer(long k) {
-        if (closed) {
+        if (closed || dropped || k >= silentFrom) {
             return;
         }
         if (k == leaveAt) {
             leave("its connection closed at step " + k);
             return;
         }
-        coordinator.post(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(), List.of())));
+        hand.post(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(), List.of())));
     }
 
     @Override
     public void end(SimulationEnd e, boolean midStep) {
-        end.complete(e);
+        end = e;
     }
 
     @Override
@@ -102,11 +111,15 @@ final class Bot implements RobotPeer {
 
     @Override
     public boolean closed() {
-        return closed;
+        return closed || dropped;
     }
 
     @Override
     public void drop() {
-        closed = true;
+        dropped = true;
+    }
+
+    boolean dropped() {
+        return dropped;
     }
 }

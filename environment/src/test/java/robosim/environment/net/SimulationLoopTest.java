@@ -1,8 +1,6 @@
 package robosim.environment.net;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertFalse;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -10,11 +8,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
-import java.util.function.UnaryOperator;
 import org.junit.jupiter.api.Test;
+import robosim.environment.core.JoinRule;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.environment.core.WorldSpec.SensorSpec;
@@ -22,12 +22,16 @@ import robosim.environment.sensors.ThreadRecordingSensor;
 import robosim.protocol.Arena;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
+import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * The simulation loop with fake robots and in-process geometry: no sockets, no worker threads. Every
- * robot's request is posted before the loop could time it, so nothing here depends on timing.
+ * The {@link SimulationLoop} on its own thread, driving a {@link Run} with robots that post to it and in-process
+ * geometry: no coordinator, no sockets, no worker threads. What it shows is the loop's: every step, and every
+ * deadline, runs on its thread, and whoever waits on an event it will never take is answered. (What the run does
+ * is {@link RunTest}'s, by hand.)
  */
 class SimulationLoopTest {
     private static final long LONG_S = 60;
@@ -38,135 +42,171 @@ class SimulationLoopTest {
                     new RobotSpec("b", "ArRobot", "", 2000, 6000, 0, THREAD, 0),
                     new RobotSpec("c", "ArRobot", "", 2000, 10_000, 0, THREAD, 0)), 0, 8192, List.of());
 
-    /** The names of the threads the listener was called on, and the departures it was told. */
-    private static final class Heard implements RunListener {
-        final List<String> threads = new CopyOnWriteArrayList<>();
-        final List<Departure> left = new CopyOnWriteArrayList<>();
+    /** A robot that answers each step at once, on the thread that gives it (the loop's), until {@code silentFrom}. */
+    private static final class Posting implements RobotPeer {
+        private final SimulationLoop loop;
+        private final long silentFrom;
+        final BlockingQueue<StepResponse> responses = new LinkedBlockingQueue<>();
+        final BlockingQueue<SimulationEnd> ends = new LinkedBlockingQueue<>();
+        private volatile int index = -1;
+        private volatile boolean begun;
+        private volatile boolean dropped;
 
-        @Override
-        public void robotLeft(Departure d) {
-            threads.add(Thread.currentThread().getName());
-            left.add(d);
+        Posting(SimulationLoop loop, long silentFrom) {
+            this.loop = loop;
+            this.silentFrom = silentFrom;
         }
 
         @Override
-        public void ended(RunSummary s) {
-            threads.add(Thread.currentThread().getName());
+        public int index() {
+            return index;
+        }
+
+        @Override
+        public void assign(int i) {
+            index = i;
+        }
+
+        @Override
+        public void welcome(RobotWelcome welcome) {
+        }
+
+        @Override
+        public void begin(long firstStep) {
+            begun = true;
+            answer(firstStep);
+        }
+
+        @Override
+        public void deliver(StepResponse response, long nextStep, SimulationEnd end) {
+            responses.add(response);
+            if (end != null) {
+                ends.add(end);
+            } else {
+                answer(nextStep);
+            }
+        }
+
+        private void answer(long k) {
+            if (k < silentFrom && !dropped) {
+                loop.post(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(), List.of("thread"))));
+            }
+        }
+
+        @Override
+        public void end(SimulationEnd end, boolean midStep) {
+            ends.add(end);
+        }
+
+        @Override
+        public boolean begun() {
+            return begun;
+        }
+
+        @Override
+        public boolean closed() {
+            return dropped;
+        }
+
+        @Override
+        public void drop() {
+            dropped = true;
         }
     }
 
-    private final Heard heard = new Heard();
+    /** The names of the threads the listener was called on, and the departures it was told. */
+    private final List<String> threads = new CopyOnWriteArrayList<>();
+    private final List<Departure> left = new CopyOnWriteArrayList<>();
+    private SimulationLoop loop;
+    private Run run;
 
-    /** A coordinator whose loop runs (no ports bound) and three fake robots that have said hello. */
-    private List<FakeRobot> run(UnaryOperator<Settings.Builder> settings, long silentFrom, boolean paused)
-            throws Exception {
-        ClientWorkerCoordinator c = new ClientWorkerCoordinator(THREE,
-                settings.apply(Settings.builder().inProcessGeometry(true)).build());
-        c.listen(heard);
-        if (paused) {
-            c.startPaused();
-        }
-        c.startLoop();
-        coordinator = c;
-        List<FakeRobot> robots = new ArrayList<>();
+    /** A run on its loop thread, three robots that said hello. */
+    private List<Posting> run(Settings settings, long cSilentFrom) throws Exception {
+        CompletableFuture<Void> ended = new CompletableFuture<>();
+        loop = new SimulationLoop(64, settings, () -> ended.complete(null));
+        run = new Run(THREE, settings, new HelloCheck(THREE), System::nanoTime, new RunListener() {
+            @Override
+            public void robotLeft(Departure d) {
+                threads.add(Thread.currentThread().getName());
+                left.add(d);
+            }
+
+            @Override
+            public void ended(RunSummary s) {
+                threads.add(Thread.currentThread().getName());
+            }
+        }, List.of());
+        loop.start(run, List.of());
+        List<Posting> robots = new ArrayList<>();
         for (int i = 0; i < 3; i++) {
-            FakeRobot r = new FakeRobot(c, i, i == 2 ? silentFrom : Long.MAX_VALUE);
+            Posting r = new Posting(loop, i == 2 ? cSilentFrom : Long.MAX_VALUE);
             CompletableFuture<String> verdict = new CompletableFuture<>();
-            c.post(new LoopEvent.RobotJoins(r, new RobotHello(THREE.robots().get(i).name(), RobotModels.AR_ROBOT), i,
-                    verdict));
+            loop.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(r, new RobotHello(THREE.robots().get(i).name(),
+                    RobotModels.AR_ROBOT), i, verdict))));
             assertNull(verdict.get(LONG_S, TimeUnit.SECONDS), "accepted");
             robots.add(r);
         }
         return robots;
     }
 
-    private ClientWorkerCoordinator coordinator;
-
     @Test
-    void everyRobotGetsEveryResponseInOrderAndTheCoreRunsOnlyOnTheLoopThread() throws Exception {
+    void everyStepRunsOnTheLoopThread() throws Exception {
         ThreadRecordingSensor.THREADS.clear();
-        List<FakeRobot> robots = run(s -> s.maxSteps(20), Long.MAX_VALUE, false);
-        assertTrue(coordinator.awaitEnd(LONG_S, TimeUnit.SECONDS));
-        for (FakeRobot r : robots) {
+        List<Posting> robots = run(Settings.builder().inProcessGeometry(true).maxSteps(20).build(), Long.MAX_VALUE);
+        assertTrue(loop.awaitEnd(LONG_S, TimeUnit.SECONDS));
+        for (Posting r : robots) {
             for (long k = 0; k < 20; k++) {
-                StepResponse response = r.responses.poll(LONG_S, TimeUnit.SECONDS);
-                assertNotNull(response);
-                assertEquals(k, response.step());
-                assertEquals(100, response.movedMm(), 1e-9, "nothing in the way");
+                assertEquals(k, r.responses.poll(LONG_S, TimeUnit.SECONDS).step());
             }
             assertEquals("completed 20 steps", r.ends.poll(LONG_S, TimeUnit.SECONDS).reason());
         }
-        RunSummary s = coordinator.summary();
-        assertTrue(s.completed(), s.reason());
-        assertEquals(20, s.steps());
+        assertTrue(run.published().summary(3).completed());
         assertEquals(Set.of("simulation-loop"), ThreadRecordingSensor.THREADS);
+        assertEquals(List.of("simulation-loop"), threads, "the end is told on the loop");
     }
 
     @Test
-    void aSilentRobotIsDroppedByTheStepTimeoutOnTheLoopThreadAndTheOthersGoOn() throws Exception {
+    void aSilentRobotIsDroppedByTheStepTimeoutOnTheLoopThread() throws Exception {
         ThreadRecordingSensor.THREADS.clear();
-        List<FakeRobot> robots = run(s -> s.maxSteps(30).stepTimeoutMs(100), 5, false);
-        assertTrue(coordinator.awaitEnd(LONG_S, TimeUnit.SECONDS));
-        RunSummary s = coordinator.summary();
+        List<Posting> robots = run(Settings.builder().inProcessGeometry(true).maxSteps(30).stepTimeoutMs(100).build(),
+                5);
+        assertTrue(loop.awaitEnd(LONG_S, TimeUnit.SECONDS));
+        RunSummary s = run.published().summary(3);
         assertTrue(s.completed(), s.reason());
         assertEquals(30, s.steps());
-        assertEquals(1, heard.left.size());
-        Departure d = heard.left.get(0);
-        assertEquals("c", d.robot());
-        assertEquals(5, d.step());
-        assertTrue(d.why().contains("step timeout"), d.why());
-        assertTrue(robots.get(2).dropped(), "its connection was closed");
-        assertFalse(robots.get(0).dropped());
-        assertEquals(Set.of("simulation-loop"), Set.copyOf(heard.threads), "the timeout acted on the loop");
+        assertEquals(1, left.size());
+        assertEquals("c", left.get(0).robot());
+        assertEquals(5, left.get(0).step());
+        assertTrue(robots.get(2).dropped, "its connection was closed");
+        assertEquals(Set.of("simulation-loop"), Set.copyOf(threads), "the timeout acted on the loop");
         assertEquals(Set.of("simulation-loop"), ThreadRecordingSensor.THREADS, "every step ran on the loop");
     }
 
     @Test
-    void stepNRunsExactlyNStepsPauseHoldsAndStopEndsAtOnce() throws Exception {
-        List<FakeRobot> robots = run(s -> s, Long.MAX_VALUE, true);
-        assertEquals(3, coordinator.step(3, LONG_S, TimeUnit.SECONDS));
-        assertEquals(RunStatus.State.PAUSED, coordinator.status().state());
-        assertEquals(3, coordinator.status().step());
-        assertEquals(3, robots.get(0).responses.size(), "three responses out, the fourth step held");
-        assertEquals(7, coordinator.step(4, LONG_S, TimeUnit.SECONDS));
-        coordinator.resume();
-        coordinator.pause(LONG_S, TimeUnit.SECONDS);
-        assertEquals(RunStatus.State.PAUSED, coordinator.status().state());
-        long held = coordinator.status().step();
-        assertTrue(held >= 7, "ran on after the resume: " + held);
-        coordinator.stop("stopped by the test");
-        assertTrue(coordinator.awaitEnd(LONG_S, TimeUnit.SECONDS), "stop returns once the run has ended");
-        assertEquals(RunStatus.State.ENDED, coordinator.status().state());
-        SimulationEnd end = robots.get(1).ends.poll(LONG_S, TimeUnit.SECONDS);
-        assertEquals("stopped by the test", end.reason());
-        assertEquals(held, robots.get(1).responses.size(), "nothing went out after the pause held");
-    }
-
-    @Test
-    void everyoneWaitingOnAnEventStillQueuedWhenTheRunEndsIsAnsweredAtOnce() throws Exception {
-        ClientWorkerCoordinator c = new ClientWorkerCoordinator(THREE, Settings.builder().inProcessGeometry(true).build());
+    void everyoneWaitingOnAnEventStillQueuedWhenTheRunEndsIsAnsweredAtOnce() {
+        SimulationLoop never = new SimulationLoop(64, Settings.builder().inProcessGeometry(true).build(), () -> { });
         CompletableFuture<Void> resumed = new CompletableFuture<>();
         CompletableFuture<Void> paused = new CompletableFuture<>();
         CompletableFuture<Long> stepped = new CompletableFuture<>();
         CompletableFuture<String> added = new CompletableFuture<>();
         CompletableFuture<String> removed = new CompletableFuture<>();
         CompletableFuture<String> hello = new CompletableFuture<>();
-        c.post(new LoopEvent.Resume(resumed)); // (queued: no loop takes them)
-        c.post(new LoopEvent.Pause(paused));
-        c.post(new LoopEvent.StepN(3, stepped));
-        c.post(new LoopEvent.AddRobot(new robosim.environment.core.JoinRule("z", THREE.robots().get(0), null, 1),
-                added));
-        c.post(new LoopEvent.RemoveRobot("a", removed));
-        c.post(new LoopEvent.RobotJoins(new FakeRobot(c, 0, 0), new RobotHello("a", RobotModels.AR_ROBOT), 0, hello));
-        c.loopEnded(); // (what the loop does last, as the run's end races these callers)
+        never.post(new LoopEvent.Resume(resumed)); // (queued: no loop takes them)
+        never.post(new LoopEvent.Pause(paused));
+        never.post(new LoopEvent.StepN(3, stepped));
+        never.post(new LoopEvent.AddRobot(new JoinRule("z", THREE.robots().get(0), null, 1), added));
+        never.post(new LoopEvent.RemoveRobot("a", removed));
+        never.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(new Posting(never, 0),
+                new RobotHello("a", RobotModels.AR_ROBOT), 0, hello))));
+        never.never(); // (the loop is done, as the run's end races these callers)
         assertTrue(resumed.isDone(), "resume() is answered, not left to its 5 s limit");
         assertTrue(paused.isDone());
         assertNull(stepped.getNow(-1L), "step N: refused, the caller reads the steps released");
-        assertEquals(LoopEvent.OVER, added.getNow(null));
-        assertEquals(LoopEvent.OVER, removed.getNow(null));
-        assertEquals(LoopEvent.OVER, hello.getNow(null));
+        assertEquals(Progress.OVER, added.getNow(null));
+        assertEquals(Progress.OVER, removed.getNow(null));
+        assertEquals(Progress.OVER, hello.getNow(null));
         CompletableFuture<Void> late = new CompletableFuture<>();
-        c.post(new LoopEvent.Resume(late));
+        never.post(new LoopEvent.Resume(late));
         assertTrue(late.isDone(), "and one posted after the end");
     }
 }
