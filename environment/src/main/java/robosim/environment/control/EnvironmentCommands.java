@@ -14,11 +14,9 @@ import robosim.environment.net.RobotState;
 import robosim.environment.net.RunStatus;
 
 /**
- * The Environment's control requests: {@code status}, {@code start}, {@code stop}, {@code pause},
- * {@code resume}, {@code step N}, {@code load FILE} (only under the {@link EnvironmentDirectories}),
- * {@code shutdown}, {@code robots} (each robot's {@link RobotState}), {@code add NAME TYPE X Y HEADING
- * [CONTROL]} and {@code remove NAME}, on the
- * {@link EnvironmentHost}'s current simulation.
+ * The Environment's control requests, on the {@link EnvironmentHost}'s current simulation: each declared once, in
+ * {@link #verbs}, with the thread that answers it, its help and its handler ({@code load} reads only under the
+ * {@link EnvironmentDirectories}).
  */
 public final class EnvironmentCommands implements ControlCommands {
     /** How long a waiting request (step N, pause) may take before it answers anyway, s. */
@@ -26,59 +24,48 @@ public final class EnvironmentCommands implements ControlCommands {
 
     private final EnvironmentHost host;
     private final EnvironmentDirectories directories;
+    private final List<ControlVerb> verbs;
 
     public EnvironmentCommands(EnvironmentHost host, EnvironmentDirectories directories) {
         this.host = host;
         this.directories = directories;
+        this.verbs = List.of(
+                ControlVerb.quick("status", "the run's state, step, rate, robots, Geometry and viewers",
+                        arg -> status()),
+                ControlVerb.waiting("start", "resumes; after the end, runs the same file again", arg -> ok(host.start())),
+                ControlVerb.quick("stop", "ends the simulation; every client is told", arg -> ok(host.stop())),
+                ControlVerb.waiting("pause", "holds the run after the step in progress", arg -> {
+                    host.current().pause(WAIT_S, TimeUnit.SECONDS);
+                    return ok("paused at step " + host.current().status().step());
+                }),
+                ControlVerb.quick("resume", "runs on", arg -> {
+                    host.current().resume();
+                    return ok("running");
+                }),
+                ControlVerb.waiting("step N", "runs N more steps and holds again", arg -> ok("paused at step "
+                        + host.current().step(ControlReplies.positive("step", arg), WAIT_S, TimeUnit.SECONDS))),
+                ControlVerb.waiting("load FILE", "ends the simulation and waits for FILE's robots", arg -> arg.isEmpty()
+                        ? error("load needs a file: load FILE") : ok(host.load(directories.resolve(arg)))),
+                ControlVerb.quick("shutdown", "ends the simulation and the Environment", arg -> ok(host.shutdown())),
+                ControlVerb.quick("robots", "each robot and its state", arg -> {
+                    ObjectNode n = ok(null);
+                    n.putPOJO("robots", states(host.current().status()));
+                    return n;
+                }),
+                ControlVerb.waiting("add NAME TYPE X Y HEADING [CONTROL]", "a robot joins the running world at X, Y m",
+                        this::add),
+                ControlVerb.waiting("remove NAME", "takes a robot out of the run for good", arg -> {
+                    if (arg.isEmpty()) {
+                        return error("remove needs a robot's name: remove NAME");
+                    }
+                    String why = host.current().roster().remove(arg);
+                    return why == null ? ok("removed " + ControlReplies.abbreviate(arg)) : error(why);
+                }));
     }
 
     @Override
-    public boolean waits(String verb) {
-        return verb.equals("step") || verb.equals("pause") || verb.equals("start") || verb.equals("load")
-                || verb.equals("remove") || verb.equals("add");
-    }
-
-    @Override
-    public String known() {
-        return "status, start, stop, pause, resume, step N, load FILE, shutdown, robots, add NAME TYPE X Y HEADING "
-                + "[CONTROL], remove NAME";
-    }
-
-    @Override
-    public ObjectNode handle(String verb, String arg) throws Exception {
-        return switch (verb) {
-            case "status" -> status();
-            case "start" -> ok(host.start());
-            case "resume" -> {
-                host.current().resume();
-                yield ok("running");
-            }
-            case "pause" -> {
-                host.current().pause(WAIT_S, TimeUnit.SECONDS);
-                yield ok("paused at step " + host.current().status().step());
-            }
-            case "step" -> {
-                long at = host.current().step(ControlReplies.positive("step", arg), WAIT_S, TimeUnit.SECONDS);
-                yield ok("paused at step " + at);
-            }
-            case "stop" -> ok(host.stop());
-            case "load" -> arg.isEmpty() ? error("load needs a file: load FILE") : ok(host.load(directories.resolve(arg)));
-            case "shutdown" -> ok(host.shutdown());
-            case "robots" -> {
-                ObjectNode n = ok(null);
-                n.putPOJO("robots", states(host.current().status()));
-                yield n;
-            }
-            case "add" -> add(arg);
-            case "remove" -> {
-                if (arg.isEmpty()) {
-                    yield error("remove needs a robot's name: remove NAME");
-                }
-                String why = host.current().roster().remove(arg);
-                yield why == null ? ok("removed " + ControlReplies.abbreviate(arg)) : error(why);
-            }
-            default -> null;
-        };
+    public List<ControlVerb> verbs() {
+        return verbs;
     }
 
     /** {@code add NAME TYPE X Y HEADING [CONTROL]}: metres and degrees; CONTROL starts its process with a launcher. */

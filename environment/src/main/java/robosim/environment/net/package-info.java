@@ -1,9 +1,48 @@
 /**
- * The Environment's client interface: sockets and threads only, no world logic (that is the core's). The
- * {@link robosim.environment.net.ClientWorkerCoordinator} starts these threads, each named; one of them,
- * {@code simulation-loop}, owns simulation time and every other posts events to it through its
- * {@link robosim.environment.net.Inbox}. No lock is held across a socket read or write, a sleep or a wait.
- * This is the one list of them; other pages link here.
+ * The Environment's client interface: sockets and threads around one run, no world logic (that is the core's).
+ *
+ * <h2>The layout</h2>
+ * <ul>
+ * <li>The facade, {@link robosim.environment.net.ClientWorkerCoordinator} (the report's name): the one class that
+ *     knows every part; it builds them, starts the threads and turns the control port's calls into events. Nothing
+ *     else here names it.</li>
+ * <li>The run, loop thread only, and drivable by hand (a test drives it with a fake clock, no thread, no socket):
+ *     {@link robosim.environment.net.Run} (time and the order of a step: start, begin, collect, resolve, release,
+ *     publish) and its parts, each owning its state: {@link robosim.environment.net.Progress} (the phase machine),
+ *     {@link robosim.environment.net.Roster} (the robots and their lifecycle: the transitions are its own),
+ *     {@link robosim.environment.net.Admission} (the verdicts on hellos, {@code add}, {@code remove}),
+ *     {@link robosim.environment.net.RunControl} and {@link robosim.environment.net.ReleasePoint} (pause, step N,
+ *     pace), {@link robosim.environment.net.GeometryLink} (where steps are resolved, the Geometry timeout and
+ *     failover), {@link robosim.environment.net.StatusBoard} (the status, derived from the parts) publishing a
+ *     {@link robosim.environment.net.PublishedRun} and, after each release, one immutable
+ *     {@link robosim.environment.net.ReleasedWorld}; its outputs are a {@link robosim.environment.net.RunListener}
+ *     and {@link robosim.environment.net.ReleaseListener}s ({@link robosim.environment.net.RunViewers},
+ *     {@link robosim.environment.net.RunRecorder}).</li>
+ * <li>The one owner of time: {@link robosim.environment.net.SimulationLoop} (the loop thread and its
+ *     {@link robosim.environment.net.Inbox}) applies each {@link robosim.environment.net.LoopEvent} to the run, then
+ *     lets the transports' {@link robosim.environment.net.LoopHook}s hand in and write.</li>
+ * <li>The transports, behind one seam ({@link robosim.environment.net.RobotPeer}, and a
+ *     {@link robosim.environment.net.LoopHook} where one is needed; {@link robosim.environment.net.Transport} names
+ *     them): a socket per robot ({@link robosim.environment.net.RobotClientWorker},
+ *     {@link robosim.environment.net.RobotConnection}, read and written as its {@link robosim.environment.net.Design}
+ *     says: {@link robosim.environment.net.ThreadsDesign}, {@link robosim.environment.net.SequentialDesign} with
+ *     its {@link robosim.environment.net.SequentialReader}, {@link robosim.environment.net.TwoThreadsDesign} with a
+ *     {@link robosim.environment.net.RobotWriter}, or the loop's {@link robosim.environment.net.LoopWrites}), a
+ *     shared connection ({@link robosim.environment.net.SharedConnection}, {@link robosim.environment.net.SharedRobot},
+ *     {@link robosim.environment.net.SharedOutput}), robots in this JVM
+ *     ({@link robosim.environment.net.InMemoryTransport}, {@link robosim.environment.net.InMemoryPeer}). They see
+ *     the Environment through a {@link robosim.environment.net.RobotContext}; every robot's hello passes the
+ *     {@link robosim.environment.net.HelloCheck} on its reader's thread, every request the one
+ *     {@link robosim.environment.net.RequestOrder}. Geometry: {@link robosim.environment.net.GeometryClientWorker},
+ *     a {@link robosim.environment.net.GeometryPeer} to the run.</li>
+ * <li>The connections' server layer (accepting, handshakes, deadlines, viewers' workers) is
+ *     {@code robosim.environment.server}'s, shared with the replay.</li>
+ * </ul>
+ *
+ * <h2>The threads</h2>
+ * One of them, {@code simulation-loop}, owns simulation time, and every other posts events to it through its
+ * {@link robosim.environment.net.Inbox}. No lock is held across a socket read or write, a sleep or a wait. This is
+ * the one list of the Environment's threads; other pages link here.
  *
  * <table>
  * <caption>The Environment's threads</caption>
@@ -39,14 +78,36 @@
  * <tr><td>{@code recorder}</td><td>{@link robosim.environment.net.RunRecorder} ({@code --record})</td>
  *     <td>writes the recording from the queue the loop fills after each step</td><td>its queue; the
  *     disk</td></tr>
+ * <tr><td>{@code control-io}</td><td>{@code robosim.environment.control.ControlServer} (netty)</td><td>the
+ *     control port's one I/O thread: reads request lines, writes replies in each connection's order</td>
+ *     <td>its selector</td></tr>
+ * <tr><td>{@code control}</td><td>{@code ControlServer}</td><td>the control requests that wait (step, pause,
+ *     start, load, add, remove; their verbs say so), one at a time</td><td>its queue; the loop's answer</td></tr>
+ * <tr><td>{@code control-quick}</td><td>{@code ControlServer}</td><td>the requests answered at once (status,
+ *     robots, resume, stop, shutdown)</td><td>its queue</td></tr>
+ * <tr><td>{@code robot-output[name]}</td><td>{@code robosim.environment.control.RobotLaunches}
+ *     ({@code --launch-robots})</td><td>one per robot process the control port's {@code add} started: pipes its
+ *     output</td><td>its read of that output</td></tr>
+ * <tr><td>{@code main}</td><td>{@code robosim.environment.EnvironmentMain}</td><td>opens the ports, waits for
+ *     each simulation's end, prints the summary</td><td>the end</td></tr>
+ * <tr><td>{@code start-announcer}</td><td>{@code EnvironmentMain}</td><td>prints the {@code running} line once
+ *     every client is there</td><td>the start</td></tr>
+ * <tr><td>{@code shutdown}</td><td>{@code EnvironmentMain}</td><td>the JVM's hook on SIGTERM or SIGINT: stops the
+ *     simulation, so every client is told</td><td>the end, at most a few seconds</td></tr>
+ * <tr><td>{@code web-io}, {@code web-status}, {@code web-commands}, {@code web-feed}, {@code web-watch-N},
+ *     {@code viewer-client}</td><td>{@code robosim.web} ({@code --web-port})</td><td>the browser viewer: its
+ *     HTTP and WebSocket I/O, its pages' requests, and its own viewer connections to the viewer port (listed in
+ *     its package)</td><td>as listed there</td></tr>
+ * <tr><td>{@code control[name]}</td><td>{@code robosim.hardware.HardwareSimulator} ({@code --one-jvm})</td>
+ *     <td>one per robot in this JVM: its control code (a virtual thread on JDK 21 and later)</td><td>the
+ *     robot's own calls, until the loop gives its step</td></tr>
  * </table>
  * With {@code --no-geometry} (and {@code --one-jvm}) the geometry library's sonar pass may also use one worker
  * of the JVM's common fork-join pool on the loop's behalf (its package-info says when); the loop waits for it
- * within the step. With {@code --one-jvm} the file's robots start no thread here: their control threads
- * ({@code control[name]}, the Hardware Simulator's) hand their requests to
- * {@link robosim.environment.net.InMemoryRequests}, and the last one owed wakes the loop.
+ * within the step. With {@code --one-jvm} the file's robots start no thread here: their control threads hand their
+ * requests to {@link robosim.environment.net.InMemoryTransport}, and the last one owed wakes the loop.
  * A replay ({@code robosim.environment.replay}) has its own clock thread and this package's
  * {@link robosim.environment.net.Inbox}, and serves its viewers with the same server layer as the Environment
- * ({@code robosim.environment.server}).
+ * ({@code robosim.environment.server}); its threads are listed in its package.
  */
 package robosim.environment.net;

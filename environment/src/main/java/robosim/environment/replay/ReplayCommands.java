@@ -6,19 +6,20 @@ import static robosim.environment.control.ControlReplies.ok;
 
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import robosim.environment.control.ControlCommands;
 import robosim.environment.control.ControlReplies;
+import robosim.environment.control.ControlVerb;
 
 /**
- * A replay's control requests, as the Control Panel and the browser page send them: {@code status},
- * {@code pause}, {@code resume} (or {@code start}), {@code step N}, {@code seek K}, {@code speed X}
- * ({@value ReplayClock#MIN_SPEED} to {@value ReplayClock#MAX_SPEED} times real time), {@code stop} (or
- * {@code shutdown}: the end goes to every viewer and the replay exits). Each is a question to the
- * {@link ReplayClock}, answered on its thread.
+ * A replay's control requests, as the Control Panel and the browser page send them, each declared once in
+ * {@link #verbs} and each a question to the {@link ReplayClock}, answered on its thread: {@code speed} takes
+ * {@value ReplayClock#MIN_SPEED} to {@value ReplayClock#MAX_SPEED} times real time; {@code stop} (or
+ * {@code shutdown}) sends the end to every viewer and the replay exits.
  */
 public final class ReplayCommands implements ControlCommands {
     /** How long {@code step N} may take before it answers anyway, s (a recording viewer may hold it). */
@@ -28,34 +29,28 @@ public final class ReplayCommands implements ControlCommands {
 
     private final ReplayClock clock;
     private final Path file;
+    private final List<ControlVerb> verbs;
 
     public ReplayCommands(ReplayClock clock, Path file) {
         this.clock = clock;
         this.file = file;
+        this.verbs = List.of(
+                ControlVerb.quick("status", "where the replay stands, its speed and viewers",
+                        arg -> status(answer(clock.status(), WAIT_S))),
+                ControlVerb.quick("pause", "holds the replay", arg -> ok(answer(clock.pause(), WAIT_S))),
+                ControlVerb.quick("resume", "runs on", arg -> ok(answer(clock.resume(), WAIT_S))).alias("start"),
+                ControlVerb.waiting("step N", "shows N more steps and holds", arg -> ok(answer(clock.step(arg.isEmpty()
+                        ? 1 : ControlReplies.positive("step", arg)), STEP_WAIT_S))),
+                ControlVerb.quick("seek K", "shows step K and goes on from there",
+                        arg -> ok(answer(clock.seek(whole("seek", arg)), WAIT_S))),
+                ControlVerb.quick("speed X", "X times real time", arg -> ok(answer(clock.speed(times(arg)), WAIT_S))),
+                ControlVerb.quick("stop", "ends the replay; every viewer is told", arg -> ok(answer(
+                        clock.stop("the replay was stopped from the control port"), WAIT_S))).alias("shutdown"));
     }
 
     @Override
-    public boolean waits(String verb) {
-        return verb.equals("step");
-    }
-
-    @Override
-    public String known() {
-        return "status, pause, resume, step N, seek K, speed X, stop";
-    }
-
-    @Override
-    public ObjectNode handle(String verb, String arg) throws Exception {
-        return switch (verb) {
-            case "status" -> status(answer(clock.status(), WAIT_S));
-            case "pause" -> ok(answer(clock.pause(), WAIT_S));
-            case "resume", "start" -> ok(answer(clock.resume(), WAIT_S));
-            case "step" -> ok(answer(clock.step(arg.isEmpty() ? 1 : ControlReplies.positive("step", arg)), STEP_WAIT_S));
-            case "seek" -> ok(answer(clock.seek(whole("seek", arg)), WAIT_S));
-            case "speed" -> ok(answer(clock.speed(times(arg)), WAIT_S));
-            case "stop", "shutdown" -> ok(answer(clock.stop("the replay was stopped from the control port"), WAIT_S));
-            default -> null;
-        };
+    public List<ControlVerb> verbs() {
+        return verbs;
     }
 
     private ObjectNode status(ReplayStatus s) {
