@@ -3,9 +3,12 @@ package robosim.runner;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
 
 /**
  * How the headless runner ends, over real processes: a client process that ends before the start
@@ -44,12 +47,30 @@ class HeadlessRunnerTest {
     }
 
     @Test
-    void aOneJvmRunIsOneEnvironmentProcessWithEveryRobotInIt() {
-        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "50", "--one-jvm");
+    void aOneJvmRunIsOneEnvironmentProcessWithEveryRobotInIt(@TempDir Path dir) throws Exception {
+        Path log = dir.resolve("poses.csv");
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "200", "--one-jvm",
+                "--pose-log", log.toString());
         assertEquals(0, r.code(), r.all());
         String last = r.out().get(r.out().size() - 1);
-        assertTrue(last.startsWith("steps=50 robots=3 "), r.all());
-        assertTrue(last.endsWith(" geometry=in-process robots_in=one-jvm"), r.all());
+        assertTrue(last.matches("steps=200 robots=3 wall_s=[0-9.]+ steps_per_s=[0-9.]+ robot_steps_per_s=[0-9.]+ .*"
+                + "geometry=in-process robots_in=one-jvm"), r.all());
+        List<String> rows = Files.readAllLines(log);
+        assertEquals("step,robot,x_m,y_m,heading_deg,state", rows.get(0));
+        assertEquals(1 + 200 * 3, rows.size(), "one row per robot per step");
+        // 200 steps = 2 cycles of 88 + 24 steps forward: x = 1.5 + 24 * 0.25 m
+        double[] expected = BackAndForthMath.after(199);
+        assertEquals(6.0, expected[0] / 1000);
+        assertEquals("199,r1,7.5,1.0,0.0,running", rows.get(rows.size() - 3));
+        assertEquals("199,r2,7.5,2.0,0.0,running", rows.get(rows.size() - 2));
+        assertEquals("199,r3,7.5,3.0,0.0,running", rows.get(rows.size() - 1));
+    }
+
+    @Test
+    void aBadEnvironmentFileExits2() {
+        HeadlessRun r = HeadlessRun.of("--env", "missing.xml", "--steps", "10");
+        assertEquals(2, r.code());
+        assertEquals(List.of("missing.xml: file not found"), r.err(), r.all());
     }
 
     @Test

@@ -67,6 +67,7 @@ final class InJvmSimulation {
     enum Exchange { ONE_THREAD, SEND_RECEIVE, SHARED, ONE_CONNECTION }
     private Exchange exchange = Exchange.ONE_THREAD;
     private boolean stepMessages = true;
+    private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
 
     InJvmSimulation exchange(Exchange e) {
         this.exchange = e;
@@ -77,6 +78,12 @@ final class InJvmSimulation {
     private SimulationKeys keys;
     InJvmSimulation keys(SimulationKeys k) {
         this.keys = k;
+        return this;
+    }
+
+    /** Messages between object-stream resets, on every connection of the run (default: the protocol's). */
+    InJvmSimulation resetEvery(int messages) {
+        this.resetEvery = messages;
         return this;
     }
 
@@ -126,7 +133,7 @@ final class InJvmSimulation {
 
     InJvmSimulation run(long steps, boolean inProcessGeometry, Supplier<RobotControl> control) throws Exception {
         Settings.Builder settings = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0)
-                .inProcessGeometry(inProcessGeometry).maxSteps(steps).resetEvery(ObjectConnection.DEFAULT_RESET_EVERY)
+                .inProcessGeometry(inProcessGeometry).maxSteps(steps).resetEvery(resetEvery)
                 .handshakeTimeoutMs(10_000).stepMessages(stepMessages);
         if (design != null) {
             settings.design(design);
@@ -196,7 +203,7 @@ final class InJvmSimulation {
                     Socket g = new Socket(InetAddress.getLoopbackAddress(), ports[2]);
                     geometrySocket = g;
                     try {
-                        return new GeometryClient(g, ObjectConnection.DEFAULT_RESET_EVERY, keys).run();
+                        return new GeometryClient(g, resetEvery, keys).run();
                     } catch (java.io.IOException e) {
                         if (geometryKilled) {
                             return null;
@@ -218,7 +225,7 @@ final class InJvmSimulation {
                 threads.add(thread("one-connection", failures, () -> {
                     robosim.hardware.ManyRobots.runOverOneConnection(spec.robots().stream().map(r ->
                             new HardwareSimulator(r.name(), RobotType.byName(r.type()))).toList(), controls,
-                            new Socket(InetAddress.getLoopbackAddress(), ports[0]), ObjectConnection.DEFAULT_RESET_EVERY,
+                            new Socket(InetAddress.getLoopbackAddress(), ports[0]), resetEvery,
                             keys);
                     return null;
                 }));
@@ -228,7 +235,7 @@ final class InJvmSimulation {
                     for (WorldSpec.RobotSpec r : spec.robots()) {
                         HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
                         sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
-                                ObjectConnection.DEFAULT_RESET_EVERY, keys);
+                                resetEvery, keys);
                         sims.add(sim);
                     }
                     robosim.hardware.ManyRobots.runShared(sims, controls);
@@ -243,7 +250,7 @@ final class InJvmSimulation {
                     threads.add(thread(r.name(), failures, () -> {
                         HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
                         sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
-                                ObjectConnection.DEFAULT_RESET_EVERY, keys);
+                                resetEvery, keys);
                         return sim.run(c, each);
                     }));
                 }

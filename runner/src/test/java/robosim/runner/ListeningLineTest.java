@@ -3,7 +3,6 @@ package robosim.runner;
 import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
@@ -14,10 +13,9 @@ class ListeningLineTest {
     private static final long LONG_S = 60;
 
     private static Map<String, String> listening(Path keys) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-cp", System.getProperty("java.class.path"), "robosim.environment.EnvironmentMain",
+        List<String> command = ProcessLines.java(List.of(), "robosim.environment.EnvironmentMain",
                 "src/test/resources/three-robots.xml", "--no-geometry", "--robot-port", "0", "--viewer-port", "0",
-                "--control-port", "-1"));
+                "--control-port", "-1");
         ProcessBuilder pb = new ProcessBuilder(command);
         pb.environment().remove("ROBOSIM_KEYS");
         if (keys != null) {

@@ -14,20 +14,23 @@ import robosim.environment.core.WorldSpec;
 import robosim.protocol.PoseUpdate;
 
 /**
- * The paper benchmark over real sockets: 10 robots, 600 steps (6 BackAndForth cycles of 88 and 72 more, past
- * two stream resets at 256 and 512 messages), a message to the next robot every step. Every pose after every step equals the hand-computed one, no two shapes overlap, every
- * message arrives once and in order, and in-process geometry gives the same poses bit for bit.
+ * The paper benchmark over real sockets: 10 robots, 200 steps (2 BackAndForth cycles of 88 and 24 more, past
+ * three stream resets, one every {@value #RESET_EVERY} messages), a message to the next robot every step. Every
+ * pose after every step equals the hand-computed one, no two shapes overlap, every message arrives once and in
+ * order, and in-process geometry gives the same poses bit for bit.
  */
 class LockStepIntegrationTest {
-    private static final int STEPS = 600;
+    private static final int STEPS = 200;
+    /** Messages between object-stream resets: a run this short passes several. */
+    private static final int RESET_EVERY = 64;
 
     @Test
-    void tenChattingRobotsFor600Steps() throws Exception {
-        InJvmSimulation remote = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+    void tenChattingRobotsFor200Steps() throws Exception {
+        InJvmSimulation remote = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).resetEvery(RESET_EVERY)
                 .run(STEPS, false, Chatter::new);
         check(remote);
 
-        InJvmSimulation local = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+        InJvmSimulation local = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).resetEvery(RESET_EVERY)
                 .run(STEPS, true, Chatter::new);
         check(local);
         for (int k = 0; k < STEPS; k++) {
@@ -60,7 +63,7 @@ class LockStepIntegrationTest {
     })
     void everyDesignAndSettingGivesTheSamePosesAndMessages(CoordinatorDesign design,
             InJvmSimulation.Exchange exchange, boolean stepMessages) throws Exception {
-        InJvmSimulation variant = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+        InJvmSimulation variant = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).resetEvery(RESET_EVERY)
                 .design(design).exchange(exchange).stepMessages(stepMessages)
                 .run(VARIANT_STEPS, false, Chatter::new);
         assertTrue(variant.summary.completed(), variant.summary.reason());
@@ -77,26 +80,27 @@ class LockStepIntegrationTest {
     /** A sonar-driven workload (Wander in the maze, noisy sonar) under the least default combination. */
     @Test
     void wanderingRobotsTakeTheSamePathsUnderEveryThreading() throws Exception {
-        InJvmSimulation a = new InJvmSimulation(InJvmSimulation.env("maze.xml")).run(600, false, Wander::new);
-        InJvmSimulation b = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
+        InJvmSimulation a = new InJvmSimulation(InJvmSimulation.env("maze.xml")).resetEvery(RESET_EVERY)
+                .run(STEPS, false, Wander::new);
+        InJvmSimulation b = new InJvmSimulation(InJvmSimulation.env("maze.xml")).resetEvery(RESET_EVERY)
                 .design(CoordinatorDesign.THREADS).exchange(InJvmSimulation.Exchange.SHARED)
-                .stepMessages(false).run(600, false, Wander::new);
-        InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
+                .stepMessages(false).run(STEPS, false, Wander::new);
+        InJvmSimulation c = new InJvmSimulation(InJvmSimulation.env("maze.xml")).resetEvery(RESET_EVERY)
                 .design(CoordinatorDesign.TWO_THREADS).exchange(InJvmSimulation.Exchange.SEND_RECEIVE)
-                .run(600, false, Wander::new);
-        InJvmSimulation d = new InJvmSimulation(InJvmSimulation.env("maze.xml"))
-                .exchange(InJvmSimulation.Exchange.ONE_CONNECTION).run(600, false, Wander::new);
+                .run(STEPS, false, Wander::new);
+        InJvmSimulation d = new InJvmSimulation(InJvmSimulation.env("maze.xml")).resetEvery(RESET_EVERY)
+                .exchange(InJvmSimulation.Exchange.ONE_CONNECTION).run(STEPS, false, Wander::new);
         InJvmSimulation.assertSamePoses(a, b);
         InJvmSimulation.assertSamePoses(a, c);
         InJvmSimulation.assertSamePoses(a, d);
     }
 
-    private static final int VARIANT_STEPS = 600; // (past two stream resets, as above)
+    private static final int VARIANT_STEPS = STEPS; // (past the stream resets, as above)
     private static InJvmSimulation reference;
 
     private static synchronized InJvmSimulation reference() throws Exception {
         if (reference == null) {
-            reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+            reference = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml")).resetEvery(RESET_EVERY)
                     .run(VARIANT_STEPS, false, Chatter::new);
         }
         return reference;
@@ -123,9 +127,9 @@ class LockStepIntegrationTest {
             }
         }
         PoseUpdate last = sim.updates.get(STEPS - 1);
-        // 600 = 6 cycles of 88 + 72: forward 40, turn 4, back 28: x = start + 3000, heading 180
-        assertEquals(1500 + 3000, last.xMm(0), 1e-6);
-        assertEquals(180, last.headingDeg(0));
+        // 200 = 2 cycles of 88 + 24 steps forward: x = start + 24 x 250, heading 0
+        assertEquals(1500 + 6000, last.xMm(0), 1e-6);
+        assertEquals(0, last.headingDeg(0));
         for (Object o : sim.controls) {
             Chatter c = (Chatter) o;
             assertTrue(c.finished.await(30, java.util.concurrent.TimeUnit.SECONDS));

@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -22,10 +20,9 @@ class OneJvmAddTest {
 
     @Test
     void theFilesRobotsRunInItsJvmAndAnAddedRobotStartsThere() throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), "robosim.environment.EnvironmentMain",
+        List<String> command = ProcessLines.java(List.of(), "robosim.environment.EnvironmentMain",
                 "src/test/resources/three-robots.xml", "--one-jvm", "--steps", "400", "--robot-port", "0",
-                "--viewer-port", "0", "--control-port", "0", "--start-paused"));
+                "--viewer-port", "0", "--control-port", "0", "--start-paused");
         try (ProcessLines env = new ProcessLines("environment", new ProcessBuilder(command))) {
             Map<String, String> ports = HeadlessRunner.fields(env.await("listening robots=", LONG_S));
             assertEquals("-1", ports.get("geometry"), "collision and sonar run in the Environment");

@@ -15,6 +15,20 @@ final class ProcessLines implements AutoCloseable {
     private final List<String> lines = new CopyOnWriteArrayList<>();
     private boolean ended;
 
+    /**
+     * The command line of a new JVM of this test JVM's JDK and class path that runs {@code main} with {@code args},
+     * started as the test JVMs are (the client compiler only and the serial collector: short runs, no speed
+     * measured), with {@code options} after those.
+     */
+    static List<String> java(List<String> options, String main, String... args) {
+        List<String> command = new java.util.ArrayList<>(List.of(java.nio.file.Path.of(System.getProperty("java.home"),
+                "bin", "java").toString(), "-XX:TieredStopAtLevel=1", "-XX:+UseSerialGC"));
+        command.addAll(options);
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), main));
+        command.addAll(List.of(args));
+        return command;
+    }
+
     ProcessLines(String name, ProcessBuilder builder) throws IOException {
         this.name = name;
         this.process = builder.redirectErrorStream(true).start();

@@ -8,6 +8,7 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.net.InetAddress;
 import java.net.Socket;
 import java.nio.file.Path;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
@@ -37,10 +38,9 @@ class RecordingCrashTest {
     void aKilledEnvironmentLeavesARecordingReadableUpToItsLastWholeStep(@TempDir Path dir) throws Exception {
         Path envFile = InJvmSimulation.env("paper-benchmark.xml");
         Path file = dir.resolve("run.rec");
-        ProcessLines env = new ProcessLines("environment", new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
-                System.getProperty("java.class.path"), "robosim.environment.EnvironmentMain", envFile.toString(),
-                "--steps", "1000000", "--no-geometry", "--robot-port", "0", "--viewer-port", "0", "--control-port",
-                "-1", "--record", file.toString()));
+        ProcessLines env = new ProcessLines("environment", new ProcessBuilder(ProcessLines.java(List.of(),
+                "robosim.environment.EnvironmentMain", envFile.toString(), "--steps", "1000000", "--no-geometry",
+                "--robot-port", "0", "--viewer-port", "0", "--control-port", "-1", "--record", file.toString())));
         try (env) {
             Map<String, String> ports = HeadlessRunner.fields(env.await("listening robots=", LONG_S));
             int robotPort = Integer.parseInt(ports.get("robots"));

@@ -169,9 +169,8 @@ class ReplayTest {
 
     /** The replay in its own process, on this JDK, on free ports. */
     static ProcessLines replay(Path file, String... options) throws java.io.IOException {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path"), "robosim.environment.replay.ReplayMain", file.toString(),
-                "--viewer-port", "0", "--control-port", "0"));
+        List<String> command = new ArrayList<>(ProcessLines.java(List.of(), "robosim.environment.replay.ReplayMain",
+                file.toString(), "--viewer-port", "0", "--control-port", "0"));
         command.addAll(List.of(options));
         return new ProcessLines("replay", new ProcessBuilder(command));
     }

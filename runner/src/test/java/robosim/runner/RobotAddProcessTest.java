@@ -4,8 +4,6 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
@@ -21,10 +19,8 @@ class RobotAddProcessTest {
     private static final long LONG_S = 60;
 
     private static ProcessLines java(String name, String... args) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path")));
-        command.addAll(List.of(args));
-        return new ProcessLines(name, new ProcessBuilder(command));
+        return new ProcessLines(name, new ProcessBuilder(ProcessLines.java(List.of(), args[0],
+                java.util.Arrays.copyOfRange(args, 1, args.length))));
     }
 
     @Test

@@ -39,10 +39,8 @@ class RobotHoldProcessesTest {
     private static final Path WORLD = Path.of("src/test/resources/ring-hold.xml");
 
     private static ProcessLines java(String name, String... args) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-cp", System.getProperty("java.class.path")));
-        command.addAll(List.of(args));
-        return new ProcessLines(name, new ProcessBuilder(command));
+        return new ProcessLines(name, new ProcessBuilder(ProcessLines.java(List.of(), args[0],
+                java.util.Arrays.copyOfRange(args, 1, args.length))));
     }
 
     private static ProcessLines environment(Path record, String... more) throws Exception {

@@ -17,7 +17,7 @@ class SoakTest {
     @Test
     void aShortSeededSoakPasses() {
         int exit = new CommandLine(new Soak()).execute("--robots", "6", "--robot-processes", "2", "--silent-robots",
-                "1", "--steps", "2000", "--seed", "5", "--on-geometry-loss", "WAIT");
+                "1", "--steps", "1000", "--seed", "5", "--on-geometry-loss", "WAIT");
         assertEquals(0, exit, "soak: FAIL (its report is in the test's output)");
     }
 }

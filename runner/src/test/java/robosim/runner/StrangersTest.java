@@ -116,11 +116,9 @@ class StrangersTest {
      * Every robot's pose after every step, in order.
      */
     private static List<String> run(boolean attack) throws Exception {
-        List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
-                .toString(), "-Xmx256m", "-XX:+UseSerialGC", "-cp", System.getProperty("java.class.path"),
-                "robosim.environment.EnvironmentMain", "src/test/resources/three-robots.xml", "--steps",
-                Integer.toString(STEPS), "--no-geometry", "--robot-port", "0", "--viewer-port", "0",
-                "--control-port", "0", "--start-paused"));
+        List<String> command = ProcessLines.java(List.of("-Xmx256m"), "robosim.environment.EnvironmentMain",
+                "src/test/resources/three-robots.xml", "--steps", Integer.toString(STEPS), "--no-geometry", "--robot-port",
+                "0", "--viewer-port", "0", "--control-port", "0", "--start-paused");
         try (ProcessLines env = new ProcessLines(attack ? "attacked" : "clean", new ProcessBuilder(command))) {
             java.util.Map<String, String> ports = HeadlessRunner.fields(env.await("listening robots=", LONG_S));
             int port = Integer.parseInt(ports.get("robots"));

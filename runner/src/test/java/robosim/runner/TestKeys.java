@@ -8,13 +8,14 @@ import java.util.concurrent.TimeUnit;
 import robosim.protocol.SimulationKeys;
 
 /**
- * Simulation keys for tests, made by {@code scripts/make-keys.sh} itself, once per name in each test JVM (each run
- * of the script is a keytool JVM: a second or so of a core), and copied into the fresh directory a test asks for.
- * Keys of different names differ, as a test's "keys" and "others" must.
+ * Simulation keys for tests, made by {@code scripts/make-keys.sh} itself, once per name for the whole build (each
+ * run of the script is a keytool JVM: a second or so of a core): under {@code target/test-keys/NAME}, made by the
+ * first test JVM that asks, under a file lock the other test JVMs wait on, and copied into the fresh directory a
+ * test asks for. Keys of different names differ, as a test's "keys" and "others" must.
  */
 final class TestKeys {
-    /** The keys made so far in this JVM, by name, in a directory of their own. */
-    private static final java.util.Map<String, Path> MADE = new java.util.HashMap<>();
+    /** Where the keys of each name are kept for the build (the runner module's target, cleaned with it). */
+    private static final Path KEPT = Path.of("target", "test-keys").toAbsolutePath();
 
     private TestKeys() {
     }
@@ -33,30 +34,31 @@ final class TestKeys {
         return dir;
     }
 
-    /** The keys of {@code name}, made by the script the first time they are asked for in this JVM. */
+    /** The keys of {@code name}, made by the script the first time any test JVM of this build asks for them. */
     private static synchronized Path made(String name) throws IOException, InterruptedException {
-        Path cached = MADE.get(name);
-        if (cached != null) {
-            return cached;
+        Path dir = KEPT.resolve(name);
+        Files.createDirectories(KEPT);
+        try (java.nio.channels.FileChannel lock = java.nio.channels.FileChannel.open(KEPT.resolve(".lock"),
+                java.nio.file.StandardOpenOption.CREATE, java.nio.file.StandardOpenOption.WRITE);
+                java.nio.channels.FileLock held = lock.lock()) {
+            if (Files.isRegularFile(dir.resolve("simulation.p12"))) {
+                return dir; // (made whole by an earlier JVM: it is moved into place only once made)
+            }
+            Path tmp = Files.createTempDirectory(KEPT, name + ".");
+            Path making = tmp.resolve(name);
+            Process p = new ProcessBuilder("bash", "../scripts/make-keys.sh", making.toString())
+                    .redirectErrorStream(true).start();
+            String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            if (!p.waitFor(120, TimeUnit.SECONDS) || p.exitValue() != 0) {
+                throw new IOException("make-keys.sh failed: " + out);
+            }
+            if (!Files.isRegularFile(making.resolve("simulation.p12"))) {
+                throw new IOException("make-keys.sh made no key pair: " + out);
+            }
+            Files.move(making, dir, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
+            Files.delete(tmp);
+            return dir;
         }
-        Path tmp = Files.createTempDirectory("robosim-test-keys");
-        Path dir = tmp.resolve(name);
-        tmp.toFile().deleteOnExit(); // (deleted last: files registered later go first)
-        dir.toFile().deleteOnExit();
-        Process p = new ProcessBuilder("bash", "../scripts/make-keys.sh", dir.toString())
-                .redirectErrorStream(true).start();
-        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
-        if (!p.waitFor(120, TimeUnit.SECONDS) || p.exitValue() != 0) {
-            throw new IOException("make-keys.sh failed: " + out);
-        }
-        if (!Files.isRegularFile(dir.resolve("simulation.p12"))) {
-            throw new IOException("make-keys.sh made no key pair: " + out);
-        }
-        try (var files = Files.list(dir)) {
-            files.forEach(f -> f.toFile().deleteOnExit());
-        }
-        MADE.put(name, dir);
-        return dir;
     }
 
     /** New keys under {@code parent}, loaded. */
