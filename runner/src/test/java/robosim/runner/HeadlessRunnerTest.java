@@ -91,7 +91,7 @@ class HeadlessRunnerTest {
     @Test
     void aRobotProcessThatEndsBeforeTheStartEndsTheRunAtOnceWithItsReason() {
         // a JVM option the robots' JVMs refuse: they end at once, and the Environment would wait for ever
-        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10", "--no-geometry",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/one-robot.xml", "--steps", "10", "--no-geometry",
                 "--robot-jvm-opts", "-XX:+NoSuchRoboSimOption");
         assertEquals(2, r.code(), r.all());
         assertTrue(r.err().stream().anyMatch(line -> Pattern.matches("headless: robot r[123] exited \\(code 1\\) "
@@ -100,7 +100,7 @@ class HeadlessRunnerTest {
 
     @Test
     void aGeometryProcessThatEndsBeforeTheStartEndsTheRunAtOnce() {
-        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/three-robots.xml", "--steps", "10",
+        HeadlessRun r = HeadlessRun.of("--env", "src/test/resources/one-robot.xml", "--steps", "10",
                 "--geometry-jvm-opts", "-XX:+NoSuchRoboSimOption");
         assertEquals(2, r.code(), r.all());
         assertTrue(r.err().stream().anyMatch(line -> Pattern.matches("headless: geometry exited \\(code 1\\) "
