@@ -20,6 +20,8 @@ final class Hand {
     Runnable onReturned = () -> { };
     final Run run;
     private final WorldSpec spec;
+    /** Events one drain takes at most: far more than any test's run, far fewer than a run that never holds. */
+    private static final int EVENTS = 1_000_000;
     private final ArrayDeque<LoopEvent> queue = new ArrayDeque<>();
     private long now = 1_000_000_000L;
 
@@ -60,10 +62,17 @@ final class Hand {
         queue.add(event);
     }
 
-    /** Takes every event queued (and every one they lead to) as the loop does; then the run's status is published. */
+    /**
+     * Takes every event queued (and every one they lead to) as the loop does; then the run's status is published.
+     * A run whose robots never stop answering (a test without an end, pause or silence) fails, not hangs.
+     */
     void drain() {
         settle();
+        int taken = 0;
         for (LoopEvent e; (e = queue.poll()) != null; ) {
+            if (++taken > EVENTS) {
+                throw new AssertionError("more than " + EVENTS + " events in one drain: the run never holds");
+            }
             if (run.ended()) {
                 e.refuse();
                 continue;

@@ -238,6 +238,31 @@ class RunTest {
         assertEquals(4, bots.get(0).responses.size());
     }
 
+    @Test
+    void underSequentialOnlyTheRobotItsReaderWaitsForIsLateAndNoRobotJoins() {
+        hand = new Hand(WORLD, Settings.builder().inProcessGeometry(true).design(CoordinatorDesign.SEQUENTIAL)
+                .stepTimeoutMs(100).maxSteps(20).build());
+        hand.run.startPaused();
+        for (int i = 0; i < 3; i++) {
+            Bot b = new Bot(hand, WORLD.robots().get(i).name(), NEVER, i == 0 ? NEVER : 5);
+            b.hello(i);
+            bots.add(b);
+        }
+        hand.drain();
+        assertEquals(2, step(2));
+        assertEquals(CoordinatorDesign.SEQUENTIAL.refusesJoins(), hello(new Bot(hand, "d"), -1), "no robot joins");
+        assertEquals(CoordinatorDesign.SEQUENTIAL.refusesJoins(), add("e", 10, 10, 0), "nor is one added");
+        hand.apply(new LoopEvent.Resume(new CompletableFuture<>()));
+        assertEquals(5, hand.status().step(), "b and c say nothing from step 5");
+        hand.later(101);
+        assertTrue(bots.get(1).dropped(), "b, the first the reader waits for, is late");
+        assertFalse(bots.get(2).dropped(), "c is not judged while the reader waits for b");
+        hand.later(101);
+        assertTrue(bots.get(2).dropped(), "then c");
+        assertTrue(hand.summary().completed(), "a ran on alone");
+        assertEquals(List.of("left b 5", "left c 5", "ended"), hand.heard);
+    }
+
     // ---- joins, take-overs, add and remove -----------------------------------------------------------------
 
     @Test
