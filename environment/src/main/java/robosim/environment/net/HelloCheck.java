@@ -38,12 +38,12 @@ final class HelloCheck {
     }
 
     /** The place in the file of the robot this hello names, or -1 (none, or one that joins by a rule). */
-    int indexOf(RobotHello hello) {
+    private int indexOf(RobotHello hello) {
         return hello.name() == null ? -1 : spec.indexOf(hello.name());
     }
 
     /** Null if the hello may go to the loop, else the refusal; {@code index}: {@link #indexOf} the hello. */
-    String check(RobotHello hello, int index) {
+    private String check(RobotHello hello, int index) {
         if (hello.protocolVersion() != Protocol.VERSION) {
             return "protocol version " + hello.protocolVersion() + " is not supported (the Environment speaks "
                     + Protocol.VERSION + ")";
@@ -79,7 +79,7 @@ final class HelloCheck {
      * the type the file gives it. Null if that is no longer one every process knows (the rule it joins by went, or
      * changed, since the check: {@code remove}, {@code add} from the control port meanwhile).
      */
-    RobotHello typed(RobotHello hello, int index) {
+    private RobotHello typed(RobotHello hello, int index) {
         if (!hello.anyType()) {
             return hello;
         }

@@ -4,7 +4,7 @@ package robosim.environment.net;
  * What a robots' transport does on the loop thread between events, where it needs to (a socket per robot needs
  * nothing): the {@link SimulationLoop} calls every hook after each event and each deadline check, once the run
  * has moved on as far as it can. Robots in this JVM hand in the requests built without an event
- * ({@link InMemoryRequests}); shared connections write the frame the loop filled for each ({@link SharedOutput}).
+ * ({@link InMemoryTransport}); shared connections write the frame the loop filled for each ({@link SharedOutput}).
  * The {@link Run} knows no hook.
  */
 interface LoopHook {
