@@ -22,9 +22,13 @@ import robosim.protocol.SimulationKeys;
 @Command(name = "control-panel.sh", mixinStandardHelpOptions = true,
         description = {"Loads, starts, stops, pauses and steps a running Environment (or a replay) through its control "
                 + "port: HOST [PORT] [REQUEST...], the port 8100 when it is left out.",
-            "Requests: status; robots (each robot and its state); start; stop; pause; resume; step N; load FILE; "
-                + "add NAME TYPE X Y HEADING [CONTROL] (a robot joins the running world at X, Y m); remove NAME; "
-                + "shutdown; and, of a replay, seek K and speed X."})
+            "Requests: status: the run's state, step, rate, robots, Geometry and viewers; start: resumes, or after the "
+                + "end runs the same file again; stop: ends the simulation (every client is told); pause: holds the run "
+                + "after the step in progress; resume: runs on; step N: runs N more steps and holds again; load FILE: "
+                + "ends the simulation and waits for FILE's robots; shutdown: ends the simulation and the Environment; "
+                + "robots: each robot and its state; add NAME TYPE X Y HEADING [CONTROL]: a robot joins the running "
+                + "world at X, Y m; remove NAME: takes a robot out of the run for good.",
+            "Of a replay also: seek K: shows step K and goes on from there; speed X: X times real time."})
 public final class ControlPanelMain implements Callable<Integer> {
     /** The control port when none is given. */
     static final int DEFAULT_PORT = 8100;

@@ -7,7 +7,6 @@ import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.TreeSet;
@@ -23,8 +22,9 @@ import robosim.environment.replay.ReplayCommands;
 
 /**
  * A control verb is declared once, where it is served ({@link ControlVerb}); what tells users about the verbs is
- * held to those declarations: the Control Panel's {@code --help} names every request of the Environment and of a
- * replay, and the protocol's page has a row for each of the Environment's and says which are answered at once.
+ * held to those declarations: the Control Panel's {@code --help} lists every request of the Environment, with its
+ * help, in the declared order, and those a replay serves beside them, and the protocol's page has a row for each of
+ * the Environment's and says which are answered at once.
  */
 class ControlVerbsTest {
     private static final Path REPO = Path.of("..").toAbsolutePath().normalize();
@@ -38,13 +38,25 @@ class ControlVerbsTest {
     }
 
     @Test
-    void theControlPanelsHelpNamesEveryRequest() {
+    void theControlPanelsHelpListsEveryRequestWithItsHelpInTheDeclaredOrder() {
         String usage = new CommandLine(new ControlPanelMain()).getUsageMessage().replaceAll("\\s+", " ");
-        List<ControlVerb> all = new ArrayList<>(environment());
-        all.addAll(replay());
-        for (ControlVerb v : all) {
-            assertTrue(usage.contains(v.usage()), v.usage() + " in:\n" + usage);
-        }
+        int requests = usage.indexOf("Requests: ");
+        int replays = usage.indexOf("Of a replay also: ");
+        assertTrue(requests >= 0 && replays > requests, usage);
+        List<String> listed = entries(usage.substring(requests + "Requests: ".length(), replays));
+        assertEquals(environment().stream().map(v -> v.usage() + ": " + v.help()).toList(), listed,
+                "the Environment's requests, each with its help");
+        Set<String> environmentUsages = environment().stream().map(ControlVerb::usage).collect(Collectors.toSet());
+        String rest = usage.substring(replays + "Of a replay also: ".length());
+        List<String> replayOnly = entries(rest.substring(0, rest.indexOf('.') + 1));
+        assertEquals(replay().stream().filter(v -> !environmentUsages.contains(v.usage()))
+                .map(v -> v.usage() + ": " + v.help()).toList(), replayOnly, "what a replay serves beside them");
+    }
+
+    /** "a: b; c: d." as ["a: b", "c: d"]. */
+    private static List<String> entries(String sentence) {
+        String s = sentence.strip();
+        return List.of((s.endsWith(".") ? s.substring(0, s.length() - 1) : s).split("; "));
     }
 
     @Test

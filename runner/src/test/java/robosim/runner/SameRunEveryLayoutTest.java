@@ -25,9 +25,10 @@ import robosim.protocol.RecordingReader;
  * One run, whatever the layout: {@code headless.sh} for real, every part its own OS process (the Environment, the
  * Geometry process and a robot process each, control code on platform threads), gives the same pose log, byte for
  * byte, and recordings whose poses and messages ({@code record-tool.sh poses}, {@code messages}) are the same, as
- * the robots of one process over one shared connection with control code on virtual threads (both on the newest
- * JDK 21+ this machine has, so only the connection and the thread kind differ; on a machine without one, both on
- * this JVM's platform threads, and the test says so) and as the whole simulation in one JVM ({@code --one-jvm}):
+ * the robots of one process over one shared connection with control code on virtual threads and as the whole
+ * simulation in one JVM ({@code --one-jvm}), all three on the newest JDK 21+ this machine has (so only the layout,
+ * the connection and the thread kind differ; on a machine without one, on this JVM's, with platform threads, and
+ * the test says so):
  * in a maze of noisy sonar (seed 42); and a game of tag (messages every step) and a world of laser, heat and bump
  * sensors (messages too) give in one JVM what their robots give over a shared connection to the Environment and
  * Geometry processes. {@code scripts/check-one-jvm.sh} checks every world of test-envs/ so.
@@ -70,7 +71,8 @@ class SameRunEveryLayoutTest {
         }
         assertSame("the shared connection's", separate, shared);
 
-        Written oneJvm = inThisJvm("maze.xml", "one-jvm", "robots_in=one-jvm", "--one-jvm");
+        Written oneJvm = spawned(jdk, "maze.xml", "one-jvm", "--one-jvm"); // (on the same JDK: the same floating point)
+        assertTrue(oneJvm.output().lines().anyMatch(l -> l.endsWith("robots_in=one-jvm")), oneJvm.output());
         assertSame("one JVM's", separate, oneJvm);
     }
 

@@ -32,8 +32,8 @@ public final class EnvironmentCommands implements ControlCommands {
         this.verbs = List.of(
                 ControlVerb.quick("status", "the run's state, step, rate, robots, Geometry and viewers",
                         arg -> status()),
-                ControlVerb.waiting("start", "resumes; after the end, runs the same file again", arg -> ok(host.start())),
-                ControlVerb.quick("stop", "ends the simulation; every client is told", arg -> ok(host.stop())),
+                ControlVerb.waiting("start", "resumes, or after the end runs the same file again", arg -> ok(host.start())),
+                ControlVerb.quick("stop", "ends the simulation (every client is told)", arg -> ok(host.stop())),
                 ControlVerb.waiting("pause", "holds the run after the step in progress", arg -> {
                     host.current().pause(WAIT_S, TimeUnit.SECONDS);
                     return ok("paused at step " + host.current().status().step());

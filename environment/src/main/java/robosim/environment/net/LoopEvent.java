@@ -8,6 +8,7 @@ import robosim.environment.server.ViewerSink;
 import robosim.environment.server.Viewers;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.RobotHello;
+import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.WorldSnapshot;
 
@@ -121,7 +122,13 @@ sealed interface LoopEvent extends Inbox.Event<Run> {
         @Override
         public void apply(Run run) {
             viewers.add(viewer);
-            run.greet(viewer.queue(), snapshot);
+            snapshot.complete(run.snapshot());
+            SimulationEnd end = run.end();
+            if (end != null) {
+                viewer.queue().end(end);
+            } else {
+                viewer.queue().state(run.state());
+            }
         }
 
         @Override

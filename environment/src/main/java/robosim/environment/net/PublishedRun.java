@@ -8,8 +8,10 @@ import java.util.function.LongSupplier;
 
 /**
  * What the loop publishes about its run for other threads (the control port's status and queries, the summary,
- * whoever waits for the start): written by the {@link StatusBoard} on the loop thread only, read by anyone, never
- * locked. What the run has released is one {@link ReleasedWorld}; counts are as of the last step out.
+ * whoever waits for the start): written on the loop thread only (the robots and the phase by the
+ * {@link StatusBoard}, from the run's parts; what was released, the counts and the outcome by the {@link Run} as
+ * they happen), read by anyone, never locked. What the run has released is one {@link ReleasedWorld}; counts are as
+ * of the last step out.
  */
 final class PublishedRun {
     private static final long RATE_WINDOW_NANOS = 500_000_000L;

@@ -10,7 +10,6 @@ import org.slf4j.LoggerFactory;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
-import robosim.environment.server.ViewerQueue;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.Printable;
@@ -387,16 +386,24 @@ final class Run {
 
     // ---- viewers -------------------------------------------------------------------------------------------
 
-    /** A viewer joins: it gets the snapshot it starts from, then the run's state (or its end). */
-    void greet(ViewerQueue queue, CompletableFuture<WorldSnapshot> snapshot) {
-        snapshot.complete(world != null ? world.snapshot() : core != null ? ReleasedWorld.start(core.map()).snapshot()
-                : ReleasedWorld.expected(spec, roster.said()).snapshot());
-        if (progress.over()) {
-            queue.end(endMessage());
-        } else {
-            queue.state(new RunState(progress.released(), progress.phase() == Progress.Phase.WAITING
-                    ? RunState.Phase.WAITING : control.holding() ? RunState.Phase.PAUSED : RunState.Phase.RUNNING));
-        }
+    /**
+     * The world a viewer that joins now starts from: as the run last released it, or, before step 0 went out,
+     * every robot at its start pose (as it said it is, or as the file expects it).
+     */
+    WorldSnapshot snapshot() {
+        return world != null ? world.snapshot() : core != null ? ReleasedWorld.start(core.map()).snapshot()
+                : ReleasedWorld.expected(spec, roster.said()).snapshot();
+    }
+
+    /** What the run is doing now, as a viewer is told it: waiting, running or paused; null once it is over. */
+    RunState state() {
+        return progress.over() ? null : new RunState(progress.released(), progress.phase() == Progress.Phase.WAITING
+                ? RunState.Phase.WAITING : control.holding() ? RunState.Phase.PAUSED : RunState.Phase.RUNNING);
+    }
+
+    /** The end, once the run is over; else null. */
+    SimulationEnd end() {
+        return progress.over() ? endMessage() : null;
     }
 
     /** A viewer the connection watch cut off has gone. */
@@ -453,12 +460,10 @@ final class Run {
         published.endNanos = clock.getAsLong();
         SimulationEnd end = endMessage();
         roster.end(end, robotsTold);
-        robotsTold = true;
         for (int i = 0; i < outputs.size(); i++) {
             outputs.get(i).ended(end);
         }
         geometry.end(end);
-        published.ready(false);
         publish();
         LOG.info("simulation over after {} steps: {}", progress.released(), Printable.of(reason));
         listener.ended(published.summary(roster.size()));
@@ -471,6 +476,7 @@ final class Run {
      */
     void closeOut() {
         admission.refuseHeld();
+        published.ready(false); // (whoever waits for a start that will not come; once it came, nothing)
         publish();
         control.settle(progress.released(), true);
     }

@@ -30,10 +30,6 @@ final class StatusBoard {
         this.admission = admission;
     }
 
-    PublishedRun published() {
-        return published;
-    }
-
     /** Publishes the run's phase and where geometry is resolved, and its robots if they changed. */
     void publish() {
         published.phase = switch (progress.phase()) {

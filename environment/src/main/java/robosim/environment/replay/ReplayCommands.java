@@ -44,7 +44,7 @@ public final class ReplayCommands implements ControlCommands {
                 ControlVerb.quick("seek K", "shows step K and goes on from there",
                         arg -> ok(answer(clock.seek(whole("seek", arg)), WAIT_S))),
                 ControlVerb.quick("speed X", "X times real time", arg -> ok(answer(clock.speed(times(arg)), WAIT_S))),
-                ControlVerb.quick("stop", "ends the replay; every viewer is told", arg -> ok(answer(
+                ControlVerb.quick("stop", "ends the replay (every viewer is told)", arg -> ok(answer(
                         clock.stop("the replay was stopped from the control port"), WAIT_S))).alias("shutdown"));
     }
 
