@@ -1,8 +1,9 @@
 package robosim.environment.net;
 
-import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.function.Consumer;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
@@ -11,42 +12,55 @@ import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * Test fixture: a robot without a socket, driven by a {@link Hand}, whose place in the world the run assigns (a
- * file's robot, one that joins, one that takes over). It answers each step it is given by posting its request -
- * queued, as over a socket, so nothing depends on timing - until step {@code silentFrom} (from which it says
- * nothing), and at step {@code leaveAt} posts that its connection closed instead.
+ * Test fixture: a robot without a socket, whose place in the world the run assigns (a file's robot, one that joins,
+ * one that takes over). It answers each step it is given by posting its request (to a {@link Hand}'s queue, or a
+ * loop's inbox: queued, as over a socket, so nothing depends on timing) until step {@code silentFrom}, from which it
+ * says nothing, and at step {@code leaveAt} posts that its connection closed instead. The run calls it on the thread
+ * that drives it; a test may read what it got from its own.
  */
 final class Bot implements RobotPeer {
     static final long NEVER = Long.MAX_VALUE;
 
     final String name;
-    private final Hand hand;
+    private final Consumer<LoopEvent> post;
     private final long leaveAt;
     private final long silentFrom;
-    private int index = -1;
-    RobotWelcome welcome;
+    private volatile int index = -1;
+    volatile RobotWelcome welcome;
     /** The first step it was given (-1 before). */
-    long firstStep = -1;
-    final List<StepResponse> responses = new ArrayList<>();
-    SimulationEnd end;
-    private boolean closed;
-    private boolean dropped;
+    volatile long firstStep = -1;
+    final List<StepResponse> responses = new CopyOnWriteArrayList<>();
+    volatile SimulationEnd end;
+    private volatile boolean closed;
+    private volatile boolean dropped;
+    /** The plug-in sensors it asks to read every step. */
+    private volatile List<String> reads = List.of();
 
-    Bot(Hand hand, String name, long leaveAt, long silentFrom) {
-        this.hand = hand;
+    Bot(Consumer<LoopEvent> post, String name, long leaveAt, long silentFrom) {
+        this.post = post;
         this.name = name;
         this.leaveAt = leaveAt;
         this.silentFrom = silentFrom;
     }
 
+    Bot(Hand hand, String name, long leaveAt, long silentFrom) {
+        this(hand::post, name, leaveAt, silentFrom);
+    }
+
     Bot(Hand hand, String name) {
-        this(hand, name, NEVER, NEVER);
+        this(hand::post, name, NEVER, NEVER);
+    }
+
+    /** From now on it asks to read these plug-in sensors every step. */
+    Bot reads(String... sensors) {
+        reads = List.of(sensors);
+        return this;
     }
 
     /** Says hello (as the file's robot {@code fileIndex}, or -1 for one that is not in the file); its verdict, once drained. */
     CompletableFuture<String> hello(int fileIndex) {
         CompletableFuture<String> verdict = new CompletableFuture<>();
-        hand.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(this, new RobotHello(name, RobotModels.AR_ROBOT),
+        post.accept(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(this, new RobotHello(name, RobotModels.AR_ROBOT),
                 fileIndex, verdict))));
         return verdict;
     }
@@ -54,7 +68,7 @@ final class Bot implements RobotPeer {
     /** Its connection closes now. */
     void leave(String why) {
         closed = true;
-        hand.post(new LoopEvent.RobotLeaves(this, why));
+        post.accept(new LoopEvent.RobotLeaves(this, why));
     }
 
     @Override
@@ -96,7 +110,7 @@ final class Bot implements RobotPeer {
             leave("its connection closed at step " + k);
             return;
         }
-        hand.post(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(), List.of())));
+        post.accept(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(), reads)));
     }
 
     @Override

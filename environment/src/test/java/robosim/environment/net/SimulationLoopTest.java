@@ -8,10 +8,8 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
-import java.util.concurrent.BlockingQueue;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import robosim.environment.core.JoinRule;
@@ -22,10 +20,6 @@ import robosim.environment.sensors.ThreadRecordingSensor;
 import robosim.protocol.Arena;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
-import robosim.protocol.RobotWelcome;
-import robosim.protocol.SimulationEnd;
-import robosim.protocol.StepRequest;
-import robosim.protocol.StepResponse;
 
 /**
  * The {@link SimulationLoop} on its own thread, driving a {@link Run} with robots that post to it and in-process
@@ -42,78 +36,6 @@ class SimulationLoopTest {
                     new RobotSpec("b", "ArRobot", "", 2000, 6000, 0, THREAD, 0),
                     new RobotSpec("c", "ArRobot", "", 2000, 10_000, 0, THREAD, 0)), 0, 8192, List.of());
 
-    /** A robot that answers each step at once, on the thread that gives it (the loop's), until {@code silentFrom}. */
-    private static final class Posting implements RobotPeer {
-        private final SimulationLoop loop;
-        private final long silentFrom;
-        final BlockingQueue<StepResponse> responses = new LinkedBlockingQueue<>();
-        final BlockingQueue<SimulationEnd> ends = new LinkedBlockingQueue<>();
-        private volatile int index = -1;
-        private volatile boolean begun;
-        private volatile boolean dropped;
-
-        Posting(SimulationLoop loop, long silentFrom) {
-            this.loop = loop;
-            this.silentFrom = silentFrom;
-        }
-
-        @Override
-        public int index() {
-            return index;
-        }
-
-        @Override
-        public void assign(int i) {
-            index = i;
-        }
-
-        @Override
-        public void welcome(RobotWelcome welcome) {
-        }
-
-        @Override
-        public void begin(long firstStep) {
-            begun = true;
-            answer(firstStep);
-        }
-
-        @Override
-        public void deliver(StepResponse response, long nextStep, SimulationEnd end) {
-            responses.add(response);
-            if (end != null) {
-                ends.add(end);
-            } else {
-                answer(nextStep);
-            }
-        }
-
-        private void answer(long k) {
-            if (k < silentFrom && !dropped) {
-                loop.post(new LoopEvent.Request(this, new StepRequest(k, 100, 0, false, List.of(), List.of("thread"))));
-            }
-        }
-
-        @Override
-        public void end(SimulationEnd end, boolean midStep) {
-            ends.add(end);
-        }
-
-        @Override
-        public boolean begun() {
-            return begun;
-        }
-
-        @Override
-        public boolean closed() {
-            return dropped;
-        }
-
-        @Override
-        public void drop() {
-            dropped = true;
-        }
-    }
-
     /** The names of the threads the listener was called on, and the departures it was told. */
     private final List<String> threads = new CopyOnWriteArrayList<>();
     private final List<Departure> left = new CopyOnWriteArrayList<>();
@@ -121,7 +43,7 @@ class SimulationLoopTest {
     private Run run;
 
     /** A run on its loop thread, three robots that said hello. */
-    private List<Posting> run(Settings settings, long cSilentFrom) throws Exception {
+    private List<Bot> run(Settings settings, long cSilentFrom) throws Exception {
         CompletableFuture<Void> ended = new CompletableFuture<>();
         loop = new SimulationLoop(64, settings, () -> ended.complete(null));
         run = new Run(THREE, settings, new HelloCheck(THREE), System::nanoTime, new RunListener() {
@@ -137,13 +59,11 @@ class SimulationLoopTest {
             }
         }, List.of());
         loop.start(run, List.of());
-        List<Posting> robots = new ArrayList<>();
+        List<Bot> robots = new ArrayList<>();
         for (int i = 0; i < 3; i++) {
-            Posting r = new Posting(loop, i == 2 ? cSilentFrom : Long.MAX_VALUE);
-            CompletableFuture<String> verdict = new CompletableFuture<>();
-            loop.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(r, new RobotHello(THREE.robots().get(i).name(),
-                    RobotModels.AR_ROBOT), i, verdict))));
-            assertNull(verdict.get(LONG_S, TimeUnit.SECONDS), "accepted");
+            Bot r = new Bot(loop::post, THREE.robots().get(i).name(), Bot.NEVER, i == 2 ? cSilentFrom : Bot.NEVER)
+                    .reads("thread");
+            assertNull(r.hello(i).get(LONG_S, TimeUnit.SECONDS), "accepted");
             robots.add(r);
         }
         return robots;
@@ -152,13 +72,14 @@ class SimulationLoopTest {
     @Test
     void everyStepRunsOnTheLoopThread() throws Exception {
         ThreadRecordingSensor.THREADS.clear();
-        List<Posting> robots = run(Settings.builder().inProcessGeometry(true).maxSteps(20).build(), Long.MAX_VALUE);
+        List<Bot> robots = run(Settings.builder().inProcessGeometry(true).maxSteps(20).build(), Bot.NEVER);
         assertTrue(loop.awaitEnd(LONG_S, TimeUnit.SECONDS));
-        for (Posting r : robots) {
-            for (long k = 0; k < 20; k++) {
-                assertEquals(k, r.responses.poll(LONG_S, TimeUnit.SECONDS).step());
+        for (Bot r : robots) {
+            assertEquals(20, r.responses.size());
+            for (int k = 0; k < 20; k++) {
+                assertEquals(k, r.responses.get(k).step());
             }
-            assertEquals("completed 20 steps", r.ends.poll(LONG_S, TimeUnit.SECONDS).reason());
+            assertEquals("completed 20 steps", r.end.reason());
         }
         assertTrue(run.published().summary(3).completed());
         assertEquals(Set.of("simulation-loop"), ThreadRecordingSensor.THREADS);
@@ -168,8 +89,7 @@ class SimulationLoopTest {
     @Test
     void aSilentRobotIsDroppedByTheStepTimeoutOnTheLoopThread() throws Exception {
         ThreadRecordingSensor.THREADS.clear();
-        List<Posting> robots = run(Settings.builder().inProcessGeometry(true).maxSteps(30).stepTimeoutMs(100).build(),
-                5);
+        List<Bot> robots = run(Settings.builder().inProcessGeometry(true).maxSteps(30).stepTimeoutMs(100).build(), 5);
         assertTrue(loop.awaitEnd(LONG_S, TimeUnit.SECONDS));
         RunSummary s = run.published().summary(3);
         assertTrue(s.completed(), s.reason());
@@ -177,7 +97,7 @@ class SimulationLoopTest {
         assertEquals(1, left.size());
         assertEquals("c", left.get(0).robot());
         assertEquals(5, left.get(0).step());
-        assertTrue(robots.get(2).dropped, "its connection was closed");
+        assertTrue(robots.get(2).dropped(), "its connection was closed");
         assertEquals(Set.of("simulation-loop"), Set.copyOf(threads), "the timeout acted on the loop");
         assertEquals(Set.of("simulation-loop"), ThreadRecordingSensor.THREADS, "every step ran on the loop");
     }
@@ -196,7 +116,7 @@ class SimulationLoopTest {
         never.post(new LoopEvent.StepN(3, stepped));
         never.post(new LoopEvent.AddRobot(new JoinRule("z", THREE.robots().get(0), null, 1), added));
         never.post(new LoopEvent.RemoveRobot("a", removed));
-        never.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(new Posting(never, 0),
+        never.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(new Bot(never::post, "a", Bot.NEVER, 0),
                 new RobotHello("a", RobotModels.AR_ROBOT), 0, hello))));
         never.never(); // (the loop is done, as the run's end races these callers)
         assertTrue(resumed.isDone(), "resume() is answered, not left to its 5 s limit");
