@@ -16,22 +16,20 @@ import java.util.List;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
-import org.junit.jupiter.params.ParameterizedTest;
-import org.junit.jupiter.params.provider.CsvSource;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.protocol.RecordingReader;
 
 /**
- * One run, whatever the layout: {@code headless.sh} for real, every part its own OS process (the Environment, the
- * Geometry process and a robot process each, control code on platform threads), gives the same pose log, byte for
- * byte, and recordings whose poses and messages ({@code record-tool.sh poses}, {@code messages}) are the same, as
- * the robots of one process over one shared connection with control code on virtual threads and as the whole
- * simulation in one JVM ({@code --one-jvm}), all three on the newest JDK 21+ this machine has (so only the layout,
- * the connection and the thread kind differ; on a machine without one, on this JVM's, with platform threads, and
- * the test says so):
- * in a maze of noisy sonar (seed 42); and a game of tag (messages every step) and a world of laser, heat and bump
- * sensors (messages too) give in one JVM what their robots give over a shared connection to the Environment and
- * Geometry processes. {@code scripts/check-one-jvm.sh} checks every world of test-envs/ so.
+ * One run, whatever the layout: the same pose log, byte for byte, and recordings whose poses and messages
+ * ({@code record-tool.sh poses}, {@code messages}) are the same. {@code headless.sh} for real, every part its own OS
+ * process (the Environment, the Geometry process and a robot process each), gives in a world of laser, heat and bump
+ * sensors and messages what the whole simulation in one JVM ({@code --one-jvm}) gives; in a maze of noisy sonar
+ * (seed 42), the robots of one process over one shared connection with control code on virtual threads give what
+ * one JVM with control code on platform threads gives (both on the newest JDK 21+ this machine has, so only the
+ * layout, the connection and the thread kind differ; on a machine without one, on this JVM's with platform threads
+ * in both, and the test says so); and a game of tag (messages every step) gives in one JVM what its robots give over
+ * a shared connection to the Environment and Geometry processes. {@code scripts/check-one-jvm.sh} checks every world
+ * of test-envs/ so.
  */
 class SameRunEveryLayoutTest {
     private static final int STEPS = 200;
@@ -45,23 +43,27 @@ class SameRunEveryLayoutTest {
     }
 
     @Test
-    void theMazeIsTheSameRunAsSeparateProcessesOverASharedConnectionOnVirtualThreadsAndInOneJvm() throws Exception {
-        Path newest = NewestJdk.atLeast(21);
-        Path jdk = newest == null ? Path.of(System.getProperty("java.home")) : newest;
-        String kind = newest == null ? "platform" : "virtual";
-        Written separate = spawned(jdk, "maze.xml", "separate", "--robot-jvm-opts", ROBOT_JVM + "platform",
-                "--profile", dir.resolve("profile").toString());
-        String last = separate.output().lines().reduce((a, b) -> b).orElse("");
-        assertTrue(last.matches("steps=" + STEPS + " robots=6 wall_s=[0-9.]+ steps_per_s=[0-9.]+ "
+    void everyPartItsOwnProcessIsTheSameRunAsOneJvm() throws Exception {
+        Written separate = inThisJvm("sensors.xml", "separate", "robots_in=processes", "--profile",
+                dir.resolve("profile").toString());
+        String last = separate.output().lines().filter(l -> l.startsWith("steps=")).reduce((a, b) -> b).orElse("");
+        assertTrue(last.matches("steps=" + STEPS + " robots=3 wall_s=[0-9.]+ steps_per_s=[0-9.]+ "
                 + "robot_steps_per_s=[0-9.]+ .*geometry=process robots_in=processes"), separate.output());
-        assertTrue(separate.output().contains("control code on platform threads"), separate.output());
         assertTrue(Files.size(dir.resolve("profile/environment.jfr")) > 0, "--profile recorded the Environment");
         assertTrue(Files.size(dir.resolve("profile/geometry.jfr")) > 0, "--profile recorded Geometry");
         List<String> rows = lines(separate.poseLog());
         assertEquals("step,robot,x_m,y_m,heading_deg,state", rows.get(0));
-        assertEquals(1 + STEPS * 6, rows.size(), "every robot's pose after every step");
+        assertEquals(1 + STEPS * 3, rows.size(), "every robot's pose after every step");
+        assertTrue(separate.messages().lines().count() > 1, "messages delivered");
+        assertSame("one JVM's", separate, inThisJvm("sensors.xml", "one-jvm", "robots_in=one-jvm", "--one-jvm"));
+    }
 
-        Written shared = spawned(jdk, "maze.xml", "shared", "--robots-in-one-process", "--robot-jvm-opts",
+    @Test
+    void theMazeIsTheSameRunOverASharedConnectionOnVirtualThreadsAsInOneJvmOnPlatformThreads() throws Exception {
+        Path newest = NewestJdk.atLeast(21);
+        Path jdk = newest == null ? Path.of(System.getProperty("java.home")) : newest;
+        String kind = newest == null ? "platform" : "virtual";
+        Written shared = spawned(jdk, List.of(), "maze.xml", "shared", "--robots-in-one-process", "--robot-jvm-opts",
                 ROBOT_JVM + kind);
         assertTrue(shared.output().lines().anyMatch(l -> l.endsWith("robots_in=one-process")), shared.output());
         assertTrue(shared.output().contains("control code on " + kind + " threads"), shared.output());
@@ -69,21 +71,19 @@ class SameRunEveryLayoutTest {
             System.out.println("SameRunEveryLayoutTest: no JDK 21+ here: the shared connection compared on platform "
                     + "threads");
         }
-        assertSame("the shared connection's", separate, shared);
-
-        Written oneJvm = spawned(jdk, "maze.xml", "one-jvm", "--one-jvm"); // (on the same JDK: the same floating point)
+        assertEquals(1 + STEPS * 6, lines(shared.poseLog()).size(), "every robot's pose after every step");
+        Written oneJvm = spawned(jdk, List.of("-Drobosim.controlThreads=platform"), "maze.xml", "one-jvm", "--one-jvm");
         assertTrue(oneJvm.output().lines().anyMatch(l -> l.endsWith("robots_in=one-jvm")), oneJvm.output());
-        assertSame("one JVM's", separate, oneJvm);
+        assertSame("one JVM's", shared, oneJvm);
     }
 
-    @ParameterizedTest(name = "{0}")
-    @CsvSource({"tag.xml", "sensors.xml"})
-    void aWorldOfMessagesAndSensorsIsTheSameRunInOneJvmAsOverASharedConnection(String world) throws Exception {
-        Written shared = inThisJvm(world, "shared", "robots_in=one-process", "--robots-in-one-process");
-        Written oneJvm = inThisJvm(world, "one-jvm", "robots_in=one-jvm", "--one-jvm");
-        int robots = new EnvironmentLoader().load(InJvmSimulation.env(world)).robots().size();
+    @Test
+    void aGameOfTagIsTheSameRunInOneJvmAsOverASharedConnection() throws Exception {
+        Written shared = inThisJvm("tag.xml", "shared", "robots_in=one-process", "--robots-in-one-process");
+        Written oneJvm = inThisJvm("tag.xml", "one-jvm", "robots_in=one-jvm", "--one-jvm");
+        int robots = new EnvironmentLoader().load(InJvmSimulation.env("tag.xml")).robots().size();
         assertEquals(1 + STEPS * robots, lines(shared.poseLog()).size(), "every robot's pose after every step");
-        assertTrue(shared.messages().lines().count() > 1, "messages delivered in " + world);
+        assertTrue(shared.messages().lines().count() > 1, "messages delivered");
         assertSame("one JVM's", shared, oneJvm);
     }
 
@@ -113,10 +113,12 @@ class SameRunEveryLayoutTest {
         return written(layout, r.all());
     }
 
-    /** A headless run on the JDK at {@code jdk}, its children too. */
-    private Written spawned(Path jdk, String world, String layout, String... more) throws Exception {
-        List<String> command = new ArrayList<>(List.of(jdk.resolve("bin").resolve("java").toString(), "-cp",
-                System.getProperty("java.class.path"), HeadlessRunner.class.getName()));
+    /** A headless run on the JDK at {@code jdk}, its children too, the runner's JVM with {@code options}. */
+    private Written spawned(Path jdk, List<String> options, String world, String layout, String... more)
+            throws Exception {
+        List<String> command = new ArrayList<>(List.of(jdk.resolve("bin").resolve("java").toString()));
+        command.addAll(options);
+        command.addAll(List.of("-cp", System.getProperty("java.class.path"), HeadlessRunner.class.getName()));
         command.addAll(args(world, layout, more));
         Path out = dir.resolve(layout + ".txt");
         Process p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(out.toFile()).start();
