@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# Fuzzes the message decoding for longer than the build does (the build fuzzes for 10 s):
+# Fuzzes the message decoding for longer than the build does (the build fuzzes for 6 s, module fuzz):
 #   scripts/fuzz.sh [DURATION] [--help]     e.g. scripts/fuzz.sh 30m   (default 5m)
 # Jazzer (coverage-guided, libFuzzer) feeds bytes through ObjectConnection exactly as every process
 # reads its peers. A finding fails the run and is saved as a regression input under
-# protocol/src/test/resources/robosim/protocol/MessageDecodingFuzzTestInputs/ (commit it with the fix);
-# the growing corpus stays in protocol/.cifuzz-corpus/ between runs.
+# fuzz/src/test/resources/robosim/protocol/MessageDecodingFuzzTestInputs/ (commit it with the fix);
+# the growing corpus stays in fuzz/.cifuzz-corpus/ between runs.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_one_arg DURATION "$@"
@@ -18,5 +18,5 @@ case $duration in
   *) seconds=${duration%s} ;;
 esac
 echo "fuzz: fuzzing for $seconds s" >&2
-exec ./mvnw -B -ntp -pl protocol test -Dfuzz.seconds="$seconds" -Dtest=MessageDecodingFuzzTest \
+exec ./mvnw -B -ntp -pl fuzz -am test -Dfuzz.seconds="$seconds" -Dtest=MessageDecodingFuzzTest \
   -Dsurefire.failIfNoSpecifiedTests=false

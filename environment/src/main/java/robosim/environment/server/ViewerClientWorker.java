@@ -56,7 +56,7 @@ public final class ViewerClientWorker extends ClientWorker implements ViewerSink
             send(new SimulationEnd(-1, refusal));
             return;
         }
-        ViewerQueue q = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond());
+        ViewerQueue q = new ViewerQueue(hello.everyStep(), hello.maxUpdatesPerSecond(), System::nanoTime);
         q.watch(watched);
         queue = q;
         WorldSnapshot first = handshake.verdict(host.join(this));

@@ -1,6 +1,7 @@
 package robosim.environment.server;
 
 import java.util.ArrayDeque;
+import java.util.function.LongSupplier;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
@@ -34,6 +35,7 @@ public final class ViewerQueue {
     private RobotView viewNext;
     private PoseUpdate updateNext;
     private final boolean everyStep;
+    private final LongSupplier clock;
     private final long intervalNanos;
     private boolean capped;
     private long nextAllowed;
@@ -44,7 +46,9 @@ public final class ViewerQueue {
     private SimulationEnd end;
     private RunState state;
 
-    public ViewerQueue(boolean everyStep, int maxUpdatesPerSecond) {
+    /** {@code clock}: what the rate cap reads the time from (ns). */
+    public ViewerQueue(boolean everyStep, int maxUpdatesPerSecond, LongSupplier clock) {
+        this.clock = clock;
         this.everyStep = everyStep;
         this.intervalNanos = everyStep || maxUpdatesPerSecond <= 0 ? 0 : 1_000_000_000L / maxUpdatesPerSecond;
     }
@@ -153,7 +157,7 @@ public final class ViewerQueue {
             if (pending.isEmpty() && end != null) {
                 return end;
             }
-            long early = capped ? nextAllowed - System.nanoTime() : 0;
+            long early = capped ? nextAllowed - clock.getAsLong() : 0;
             if ((pending.isEmpty() || early > 0) && state != null && end == null) {
                 RunState s = state;
                 state = null;
@@ -166,7 +170,7 @@ public final class ViewerQueue {
             if (!pending.isEmpty()) {
                 if (intervalNanos > 0) {
                     capped = true;
-                    nextAllowed = System.nanoTime() + intervalNanos;
+                    nextAllowed = clock.getAsLong() + intervalNanos;
                 }
                 Item next = pending.pollFirst();
                 viewNext = next.view();

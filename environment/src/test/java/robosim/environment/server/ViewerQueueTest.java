@@ -20,13 +20,15 @@ import robosim.protocol.WorldSnapshot;
 
 /** A viewer's queue: bounded, coalescing, and never a reason for the loop to wait. */
 class ViewerQueueTest {
+    private static final long SECOND = 1_000_000_000L;
+
     private static PoseUpdate update(long step) {
         return new PoseUpdate(step, new double[] {0}, new double[] {0}, new double[] {0});
     }
 
     @Test
     void aLiveViewerHoldsOnlyTheNewestUpdate() throws Exception {
-        ViewerQueue q = new ViewerQueue(false, 0);
+        ViewerQueue q = new ViewerQueue(false, 0, System::nanoTime);
         for (long k = 0; k < 5000; k++) {
             assertTrue(q.hasRoom(), "a live viewer always has room");
             q.offer(null, update(k), null);
@@ -43,7 +45,7 @@ class ViewerQueueTest {
         WorldSnapshot grown = new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), List.of("a", "b"),
                 List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
                 new PoseUpdate(1, new double[] {0, 1}, new double[] {0, 1}, new double[] {0, 0}));
-        ViewerQueue recording = new ViewerQueue(true, 0);
+        ViewerQueue recording = new ViewerQueue(true, 0, System::nanoTime);
         recording.offer(null, update(0), null);
         recording.offer(grown, update(1), null);
         recording.offer(null, update(2), null);
@@ -51,7 +53,7 @@ class ViewerQueueTest {
         assertSame(grown, recording.take(), "the world, then the first update of it");
         assertEquals(1, ((PoseUpdate) recording.take()).step());
         assertEquals(2, ((PoseUpdate) recording.take()).step());
-        ViewerQueue live = new ViewerQueue(false, 0);
+        ViewerQueue live = new ViewerQueue(false, 0, System::nanoTime);
         live.offer(grown, update(1), null);
         live.offer(null, update(2), null);
         live.offer(null, update(3), null);
@@ -63,7 +65,7 @@ class ViewerQueueTest {
 
     @Test
     void aRecordingViewerKeepsEveryStepUpToItsBacklogThenSaysWhenItHasRoomAgain() throws Exception {
-        ViewerQueue q = new ViewerQueue(true, 0);
+        ViewerQueue q = new ViewerQueue(true, 0, System::nanoTime);
         for (long k = 0; k < ViewerQueue.RECORDING_BACKLOG; k++) {
             assertTrue(q.hasRoom());
             q.offer(null, update(k), null);
@@ -78,7 +80,7 @@ class ViewerQueueTest {
 
     @Test
     void theEndComesAfterEveryHeldUpdateAndARunStateAfterTheUpdatesBeforeIt() throws Exception {
-        ViewerQueue q = new ViewerQueue(true, 0);
+        ViewerQueue q = new ViewerQueue(true, 0, System::nanoTime);
         q.offer(null, update(0), null);
         RunState paused = new RunState(1, RunState.Phase.PAUSED);
         q.state(paused);
@@ -96,7 +98,10 @@ class ViewerQueueTest {
 
     @Test
     void aWatchedRobotsViewGoesRightAfterItsUpdateAndALiveViewerMissesNoMessage() throws Exception {
-        ViewerQueue q = new ViewerQueue(false, 1); // (one update a second: the view must not wait for the cap)
+        long[] now = {1};
+        // (one update a second, on a clock of the test's: the view must not wait for the cap; an update waits for it
+        // until the test moves the clock on, so no take here waits)
+        ViewerQueue q = new ViewerQueue(false, 1, () -> now[0]);
         q.watch(0);
         assertEquals(0, q.watching());
         q.offer(null, update(0), view(0, "m0"));
@@ -105,6 +110,7 @@ class ViewerQueueTest {
         for (long k = 1; k <= 3; k++) {
             q.offer(null, update(k), view(k, "m" + k));
         }
+        now[0] += SECOND;
         assertEquals(3, ((PoseUpdate) q.take()).step(), "the newest update");
         RunState running = new RunState(4, RunState.Phase.RUNNING);
         q.state(running); // (a state goes ahead of an update that waits for the cap; not ahead of its view)
@@ -115,15 +121,19 @@ class ViewerQueueTest {
         assertSame(running, q.take());
         q.offer(null, update(4), view(4, "m4"));
         q.offer(null, update(5), null); // (the robot has left: its last view is not dropped for the newest update)
+        now[0] += SECOND;
         assertEquals(4, ((PoseUpdate) q.take()).step());
         assertEquals(List.of("m4"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
+        now[0] += SECOND;
         assertEquals(5, ((PoseUpdate) q.take()).step());
         for (long k = 6; k < 12; k += 2) { // (a replay sought back and forth across the robot's departure)
             q.offer(null, update(k), view(k, "m" + k));
             q.offer(null, update(k + 1), null);
         }
+        now[0] += SECOND;
         assertEquals(10, ((PoseUpdate) q.take()).step(), "at most two held: the last view kept, with its update");
         assertEquals(List.of("m6", "m8", "m10"), ((RobotView) q.take()).sent().stream().map(CommEvent::payload).toList());
+        now[0] += SECOND;
         assertEquals(11, ((PoseUpdate) q.take()).step(), "and the newest update");
         SimulationEnd end = new SimulationEnd(5, "done");
         q.end(end);
