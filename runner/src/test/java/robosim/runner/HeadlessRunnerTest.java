@@ -113,7 +113,7 @@ class HeadlessRunnerTest {
                 "--timeout-s", "120");
         assertEquals(HeadlessRunner.EXIT_ROBOTS_REMOVED, r.code(), r.all());
         String summary = r.summary();
-        assertTrue(summary.startsWith("steps=100 robots=3 "), r.all());
+        assertTrue(summary.startsWith("steps=100 robots=2 "), r.all());
         assertTrue(summary.contains(" robots_left=1 "), r.all());
         String removed = r.out().get(r.out().size() - 2);
         java.util.regex.Matcher m = Pattern.compile("removed robot=r2 step=(\\d+) reason=.+").matcher(removed);

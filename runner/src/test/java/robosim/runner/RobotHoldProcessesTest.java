@@ -22,19 +22,19 @@ import robosim.protocol.RobotView;
 import robosim.protocol.StepRequest;
 
 /**
- * {@code --on-robot-loss HOLD} over real processes: robot ring2's process is killed (SIGKILL) in step 200 of
- * a 600-step run, the world runs 200 steps without it, and a new process takes it over. It goes on from where
+ * {@code --on-robot-loss HOLD} over real processes: robot ring2's process is killed (SIGKILL) in step 100 of
+ * a 300-step run, the world runs 100 steps without it, and a new process takes it over. It goes on from where
  * it stood; every message sent to it meanwhile reaches it once, in order; and every robot's pose at every step
  * equals a run in which ring2 sent what it sent and merely stood still for those 200 steps.
  */
 class RobotHoldProcessesTest {
     private static final long LONG_S = 50;
     /** The step in which ring2's process is killed. */
-    private static final int LOSS = 200;
+    private static final int LOSS = 100;
     /** The steps the world runs without it (LOSS + 1 to LOSS + AWAY); it is back in step BACK. */
-    private static final int AWAY = 200;
+    private static final int AWAY = 100;
     private static final int BACK = LOSS + AWAY + 1;
-    private static final int STEPS = 600;
+    private static final int STEPS = 300;
     private static final int RING2 = 1;
     private static final Path WORLD = Path.of("src/test/resources/ring-hold.xml");
 
