@@ -36,7 +36,8 @@ import robosim.web.WebViewerServer;
  * {@code scripts/environment.sh FILE.xml}: the Environment server. Prints one line
  * {@code listening robots=P viewers=P geometry=P control=P tls=on|off} when its ports are bound and, when the run ends,
  * {@code summary steps=... robots=... wall_s=... steps_per_s=... robot_steps_per_s=...} (with --one-jvm
- * followed by a {@code control-failed NAME: ...} line for each robot whose control code threw). Exit codes: 0 done, 1 the run failed, 2 bad input (file, option, port), 3 it lost a robot, 4 (--one-jvm) a robot's control code threw out of run.
+ * followed by a {@code control-failed NAME: ...} line for each robot whose control code threw, and a
+ * {@code control-running NAME} line for each whose control code was still running 2 s after the end). Exit codes: 0 done, 1 the run failed, 2 bad input (file, option, port), 3 it lost a robot, 4 (--one-jvm) a robot's control code threw out of run.
  */
 @Command(name = "environment.sh", mixinStandardHelpOptions = true,
         description = "Loads an environment file, waits for every robot it names (and a Geometry process), "
@@ -275,9 +276,13 @@ public final class EnvironmentMain implements Callable<Integer> {
                 lines.accept(s.line());
             });
             if (inMemory != null) { // (their finally blocks, as a robot process's; then what failed)
-                List<String> failed = inMemory.awaitControlCode(CONTROL_GRACE_MS);
+                InMemoryLink.ControlEnd end = inMemory.awaitControlCode(CONTROL_GRACE_MS);
+                List<String> failed = end.failed();
                 for (String f : failed) {
                     lines.accept("control-failed " + f);
+                }
+                for (String r : end.running()) {
+                    lines.accept("control-running " + r);
                 }
                 if (!failed.isEmpty() && (code == 0 || code == EnvironmentHost.EXIT_ROBOTS_REMOVED)) {
                     code = EnvironmentHost.EXIT_CONTROL_FAILED; // (as headless.sh: a failed control code says more)

@@ -81,11 +81,19 @@ final class InMemoryRobot implements InMemoryLink.Robot {
         sim.endedHere(end.reason());
     }
 
-    /** After its end: waits up to {@code ms} for its control code to end; {@code NAME: what it threw}, or null. */
-    String awaitControlCode(long ms) throws InterruptedException {
-        sim.awaitControlCode(ms);
+    /** After its end: waits up to {@code ms} for its control code to end; true if it has. */
+    boolean awaitControlCode(long ms) throws InterruptedException {
+        return sim.awaitControlCode(ms);
+    }
+
+    /** {@code NAME: what its control code threw out of run}, or null if it did not (yet). */
+    String controlFailure() {
         String failure = sim.controlFailure();
         return failure == null ? null : sim.name() + ": " + failure;
+    }
+
+    String name() {
+        return sim.name();
     }
 
     private void owe(long k) {

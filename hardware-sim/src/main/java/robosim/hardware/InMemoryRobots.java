@@ -24,20 +24,24 @@ public final class InMemoryRobots implements InMemoryLink.Starter {
     }
 
     @Override
-    public List<String> awaitControlCode(long ms) throws InterruptedException {
+    public InMemoryLink.ControlEnd awaitControlCode(long ms) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ms);
         List<InMemoryRobot> all;
         synchronized (started) {
             all = new ArrayList<>(started);
         }
         List<String> failed = new ArrayList<>();
+        List<String> running = new ArrayList<>();
         for (InMemoryRobot r : all) {
-            String why = r.awaitControlCode(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
+            if (!r.awaitControlCode(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())))) {
+                running.add(r.name());
+            }
+            String why = r.controlFailure();
             if (why != null) {
                 failed.add(why);
             }
         }
-        return failed;
+        return new InMemoryLink.ControlEnd(failed, running);
     }
 
     /**

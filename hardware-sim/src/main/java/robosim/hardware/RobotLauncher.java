@@ -12,10 +12,15 @@ final class RobotLauncher {
     private RobotLauncher() {
     }
 
-    /** Instantiates a control class by name; a bad name is an IllegalArgumentException saying why. */
+    /**
+     * Instantiates a control class by name, found by this thread's context class loader (a warm JVM gives each run
+     * a loader of its own, {@code robosim.runner.ControlClassLoader}; otherwise it is the class path's); a bad
+     * name is an IllegalArgumentException saying why.
+     */
     static RobotControl control(String className) {
         try {
-            return Class.forName(className).asSubclass(RobotControl.class).getDeclaredConstructor().newInstance();
+            return Class.forName(className, true, controlClasses()).asSubclass(RobotControl.class)
+                    .getDeclaredConstructor().newInstance();
         } catch (ClassNotFoundException e) {
             throw new IllegalArgumentException("control class " + className + " is not on the class path");
         } catch (ClassCastException e) {
@@ -29,6 +34,12 @@ final class RobotLauncher {
             throw new IllegalArgumentException("control class " + className
                     + " needs a public no-argument constructor");
         }
+    }
+
+    /** Where control classes are found: this thread's context class loader, else the class path's. */
+    static ClassLoader controlClasses() {
+        ClassLoader context = Thread.currentThread().getContextClassLoader();
+        return context != null ? context : RobotLauncher.class.getClassLoader();
     }
 
     /**

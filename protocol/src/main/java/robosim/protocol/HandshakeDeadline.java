@@ -71,6 +71,8 @@ final class HandshakeDeadline {
         ScheduledThreadPoolExecutor t = new ScheduledThreadPoolExecutor(1, r -> {
             Thread th = new Thread(r, "handshake-deadline");
             th.setDaemon(true);
+            // (this JVM's one, whatever run first needed it: never holding a warm JVM's run's class loader)
+            th.setContextClassLoader(HandshakeDeadline.class.getClassLoader());
             return th;
         });
         t.setRemoveOnCancelPolicy(true);

@@ -57,9 +57,26 @@ public final class InMemoryLink {
 
         /**
          * After the simulation is over: waits up to {@code ms} for the control code of every robot it started
-         * to end (its {@code finally} blocks, a last report), as a robot process does before it exits; returns,
-         * for each robot whose control code threw out of {@code run}, {@code NAME: what it threw}.
+         * to end (its {@code finally} blocks, a last report), as a robot process does before it exits; says whose
+         * threw and whose is still running.
          */
-        java.util.List<String> awaitControlCode(long ms) throws InterruptedException;
+        ControlEnd awaitControlCode(long ms) throws InterruptedException;
+    }
+
+    /**
+     * How the control code of the robots in this JVM ended.
+     *
+     * @param failed for each robot whose control code threw out of {@code run}, {@code NAME: what it threw}
+     * @param running the names of the robots whose control code had not ended when the wait was over (a robot
+     *        process would have exited under it; a JVM that runs more runs must not go on with it)
+     */
+    public record ControlEnd(java.util.List<String> failed, java.util.List<String> running) {
+        /** Nobody's control code failed or is still running. */
+        public static final ControlEnd CLEAN = new ControlEnd(java.util.List.of(), java.util.List.of());
+
+        public ControlEnd {
+            failed = java.util.List.copyOf(failed);
+            running = java.util.List.copyOf(running);
+        }
     }
 }

@@ -99,6 +99,9 @@ public final class HeadlessRunner implements Callable<Integer> {
             description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
     long timeoutS;
 
+    /** One JVM: the robots whose control code was still running after the end (a warm JVM must not go on). */
+    private final List<String> controlStillRunning = new CopyOnWriteArrayList<>();
+
     @Override
     public Integer call() throws Exception {
         WorldSpec spec;
@@ -147,7 +150,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 return where + " needs a control class (control=\"...\") for the headless runner";
             }
             try {
-                Class<?> c = Class.forName(r.control(), false, HeadlessRunner.class.getClassLoader());
+                Class<?> c = Class.forName(r.control(), false, controlClasses());
                 if (!RobotControl.class.isAssignableFrom(c)) {
                     return where + ": " + r.control() + " does not implement " + RobotControl.class.getName();
                 }
@@ -157,6 +160,12 @@ public final class HeadlessRunner implements Callable<Integer> {
             }
         }
         return null;
+    }
+
+    /** Where the control classes are: this thread's context class loader (a warm run's own), else the class path's. */
+    private static ClassLoader controlClasses() {
+        ClassLoader context = Thread.currentThread().getContextClassLoader();
+        return context != null ? context : HeadlessRunner.class.getClassLoader();
     }
 
     private int run(WorldSpec spec, ChildProcesses children) throws Exception {
@@ -187,6 +196,10 @@ public final class HeadlessRunner implements Callable<Integer> {
                 int colon = Math.max(0, f.indexOf(": "));
                 controlFailed.add("robot " + f.substring(0, colon) + ": its control code failed"
                         + f.substring(colon));
+            } else if (line.startsWith("control-running ")) {
+                String name = line.substring("control-running ".length());
+                controlStillRunning.add(name);
+                System.out.println("robot " + name + ": its control code was still running after the run's end");
             } else if (line.startsWith("summary ")) {
                 summary.complete(fields(line));
             } else {
@@ -349,13 +362,23 @@ public final class HeadlessRunner implements Callable<Integer> {
         return m;
     }
 
+    /** After a one-JVM run: the robots whose control code was still running after its end (none: it ended). */
+    List<String> controlStillRunning() {
+        return List.copyOf(controlStillRunning);
+    }
+
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new HeadlessRunner());
+        System.exit(commandLine(new HeadlessRunner()).execute(args));
+    }
+
+    /** headless.sh's command line for {@code runner}: a bad option is one line. */
+    static CommandLine commandLine(HeadlessRunner runner) {
+        CommandLine cl = new CommandLine(runner);
         cl.setOverwrittenOptionsAllowed(true); // demo.sh's defaults, then the user's: the last one wins
         cl.setParameterExceptionHandler((ex, a) -> {
             System.err.println("headless: " + ex.getMessage() + " (see --help)");
             return 2;
         });
-        System.exit(cl.execute(args));
+        return cl;
     }
 }

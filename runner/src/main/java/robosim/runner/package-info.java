@@ -9,6 +9,11 @@
  * With {@code --one-jvm} there is no child: {@code environment} ({@link robosim.runner.InJvmEnvironment}) runs
  * the Environment in the runner's JVM, with its robots and all the Environment's own threads, and hands its
  * lines to the runner as a child's pipe would.
+ * A warm JVM ({@link robosim.runner.RunHost}, a sweep's worker) runs run after run: its {@code main} reads the
+ * requests and answers, {@code run} is one run's runner {@code main} (its threads, and the Environment's, have the
+ * run's {@link robosim.runner.ControlClassLoader} as context class loader); its owner
+ * ({@link robosim.runner.WarmWorker}) reads its answers on {@code pipe[worker k.out]} and keeps its last words from
+ * {@code pipe[worker k.err]}.
  * The soak ({@code scripts/soak.sh}, {@link robosim.runner.Soak}) adds {@code soak-client-n}: its silent
  * robots, frozen and visiting viewers and fault injectors, each on a thread of its own (never the common
  * pool: they block).

@@ -6,10 +6,13 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.atomic.AtomicInteger;
 import robosim.runner.ChildProcesses;
+import robosim.runner.HeadlessRuns;
+import robosim.runner.WarmWorker;
 
 /**
- * A sweep's runs on this machine: a bounded pool of {@code jobs} threads ({@code sweep-run[k]}), each starting
- * one run at a time as its own process (a one-JVM run keeps about one core busy). Ctrl-C (any signal that stops
+ * A sweep's runs on this machine: a bounded pool of {@code jobs} threads ({@code sweep-run[k]}), each running one
+ * run at a time in a warm JVM of its own ({@link WarmWorker}; with {@code --fresh-jvm-per-run}, each run in a new
+ * process). A one-JVM run keeps about one core busy. Ctrl-C (any signal that stops
  * this JVM) stops every run at once (thread {@code sweep-stop}); the rows written stay, and the tables are made
  * from them.
  */
@@ -20,49 +23,33 @@ final class LocalPool {
     private final OutputDirectory out;
     private final int jobs;
     private final boolean keepRecordings;
+    private final boolean freshJvmPerRun;
     private final PrintStream err;
     private volatile boolean stopping;
     private final AtomicInteger unfinished = new AtomicInteger();
 
-    LocalPool(Sweep sweep, OutputDirectory out, int jobs, boolean keepRecordings, PrintStream err) {
+    LocalPool(Sweep sweep, OutputDirectory out, int jobs, boolean keepRecordings, boolean freshJvmPerRun,
+            PrintStream err) {
         this.sweep = sweep;
         this.out = out;
         this.jobs = jobs;
         this.keepRecordings = keepRecordings;
+        this.freshJvmPerRun = freshJvmPerRun;
         this.err = err;
     }
 
     /** Runs {@code todo}; returns the runs that were stopped by a signal from outside (they have no row). */
     int run(List<Integer> todo, Progress progress) throws InterruptedException {
         ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
-        SweepRun runner = new SweepRun(sweep, out, children, keepRecordings,
-                () -> stopping || children.closing());
+        SweepRun runner = new SweepRun(sweep, out, keepRecordings, () -> stopping || children.closing());
         AtomicInteger next = new AtomicInteger();
         List<Thread> threads = new ArrayList<>();
         for (int k = 0; k < Math.min(jobs, todo.size()); k++) {
+            String worker = "worker " + k;
             threads.add(new Thread(() -> {
-                int i;
-                while (!stopping && !children.closing() && (i = next.getAndIncrement()) < todo.size()) {
-                    int index = todo.get(i);
-                    try {
-                        Row row = runner.run(index);
-                        if (stopping || children.closing()) {
-                            return; // (this JVM is stopping: the run was stopped with it)
-                        }
-                        if (row == null) {
-                            unfinished.incrementAndGet();
-                        } else {
-                            progress.finished(row.ok());
-                        }
-                    } catch (IOException | RuntimeException e) {
-                        if (stopping || children.closing()) {
-                            return; // (started as the stop came: stopped at once, nothing to say)
-                        }
-                        err.println("sweep: run " + index + ": " + e.getMessage());
-                        unfinished.incrementAndGet();
-                    } catch (InterruptedException e) {
-                        return;
-                    }
+                try (HeadlessRuns runs = freshJvmPerRun ? HeadlessRuns.freshJvms(children)
+                        : new WarmWorker(children, worker)) {
+                    runAll(todo, next, runner, runs, children, progress);
                 }
             }, "sweep-run[" + k + "]"));
         }
@@ -91,6 +78,34 @@ final class LocalPool {
         }
         children.close();
         return unfinished.get();
+    }
+
+    /** A pool thread's work: the runs of {@code todo} it takes, one after another, until none is left or the stop. */
+    private void runAll(List<Integer> todo, AtomicInteger next, SweepRun runner, HeadlessRuns runs,
+            ChildProcesses children, Progress progress) {
+        int i;
+        while (!stopping && !children.closing() && (i = next.getAndIncrement()) < todo.size()) {
+            int index = todo.get(i);
+            try {
+                Row row = runner.run(index, runs);
+                if (stopping || children.closing()) {
+                    return; // (this JVM is stopping: the run was stopped with it)
+                }
+                if (row == null) {
+                    unfinished.incrementAndGet();
+                } else {
+                    progress.finished(row.ok());
+                }
+            } catch (IOException | RuntimeException e) {
+                if (stopping || children.closing()) {
+                    return; // (started as the stop came: stopped at once, nothing to say)
+                }
+                err.println("sweep: run " + index + ": " + e.getMessage());
+                unfinished.incrementAndGet();
+            } catch (InterruptedException e) {
+                return;
+            }
+        }
     }
 
     private static void joinAll(List<Thread> threads, long ms) {

@@ -49,6 +49,12 @@ public final class SweepMain implements Callable<Integer> {
             + "(scripts/replay.sh plays it; scripts/record-tool.sh metrics gives its row again).")
     boolean keepRecordings;
 
+    @Option(names = "--fresh-jvm-per-run", description = "Run each run in a JVM of its own, started for it (the isolation "
+            + "of control code that needs it: static state a class loader of its own does not reset, threads it leaves "
+            + "running, System.exit). By default each of the pool's workers is a warm JVM that runs run after run, "
+            + "each run's control classes loaded afresh.")
+    boolean freshJvmPerRun;
+
     @Option(names = "--jobs", paramLabel = "N", description = "Runs at once on this machine (default: its cores, "
             + "${sys:robosim.cores}).")
     Integer jobs;
@@ -119,7 +125,8 @@ public final class SweepMain implements Callable<Integer> {
         say(sweep, dir, todo, err);
         int cores = Runtime.getRuntime().availableProcessors();
         Progress progress = new Progress(todo.size(), err, System.console() != null);
-        int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, err).run(todo, progress);
+        int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, freshJvmPerRun,
+                err).run(todo, progress);
         return finish(sweep, dir, unfinished, err);
     }
 
@@ -278,8 +285,9 @@ public final class SweepMain implements Callable<Integer> {
             java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
             // (Slurm ends a task past its time with SIGTERM: the run then writes no row)
             Runtime.getRuntime().addShutdownHook(new Thread(() -> stopping.set(true), "sweep-stop"));
-            try (ChildProcesses children = new ChildProcesses(sweep.jvmOptions())) {
-                Row row = new SweepRun(sweep, out, children, keepRecordings, stopping::get).run(index);
+            try (ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
+                 robosim.runner.HeadlessRuns runs = robosim.runner.HeadlessRuns.freshJvms(children)) {
+                Row row = new SweepRun(sweep, out, keepRecordings, stopping::get).run(index, runs);
                 System.err.println("sweep: run " + index + ": " + (row == null ? "stopped, no row" : row.values().get("status")));
                 return row == null ? EXIT_RUNS_FAILED : 0;
             }

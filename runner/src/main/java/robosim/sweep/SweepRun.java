@@ -9,14 +9,15 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.protocol.Printable;
-import robosim.runner.ChildProcesses;
+import robosim.runner.HeadlessRuns;
 
 /**
- * Runs one run of a sweep as its own process (the headless runner, in the sweep's layout, recording) and writes
- * its row from the run's summary line and its recording. The same on this machine's pool and in a Slurm task, so
- * both give the same rows but for the wall time. A run stopped (the sweep's Ctrl-C; SIGINT or SIGTERM from anyone,
+ * Runs one run of a sweep (the headless runner, in the sweep's layout, recording), in a warm JVM or a fresh one
+ * ({@link HeadlessRuns}), and writes its row from the run's summary line and its recording. The same on this
+ * machine's pool and in a Slurm task, so both give the same rows but for the wall time. A run stopped (the sweep's Ctrl-C; SIGINT or SIGTERM from anyone,
  * Slurm ending its task) writes no row: {@code --resume} runs it again. One killed by another signal (SIGKILL from
- * the kernel's out-of-memory killer, a crash) is a failed row that says which.
+ * the kernel's out-of-memory killer, a crash) is a failed row that says which; so is one that broke its warm JVM
+ * ({@link HeadlessRuns.Ended#broke()}).
  */
 final class SweepRun {
     /** Exit codes from 128 up are a signal's (128 + its number): the run was stopped, not finished. */
@@ -25,24 +26,26 @@ final class SweepRun {
     private static final int SIGTERM = 15;
     /** How much of the end of a run's log is read for its summary line and its last error, bytes. */
     static final int LOG_TAIL_BYTES = 64 * 1024;
+    /** How long past its {@code runTimeoutS} a run's JVM is waited for before it is stopped, s. */
+    private static final long PATIENCE_S = 30;
     private final Sweep sweep;
     private final OutputDirectory out;
-    private final ChildProcesses children;
     private final boolean keepRecordings;
     private final java.util.function.BooleanSupplier stopped;
 
     /** Runs of {@code sweep} into {@code out}; {@code stopped}: the sweep is being stopped (a run ending then writes no row). */
-    SweepRun(Sweep sweep, OutputDirectory out, ChildProcesses children, boolean keepRecordings,
-            java.util.function.BooleanSupplier stopped) {
+    SweepRun(Sweep sweep, OutputDirectory out, boolean keepRecordings, java.util.function.BooleanSupplier stopped) {
         this.sweep = sweep;
         this.out = out;
-        this.children = children;
         this.keepRecordings = keepRecordings;
         this.stopped = stopped;
     }
 
-    /** Runs run {@code index} and writes its row; null when it was stopped by a signal or the sweep's stop (no row). */
-    Row run(int index) throws IOException, InterruptedException {
+    /**
+     * Runs run {@code index} where {@code runs} says and writes its row; null when it was stopped by a signal or the
+     * sweep's stop (no row).
+     */
+    Row run(int index, HeadlessRuns runs) throws IOException, InterruptedException {
         Sweep.Run run = sweep.run(index);
         Path recording = out.recording(index);
         Path log = out.log(index);
@@ -55,14 +58,9 @@ final class SweepRun {
             args.addAll(List.of("--timeout-s", Long.toString(sweep.runTimeoutS())));
         }
         long start = System.nanoTime();
-        Process process = children.startLogged("run " + index, "robosim.runner.HeadlessRunner", args, log);
-        int code;
-        try {
-            code = process.waitFor();
-        } catch (InterruptedException e) {
-            process.destroy();
-            throw e;
-        }
+        HeadlessRuns.Ended ended = runs.run("run " + index, args, log,
+                sweep.runTimeoutS() > 0 ? sweep.runTimeoutS() + PATIENCE_S : 0);
+        int code = ended.code();
         double wallS = (System.nanoTime() - start) / 1e9;
         if (stopped.getAsBoolean() || code == SIGNALLED + SIGINT || code == SIGNALLED + SIGTERM) {
             return null;
@@ -74,8 +72,8 @@ final class SweepRun {
         values.putAll(run.parameters());
         List<String> lines = tail(log);
         Map<String, String> summary = summary(lines);
-        String error = code == 0 ? "" : code > SIGNALLED && code < SIGNALLED + 65
-                ? "killed by signal " + (code - SIGNALLED) : lastError(lines);
+        String error = ended.broke() != null ? ended.broke() : code == 0 ? ""
+                : code > SIGNALLED && code < SIGNALLED + 65 ? "killed by signal " + (code - SIGNALLED) : lastError(lines);
         Map<String, Double> metrics = Map.of();
         if (Files.exists(recording)) {
             try {

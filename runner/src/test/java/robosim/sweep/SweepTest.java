@@ -133,4 +133,52 @@ class SweepTest {
         assertTrue(r.err().contains("2 of 2 runs have rows, 2 failed"), r.err());
         assertEquals("runs,failed", String.join(",", Csv.fields(Files.readAllLines(out.resolve("summary.csv")).get(0))));
     }
+
+    @Test
+    void warmWorkersGiveTheRowsFreshJvmsGiveButTheWallTime() throws Exception {
+        Path spec = spec(SweepFileTest.WANDER.toString(), "");
+        Path warm = dir.resolve("warm");
+        Path fresh = dir.resolve("fresh");
+        Result w = sweep(spec.toString(), "--out", warm.toString(), "--jobs", "1");
+        assertEquals(0, w.code(), w.err());
+        Result f = sweep(spec.toString(), "--out", fresh.toString(), "--jobs", "1", "--fresh-jvm-per-run");
+        assertEquals(0, f.code(), f.err());
+        List<String> warmRows = Files.readAllLines(warm.resolve("runs.csv"));
+        assertEquals(3, warmRows.size(), String.join("\n", warmRows));
+        assertEquals(withoutWallTime(Files.readAllLines(fresh.resolve("runs.csv"))), withoutWallTime(warmRows));
+    }
+
+    @Test
+    void aRunThatBreaksItsWarmWorkerIsOneFailedRowAndTheNextRunGetsAFreshWorker() throws Exception {
+        Path world = dir.resolve("breaks.xml");
+        Files.writeString(world, """
+                <environment name="breaks" timeStepMs="100">
+                  <arena width="4" height="2"/>
+                  <param name="mode" value="stand"/>
+                  <robots>
+                    <robot name="b1" type="ArRobot" control="robosim.runner.BreaksItsJvm" x="1" y="1"/>
+                  </robots>
+                </environment>
+                """);
+        Path spec = dir.resolve("breaks-sweep.xml");
+        Files.writeString(spec, "<sweep world=\"" + world + "\" steps=\"20\"><param name=\"mode\" "
+                + "values=\"stand exit leave still\"/><seeds from=\"1\" to=\"1\"/></sweep>");
+        Path out = dir.resolve("breaks");
+        Result r = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1");
+        assertEquals(1, r.code(), r.err());
+        List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
+        assertEquals(5, runs.size(), String.join("\n", runs));
+        List<String> stand = Csv.fields(runs.get(1));
+        assertEquals(List.of("stand", "ok", "0"), stand.subList(3, 6), runs.get(1));
+        List<String> exit = Csv.fields(runs.get(2));
+        assertEquals(List.of("exit", "failed", "7"), exit.subList(3, 6), runs.get(2));
+        assertTrue(exit.get(exit.size() - 2).contains("its warm JVM exited with code 7 during the run"), runs.get(2));
+        List<String> leave = Csv.fields(runs.get(3));
+        assertEquals(List.of("leave", "failed"), leave.subList(3, 5), runs.get(3));
+        assertTrue(leave.get(leave.size() - 2).contains("the run left threads running 5 s after its end: never-ends"),
+                runs.get(3));
+        assertEquals(Csv.fields(runs.get(1)).subList(4, 10), Csv.fields(runs.get(4)).subList(4, 10),
+                "the run after them, in a fresh worker, is the first's again (its mode stands still too)");
+        assertTrue(r.err().contains("4 of 4 runs have rows, 2 failed"), r.err());
+    }
 }

@@ -131,7 +131,7 @@ public final class Simulation implements AutoCloseable {
                 }
 
                 @Override
-                public List<String> awaitControlCode(long ms) throws InterruptedException {
+                public InMemoryLink.ControlEnd awaitControlCode(long ms) throws InterruptedException {
                     return robots.awaitControlCode(ms);
                 }
             };

@@ -146,11 +146,11 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     /**
-     * After the end: waits up to {@code ms} for the control code of the robots it ran in this JVM to end; returns
-     * {@code NAME: what it threw} for each whose control code threw out of {@code run}.
+     * After the end: waits up to {@code ms} for the control code of the robots it ran in this JVM to end; says whose
+     * threw out of {@code run} and whose is still running.
      */
-    public List<String> awaitControlCode(long ms) throws InterruptedException {
-        return inMemory == null ? List.of() : inMemory.awaitControlCode(ms);
+    public robosim.protocol.InMemoryLink.ControlEnd awaitControlCode(long ms) throws InterruptedException {
+        return inMemory == null ? robosim.protocol.InMemoryLink.ControlEnd.CLEAN : inMemory.awaitControlCode(ms);
     }
 
     /** The bound ports: robot, viewer, geometry (-1 when geometry is in-process). */

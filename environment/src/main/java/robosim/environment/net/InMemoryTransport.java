@@ -60,10 +60,9 @@ final class InMemoryTransport implements LoopHook {
     }
 
     /**
-     * After the end: waits up to {@code ms} for the robots' control code to end; {@code NAME: what it threw} for
-     * each whose control code threw out of {@code run}.
+     * After the end: waits up to {@code ms} for the robots' control code to end; whose threw, whose still runs.
      */
-    List<String> awaitControlCode(long ms) throws InterruptedException {
+    InMemoryLink.ControlEnd awaitControlCode(long ms) throws InterruptedException {
         return starter.awaitControlCode(ms);
     }
 

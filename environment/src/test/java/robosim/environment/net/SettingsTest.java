@@ -21,8 +21,8 @@ class SettingsTest {
         }
 
         @Override
-        public List<String> awaitControlCode(long ms) {
-            return List.of();
+        public InMemoryLink.ControlEnd awaitControlCode(long ms) {
+            return InMemoryLink.ControlEnd.CLEAN;
         }
     };
 
