@@ -152,14 +152,17 @@ public final class ControlServer implements Closeable {
         worker.shutdownNow(); // (a step or pause under way answers "interrupted")
         quick.shutdown(); // the quick requests in hand (a stop, say) answer first, briefly, and their replies leave
         try {
-            quick.awaitTermination(10, TimeUnit.SECONDS); // (returns as soon as they have: 10 s for a loaded machine)
+            // (each returns as soon as its requests have answered: 10 s for a loaded machine)
+            quick.awaitTermination(10, TimeUnit.SECONDS);
+            worker.awaitTermination(10, TimeUnit.SECONDS);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }
         quick.shutdownNow();
         // the replies those requests handed to the I/O thread leave before this returns (and the process may end):
-        // a graceful shutdown runs what is queued; waited for, at most a few seconds
-        group.shutdownGracefully(100, 1000, TimeUnit.MILLISECONDS).awaitUninterruptibly(5_000);
+        // a graceful shutdown runs what is queued, with no quiet period (nobody hands it more: a warm JVM's next run
+        // does not wait for one); waited for, at most a few seconds
+        group.shutdownGracefully(0, 1000, TimeUnit.MILLISECONDS).awaitUninterruptibly(5_000);
     }
 
     /** One per connection; its fields are touched on the I/O thread only. */
