@@ -30,6 +30,7 @@ import robosim.protocol.InMemoryLink;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.SimulationKeys;
+import robosim.protocol.VirtualThreads;
 import robosim.web.WebViewerServer;
 
 /**
@@ -182,6 +183,12 @@ public final class EnvironmentMain implements Callable<Integer> {
             return 2;
         }
         InMemoryLink.Starter inMemory = null;
+        if (oneJvm && System.getProperty(VirtualThreads.PARALLELISM) == null) {
+            // every robot's control code and the loop on one carrier: a step passes between them without a wake of
+            // the operating system's (the loop's thread: net.LoopThread); read once, as the first virtual thread
+            // starts, so a JVM that has run virtual threads already keeps what it has
+            System.setProperty(VirtualThreads.PARALLELISM, "1");
+        }
         if (oneJvm) {
             inMemory = ServiceLoader.load(InMemoryLink.Starter.class).findFirst().orElse(null);
             String problem = inMemory == null

@@ -29,6 +29,9 @@ final class SimulationLoop implements Runnable {
     private Run run;
     private List<LoopHook> hooks;
     private long nextTick;
+    /** When the loop last came round (System.nanoTime): what {@code loop-watch} watches. */
+    private volatile long round = System.nanoTime();
+    private final boolean robotsHere;
 
     /**
      * {@code capacity}: events its inbox holds; {@code onEnd}: runs last, on the loop thread, once the run is
@@ -38,6 +41,7 @@ final class SimulationLoop implements Runnable {
         this.inbox = new Inbox<>(capacity, POST_LIMIT_MS);
         this.tickNanos = tick(settings);
         this.onEnd = onEnd;
+        this.robotsHere = settings.robotsInThisJvm() != null;
     }
 
     /** How often the loop's own deadlines are checked: a quarter of the shortest one, between 5 and 100 ms. */
@@ -52,15 +56,16 @@ final class SimulationLoop implements Runnable {
     }
 
     /**
-     * Starts the {@code simulation-loop} thread, driving {@code driven}, with the transports' {@code loopHooks}
-     * (in-memory robots, shared connections).
+     * Starts the {@code simulation-loop} thread ({@link LoopThread}: a platform one, or a virtual one beside the
+     * robots' control code), driving {@code driven}, with the transports' {@code loopHooks} (in-memory robots,
+     * shared connections).
      */
     void start(Run driven, List<LoopHook> loopHooks) {
         this.run = driven;
         this.hooks = List.copyOf(loopHooks);
-        Thread t = new Thread(this, "simulation-loop");
-        t.setDaemon(true);
-        t.start();
+        if (LoopThread.start(this, robotsHere, () -> round, ended)) {
+            LOG.info("the simulation loop runs on a virtual thread beside the control code");
+        }
     }
 
     /**
@@ -101,6 +106,7 @@ final class SimulationLoop implements Runnable {
             run.publish();
             while (!run.ended()) {
                 long now = System.nanoTime();
+                round = now;
                 Inbox.Event<Run> e = inbox.poll(pending() ? 0 : Math.max(0, Math.min(nextTick, run.paceDue()) - now));
                 // everything queued by now is taken before any deadline is judged (a request or an answer
                 // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
@@ -143,6 +149,7 @@ final class SimulationLoop implements Runnable {
      * then the hooks write what the run gave them.
      */
     private void settle(long now) {
+        round = now;
         run.advance(now);
         boolean handed = false;
         for (int i = 0; i < hooks.size(); i++) {
