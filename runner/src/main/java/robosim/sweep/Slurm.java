@@ -13,8 +13,10 @@ import java.util.TreeMap;
 import java.util.concurrent.TimeUnit;
 
 /**
- * A sweep on a Slurm cluster: one {@code sbatch} job array, a task per run still missing ({@code %K} at once), each
- * task running {@code sweep.sh task DIR INDEX}; and a gather job that waits for the whole array
+ * A sweep on a Slurm cluster: one {@code sbatch} job array whose tasks run the runs still missing in chunks
+ * ({@code %K} tasks at once), each task running its chunk one run after another in one warm JVM
+ * ({@code sweep.sh task DIR --runs LIST}), so that a task's start (its JVMs, Slurm's own cost) is paid once a chunk;
+ * and a gather job that waits for the whole array
  * ({@code --dependency=afterany}: a failed task is a row, and {@code afterok} would wait for ever) and makes the
  * tables and plots. The jobs' ids go into {@code DIR/slurm/jobs}; {@code sweep.sh status DIR} reads them. Every
  * Slurm command has a deadline and its output is bounded.
@@ -33,8 +35,14 @@ final class Slurm {
      * Where and how long: {@code --partition}, {@code --time} (null: the cluster's defaults), {@code --max-parallel};
      * and whether the tasks keep their recordings.
      */
-    record Options(String partition, String time, int maxParallel, boolean keepRecordings) {
+    record Options(String partition, String time, int maxParallel, boolean keepRecordings, int runsPerTask,
+            boolean freshJvmPerRun) {
     }
+
+    /** How long a task is meant to last, by default (a chunk of runs of about this much), s. */
+    static final double TASK_S = 30;
+    /** What a run is taken to cost before it is measured: a warm one-JVM run's robot-steps a second, on one core. */
+    private static final double ROBOT_STEPS_PER_S = 50_000;
 
     /** The submitted jobs: the arrays' ids (one, unless the sweep is larger than MaxArraySize) and the gather job's. */
     record Jobs(List<String> arrays, String gather) {
@@ -48,6 +56,10 @@ final class Slurm {
         }
     }
 
+    /** What was submitted: the jobs, the array's tasks and the runs each task runs (the last may run fewer). */
+    record Submitted(Jobs jobs, int tasks, int runsPerTask) {
+    }
+
     /** Slurm's MaxArraySize when the cluster does not say. */
     private static final int DEFAULT_MAX_ARRAY_SIZE = 1001;
 
@@ -59,8 +71,13 @@ final class Slurm {
      * sweep of more runs than the cluster's {@code MaxArraySize} takes several arrays, each of indices from 0 with
      * an offset; the gather job waits for all of them.
      */
-    static Jobs submit(Sweep sweep, OutputDirectory out, List<Integer> todo, Options options, Path script)
+    static Submitted submit(Sweep sweep, OutputDirectory out, List<Integer> todo, Options options, Path script)
             throws IOException, SweepException, InterruptedException {
+        int perTask = options.runsPerTask() > 0 ? options.runsPerTask() : runsPerTask(sweep);
+        List<String> chunks = new ArrayList<>();
+        for (int from = 0; from < todo.size(); from += perTask) {
+            chunks.add(ranges(todo.subList(from, Math.min(todo.size(), from + perTask))));
+        }
         String where = out.path().toString();
         if (!where.chars().allMatch(c -> c >= ' ' && c != '%' && c != 127)) {
             throw new SweepException("sweep: --out " + robosim.protocol.Printable.of(where, 200) + ": a directory for "
@@ -70,11 +87,14 @@ final class Slurm {
         Files.createDirectories(dir);
         Path task = dir.resolve("task.sh");
         Path written = dir.resolve(".task.sh.tmp-" + ProcessHandle.current().pid());
-        Files.writeString(written, "#!/usr/bin/env bash\n# A run of the sweep in its directory per task of the array "
-                + "(written by sweep.sh --slurm): run OFFSET + the task's index\n"
+        Files.writeString(written, "#!/usr/bin/env bash\n# A chunk of runs of the sweep in its directory per task of the "
+                + "array (written by sweep.sh --slurm): chunk OFFSET + the task's index\n"
                 + "export ROBOSIM_NO_BUILD=1 # (every task runs the build the submission made: none builds)\n"
-                + "exec " + quoted(script.toString()) + " task " + quoted(where) + " \"$(($1 + SLURM_ARRAY_TASK_ID))\""
-                + (options.keepRecordings() ? " --keep-recordings" : "") + "\n", StandardCharsets.UTF_8);
+                + "chunks=(" + String.join(" ", chunks) + ")\n"
+                + "exec " + quoted(script.toString()) + " task " + quoted(where)
+                + " --runs \"${chunks[$(($1 + SLURM_ARRAY_TASK_ID))]}\""
+                + (options.keepRecordings() ? " --keep-recordings" : "")
+                + (options.freshJvmPerRun() ? " --fresh-jvm-per-run" : "") + "\n", StandardCharsets.UTF_8);
         Files.setPosixFilePermissions(written, PosixFilePermissions.fromString("rwxr-xr-x"));
         // (renamed into place: a pending task of an earlier submission may be starting the old one)
         Files.move(written, task, java.nio.file.StandardCopyOption.ATOMIC_MOVE,
@@ -89,7 +109,8 @@ final class Slurm {
         Path jobs = dir.resolve("jobs");
         Files.deleteIfExists(jobs);
         List<String> arrays = new ArrayList<>();
-        for (Map.Entry<Integer, String> a : arrays(todo, maxArraySize()).entrySet()) {
+        List<Integer> tasks = java.util.stream.IntStream.range(0, chunks.size()).boxed().toList();
+        for (Map.Entry<Integer, String> a : arrays(tasks, maxArraySize()).entrySet()) {
             List<String> array = new ArrayList<>(List.of("sbatch", "--parsable", "--job-name=robosim-sweep",
                     "--array=" + a.getValue() + "%" + options.maxParallel(), "--output=" + dir.resolve("task-%A_%a.out"),
                     "--cpus-per-task=" + (sweep.layout() == Sweep.Layout.ONE_JVM ? 1 : 2)));
@@ -106,7 +127,23 @@ final class Slurm {
         gather.add("--wrap=export ROBOSIM_NO_BUILD=1; exec " + quoted(script.toString()) + " gather " + quoted(where));
         String gatherId = jobId(run(gather));
         Files.writeString(jobs, "gather " + gatherId + "\n", StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.APPEND);
-        return new Jobs(arrays, gatherId);
+        return new Submitted(new Jobs(arrays, gatherId), chunks.size(), perTask);
+    }
+
+    /**
+     * Runs a task does by default: as many as make about {@link #TASK_S} of work, from the world's robots and the
+     * steps (a run of processes counts its JVMs' start too); at least one.
+     */
+    static int runsPerTask(Sweep sweep) {
+        int robots;
+        try {
+            robots = new robosim.environment.config.EnvironmentLoader().load(sweep.world()).robots().size();
+        } catch (robosim.environment.config.EnvironmentFileException | RuntimeException e) {
+            return 1; // (its runs will say what is wrong, each)
+        }
+        double runS = (sweep.layout() == Sweep.Layout.ONE_JVM ? 0.1 : 1.5)
+                + sweep.steps() * (double) Math.max(1, robots) / ROBOT_STEPS_PER_S;
+        return (int) Math.max(1, Math.min(Integer.MAX_VALUE / 2, Math.ceil(TASK_S / runS)));
     }
 
     /** The cluster's largest array index + 1 ({@code scontrol show config}: MaxArraySize); Slurm's default when unsaid. */

@@ -22,8 +22,9 @@ import robosim.runner.ChildProcesses;
 @Command(name = "sweep.sh", mixinStandardHelpOptions = true,
         subcommands = {SweepMain.Status.class, SweepMain.Task.class, SweepMain.GatherRows.class},
         description = {"Runs a seed and parameter sweep (a <sweep> file, docs/EXPERIMENTS.md): every combination of "
-                + "the parameters' values with every seed, each run its own process, on this machine (a pool as large "
-                + "as its cores) or, with --slurm, as a Slurm job array. Writes runs.csv (a row per run), summary.csv "
+                + "the parameters' values with every seed, on this machine (a pool of warm JVMs as large as its cores, each "
+                + "running one run after another) or, with --slurm, as a Slurm job array (chunks of runs, each in one "
+                + "warm JVM). Writes runs.csv (a row per run), summary.csv "
                 + "(mean, sd and 95%% confidence interval per combination) and a PNG plot per metric and varied "
                 + "parameter into --out.",
                 "Exit: 0 every run succeeded; 1 some failed (their rows say why) or were stopped; 2 bad input; "
@@ -75,6 +76,11 @@ public final class SweepMain implements Callable<Integer> {
             + "running at once (the array's %%K; default: ${DEFAULT-VALUE}).")
     int maxParallel;
 
+    @Option(names = "--runs-per-task", paramLabel = "K", description = "With --slurm: runs each task runs, one after "
+            + "another in one warm JVM (default: as many as make about 30 s of work, from the world's robots and the "
+            + "steps; 1: a task per run).")
+    Integer runsPerTask;
+
     @Option(names = "--wait", description = "With --slurm: wait until the gather job has ended, showing progress (squeue "
             + "twice a second), then exit as a local sweep does.")
     boolean await;
@@ -84,8 +90,11 @@ public final class SweepMain implements Callable<Integer> {
         if (spec == null) {
             return bad("sweep: a sweep file is needed (sweep.sh SPEC.xml, or status/task/gather DIR; see --help)");
         }
-        if (!slurm && (partition != null || time != null || await)) {
-            return bad("sweep: --partition, --time and --wait go with --slurm");
+        if (!slurm && (partition != null || time != null || await || runsPerTask != null)) {
+            return bad("sweep: --partition, --time, --runs-per-task and --wait go with --slurm");
+        }
+        if (runsPerTask != null && runsPerTask < 1) {
+            return bad("sweep: --runs-per-task must be >= 1, got " + runsPerTask);
         }
         if ((jobs != null && jobs < 1) || maxParallel < 1) {
             return bad("sweep: --jobs and --max-parallel must be >= 1");
@@ -148,23 +157,26 @@ public final class SweepMain implements Callable<Integer> {
         if (script == null) {
             return bad("sweep: --slurm is started by scripts/sweep.sh (ROBOSIM_SWEEP_SCRIPT names it for the tasks)");
         }
-        Slurm.Jobs jobsSubmitted;
+        Slurm.Submitted submitted;
         try {
-            jobsSubmitted = Slurm.submit(sweep, dir, todo, new Slurm.Options(partition, time, maxParallel,
-                    keepRecordings), Path.of(script));
+            submitted = Slurm.submit(sweep, dir, todo, new Slurm.Options(partition, time, maxParallel,
+                    keepRecordings, runsPerTask == null ? 0 : runsPerTask, freshJvmPerRun), Path.of(script));
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
-        err.println("sweep: submitted job array " + String.join(", ", jobsSubmitted.arrays()) + " (" + todo.size()
-                + (todo.size() == 1 ? " task" : " tasks") + ", at most " + maxParallel + " at once) and gather job "
+        Slurm.Jobs jobsSubmitted = submitted.jobs();
+        err.println("sweep: submitted job array " + String.join(", ", jobsSubmitted.arrays()) + " (" + submitted.tasks()
+                + (submitted.tasks() == 1 ? " task" : " tasks") + " of up to " + submitted.runsPerTask()
+                + (submitted.runsPerTask() == 1 ? " run" : " runs") + ", at most " + maxParallel
+                + " at once) and gather job "
                 + jobsSubmitted.gather() + " (after it); "
                 + "sweep.sh status " + dir.path());
         if (!await) {
             return 0;
         }
         Progress progress = new Progress(todo.size(), err, System.console() != null);
-        java.util.BitSet submitted = new java.util.BitSet();
-        todo.forEach(submitted::set);
+        java.util.BitSet asked = new java.util.BitSet();
+        todo.forEach(asked::set);
         java.util.BitSet seen = new java.util.BitSet();
         long squeueFailingSince = 0;
         while (true) {
@@ -183,7 +195,7 @@ public final class SweepMain implements Callable<Integer> {
                 active = true;
             }
             for (Row r : dir.rowsWritten()) {
-                if (submitted.get(r.index()) && !seen.get(r.index())) {
+                if (asked.get(r.index()) && !seen.get(r.index())) {
                     seen.set(r.index());
                     progress.finished(r.ok());
                 }
@@ -253,44 +265,88 @@ public final class SweepMain implements Callable<Integer> {
         }
     }
 
-    /** {@code sweep.sh task DIR INDEX}: one run of the sweep in DIR, as a Slurm task runs it. */
-    @Command(name = "task", mixinStandardHelpOptions = true, description = "Runs run INDEX of the sweep in DIR and "
-            + "writes its row (what each task of a Slurm sweep's array does); nothing if it has its row already.")
+    /** {@code sweep.sh task DIR INDEX|--runs LIST}: runs of the sweep in DIR, as a Slurm task runs its chunk. */
+    @Command(name = "task", mixinStandardHelpOptions = true, description = "Runs run INDEX, or the runs of --runs, of "
+            + "the sweep in DIR, one after another in one warm JVM, and writes their rows (what each task of a Slurm "
+            + "sweep's array does); a run that has its row already is not run again.")
     static final class Task implements Callable<Integer> {
         @Parameters(index = "0", paramLabel = "DIR", description = "The sweep's output directory.")
         Path dir;
 
-        @Parameters(index = "1", paramLabel = "INDEX", description = "The run (from 0).")
-        int index;
+        @Parameters(index = "1", arity = "0..1", paramLabel = "INDEX", description = "The run (from 0).")
+        Integer index;
 
-        @Option(names = "--keep-recordings", description = "Keep the run's recording in DIR/recordings.")
+        @Option(names = "--runs", paramLabel = "LIST", description = "The runs, as 0-9,12,15-20.")
+        String runs;
+
+        @Option(names = "--keep-recordings", description = "Keep the runs' recordings in DIR/recordings.")
         boolean keepRecordings;
+
+        @Option(names = "--fresh-jvm-per-run", description = "Run each run in a JVM of its own.")
+        boolean freshJvmPerRun;
 
         @Override
         public Integer call() throws Exception {
             OutputDirectory out = new OutputDirectory(dir);
             Sweep sweep;
+            List<Integer> todo;
             try {
                 sweep = out.sweep();
-                if (index < 0 || index >= sweep.runs()) {
-                    return bad("sweep: run " + index + " is not one of the " + sweep.runs() + " runs of " + sweep.file());
+                if ((index == null) == (runs == null)) {
+                    return bad("sweep: task takes a run's INDEX or --runs LIST, one of them");
+                }
+                todo = index != null ? List.of(index) : indices(runs);
+                for (int i : todo) {
+                    if (i < 0 || i >= sweep.runs()) {
+                        return bad("sweep: run " + i + " is not one of the " + sweep.runs() + " runs of "
+                                + sweep.file());
+                    }
                 }
             } catch (SweepException e) {
                 return bad(e.getMessage());
             }
-            if (java.nio.file.Files.exists(out.row(index))) {
-                System.err.println("sweep: run " + index + " has its row already");
-                return 0;
-            }
             java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
-            // (Slurm ends a task past its time with SIGTERM: the run then writes no row)
+            // (Slurm ends a task past its time with SIGTERM: the run then under way writes no row, nor any after it)
             Runtime.getRuntime().addShutdownHook(new Thread(() -> stopping.set(true), "sweep-stop"));
+            SweepRun sweepRun = new SweepRun(sweep, out, keepRecordings, stopping::get);
+            int unfinished = 0;
             try (ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
-                 robosim.runner.HeadlessRuns runs = robosim.runner.HeadlessRuns.freshJvms(children)) {
-                Row row = new SweepRun(sweep, out, keepRecordings, stopping::get).run(index, runs);
-                System.err.println("sweep: run " + index + ": " + (row == null ? "stopped, no row" : row.values().get("status")));
-                return row == null ? EXIT_RUNS_FAILED : 0;
+                 robosim.runner.HeadlessRuns where = freshJvmPerRun ? robosim.runner.HeadlessRuns.freshJvms(children)
+                         : new robosim.runner.WarmWorker(children, "worker")) {
+                for (int i : todo) {
+                    if (java.nio.file.Files.exists(out.row(i))) {
+                        System.err.println("sweep: run " + i + " has its row already");
+                        continue;
+                    }
+                    Row row = stopping.get() ? null : sweepRun.run(i, where);
+                    System.err.println("sweep: run " + i + ": " + (row == null ? "stopped, no row"
+                            : row.values().get("status")));
+                    unfinished += row == null ? 1 : 0;
+                }
             }
+            return unfinished > 0 ? EXIT_RUNS_FAILED : 0;
+        }
+
+        /** The runs of a list such as {@code 0-9,12,15-20}. */
+        static List<Integer> indices(String list) throws SweepException {
+            List<Integer> out = new java.util.ArrayList<>();
+            for (String part : list.split(",")) {
+                java.util.regex.Matcher m = java.util.regex.Pattern.compile("([0-9]{1,9})(?:-([0-9]{1,9}))?")
+                        .matcher(part.trim());
+                if (!m.matches()) {
+                    throw new SweepException("sweep: --runs " + robosim.protocol.Printable.of(list, 100)
+                            + ": not a list of runs such as 0-9,12,15-20");
+                }
+                int from = Integer.parseInt(m.group(1));
+                int to = m.group(2) == null ? from : Integer.parseInt(m.group(2));
+                if (to < from || to - from > 10_000_000) {
+                    throw new SweepException("sweep: --runs: " + part.trim() + " is not a range from low to high");
+                }
+                for (int i = from; i <= to; i++) {
+                    out.add(i);
+                }
+            }
+            return out;
         }
     }
 

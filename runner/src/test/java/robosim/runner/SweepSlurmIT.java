@@ -17,7 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A sweep through a real Slurm (a one-node cluster on this machine, started by scripts/slurm-cluster.sh from
- * Debian's packages) gives the same runs.csv as on this machine's pool, but for the wall-time column (which runs
+ * Debian's packages), its runs in chunks (two tasks, of three runs and of one, each chunk in one warm JVM), gives the
+ * same runs.csv as on this machine's pool, but for the wall-time column (which runs
  * a resubmission with --resume submits is SweepFileTest's: the arrays for the missing rows). CI installs Slurm and requires this test
  * ({@code ROBOSIM_SLURM_TEST=required}); elsewhere, without Slurm installed, it is skipped saying why.
  */
@@ -86,9 +87,12 @@ class SweepSlurmIT {
         ScriptRun here = sweep(spec.toString(), "--out", local.toString());
         assertEquals(0, here.exit(), here.stderr());
         ScriptRun there = sweep(spec.toString(), "--out", slurm.toString(), "--slurm", "--wait", "--max-parallel", "2",
-                "--partition", "robosim");
+                "--partition", "robosim", "--runs-per-task", "3");
         assertEquals(0, there.exit(), there.stderr());
         assertTrue(there.stderr().contains("submitted job array"), there.stderr());
+        assertTrue(there.stderr().contains("(2 tasks of up to 3 runs, at most 2 at once)"), there.stderr());
+        String tasks = String.join("\n", Files.readAllLines(slurm.resolve("slurm/task.sh")));
+        assertTrue(tasks.contains("chunks=(0-2 3)"), tasks);
         List<String> rows = withoutWallTime(local.resolve("runs.csv"));
         assertEquals(5, rows.size(), String.join("\n", rows));
         assertTrue(rows.get(0).startsWith("index,seed,repetition,speed,status,exit_code,steps,"), rows.get(0));

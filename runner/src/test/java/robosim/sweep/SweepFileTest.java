@@ -119,6 +119,25 @@ class SweepFileTest {
     }
 
     @Test
+    void aTasksListOfRunsIsReadBackAsItsRunsAndABadOneIsRefused() throws Exception {
+        assertEquals(List.of(0, 1, 2, 5, 9, 10, 11), SweepMain.Task.indices(Slurm.ranges(List.of(0, 1, 2, 5, 9, 10,
+                11))));
+        for (String bad : List.of("3-1", "x", "1,,2", "-4")) {
+            SweepException e = org.junit.jupiter.api.Assertions.assertThrows(SweepException.class,
+                    () -> SweepMain.Task.indices(bad));
+            assertTrue(e.getMessage().startsWith("sweep: --runs"), e.getMessage());
+        }
+    }
+
+    @Test
+    void aSlurmTaskRunsAboutThirtySecondsOfRunsByDefault() throws Exception {
+        Sweep sweep = SweepFile.read(write(sweep("", "<seeds from=\"1\" to=\"40\"/>")));
+        int robots = new robosim.environment.config.EnvironmentLoader().load(sweep.world()).robots().size();
+        double runS = 0.1 + 100.0 * robots / 50_000;
+        assertEquals((int) Math.ceil(Slurm.TASK_S / runS), Slurm.runsPerTask(sweep));
+    }
+
+    @Test
     void columnsAreNeverTakenTwice() throws Exception {
         String e = refused(sweep("", "<seeds from=\"1\" to=\"2\"/><param name=\"seed\" values=\"1 2\"/>"));
         assertTrue(e.contains("a row's own column or a built-in metric has that name (the seeds are <seeds"), e);
