@@ -62,6 +62,11 @@ public final class Inbox<T> {
         return queue.poll(nanos, TimeUnit.NANOSECONDS);
     }
 
+    /** The owner: the next event, waiting for one as long as it takes. */
+    public Event<T> take() throws InterruptedException {
+        return queue.take();
+    }
+
     /** The owner: the next event if one is queued, else null. */
     public Event<T> poll() {
         return queue.poll();

@@ -15,9 +15,13 @@ import robosim.protocol.VirtualThreads;
  * the operating system's ({@code docs/PERFORMANCE.md}, "The hand-off"). The system property
  * {@code robosim.loopThread} ({@code platform} or {@code virtual}) overrides the choice.
  *
+ * <p>A virtual loop never waits for a time: a timed park of a virtual thread goes through the scheduler's timer, a
+ * wake of the operating system's at every step that the hand-off has saved. It waits for its next event, and its
+ * watch, a platform thread, hands it a wake ({@code tick}) at each of its ticks, when it judges its deadlines.
+ *
  * <p>One carrier is not time-sliced: control code that computes without calling the robot keeps everything else off
  * it, the loop included, whose deadlines (the step timeout) would then never be judged. So a virtual loop is watched
- * by a platform thread, {@code loop-watch}: when the loop has not come round for {@link #STALL_MS}, it gives virtual
+ * by that platform thread, {@code loop-watch}: when the loop has not come round for {@link #STALL_MS}, it gives virtual
  * threads one more carrier ({@link VirtualThreads#widen}) and says so once; the loop then runs beside the code that
  * holds the first one and judges it as ever.
  */
@@ -34,9 +38,11 @@ final class LoopThread {
     /**
      * Starts {@code loop}: virtual when {@code robotsHere} (every robot's control code in this JVM) and this JVM's
      * virtual threads have one carrier, or as {@link #PROPERTY} says; {@code round} is when the loop last came round
-     * (System.nanoTime), {@code ended} counts down when it is done. Returns true if it is virtual.
+     * (System.nanoTime), {@code ended} counts down when it is done; a virtual loop is handed {@code tick} every
+     * {@code tickNanos}. Returns true if it is virtual.
      */
-    static boolean start(Runnable loop, boolean robotsHere, LongSupplier round, CountDownLatch ended) {
+    static boolean start(Runnable loop, boolean robotsHere, LongSupplier round, CountDownLatch ended, long tickNanos,
+            Runnable tick) {
         String asked = System.getProperty(PROPERTY, "");
         boolean virtual = VirtualThreads.available() && (asked.equals("virtual")
                 || (!asked.equals("platform") && robotsHere && VirtualThreads.oneCarrier()));
@@ -47,25 +53,30 @@ final class LoopThread {
             return false;
         }
         VirtualThreads.start("simulation-loop", loop);
-        Thread watch = new Thread(() -> watch(round, ended), "loop-watch");
+        Thread watch = new Thread(() -> watch(round, ended, tickNanos, tick), "loop-watch");
         watch.setDaemon(true);
         watch.start();
         return true;
     }
 
-    /** {@code loop-watch}: until the loop is done, gives virtual threads a carrier more when it stalls (once). */
-    private static void watch(LongSupplier round, CountDownLatch ended) {
+    /**
+     * {@code loop-watch}: until the loop is done, hands it {@code tick} every {@code tickNanos}, and gives virtual
+     * threads a carrier more when it stalls (once).
+     */
+    private static void watch(LongSupplier round, CountDownLatch ended, long tickNanos, Runnable tick) {
         long stall = TimeUnit.MILLISECONDS.toNanos(STALL_MS);
+        boolean widened = false;
         try {
-            while (!ended.await(STALL_MS / 4, TimeUnit.MILLISECONDS)) {
+            while (!ended.await(tickNanos, TimeUnit.NANOSECONDS)) {
+                tick.run();
                 long idle = System.nanoTime() - round.getAsLong();
-                if (idle > stall) {
+                if (idle > stall && !widened) {
+                    widened = true;
                     int carriers = VirtualThreads.widen();
                     LOG.warn("the simulation loop has not come round for {} ms: code on its carrier thread computes "
                             + "without calling the robot (or the machine is very busy); {}", idle / 1_000_000,
                             carriers > 0 ? "virtual threads now have " + carriers + " carriers"
                                     : "their scheduler could not be given another carrier");
-                    return;
                 }
             }
         } catch (InterruptedException e) {

@@ -32,6 +32,10 @@ final class SimulationLoop implements Runnable {
     /** When the loop last came round (System.nanoTime): what {@code loop-watch} watches. */
     private volatile long round = System.nanoTime();
     private final boolean robotsHere;
+    /** The loop is a virtual thread: it waits for its next event, never for a time (its watch ticks it). */
+    private boolean ticked;
+    /** A tick's wake is in the inbox, not taken yet (one at a time, however long the loop takes). */
+    private final java.util.concurrent.atomic.AtomicBoolean tickWaiting = new java.util.concurrent.atomic.AtomicBoolean();
 
     /**
      * {@code capacity}: events its inbox holds; {@code onEnd}: runs last, on the loop thread, once the run is
@@ -63,7 +67,12 @@ final class SimulationLoop implements Runnable {
     void start(Run driven, List<LoopHook> loopHooks) {
         this.run = driven;
         this.hooks = List.copyOf(loopHooks);
-        if (LoopThread.start(this, robotsHere, () -> round, ended)) {
+        ticked = LoopThread.start(this, robotsHere, () -> round, ended, tickNanos, () -> {
+            if (!tickWaiting.getAndSet(true)) {
+                post(new LoopEvent.Wake());
+            }
+        });
+        if (ticked) {
             LOG.info("the simulation loop runs on a virtual thread beside the control code");
         }
     }
@@ -107,7 +116,10 @@ final class SimulationLoop implements Runnable {
             while (!run.ended()) {
                 long now = System.nanoTime();
                 round = now;
-                Inbox.Event<Run> e = inbox.poll(pending() ? 0 : Math.max(0, Math.min(nextTick, run.paceDue()) - now));
+                long due = run.paceDue();
+                Inbox.Event<Run> e = pending() ? inbox.poll() : ticked && due == Long.MAX_VALUE ? inbox.take()
+                        : inbox.poll(Math.max(0, Math.min(nextTick, due) - now));
+                tickWaiting.set(false);
                 // everything queued by now is taken before any deadline is judged (a request or an answer
                 // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
                 for (int more = e == null ? 0 : inbox.size(); e != null; more--) {

@@ -33,7 +33,7 @@ public final class ConnectionWatch {
 
     private final Set<Watched> watched = ConcurrentHashMap.newKeySet();
     private final long periodMs;
-    private ScheduledExecutorService timer;
+    private volatile ScheduledExecutorService timer;
     /** Guarded by this: the owner is done, and the thread ends once nothing is left to watch. */
     private boolean idleEnds;
     /** Guarded by this: the thread has ended; a connection handed over now is dropped at once. */
@@ -78,9 +78,24 @@ public final class ConnectionWatch {
         timer.scheduleWithFixedDelay(() -> check(System.nanoTime()), periodMs, periodMs, TimeUnit.MILLISECONDS);
     }
 
-    /** The owner is done: the thread ends once no connection is left to watch (those still open keep their clocks). */
-    public synchronized void stopWhenIdle() {
-        idleEnds = true;
+    /**
+     * The owner is done: the thread ends once no connection is left to watch (those still open keep their clocks);
+     * it looks at once, so that with none left it ends now rather than a period later (a warm JVM waits for a run's
+     * threads to end before its next run).
+     */
+    public void stopWhenIdle() {
+        ScheduledExecutorService t;
+        synchronized (this) {
+            idleEnds = true;
+            t = ended ? null : timer;
+        }
+        if (t != null) {
+            try {
+                t.execute(() -> check(System.nanoTime()));
+            } catch (java.util.concurrent.RejectedExecutionException over) {
+                // it has ended meanwhile
+            }
+        }
     }
 
     /** One look at every clock: cuts off each connection that is late (one that fails to close does not stop the rest). */
