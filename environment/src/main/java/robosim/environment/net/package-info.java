@@ -49,9 +49,13 @@
  * <tr><th>thread</th><th>code</th><th>what it does</th><th>where it blocks</th></tr>
  * <tr><td>{@code simulation-loop}</td><td>{@link robosim.environment.net.SimulationLoop},
  *     {@link robosim.environment.net.Run}</td><td>every step (collect, resolve, release), the roster, pace,
- *     pause, the robots' deadlines, the end</td><td>its inbox, timed to the next deadline; its writes to
- *     robots and shared connections (one frame each after every event), which the connection watch bounds;
- *     a full recording queue</td></tr>
+ *     pause, the robots' deadlines, the end; a platform thread, or in a one-JVM run a virtual one beside the
+ *     control code ({@link robosim.environment.net.LoopThread})</td><td>its inbox, timed to the next deadline
+ *     (a virtual loop: untimed, {@code loop-watch} wakes it); its writes to robots and shared connections (one
+ *     frame each after every event), which the connection watch bounds; a full recording queue</td></tr>
+ * <tr><td>{@code loop-watch}</td><td>{@link robosim.environment.net.LoopThread}</td><td>with a virtual loop only:
+ *     wakes it at each tick, and gives virtual threads a second carrier when it has not come round for a
+ *     second</td><td>a timed wait on the loop's end</td></tr>
  * <tr><td>{@code robot-worker[#n]}, then {@code robot-worker[name]}</td><td>{@link
  *     robosim.environment.net.RobotClientWorker}</td><td>one per robot connection: the handshake, then its
  *     robot's requests, each posted</td><td>its socket read</td></tr>
