@@ -14,7 +14,6 @@ import java.nio.file.StandardOpenOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.List;
-import java.util.Set;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -23,15 +22,18 @@ import java.util.concurrent.TimeUnit;
  * its own; its control classes are loaded by a {@link ControlClassLoader} of its own (the context class loader of
  * its threads), so the static state of control code never reaches the next run; everything the run made (threads,
  * ports, files, recordings) is released by the runner as at a JVM's end. After the run the host looks for what
- * the run left behind: a thread the run started that is still alive a few seconds after its end, or control code
+ * the run left behind: a platform thread the run started (in its thread group, with its class loader: not the JDK's
+ * own threads a run may start, such as the process reaper) still alive a few seconds after its end, or control code
  * still running. A JVM with such a leftover must not run again: its run counts as failed, with that reason, and
- * the JVM ends ({@link HeadlessRuns.Ended#broke()}).
+ * the JVM ends ({@link HeadlessRuns.Ended#broke()}). A virtual thread that control code starts itself and leaves
+ * running is not seen (the JDK lists no virtual threads): it lives on in the worker.
  *
  * <p>As a process ({@code main}: a sweep's worker, {@link WarmWorker} on the other side) it reads one run per line
  * on stdin ({@code run TAB LOG TAB ARG TAB ARG ...}, the fields free of tabs and line breaks) and answers each on
  * stdout ({@code ended TAB CODE}, or {@code broke TAB CODE TAB REASON} before it exits); it ends at the end of its
- * stdin. It is started by RoboSim, never by hand: its stdin is its owner's. Threads: {@code main} (reads the
- * requests, answers), {@code run} (one run at a time: the runner's {@code main}).
+ * stdin. Its stdout carries the answers only: {@code System.out} is its stderr between runs. It is started by
+ * RoboSim, never by hand: its stdin is its owner's. Threads: {@code main} (reads the requests, answers),
+ * {@code run} (one run at a time, in a thread group of its own: the runner's {@code main}).
  */
 public final class RunHost {
     /** How long the threads a run started get to end after it, ms (a robot process's grace, and some). */
@@ -48,28 +50,29 @@ public final class RunHost {
      * code and, when it left something running, what (this JVM must then run no more).
      */
     public HeadlessRuns.Ended run(List<String> args, Path log) throws IOException, InterruptedException {
-        Set<Thread> before = Thread.getAllStackTraces().keySet();
         PrintStream out = System.out;
         PrintStream err = System.err;
         HeadlessRunner runner = new HeadlessRunner();
         int[] code = {1};
+        ThreadGroup group = new ThreadGroup("run");
         try (OutputStream file = Files.newOutputStream(log, StandardOpenOption.CREATE,
                 StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE);
              PrintStream logged = new PrintStream(file, true, StandardCharsets.UTF_8);
              ControlClassLoader classes = new ControlClassLoader("run", controlPath, RunHost.class.getClassLoader())) {
-            Thread run = new Thread(() -> code[0] = HeadlessRunner.commandLine(runner)
+            Thread run = new Thread(group, () -> code[0] = HeadlessRunner.commandLine(runner)
                     .execute(args.toArray(new String[0])), "run");
             run.setContextClassLoader(classes);
+            List<String> left;
             System.setOut(logged);
             System.setErr(logged);
             try {
                 run.start();
                 run.join();
+                left = leftover(group, classes); // (what they print meanwhile still goes into the run's log)
             } finally {
                 System.setOut(out);
                 System.setErr(err);
             }
-            List<String> left = leftover(before, classes);
             List<String> running = runner.controlStillRunning();
             String broke = !running.isEmpty() ? "the control code of " + String.join(", ", running)
                     + " was still running after the run's end (a warm JVM cannot stop it: --fresh-jvm-per-run)"
@@ -83,14 +86,17 @@ public final class RunHost {
     }
 
     /**
-     * The threads the run started (their context class loader is its own) that are still alive once those that end
-     * have had {@link #LEFTOVER_GRACE_MS} to.
+     * The threads the run started (in its thread group, their context class loader its own) that are still alive once
+     * those that end have had {@link #LEFTOVER_GRACE_MS} to.
      */
-    private static List<String> leftover(Set<Thread> before, ClassLoader runs) throws InterruptedException {
+    private static List<String> leftover(ThreadGroup group, ClassLoader runs) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LEFTOVER_GRACE_MS);
         List<String> left = new ArrayList<>();
-        for (Thread t : Thread.getAllStackTraces().keySet()) {
-            if (!before.contains(t) && t.getContextClassLoader() == runs) {
+        Thread[] threads = new Thread[Math.max(16, group.activeCount() * 2)];
+        int n = group.enumerate(threads, true);
+        for (int i = 0; i < n; i++) {
+            Thread t = threads[i];
+            if (t.getContextClassLoader() == runs) {
                 t.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
                 if (t.isAlive()) {
                     left.add(robosim.protocol.Printable.of(t.getName(), 80));
@@ -135,8 +141,10 @@ public final class RunHost {
             System.err.println("run host: a sweep's warm JVM, started by scripts/sweep.sh; it takes no argument");
             System.exit(2);
         }
-        // the answers go to the stdout this JVM was started with; the runs' output to their logs
+        // the answers go to the stdout this JVM was started with, and nothing else does: the runs' output to their
+        // logs, anything printed between runs (a thread of a run that is late) to stderr
         PrintStream answers = new PrintStream(new FileOutputStream(FileDescriptor.out), true, StandardCharsets.UTF_8);
+        System.setOut(System.err);
         RunHost host = new RunHost(ControlClassLoader.entries(System.getenv("ROBOSIM_CLASSPATH")));
         BufferedReader in = new BufferedReader(new InputStreamReader(System.in, StandardCharsets.UTF_8));
         for (String line = in.readLine(); line != null; line = in.readLine()) {
@@ -145,7 +153,12 @@ public final class RunHost {
                 System.err.println("run host: not a request: " + robosim.protocol.Printable.of(line, 100));
                 System.exit(2);
             }
-            HeadlessRuns.Ended ended = host.run(Arrays.asList(f).subList(2, f.length), Path.of(f[1]));
+            HeadlessRuns.Ended ended;
+            try {
+                ended = host.run(Arrays.asList(f).subList(2, f.length), Path.of(f[1]));
+            } catch (IOException | RuntimeException e) { // (the host's, not the run's: its log, its class path)
+                ended = new HeadlessRuns.Ended(1, "the warm JVM could not run it: " + e);
+            }
             answers.println(answer(ended));
             if (ended.broke() != null) {
                 System.exit(1); // (what the run left goes with this JVM)

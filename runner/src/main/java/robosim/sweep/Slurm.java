@@ -85,7 +85,7 @@ final class Slurm {
         }
         Path dir = out.slurm();
         Files.createDirectories(dir);
-        Path task = dir.resolve("task.sh");
+        Path task = taskScript(dir);
         Path written = dir.resolve(".task.sh.tmp-" + ProcessHandle.current().pid());
         Files.writeString(written, "#!/usr/bin/env bash\n# A chunk of runs of the sweep in its directory per task of the "
                 + "array (written by sweep.sh --slurm): chunk OFFSET + the task's index\n"
@@ -96,9 +96,8 @@ final class Slurm {
                 + (options.keepRecordings() ? " --keep-recordings" : "")
                 + (options.freshJvmPerRun() ? " --fresh-jvm-per-run" : "") + "\n", StandardCharsets.UTF_8);
         Files.setPosixFilePermissions(written, PosixFilePermissions.fromString("rwxr-xr-x"));
-        // (renamed into place: a pending task of an earlier submission may be starting the old one)
-        Files.move(written, task, java.nio.file.StandardCopyOption.ATOMIC_MOVE,
-                java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        // (a script of its own: a pending task of an earlier submission still runs that one's chunks)
+        Files.move(written, task, java.nio.file.StandardCopyOption.ATOMIC_MOVE);
         List<String> place = new ArrayList<>();
         if (options.partition() != null) {
             place.add("--partition=" + options.partition());
@@ -128,6 +127,15 @@ final class Slurm {
         String gatherId = jobId(run(gather));
         Files.writeString(jobs, "gather " + gatherId + "\n", StandardCharsets.UTF_8, java.nio.file.StandardOpenOption.APPEND);
         return new Submitted(new Jobs(arrays, gatherId), chunks.size(), perTask);
+    }
+
+    /** This submission's task script: {@code task-N.sh}, N one more than any earlier submission's. */
+    private static Path taskScript(Path dir) throws IOException {
+        int n = 1;
+        while (Files.exists(dir.resolve("task-" + n + ".sh"))) {
+            n++;
+        }
+        return dir.resolve("task-" + n + ".sh");
     }
 
     /**

@@ -295,12 +295,10 @@ public final class SweepMain implements Callable<Integer> {
                 if ((index == null) == (runs == null)) {
                     return bad("sweep: task takes a run's INDEX or --runs LIST, one of them");
                 }
-                todo = index != null ? List.of(index) : indices(runs);
-                for (int i : todo) {
-                    if (i < 0 || i >= sweep.runs()) {
-                        return bad("sweep: run " + i + " is not one of the " + sweep.runs() + " runs of "
-                                + sweep.file());
-                    }
+                todo = index != null ? List.of(index) : indices(runs, sweep.runs());
+                if (index != null && (index < 0 || index >= sweep.runs())) {
+                    return bad("sweep: run " + index + " is not one of the " + sweep.runs() + " runs of "
+                            + sweep.file());
                 }
             } catch (SweepException e) {
                 return bad(e.getMessage());
@@ -318,7 +316,14 @@ public final class SweepMain implements Callable<Integer> {
                         System.err.println("sweep: run " + i + " has its row already");
                         continue;
                     }
-                    Row row = stopping.get() ? null : sweepRun.run(i, where);
+                    Row row;
+                    try {
+                        row = stopping.get() ? null : sweepRun.run(i, where);
+                    } catch (java.io.IOException | RuntimeException e) { // (this run's: the chunk's others go on)
+                        System.err.println("sweep: run " + i + ": " + e.getMessage());
+                        unfinished++;
+                        continue;
+                    }
                     System.err.println("sweep: run " + i + ": " + (row == null ? "stopped, no row"
                             : row.values().get("status")));
                     unfinished += row == null ? 1 : 0;
@@ -327,10 +332,10 @@ public final class SweepMain implements Callable<Integer> {
             return unfinished > 0 ? EXIT_RUNS_FAILED : 0;
         }
 
-        /** The runs of a list such as {@code 0-9,12,15-20}. */
-        static List<Integer> indices(String list) throws SweepException {
+        /** The runs of a list such as {@code 0-9,12,15-20}, each one of a sweep's {@code runs}. */
+        static List<Integer> indices(String list, long runs) throws SweepException {
             List<Integer> out = new java.util.ArrayList<>();
-            for (String part : list.split(",")) {
+            for (String part : list.split(",", -1)) {
                 java.util.regex.Matcher m = java.util.regex.Pattern.compile("([0-9]{1,9})(?:-([0-9]{1,9}))?")
                         .matcher(part.trim());
                 if (!m.matches()) {
@@ -339,8 +344,12 @@ public final class SweepMain implements Callable<Integer> {
                 }
                 int from = Integer.parseInt(m.group(1));
                 int to = m.group(2) == null ? from : Integer.parseInt(m.group(2));
-                if (to < from || to - from > 10_000_000) {
+                if (to < from) {
                     throw new SweepException("sweep: --runs: " + part.trim() + " is not a range from low to high");
+                }
+                if (to >= runs) {
+                    throw new SweepException("sweep: --runs: run " + to + " is not one of the sweep's " + runs
+                            + " runs");
                 }
                 for (int i = from; i <= to; i++) {
                     out.add(i);

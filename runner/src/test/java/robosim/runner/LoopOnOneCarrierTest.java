@@ -1,7 +1,6 @@
 package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
-import static org.junit.jupiter.api.Assertions.assertNotNull;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -26,7 +25,8 @@ class LoopOnOneCarrierTest {
     @Test
     void controlCodeThatNeverCallsTheRobotIsRemovedAtTheStepTimeoutThoughItHoldsTheOneCarrier() throws Exception {
         Path jdk = SameRunEveryLayoutTest.NewestJdk.atLeast(21);
-        assertNotNull(jdk, "a JDK 21 or later on this machine (CI has one)");
+        org.junit.jupiter.api.Assumptions.assumeTrue(jdk != null, "no JDK 21 or later on this machine: without "
+                + "virtual threads the loop is a platform thread (CI has JDK 25)");
         Path world = dir.resolve("spins.xml");
         Files.writeString(world, """
                 <environment name="spins" timeStepMs="100">

@@ -91,7 +91,7 @@ class SweepSlurmIT {
         assertEquals(0, there.exit(), there.stderr());
         assertTrue(there.stderr().contains("submitted job array"), there.stderr());
         assertTrue(there.stderr().contains("(2 tasks of up to 3 runs, at most 2 at once)"), there.stderr());
-        String tasks = String.join("\n", Files.readAllLines(slurm.resolve("slurm/task.sh")));
+        String tasks = String.join("\n", Files.readAllLines(slurm.resolve("slurm/task-1.sh")));
         assertTrue(tasks.contains("chunks=(0-2 3)"), tasks);
         List<String> rows = withoutWallTime(local.resolve("runs.csv"));
         assertEquals(5, rows.size(), String.join("\n", rows));

@@ -2,7 +2,9 @@ package robosim.runner;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertNotSame;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertSame;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Files;
@@ -15,7 +17,8 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * A warm JVM's runs ({@link RunHost}, here this test JVM) against the same runs each in a fresh JVM: the same pose
  * logs, run after run, for control code with static state ({@link CountsItsRuns}: its n-th run in a JVM moves n
- * times as far) and for a seeded noisy world (the maze).
+ * times as far) and for a seeded noisy world (the maze); a run of processes leaves nothing of its own running; each
+ * run's class loader defines the user's classes and the examples again, RoboSim's own never.
  */
 class WarmRunsTest {
     @TempDir
@@ -74,5 +77,33 @@ class WarmRunsTest {
         assertNull(ended.broke(), Files.readString(log));
         assertEquals(0, ended.code(), Files.readString(log));
         return Files.readAllBytes(dir.resolve(name + ".csv"));
+    }
+
+    @Test
+    void aRunOfProcessesLeavesNothingRunningInAWarmJvm() throws Exception {
+        // (the JDK's own threads such a run starts, the process reaper on JDK 17, are not the run's)
+        RunHost host = new RunHost(List.of());
+        Path log = dir.resolve("processes.log");
+        HeadlessRuns.Ended ended = host.run(List.of("--env", "src/test/resources/one-robot.xml", "--steps", "5",
+                "--timeout-s", "120"), log);
+        assertEquals(new HeadlessRuns.Ended(0, null), ended, Files.readString(log));
+    }
+
+    @Test
+    void eachRunsLoaderDefinesTheUsersClassesAndTheExamplesAfreshButNeverRoboSimsOwn() throws Exception {
+        Path classes = Path.of(CountsItsRuns.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        Path api = Path.of(robosim.api.RobotControl.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+        ClassLoader parent = WarmRunsTest.class.getClassLoader();
+        try (ControlClassLoader first = new ControlClassLoader("run", List.of(api, classes), parent);
+             ControlClassLoader second = new ControlClassLoader("run", List.of(api, classes), parent)) {
+            // the user's path holds RoboSim's robot API too: it is still RoboSim's, once for all runs
+            assertSame(robosim.api.RobotControl.class, first.loadClass("robosim.api.RobotControl"));
+            for (String name : List.of(CountsItsRuns.class.getName(), "robosim.examples.Wander")) {
+                Class<?> one = first.loadClass(name);
+                assertSame(first, one.getClassLoader(), name);
+                assertNotSame(one, second.loadClass(name), name + " is defined again for each run");
+                assertTrue(robosim.api.RobotControl.class.isAssignableFrom(one), name);
+            }
+        }
     }
 }

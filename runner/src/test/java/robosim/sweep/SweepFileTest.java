@@ -121,20 +121,20 @@ class SweepFileTest {
     @Test
     void aTasksListOfRunsIsReadBackAsItsRunsAndABadOneIsRefused() throws Exception {
         assertEquals(List.of(0, 1, 2, 5, 9, 10, 11), SweepMain.Task.indices(Slurm.ranges(List.of(0, 1, 2, 5, 9, 10,
-                11))));
-        for (String bad : List.of("3-1", "x", "1,,2", "-4")) {
+                11)), 12));
+        for (String bad : List.of("3-1", "x", "1,,2", "-4", "1,2,", "0-12")) {
             SweepException e = org.junit.jupiter.api.Assertions.assertThrows(SweepException.class,
-                    () -> SweepMain.Task.indices(bad));
+                    () -> SweepMain.Task.indices(bad, 12));
             assertTrue(e.getMessage().startsWith("sweep: --runs"), e.getMessage());
         }
     }
 
     @Test
-    void aSlurmTaskRunsAboutThirtySecondsOfRunsByDefault() throws Exception {
-        Sweep sweep = SweepFile.read(write(sweep("", "<seeds from=\"1\" to=\"40\"/>")));
-        int robots = new robosim.environment.config.EnvironmentLoader().load(sweep.world()).robots().size();
-        double runS = 0.1 + 100.0 * robots / 50_000;
-        assertEquals((int) Math.ceil(Slurm.TASK_S / runS), Slurm.runsPerTask(sweep));
+    void aSlurmTaskRunsManyShortRunsButOneLongOneByDefault() throws Exception {
+        int shortRuns = Slurm.runsPerTask(SweepFile.read(write(sweep("", "<seeds from=\"1\" to=\"40\"/>"))));
+        assertTrue(shortRuns >= 100 && shortRuns <= 300, "100 steps of 6 robots, a tenth of a second or so: " + shortRuns);
+        Path longer = write("<sweep world=\"" + WANDER + "\" steps=\"5000000\"><seeds from=\"1\" to=\"4\"/></sweep>");
+        assertEquals(1, Slurm.runsPerTask(SweepFile.read(longer)), "a run of minutes is a task of its own");
     }
 
     @Test

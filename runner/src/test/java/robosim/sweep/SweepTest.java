@@ -175,8 +175,10 @@ class SweepTest {
         assertTrue(exit.get(exit.size() - 2).contains("its warm JVM exited with code 7 during the run"), runs.get(2));
         List<String> leave = Csv.fields(runs.get(3));
         assertEquals(List.of("leave", "failed"), leave.subList(3, 5), runs.get(3));
-        assertTrue(leave.get(leave.size() - 2).contains("the run left threads running 5 s after its end: never-ends"),
-                runs.get(3));
+        // (its control code ends as the run does; on a loaded machine it may still be ending when it is looked at)
+        String why = leave.get(leave.size() - 2);
+        assertTrue(why.contains("the run left threads running 5 s after its end: never-ends")
+                || why.contains("the control code of b1 was still running after the run's end"), runs.get(3));
         assertEquals(Csv.fields(runs.get(1)).subList(4, 10), Csv.fields(runs.get(4)).subList(4, 10),
                 "the run after them, in a fresh worker, is the first's again (its mode stands still too)");
         assertTrue(r.err().contains("4 of 4 runs have rows, 2 failed"), r.err());
