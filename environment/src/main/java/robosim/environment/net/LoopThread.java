@@ -12,7 +12,7 @@ import robosim.protocol.VirtualThreads;
  * code runs in this JVM on virtual threads and the JVM gives virtual threads one carrier
  * ({@code jdk.virtualThreadScheduler.parallelism=1}, which a one-JVM run sets unless told otherwise), a virtual thread
  * of that name: then a step passes from the loop to the control code and back on the one carrier, with no wake of
- * the operating system's ({@code docs/PERFORMANCE.md}, "The hand-off"). The system property
+ * the operating system's ({@code docs/PERFORMANCE.md}, "Many short runs"). The system property
  * {@code robosim.loopThread} ({@code platform} or {@code virtual}) overrides the choice.
  *
  * <p>A virtual loop never waits for a time: a timed park of a virtual thread goes through the scheduler's timer, a
