@@ -22,8 +22,9 @@ import java.util.concurrent.TimeUnit;
  * its own; its control classes are loaded by a {@link ControlClassLoader} of its own (the context class loader of
  * its threads), so the static state of control code never reaches the next run; everything the run made (threads,
  * ports, files, recordings) is released by the runner as at a JVM's end. After the run the host looks for what
- * the run left behind: a platform thread the run started (in its thread group, with its class loader: not the JDK's
- * own threads a run may start, such as the process reaper) still alive a few seconds after its end, or control code
+ * the run left behind: a platform thread the run started (one with the run's class loader as its context loader,
+ * but not one of the JDK's own system threads a run may start, such as the process reaper, which copies it on JDK
+ * 17) still alive a few seconds after its end, or control code
  * still running. A JVM with such a leftover must not run again: its run counts as failed, with that reason, and
  * the JVM ends ({@link HeadlessRuns.Ended#broke()}). A virtual thread that control code starts itself and leaves
  * running is not seen (the JDK lists no virtual threads): it lives on in the worker.
@@ -33,7 +34,7 @@ import java.util.concurrent.TimeUnit;
  * stdout ({@code ended TAB CODE}, or {@code broke TAB CODE TAB REASON} before it exits); it ends at the end of its
  * stdin. Its stdout carries the answers only: {@code System.out} is its stderr between runs. It is started by
  * RoboSim, never by hand: its stdin is its owner's. Threads: {@code main} (reads the requests, answers),
- * {@code run} (one run at a time, in a thread group of its own: the runner's {@code main}).
+ * {@code run} (one run at a time: the runner's {@code main}).
  */
 public final class RunHost {
     /** How long the threads a run started get to end after it, ms (a robot process's grace, and some). */
@@ -54,12 +55,11 @@ public final class RunHost {
         PrintStream err = System.err;
         HeadlessRunner runner = new HeadlessRunner();
         int[] code = {1};
-        ThreadGroup group = new ThreadGroup("run");
         try (OutputStream file = Files.newOutputStream(log, StandardOpenOption.CREATE,
                 StandardOpenOption.TRUNCATE_EXISTING, StandardOpenOption.WRITE);
              PrintStream logged = new PrintStream(file, true, StandardCharsets.UTF_8);
              ControlClassLoader classes = new ControlClassLoader("run", controlPath, RunHost.class.getClassLoader())) {
-            Thread run = new Thread(group, () -> code[0] = HeadlessRunner.commandLine(runner)
+            Thread run = new Thread(() -> code[0] = HeadlessRunner.commandLine(runner)
                     .execute(args.toArray(new String[0])), "run");
             run.setContextClassLoader(classes);
             List<String> left;
@@ -68,7 +68,7 @@ public final class RunHost {
             try {
                 run.start();
                 run.join();
-                left = leftover(group, classes); // (what they print meanwhile still goes into the run's log)
+                left = leftover(classes); // (what they print meanwhile still goes into the run's log)
             } finally {
                 System.setOut(out);
                 System.setErr(err);
@@ -86,17 +86,16 @@ public final class RunHost {
     }
 
     /**
-     * The threads the run started (in its thread group, their context class loader its own) that are still alive once
-     * those that end have had {@link #LEFTOVER_GRACE_MS} to.
+     * The threads the run started (their context class loader its own; a thread started from a virtual thread is in no
+     * group of the run's) that are still alive once those that end have had {@link #LEFTOVER_GRACE_MS} to; not the
+     * JDK's system threads (of the root thread group), which a run may start and which may copy its loader.
      */
-    private static List<String> leftover(ThreadGroup group, ClassLoader runs) throws InterruptedException {
+    private static List<String> leftover(ClassLoader runs) throws InterruptedException {
         long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(LEFTOVER_GRACE_MS);
         List<String> left = new ArrayList<>();
-        Thread[] threads = new Thread[Math.max(16, group.activeCount() * 2)];
-        int n = group.enumerate(threads, true);
-        for (int i = 0; i < n; i++) {
-            Thread t = threads[i];
-            if (t.getContextClassLoader() == runs) {
+        for (Thread t : Thread.getAllStackTraces().keySet()) {
+            ThreadGroup group = t.getThreadGroup();
+            if (t.getContextClassLoader() == runs && group != null && group.getParent() != null) {
                 t.join(Math.max(1, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())));
                 if (t.isAlive()) {
                     left.add(robosim.protocol.Printable.of(t.getName(), 80));
