@@ -5,6 +5,7 @@ import java.net.Socket;
 import java.net.UnknownHostException;
 import robosim.api.RobotControl;
 import robosim.protocol.Connector;
+import robosim.protocol.ControlClasses;
 import robosim.protocol.SimulationKeys;
 
 /** Starts one robot: finds its control class and type, connects, runs until the simulation ends. */
@@ -13,13 +14,12 @@ final class RobotLauncher {
     }
 
     /**
-     * Instantiates a control class by name, found by this thread's context class loader (a warm JVM gives each run
-     * a loader of its own, {@code robosim.runner.ControlClassLoader}; otherwise it is the class path's); a bad
-     * name is an IllegalArgumentException saying why.
+     * Instantiates a control class by name, found where {@link ControlClasses} says; a bad name is an
+     * IllegalArgumentException saying why.
      */
     static RobotControl control(String className) {
         try {
-            return Class.forName(className, true, controlClasses()).asSubclass(RobotControl.class)
+            return Class.forName(className, true, ControlClasses.loader()).asSubclass(RobotControl.class)
                     .getDeclaredConstructor().newInstance();
         } catch (ClassNotFoundException e) {
             throw new IllegalArgumentException("control class " + className + " is not on the class path");
@@ -34,12 +34,6 @@ final class RobotLauncher {
             throw new IllegalArgumentException("control class " + className
                     + " needs a public no-argument constructor");
         }
-    }
-
-    /** Where control classes are found: this thread's context class loader, else the class path's. */
-    static ClassLoader controlClasses() {
-        ClassLoader context = Thread.currentThread().getContextClassLoader();
-        return context != null ? context : RobotLauncher.class.getClassLoader();
     }
 
     /**

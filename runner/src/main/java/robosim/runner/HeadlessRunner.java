@@ -150,7 +150,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 return where + " needs a control class (control=\"...\") for the headless runner";
             }
             try {
-                Class<?> c = Class.forName(r.control(), false, controlClasses());
+                Class<?> c = Class.forName(r.control(), false, robosim.protocol.ControlClasses.loader());
                 if (!RobotControl.class.isAssignableFrom(c)) {
                     return where + ": " + r.control() + " does not implement " + RobotControl.class.getName();
                 }
@@ -160,12 +160,6 @@ public final class HeadlessRunner implements Callable<Integer> {
             }
         }
         return null;
-    }
-
-    /** Where the control classes are: this thread's context class loader (a warm run's own), else the class path's. */
-    private static ClassLoader controlClasses() {
-        ClassLoader context = Thread.currentThread().getContextClassLoader();
-        return context != null ? context : HeadlessRunner.class.getClassLoader();
     }
 
     private int run(WorldSpec spec, ChildProcesses children) throws Exception {

@@ -47,16 +47,15 @@ public final class RobotLaunches implements AutoCloseable {
     }
 
     /**
-     * Why {@code control} could not be a control class on this JVM's class path (as this thread's context class
-     * loader finds it: a warm JVM's run has a loader of its own), or null; {@code whose} says whose class path that
+     * Why {@code control} could not be a control class on this JVM's class path (as
+     * {@link robosim.protocol.ControlClasses} finds it), or null; {@code whose} says whose class path that
      * is ("its robot process would run with"). The class is looked up, never initialised.
      */
     public static String controlClassProblem(String control, String whose) {
         if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
             return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
         }
-        ClassLoader context = Thread.currentThread().getContextClassLoader();
-        ClassLoader loader = context != null ? context : RobotLaunches.class.getClassLoader();
+        ClassLoader loader = robosim.protocol.ControlClasses.loader();
         Class<?> c;
         try {
             c = Class.forName(control, false, loader);

@@ -36,27 +36,32 @@ final class LoopThread {
     }
 
     /**
-     * Starts {@code loop}: virtual when {@code robotsHere} (every robot's control code in this JVM) and this JVM's
-     * virtual threads have one carrier, or as {@link #PROPERTY} says; {@code round} is when the loop last came round
-     * (System.nanoTime), {@code ended} counts down when it is done; a virtual loop is handed {@code tick} every
-     * {@code tickNanos}. Returns true if it is virtual.
+     * Whether the loop is to be virtual: when {@code robotsHere} (every robot's control code in this JVM) and this
+     * JVM's virtual threads have one carrier, or as {@link #PROPERTY} says.
      */
-    static boolean start(Runnable loop, boolean robotsHere, LongSupplier round, CountDownLatch ended, long tickNanos,
-            Runnable tick) {
+    static boolean virtual(boolean robotsHere) {
         String asked = System.getProperty(PROPERTY, "");
-        boolean virtual = VirtualThreads.available() && (asked.equals("virtual")
+        return VirtualThreads.available() && (asked.equals("virtual")
                 || (!asked.equals("platform") && robotsHere && VirtualThreads.oneCarrier()));
+    }
+
+    /**
+     * Starts {@code loop} on a {@code virtual} thread (with its watch) or a platform one; {@code round} is when the
+     * loop last came round (System.nanoTime), {@code ended} counts down when it is done; a virtual loop is handed
+     * {@code tick} every {@code tickNanos}.
+     */
+    static void start(Runnable loop, boolean virtual, LongSupplier round, CountDownLatch ended, long tickNanos,
+            Runnable tick) {
         if (!virtual) {
             Thread t = new Thread(loop, "simulation-loop");
             t.setDaemon(true);
             t.start();
-            return false;
+            return;
         }
         VirtualThreads.start("simulation-loop", loop);
         Thread watch = new Thread(() -> watch(round, ended, tickNanos, tick), "loop-watch");
         watch.setDaemon(true);
         watch.start();
-        return true;
     }
 
     /**

@@ -32,7 +32,8 @@ final class SimulationLoop implements Runnable {
     /** When the loop last came round (System.nanoTime): what {@code loop-watch} watches. */
     private volatile long round = System.nanoTime();
     private final boolean robotsHere;
-    /** The loop is a virtual thread: it waits for its next event, never for a time (its watch ticks it). */
+    /** The loop is a virtual thread: it waits for its next event, never for a time (its watch ticks it). Set before
+     * it starts. */
     private boolean ticked;
     /** A tick's wake is in the inbox, not taken yet (one at a time, however long the loop takes). */
     private final java.util.concurrent.atomic.AtomicBoolean tickWaiting = new java.util.concurrent.atomic.AtomicBoolean();
@@ -67,7 +68,8 @@ final class SimulationLoop implements Runnable {
     void start(Run driven, List<LoopHook> loopHooks) {
         this.run = driven;
         this.hooks = List.copyOf(loopHooks);
-        ticked = LoopThread.start(this, robotsHere, () -> round, ended, tickNanos, () -> {
+        ticked = LoopThread.virtual(robotsHere); // (before the thread starts: it reads it)
+        LoopThread.start(this, ticked, () -> round, ended, tickNanos, () -> {
             if (!tickWaiting.getAndSet(true)) {
                 post(new LoopEvent.Wake());
             }
@@ -119,7 +121,9 @@ final class SimulationLoop implements Runnable {
                 long due = run.paceDue();
                 Inbox.Event<Run> e = pending() ? inbox.poll() : ticked && due == Long.MAX_VALUE ? inbox.take()
                         : inbox.poll(Math.max(0, Math.min(nextTick, due) - now));
-                tickWaiting.set(false);
+                if (ticked) {
+                    tickWaiting.set(false);
+                }
                 // everything queued by now is taken before any deadline is judged (a request or an answer
                 // waiting in the queue is not late), and no more, so a busy queue never starves the deadlines
                 for (int more = e == null ? 0 : inbox.size(); e != null; more--) {
