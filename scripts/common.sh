@@ -60,20 +60,24 @@ robosim_pick_java() {
 }
 
 # Class-data archives (runner/README.md, "How the scripts behave"): on JDK 19 and later each JVM a script
-# starts maps the classes an earlier run of the same main class, class path and options loaded, from a
-# dynamic CDS archive under runner/target/cds/ (per JDK) that such a run wrote at its exit. The directory
-# goes to the processes as ROBOSIM_CDS_DIR (the runner's children use it, ClassDataArchives); empty when
+# starts maps the classes an earlier run of the same main class, class path and options loaded, from an
+# archive under runner/target/cds/ (per JDK): on JDK 25 and later an AOT cache (KEY.aot: the classes loaded
+# and linked, and the methods' profiles), assembled in the background from the configuration such a run
+# recorded at its exit; on JDK 19-24 a dynamic CDS archive (KEY.jsa) written at its exit. The directory goes
+# to the processes as ROBOSIM_CDS_DIR (the runner's children use it, ClassDataArchives); empty when
 # ROBOSIM_CDS=off, on JDK 17 (whose dynamic dump stops the JVM when the JDK's own archive is not mapped)
 # and on a JDK without a default CDS archive.
 robosim_cds_dir() {
   local home=$1
-  ROBOSIM_CDS_DIR=""
+  ROBOSIM_CDS_DIR="" ROBOSIM_CDS_KIND=""
   if [ "${ROBOSIM_CDS:-on}" != off ] && [ -f "$home/lib/server/classes.jsa" ] && [ -f "$home/release" ]; then
     robosim_java_version "$home"
     if [ "$ROBOSIM_JAVA_VERSION" -ge 19 ]; then
       # shellcheck disable=SC2046
       set -- $(cksum <"$home/release")
       ROBOSIM_CDS_DIR="$ROBOSIM_HOME/runner/target/cds/java-$ROBOSIM_JAVA_VERSION-$1"
+      ROBOSIM_CDS_KIND=jsa
+      [ "$ROBOSIM_JAVA_VERSION" -ge 25 ] && ROBOSIM_CDS_KIND=aot
     fi
   fi
   export ROBOSIM_CDS_DIR
@@ -232,15 +236,18 @@ robosim_java() {
 }
 
 # The class-data archive options of the JVM that runs main class $1 on class path $2 (into
-# ROBOSIM_CDS_OPTS; none when ROBOSIM_CDS_DIR is empty): it maps KEY.jsa, the archive of its main
-# class, class path and ROBOSIM_JAVA_OPTS (the key), when that is there and newer than every jar of the
-# class path; else, unless a live process is writing it, it writes it at its exit into KEY.PID.tmp, next
-# to an empty KEY.PID.start that dates its start, for a later start to put in place (robosim_cds_settle).
-# None for a class path with a directory (the JVM refuses to archive those, and says so on every run) or
-# with ROBOSIM_JAVA_OPTS of the user's own about class-data sharing. The JVM's cds log is off: it warns
-# about the classes it cannot archive. The same rules for the runner's children: ClassDataArchives.java.
+# ROBOSIM_CDS_OPTS; none when ROBOSIM_CDS_DIR is empty): it maps KEY.aot or KEY.jsa, the archive of its main
+# class, class path and ROBOSIM_JAVA_OPTS (the key), when that is there and newer than every jar of the class
+# path; else, unless a live process is writing it, it is the key's training run, under a claim: an empty
+# KEY.PID.start that dates its start, next to what it writes at its exit: KEY.PID.aotconf (the AOT
+# configuration, which the next start has assembled, robosim_cds_settle) or KEY.PID.tmp (the dynamic
+# archive, which the next start puts in place). None for a class path with a directory (the JVM refuses to
+# archive those, and says so on every run) or with ROBOSIM_JAVA_OPTS of the user's own about class-data
+# sharing. The JVM's cds and aot logs are off (they warn about the classes it cannot archive), and a training
+# run prints no output of the JVM's own (it would say where it recorded its configuration as it exits). The
+# same rules for the runner's children: ClassDataArchives.java.
 robosim_cds_opts() {
-  local main=$1 cp=$2 dir=${ROBOSIM_CDS_DIR:-} parts=() e key pid
+  local main=$1 cp=$2 dir=${ROBOSIM_CDS_DIR:-} parts=() e key pid quiet=('-Xlog:cds*=off' '-Xlog:aot*=off')
   ROBOSIM_CDS_OPTS=()
   case $dir in ''|*:*) return 0 ;; esac
   IFS=: read -ra parts <<<"${ROBOSIM_CLASSPATH:-}"
@@ -255,12 +262,21 @@ robosim_cds_opts() {
   set -- $(printf '%s\n' "$main" "$cp" "${ROBOSIM_JAVA_OPTS:-}" | cksum)
   key="${main##*.}-$1"
   robosim_cds_settle "$dir" "$cp" "$key"
-  if [ -f "$dir/$key.jsa" ] && [ -z "$(robosim_cds_changed_since "$dir/$key.jsa" "$cp")" ]; then
-    ROBOSIM_CDS_OPTS=("-XX:SharedArchiveFile=$dir/$key.jsa" '-Xlog:cds*=off')
+  if [ -f "$dir/$key.$ROBOSIM_CDS_KIND" ] && [ -z "$(robosim_cds_changed_since "$dir/$key.$ROBOSIM_CDS_KIND" "$cp")" ]; then
+    if [ "$ROBOSIM_CDS_KIND" = aot ]; then
+      ROBOSIM_CDS_OPTS=("-XX:AOTCache=$dir/$key.aot" "${quiet[@]}")
+    else
+      ROBOSIM_CDS_OPTS=("-XX:SharedArchiveFile=$dir/$key.jsa" "${quiet[@]}")
+    fi
   elif [ "$ROBOSIM_CDS_BUSY" = 0 ]; then
     pid=${BASHPID:-$$} # (the JVM's: exec keeps it)
     if (: >"$dir/$key.$pid.start") 2>/dev/null; then
-      ROBOSIM_CDS_OPTS=("-XX:ArchiveClassesAtExit=$dir/$key.$pid.tmp" '-Xlog:cds*=off')
+      if [ "$ROBOSIM_CDS_KIND" = aot ]; then
+        ROBOSIM_CDS_OPTS=(-XX:AOTMode=record "-XX:AOTConfiguration=$dir/$key.$pid.aotconf" "${quiet[@]}"
+          -XX:+UnlockDiagnosticVMOptions -XX:-DisplayVMOutput)
+      else
+        ROBOSIM_CDS_OPTS=("-XX:ArchiveClassesAtExit=$dir/$key.$pid.tmp" "${quiet[@]}")
+      fi
     fi
   fi
 }
@@ -276,38 +292,77 @@ robosim_cds_changed_since() {
   find "${paths[@]}" -maxdepth 1 -newer "$1" -print -quit 2>/dev/null
 }
 
-# Settles the archive writes of KEY $3 in directory $1 (of JVMs on class path $2) whose writer has
-# ended (the pid its ID starts with is gone, or the claim is over an hour old): KEY.ID.tmp becomes
-# KEY.jsa (a rename: a JVM never maps a file being written) when it is whole (the JVM writes an
-# archive's header, with its magic number, last) and no jar changed since KEY.ID.start; else it is
-# removed. Then archives older than the runner's jar (the last build) go, and any claim left over an
-# hour old. Sets ROBOSIM_CDS_BUSY to 1 when a live process is writing KEY's archive, else 0.
+# The first four bytes of file $1 in hex, as the machine orders them (an archive's magic number).
+robosim_magic() {
+  od -An -tx4 -N4 "$1" 2>/dev/null | tr -d ' '
+}
+
+# Settles the claims on KEY $3 in directory $1 (of JVMs on class path $2) whose writer has ended (the pid in
+# KEY.ID.start, else the one ID starts with, is gone, or the claim is over an hour old): KEY.ID.tmp becomes
+# the archive (a rename: a JVM never maps a file being written) when it is whole (the JVM writes an
+# archive's header, with its magic number, last) and no jar changed since KEY.ID.start; else it is removed.
+# A training run's whole configuration (KEY.ID.aotconf) of unchanged jars is assembled into the cache by a
+# JVM started in the background under a claim of its own (its pid in its .start; it puts the cache in place
+# itself, and an assembly that fails is not tried again); the run that found it does not wait for it. Then
+# archives older than the runner's jar (the last build) go, and any claim left over an hour old. Sets
+# ROBOSIM_CDS_BUSY to 1 when a live process is writing KEY's archive, else 0.
 robosim_cds_settle() {
-  local dir=$1 cp=$2 key=$3 start id pid settled=0
+  local dir=$1 cp=$2 key=$3 start id pid owner settled=0
   ROBOSIM_CDS_BUSY=0
   for start in "$dir/$key".*.start; do
     [ -f "$start" ] || continue
     id=${start%.start}
     id=${id##*.}
-    pid=${id%%-*}
+    owner=""
+    read -r owner <"$start" 2>/dev/null
+    pid=${owner:-${id%%-*}}
     if kill -0 "$pid" 2>/dev/null && [ -z "$(find "$start" -mmin +60 2>/dev/null)" ]; then
       ROBOSIM_CDS_BUSY=1
       continue
     fi
-    if [ "$(od -An -tx4 -N4 "$dir/$key.$id.tmp" 2>/dev/null | tr -d ' ')" = f00baba8 ] \
+    if [ -f "$dir/$key.$id.tmp" ]; then
+      if [ "$(robosim_magic "$dir/$key.$id.tmp")" = "$( [ "$ROBOSIM_CDS_KIND" = aot ] && echo f00baba2 || echo f00baba8)" ] \
+        && [ -z "$(robosim_cds_changed_since "$start" "$cp")" ]; then
+        mv -f "$dir/$key.$id.tmp" "$dir/$key.$ROBOSIM_CDS_KIND" 2>/dev/null
+      else
+        rm -f "$dir/$key.$id.tmp"
+      fi
+    elif [ -z "$owner" ] && [ "$ROBOSIM_CDS_KIND" = aot ] && [ "$(robosim_magic "$dir/$key.$id.aotconf")" = cafea07c ] \
       && [ -z "$(robosim_cds_changed_since "$start" "$cp")" ]; then
-      mv -f "$dir/$key.$id.tmp" "$dir/$key.jsa" 2>/dev/null
-    else
-      rm -f "$dir/$key.$id.tmp"
+      robosim_cds_assemble "$dir" "$cp" "$key" "$dir/$key.$id.aotconf"
+      ROBOSIM_CDS_BUSY=1 # (the assembler takes the configuration: it is not removed here)
+      rm -f "$start"
+      settled=1
+      continue
     fi
-    rm -f "$start"
+    rm -f "$start" "$dir/$key.$id.aotconf"
     settled=1
   done
   if [ "$settled" = 1 ]; then
-    find "$dir" -maxdepth 1 \( -name '*.jsa' ! -newer "$(robosim_runner_jar)" -o -name '*.tmp' -mmin +60 \
-      -o -name '*.start' -mmin +60 \) -exec rm -f {} + 2>/dev/null
+    find "$dir" -maxdepth 1 \( \( -name '*.jsa' -o -name '*.aot' \) ! -newer "$(robosim_runner_jar)" \
+      -o \( -name '*.tmp' -o -name '*.aotconf' -o -name '*.start' \) -mmin +60 \) -exec rm -f {} + 2>/dev/null
   fi
   return 0
+}
+
+# Assembles the AOT cache of KEY $3 in directory $1 (class path $2) from configuration $4, in the background:
+# a subshell that claims KEY.PID.start (its pid, which java keeps, written in it), takes the configuration
+# (a rename: of two starts that found it, one takes it), runs java -XX:AOTMode=create into KEY.PID.tmp and
+# puts the cache in place when it is done; its output goes nowhere, and the user's Ctrl-C does not stop it.
+robosim_cds_assemble() {
+  local dir=$1 cp=$2 key=$3 configuration=$4
+  (
+    trap '' INT
+    pid=$BASHPID
+    echo "$pid" >"$dir/$key.$pid.start" && mv "$configuration" "$dir/$key.$pid.aotconf" || { rm -f "$dir/$key.$pid.start"; exit 1; }
+    # shellcheck disable=SC2086
+    if java ${ROBOSIM_JAVA_OPTS:-} -XX:AOTMode=create "-XX:AOTConfiguration=$dir/$key.$pid.aotconf" \
+      "-XX:AOTCache=$dir/$key.$pid.tmp" '-Xlog:cds*=off' '-Xlog:aot*=off' -cp "$cp" \
+      && [ "$(robosim_magic "$dir/$key.$pid.tmp")" = f00baba2 ] && [ -z "$(robosim_cds_changed_since "$dir/$key.$pid.start" "$cp")" ]; then
+      mv -f "$dir/$key.$pid.tmp" "$dir/$key.aot"
+    fi
+    rm -f "$dir/$key.$pid.tmp" "$dir/$key.$pid.aotconf" "$dir/$key.$pid.start"
+  ) </dev/null >/dev/null 2>&1 &
 }
 
 # For the screenshot scripts: makes sure Xvfb is there (installs Debian's xvfb when we are root).

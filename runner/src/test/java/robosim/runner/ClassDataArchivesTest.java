@@ -45,26 +45,26 @@ class ClassDataArchivesTest {
 
     @Test
     void theFirstChildWritesTheArchiveAtItsExitAndTheNextMapsIt() throws IOException {
-        ClassDataArchives archives = new ClassDataArchives(dir);
+        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC);
         ClassDataArchives.Launch first = archives.launch(MAIN, classPath, OPTIONS);
         Path written = writtenBy(first);
-        assertTrue(first.options().contains(ClassDataArchives.QUIET), first.options().toString());
+        assertTrue(first.options().containsAll(ClassDataArchives.QUIET), first.options().toString());
         assertTrue(written.getFileName().toString().startsWith("EnvironmentMain-"), written.toString());
 
         writeWholeArchive(written);
         first.finish();
         Path archive = dir.resolve(ClassDataArchives.key(MAIN, classPath, OPTIONS) + ".jsa");
         assertEquals(List.of(archive), files(), "only the archive is left");
-        assertEquals(List.of("-XX:SharedArchiveFile=" + archive, ClassDataArchives.QUIET),
+        assertEquals(mapping(archive),
                 archives.launch(MAIN, classPath, OPTIONS).options());
     }
 
     @Test
     void whileOneChildWritesTheArchiveTheOthersRunWithout() throws IOException {
-        ClassDataArchives archives = new ClassDataArchives(dir);
+        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC);
         writtenBy(archives.launch(MAIN, classPath, OPTIONS));
         assertEquals(List.of(), archives.launch(MAIN, classPath, OPTIONS).options());
-        assertEquals(List.of(), new ClassDataArchives(dir).launch(MAIN, classPath, OPTIONS).options(),
+        assertEquals(List.of(), new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC).launch(MAIN, classPath, OPTIONS).options(),
                 "another runner of the same key waits too");
         writtenBy(archives.launch(MAIN, classPath, List.of("-XX:+UseParallelGC"))); // another key
     }
@@ -78,14 +78,14 @@ class ClassDataArchivesTest {
         Files.createFile(dir.resolve(key + "." + ended.pid() + "-1.start"));
         writeWholeArchive(dir.resolve(key + "." + ended.pid() + "-1.tmp"));
         Path archive = dir.resolve(key + ".jsa");
-        assertEquals(List.of("-XX:SharedArchiveFile=" + archive, ClassDataArchives.QUIET),
-                new ClassDataArchives(dir).launch(MAIN, classPath, OPTIONS).options());
+        assertEquals(mapping(archive),
+                new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC).launch(MAIN, classPath, OPTIONS).options());
         assertEquals(List.of(archive), files());
     }
 
     @Test
     void anArchiveCutShortIsDroppedNeverPutInPlace() throws IOException {
-        ClassDataArchives.Launch first = new ClassDataArchives(dir).launch(MAIN, classPath, OPTIONS);
+        ClassDataArchives.Launch first = new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC).launch(MAIN, classPath, OPTIONS);
         Files.write(writtenBy(first), new byte[4096]); // (the JVM writes the header, with its magic, last)
         first.finish();
         assertEquals(List.of(), files());
@@ -93,7 +93,7 @@ class ClassDataArchivesTest {
 
     @Test
     void anArchiveOfAJarThatChangedDuringTheRunIsDropped() throws IOException {
-        ClassDataArchives.Launch first = new ClassDataArchives(dir).launch(MAIN, classPath, OPTIONS);
+        ClassDataArchives.Launch first = new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC).launch(MAIN, classPath, OPTIONS);
         writeWholeArchive(writtenBy(first));
         Files.setLastModifiedTime(jar, FileTime.from(Instant.now().plusSeconds(5)));
         first.finish();
@@ -102,7 +102,7 @@ class ClassDataArchivesTest {
 
     @Test
     void anArchiveOlderThanAJarIsNotMappedButWrittenAgain() throws IOException {
-        ClassDataArchives archives = new ClassDataArchives(dir);
+        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC);
         ClassDataArchives.Launch first = archives.launch(MAIN, classPath, OPTIONS);
         writeWholeArchive(writtenBy(first));
         first.finish();
@@ -112,13 +112,56 @@ class ClassDataArchivesTest {
 
     @Test
     void noArchivesWithoutADirectoryForAClassDirectoryOrWithTheUsersOwnSharingOptions() throws IOException {
-        assertEquals(List.of(), new ClassDataArchives(null).launch(MAIN, classPath, OPTIONS).options());
-        ClassDataArchives archives = new ClassDataArchives(dir);
+        assertEquals(List.of(), new ClassDataArchives(null, ClassDataArchives.Kind.DYNAMIC).launch(MAIN, classPath, OPTIONS).options());
+        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.DYNAMIC);
         assertEquals(List.of(), archives.launch(MAIN, classPath + File.pathSeparator + tmp, OPTIONS).options());
         for (String own : List.of("-Xshare:off", "-XX:SharedArchiveFile=app.jsa", "-XX:AOTCache=app.aot")) {
             assertEquals(List.of(), archives.launch(MAIN, classPath, List.of(own)).options(), own);
         }
         assertFalse(Files.exists(dir), "nothing written");
+    }
+
+    @Test
+    void onJdk25TheTrainingRunRecordsAConfigurationAndTheCacheIsAssembledFromItOnce() throws Exception {
+        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.AOT);
+        ClassDataArchives.Launch first = archives.launch(MAIN, classPath, OPTIONS);
+        String prefix = "-XX:AOTConfiguration=";
+        Path configuration = Path.of(first.options().stream().filter(o -> o.startsWith(prefix)).findFirst()
+                .orElseThrow(() -> new AssertionError("should record: " + first.options())).substring(prefix.length()));
+        assertTrue(first.options().containsAll(List.of("-XX:AOTMode=record", "-XX:-DisplayVMOutput")),
+                "a training run prints nothing of the JVM's own: " + first.options());
+        assertEquals(List.of(), archives.launch(MAIN, classPath, OPTIONS).options(), "one training run at a time");
+
+        // a whole configuration of jars that are not real: the assembler (this JDK's java) fails, and is not tried again
+        Files.write(configuration, ByteBuffer.allocate(4096).order(ByteOrder.nativeOrder())
+                .putInt(ClassDataArchives.CONFIGURATION_MAGIC).array());
+        first.finish();
+        List<Path> claims = files();
+        assertEquals(2, claims.size(), "the assembler's claim and configuration: " + claims);
+        Path start = claims.stream().filter(p -> p.toString().endsWith(".start")).findFirst().orElseThrow();
+        long assembler = Long.parseLong(Files.readString(start).strip());
+        ProcessHandle.of(assembler).ifPresent(p -> p.onExit().join());
+        ClassDataArchives.Launch again = archives.launch(MAIN, classPath, OPTIONS);
+        assertTrue(again.options().contains("-XX:AOTMode=record"), "trained again: " + again.options());
+        assertEquals(1, files().size(), "the failed assembly left nothing: " + files());
+    }
+
+    @Test
+    void onJdk25ACacheIsMappedWithTheAotOption() throws IOException {
+        String key = ClassDataArchives.key(MAIN, classPath, OPTIONS);
+        Files.createDirectories(dir);
+        Path cache = dir.resolve(key + ".aot");
+        Files.write(cache, new byte[16]);
+        List<String> options = new ClassDataArchives(dir, ClassDataArchives.Kind.AOT).launch(MAIN, classPath, OPTIONS)
+                .options();
+        assertEquals("-XX:AOTCache=" + cache, options.get(0));
+        assertTrue(options.containsAll(ClassDataArchives.QUIET), options.toString());
+    }
+
+    private static List<String> mapping(Path archive) {
+        List<String> options = new java.util.ArrayList<>(List.of("-XX:SharedArchiveFile=" + archive));
+        options.addAll(ClassDataArchives.QUIET);
+        return options;
     }
 
     /** The file {@code launch} writes its archive to (and checks that it writes one). */
@@ -133,7 +176,7 @@ class ClassDataArchivesTest {
     private static void writeWholeArchive(Path file) throws IOException {
         ByteBuffer whole = ByteBuffer.allocate(4096).order(ByteOrder.nativeOrder()).putInt(0xf00baba8);
         Files.write(file, whole.array());
-        assertTrue(ClassDataArchives.whole(file));
+        assertTrue(ClassDataArchives.whole(file, ClassDataArchives.Kind.DYNAMIC.magic));
     }
 
     private List<Path> files() throws IOException {
