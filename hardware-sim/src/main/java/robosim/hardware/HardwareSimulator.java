@@ -41,7 +41,7 @@ public final class HardwareSimulator {
     private RobotWelcome welcome;
     private long steps;
     private String endReason = "";
-    private volatile String controlFailure;
+    private volatile ControlFailure controlFailure;
 
     /** @param type its type, or null: any type, the one the environment file gives it (ArRobot or Scout) */
     public HardwareSimulator(String name, RobotType type) {
@@ -296,8 +296,7 @@ public final class HardwareSimulator {
             LOG.debug("{}: control code stopped", name);
         } catch (Exception | Error e) {
             if (!link.over()) { // (what it throws once the simulation is over, told by an interrupt, is no failure)
-                String what = e.getClass().getName() + (e.getMessage() == null ? "" : ": " + e.getMessage());
-                controlFailure = what.replaceAll("\\s+", " "); // (one line: a runner reads it from stderr)
+                controlFailure = new ControlFailure(name, steps, e);
             }
             LOG.error("{}: control code failed; the robot stands still", name, e);
         } finally {
@@ -309,8 +308,14 @@ public final class HardwareSimulator {
         return link;
     }
 
-    /** What its control code threw out of {@code run} (its class and message), or null if it did not. */
+    /** What its control code threw out of {@code run} (its class and message, one line), or null if it did not. */
     public String controlFailure() {
+        ControlFailure f = controlFailure;
+        return f == null ? null : f.summary();
+    }
+
+    /** What its control code threw out of {@code run}, and when, or null if it did not. */
+    public ControlFailure failure() {
         return controlFailure;
     }
 

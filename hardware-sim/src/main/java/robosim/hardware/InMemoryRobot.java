@@ -92,6 +92,11 @@ final class InMemoryRobot implements InMemoryLink.Robot {
         return failure == null ? null : sim.name() + ": " + failure;
     }
 
+    /** What its control code threw out of run, and when, or null if it did not (yet). */
+    ControlFailure failure() {
+        return sim.failure();
+    }
+
     String name() {
         return sim.name();
     }

@@ -44,6 +44,20 @@ public final class InMemoryRobots implements InMemoryLink.Starter {
         return new InMemoryLink.ControlEnd(failed, running);
     }
 
+    /** What the control code of each robot this starter started threw out of {@code run} so far, in start order. */
+    public List<ControlFailure> failures() {
+        List<ControlFailure> failures = new ArrayList<>();
+        synchronized (started) {
+            for (InMemoryRobot r : started) {
+                ControlFailure f = r.failure();
+                if (f != null) {
+                    failures.add(f);
+                }
+            }
+        }
+        return failures;
+    }
+
     /**
      * A robot named {@code name} of {@code type} ({@code ArRobot}, {@code Scout} or a RobotType class) running
      * {@code control}, an object of the caller's (the testkit), whose requests go to {@code environment}.

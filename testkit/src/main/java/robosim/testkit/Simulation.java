@@ -6,18 +6,22 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Predicate;
 import robosim.api.RobotControl;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.Parameters;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.net.RunStatus;
 import robosim.environment.net.Settings;
+import robosim.hardware.ControlFailure;
 import robosim.hardware.InMemoryRobots;
 import robosim.protocol.InMemoryLink;
 
@@ -27,7 +31,11 @@ import robosim.protocol.InMemoryLink;
  * {@code headless.sh --one-jvm} (the same steps as a run of separate processes). Build it from an environment
  * file or a {@link World} built in code, give robots control objects of your own (or let them run the file's
  * control classes), then run it a number of steps or until a condition holds, and ask where each robot is,
- * what it sensed, which messages it received and what it touched.
+ * what it sensed, which messages it received, what it touched and what it reported.
+ *
+ * <p>A robot whose control code throws out of {@code run} fails the test: the next {@link #run}, {@link #runUntil}
+ * or {@link #close} throws an {@link AssertionError} naming the robot and the step, with what it threw as its
+ * cause, unless the builder was told to expect it ({@link Builder#expectFailure}); {@link #failure} asks.
  *
  * <pre>{@code
  * try (Simulation sim = Simulation.of(World.arena(4, 4).robot("r1", "Scout", 1, 2, 0))
@@ -42,12 +50,20 @@ import robosim.protocol.InMemoryLink;
 public final class Simulation implements AutoCloseable {
     private final ClientWorkerCoordinator coordinator;
     private final Map<String, WatchedRobot> robots;
+    private final InMemoryRobots hardware;
     private final long waitMs;
+    /** The robots whose control code may fail without failing the test. */
+    private final Set<String> expected;
+    /** The robots whose control code's failure has failed the test already (it is said once). */
+    private final Set<String> said = new HashSet<>();
 
-    private Simulation(ClientWorkerCoordinator coordinator, Map<String, WatchedRobot> robots, long waitMs) {
+    private Simulation(ClientWorkerCoordinator coordinator, Map<String, WatchedRobot> robots, InMemoryRobots hardware,
+            long waitMs, Set<String> expected) {
         this.coordinator = coordinator;
         this.robots = robots;
+        this.hardware = hardware;
         this.waitMs = waitMs;
+        this.expected = expected;
     }
 
     /**
@@ -57,27 +73,37 @@ public final class Simulation implements AutoCloseable {
      * @throws IllegalArgumentException naming the file, the line and what is wrong with it
      */
     public static Builder of(Path file) {
+        return new Builder(load(file, Map.of()), file);
+    }
+
+    /** A simulation of a world built in code; every robot needs a control object ({@link Builder#control}). */
+    public static Builder of(World world) {
+        return new Builder(world.spec(), null);
+    }
+
+    private static WorldSpec load(Path file, Map<String, String> params) {
         try {
-            return new Builder(new EnvironmentLoader().load(file));
+            return new EnvironmentLoader().load(file, params);
         } catch (EnvironmentFileException e) {
             throw new IllegalArgumentException(e.getMessage(), e);
         }
     }
 
-    /** A simulation of a world built in code; every robot needs a control object ({@link Builder#control}). */
-    public static Builder of(World world) {
-        return new Builder(world.spec());
-    }
-
     /** How a {@link Simulation} starts. */
     public static final class Builder {
         private final WorldSpec spec;
+        /** The environment file, or null for a world built in code. */
+        private final Path file;
         private final Map<String, RobotControl> controls = new HashMap<>();
+        private final Map<String, String> params = new LinkedHashMap<>();
+        private final Set<String> expected = new HashSet<>();
+        private Long seed;
         private Duration stepTimeout = Duration.ofSeconds(10);
         private Duration wait = Duration.ofMinutes(10);
 
-        private Builder(WorldSpec spec) {
+        private Builder(WorldSpec spec, Path file) {
             this.spec = spec;
+            this.file = file;
         }
 
         /** Robot {@code robot} runs {@code control} (this object, not a new instance of the file's class). */
@@ -86,6 +112,45 @@ public final class Simulation implements AutoCloseable {
                 throw new IllegalArgumentException("no robot named \"" + robot + "\" in " + spec.source());
             }
             controls.put(robot, control);
+            return this;
+        }
+
+        /**
+         * The control code's parameter {@code name} is {@code value} ({@code Robot.parameter}), as {@code --param}
+         * gives it: for a file, a {@code ${NAME:default}} placeholder or a {@code <param>} of its world (an
+         * unknown name is an IllegalArgumentException at {@link #start}, naming the file's parameters); for a world
+         * built in code, a parameter of every robot.
+         */
+        public Builder param(String name, String value) {
+            params.put(name, value);
+            return this;
+        }
+
+        /** As {@link #param(String, String)}, a whole number. */
+        public Builder param(String name, long value) {
+            return param(name, Long.toString(value));
+        }
+
+        /** As {@link #param(String, String)}, a number. */
+        public Builder param(String name, double value) {
+            return param(name, Double.toString(value));
+        }
+
+        /** The run's seed (over the file's or the world's), as a sweep's or {@code --seed} gives it. */
+        public Builder seed(long seed) {
+            this.seed = seed;
+            return this;
+        }
+
+        /**
+         * Robot {@code robot}'s control code may throw out of {@code run} without failing the test (the robot then
+         * stands still); {@link Simulation#failure} says whether it did.
+         */
+        public Builder expectFailure(String robot) {
+            if (spec.indexOf(robot) < 0) {
+                throw new IllegalArgumentException("no robot named \"" + robot + "\" in " + spec.source());
+            }
+            expected.add(robot);
             return this;
         }
 
@@ -111,6 +176,14 @@ public final class Simulation implements AutoCloseable {
          * @throws IllegalArgumentException naming a robot without control code, or one that cannot start
          */
         public Simulation start() {
+            WorldSpec spec = this.spec;
+            if (!params.isEmpty()) {
+                spec = file != null ? load(file, params) : spec.withParameters(new Parameters(
+                        join(spec.parameters().world(), params), spec.parameters().robots()));
+            }
+            if (seed != null) {
+                spec = spec.withSeed(seed);
+            }
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 if (!controls.containsKey(r.name()) && r.control().isBlank()) {
                     throw new IllegalArgumentException("robot " + r.name() + " of " + spec.source()
@@ -124,8 +197,10 @@ public final class Simulation implements AutoCloseable {
                 public InMemoryLink.Robot start(String name, String type, String controlClass,
                         InMemoryLink.Environment environment) {
                     RobotControl given = controls.get(name);
-                    WatchedRobot w = new WatchedRobot(given != null ? robots.start(name, type, given, environment)
-                            : robots.start(name, type, controlClass, environment), name);
+                    WatchedRobot w = new WatchedRobot(name);
+                    InMemoryLink.Environment seen = w.environment(environment);
+                    w.attach(given != null ? robots.start(name, type, given, seen)
+                            : robots.start(name, type, controlClass, seen));
                     watched.put(name, w);
                     return w;
                 }
@@ -144,7 +219,7 @@ public final class Simulation implements AutoCloseable {
             }
             ClientWorkerCoordinator c = new ClientWorkerCoordinator(spec, settings);
             c.startPaused();
-            Simulation sim = new Simulation(c, watched, Math.max(1, wait.toMillis()));
+            Simulation sim = new Simulation(c, watched, robots, Math.max(1, wait.toMillis()), Set.copyOf(expected));
             try {
                 c.start();
                 c.startRobotsInThisJvm();
@@ -163,6 +238,12 @@ public final class Simulation implements AutoCloseable {
                 throw new IllegalStateException("interrupted while the simulation started", e);
             }
             return sim;
+        }
+
+        private static Map<String, String> join(Map<String, String> world, Map<String, String> given) {
+            Map<String, String> all = new LinkedHashMap<>(world);
+            all.putAll(given);
+            return all;
         }
     }
 
@@ -188,6 +269,7 @@ public final class Simulation implements AutoCloseable {
             Thread.currentThread().interrupt();
             throw new IllegalStateException("interrupted after step " + steps(), e);
         }
+        failIfControlFailed();
         if (at < wanted) {
             RunStatus s = coordinator.status();
             throw new IllegalStateException(s.state() == RunStatus.State.ENDED
@@ -241,6 +323,38 @@ public final class Simulation implements AutoCloseable {
         return watched(robot).contacts();
     }
 
+    /**
+     * What {@code robot}'s control code threw out of {@code run} so far, and at which step (steps completed, as
+     * {@link #steps}), or null if it did not.
+     */
+    public ControlFailure failure(String robot) {
+        watched(robot);
+        for (ControlFailure f : hardware.failures()) {
+            if (f.robot().equals(robot)) {
+                return f;
+            }
+        }
+        return null;
+    }
+
+    /** Whether {@code robot}'s control code threw out of {@code run} so far. */
+    public boolean failed(String robot) {
+        return failure(robot) != null;
+    }
+
+    /**
+     * The newest value {@code robot} reported under {@code name} ({@code Robot.report}) with its requests for the
+     * steps run so far, or null if it reported none.
+     */
+    public Double reported(String robot, String name) {
+        return watched(robot).reports().get(name);
+    }
+
+    /** Everything {@code robot} reported so far: the newest value of each name, in the order first reported. */
+    public Map<String, Double> reports(String robot) {
+        return watched(robot).reports();
+    }
+
     /** Why the simulation is over for {@code robot} (dropped, the end), or null while it takes part. */
     public String ended(String robot) {
         return watched(robot).end();
@@ -262,6 +376,8 @@ public final class Simulation implements AutoCloseable {
     /**
      * Ends the simulation: every control code is told (its blocked call throws) and gets up to 2 s to end (its
      * {@code finally} blocks), the ports close.
+     *
+     * @throws AssertionError if a robot's control code threw out of {@code run} (not expected, not said yet)
      */
     @Override
     public void close() {
@@ -270,6 +386,17 @@ public final class Simulation implements AutoCloseable {
             coordinator.awaitControlCode(2000);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
+        }
+        failIfControlFailed();
+    }
+
+    /** Fails the test with the first failure of control code not expected and not said yet. */
+    private void failIfControlFailed() {
+        for (ControlFailure f : hardware.failures()) {
+            if (!expected.contains(f.robot()) && said.add(f.robot())) {
+                throw new AssertionError("robot " + f.robot() + ": its control code failed at step " + f.step() + ": "
+                        + f.summary() + " (expectFailure(\"" + f.robot() + "\") if the test expects it)", f.thrown());
+            }
         }
     }
 }

@@ -1,11 +1,14 @@
 package robosim.testkit;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import robosim.protocol.CommEvent;
 import robosim.protocol.InMemoryLink;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotWelcome;
+import robosim.protocol.Report;
 import robosim.protocol.SensorReading;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
@@ -13,22 +16,47 @@ import robosim.protocol.StepResponse;
 
 /**
  * One robot of a {@link Simulation} as the test sees it: its Hardware Simulator's end of the in-memory link,
- * with what the Environment told it kept on the way (its pose, its last readings, every message and contact).
- * The Environment's loop writes; the test reads once a step it asked for is out (the loop's answer orders
- * the two), under this object's lock all the same.
+ * with what the Environment told it kept on the way (its pose, its last readings, every message and contact)
+ * and what it reported in its requests (the newest value of each name; a request goes out from the loop's
+ * thread or, through {@link #environment}, from its control thread). Those threads write; the test reads once a
+ * step it asked for is out (the loop's answer orders the two), under this object's lock all the same.
  */
 final class WatchedRobot implements InMemoryLink.Robot {
-    private final InMemoryLink.Robot robot;
+    private InMemoryLink.Robot robot;
     private final String name;
+    private final Map<String, Double> reports = new LinkedHashMap<>();
     private Pose pose;
     private StepResponse last;
     private final List<Received> received = new ArrayList<>();
     private final List<Contact> contacts = new ArrayList<>();
     private String end;
 
-    WatchedRobot(InMemoryLink.Robot robot, String name) {
-        this.robot = robot;
+    WatchedRobot(String name) {
         this.name = name;
+    }
+
+    /** Its Hardware Simulator's end, once started (before the Environment uses this robot). */
+    void attach(InMemoryLink.Robot started) {
+        robot = started;
+    }
+
+    /** {@code environment}, seeing the requests the robot's control thread sends it. */
+    InMemoryLink.Environment environment(InMemoryLink.Environment environment) {
+        return request -> {
+            requested(request);
+            environment.request(request);
+        };
+    }
+
+    private StepRequest requested(StepRequest request) {
+        if (request != null && !request.reports().isEmpty()) {
+            synchronized (this) {
+                for (Report r : request.reports()) {
+                    reports.put(r.name(), r.value());
+                }
+            }
+        }
+        return request;
     }
 
     @Override
@@ -48,7 +76,7 @@ final class WatchedRobot implements InMemoryLink.Robot {
 
     @Override
     public StepRequest step(long k) {
-        return robot.step(k);
+        return requested(robot.step(k));
     }
 
     @Override
@@ -63,7 +91,7 @@ final class WatchedRobot implements InMemoryLink.Robot {
                 contacts.add(new Contact(response.step(), response.contact()));
             }
         }
-        return robot.respond(response, next);
+        return requested(robot.respond(response, next));
     }
 
     @Override
@@ -105,6 +133,11 @@ final class WatchedRobot implements InMemoryLink.Robot {
 
     synchronized List<Contact> contacts() {
         return List.copyOf(contacts);
+    }
+
+    /** The newest value of each name it reported, in the order first reported. */
+    synchronized Map<String, Double> reports() {
+        return new LinkedHashMap<>(reports);
     }
 
     /** Why the simulation ended for it, or null while it takes part. */

@@ -137,13 +137,99 @@ class SimulationTest {
         try (Simulation sim = Simulation.of(World.arena(6, 4).robot("spin", "Scout", 1, 1, 0)
                 .robot("crash", "Scout", 1, 3, 0).robot("go", "Scout", 3, 2, 0))
                 .control("spin", new Spinner()).control("crash", new Crasher()).control("go", new AheadOneMetre())
-                .stepTimeout(java.time.Duration.ofMillis(500)).start()) {
+                .expectFailure("crash").stepTimeout(java.time.Duration.ofMillis(500)).start()) {
             sim.run(30);
             assertNotNull(sim.ended("spin"), "the spinning robot still takes part");
             assertEquals(null, sim.ended("crash"), "a control class that threw stands still, it is not dropped");
+            assertTrue(sim.failed("crash") && !sim.failed("go"));
+            assertEquals(0, sim.failure("crash").step());
             assertEquals(new Pose(1000, 3000, 0), sim.pose("crash"));
             assertEquals(4000, sim.pose("go").xMm(), 1e-6);
         }
+    }
+
+    /** Drives 100 mm, then has a bug. */
+    static final class BugAfterAMove implements RobotControl {
+        @Override
+        public void run(Robot robot) throws InterruptedException {
+            robot.move(100);
+            String nothing = null;
+            robot.report("length", nothing.length());
+        }
+    }
+
+    @Test
+    void controlCodeThatThrowsFailsTheTestNamingTheRobotAndTheStepWithWhatItThrewAsTheCause() {
+        AssertionError failed;
+        Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 1, 0).robot("b", "Scout", 1, 3, 0))
+                .control("a", new BugAfterAMove()).control("b", new AheadOneMetre()).start();
+        try (sim) {
+            failed = assertThrows(AssertionError.class, () -> sim.run(50));
+            assertTrue(sim.failed("a") && !sim.failed("b"));
+            long step = sim.failure("a").step();
+            assertTrue(step > 0 && step < 50, "the move took some steps: " + step);
+            assertTrue(failed.getMessage().startsWith("robot a: its control code failed at step " + step
+                    + ": java.lang.NullPointerException"), failed.getMessage());
+            assertTrue(failed.getCause() instanceof NullPointerException, String.valueOf(failed.getCause()));
+            sim.run(5); // (said once: the test may go on)
+        }
+    }
+
+    @Test
+    void aTestThatExpectsAFailureAsksForIt() {
+        try (Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 1, 0))
+                .control("a", new BugAfterAMove()).expectFailure("a").start()) {
+            assertTrue(sim.runUntil(s -> s.failed("a"), 100));
+            assertTrue(sim.failure("a").thrown() instanceof NullPointerException);
+            assertEquals("a", sim.failure("a").robot());
+        }
+    }
+
+    /** Reports the parameter "speed" and the seed it was given, then drives. */
+    static final class SaysItsParameter implements RobotControl {
+        @Override
+        public void run(Robot robot) throws InterruptedException {
+            robot.report("speed", robot.parameter("speed", 0.0));
+            robot.report("seed", robot.seed());
+            robot.move(100);
+        }
+    }
+
+    @Test
+    void aWorldInCodeTakesParametersAndASeedAndTheTestReadsWhatItsRobotsReported() {
+        double seedOf1;
+        try (Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 1, 0))
+                .control("a", new SaysItsParameter()).param("speed", 900).seed(1).start()) {
+            assertEquals(null, sim.reported("a", "speed"), "nothing reported before the first step");
+            sim.run(3);
+            assertEquals(900.0, sim.reported("a", "speed"));
+            assertEquals(List.of("speed", "seed"), List.copyOf(sim.reports("a").keySet()));
+            seedOf1 = sim.reported("a", "seed");
+        }
+        try (Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 1, 0))
+                .control("a", new SaysItsParameter()).seed(2).start()) {
+            sim.run(3);
+            assertEquals(0.0, sim.reported("a", "speed"), "no parameter: the default");
+            assertTrue(sim.reported("a", "seed") != seedOf1, "another run seed, another robot seed");
+        }
+    }
+
+    @Test
+    void anEnvironmentFileTakesItsParameterAndASeedAndItsRobotsReports() {
+        Path wander = Path.of("..", "test-envs", "wander.xml");
+        Pose fast;
+        try (Simulation sim = Simulation.of(wander).param("speed", 900).seed(3).start()) {
+            sim.run(300);
+            assertNotNull(sim.reported("w1", "turns"), "w1 turned in 30 s: " + sim.reports("w1"));
+            fast = sim.pose("w1");
+        }
+        try (Simulation sim = Simulation.of(wander).param("speed", 200).seed(3).start()) {
+            sim.run(300);
+            assertFalse(fast.equals(sim.pose("w1")), "another speed, another run");
+        }
+        IllegalArgumentException unknown = assertThrows(IllegalArgumentException.class,
+                () -> Simulation.of(wander).param("sped", 900).start());
+        assertTrue(unknown.getMessage().contains("sped"), unknown.getMessage());
     }
 
     @Test

@@ -77,6 +77,12 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
                 heatSources, tagRangeMm, taggable, joins, parameters);
     }
 
+    /** This world with other parameters for its control code (a test's, in code). */
+    public WorldSpec withParameters(Parameters newParameters) {
+        return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
+                heatSources, tagRangeMm, taggable, joins, newParameters);
+    }
+
     /** Robots the join rules let take part at once, counted up to {@link #JOINABLE_CAP} (for connection and queue caps). */
     public int joinable() {
         return (int) Math.min(JOINABLE_CAP, joins.stream().mapToLong(JoinRule::max).sum());
