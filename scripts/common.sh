@@ -314,7 +314,7 @@ robosim_cds_settle() {
     id=${start%.start}
     id=${id##*.}
     owner=""
-    read -r owner <"$start" 2>/dev/null
+    { read -r owner <"$start"; } 2>/dev/null # (gone meanwhile: settled by another start)
     pid=${owner:-${id%%-*}}
     if kill -0 "$pid" 2>/dev/null && [ -z "$(find "$start" -mmin +60 2>/dev/null)" ]; then
       ROBOSIM_CDS_BUSY=1
@@ -331,7 +331,7 @@ robosim_cds_settle() {
       && [ -z "$(robosim_cds_changed_since "$start" "$cp")" ]; then
       robosim_cds_assemble "$dir" "$cp" "$key" "$dir/$key.$id.aotconf"
       ROBOSIM_CDS_BUSY=1 # (the assembler takes the configuration: it is not removed here)
-      rm -f "$start"
+      rm -f "$start" # (after the assembler's claim is made: no second training run in between)
       settled=1
       continue
     fi
@@ -346,23 +346,44 @@ robosim_cds_settle() {
 }
 
 # Assembles the AOT cache of KEY $3 in directory $1 (class path $2) from configuration $4, in the background:
-# a subshell that claims KEY.PID.start (its pid, which java keeps, written in it), takes the configuration
-# (a rename: of two starts that found it, one takes it), runs java -XX:AOTMode=create into KEY.PID.tmp and
-# puts the cache in place when it is done; its output goes nowhere, and the user's Ctrl-C does not stop it.
+# a subshell that takes the configuration (a rename: of two starts that found it, one takes it; touched
+# first, so the hourly clean-up leaves it), runs java -XX:AOTMode=create into KEY.PID.tmp and puts the
+# cache in place when it is done; its output goes nowhere, and the user's Ctrl-C does not stop it. Its claim,
+# KEY.PID.start with its pid in it (java keeps the pid), is made here before this returns. It runs with the
+# options of ROBOSIM_JAVA_OPTS the cache depends on, not those that write files or print (robosim_jvm_quiet).
 robosim_cds_assemble() {
-  local dir=$1 cp=$2 key=$3 configuration=$4
+  local dir=$1 cp=$2 key=$3 configuration=$4 pid opts
+  touch "$configuration" 2>/dev/null
+  opts=$(robosim_jvm_quiet "${ROBOSIM_JAVA_OPTS:-}")
   (
     trap '' INT
     pid=$BASHPID
-    echo "$pid" >"$dir/$key.$pid.start" && mv "$configuration" "$dir/$key.$pid.aotconf" || { rm -f "$dir/$key.$pid.start"; exit 1; }
+    mv "$configuration" "$dir/$key.$pid.aotconf" || exit 1
     # shellcheck disable=SC2086
-    if java ${ROBOSIM_JAVA_OPTS:-} -XX:AOTMode=create "-XX:AOTConfiguration=$dir/$key.$pid.aotconf" \
+    if java $opts -XX:AOTMode=create "-XX:AOTConfiguration=$dir/$key.$pid.aotconf" \
       "-XX:AOTCache=$dir/$key.$pid.tmp" '-Xlog:cds*=off' '-Xlog:aot*=off' -cp "$cp" \
       && [ "$(robosim_magic "$dir/$key.$pid.tmp")" = f00baba2 ] && [ -z "$(robosim_cds_changed_since "$dir/$key.$pid.start" "$cp")" ]; then
       mv -f "$dir/$key.$pid.tmp" "$dir/$key.aot"
     fi
     rm -f "$dir/$key.$pid.tmp" "$dir/$key.$pid.aotconf" "$dir/$key.$pid.start"
   ) </dev/null >/dev/null 2>&1 &
+  pid=$!
+  echo "$pid" >"$dir/$key.$pid.start"
+}
+
+# The JVM options of $1 less those that write files or print (logs, flight recordings, heap dumps, error
+# files, agents, statistics at exit): what a second JVM of the same options, the AOT cache's assembler, takes.
+robosim_jvm_quiet() {
+  local words=() w kept=()
+  read -ra words <<<"$1"
+  for w in "${words[@]}"; do
+    case $w in
+      -Xlog*|-Xloggc*|-verbose*|-XX:StartFlightRecording*|-XX:FlightRecorderOptions*|-XX:+HeapDump*|-XX:HeapDumpPath*\
+        |-XX:ErrorFile*|-javaagent*|-agentlib*|-agentpath*|-XX:+Print*|-XX:NativeMemoryTracking*) ;;
+      *) kept+=("$w") ;;
+    esac
+  done
+  echo "${kept[*]}"
 }
 
 # For the screenshot scripts: makes sure Xvfb is there (installs Debian's xvfb when we are root).

@@ -131,7 +131,7 @@ public final class ChildProcesses implements AutoCloseable {
     Child startWorker(String name, Consumer<String> stdoutLines, Runnable atEnd) throws IOException {
         List<String> options = new ArrayList<>(jvmOptions);
         options.add("-XX:+ExitOnOutOfMemoryError"); // (a JVM short of memory anywhere runs nothing more)
-        ClassDataArchives.Launch archive = archives.launch(RunHost.class.getName(), classPath, options);
+        ClassDataArchives.Launch archive = archives.launch(RunHost.class.getName(), classPath, options, false);
         Child child = new Child(name, startOrFinish(new ProcessBuilder(command(archive, options,
                 RunHost.class.getName(), List.of())), archive), archive);
         keep(child);

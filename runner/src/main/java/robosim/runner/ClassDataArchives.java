@@ -76,11 +76,18 @@ final class ClassDataArchives {
             return with(QUIET, (this == AOT ? "-XX:AOTCache=" : "-XX:SharedArchiveFile=") + archive);
         }
 
-        /** The options of a training run that writes into {@code tmp} or records into {@code configuration}. */
-        List<String> trains(Path tmp, Path configuration) {
-            return this == DYNAMIC ? with(QUIET, "-XX:ArchiveClassesAtExit=" + tmp)
-                    : with(QUIET, "-XX:AOTMode=record", "-XX:AOTConfiguration=" + configuration,
-                            "-XX:+UnlockDiagnosticVMOptions", "-XX:-DisplayVMOutput");
+        /**
+         * The options of a training run that writes into {@code tmp} or records into {@code configuration}; with
+         * {@code silent}, the JVM prints nothing of its own (on JDK 25 it would print where it recorded its
+         * configuration as it exits, after the run's last line).
+         */
+        List<String> trains(Path tmp, Path configuration, boolean silent) {
+            if (this == DYNAMIC) {
+                return with(QUIET, "-XX:ArchiveClassesAtExit=" + tmp);
+            }
+            return silent ? with(QUIET, "-XX:AOTMode=record", "-XX:AOTConfiguration=" + configuration,
+                    "-XX:+UnlockDiagnosticVMOptions", "-XX:-DisplayVMOutput")
+                    : with(QUIET, "-XX:AOTMode=record", "-XX:AOTConfiguration=" + configuration);
         }
 
         private static List<String> with(List<String> quiet, String... options) {
@@ -109,14 +116,21 @@ final class ClassDataArchives {
 
     private final Path dir;
     private final Kind kind;
-    private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
+    /** The java that assembles an AOT cache (this JDK's). */
+    private final String java;
     private final long owner = ProcessHandle.current().pid();
     private final AtomicInteger claims = new AtomicInteger();
 
-    /** Archives of {@code kind} in {@code dir}; null for none. */
-    ClassDataArchives(Path dir, Kind kind) {
+    /** Archives of {@code kind} in {@code dir}, assembled (AOT) by {@code java}; null for none. */
+    ClassDataArchives(Path dir, Kind kind, String java) {
         this.dir = kind == null ? null : dir;
         this.kind = kind;
+        this.java = java;
+    }
+
+    /** Archives of {@code kind} in {@code dir}, assembled by this JDK's java; null for none. */
+    ClassDataArchives(Path dir, Kind kind) {
+        this(dir, kind, Path.of(System.getProperty("java.home"), "bin", "java").toString());
     }
 
     /** The archives the scripts chose ({@code ROBOSIM_CDS_DIR}), or none. */
@@ -128,6 +142,14 @@ final class ClassDataArchives {
 
     /** The archive options for a child running {@code mainClass} on {@code classPath} with {@code jvmOptions}. */
     Launch launch(String mainClass, String classPath, List<String> jvmOptions) {
+        return launch(mainClass, classPath, jvmOptions, true);
+    }
+
+    /**
+     * As above; {@code silentTraining} false for a child whose stdout is read for its own lines only (a warm worker:
+     * what its JVM says as it dies, out of memory, is the reason of the run it broke).
+     */
+    Launch launch(String mainClass, String classPath, List<String> jvmOptions, boolean silentTraining) {
         if (dir == null || jvmOptions.stream().anyMatch(o -> USERS_OWN.stream().anyMatch(o::contains))) {
             return NONE;
         }
@@ -151,7 +173,7 @@ final class ClassDataArchives {
                 return NONE;
             }
             Claim claim = claim(key);
-            return new Training(kind.trains(claim.tmp(), claim.configuration()), claim);
+            return new Training(kind.trains(claim.tmp(), claim.configuration(), silentTraining), claim);
         } catch (IOException | RuntimeException e) {
             return NONE; // (a cache: a run never fails for want of it)
         }
@@ -217,6 +239,25 @@ final class ClassDataArchives {
             }
         }
         return false;
+    }
+
+    /**
+     * {@code options} less those that write files or print (logs, flight recordings, heap dumps, error files, agents,
+     * statistics at exit): what a second JVM of the same options, the AOT cache's assembler, takes ({@code
+     * robosim_jvm_quiet} in scripts/common.sh).
+     */
+    static List<String> quiet(List<String> options) {
+        List<String> kept = new ArrayList<>();
+        for (String o : options) {
+            if (!(o.startsWith("-Xlog") || o.startsWith("-Xloggc") || o.startsWith("-verbose")
+                    || o.startsWith("-XX:StartFlightRecording") || o.startsWith("-XX:FlightRecorderOptions")
+                    || o.startsWith("-XX:+HeapDump") || o.startsWith("-XX:HeapDumpPath") || o.startsWith("-XX:ErrorFile")
+                    || o.startsWith("-javaagent") || o.startsWith("-agentlib") || o.startsWith("-agentpath")
+                    || o.startsWith("-XX:+Print") || o.startsWith("-XX:NativeMemoryTracking"))) {
+                kept.add(o);
+            }
+        }
+        return kept;
     }
 
     /** Whether {@code file} starts with {@code magic} (in the machine's byte order): the JVM wrote it whole. */
@@ -292,18 +333,23 @@ final class ClassDataArchives {
             return assembling;
         }
 
-        /** Starts a JVM that assembles the cache from this claim's configuration, under a claim of its own. */
+        /**
+         * Starts a JVM that assembles the cache from this claim's configuration, under a claim of its own (touched
+         * first, so no hourly clean-up takes it), deaf to the Ctrl-C of the terminal it was started from, with the
+         * JVM options the cache depends on ({@link #quiet}).
+         */
         private boolean assemble() throws IOException {
             Claim claimed = claim(key);
             Claim assembly = new Claim(key, claimed.start, claimed.tmp, claimed.configuration, true);
             try {
+                Files.setLastModifiedTime(configuration, FileTime.fromMillis(System.currentTimeMillis()));
                 Files.move(configuration, assembly.configuration, StandardCopyOption.ATOMIC_MOVE);
             } catch (IOException e) {
                 Files.deleteIfExists(assembly.start); // (another start took it first)
                 throw e;
             }
-            List<String> command = new ArrayList<>(List.of(java));
-            command.addAll(key.jvmOptions());
+            List<String> command = new ArrayList<>(List.of("sh", "-c", "trap '' INT; exec \"$@\"", "sh", java));
+            command.addAll(quiet(key.jvmOptions()));
             command.addAll(List.of("-XX:AOTMode=create", "-XX:AOTConfiguration=" + assembly.configuration,
                     "-XX:AOTCache=" + assembly.tmp, "-cp", key.classPath()));
             command.addAll(QUIET);

@@ -123,7 +123,10 @@ class ClassDataArchivesTest {
 
     @Test
     void onJdk25TheTrainingRunRecordsAConfigurationAndTheCacheIsAssembledFromItOnce() throws Exception {
-        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.AOT);
+        // (the assembler, in place of java: one that waits until it is stopped, as one that fails would end)
+        Path assemblerJava = Files.writeString(tmp.resolve("java"), "#!/bin/sh\nexec sleep 600\n");
+        assertTrue(assemblerJava.toFile().setExecutable(true));
+        ClassDataArchives archives = new ClassDataArchives(dir, ClassDataArchives.Kind.AOT, assemblerJava.toString());
         ClassDataArchives.Launch first = archives.launch(MAIN, classPath, OPTIONS);
         String prefix = "-XX:AOTConfiguration=";
         Path configuration = Path.of(first.options().stream().filter(o -> o.startsWith(prefix)).findFirst()
@@ -131,19 +134,32 @@ class ClassDataArchivesTest {
         assertTrue(first.options().containsAll(List.of("-XX:AOTMode=record", "-XX:-DisplayVMOutput")),
                 "a training run prints nothing of the JVM's own: " + first.options());
         assertEquals(List.of(), archives.launch(MAIN, classPath, OPTIONS).options(), "one training run at a time");
+        assertFalse(archives.launch(RunHost.class.getName(), classPath, OPTIONS, false).options()
+                .contains("-XX:-DisplayVMOutput"), "a warm worker's JVM still says why it died");
 
-        // a whole configuration of jars that are not real: the assembler (this JDK's java) fails, and is not tried again
         Files.write(configuration, ByteBuffer.allocate(4096).order(ByteOrder.nativeOrder())
                 .putInt(ClassDataArchives.CONFIGURATION_MAGIC).array());
         first.finish();
-        List<Path> claims = files();
+        List<Path> claims = files().stream().filter(p -> p.getFileName().toString().startsWith("EnvironmentMain"))
+                .toList();
         assertEquals(2, claims.size(), "the assembler's claim and configuration: " + claims);
         Path start = claims.stream().filter(p -> p.toString().endsWith(".start")).findFirst().orElseThrow();
-        long assembler = Long.parseLong(Files.readString(start).strip());
-        ProcessHandle.of(assembler).ifPresent(p -> p.onExit().join());
+        ProcessHandle assembler = ProcessHandle.of(Long.parseLong(Files.readString(start).strip())).orElseThrow();
+        assertEquals(List.of(), archives.launch(MAIN, classPath, OPTIONS).options(), "no training beside an assembler");
+
+        assembler.destroy(); // (an assembly that fails)
+        assembler.onExit().get(60, java.util.concurrent.TimeUnit.SECONDS);
         ClassDataArchives.Launch again = archives.launch(MAIN, classPath, OPTIONS);
         assertTrue(again.options().contains("-XX:AOTMode=record"), "trained again: " + again.options());
-        assertEquals(1, files().size(), "the failed assembly left nothing: " + files());
+        assertEquals(1, files().stream().filter(p -> p.getFileName().toString().startsWith("EnvironmentMain")).count(),
+                "the failed assembly left nothing, and was not tried again: " + files());
+    }
+
+    @Test
+    void theAssemblerTakesTheOptionsTheCacheDependsOnNotThoseThatWriteFiles() {
+        assertEquals(List.of("-XX:+UseSerialGC", "-Xmx1g", "-Dx=1"), ClassDataArchives.quiet(List.of("-XX:+UseSerialGC",
+                "-Xlog:gc:file=gc.log", "-Xmx1g", "-XX:StartFlightRecording=filename=a.jfr", "-Dx=1",
+                "-XX:+HeapDumpOnOutOfMemoryError", "-javaagent:a.jar")));
     }
 
     @Test
