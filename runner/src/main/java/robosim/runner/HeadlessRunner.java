@@ -113,7 +113,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         }
         String bad = badOptions();
         if (bad == null) {
-            bad = missingControl(spec);
+            bad = missingControl(env, spec);
         }
         if (bad != null) {
             System.err.println(bad);
@@ -142,8 +142,11 @@ public final class HeadlessRunner implements Callable<Integer> {
         return environmentOptions.bad();
     }
 
-    /** Every robot needs a control class on the class path the robot processes get (ours). */
-    private String missingControl(WorldSpec spec) {
+    /**
+     * Every robot of {@code spec} (of environment file {@code env}) needs a control class on the class path the robot
+     * processes get (ours): what is wrong, or null.
+     */
+    public static String missingControl(java.nio.file.Path env, WorldSpec spec) {
         for (WorldSpec.RobotSpec r : spec.robots()) {
             String where = env + ": <robot name=\"" + r.name() + "\">";
             if (r.control().isBlank()) {

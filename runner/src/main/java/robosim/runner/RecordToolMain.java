@@ -30,7 +30,8 @@ public final class RecordToolMain implements Callable<Integer> {
     String what;
 
     @picocli.CommandLine.Option(names = "--metric", paramLabel = "CLASS", description = "With metrics: these metrics "
-            + "only, each a built-in's name, report:NAME or a robosim.sweep.Metric class; repeat for more.")
+            + "only, each a built-in's name, report:NAME (summed over the robots), report:NAME:OVER (OVER: sum, mean, "
+            + "min, max or each) or a robosim.sweep.Metric class; repeat for more.")
     java.util.List<String> metrics = new java.util.ArrayList<>();
 
     @picocli.CommandLine.Option(names = "--area-cell-m", paramLabel = "M", description = "With metrics: the side of "

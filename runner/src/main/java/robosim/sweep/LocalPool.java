@@ -14,7 +14,9 @@ import robosim.runner.WarmWorker;
  * run at a time in a warm JVM of its own ({@link WarmWorker}; with {@code --fresh-jvm-per-run}, each run in a new
  * process). A one-JVM run keeps about one core busy. Ctrl-C (any signal that stops
  * this JVM) stops every run at once (thread {@code sweep-stop}); the rows written stay, and the tables are made
- * from them.
+ * from them. When the first {@code giveUpAfter} runs to end all failed for one reason (a class path not given, a
+ * parameter that is no number), the sweep stops there, says why, and removes their rows (so {@code --resume} runs
+ * them once it is mended) rather than failing every run the same way.
  */
 final class LocalPool {
     /** How long the stop waits for the runs' threads to see their processes gone, ms. */
@@ -25,23 +27,31 @@ final class LocalPool {
     private final boolean keepRecordings;
     private final boolean freshJvmPerRun;
     private final PrintStream err;
+    private final int giveUpAfter;
     private volatile boolean stopping;
     private final AtomicInteger unfinished = new AtomicInteger();
+    /** The first runs to end, up to {@code giveUpAfter} (guarded by {@code this}). */
+    private final List<Row> first = new ArrayList<>();
+    /** The reason every one of the first runs failed for, once they all did (then the sweep stops). */
+    private volatile String gaveUp;
 
+    /** {@code giveUpAfter}: 0 never gives up. */
     LocalPool(Sweep sweep, OutputDirectory out, int jobs, boolean keepRecordings, boolean freshJvmPerRun,
-            PrintStream err) {
+            int giveUpAfter, PrintStream err) {
         this.sweep = sweep;
         this.out = out;
         this.jobs = jobs;
         this.keepRecordings = keepRecordings;
         this.freshJvmPerRun = freshJvmPerRun;
+        this.giveUpAfter = giveUpAfter;
         this.err = err;
     }
 
     /** Runs {@code todo}; returns the runs that were stopped by a signal from outside (they have no row). */
-    int run(List<Integer> todo, Progress progress) throws InterruptedException {
+    int run(List<Integer> todo, Progress progress) throws InterruptedException, IOException {
         ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
-        SweepRun runner = new SweepRun(sweep, out, keepRecordings, () -> stopping || children.closing());
+        SweepRun runner = new SweepRun(sweep, out, keepRecordings, () -> stopping || children.closing(),
+                line -> progress.say(line));
         AtomicInteger next = new AtomicInteger();
         List<Thread> threads = new ArrayList<>();
         for (int k = 0; k < Math.min(jobs, todo.size()); k++) {
@@ -77,7 +87,33 @@ final class LocalPool {
             Thread.currentThread().join(); // (the stop hook makes the tables; the JVM ends when it is done)
         }
         children.close();
+        if (gaveUp != null) {
+            for (Row r : first) {
+                java.nio.file.Files.deleteIfExists(out.row(r.index()));
+            }
+            err.println("sweep: the first " + first.size() + " runs all failed: " + gaveUp + "; stopped before the "
+                    + "others, their rows removed (mend it, then the same command with --resume runs every run; "
+                    + "--give-up-after 0 runs them all anyway)");
+            return unfinished.get() + (int) (sweep.runs() - out.rowsWritten().size());
+        }
         return unfinished.get();
+    }
+
+    /** Keeps {@code row} if it is one of the first to end; gives the sweep up when they all failed alike. */
+    private void firstRuns(Row row, ChildProcesses children) {
+        synchronized (this) {
+            if (giveUpAfter == 0 || first.size() >= giveUpAfter) {
+                return;
+            }
+            first.add(row);
+            if (first.size() < giveUpAfter || first.stream().anyMatch(Row::ok)
+                    || first.stream().map(r -> r.values().get("error")).distinct().count() > 1) {
+                return;
+            }
+            gaveUp = row.values().get("error");
+        }
+        stopping = true;
+        children.close();
     }
 
     /** A pool thread's work: the runs of {@code todo} it takes, one after another, until none is left or the stop. */
@@ -95,6 +131,7 @@ final class LocalPool {
                     unfinished.incrementAndGet();
                 } else {
                     progress.finished(row.ok());
+                    firstRuns(row, children);
                 }
             } catch (IOException | RuntimeException e) {
                 if (stopping || children.closing()) {

@@ -1,29 +1,82 @@
 package robosim.sweep;
 
+import java.util.Arrays;
+import java.util.Locale;
 import robosim.protocol.Report;
 
 /**
  * A metric a sweep file asks for: a built-in one ({@link RunMetrics#BUILT_IN}), a value the control code reports
- * ({@code Robot.report}, summed over the robots) or a {@link Metric} class of one's own.
+ * ({@code Robot.report}), taken over the robots as {@link Over} says, or a {@link Metric} class of one's own.
  *
  * @param kind which of the three
  * @param name the built-in's or the report's name, or the class's
+ * @param over how a report's values (each robot's newest) make the run's: null for the default, their sum in a column
+ *     named as the report; otherwise in a column named by it ({@link #column})
  */
-public record MetricChoice(Kind kind, String name) {
+public record MetricChoice(Kind kind, String name, Over over) {
     /** Where the value comes from. */
     public enum Kind { BUILT_IN, REPORT, CLASS }
 
-    static MetricChoice of(String builtIn, String report, String className) {
-        return builtIn != null ? new MetricChoice(Kind.BUILT_IN, builtIn)
-                : report != null ? new MetricChoice(Kind.REPORT, report) : new MetricChoice(Kind.CLASS, className);
+    /** How a report's values, one per robot that reported it, make the run's (sweep file: {@code over="..."}). */
+    public enum Over {
+        SUM, MEAN, MIN, MAX,
+        /** A column per robot: {@code NAME.ROBOT}. */
+        EACH;
+
+        /** As a sweep file writes it. */
+        String written() {
+            return name().toLowerCase(Locale.ROOT);
+        }
+
+        static Over of(String written) {
+            for (Over o : values()) {
+                if (o.written().equals(written)) {
+                    return o;
+                }
+            }
+            return null;
+        }
+
+        static String names() {
+            return String.join(", ", Arrays.stream(values()).map(Over::written).toList());
+        }
     }
 
-    /** A choice as a command line writes it: a built-in's name, {@code report:NAME}, or a class name (with a dot). */
+    /** A built-in metric, a report summed over the robots, or a class. */
+    public MetricChoice(Kind kind, String name) {
+        this(kind, name, null);
+    }
+
+    static MetricChoice of(String builtIn, String report, String className, Over over) {
+        return builtIn != null ? new MetricChoice(Kind.BUILT_IN, builtIn)
+                : report != null ? new MetricChoice(Kind.REPORT, report, over) : new MetricChoice(Kind.CLASS, className);
+    }
+
+    /**
+     * A choice as a command line writes it: a built-in's name, {@code report:NAME} or {@code report:NAME:OVER}, or a
+     * class name (with a dot).
+     */
     public static MetricChoice parse(String written) {
         if (written.startsWith("report:")) {
-            return new MetricChoice(Kind.REPORT, written.substring("report:".length()));
+            String rest = written.substring("report:".length());
+            int colon = rest.lastIndexOf(':');
+            Over over = colon < 0 ? null : Over.of(rest.substring(colon + 1));
+            return over == null ? new MetricChoice(Kind.REPORT, rest)
+                    : new MetricChoice(Kind.REPORT, rest.substring(0, colon), over);
         }
         return written.contains(".") ? new MetricChoice(Kind.CLASS, written) : new MetricChoice(Kind.BUILT_IN, written);
+    }
+
+    /**
+     * The column of a report's value over the robots: the name (the default sum; {@code report.NAME} where a built-in
+     * or a row's own column has it), else {@code NAME.robot_OVER} ({@code nearest_m.robot_mean}); for {@link Over#EACH}
+     * robot {@code robot}'s column, {@code NAME.ROBOT}.
+     */
+    String column(String robot) {
+        if (over == null) {
+            return RunMetrics.reportColumn(name);
+        }
+        return name + "." + (over == Over.EACH ? robot : "robot_" + over.written());
     }
 
     /** What is wrong with this choice (an unknown built-in, a bad report name, a class that is not a Metric), or null. */

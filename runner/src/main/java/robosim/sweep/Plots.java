@@ -43,15 +43,44 @@ final class Plots {
             }
         });
         for (String metric : tables.metrics) {
+            if (tables.byCombination.values().stream().noneMatch(stats -> stats.containsKey(metric))) {
+                continue; // (no run that succeeded has a value: no plot)
+            }
+            String axis = axis(sweep, metric);
             if (varied.isEmpty()) {
-                written.add(save(bySeed(metric, rows), plots.resolve(metric + "-vs-seed")));
+                written.add(save(bySeed(metric, axis, rows), plots.resolve(metric + "-vs-seed")));
             }
             for (String parameter : varied) {
-                written.add(save(against(sweep, tables, metric, parameter, varied), plots.resolve(metric + "-vs-"
+                written.add(save(against(sweep, tables, metric, axis, parameter, varied), plots.resolve(metric + "-vs-"
                         + parameter)));
             }
         }
         return written;
+    }
+
+    /** The y axis of metric column {@code metric}: its name, with its unit or what it is over the robots. */
+    static String axis(Sweep sweep, String metric) {
+        String unit = switch (metric) {
+            case "distance_m" -> "m, all robots' paths";
+            case "contacts", "messages_delivered", "tags" -> "count";
+            case "area_covered" -> "share of the arena, 0 to 1";
+            case "robots_left" -> "robots";
+            default -> null;
+        };
+        if (unit == null) {
+            for (MetricChoice c : sweep.metrics()) {
+                if (c.kind() == MetricChoice.Kind.REPORT && (c.over() == MetricChoice.Over.EACH
+                        ? metric.startsWith(c.name() + ".") : metric.equals(c.column(null)))) {
+                    unit = c.over() == null || c.over() == MetricChoice.Over.SUM ? "reported, summed over the robots"
+                            : c.over() == MetricChoice.Over.EACH ? "reported by robot " + metric.substring(c.name().length() + 1)
+                            : "reported, " + c.over().written() + " over the robots";
+                }
+            }
+            if (unit == null && sweep.metrics().isEmpty() && !RunMetrics.BUILT_IN.contains(metric)) {
+                unit = "reported, summed over the robots";
+            }
+        }
+        return unit == null ? metric : metric + " (" + unit + ")";
     }
 
     private static Path save(Chart<?, ?> chart, Path withoutExtension) throws IOException {
@@ -60,9 +89,9 @@ final class Plots {
     }
 
     /** One point per successful run: the metric against its seed. */
-    private static XYChart bySeed(String metric, List<Row> rows) {
+    private static XYChart bySeed(String metric, String axis, List<Row> rows) {
         XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(metric + " by seed").xAxisTitle("seed")
-                .yAxisTitle(metric).build();
+                .yAxisTitle(axis).build();
         List<Double> x = new ArrayList<>();
         List<Double> y = new ArrayList<>();
         for (Row r : rows) {
@@ -81,7 +110,7 @@ final class Plots {
     }
 
     /** The metric's mean and interval at each value of {@code parameter}, a line per setting of the other varied ones. */
-    private static Chart<?, ?> against(Sweep sweep, Tables tables, String metric, String parameter,
+    private static Chart<?, ?> against(Sweep sweep, Tables tables, String metric, String axis, String parameter,
             List<String> varied) {
         List<String> values = sweep.values().get(parameter);
         boolean numeric = values.stream().allMatch(Plots::isNumber);
@@ -109,7 +138,7 @@ final class Plots {
         String title = metric + " vs " + parameter + " (mean, 95% CI)";
         if (numeric) {
             XYChart chart = new XYChartBuilder().width(WIDTH).height(HEIGHT).title(title).xAxisTitle(parameter)
-                    .yAxisTitle(metric).build();
+                    .yAxisTitle(axis).build();
             chart.getStyler().setLegendVisible(lines.size() > 1);
             double[] x = values.stream().mapToDouble(Double::parseDouble).toArray();
             lines.forEach((label, line) -> {
@@ -130,7 +159,7 @@ final class Plots {
             return chart;
         }
         CategoryChart chart = new CategoryChartBuilder().width(WIDTH).height(HEIGHT).title(title).xAxisTitle(parameter)
-                .yAxisTitle(metric).build();
+                .yAxisTitle(axis).build();
         chart.getStyler().setLegendVisible(lines.size() > 1);
         lines.forEach((label, line) -> {
             List<String> xs = new ArrayList<>();

@@ -47,6 +47,17 @@ final class Progress {
         }
     }
 
+    /** A line for the user between the progress lines (on a terminal, on a line of its own above the bar). */
+    void say(String line) {
+        String text;
+        synchronized (this) {
+            text = (terminal && done > 0 && done < total ? "\r\033[K" : "") + line + "\n"
+                    + (terminal && done > 0 && done < total ? "\r" + text() : "");
+        }
+        err.print(text);
+        err.flush();
+    }
+
     /** Ends a bar left open (the sweep stopped early). */
     void close() {
         boolean open;

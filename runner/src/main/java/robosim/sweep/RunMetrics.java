@@ -28,7 +28,7 @@ import robosim.protocol.WorldSnapshot;
  * <li>{@code robots_left}: robots still in the world at the end;
  * <li>each name the control code reported ({@code Robot.report}): each robot's newest value, summed over the
  * robots that reported it (a name that is also a built-in's or a row's own column, {@code seed} say, is
- * {@code report.NAME});
+ * {@code report.NAME}), or as a sweep file's {@code over} says ({@link MetricChoice#column});
  * <li>each {@link Metric} class asked for, by its {@link Metric#name()}.
  * </ul>
  */
@@ -45,23 +45,43 @@ public final class RunMetrics {
     }
 
     /**
+     * A run's metrics and what its robots reported.
+     *
+     * @param values the metrics, by column, in the chosen order
+     * @param unreported the chosen reports no robot made in this run (their columns are left out)
+     * @param reported every name a robot reported, in alphabetical order
+     */
+    public record Measured(Map<String, Double> values, List<String> unreported, List<String> reported) {
+    }
+
+    /**
      * The metrics {@code chosen} asks for, in its order (none chosen: every built-in one, then every reported name
      * in alphabetical order), of the recording {@code file}; a report no robot made is left out.
      */
     public static Map<String, Double> of(Path file, List<MetricChoice> chosen, double areaCellM) throws IOException {
+        return measure(file, chosen, areaCellM).values();
+    }
+
+    /** As {@link #of}, saying which chosen reports no robot made, and what was reported. */
+    public static Measured measure(Path file, List<MetricChoice> chosen, double areaCellM) throws IOException {
         try (RecordingReader recording = new RecordingReader(file)) {
-            Map<String, Double> all = builtInAndReports(recording, areaCellM);
+            Map<String, Map<String, Double>> reports = new TreeMap<>();
+            Map<String, Double> all = builtInAndReports(recording, areaCellM, reports);
+            List<String> reported = List.copyOf(reports.keySet());
             Map<String, Double> out = new LinkedHashMap<>();
+            List<String> unreported = new java.util.ArrayList<>();
             if (chosen.isEmpty()) {
-                return all;
+                return new Measured(all, unreported, reported);
             }
             for (MetricChoice c : chosen) {
                 switch (c.kind()) {
                     case BUILT_IN -> out.put(c.name(), all.get(c.name()));
                     case REPORT -> {
-                        String column = reportColumn(c.name());
-                        if (all.containsKey(column)) {
-                            out.put(column, all.get(column));
+                        Map<String, Double> byRobot = reports.get(c.name());
+                        if (byRobot == null) {
+                            unreported.add(c.name());
+                        } else {
+                            over(c, byRobot, out);
                         }
                     }
                     case CLASS -> {
@@ -79,8 +99,26 @@ public final class RunMetrics {
                     }
                 }
             }
-            return out;
+            return new Measured(out, unreported, reported);
         }
+    }
+
+    /** Report {@code c}'s column(s) from {@code byRobot} (each robot's newest value, in the robots' order) into {@code out}. */
+    private static void over(MetricChoice c, Map<String, Double> byRobot, Map<String, Double> out) {
+        java.util.DoubleSummaryStatistics s = byRobot.values().stream().mapToDouble(Double::doubleValue)
+                .summaryStatistics();
+        if (c.over() == MetricChoice.Over.EACH) {
+            byRobot.forEach((robot, value) -> out.put(c.column(robot), value));
+            return;
+        }
+        double value = c.over() == null ? s.getSum() : switch (c.over()) {
+            case SUM -> s.getSum();
+            case MEAN -> s.getAverage();
+            case MIN -> s.getMin();
+            case MAX -> s.getMax();
+            case EACH -> throw new IllegalStateException("each: a column per robot");
+        };
+        out.put(c.column(null), value);
     }
 
     /** {@code metrics} as CSV: a header line and a value line, the numbers as a sweep's tables write them. */
@@ -108,8 +146,12 @@ public final class RunMetrics {
         return BUILT_IN.contains(name) || Row.FIRST.contains(name) || Row.RUN.contains(name) || Row.LAST.contains(name);
     }
 
-    private static Map<String, Double> builtInAndReports(RecordingReader recording, double areaCellM)
-            throws IOException {
+    /**
+     * The built-in metrics and every reported name summed over the robots, of {@code recording}; into {@code reports}
+     * each reported name's newest value per robot (by robot name, in the robots' order).
+     */
+    private static Map<String, Double> builtInAndReports(RecordingReader recording, double areaCellM,
+            Map<String, Map<String, Double>> reports) throws IOException {
         WorldSnapshot world = recording.snapshot();
         Arena arena = world.arena();
         String tooMany = cellProblem(arena, areaCellM);
@@ -131,7 +173,7 @@ public final class RunMetrics {
         double distanceMm = 0;
         long contacts = 0;
         long delivered = 0;
-        Map<Integer, Map<String, Double>> reports = new HashMap<>();
+        Map<Integer, Map<String, Double>> byIndex = new TreeMap<>();
         PoseUpdate last = world.poses();
         for (int i = 0; i < recording.steps(); i++) {
             RecordingReader.Step step = recording.step(i);
@@ -171,13 +213,14 @@ public final class RunMetrics {
                 }
                 delivered += v.delivered().size();
                 for (Report report : v.reports()) {
-                    reports.computeIfAbsent(r, k -> new HashMap<>()).put(report.name(), report.value());
+                    byIndex.computeIfAbsent(r, k -> new HashMap<>()).put(report.name(), report.value());
                 }
             }
             last = u;
         }
-        int robots = recording.steps() == 0 ? world.robotNames().size()
-                : recording.snapshotAt(recording.steps() - 1).robotNames().size();
+        List<String> names = recording.steps() == 0 ? world.robotNames()
+                : recording.snapshotAt(recording.steps() - 1).robotNames();
+        int robots = names.size();
         Map<String, Double> out = new LinkedHashMap<>();
         out.put("distance_m", distanceMm / 1000);
         out.put("contacts", (double) contacts);
@@ -186,9 +229,11 @@ public final class RunMetrics {
         out.put("area_covered", visited.cardinality() / (double) (columns * rows));
         out.put("robots_left", (double) Math.max(0, robots - last.departed().size()));
         Map<String, Double> summed = new TreeMap<>();
-        for (Map<String, Double> each : reports.values()) {
-            each.forEach((name, value) -> summed.merge(reportColumn(name), value, Double::sum));
-        }
+        byIndex.forEach((r, each) -> each.forEach((name, value) -> {
+            summed.merge(reportColumn(name), value, Double::sum);
+            reports.computeIfAbsent(name, k -> new LinkedHashMap<>()).put(r < names.size() ? names.get(r) : "robot" + r,
+                    value);
+        }));
         out.putAll(summed);
         return out;
     }

@@ -20,6 +20,7 @@ import java.util.Map;
 import java.util.Set;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
+import robosim.protocol.Printable;
 
 /**
  * A sweep file as written ({@code <sweep>}, {@code docs/EXPERIMENTS.md}), and its reading: every fault is one
@@ -63,7 +64,10 @@ public final class SweepFile {
         public Long to;
     }
 
-    /** {@code <param name="speed" values="200 400 600"/>}: one of the world's parameters and its values. */
+    /**
+     * {@code <param name="speed" values="200 400 600"/>}: one of the world's parameters and its values, separated by
+     * spaces or commas ({@code "200, 400, 600"} too; a value holds neither).
+     */
     public static final class ParamXml {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
@@ -81,14 +85,17 @@ public final class SweepFile {
     }
 
     /**
-     * {@code <metric name="distance_m"/>} (a built-in), {@code <metric report="found"/>} (what the control code
-     * reported, summed over the robots) or {@code <metric class="my.Metric"/>} (one's own, from the recording).
+     * {@code <metric name="distance_m"/>} (a built-in), {@code <metric report="found" over="sum"/>} (what the control
+     * code reported, each robot's newest value, summed over the robots unless {@code over} says {@code mean},
+     * {@code min}, {@code max} or {@code each}) or {@code <metric class="my.Metric"/>} (one's own, from the recording).
      */
     public static final class MetricXml {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
         @JacksonXmlProperty(isAttribute = true)
         public String report;
+        @JacksonXmlProperty(isAttribute = true)
+        public String over;
         @JacksonXmlProperty(isAttribute = true, localName = "class")
         public String className;
     }
@@ -194,8 +201,9 @@ public final class SweepFile {
                         + "metric has that name" + (p.name.equals("seed") ? " (the seeds are <seeds from to>: each run "
                         + "gets its seed as the world's, whatever the file says)" : "; give the world's parameter another"));
             }
-            List<String> list = p.values == null ? List.of() : List.of(p.values.trim().split("\\s+"));
-            if (p.values == null || p.values.isBlank()) {
+            List<String> list = p.values == null ? List.of() : List.of(p.values.trim().split("[\\s,]+"));
+            if (p.values == null || p.values.isBlank() || p.values.replace(",", "").isBlank()
+                    || p.values.trim().startsWith(",")) {
                 throw new SweepException(file + ": <param name=\"" + p.name + "\"> needs values=\"A B ...\" (at least one)");
             }
             if (values.put(p.name, list) != null) {
@@ -224,7 +232,13 @@ public final class SweepFile {
                 throw new SweepException(file + ": <metric> needs one of name=\"BUILT-IN\" (" + String.join(", ",
                         RunMetrics.BUILT_IN) + "), report=\"NAME\" or class=\"CLASS\"");
             }
-            MetricChoice choice = MetricChoice.of(m.name, m.report, m.className);
+            MetricChoice.Over over = m.over == null ? null : MetricChoice.Over.of(m.over);
+            if (m.over != null && (m.report == null || over == null)) {
+                throw new SweepException(file + ": <metric over=\"" + Printable.of(m.over, 40) + "\">: " + (m.report == null
+                        ? "over goes with report=\"NAME\" (a value the robots report)"
+                        : "over is one of " + MetricChoice.Over.names()));
+            }
+            MetricChoice choice = MetricChoice.of(m.name, m.report, m.className, over);
             String bad = choice.problem();
             if (bad != null) {
                 throw new SweepException(file + ": <metric>: " + bad);
@@ -253,9 +267,14 @@ public final class SweepFile {
         EnvironmentLoader loader = new EnvironmentLoader();
         try {
             for (Map<String, String> combination : sweep.combinations()) {
-                String cells = RunMetrics.cellProblem(loader.load(sweep.world(), combination).arena(), sweep.areaCellM());
+                robosim.environment.core.WorldSpec spec = loader.load(sweep.world(), combination);
+                String cells = RunMetrics.cellProblem(spec.arena(), sweep.areaCellM());
                 if (cells != null) {
                     throw new SweepException(file + ": <metrics areaCellM>: " + cells);
+                }
+                String control = robosim.runner.HeadlessRunner.missingControl(sweep.world(), spec);
+                if (control != null) {
+                    throw new SweepException(file + ": its world " + control + "; no run was started");
                 }
             }
         } catch (EnvironmentFileException e) {

@@ -27,7 +27,8 @@ import robosim.runner.ChildProcesses;
                 + "warm JVM). Writes runs.csv (a row per run), summary.csv "
                 + "(mean, sd and 95%% confidence interval per combination) and a PNG plot per metric and varied "
                 + "parameter into --out.",
-                "Exit: 0 every run succeeded; 1 some failed (their rows say why) or were stopped; 2 bad input; "
+                "Exit: 0 every run succeeded; 1 some failed (their rows say why), were stopped, or a metric the file names was "
+                        + "never reported; 2 bad input; "
                         + "130 stopped by Ctrl-C (the rows written stay: --resume runs the rest)."})
 public final class SweepMain implements Callable<Integer> {
     /** Exit code of a sweep some of whose runs failed or left no row. */
@@ -55,6 +56,11 @@ public final class SweepMain implements Callable<Integer> {
             + "running, System.exit). By default each of the pool's workers is a warm JVM that runs run after run, "
             + "each run's control classes loaded afresh.")
     boolean freshJvmPerRun;
+
+    @Option(names = "--give-up-after", paramLabel = "K", defaultValue = "3", description = "On this machine: when the "
+            + "first K runs to end all failed for one reason, stop there, say why and remove their rows (default: "
+            + "${DEFAULT-VALUE}; 0: run every run whatever happens).")
+    int giveUpAfter;
 
     @Option(names = "--jobs", paramLabel = "N", description = "Runs at once on this machine (default: its cores, "
             + "${sys:robosim.cores}).")
@@ -96,6 +102,9 @@ public final class SweepMain implements Callable<Integer> {
         if (runsPerTask != null && runsPerTask < 1) {
             return bad("sweep: --runs-per-task must be >= 1, got " + runsPerTask);
         }
+        if (giveUpAfter < 0) {
+            return bad("sweep: --give-up-after must be >= 0 (0: never), got " + giveUpAfter);
+        }
         if ((jobs != null && jobs < 1) || maxParallel < 1) {
             return bad("sweep: --jobs and --max-parallel must be >= 1");
         }
@@ -135,7 +144,7 @@ public final class SweepMain implements Callable<Integer> {
         int cores = Runtime.getRuntime().availableProcessors();
         Progress progress = new Progress(todo.size(), err, System.console() != null);
         int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, freshJvmPerRun,
-                err).run(todo, progress);
+                giveUpAfter, err).run(todo, progress);
         return finish(sweep, dir, unfinished, err);
     }
 
@@ -214,10 +223,33 @@ public final class SweepMain implements Callable<Integer> {
         int rows = Gather.tables(sweep, dir);
         long failed = dir.rowsWritten().stream().filter(r -> !r.ok()).count();
         long missing = sweep.runs() - rows;
+        List<String> unreported = unreported(sweep, dir.rowsWritten());
+        for (String name : unreported) {
+            err.println("sweep: no robot reported '" + name + "' in any run (<metric report=\"" + name + "\"> in "
+                    + sweep.file().getFileName() + "; a name the control code does not report?): its column is empty");
+        }
         err.println("sweep: " + rows + " of " + sweep.runs() + " runs have rows, " + failed + " failed"
-                + (missing > 0 ? ", " + missing + " without a row (--resume runs them)" : "") + "; tables and plots in "
-                + dir.path());
-        return failed > 0 || missing > 0 || unfinished > 0 ? EXIT_RUNS_FAILED : 0;
+                + (missing > 0 ? ", " + missing + " without a row (--resume runs them)" : "")
+                + (unreported.isEmpty() ? "" : ", " + unreported.size() + " metric(s) never reported")
+                + "; tables and plots in " + dir.path());
+        return failed > 0 || missing > 0 || unfinished > 0 || !unreported.isEmpty() ? EXIT_RUNS_FAILED : 0;
+    }
+
+    /** The reports the sweep file names that no robot made in any run that succeeded (none when no run did). */
+    static List<String> unreported(Sweep sweep, List<Row> rows) {
+        List<Row> ok = rows.stream().filter(Row::ok).toList();
+        List<String> out = new java.util.ArrayList<>();
+        if (ok.isEmpty()) {
+            return out;
+        }
+        for (MetricChoice c : sweep.metrics()) {
+            if (c.kind() == MetricChoice.Kind.REPORT && ok.stream().noneMatch(r -> r.values().keySet().stream()
+                    .anyMatch(column -> c.over() == MetricChoice.Over.EACH ? column.startsWith(c.name() + ".")
+                            : column.equals(c.column(null))))) {
+                out.add(c.name());
+            }
+        }
+        return out;
     }
 
     private static String name(Path spec) {
@@ -306,7 +338,7 @@ public final class SweepMain implements Callable<Integer> {
             java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
             // (Slurm ends a task past its time with SIGTERM: the run then under way writes no row, nor any after it)
             Runtime.getRuntime().addShutdownHook(new Thread(() -> stopping.set(true), "sweep-stop"));
-            SweepRun sweepRun = new SweepRun(sweep, out, keepRecordings, stopping::get);
+            SweepRun sweepRun = new SweepRun(sweep, out, keepRecordings, stopping::get, System.err::println);
             int unfinished = 0;
             try (ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
                  robosim.runner.HeadlessRuns where = freshJvmPerRun ? robosim.runner.HeadlessRuns.freshJvms(children)

@@ -32,13 +32,22 @@ final class SweepRun {
     private final OutputDirectory out;
     private final boolean keepRecordings;
     private final java.util.function.BooleanSupplier stopped;
+    private final java.util.function.Consumer<String> console;
+    /** What was said on the console already: a reason of failed runs, a report no robot made (each said once). */
+    private final java.util.Set<String> said = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
-    /** Runs of {@code sweep} into {@code out}; {@code stopped}: the sweep is being stopped (a run ending then writes no row). */
-    SweepRun(Sweep sweep, OutputDirectory out, boolean keepRecordings, java.util.function.BooleanSupplier stopped) {
+    /**
+     * Runs of {@code sweep} into {@code out}; {@code stopped}: the sweep is being stopped (a run ending then writes no
+     * row); {@code console}: where a line for the user goes (a failed run's reason, a report no robot made, each
+     * the first time).
+     */
+    SweepRun(Sweep sweep, OutputDirectory out, boolean keepRecordings, java.util.function.BooleanSupplier stopped,
+            java.util.function.Consumer<String> console) {
         this.sweep = sweep;
         this.out = out;
         this.keepRecordings = keepRecordings;
         this.stopped = stopped;
+        this.console = console;
     }
 
     /**
@@ -77,7 +86,15 @@ final class SweepRun {
         Map<String, Double> metrics = Map.of();
         if (Files.exists(recording)) {
             try {
-                metrics = RunMetrics.of(recording, sweep.metrics(), sweep.areaCellM());
+                RunMetrics.Measured measured = RunMetrics.measure(recording, sweep.metrics(), sweep.areaCellM());
+                metrics = measured.values();
+                for (String name : code == 0 && error.isEmpty() ? measured.unreported() : List.<String>of()) {
+                    if (said.add("unreported " + name)) {
+                        console.accept("sweep: run " + index + ": no robot reported '" + name + "' (reported: "
+                                + (measured.reported().isEmpty() ? "nothing" : String.join(", ", measured.reported()))
+                                + "); its column stays empty");
+                    }
+                }
             } catch (IOException | RuntimeException e) {
                 error = error.isEmpty() ? "metrics: " + e.getMessage() : error;
             }
@@ -98,6 +115,9 @@ final class SweepRun {
         values.put("wall_s", String.format(java.util.Locale.ROOT, "%.3f", wallS));
         Row row = new Row(values);
         row.write(out.row(index));
+        if (!row.ok() && said.add("failed " + values.get("error"))) {
+            console.accept("sweep: run " + index + " failed: " + values.get("error"));
+        }
         if (!keepRecordings) {
             Files.deleteIfExists(recording);
         }

@@ -49,6 +49,21 @@ class SweepFileTest {
     }
 
     @Test
+    void valuesAreSeparatedBySpacesOrCommasAndAReportIsTakenOverTheRobotsAsTheFileSays() throws Exception {
+        Sweep s = SweepFile.read(write(sweep("", "<seeds from=\"1\" to=\"1\"/><param name=\"speed\" "
+                + "values=\"200,400, 600 800\"/><metrics><metric report=\"turns\"/><metric report=\"turns\" "
+                + "over=\"mean\"/><metric report=\"turns\" over=\"each\"/></metrics>")));
+        assertEquals(List.of("200", "400", "600", "800"), s.values().get("speed"));
+        assertEquals(List.of(new MetricChoice(MetricChoice.Kind.REPORT, "turns"),
+                new MetricChoice(MetricChoice.Kind.REPORT, "turns", MetricChoice.Over.MEAN),
+                new MetricChoice(MetricChoice.Kind.REPORT, "turns", MetricChoice.Over.EACH)), s.metrics());
+        assertEquals("turns", s.metrics().get(0).column(null));
+        assertEquals("turns.robot_mean", s.metrics().get(1).column(null));
+        assertEquals("turns.w3", s.metrics().get(2).column("w3"));
+        assertEquals(s.metrics().get(1), MetricChoice.parse("report:turns:mean"));
+    }
+
+    @Test
     void twoParametersMakeAGridTheFirstChangingSlowest() throws Exception {
         Path world = dir.resolve("world.xml");
         Files.writeString(world, Files.readString(WANDER).replace("x=\"1\" y=\"1\"", "x=\"${x:1}\" y=\"1\""));
@@ -89,6 +104,15 @@ class SweepFileTest {
         Files.writeString(broken, Files.readString(WANDER).replace("timeStepMs=\"100\"", "timeStepMs=\"-1\""));
         assertTrue(refused("<sweep world=\"broken.xml\" steps=\"5\">" + seeds + "</sweep>")
                 .contains("timeStepMs must be > 0"));
+        assertTrue(refused(sweep("", seeds + "<metrics><metric report=\"turns\" over=\"median\"/></metrics>"))
+                .contains("over is one of sum, mean, min, max, each"));
+        assertTrue(refused(sweep("", seeds + "<metrics><metric name=\"contacts\" over=\"mean\"/></metrics>"))
+                .contains("over goes with report=\"NAME\""));
+        Path elsewhere = dir.resolve("elsewhere.xml");
+        Files.writeString(elsewhere, Files.readString(WANDER).replace("robosim.examples.Wander", "my.Missing"));
+        String missing = refused("<sweep world=\"elsewhere.xml\" steps=\"5\">" + seeds + "</sweep>");
+        assertTrue(missing.contains("control class my.Missing is not on the class path (add its classes with "
+                + "--classpath or ROBOSIM_CLASSPATH); no run was started"), missing);
         Path placed = dir.resolve("placed.xml");
         Files.writeString(placed, Files.readString(WANDER).replace("x=\"1\" y=\"1\"", "x=\"${x:1}\" y=\"1\""));
         assertTrue(refused("<sweep world=\"placed.xml\" steps=\"5\">" + seeds + "<param name=\"x\" values=\"1 99\"/></sweep>")

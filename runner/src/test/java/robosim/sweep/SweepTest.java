@@ -116,22 +116,69 @@ class SweepTest {
     }
 
     @Test
-    void aFailedRunIsARowWithItsExitCodeAndReasonAndTheSweepGoesOn() throws Exception {
-        Path world = dir.resolve("broken-control.xml");
-        Files.writeString(world, Files.readString(SweepFileTest.WANDER).replace("robosim.examples.Wander",
-                "no.such.Control"));
+    void aFailedRunIsARowWithItsExitCodeAndReasonSaidOnceAndTheSweepGoesOn() throws Exception {
         Path out = dir.resolve("failed");
-        Result r = sweep(spec(world.toString(), "").toString(), "--out", out.toString());
+        // (Wander reads its parameter speed as a number: each robot's control code fails at once)
+        Result r = sweep(spec(SweepFileTest.WANDER.toString(), "<param name=\"speed\" values=\"fast\"/>").toString(),
+                "--out", out.toString());
         assertEquals(1, r.code(), r.err());
         List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
         assertEquals(3, runs.size(), "both runs have rows: " + runs);
+        String reason = "parameter speed is 'fast', not a number";
         for (String line : runs.subList(1, 3)) {
             List<String> f = Csv.fields(line);
-            assertEquals(List.of("failed", "2"), f.subList(3, 5), line);
-            assertTrue(f.get(f.size() - 2).contains("no.such.Control is not on the class path"), line);
+            assertEquals(List.of("failed", "4"), f.subList(4, 6), line);
+            assertTrue(f.get(f.size() - 2).contains(reason), line);
         }
+        assertEquals(1, r.err().lines().filter(l -> l.contains(" failed: ") && l.contains(reason)).count(),
+                "the reason said once: " + r.err());
         assertTrue(r.err().contains("2 of 2 runs have rows, 2 failed"), r.err());
-        assertEquals("runs,failed", String.join(",", Csv.fields(Files.readAllLines(out.resolve("summary.csv")).get(0))));
+        try (var plots = Files.list(out.resolve("plots"))) {
+            assertEquals(List.of(), plots.toList(), "no plot of a metric without a value of a run that succeeded");
+        }
+    }
+
+    @Test
+    void whenTheFirstRunsAllFailAlikeTheSweepStopsSaysWhyAndRemovesTheirRows() throws Exception {
+        Path spec = dir.resolve("doomed.xml");
+        Files.writeString(spec, "<sweep world=\"" + SweepFileTest.WANDER + "\" steps=\"50\"><seeds from=\"1\" "
+                + "to=\"8\"/><param name=\"speed\" values=\"fast\"/></sweep>");
+        Path out = dir.resolve("doomed");
+        Result r = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1");
+        assertEquals(1, r.code(), r.err());
+        assertTrue(r.err().contains("the first 3 runs all failed: ") && r.err().contains("parameter speed is 'fast'"),
+                r.err());
+        assertTrue(r.err().contains("0 of 8 runs have rows"), r.err());
+    }
+
+    @Test
+    void aReportNoRobotMadeWarnsAndFailsTheSweepAndOverTakesTheRobotsValuesAsAsked() throws Exception {
+        Path spec = spec(SweepFileTest.WANDER.toString(), "<metrics><metric report=\"turns\"/><metric report=\"turns\" "
+                + "over=\"mean\"/><metric report=\"turns\" over=\"max\"/><metric report=\"turns\" over=\"each\"/>"
+                + "<metric report=\"turnz\"/></metrics>");
+        Path out = dir.resolve("over");
+        Result r = sweep(spec.toString(), "--out", out.toString());
+        assertEquals(1, r.code(), r.err());
+        assertTrue(r.err().contains("no robot reported 'turnz' (reported: turns)"), r.err());
+        assertTrue(r.err().contains("no robot reported 'turnz' in any run"), r.err());
+        List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
+        List<String> header = Csv.fields(runs.get(0));
+        for (String line : runs.subList(1, runs.size())) {
+            List<String> f = Csv.fields(line);
+            List<Double> each = new ArrayList<>();
+            for (int c = 0; c < header.size(); c++) {
+                if (header.get(c).matches("turns\\.w[0-9]") && !f.get(c).isEmpty()) {
+                    each.add(Double.parseDouble(f.get(c)));
+                }
+            }
+            assertTrue(!each.isEmpty(), line);
+            double sum = each.stream().mapToDouble(Double::doubleValue).sum();
+            assertEquals(sum, Double.parseDouble(f.get(header.indexOf("turns"))), 1e-9, line);
+            assertEquals(sum / each.size(), Double.parseDouble(f.get(header.indexOf("turns.robot_mean"))), 1e-9, line);
+            assertEquals(each.stream().mapToDouble(Double::doubleValue).max().orElseThrow(),
+                    Double.parseDouble(f.get(header.indexOf("turns.robot_max"))), 1e-9, line);
+        }
+        assertTrue(!header.contains("turnz"), "no column for a report no robot made");
     }
 
     @Test
