@@ -3,5 +3,8 @@
 #   scripts/record-tool.sh summary FILE      the world, the steps, how the run ended (or where the file stops)
 #   scripts/record-tool.sh poses FILE        every step's poses as CSV (the --pose-log columns) on stdout
 #   scripts/record-tool.sh messages FILE     every message delivered as CSV (step,from,to,text) on stdout
+#   scripts/record-tool.sh reports FILE      every value the robots reported as CSV (step,robot,name,value)
+#   scripts/record-tool.sh metrics FILE      the run's metrics as a sweep's row has them (CSV)
+#   scripts/record-tool.sh plot FILE --out F.png   each robot's trajectory over the arena, drawn into a PNG
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_java robosim.runner.RecordToolMain "$@"

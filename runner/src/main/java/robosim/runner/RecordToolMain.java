@@ -19,15 +19,27 @@ import robosim.protocol.RobotView;
  * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
  * world, the steps and how the run ended (or where the file stops); {@code poses} writes every step's
  * poses as CSV on stdout, the {@code --pose-log} columns; {@code messages} every message delivered as CSV
- * ({@code step,from,to,text}); {@code metrics} the run's metrics as a sweep's row has them (CSV: a header and a
- * line), from the recording alone.
+ * ({@code step,from,to,text}); {@code reports} every value the robots reported as CSV ({@code step,robot,name,value});
+ * {@code metrics} the run's metrics as a sweep's row has them (CSV: a header and a line), from the recording alone;
+ * {@code plot} draws the robots' trajectories over the arena into a PNG ({@link TrajectoryPlot}).
  */
 @Command(name = "record-tool.sh", mixinStandardHelpOptions = true,
-        description = "Reads a recording made with --record: summary, poses (CSV), messages (CSV) or metrics (CSV: the "
-                + "built-in metrics and every reported value, as a sweep's row has them; docs/EXPERIMENTS.md) on stdout.")
+        description = "Reads a recording made with --record (or kept by a sweep's --keep-recordings): summary, poses "
+                + "(CSV), messages (CSV), reports (CSV: every value the robots reported, step by step) or metrics (CSV: "
+                + "the built-in metrics and every reported value, as a sweep's row has them; docs/EXPERIMENTS.md) on "
+                + "stdout; plot draws each robot's trajectory over the arena and its obstacles into --out FILE.png.")
 public final class RecordToolMain implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "summary|poses|messages|metrics", description = "What to print.")
+    @Parameters(index = "0", paramLabel = "summary|poses|messages|reports|metrics|plot", description = "What to print "
+            + "(or draw).")
     String what;
+
+    @picocli.CommandLine.Option(names = "--out", paramLabel = "FILE.png", description = "With plot: the PNG to write "
+            + "(a new file).")
+    Path png;
+
+    @picocli.CommandLine.Option(names = "--size", paramLabel = "PX", description = "With plot: the arena's longer side, "
+            + "px (default: 800).")
+    int sizePx = 800;
 
     @picocli.CommandLine.Option(names = "--metric", paramLabel = "CLASS", description = "With metrics: these metrics "
             + "only, each a built-in's name, report:NAME (summed over the robots), report:NAME:OVER (OVER: sum, mean, "
@@ -43,18 +55,33 @@ public final class RecordToolMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (!List.of("summary", "poses", "messages", "metrics").contains(what)) {
-            System.err.println("record-tool: unknown request \"" + what + "\" (summary, poses, messages or metrics)");
+        if (!List.of("summary", "poses", "messages", "reports", "metrics", "plot").contains(what)) {
+            System.err.println("record-tool: unknown request \"" + robosim.protocol.Printable.of(what, 40)
+                    + "\" (summary, poses, messages, reports, metrics or plot)");
             return 2;
         }
         if (what.equals("metrics")) {
             return metrics();
+        }
+        if ((png != null) != what.equals("plot")) {
+            System.err.println("record-tool: " + (png == null ? "plot needs --out FILE.png" : "--out goes with plot"));
+            return 2;
+        }
+        if (png != null && java.nio.file.Files.exists(png)) {
+            System.err.println("record-tool: " + png + ": exists already; give another --out");
+            return 2;
+        }
+        if (sizePx < 100 || sizePx > 8000) {
+            System.err.println("record-tool: --size must be 100 to 8000 px, got " + sizePx);
+            return 2;
         }
         try (RecordingReader r = new RecordingReader(file)) {
             BufferedWriter out = new BufferedWriter(new OutputStreamWriter(System.out, StandardCharsets.UTF_8), 1 << 16);
             switch (what) {
                 case "summary" -> summary(r, System.out);
                 case "poses" -> poses(r, out);
+                case "reports" -> reports(r, out);
+                case "plot" -> TrajectoryPlot.draw(r, png, sizePx);
                 default -> messages(r, out);
             }
             out.flush();
@@ -123,6 +150,22 @@ public final class RecordToolMain implements Callable<Integer> {
             for (RobotView v : s.views()) {
                 for (CommEvent m : v.delivered()) {
                     out.write(s.update().step() + "," + csv(m.from()) + "," + csv(m.to()) + "," + csv(m.payload()) + "\n");
+                }
+            }
+        }
+    }
+
+    /** Every value a robot reported, in the step whose request carried it (the wire's step numbers, as {@code poses}). */
+    static void reports(RecordingReader r, BufferedWriter out) throws IOException {
+        out.write("step,robot,name,value\n");
+        for (int k = 0; k < r.steps(); k++) {
+            RecordingReader.Step s = r.step(k);
+            List<String> names = r.snapshotAt(k).robotNames();
+            for (RobotView v : s.views()) {
+                for (robosim.protocol.Report report : v.reports()) {
+                    out.write(s.update().step() + "," + csv(v.robot() < names.size() ? names.get(v.robot())
+                            : "robot" + v.robot()) + "," + report.name() + ","
+                            + Double.toString(report.value()) + "\n");
                 }
             }
         }
