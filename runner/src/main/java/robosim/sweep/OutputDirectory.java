@@ -58,13 +58,25 @@ final class OutputDirectory {
         Path copy = dir.resolve("sweep.xml");
         byte[] spec = Files.readAllBytes(sweep.file());
         if (Files.exists(copy)) {
-            if (!Arrays.equals(Files.readAllBytes(copy), spec)) {
-                throw new SweepException(dir + ": holds the rows of another sweep file (its sweep.xml differs from "
-                        + sweep.file() + "); give another --out");
+            if (Files.exists(dir.resolve(GROWING))) {
+                throw new SweepException(dir + ": a growth of its sweep was cut short (" + GROWING + " is there, its "
+                        + "rows may be numbered for either file); give another --out");
             }
             if (!Arrays.equals(Files.readAllBytes(dir.resolve("world.xml")), Files.readAllBytes(sweep.world()))) {
                 throw new SweepException(dir + ": its rows are of another " + sweep.world().getFileName() + " (it changed "
                         + "since; world.xml there is the one they are of); give another --out");
+            }
+            byte[] earlier = Files.readAllBytes(copy);
+            if (!Arrays.equals(earlier, spec)) {
+                String why = SweepFile.readEarlier(sweep.file(), earlier).growthProblem(sweep);
+                if (!resume || why != null) {
+                    throw new SweepException(dir + ": holds the rows of another sweep file (its sweep.xml differs from "
+                            + sweep.file() + (why == null ? "; --resume grows it: it only adds seeds, values or repetitions"
+                            : ": " + why + "; --resume grows a sweep only by more seeds, values or repetitions")
+                            + "); give another --out");
+                }
+                grow(SweepFile.readEarlier(sweep.file(), earlier), sweep, spec);
+                return;
             }
             if (!resume && hasRows()) {
                 throw new SweepException(dir + ": holds this sweep's rows already; --resume runs only what is missing "
@@ -82,6 +94,63 @@ final class OutputDirectory {
             Files.copy(sweep.world(), dir.resolve("world.xml"), java.nio.file.StandardCopyOption.REPLACE_EXISTING);
             Files.writeString(dir.resolve("origin"), sweep.file() + "\n", StandardCharsets.UTF_8);
             Files.write(copy, spec); // (last: a directory with sweep.xml has the rest)
+        }
+    }
+
+    /** Whether this is a sweep's output directory already (its sweep.xml is there). */
+    boolean isSweep() {
+        return Files.exists(dir.resolve("sweep.xml"));
+    }
+
+    /** Where a growth stages its renumbered rows, logs and recordings (there only while one is under way). */
+    private static final String GROWING = ".growing";
+
+    /**
+     * Makes this directory, whose rows are of {@code earlier}, {@code later}'s: each row, log and recording renumbered
+     * to its run's index in {@code later} (staged in {@link #GROWING}, then each directory swapped in by a rename), then
+     * {@code later}'s text ({@code spec}) copied as sweep.xml, last. Rows of every earlier run are kept: the runs
+     * {@code later} adds are those without a row.
+     */
+    private void grow(Sweep earlier, Sweep later, byte[] spec) throws IOException, SweepException {
+        Path stage = dir.resolve(GROWING);
+        List<String> parts = List.of("rows", "logs", "recordings");
+        for (String part : parts) {
+            Files.createDirectories(stage.resolve(part));
+        }
+        for (Row r : rowsWritten()) {
+            Sweep.Run run = earlier.run(r.index());
+            long index = later.indexOf(run.parameters(), run.seed(), run.repetition());
+            if (index < 0) {
+                throw new SweepException(dir + ": run " + r.index() + " is no run of " + later.file() + "; give another --out");
+            }
+            java.util.Map<String, String> values = new java.util.LinkedHashMap<>(r.values());
+            values.put("index", Long.toString(index));
+            new Row(values).write(Row.file(stage.resolve("rows"), (int) index));
+            Path log = log(r.index());
+            if (Files.exists(log)) {
+                Files.copy(log, stage.resolve("logs").resolve(log((int) index).getFileName()));
+            }
+            Path recording = recording(r.index());
+            if (Files.exists(recording)) {
+                Files.move(recording, stage.resolve("recordings").resolve(recording((int) index).getFileName()));
+            }
+        }
+        for (String part : parts) {
+            Path old = dir.resolve(part);
+            Path gone = stage.resolve(part + ".earlier");
+            if (Files.exists(old)) {
+                Files.move(old, gone);
+            }
+            Files.move(stage.resolve(part), old);
+        }
+        Path copy = dir.resolve("sweep.xml");
+        Path temporary = dir.resolve(".sweep.xml.tmp");
+        Files.write(temporary, spec);
+        Files.move(temporary, copy, java.nio.file.StandardCopyOption.ATOMIC_MOVE, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
+        try (var all = Files.walk(stage)) {
+            for (Path p : all.sorted(Comparator.reverseOrder()).toList()) {
+                Files.delete(p);
+            }
         }
     }
 

@@ -134,6 +134,48 @@ public record Sweep(Path file, Path world, long steps, long seedFrom, long seedT
         return Collections.unmodifiableMap(out);
     }
 
+    /** The index of the run of {@code parameters}, {@code seed} and {@code repetition}, or -1 if it is no run of this sweep. */
+    long indexOf(Map<String, String> parameters, long seed, int repetition) {
+        if (!parameters.keySet().equals(values.keySet()) || seed < seedFrom || seed > seedTo || repetition < 1
+                || repetition > repeat) {
+            return -1;
+        }
+        long c = 0;
+        for (Map.Entry<String, List<String>> p : values.entrySet()) {
+            int at = p.getValue().indexOf(parameters.get(p.getKey()));
+            if (at < 0) {
+                return -1;
+            }
+            c = c * p.getValue().size() + at;
+        }
+        return (c * seeds() + (seed - seedFrom)) * repeat + repetition - 1;
+    }
+
+    /**
+     * What keeps {@code later} from growing this sweep (more seeds, values or repetitions, nothing else changed), or
+     * null if it does grow it.
+     */
+    String growthProblem(Sweep later) {
+        if (!world.equals(later.world) || steps != later.steps || layout != later.layout
+                || runTimeoutS != later.runTimeoutS || !jvmOptions.equals(later.jvmOptions)
+                || !metrics.equals(later.metrics) || areaCellM != later.areaCellM) {
+            return "its world, steps, layout, run timeout, JVM options or metrics differ";
+        }
+        if (!List.copyOf(values.keySet()).equals(List.copyOf(later.values.keySet()))) {
+            return "its parameters differ (" + values.keySet() + " there, " + later.values.keySet() + " now)";
+        }
+        if (later.seedFrom > seedFrom || later.seedTo < seedTo || later.repeat < repeat) {
+            return "its seeds " + seedFrom + " to " + seedTo + " (x " + repeat + ") are not all in " + later.seedFrom + " to "
+                    + later.seedTo + " (x " + later.repeat + ")";
+        }
+        for (Map.Entry<String, List<String>> p : values.entrySet()) {
+            if (!later.values.get(p.getKey()).containsAll(p.getValue())) {
+                return "its values of " + p.getKey() + " " + p.getValue() + " are not all in " + later.values.get(p.getKey());
+            }
+        }
+        return null;
+    }
+
     /** Run {@code index} (0 to {@link #runs()} - 1). */
     public Run run(int index) {
         if (index < 0 || index >= runs()) {

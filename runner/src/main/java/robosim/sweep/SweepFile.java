@@ -122,7 +122,7 @@ public final class SweepFile {
             if (Files.size(file) > MAX_FILE_BYTES) {
                 throw new SweepException(where + ": larger than the " + MAX_FILE_BYTES + " bytes a sweep file may have");
             }
-            xml = MAPPER.readValue(file.toFile(), SweepFile.class);
+            xml = MAPPER.readValue(Files.readAllBytes(file), SweepFile.class);
         } catch (NoSuchFileException e) {
             throw new SweepException(where + ": file not found");
         } catch (UnrecognizedPropertyException e) {
@@ -141,6 +141,22 @@ public final class SweepFile {
             throw new SweepException(where + ": empty file");
         }
         return xml.check(file);
+    }
+
+    /**
+     * The sweep of {@code xml}, an earlier text of sweep file {@code file} (its copy in an output directory), read as
+     * if it were {@code file}'s (its world relative to {@code file}), without loading its world.
+     */
+    static Sweep readEarlier(Path file, byte[] xml) throws SweepException {
+        try {
+            SweepFile earlier = MAPPER.readValue(xml, SweepFile.class);
+            if (earlier == null) {
+                throw new SweepException(file + ": its earlier copy is empty");
+            }
+            return earlier.check(file);
+        } catch (IOException e) {
+            throw new SweepException(file + ": its earlier copy cannot be read: " + e.getMessage());
+        }
     }
 
     private static String at(JsonLocation location) {

@@ -117,26 +117,38 @@ public final class SweepMain implements Callable<Integer> {
             sweep = SweepFile.read(spec);
             dir = new OutputDirectory(out != null ? out : Path.of("sweep-" + name(spec) + "-"
                     + LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"))));
-            dir.prepare(sweep, resume);
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
-        java.io.Closeable lock;
+        java.io.Closeable lock = null;
         try {
-            lock = dir.lock();
-            Slurm.Jobs earlier = Slurm.jobs(dir);
-            if (earlier != null && Slurm.stillActive(earlier)) {
-                lock.close();
-                return bad(dir.path() + ": its Slurm jobs (" + earlier.all() + ") are still running their runs: wait "
-                        + "for them (sweep.sh status " + dir.path() + ") or scancel them first");
-            }
+            // (a sweep's directory is held before it is prepared: --resume may renumber its rows, growing it)
+            lock = dir.isSweep() ? held(dir) : null;
+            dir.prepare(sweep, resume);
+            lock = lock != null ? lock : held(dir);
         } catch (SweepException e) {
+            if (lock != null) {
+                lock.close();
+            }
             return bad(e.getMessage());
         }
-        try (lock) { // (held while submitting, or while the local pool runs)
+        try (java.io.Closeable held = lock) { // (held while submitting, or while the local pool runs)
             return slurm ? slurm(sweep, dir, dir.missing(sweep), System.err)
                     : local(sweep, dir, dir.missing(sweep), System.err);
         }
+    }
+
+    /** {@code dir} held for this sweep ({@link OutputDirectory#lock}), unless Slurm jobs of it still run. */
+    private static java.io.Closeable held(OutputDirectory dir) throws SweepException, IOException,
+            InterruptedException {
+        java.io.Closeable lock = dir.lock();
+        Slurm.Jobs earlier = Slurm.jobs(dir);
+        if (earlier != null && Slurm.stillActive(earlier)) {
+            lock.close();
+            throw new SweepException(dir.path() + ": its Slurm jobs (" + earlier.all() + ") are still running their "
+                    + "runs: wait for them (sweep.sh status " + dir.path() + ") or scancel them first");
+        }
+        return lock;
     }
 
     private int local(Sweep sweep, OutputDirectory dir, List<Integer> todo, PrintStream err) throws Exception {

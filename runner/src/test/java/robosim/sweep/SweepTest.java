@@ -139,6 +139,41 @@ class SweepTest {
     }
 
     @Test
+    void aFinishedSweepGrowsByMoreSeedsAndValuesRunningOnlyTheNewRuns() throws Exception {
+        Path spec = dir.resolve("grows.xml");
+        String head = "<sweep world=\"" + SweepFileTest.WANDER + "\" steps=\"100\">";
+        Files.writeString(spec, head + "<seeds from=\"1\" to=\"2\"/><param name=\"speed\" values=\"300 900\"/></sweep>");
+        Path out = dir.resolve("grows");
+        Result first = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1");
+        assertEquals(0, first.code(), first.err());
+        String seed2speed900 = Files.readAllLines(out.resolve("runs.csv")).get(4); // (run 3: speed 900, seed 2)
+
+        Files.writeString(spec, head + "<seeds from=\"1\" to=\"3\"/><param name=\"speed\" values=\"300 600 900\"/>"
+                + "</sweep>");
+        Result refused = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1");
+        assertEquals(2, refused.code(), refused.err());
+        assertTrue(refused.err().contains("--resume grows it"), refused.err());
+        Result grown = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1", "--resume");
+        assertEquals(0, grown.code(), grown.err());
+        assertTrue(grown.err().contains("9 runs (3 combinations x 3 seeds, 100 steps, one-jvm), 5 to run"), grown.err());
+        List<String> rows = Files.readAllLines(out.resolve("runs.csv"));
+        assertEquals(10, rows.size(), String.join("\n", rows));
+        assertEquals(withoutWallTime(List.of(seed2speed900.replaceFirst("^3,", "7,"))),
+                withoutWallTime(List.of(rows.get(8))), "run 3 of the first file is run 7 of the grown one, kept");
+
+        Path fresh = dir.resolve("fresh");
+        assertEquals(0, sweep(spec.toString(), "--out", fresh.toString(), "--jobs", "1").code());
+        assertEquals(withoutWallTime(Files.readAllLines(fresh.resolve("runs.csv"))), withoutWallTime(rows),
+                "the grown sweep's rows are the bigger file's");
+
+        Files.writeString(spec, head.replace("100", "200") + "<seeds from=\"1\" to=\"4\"/><param name=\"speed\" "
+                + "values=\"300 600 900\"/></sweep>");
+        Result steps = sweep(spec.toString(), "--out", out.toString(), "--resume");
+        assertEquals(2, steps.code(), steps.err());
+        assertTrue(steps.err().contains("its world, steps, layout"), steps.err());
+    }
+
+    @Test
     void whenTheFirstRunsAllFailAlikeTheSweepStopsSaysWhyAndRemovesTheirRows() throws Exception {
         Path spec = dir.resolve("doomed.xml");
         Files.writeString(spec, "<sweep world=\"" + SweepFileTest.WANDER + "\" steps=\"50\"><seeds from=\"1\" "
