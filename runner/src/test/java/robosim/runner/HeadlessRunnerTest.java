@@ -129,6 +129,7 @@ class HeadlessRunnerTest {
         assertEquals(HeadlessRunner.EXIT_ROBOTS_REMOVED, r.code(), r.all());
         String removed = r.out().get(r.out().size() - 2);
         assertTrue(Pattern.matches("removed robot=r2 step=\\d+ reason=sent no request for step \\d+ within 2000 ms "
-                + "\\(step timeout\\)", removed), r.all());
+                + "\\(step timeout\\): its control code made no call of the robot \\(move, turn, sleep, \\.\\.\\.\\) "
+                + "since its last step, or its process stopped answering", removed), r.all());
     }
 }

@@ -55,7 +55,7 @@ class LoopOnOneCarrierTest {
                 + "computes without calling the robot \\(or the machine is very busy\\); virtual threads now have 2 "
                 + "carriers").matcher(all).find(), all);
         assertTrue(Pattern.compile("removed robot=r2 step=\\d+ reason=sent no request for step \\d+ within 3000 ms "
-                + "\\(step timeout\\)").matcher(all).find(), all);
+                + "\\(step timeout\\): its control code made no call of the robot").matcher(all).find(), all);
         assertTrue(all.contains("steps=30 robots=2 "), all);
     }
 }

@@ -416,7 +416,8 @@ final class Roster {
             for (Slot s : slots) {
                 if (s.running() && s.request == null && (s.backNanos == 0 || now - s.backNanos > stepTimeoutNanos)) {
                     drop(s, "sent no request for step " + StepNumbers.shown(progress.step()) + " within "
-                            + stepTimeoutMs + " ms (step timeout)");
+                            + stepTimeoutMs + " ms (step timeout): its control code made no call of the robot (move, "
+                            + "turn, sleep, ...) since its last step, or its process stopped answering");
                     if (inWorldOrder) {
                         break; // the stepper reads in world order: only the robot it waits for is late
                     }
