@@ -29,7 +29,7 @@ import robosim.runner.ChildProcesses;
                 + "parameter into --out.",
                 "Exit: 0 every run succeeded; 1 some failed (their rows say why), were stopped, or a metric the file names was "
                         + "never reported; 2 bad input; "
-                        + "130 stopped by Ctrl-C (the rows written stay: --resume runs the rest)."})
+                        + "130 stopped by Ctrl-C, 143 by SIGTERM (the rows written stay: --resume runs the rest)."})
 public final class SweepMain implements Callable<Integer> {
     /** Exit code of a sweep some of whose runs failed or left no row. */
     static final int EXIT_RUNS_FAILED = 1;
