@@ -19,7 +19,8 @@ import org.knowm.xchart.style.markers.SeriesMarkers;
 
 /**
  * A PNG per metric against each parameter the sweep varies ({@code plots/METRIC-vs-PARAM.png}): the mean of the
- * runs that succeeded at each value, with its 95% confidence interval as error bars, one line per combination of
+ * runs that succeeded at each value, with its 95% confidence interval ({@link Tables#interval}) as error bars (on bars,
+ * for values that are not numbers, the interval's larger side both ways), one line per combination of
  * the other varied parameters. Numbers on the x axis when every value is one, else categories. A sweep that varies
  * no parameter gets a plot per metric against the seed, one point per run. Drawn by XChart, headless.
  */
@@ -114,7 +115,9 @@ final class Plots {
             List<String> varied) {
         List<String> values = sweep.values().get(parameter);
         boolean numeric = values.stream().allMatch(Plots::isNumber);
-        Map<String, double[][]> lines = new LinkedHashMap<>(); // label -> {mean[], half-width[]} by value index
+        // label -> {mean[], the interval's midpoint[], its half-width[]} by value index (a bootstrap interval is not
+        // centred on the mean: its bars are a series of their own, drawn about its midpoint)
+        Map<String, double[][]> lines = new LinkedHashMap<>();
         tables.byCombination.forEach((combination, stats) -> {
             StringBuilder label = new StringBuilder();
             for (String other : varied) {
@@ -123,7 +126,7 @@ final class Plots {
                 }
             }
             double[][] line = lines.computeIfAbsent(label.length() == 0 ? metric : label.toString(), k -> {
-                double[][] empty = new double[2][values.size()];
+                double[][] empty = new double[3][values.size()];
                 java.util.Arrays.fill(empty[0], Double.NaN);
                 return empty;
             });
@@ -131,8 +134,9 @@ final class Plots {
             SummaryStatistics s = stats.get(metric);
             if (s != null && s.getN() > 0) {
                 line[0][at] = s.getMean();
-                double[] ci = Tables.interval(s);
-                line[1][at] = ci == null ? 0 : (ci[1] - ci[0]) / 2;
+                double[] ci = tables.interval(combination, metric);
+                line[1][at] = ci == null ? s.getMean() : (ci[0] + ci[1]) / 2;
+                line[2][at] = ci == null ? 0 : (ci[1] - ci[0]) / 2;
             }
         });
         String title = metric + " vs " + parameter + " (mean, 95% CI)";
@@ -144,16 +148,22 @@ final class Plots {
             lines.forEach((label, line) -> {
                 List<Double> xs = new ArrayList<>();
                 List<Double> ys = new ArrayList<>();
+                List<Double> middles = new ArrayList<>();
                 List<Double> errors = new ArrayList<>();
                 for (int i = 0; i < x.length; i++) {
                     if (!Double.isNaN(line[0][i])) {
                         xs.add(x[i]);
                         ys.add(line[0][i]);
-                        errors.add(line[1][i]);
+                        middles.add(line[1][i]);
+                        errors.add(line[2][i]);
                     }
                 }
                 if (!xs.isEmpty()) {
-                    chart.addSeries(label, xs, ys, errors).setMarker(SeriesMarkers.CIRCLE);
+                    chart.addSeries(label, xs, ys).setMarker(SeriesMarkers.CIRCLE);
+                    XYSeries bars = chart.addSeries(label + ", 95% CI", xs, middles, errors);
+                    bars.setMarker(SeriesMarkers.NONE);
+                    bars.setLineStyle(org.knowm.xchart.style.lines.SeriesLines.NONE);
+                    bars.setShowInLegend(false);
                 }
             });
             return chart;
@@ -169,7 +179,8 @@ final class Plots {
                 if (!Double.isNaN(line[0][i])) { // (a value without a successful run: no bar)
                     xs.add(values.get(i));
                     ys.add(line[0][i]);
-                    errors.add(line[1][i]);
+                    // (bars' error bars are centred on the mean: the interval's larger side, both ways)
+                    errors.add(Math.abs(line[1][i] - line[0][i]) + line[2][i]);
                 }
             }
             if (!xs.isEmpty()) {

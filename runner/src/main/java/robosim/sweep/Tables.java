@@ -17,16 +17,24 @@ import org.apache.commons.math3.stat.descriptive.SummaryStatistics;
 /**
  * The tables made from a sweep's rows: {@code runs.csv} (every row, by index, the columns of all of them) and
  * {@code summary.csv} (one row per combination of the parameters: how many runs, how many failed, and per metric
- * the mean, the sample standard deviation and the 95% confidence interval of the mean, Student's t, over the runs
- * that succeeded). Each is written whole, then renamed into place.
+ * the mean, the sample standard deviation and the 95% confidence interval of the mean over the runs that succeeded:
+ * a bootstrap percentile interval for the built-in counts and the share {@code area_covered}, which stays within
+ * their range, Student's t for every other metric). Each is written whole, then renamed into place.
  */
 final class Tables {
     /** The metrics of the rows: every column that is neither the run's nor a parameter, in first-seen order. */
     final List<String> metrics;
     /** Each combination's statistics, by combination (parameter values in sweep order), in run order. */
     final Map<Map<String, String>, Map<String, SummaryStatistics>> byCombination = new LinkedHashMap<>();
+    /** Each combination's values of each metric, in run order (the bootstrap's samples). */
+    private final Map<Map<String, String>, Map<String, List<Double>>> samples = new LinkedHashMap<>();
     /** Runs and failed runs per combination. */
     final Map<Map<String, String>, int[]> counts = new LinkedHashMap<>();
+    /** The metrics whose interval is a bootstrap percentile one: counts and a share, which a t-interval can leave. */
+    static final Set<String> BOOTSTRAPPED = Set.of("contacts", "messages_delivered", "tags", "robots_left",
+            "area_covered");
+    /** The bootstrap's resamples. */
+    private static final int RESAMPLES = 10_000;
     private final Sweep sweep;
     private final List<Row> rows;
     private final List<String> columns;
@@ -54,6 +62,7 @@ final class Tables {
         columns.addAll(Row.LAST);
         for (int c = 0; c < sweep.combinationCount(); c++) {
             byCombination.put(sweep.combination(c), new LinkedHashMap<>());
+            samples.put(sweep.combination(c), new LinkedHashMap<>());
             counts.put(sweep.combination(c), new int[2]);
         }
         for (Row r : rows) {
@@ -72,6 +81,7 @@ final class Tables {
                 double v = number(r, m);
                 if (!Double.isNaN(v)) {
                     stats.computeIfAbsent(m, k -> new SummaryStatistics()).addValue(v);
+                    samples.get(combination).computeIfAbsent(m, k -> new ArrayList<>()).add(v);
                 }
             }
         }
@@ -136,7 +146,7 @@ final class Tables {
             line.add(Integer.toString(n[1]));
             for (String m : metrics) {
                 SummaryStatistics s = stats.get(m);
-                double[] ci = interval(s);
+                double[] ci = interval(combination, m);
                 line.add(s == null ? "" : Csv.number(s.getMean()));
                 line.add(s == null || s.getN() < 2 ? "" : Csv.number(s.getStandardDeviation()));
                 line.add(ci == null ? "" : Csv.number(ci[0]));
@@ -147,14 +157,41 @@ final class Tables {
         replace(dir.resolve("summary.csv"), summary.toString());
     }
 
-    /** The 95% confidence interval of the mean (Student's t, n - 1 degrees of freedom); null for fewer than 2 values. */
-    static double[] interval(SummaryStatistics s) {
+    /**
+     * The 95% confidence interval of the mean of {@code metric} at {@code combination}: a bootstrap percentile one for
+     * {@link #BOOTSTRAPPED} metrics, else Student's t with n - 1 degrees of freedom; null for fewer than 2 values.
+     */
+    double[] interval(Map<String, String> combination, String metric) {
+        SummaryStatistics s = byCombination.get(combination).get(metric);
         if (s == null || s.getN() < 2) {
             return null;
+        }
+        if (BOOTSTRAPPED.contains(metric)) {
+            return bootstrap(samples.get(combination).get(metric), (combination + " " + metric).hashCode());
         }
         double t = new TDistribution(null, s.getN() - 1).inverseCumulativeProbability(0.975);
         double half = t * s.getStandardDeviation() / Math.sqrt(s.getN());
         return new double[] {s.getMean() - half, s.getMean() + half};
+    }
+
+    /**
+     * The 2.5th and 97.5th percentiles of the means of {@link #RESAMPLES} resamples (with replacement) of {@code
+     * values}, drawn from a generator seeded with {@code seed}: the same values give the same interval.
+     */
+    static double[] bootstrap(List<Double> values, long seed) {
+        java.util.SplittableRandom random = new java.util.SplittableRandom(seed);
+        int n = values.size();
+        double[] means = new double[RESAMPLES];
+        for (int b = 0; b < RESAMPLES; b++) {
+            double sum = 0;
+            for (int i = 0; i < n; i++) {
+                sum += values.get(random.nextInt(n));
+            }
+            means[b] = sum / n;
+        }
+        java.util.Arrays.sort(means);
+        return new double[] {means[(int) Math.floor(0.025 * (RESAMPLES - 1))],
+            means[(int) Math.ceil(0.975 * (RESAMPLES - 1))]};
     }
 
     private static void replace(Path file, String text) throws IOException {

@@ -1,0 +1,51 @@
+package robosim.sweep;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import org.junit.jupiter.api.Test;
+
+/** The summary's intervals: a count's and a share's stay within their range, every other metric's is Student's t. */
+class TablesTest {
+    private static Row row(int index, double contacts, double area, double distance) {
+        Map<String, String> v = new LinkedHashMap<>();
+        v.put("index", Integer.toString(index));
+        v.put("seed", Integer.toString(index + 1));
+        v.put("repetition", "1");
+        v.put("status", Row.OK);
+        v.put("exit_code", "0");
+        v.put("contacts", Double.toString(contacts));
+        v.put("area_covered", Double.toString(area));
+        v.put("distance_m", Double.toString(distance));
+        return new Row(v);
+    }
+
+    @Test
+    void aCountsAndASharesIntervalsStayInTheirRangeAndAreTheSameEveryTime() {
+        Sweep sweep = new Sweep(Path.of("/s.xml"), Path.of("/w.xml"), 10, 1, 5, 1, Map.of(), Sweep.Layout.ONE_JVM, 0,
+                List.of(), List.of(), 0.5);
+        double[] contacts = {0, 0, 1, 0, 0};
+        double[] area = {0.98, 1, 1, 0.99, 1};
+        double[] distance = {10, 12, 11, 13, 9};
+        List<Row> rows = new ArrayList<>();
+        for (int i = 0; i < 5; i++) {
+            rows.add(row(i, contacts[i], area[i], distance[i]));
+        }
+        Tables tables = new Tables(sweep, rows);
+        double[] c = tables.interval(Map.of(), "contacts");
+        assertTrue(c[0] >= 0 && c[0] <= 0.2 && c[1] <= 1 && c[1] >= 0.2, c[0] + " to " + c[1]);
+        double[] a = tables.interval(Map.of(), "area_covered");
+        assertTrue(a[0] >= 0.98 && a[1] <= 1, a[0] + " to " + a[1]);
+        assertArrayEquals(c, new Tables(sweep, rows).interval(Map.of(), "contacts"), "the same rows, the same interval");
+        double[] d = tables.interval(Map.of(), "distance_m");
+        // Student's t: mean 11, sd 1.58, t(0.975, 4) = 2.776
+        assertEquals(11 - 2.776 * Math.sqrt(2.5) / Math.sqrt(5), d[0], 1e-3);
+        assertEquals(11 + 2.776 * Math.sqrt(2.5) / Math.sqrt(5), d[1], 1e-3);
+    }
+}
