@@ -9,10 +9,13 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.StepNumbers;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * Writes {@code step,robot,x_m,y_m,heading_deg,state}, one row per robot per step, from a recording viewer;
+ * Writes {@code step,robot,x_m,y_m,heading_deg,state}, one row per robot per step, from a recording viewer
+ * ({@code step}: steps completed, the number a person is shown, so the row of step 900 is the world the replay's
+ * {@code seek 900} shows, after 900 steps; protocol/README.md, "Step numbers");
  * {@code state} is {@code running}, {@code held} (lost, standing for its return: {@code --on-robot-loss HOLD}
  * or {@code WAIT}) or {@code gone}, so a robot's holds and returns show with their steps.
  */
@@ -49,7 +52,7 @@ final class PoseLog implements AutoCloseable {
         for (int i = 0; i < u.count(); i++) {
             String name = names.get(i);
             String state = u.departed().contains(name) ? "gone" : u.held().contains(name) ? "held" : "running";
-            out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s,%s%n", u.step(), name,
+            out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s,%s%n", StepNumbers.shown(u.step()), name,
                     Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
                     Double.toString(u.headingDeg(i)), state));
         }

@@ -14,6 +14,7 @@ import picocli.CommandLine.Parameters;
 import robosim.protocol.CommEvent;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RobotView;
+import robosim.protocol.StepNumbers;
 
 /**
  * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
@@ -125,8 +126,8 @@ public final class RecordToolMain implements Callable<Integer> {
                     + String.join(",", last.subList(s.robotNames().size(), last.size())));
         }
         out.println("time_step_ms=" + s.timeStepMs() + " obstacles=" + s.obstacles().size());
-        out.println("steps=" + r.steps() + (r.steps() == 0 ? "" : " first=" + r.stepNumber(0) + " last="
-                + r.stepNumber(r.steps() - 1)));
+        out.println("steps=" + r.steps() + (r.steps() == 0 ? "" : " first=" + StepNumbers.shown(r.stepNumber(0))
+                + " last=" + StepNumbers.shown(r.stepNumber(r.steps() - 1))));
         if (r.end() != null) {
             out.println("end=" + r.end().reason());
         } else {
@@ -149,13 +150,13 @@ public final class RecordToolMain implements Callable<Integer> {
             RecordingReader.Step s = r.step(k);
             for (RobotView v : s.views()) {
                 for (CommEvent m : v.delivered()) {
-                    out.write(s.update().step() + "," + csv(m.from()) + "," + csv(m.to()) + "," + csv(m.payload()) + "\n");
+                    out.write(StepNumbers.shown(s.update().step()) + "," + csv(m.from()) + "," + csv(m.to()) + "," + csv(m.payload()) + "\n");
                 }
             }
         }
     }
 
-    /** Every value a robot reported, in the step whose request carried it (the wire's step numbers, as {@code poses}). */
+    /** Every value a robot reported, with the step whose request carried it (steps completed, as {@code poses}). */
     static void reports(RecordingReader r, BufferedWriter out) throws IOException {
         out.write("step,robot,name,value\n");
         for (int k = 0; k < r.steps(); k++) {
@@ -163,7 +164,7 @@ public final class RecordToolMain implements Callable<Integer> {
             List<String> names = r.snapshotAt(k).robotNames();
             for (RobotView v : s.views()) {
                 for (robosim.protocol.Report report : v.reports()) {
-                    out.write(s.update().step() + "," + csv(v.robot() < names.size() ? names.get(v.robot())
+                    out.write(StepNumbers.shown(s.update().step()) + "," + csv(v.robot() < names.size() ? names.get(v.robot())
                             : "robot" + v.robot()) + "," + report.name() + ","
                             + Double.toString(report.value()) + "\n");
                 }

@@ -61,9 +61,9 @@ class HeadlessRunnerTest {
         // 200 steps = 2 cycles of 88 + 24 steps forward: x = 1.5 + 24 * 0.25 m
         double[] expected = BackAndForthMath.after(199);
         assertEquals(6.0, expected[0] / 1000);
-        assertEquals("199,r1,7.5,1.0,0.0,running", rows.get(rows.size() - 3));
-        assertEquals("199,r2,7.5,2.0,0.0,running", rows.get(rows.size() - 2));
-        assertEquals("199,r3,7.5,3.0,0.0,running", rows.get(rows.size() - 1));
+        assertEquals("200,r1,7.5,1.0,0.0,running", rows.get(rows.size() - 3), "the world after 200 steps");
+        assertEquals("200,r2,7.5,2.0,0.0,running", rows.get(rows.size() - 2));
+        assertEquals("200,r3,7.5,3.0,0.0,running", rows.get(rows.size() - 1));
     }
 
     @Test

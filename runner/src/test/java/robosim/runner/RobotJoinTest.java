@@ -173,7 +173,7 @@ class RobotJoinTest {
         int row = 1;
         for (int s = 0; s < STEPS; s++) {
             List<String[]> at = new ArrayList<>();
-            while (row < rows.size() && rows.get(row).startsWith(s + ",")) {
+            while (row < rows.size() && rows.get(row).startsWith((s + 1) + ",")) { // (the world after s + 1 steps)
                 at.add(rows.get(row++).split(","));
             }
             assertEquals(1 + Math.min(20, s / 4), at.size(), "step " + s + ": the walker and the scouts that joined");

@@ -83,7 +83,7 @@ class TwoHostsIT {
             viewer.await("pose-log: 200 steps written to " + poses, LONG_S);
             List<String> rows = Files.readAllLines(poses, StandardCharsets.UTF_8);
             assertEquals(1 + 200 * 2, rows.size(), "a header and both robots' poses at every step");
-            assertTrue(rows.get(rows.size() - 1).startsWith("199,"), rows.get(rows.size() - 1));
+            assertTrue(rows.get(rows.size() - 1).startsWith("200,"), rows.get(rows.size() - 1));
         } finally {
             started.forEach(ProcessLines::close);
             for (ProcessLines p : started) {
