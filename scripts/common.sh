@@ -191,11 +191,30 @@ robosim_build_if_stale() {
     why=$(robosim_why_build)
   fi
   if [ -n "$why" ]; then
-    echo "$why: rebuilding (./mvnw -q package -DskipTests) ..." >&2
-    (cd "$ROBOSIM_HOME" && ./mvnw -q -B -ntp package -DskipTests) >&2 \
-      || { echo "$ROBOSIM_SCRIPT: the build failed (its errors are above); nothing was started" >&2; exit 1; }
+    robosim_build "$why"
   fi
   exec 9>&-
+}
+
+# Builds RoboSim (./mvnw package -DskipTests), saying why ($1) and then each module as Maven starts it (a first
+# build, which fetches Maven and the libraries, takes a minute or two); on failure, Maven's errors, exit 1.
+robosim_build() {
+  local log rc
+  log=$(mktemp "${TMPDIR:-/tmp}/robosim-build.XXXXXX")
+  echo "$1: rebuilding (./mvnw package -DskipTests; a first build fetches Maven and the libraries) ..." >&2
+  # (its exit code through a file: the pipe's is awk's, and under a caller's errexit a failing command would end it)
+  (cd "$ROBOSIM_HOME" && ./mvnw -B -ntp package -DskipTests && echo 0 >"$log.rc" || echo $? >"$log.rc") 2>&1 \
+    | tee "$log" \
+    | awk '/^\[INFO\] Building .* \[[0-9]+\/[0-9]+\]$/ { n = split($0, w, " "); printf "  building";
+        for (i = 3; i <= n - 2; i++) printf " %s", w[i]; printf " %s\n", w[n]; fflush() }' >&2
+  rc=$(cat "$log.rc" 2>/dev/null || echo 1)
+  if [ "$rc" != 0 ]; then
+    grep -E '^\[ERROR\]' "$log" | head -40 >&2
+    rm -f "$log" "$log.rc"
+    echo "$ROBOSIM_SCRIPT: the build failed (its errors are above); nothing was started" >&2
+    exit 1
+  fi
+  rm -f "$log" "$log.rc"
 }
 
 # RoboSim's class path: every module's jar and dependency, then the user's ROBOSIM_CLASSPATH entries
