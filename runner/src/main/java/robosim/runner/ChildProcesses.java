@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
 import java.util.function.Consumer;
+import java.util.regex.Pattern;
 
 /**
  * Starts Java child processes on this JVM's class path and stops them all at the end: when closed,
@@ -96,13 +97,22 @@ public final class ChildProcesses implements AutoCloseable {
         pipe(name + ".out", child.process.getInputStream(), stdoutLines != null ? stdoutLines : System.err::println,
                 () -> { });
         pipe(name + ".err", child.process.getErrorStream(), line -> {
-            System.err.println(line);
+            if (!CONTROL_FAILED.matcher(line).matches()) { // (said once, at the end: controlFailures)
+                System.err.println(line);
+            }
             if (!line.isBlank()) {
                 child.errorLine(line);
             }
         }, child.stderrClosed::countDown);
         return child;
     }
+
+    /**
+     * A robot process's last line when a robot's control code threw: not copied to our stderr, where its log's error
+     * (with the stack trace) is already, since the runner says it once at the end ({@link #controlFailures}).
+     */
+    private static final Pattern CONTROL_FAILED = Pattern.compile(
+            "robot \\S+: its control code failed: .*");
 
     /**
      * Starts {@code mainClass} with {@code args} and the common JVM options, its stdout and stderr into {@code log}

@@ -83,6 +83,8 @@ class HeadlessRunnerTest {
             assertEquals(HeadlessRunner.EXIT_CONTROL_FAILED, r.code(), r.all());
             assertTrue(r.out().contains("robot r1: its control code failed: java.lang.IllegalStateException: a bug in "
                     + "r1's control code"), r.all());
+            assertEquals(1, r.all().lines().filter(l -> l.startsWith("robot r1: its control code failed")).count(),
+                    "said once: " + r.all());
             String summary = r.out().get(r.out().size() - 1);
             assertTrue(summary.startsWith("steps=20 robots=2 ") && summary.contains(" control_failed=1 "), r.all());
         }

@@ -54,7 +54,8 @@ public final class Viewer2DMain implements Callable<Integer> {
     @Override
     public Integer call() throws Exception {
         if (GraphicsEnvironment.isHeadless()) {
-            System.err.println("viewer2d: no display (set DISPLAY, or run without a viewer: scripts/headless.sh)");
+            System.err.println("viewer2d: no display (set DISPLAY); without one, watch in a browser: --web-port 8080 on "
+                    + "environment.sh, headless.sh or replay.sh, then http://localhost:8080/");
             return 2;
         }
         if (fps < 1 || fps > 240) {
