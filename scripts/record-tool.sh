@@ -6,5 +6,6 @@
 #   scripts/record-tool.sh reports FILE      every value the robots reported as CSV (step,robot,name,value)
 #   scripts/record-tool.sh metrics FILE      the run's metrics as a sweep's row has them (CSV)
 #   scripts/record-tool.sh plot FILE --out F.png   each robot's trajectory over the arena, drawn into a PNG
+#   scripts/record-tool.sh plot FILE --report NAME --out F.png   a reported value over the run, a line per robot
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 robosim_java robosim.runner.RecordToolMain "$@"

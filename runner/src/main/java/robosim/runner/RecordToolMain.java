@@ -38,6 +38,10 @@ public final class RecordToolMain implements Callable<Integer> {
             + "(a new file).")
     Path png;
 
+    @picocli.CommandLine.Option(names = "--report", paramLabel = "NAME", description = "With plot: draw NAME's "
+            + "reported values over the run, a line per robot, instead of the trajectories.")
+    String report;
+
     @picocli.CommandLine.Option(names = "--size", paramLabel = "PX", description = "With plot: the arena's longer side, "
             + "px (default: 800).")
     int sizePx = 800;
@@ -64,8 +68,9 @@ public final class RecordToolMain implements Callable<Integer> {
         if (what.equals("metrics")) {
             return metrics();
         }
-        if ((png != null) != what.equals("plot")) {
-            System.err.println("record-tool: " + (png == null ? "plot needs --out FILE.png" : "--out goes with plot"));
+        if ((png != null || report != null) != what.equals("plot") || (report != null && png == null)) {
+            System.err.println("record-tool: " + (what.equals("plot") ? "plot needs --out FILE.png"
+                    : "--out and --report go with plot"));
             return 2;
         }
         if (png != null && java.nio.file.Files.exists(png)) {
@@ -82,7 +87,15 @@ public final class RecordToolMain implements Callable<Integer> {
                 case "summary" -> summary(r, System.out);
                 case "poses" -> poses(r, out);
                 case "reports" -> reports(r, out);
-                case "plot" -> TrajectoryPlot.draw(r, png, sizePx);
+                case "plot" -> {
+                    if (report == null) {
+                        TrajectoryPlot.draw(r, png, sizePx);
+                    } else if (!ReportPlot.draw(r, report, png)) {
+                        System.err.println("record-tool: " + file + ": no robot reported '"
+                                + robosim.protocol.Printable.of(report, 64) + "'");
+                        return 1;
+                    }
+                }
                 default -> messages(r, out);
             }
             out.flush();

@@ -43,5 +43,12 @@ class TrajectoryPlotTest {
         assertEquals(2, new picocli.CommandLine(new RecordToolMain()).execute("plot", recording.toString(), "--out",
                 png.toString()), "an existing file is not overwritten");
         assertTrue(Files.size(png) > 2000);
+
+        Path turns = dir.resolve("turns.png");
+        assertEquals(0, new picocli.CommandLine(new RecordToolMain()).execute("plot", recording.toString(), "--report",
+                "turns", "--out", turns.toString()));
+        assertEquals(800, ImageIO.read(turns.toFile()).getWidth(), "Wander's turns over the run");
+        assertEquals(1, new picocli.CommandLine(new RecordToolMain()).execute("plot", recording.toString(), "--report",
+                "turnz", "--out", dir.resolve("none.png").toString()), "a name no robot reported");
     }
 }
