@@ -64,7 +64,8 @@ robosim_pick_java() {
 # archive under runner/target/cds/ (per JDK): on JDK 25 and later an AOT cache (KEY.aot: the classes loaded
 # and linked, and the methods' profiles), assembled in the background from the configuration such a run
 # recorded at its exit; on JDK 19-24 a dynamic CDS archive (KEY.jsa) written at its exit. The directory goes
-# to the processes as ROBOSIM_CDS_DIR (the runner's children use it, ClassDataArchives); empty when
+# to the processes as ROBOSIM_CDS_DIR (the runner's children use it, ClassDataArchives), its kind as
+# ROBOSIM_CDS_KIND (aot or jsa); empty when
 # ROBOSIM_CDS=off, on JDK 17 (whose dynamic dump stops the JVM when the JDK's own archive is not mapped)
 # and on a JDK without a default CDS archive.
 robosim_cds_dir() {
@@ -80,7 +81,7 @@ robosim_cds_dir() {
       [ "$ROBOSIM_JAVA_VERSION" -ge 25 ] && ROBOSIM_CDS_KIND=aot
     fi
   fi
-  export ROBOSIM_CDS_DIR
+  export ROBOSIM_CDS_DIR ROBOSIM_CDS_KIND # (a script started by another keeps both: it chooses no JDK again)
 }
 
 # Bad input: one line naming the script, exit 2.
@@ -209,7 +210,7 @@ robosim_build() {
         for (i = 3; i <= n - 2; i++) printf " %s", w[i]; printf " %s\n", w[n]; fflush() }' >&2
   rc=$(cat "$log.rc" 2>/dev/null || echo 1)
   if [ "$rc" != 0 ]; then
-    grep -E '^\[ERROR\]' "$log" | head -40 >&2
+    { grep -E '^\[ERROR\]' "$log" || tail -n 30 "$log"; } | head -n 40 >&2 || true # (no [ERROR]: the wrapper's own)
     rm -f "$log" "$log.rc"
     echo "$ROBOSIM_SCRIPT: the build failed (its errors are above); nothing was started" >&2
     exit 1
@@ -269,6 +270,7 @@ robosim_cds_opts() {
   local main=$1 cp=$2 dir=${ROBOSIM_CDS_DIR:-} parts=() e key pid quiet=('-Xlog:cds*=off' '-Xlog:aot*=off')
   ROBOSIM_CDS_OPTS=()
   case $dir in ''|*:*) return 0 ;; esac
+  case ${ROBOSIM_CDS_KIND:-} in aot|jsa) ;; *) return 0 ;; esac
   IFS=: read -ra parts <<<"${ROBOSIM_CLASSPATH:-}"
   for e in "${parts[@]}"; do
     [ -d "$e" ] && return 0

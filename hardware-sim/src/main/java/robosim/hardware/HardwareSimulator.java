@@ -295,13 +295,23 @@ public final class HardwareSimulator {
         } catch (InterruptedException e) {
             LOG.debug("{}: control code stopped", name);
         } catch (Exception | Error e) {
-            if (!link.over()) { // (what it throws once the simulation is over, told by an interrupt, is no failure)
+            if (!(link.over() && interrupted(e))) { // (the end's interrupt, however wrapped, is no failure)
                 controlFailure = new ControlFailure(name, steps, e);
             }
             LOG.error("{}: control code failed; the robot stands still", name, e);
         } finally {
             link.controlFinished();
         }
+    }
+
+    /** Whether {@code e} is, or was caused by, an interrupt (the end of the simulation, told to a blocked call). */
+    private static boolean interrupted(Throwable e) {
+        for (Throwable t = e; t != null; t = t.getCause() == t ? null : t.getCause()) {
+            if (t instanceof InterruptedException) {
+                return true;
+            }
+        }
+        return false;
     }
 
     ControlLink link() {

@@ -30,6 +30,8 @@ public final class ChildProcesses implements AutoCloseable {
         final Process process;
         private final ClassDataArchives.Launch archive;
         private final java.util.ArrayDeque<String> lastErrorLines = new java.util.ArrayDeque<>();
+        /** Its {@code robot NAME: its control code failed: ...} lines, every one (up to one per robot it runs). */
+        private final List<String> controlFailed = new ArrayList<>();
         private final java.util.concurrent.CountDownLatch stderrClosed = new java.util.concurrent.CountDownLatch(1);
 
         private Child(String name, Process process, ClassDataArchives.Launch archive) {
@@ -39,6 +41,9 @@ public final class ChildProcesses implements AutoCloseable {
         }
 
         private synchronized void errorLine(String line) {
+            if (CONTROL_FAILED.matcher(line).matches() && controlFailed.size() < MAX_CONTROL_FAILED) {
+                controlFailed.add(line.strip());
+            }
             if (lastErrorLines.size() == KEPT_LINES) {
                 lastErrorLines.removeFirst();
             }
@@ -53,6 +58,14 @@ public final class ChildProcesses implements AutoCloseable {
             stderrClosed.await(timeoutMs, TimeUnit.MILLISECONDS);
             synchronized (this) {
                 return String.join(" | ", lastErrorLines);
+            }
+        }
+
+        /** Its control-failed lines, once its stderr has closed or after {@code timeoutMs}. */
+        List<String> controlFailed(long timeoutMs) throws InterruptedException {
+            stderrClosed.await(timeoutMs, TimeUnit.MILLISECONDS);
+            synchronized (this) {
+                return List.copyOf(controlFailed);
             }
         }
     }
@@ -111,6 +124,8 @@ public final class ChildProcesses implements AutoCloseable {
      * A robot process's last line when a robot's control code threw: not copied to our stderr, where its log's error
      * (with the stack trace) is already, since the runner says it once at the end ({@link #controlFailures}).
      */
+    /** The most control-failed lines kept of one child (one per robot it runs; a bound all the same). */
+    private static final int MAX_CONTROL_FAILED = 10_000;
     private static final Pattern CONTROL_FAILED = Pattern.compile(
             "robot \\S+: its control code failed: .*");
 
@@ -250,20 +265,15 @@ public final class ChildProcesses implements AutoCloseable {
 
     /**
      * After {@link #awaitAll}: what the robot processes that ended with {@link #EXIT_CONTROL_FAILED} said of it, one
-     * {@code robot NAME: its control code failed: ...} line each (a process of several robots names at most its
-     * last three).
+     * {@code robot NAME: its control code failed: ...} line for each robot whose control code threw.
      */
     List<String> controlFailures() throws InterruptedException {
         List<String> lines = new ArrayList<>();
         for (Child c : started) {
             if (!c.process.isAlive() && c.process.exitValue() == EXIT_CONTROL_FAILED) {
                 int before = lines.size();
-                for (String l : c.lastErrorLines(5_000).split(" \\| ")) {
-                    if (l.contains("its control code failed")) {
-                        lines.add(l);
-                    }
-                }
-                if (lines.size() == before) { // (its last lines said something else: it still counts)
+                lines.addAll(c.controlFailed(5_000));
+                if (lines.size() == before) { // (it said something else: it still counts)
                     lines.add(c.name + ": its control code failed (exit " + EXIT_CONTROL_FAILED + "; its log says how)");
                 }
             }

@@ -65,7 +65,7 @@ public final class RecordToolMain implements Callable<Integer> {
                     + "\" (summary, poses, messages, reports, metrics or plot)");
             return 2;
         }
-        if (what.equals("metrics")) {
+        if (what.equals("metrics") && png == null && report == null) {
             return metrics();
         }
         if ((png != null || report != null) != what.equals("plot") || (report != null && png == null)) {

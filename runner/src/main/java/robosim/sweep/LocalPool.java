@@ -32,6 +32,8 @@ final class LocalPool {
     private final AtomicInteger unfinished = new AtomicInteger();
     /** The first runs to end, up to {@code giveUpAfter} (guarded by {@code this}). */
     private final List<Row> first = new ArrayList<>();
+    /** Every row this pool wrote (guarded by {@code this}): a give-up removes those of its reason. */
+    private final List<Row> written = new ArrayList<>();
     /** The reason every one of the first runs failed for, once they all did (then the sweep stops). */
     private volatile String gaveUp;
 
@@ -88,12 +90,18 @@ final class LocalPool {
         }
         children.close();
         if (gaveUp != null) {
-            for (Row r : first) {
-                java.nio.file.Files.deleteIfExists(out.row(r.index()));
+            int removed = 0;
+            synchronized (this) {
+                for (Row r : written) { // (the first runs, and any that ended with them for the same reason)
+                    if (gaveUp.equals(r.values().get("error")) && java.nio.file.Files.deleteIfExists(out.row(r.index()))) {
+                        removed++;
+                    }
+                }
             }
+            progress.close();
             err.println("sweep: the first " + first.size() + " runs all failed: " + gaveUp + "; stopped before the "
-                    + "others, their rows removed (mend it, then the same command with --resume runs every run; "
-                    + "--give-up-after 0 runs them all anyway)");
+                    + "others, the rows of the " + removed + " that failed so removed (mend it, then the same command with "
+                    + "--resume runs every run; --give-up-after 0 runs them all anyway)");
             return unfinished.get() + (int) (sweep.runs() - out.rowsWritten().size());
         }
         return unfinished.get();
@@ -102,7 +110,8 @@ final class LocalPool {
     /** Keeps {@code row} if it is one of the first to end; gives the sweep up when they all failed alike. */
     private void firstRuns(Row row, ChildProcesses children) {
         synchronized (this) {
-            if (giveUpAfter == 0 || first.size() >= giveUpAfter) {
+            written.add(row);
+            if (giveUpAfter == 0 || first.size() >= giveUpAfter || stopping) {
                 return;
             }
             first.add(row);
@@ -124,6 +133,9 @@ final class LocalPool {
             int index = todo.get(i);
             try {
                 Row row = runner.run(index, runs);
+                if (row != null) {
+                    firstRuns(row, children); // (before the stop's check: a row written as the sweep gave up counts)
+                }
                 if (stopping || children.closing()) {
                     return; // (this JVM is stopping: the run was stopped with it)
                 }
@@ -131,7 +143,6 @@ final class LocalPool {
                     unfinished.incrementAndGet();
                 } else {
                     progress.finished(row.ok());
-                    firstRuns(row, children);
                 }
             } catch (IOException | RuntimeException e) {
                 if (stopping || children.closing()) {

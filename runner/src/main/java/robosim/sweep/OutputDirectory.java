@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.nio.file.StandardCopyOption;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.BitSet;
@@ -58,10 +59,7 @@ final class OutputDirectory {
         Path copy = dir.resolve("sweep.xml");
         byte[] spec = Files.readAllBytes(sweep.file());
         if (Files.exists(copy)) {
-            if (Files.exists(dir.resolve(GROWING))) {
-                throw new SweepException(dir + ": a growth of its sweep was cut short (" + GROWING + " is there, its "
-                        + "rows may be numbered for either file); give another --out");
-            }
+            settleGrowth();
             if (!Arrays.equals(Files.readAllBytes(dir.resolve("world.xml")), Files.readAllBytes(sweep.world()))) {
                 throw new SweepException(dir + ": its rows are of another " + sweep.world().getFileName() + " (it changed "
                         + "since; world.xml there is the one they are of); give another --out");
@@ -104,52 +102,111 @@ final class OutputDirectory {
 
     /** Where a growth stages its renumbered rows, logs and recordings (there only while one is under way). */
     private static final String GROWING = ".growing";
+    /** In the stage once it is whole: from then on the growth is finished (rolled forward), never undone. */
+    private static final String SWAPPING = "swapping";
+    private static final List<String> PARTS = List.of("rows", "logs", "recordings");
 
     /**
-     * Makes this directory, whose rows are of {@code earlier}, {@code later}'s: each row, log and recording renumbered
-     * to its run's index in {@code later} (staged in {@link #GROWING}, then each directory swapped in by a rename), then
-     * {@code later}'s text ({@code spec}) copied as sweep.xml, last. Rows of every earlier run are kept: the runs
-     * {@code later} adds are those without a row.
+     * Makes this directory, whose rows are of {@code earlier}, {@code later}'s: every row mapped to its run's index in
+     * {@code later} first (a run {@code later} does not have refuses the growth before anything is touched), then
+     * each row, log and recording renumbered into a stage ({@link #GROWING}; logs copied, recordings linked or
+     * copied, so the directory is as it was until the stage is whole), then the stage marked whole and swapped in
+     * ({@link #finishGrowth}).
      */
     private void grow(Sweep earlier, Sweep later, byte[] spec) throws IOException, SweepException {
-        Path stage = dir.resolve(GROWING);
-        List<String> parts = List.of("rows", "logs", "recordings");
-        for (String part : parts) {
-            Files.createDirectories(stage.resolve(part));
-        }
-        for (Row r : rowsWritten()) {
+        List<Row> rows = rowsWritten();
+        java.util.Map<Row, Integer> to = new java.util.LinkedHashMap<>();
+        for (Row r : rows) {
             Sweep.Run run = earlier.run(r.index());
             long index = later.indexOf(run.parameters(), run.seed(), run.repetition());
             if (index < 0) {
                 throw new SweepException(dir + ": run " + r.index() + " is no run of " + later.file() + "; give another --out");
             }
-            java.util.Map<String, String> values = new java.util.LinkedHashMap<>(r.values());
-            values.put("index", Long.toString(index));
-            new Row(values).write(Row.file(stage.resolve("rows"), (int) index));
-            Path log = log(r.index());
-            if (Files.exists(log)) {
-                Files.copy(log, stage.resolve("logs").resolve(log((int) index).getFileName()));
+            to.put(r, (int) index);
+        }
+        Path stage = dir.resolve(GROWING);
+        try {
+            for (String part : PARTS) {
+                Files.createDirectories(stage.resolve(part));
             }
-            Path recording = recording(r.index());
-            if (Files.exists(recording)) {
-                Files.move(recording, stage.resolve("recordings").resolve(recording((int) index).getFileName()));
+            for (java.util.Map.Entry<Row, Integer> e : to.entrySet()) {
+                int from = e.getKey().index();
+                int index = e.getValue();
+                java.util.Map<String, String> values = new java.util.LinkedHashMap<>(e.getKey().values());
+                values.put("index", Integer.toString(index));
+                new Row(values).write(Row.file(stage.resolve("rows"), index));
+                if (Files.exists(log(from))) {
+                    Files.copy(log(from), stage.resolve("logs").resolve(log(index).getFileName()));
+                }
+                if (Files.exists(recording(from))) {
+                    Path staged = stage.resolve("recordings").resolve(recording(index).getFileName());
+                    try {
+                        Files.createLink(staged, recording(from));
+                    } catch (IOException | UnsupportedOperationException noLink) {
+                        Files.copy(recording(from), staged);
+                    }
+                }
+            }
+            Files.write(stage.resolve("sweep.xml"), spec);
+            Files.writeString(stage.resolve("origin"), later.file() + "\n", StandardCharsets.UTF_8);
+        } catch (IOException | RuntimeException e) {
+            deleteTree(stage); // (nothing of the directory was touched: it stays the earlier sweep's)
+            throw e;
+        }
+        Files.createFile(stage.resolve(SWAPPING));
+        finishGrowth();
+    }
+
+    /**
+     * Finishes a growth whose stage is whole, from wherever it stopped: each part not yet swapped in takes the place
+     * of the earlier one, then origin and sweep.xml are the later sweep's, then the stage goes.
+     */
+    private void finishGrowth() throws IOException {
+        Path stage = dir.resolve(GROWING);
+        for (String part : PARTS) {
+            if (Files.exists(stage.resolve(part))) {
+                if (Files.exists(dir.resolve(part))) {
+                    Files.move(dir.resolve(part), stage.resolve(part + ".earlier"));
+                }
+                Files.move(stage.resolve(part), dir.resolve(part));
             }
         }
-        for (String part : parts) {
-            Path old = dir.resolve(part);
-            Path gone = stage.resolve(part + ".earlier");
-            if (Files.exists(old)) {
-                Files.move(old, gone);
+        for (String file : List.of("origin", "sweep.xml")) { // (sweep.xml last: it says whose the rows are)
+            if (Files.exists(stage.resolve(file))) {
+                Files.move(stage.resolve(file), dir.resolve(file), StandardCopyOption.ATOMIC_MOVE,
+                        StandardCopyOption.REPLACE_EXISTING);
             }
-            Files.move(stage.resolve(part), old);
         }
-        Path copy = dir.resolve("sweep.xml");
-        Path temporary = dir.resolve(".sweep.xml.tmp");
-        Files.write(temporary, spec);
-        Files.move(temporary, copy, java.nio.file.StandardCopyOption.ATOMIC_MOVE, java.nio.file.StandardCopyOption.REPLACE_EXISTING);
-        try (var all = Files.walk(stage)) {
+        deleteTree(stage);
+    }
+
+    /**
+     * A growth cut short (this JVM killed during it): finished when its stage was whole, else its stage removed (the
+     * directory untouched); says which on stderr.
+     */
+    private void settleGrowth() throws IOException {
+        Path stage = dir.resolve(GROWING);
+        if (!Files.exists(stage)) {
+            return;
+        }
+        if (Files.exists(stage.resolve(SWAPPING))) {
+            finishGrowth();
+            System.err.println("sweep: " + dir + ": a growth of its sweep was cut short after its rows were renumbered; "
+                    + "finished now");
+        } else {
+            deleteTree(stage);
+            System.err.println("sweep: " + dir + ": a growth of its sweep was cut short before its rows were "
+                    + "renumbered; its stage removed, the rows as they were");
+        }
+    }
+
+    private static void deleteTree(Path root) throws IOException {
+        if (!Files.exists(root)) {
+            return;
+        }
+        try (var all = Files.walk(root)) {
             for (Path p : all.sorted(Comparator.reverseOrder()).toList()) {
-                Files.delete(p);
+                Files.deleteIfExists(p);
             }
         }
     }

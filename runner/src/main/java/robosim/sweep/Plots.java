@@ -69,13 +69,12 @@ final class Plots {
             default -> null;
         };
         if (unit == null) {
-            for (MetricChoice c : sweep.metrics()) {
-                if (c.kind() == MetricChoice.Kind.REPORT && (c.over() == MetricChoice.Over.EACH
-                        ? metric.startsWith(c.name() + ".") : metric.equals(c.column(null)))) {
-                    unit = c.over() == null || c.over() == MetricChoice.Over.SUM ? "reported, summed over the robots"
-                            : c.over() == MetricChoice.Over.EACH ? "reported by robot " + metric.substring(c.name().length() + 1)
-                            : "reported, " + c.over().written() + " over the robots";
-                }
+            MetricChoice owner = SweepMain.owner(sweep, metric);
+            if (owner != null) {
+                unit = owner.over() == null || owner.over() == MetricChoice.Over.SUM ? "reported, summed over the robots"
+                        : owner.over() == MetricChoice.Over.EACH ? "reported by robot "
+                        + metric.substring(owner.name().length() + 1)
+                        : "reported, " + owner.over().written() + " over the robots";
             }
             if (unit == null && sweep.metrics().isEmpty() && !RunMetrics.BUILT_IN.contains(metric)) {
                 unit = "reported, summed over the robots";

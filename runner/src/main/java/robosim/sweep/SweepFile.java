@@ -217,9 +217,9 @@ public final class SweepFile {
                         + "metric has that name" + (p.name.equals("seed") ? " (the seeds are <seeds from to>: each run "
                         + "gets its seed as the world's, whatever the file says)" : "; give the world's parameter another"));
             }
-            List<String> list = p.values == null ? List.of() : List.of(p.values.trim().split("[\\s,]+"));
-            if (p.values == null || p.values.isBlank() || p.values.replace(",", "").isBlank()
-                    || p.values.trim().startsWith(",")) {
+            String given = p.values == null ? "" : p.values.replaceAll("^[\\s,]+|[\\s,]+$", "");
+            List<String> list = given.isEmpty() ? List.of() : List.of(given.split("[\\s,]+"));
+            if (list.isEmpty()) {
                 throw new SweepException(file + ": <param name=\"" + p.name + "\"> needs values=\"A B ...\" (at least one)");
             }
             if (values.put(p.name, list) != null) {

@@ -57,10 +57,10 @@ public final class SweepMain implements Callable<Integer> {
             + "each run's control classes loaded afresh.")
     boolean freshJvmPerRun;
 
-    @Option(names = "--give-up-after", paramLabel = "K", defaultValue = "3", description = "On this machine: when the "
-            + "first K runs to end all failed for one reason, stop there, say why and remove their rows (default: "
-            + "${DEFAULT-VALUE}; 0: run every run whatever happens).")
-    int giveUpAfter;
+    @Option(names = "--give-up-after", paramLabel = "K", description = "On this machine: when the first K runs to end "
+            + "all failed for one reason, stop there, say why and remove their rows (default: 3; 0: run every run "
+            + "whatever happens).")
+    Integer giveUpAfter;
 
     @Option(names = "--jobs", paramLabel = "N", description = "Runs at once on this machine (default: its cores, "
             + "${sys:robosim.cores}).")
@@ -102,7 +102,10 @@ public final class SweepMain implements Callable<Integer> {
         if (runsPerTask != null && runsPerTask < 1) {
             return bad("sweep: --runs-per-task must be >= 1, got " + runsPerTask);
         }
-        if (giveUpAfter < 0) {
+        if (slurm && giveUpAfter != null) {
+            return bad("sweep: --give-up-after is for this machine's pool (a Slurm sweep's tasks run apart)");
+        }
+        if (giveUpAfter != null && giveUpAfter < 0) {
             return bad("sweep: --give-up-after must be >= 0 (0: never), got " + giveUpAfter);
         }
         if ((jobs != null && jobs < 1) || maxParallel < 1) {
@@ -156,7 +159,7 @@ public final class SweepMain implements Callable<Integer> {
         int cores = Runtime.getRuntime().availableProcessors();
         Progress progress = new Progress(todo.size(), err, System.console() != null);
         int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, freshJvmPerRun,
-                giveUpAfter, err).run(todo, progress);
+                giveUpAfter == null ? 3 : giveUpAfter, err).run(todo, progress);
         return finish(sweep, dir, unfinished, err);
     }
 
@@ -256,12 +259,32 @@ public final class SweepMain implements Callable<Integer> {
         }
         for (MetricChoice c : sweep.metrics()) {
             if (c.kind() == MetricChoice.Kind.REPORT && ok.stream().noneMatch(r -> r.values().keySet().stream()
-                    .anyMatch(column -> c.over() == MetricChoice.Over.EACH ? column.startsWith(c.name() + ".")
-                            : column.equals(c.column(null))))) {
+                    .anyMatch(column -> c.equals(owner(sweep, column))))) {
                 out.add(c.name());
             }
         }
         return out;
+    }
+
+    /**
+     * The report choice of {@code sweep} whose column {@code column} is, or null: a report's own column (a row writes
+     * {@code report.NAME} where a parameter has the name), {@code NAME.robot_OVER}, else {@code NAME.ROBOT} of an
+     * {@code over="each"} one.
+     */
+    static MetricChoice owner(Sweep sweep, String column) {
+        MetricChoice each = null;
+        for (MetricChoice c : sweep.metrics()) {
+            if (c.kind() != MetricChoice.Kind.REPORT) {
+                continue;
+            }
+            if (c.over() == MetricChoice.Over.EACH) {
+                each = each == null && column.startsWith(c.name() + ".") ? c : each;
+            } else if (column.equals(c.column(null)) || (c.over() == null && sweep.values().containsKey(c.name())
+                    && column.equals("report." + c.name()))) {
+                return c;
+            }
+        }
+        return each;
     }
 
     private static String name(Path spec) {

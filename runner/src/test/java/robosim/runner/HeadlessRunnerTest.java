@@ -132,6 +132,7 @@ class HeadlessRunnerTest {
         String removed = r.out().get(r.out().size() - 2);
         assertTrue(Pattern.matches("removed robot=r2 step=\\d+ reason=sent no request for step \\d+ within 2000 ms "
                 + "\\(step timeout\\): its control code made no call of the robot \\(move, turn, sleep, \\.\\.\\.\\) "
-                + "since its last step, or its process stopped answering", removed), r.all());
+                + "since its last step, or its process stopped answering; make each pass of its loop call the robot, "
+                + "robot.sleep\\(1\\) at least", removed), r.all());
     }
 }

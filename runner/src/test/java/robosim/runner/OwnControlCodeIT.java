@@ -92,7 +92,7 @@ class OwnControlCodeIT {
                 "the control class's own line is in the output:\n" + out);
 
         String[] end = Files.readAllLines(poses).get(STEPS).split(",");
-        assertEquals(List.of(Integer.toString(STEPS - 1), "own1"), List.of(end[0], end[1]), String.join(",", end));
+        assertEquals(List.of(Integer.toString(STEPS), "own1"), List.of(end[0], end[1]), String.join(",", end));
         assertEquals(2.0, Double.parseDouble(end[2]), 1e-9, "1 m along x from x = 1 m");
         assertEquals(1.0, Double.parseDouble(end[3]), 1e-9);
         assertEquals(90.0, Double.parseDouble(end[4]), 1e-9, "then a quarter turn to the left");

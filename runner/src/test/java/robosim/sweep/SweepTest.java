@@ -153,8 +153,10 @@ class SweepTest {
         Result refused = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1");
         assertEquals(2, refused.code(), refused.err());
         assertTrue(refused.err().contains("--resume grows it"), refused.err());
+        Files.createDirectories(out.resolve(".growing").resolve("rows")); // (a growth killed before its stage was whole)
         Result grown = sweep(spec.toString(), "--out", out.toString(), "--jobs", "1", "--resume");
         assertEquals(0, grown.code(), grown.err());
+        assertTrue(grown.err().contains("cut short before its rows were renumbered; its stage removed"), grown.err());
         assertTrue(grown.err().contains("9 runs (3 combinations x 3 seeds, 100 steps, one-jvm), 5 to run"), grown.err());
         List<String> rows = Files.readAllLines(out.resolve("runs.csv"));
         assertEquals(10, rows.size(), String.join("\n", rows));

@@ -67,13 +67,17 @@ public final class Simulation implements AutoCloseable {
     }
 
     /**
-     * A simulation of the environment file {@code file}; its robots run the file's control classes (found on this
-     * JVM's class path) unless {@link Builder#control} gives one an object.
+     * A simulation of the environment file {@code file}, read at {@link Builder#start} (with the builder's
+     * parameters); its robots run the file's control classes (found on this JVM's class path) unless
+     * {@link Builder#control} gives one an object.
      *
-     * @throws IllegalArgumentException naming the file, the line and what is wrong with it
+     * @throws IllegalArgumentException naming a file that is not there
      */
     public static Builder of(Path file) {
-        return new Builder(load(file, Map.of()), file);
+        if (!java.nio.file.Files.isRegularFile(file)) {
+            throw new IllegalArgumentException(file + ": file not found");
+        }
+        return new Builder(null, file);
     }
 
     /** A simulation of a world built in code; every robot needs a control object ({@link Builder#control}). */
@@ -91,6 +95,7 @@ public final class Simulation implements AutoCloseable {
 
     /** How a {@link Simulation} starts. */
     public static final class Builder {
+        /** The world built in code, or null for a file (read at the start). */
         private final WorldSpec spec;
         /** The environment file, or null for a world built in code. */
         private final Path file;
@@ -108,11 +113,16 @@ public final class Simulation implements AutoCloseable {
 
         /** Robot {@code robot} runs {@code control} (this object, not a new instance of the file's class). */
         public Builder control(String robot, RobotControl control) {
-            if (spec.indexOf(robot) < 0) {
-                throw new IllegalArgumentException("no robot named \"" + robot + "\" in " + spec.source());
-            }
+            known(spec, robot);
             controls.put(robot, control);
             return this;
+        }
+
+        /** Refuses a robot {@code spec} does not have (a file's, once read). */
+        private static void known(WorldSpec spec, String robot) {
+            if (spec != null && spec.indexOf(robot) < 0) {
+                throw new IllegalArgumentException("no robot named \"" + robot + "\" in " + spec.source());
+            }
         }
 
         /**
@@ -147,9 +157,7 @@ public final class Simulation implements AutoCloseable {
          * stands still); {@link Simulation#failure} says whether it did.
          */
         public Builder expectFailure(String robot) {
-            if (spec.indexOf(robot) < 0) {
-                throw new IllegalArgumentException("no robot named \"" + robot + "\" in " + spec.source());
-            }
+            known(spec, robot);
             expected.add(robot);
             return this;
         }
@@ -173,13 +181,18 @@ public final class Simulation implements AutoCloseable {
          * Starts the simulation: every robot is placed and welcomed, its control code starts with step 0, which
          * nothing has computed yet.
          *
-         * @throws IllegalArgumentException naming a robot without control code, or one that cannot start
+         * @throws IllegalArgumentException naming the file, the line and what is wrong with it, a robot the world does
+         *     not have, a robot without control code, or one that cannot start
          */
         public Simulation start() {
-            WorldSpec spec = this.spec;
-            if (!params.isEmpty()) {
-                spec = file != null ? load(file, params) : spec.withParameters(new Parameters(
-                        join(spec.parameters().world(), params), spec.parameters().robots()));
+            WorldSpec spec = file != null ? load(file, params) : params.isEmpty() ? this.spec
+                    : this.spec.withParameters(new Parameters(join(this.spec.parameters().world(), params),
+                            this.spec.parameters().robots()));
+            for (String robot : controls.keySet()) {
+                known(spec, robot);
+            }
+            for (String robot : expected) {
+                known(spec, robot);
             }
             if (seed != null) {
                 spec = spec.withSeed(seed);

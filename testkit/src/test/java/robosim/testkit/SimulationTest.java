@@ -233,6 +233,22 @@ class SimulationTest {
     }
 
     @Test
+    void aFilesPlaceholderWithoutADefaultTakesTheTestsParameter(@org.junit.jupiter.api.io.TempDir Path dir)
+            throws Exception {
+        Path world = dir.resolve("world.xml");
+        java.nio.file.Files.writeString(world, "<environment timeStepMs=\"100\"><arena width=\"4\" height=\"4\"/><robots>"
+                + "<robot name=\"a\" type=\"Scout\" x=\"${x}\" y=\"1\" heading=\"0\"/></robots></environment>");
+        try (Simulation sim = Simulation.of(world).param("x", 2).control("a", new AheadOneMetre()).start()) {
+            assertEquals(2000, sim.pose("a").xMm(), 1e-6);
+        }
+        IllegalArgumentException none = assertThrows(IllegalArgumentException.class,
+                () -> Simulation.of(world).control("a", new AheadOneMetre()).start());
+        assertTrue(none.getMessage().contains("x"), none.getMessage());
+        assertThrows(IllegalArgumentException.class, () -> Simulation.of(world).param("x", 2)
+                .control("b", new AheadOneMetre()).start(), "a robot the file does not have");
+    }
+
+    @Test
     void whatCannotRunIsRefusedWithItsReason() {
         IllegalArgumentException noControl = assertThrows(IllegalArgumentException.class,
                 () -> Simulation.of(World.arena(4, 4).robot("r1", "Scout", 1, 2, 0)).start());

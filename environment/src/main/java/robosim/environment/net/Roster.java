@@ -417,7 +417,8 @@ final class Roster {
                 if (s.running() && s.request == null && (s.backNanos == 0 || now - s.backNanos > stepTimeoutNanos)) {
                     drop(s, "sent no request for step " + StepNumbers.shown(progress.step()) + " within "
                             + stepTimeoutMs + " ms (step timeout): its control code made no call of the robot (move, "
-                            + "turn, sleep, ...) since its last step, or its process stopped answering");
+                            + "turn, sleep, ...) since its last step, or its process stopped answering; make each pass "
+                            + "of its loop call the robot, robot.sleep(1) at least");
                     if (inWorldOrder) {
                         break; // the stepper reads in world order: only the robot it waits for is late
                     }
