@@ -39,7 +39,8 @@ class ClassDataArchivesIT {
         Path runnerClasses = tmp.resolve("runner-classes.log");
         Path environmentClasses = tmp.resolve("environment-classes.log");
         // (these logging options are part of the archives' keys: this test's archives are its own)
-        Map<String, String> env = Map.of("ROBOSIM_JAVA_OPTS", "-Xlog:class+load:file=" + runnerClasses);
+        // (on here: the other script tests run with ROBOSIM_CDS=off, runner/pom.xml)
+        Map<String, String> env = Map.of("ROBOSIM_JAVA_OPTS", "-Xlog:class+load:file=" + runnerClasses, "ROBOSIM_CDS", "on");
         // (robots in one process, geometry in the Environment: the runner's JVM and two children)
         String[] headless = {REPO.resolve("scripts/headless.sh").toString(), "--robots-in-one-process",
             "--no-geometry", "--env", REPO.resolve("test-envs/bench-10.xml").toString(), "--steps", "20",

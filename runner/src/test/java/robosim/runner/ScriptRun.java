@@ -63,7 +63,8 @@ record ScriptRun(int exit, String stdout, String stderr) {
         full.addAll(List.of(cmd));
         ProcessBuilder pb = new ProcessBuilder(full).directory(dir.toFile()).redirectOutput(stdout)
                 .redirectError(stderr.toFile());
-        pb.environment().keySet().removeIf(k -> k.startsWith("ROBOSIM_"));
+        // (the user's settings are not the test's; the build's ROBOSIM_CDS, runner/pom.xml, is kept)
+        pb.environment().keySet().removeIf(k -> k.startsWith("ROBOSIM_") && !k.equals("ROBOSIM_CDS"));
         pb.environment().putAll(env);
         return pb.start();
     }
