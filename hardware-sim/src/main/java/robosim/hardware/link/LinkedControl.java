@@ -1,0 +1,66 @@
+package robosim.hardware.link;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.nio.channels.ClosedByInterruptException;
+import java.nio.channels.ServerSocketChannel;
+import java.nio.channels.SocketChannel;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import robosim.api.Robot;
+import robosim.api.RobotControl;
+import robosim.protocol.ProtocolException;
+
+/**
+ * Control code in another process, attached by hand over the robot link ({@link RobotLink}): the robot listens on
+ * loopback, on its parameter {@code link_port} (0 or none: a port the system picks, said in the log), for one
+ * controller, and serves it until it says bye (the control code returned), reports a failure (it threw) or the
+ * simulation ends. An environment file names it as a robot's control class,
+ * {@code control="robosim.hardware.link.LinkedControl"}; the controller, started by hand (in a debugger, say), connects
+ * within the run's step timeout (the simulation waits for the robot's first call until then).
+ */
+public final class LinkedControl implements RobotControl {
+    private static final Logger LOG = LoggerFactory.getLogger(LinkedControl.class);
+    private final ServerSocketChannel given;
+
+    /** Listens on the robot's parameter {@code link_port}. */
+    public LinkedControl() {
+        this.given = null;
+    }
+
+    /** Takes its controller from {@code listening} (bound on loopback by the caller), and closes it. */
+    public LinkedControl(ServerSocketChannel listening) {
+        this.given = listening;
+    }
+
+    @Override
+    public void run(Robot robot) throws InterruptedException {
+        try (ServerSocketChannel server = given != null ? given : listen(robot)) {
+            InetSocketAddress at = (InetSocketAddress) server.getLocalAddress();
+            LOG.info("{}: waiting for its controller on {}:{} (the robot link)", robot.name(),
+                    at.getAddress().getHostAddress(), at.getPort());
+            SocketChannel controller = server.accept(); // (an interrupt, the simulation's end, closes it and ends this)
+            RobotLink.serve(controller.socket(), robot);
+        } catch (ClosedByInterruptException e) {
+            throw new InterruptedException("the simulation is over");
+        } catch (ProtocolException e) {
+            throw new IllegalStateException("robot link: " + e.getMessage(), e);
+        } catch (IOException e) {
+            if (Thread.currentThread().isInterrupted()) {
+                throw new InterruptedException("the simulation is over");
+            }
+            throw new IllegalStateException("robot link: " + e.getMessage(), e);
+        }
+    }
+
+    private static ServerSocketChannel listen(Robot robot) throws IOException {
+        double port = robot.parameter("link_port", 0.0);
+        if (port < 0 || port > 65_535 || port != Math.rint(port)) {
+            throw new IllegalArgumentException("parameter link_port is " + port + ", not a port (0 to 65535)");
+        }
+        ServerSocketChannel server = ServerSocketChannel.open();
+        server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), (int) port), 1);
+        return server;
+    }
+}

@@ -1,0 +1,165 @@
+package robosim.hardware.link;
+
+import java.io.IOException;
+import org.msgpack.core.MessageBufferPacker;
+import org.msgpack.value.ValueType;
+import robosim.api.Robot;
+
+/**
+ * The robot link's calls, each one of {@link Robot}'s, under the names other languages give them; a call's
+ * result is packed after the reply's {@code "ok"}. The table in hardware-sim/README.md, "The robot link", lists them.
+ */
+final class RobotCalls {
+    private RobotCalls() {
+    }
+
+    /** Makes {@code call} with {@code args} on {@code robot} and packs its result into {@code reply}. */
+    static void call(Robot robot, String call, RobotLink.Arguments args, MessageBufferPacker reply)
+            throws IOException, InterruptedException {
+        switch (call) {
+            case "name" -> {
+                args.none();
+                reply.packString(robot.name());
+            }
+            case "step_ms" -> {
+                args.none();
+                reply.packLong(robot.stepMs());
+            }
+            case "robot_names" -> {
+                args.none();
+                RobotLink.strings(reply, robot.robotNames());
+            }
+            case "move" -> {
+                double mm = args.number();
+                args.none();
+                reply.packDouble(robot.move(mm));
+            }
+            case "turn" -> {
+                double deg = args.number();
+                args.none();
+                reply.packDouble(robot.turn(deg));
+            }
+            case "set_velocity" -> {
+                double v = args.number();
+                args.none();
+                robot.setVelocity(v);
+                reply.packNil();
+            }
+            case "velocity" -> {
+                args.none();
+                reply.packDouble(robot.velocity());
+            }
+            case "set_rot_velocity" -> {
+                double v = args.number();
+                args.none();
+                robot.setRotVelocity(v);
+                reply.packNil();
+            }
+            case "rot_velocity" -> {
+                args.none();
+                reply.packDouble(robot.rotVelocity());
+            }
+            case "tag" -> {
+                args.none();
+                String hit = robot.tag();
+                if (hit == null) {
+                    reply.packNil();
+                } else {
+                    reply.packString(hit);
+                }
+            }
+            case "sleep" -> {
+                long ms = args.whole();
+                args.none();
+                robot.sleep(ms);
+                reply.packNil();
+            }
+            case "sonar_ranges" -> {
+                args.none();
+                RobotLink.numbers(reply, robot.sonarRanges());
+            }
+            case "sonar_angles_deg" -> {
+                args.none();
+                RobotLink.numbers(reply, robot.sonarAnglesDeg());
+            }
+            case "sensor_names" -> {
+                args.none();
+                RobotLink.strings(reply, robot.sensorNames());
+            }
+            case "sensor" -> {
+                String name = args.text();
+                args.none();
+                RobotLink.numbers(reply, robot.sensor(name));
+            }
+            case "pose" -> {
+                args.none();
+                reply.packArrayHeader(3).packDouble(robot.xMm()).packDouble(robot.yMm()).packDouble(robot.headingDeg());
+            }
+            case "last_contact" -> {
+                args.none();
+                String contact = robot.lastContact();
+                if (contact == null) {
+                    reply.packNil();
+                } else {
+                    reply.packString(contact);
+                }
+            }
+            case "send" -> {
+                String to = args.text();
+                String text = args.text();
+                args.none();
+                robot.send(to, text);
+                reply.packNil();
+            }
+            case "broadcast" -> {
+                String text = args.text();
+                args.none();
+                robot.broadcast(text);
+                reply.packNil();
+            }
+            case "receive" -> {
+                args.none();
+                RobotLink.message(reply, robot.receive());
+            }
+            case "wait_for_message" -> {
+                long ms = args.whole();
+                args.none();
+                RobotLink.message(reply, robot.waitForMessage(ms));
+            }
+            case "seed" -> {
+                args.none();
+                reply.packLong(robot.seed());
+            }
+            case "parameter" -> {
+                String name = args.text();
+                ValueType kind = args.peek();
+                if (kind == ValueType.FLOAT || kind == ValueType.INTEGER) {
+                    double fallback = args.number();
+                    args.none();
+                    reply.packDouble(robot.parameter(name, fallback));
+                } else {
+                    String fallback = kind == ValueType.STRING ? args.text() : null;
+                    if (kind == ValueType.NIL) {
+                        throw args.bad("parameter: its default is a text or a number, or left out");
+                    }
+                    args.none();
+                    String value = robot.parameter(name, fallback);
+                    if (value == null) {
+                        reply.packNil();
+                    } else {
+                        reply.packString(value);
+                    }
+                }
+            }
+            case "report" -> {
+                String name = args.text();
+                double value = args.number();
+                args.none();
+                robot.report(name, value);
+                reply.packNil();
+            }
+            default -> throw args.bad("no call \"" + robosim.protocol.Printable.of(call, 40) + "\" (hardware-sim/README.md, "
+                    + "\"The robot link\", lists them)");
+        }
+    }
+}

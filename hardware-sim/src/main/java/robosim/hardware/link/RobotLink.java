@@ -1,0 +1,351 @@
+package robosim.hardware.link;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.net.Socket;
+import java.util.List;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+import org.msgpack.core.MessageBufferPacker;
+import org.msgpack.core.MessageFormat;
+import org.msgpack.core.MessagePack;
+import org.msgpack.core.MessagePackException;
+import org.msgpack.core.MessageUnpacker;
+import org.msgpack.value.ValueType;
+import robosim.api.Message;
+import robosim.api.Robot;
+import robosim.protocol.Printable;
+import robosim.protocol.ProtocolException;
+
+/**
+ * The robot link: one robot's API served to control code in another process, in any language, over a socket of
+ * length-prefixed MessagePack frames ({@link LinkFrames}; hardware-sim/README.md, "The robot link"). The controller
+ * says hello ({@code {"link": "robosim-robot-link", "version": 1, "robot": NAME}}) within
+ * {@link #HELLO_DEADLINE_MS}; the link answers with the robot's facts ({@code {"link", "version", "robot", "step_ms",
+ * "robots", "seed"}}) or {@code {"error": WHY}} and closes. Then each call of the robot API is one request, an array
+ * {@code [CALL, ARG...]}, and one reply, {@code ["ok", RESULT]} or {@code ["error", KIND, WHY]}: the Hardware
+ * Simulator keeps the time, so {@code ["move", 2000]} is answered once the robot has moved (or touched something),
+ * however many steps that takes. Kinds: {@code value} (the robot refused a value: the controller raises, the link
+ * goes on), {@code bad_call} (no such call, or arguments not of its kinds: the link ends), {@code over} (the simulation
+ * is over: the link ends). {@code ["bye"]} ends the link as control code that returned does; {@code ["failed", TEXT]}
+ * as control code that threw ({@link ControllerFailure}).
+ */
+public final class RobotLink {
+    /** What a hello and a welcome name the link by. */
+    public static final String NAME = "robosim-robot-link";
+    /** The link's version: a controller of another is refused with both in one line. */
+    public static final int VERSION = 1;
+    /** How long a controller has from its connection to its whole hello, ms. */
+    public static final long HELLO_DEADLINE_MS = 10_000;
+    /** The longest text a robot name, a call's name or a hello's field may have, characters. */
+    private static final int MAX_NAME = 256;
+    /** Closes a connection whose hello is late (thread {@code link-deadline}). */
+    private static final ScheduledExecutorService DEADLINES = deadlines();
+
+    private final Socket socket;
+    private final Robot robot;
+    private final DataInputStream in;
+    private final DataOutputStream out;
+
+    private RobotLink(Socket socket, Robot robot) throws IOException {
+        this.socket = socket;
+        this.robot = robot;
+        this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream()));
+        this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
+    }
+
+    /** A controller that reported its control code failed: its own account (a traceback), as it sent it. */
+    public static final class ControllerFailure extends RuntimeException {
+        ControllerFailure(String text) {
+            super(text, null, false, false);
+        }
+    }
+
+    /**
+     * Serves {@code robot} to the controller at the other end of {@code socket} until it says bye (returns), it
+     * reports a failure ({@link ControllerFailure}), or the simulation is over (InterruptedException); closes the
+     * socket at the end.
+     *
+     * @throws ProtocolException a hello that is late, not a robot link's, of another version or another robot; a
+     *     frame or a call that is not one; the connection ended by the controller
+     */
+    public static void serve(Socket socket, Robot robot) throws IOException, InterruptedException {
+        try (socket) {
+            RobotLink link = new RobotLink(socket, robot);
+            link.welcome();
+            link.calls();
+        }
+    }
+
+    private void welcome() throws IOException {
+        ScheduledFuture<?> late = DEADLINES.schedule(() -> {
+            try {
+                socket.close();
+            } catch (IOException ignored) {
+                // (closing is all)
+            }
+        }, HELLO_DEADLINE_MS, TimeUnit.MILLISECONDS);
+        byte[] frame;
+        try {
+            frame = LinkFrames.read(in);
+        } catch (IOException e) {
+            throw late.cancel(false) ? e : new ProtocolException("no hello within " + HELLO_DEADLINE_MS + " ms");
+        }
+        if (!late.cancel(false)) {
+            throw new ProtocolException("no hello within " + HELLO_DEADLINE_MS + " ms");
+        }
+        if (frame == null) {
+            throw new ProtocolException("the controller closed the link before its hello");
+        }
+        String link = null;
+        String robotName = null;
+        long version = -1;
+        try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
+            if (u.getNextFormat().getValueType() != ValueType.MAP) {
+                throw refuse("a hello is a map (link, version, robot)");
+            }
+            int fields = u.unpackMapHeader();
+            for (int i = 0; i < fields; i++) {
+                String key = text(u, "a hello's key");
+                switch (key) {
+                    case "link" -> link = text(u, "link");
+                    case "version" -> version = whole(u, "version");
+                    case "robot" -> robotName = text(u, "robot");
+                    default -> u.skipValue();
+                }
+            }
+        } catch (MessagePackException e) {
+            throw refuse("a hello that is not MessagePack: " + e.getMessage());
+        }
+        if (!NAME.equals(link)) {
+            throw refuse("not a robot link's hello (link \"" + Printable.of(link, 40) + "\", not \"" + NAME + "\")");
+        }
+        if (version != VERSION) {
+            throw refuse("robot link version " + version + " is not supported (this simulator speaks " + VERSION + ")");
+        }
+        if (!robot.name().equals(robotName)) {
+            throw refuse("this link serves robot " + robot.name() + ", not \"" + Printable.of(robotName, 40) + "\"");
+        }
+        MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+        p.packMapHeader(6);
+        p.packString("link").packString(NAME);
+        p.packString("version").packInt(VERSION);
+        p.packString("robot").packString(robot.name());
+        p.packString("step_ms").packLong(robot.stepMs());
+        p.packString("robots");
+        strings(p, robot.robotNames());
+        p.packString("seed").packLong(robot.seed());
+        LinkFrames.write(out, p.toByteArray());
+    }
+
+    /** Answers {@code {"error": why}} (best effort) and makes the refusal. */
+    private ProtocolException refuse(String why) {
+        try {
+            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+            p.packMapHeader(1).packString("error").packString(why);
+            LinkFrames.write(out, p.toByteArray());
+        } catch (IOException gone) {
+            // (the refusal stands whether the controller hears it or not)
+        }
+        return new ProtocolException(why);
+    }
+
+    private void calls() throws IOException, InterruptedException {
+        while (true) {
+            byte[] frame = LinkFrames.read(in);
+            if (frame == null) {
+                throw new ProtocolException("the controller closed the link without a bye");
+            }
+            MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
+            String call;
+            try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
+                if (u.getNextFormat().getValueType() != ValueType.ARRAY) {
+                    throw badCall("a call is an array: [CALL, ARG...]");
+                }
+                int size = u.unpackArrayHeader();
+                if (size < 1) {
+                    throw badCall("a call is an array: [CALL, ARG...]");
+                }
+                call = text(u, "a call's name");
+                Arguments args = new Arguments(call, u, size - 1);
+                switch (call) {
+                    case "bye" -> {
+                        args.none();
+                        reply.packArrayHeader(2).packString("ok").packNil();
+                        reply(reply);
+                        return;
+                    }
+                    case "failed" -> {
+                        String text = args.text();
+                        reply.packArrayHeader(2).packString("ok").packNil();
+                        reply(reply);
+                        throw new ControllerFailure(text);
+                    }
+                    default -> {
+                        reply.packArrayHeader(2).packString("ok");
+                        RobotCalls.call(robot, call, args, reply);
+                    }
+                }
+            } catch (MessagePackException e) {
+                throw badCall("a call that is not MessagePack: " + e.getMessage());
+            } catch (IllegalArgumentException e) {
+                reply = MessagePack.newDefaultBufferPacker();
+                reply.packArrayHeader(3).packString("error").packString("value").packString(oneLine(e.getMessage()));
+            } catch (InterruptedException e) {
+                reply = MessagePack.newDefaultBufferPacker();
+                reply.packArrayHeader(3).packString("error").packString("over").packString("the simulation is over");
+                reply(reply);
+                throw e;
+            }
+            reply(reply);
+        }
+    }
+
+    private void reply(MessageBufferPacker reply) throws IOException {
+        LinkFrames.write(out, reply.toByteArray());
+    }
+
+    /** Answers {@code ["error", "bad_call", why]} (best effort) and makes the refusal. */
+    ProtocolException badCall(String why) {
+        try {
+            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+            p.packArrayHeader(3).packString("error").packString("bad_call").packString(why);
+            LinkFrames.write(out, p.toByteArray());
+        } catch (IOException gone) {
+            // (the refusal stands whether the controller hears it or not)
+        }
+        return new ProtocolException(why);
+    }
+
+    /** A call's arguments, read in order as the call's kinds say; a wrong count or kind is a bad call. */
+    final class Arguments {
+        private final String call;
+        private final MessageUnpacker u;
+        private final int count;
+        private int read;
+
+        Arguments(String call, MessageUnpacker u, int count) {
+            this.call = call;
+            this.u = u;
+            this.count = count;
+        }
+
+        private void next(String kind) throws ProtocolException {
+            if (read >= count) {
+                throw badCall(call + ": " + count + " argument(s), it takes more (" + kind + " next)");
+            }
+            read++;
+        }
+
+        /** The end of the arguments: no more than were read. */
+        void none() throws ProtocolException {
+            if (read != count) {
+                throw badCall(call + ": " + count + " argument(s), it takes " + read);
+            }
+        }
+
+        double number() throws IOException {
+            next("a number");
+            MessageFormat f = u.getNextFormat();
+            if (f.getValueType() == ValueType.FLOAT) {
+                return u.unpackDouble();
+            }
+            if (f.getValueType() == ValueType.INTEGER) {
+                return u.unpackLong();
+            }
+            throw badCall(call + ": argument " + read + " is a " + f.getValueType().name().toLowerCase()
+                    + ", not a number");
+        }
+
+        long whole() throws IOException {
+            next("a whole number");
+            if (u.getNextFormat().getValueType() != ValueType.INTEGER) {
+                throw badCall(call + ": argument " + read + " is not a whole number");
+            }
+            return u.unpackLong();
+        }
+
+        String text() throws IOException {
+            next("a text");
+            if (u.getNextFormat().getValueType() != ValueType.STRING) {
+                throw badCall(call + ": argument " + read + " is not a text");
+            }
+            return u.unpackString();
+        }
+
+        /** A bad call of this call's: answered, and the link's end. */
+        ProtocolException bad(String why) {
+            return badCall(why);
+        }
+
+        /** The next argument's kind, or null after the last. */
+        ValueType peek() throws IOException {
+            return read < count ? u.getNextFormat().getValueType() : null;
+        }
+    }
+
+    private static String text(MessageUnpacker u, String what) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.STRING) {
+            throw new ProtocolException(what + " is not a text");
+        }
+        String s = u.unpackString();
+        if (s.length() > MAX_NAME) {
+            throw new ProtocolException(what + " is longer than " + MAX_NAME + " characters");
+        }
+        return s;
+    }
+
+    private static long whole(MessageUnpacker u, String what) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.INTEGER) {
+            throw new ProtocolException(what + " is not a whole number");
+        }
+        return u.unpackLong();
+    }
+
+    static void strings(MessageBufferPacker p, List<String> list) throws IOException {
+        p.packArrayHeader(list.size());
+        for (String s : list) {
+            p.packString(s);
+        }
+    }
+
+    private static String oneLine(String s) {
+        return s == null ? "" : s.replaceAll("\\s+", " ");
+    }
+
+    private static ScheduledExecutorService deadlines() {
+        ScheduledThreadPoolExecutor e = new ScheduledThreadPoolExecutor(1, r -> {
+            Thread t = new Thread(r, "link-deadline");
+            t.setDaemon(true);
+            return t;
+        });
+        e.setRemoveOnCancelPolicy(true);
+        return e;
+    }
+
+    /** What a robot's message is on the link: {@code [from, text]}, or nil. */
+    static void message(MessageBufferPacker p, Message m) throws IOException {
+        if (m == null) {
+            p.packNil();
+        } else {
+            p.packArrayHeader(2).packString(m.from()).packString(m.text());
+        }
+    }
+
+    /** The doubles as an array of float64s, or nil. */
+    static void numbers(MessageBufferPacker p, double[] values) throws IOException {
+        if (values == null) {
+            p.packNil();
+            return;
+        }
+        p.packArrayHeader(values.length);
+        for (double v : values) {
+            p.packDouble(v);
+        }
+    }
+}
