@@ -61,12 +61,7 @@ final class RobotCalls {
             }
             case "tag" -> {
                 args.none();
-                String hit = robot.tag();
-                if (hit == null) {
-                    reply.packNil();
-                } else {
-                    reply.packString(hit);
-                }
+                text(reply, robot.tag());
             }
             case "sleep" -> {
                 long ms = args.whole();
@@ -97,12 +92,7 @@ final class RobotCalls {
             }
             case "last_contact" -> {
                 args.none();
-                String contact = robot.lastContact();
-                if (contact == null) {
-                    reply.packNil();
-                } else {
-                    reply.packString(contact);
-                }
+                text(reply, robot.lastContact());
             }
             case "send" -> {
                 String to = args.text();
@@ -143,12 +133,7 @@ final class RobotCalls {
                         throw args.bad("parameter: its default is a text or a number, or left out");
                     }
                     args.none();
-                    String value = robot.parameter(name, fallback);
-                    if (value == null) {
-                        reply.packNil();
-                    } else {
-                        reply.packString(value);
-                    }
+                    text(reply, robot.parameter(name, fallback));
                 }
             }
             case "report" -> {
@@ -160,6 +145,15 @@ final class RobotCalls {
             }
             default -> throw args.bad("no call \"" + robosim.protocol.Printable.of(call, 40) + "\" (hardware-sim/README.md, "
                     + "\"The robot link\", lists them)");
+        }
+    }
+
+    /** {@code s} as a text, or nil. */
+    private static void text(MessageBufferPacker reply, String s) throws IOException {
+        if (s == null) {
+            reply.packNil();
+        } else {
+            reply.packString(s);
         }
     }
 }
