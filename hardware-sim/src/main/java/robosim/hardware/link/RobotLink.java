@@ -59,10 +59,16 @@ public final class RobotLink {
         this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
     }
 
-    /** A controller that reported its control code failed: its own account (a traceback), as it sent it. */
+    /**
+     * A controller that reported its control code failed: its own account (a traceback), its lines joined by
+     * {@code " | "}, each made safe for a log line ({@link Printable}), at most {@link #MAX_ACCOUNT} characters.
+     */
     public static final class ControllerFailure extends RuntimeException {
+        /** The longest account kept, characters. */
+        static final int MAX_ACCOUNT = 4000;
+
         ControllerFailure(String text) {
-            super(text, null, false, false);
+            super(Printable.of(String.join(" | ", text.strip().lines().toList()), MAX_ACCOUNT), null, false, false);
         }
     }
 

@@ -217,7 +217,7 @@ class RobotLinkTest {
             link.exchange(failed.toByteArray());
             Throwable end = link.awaitEnd();
             assertInstanceOf(RobotLink.ControllerFailure.class, end);
-            assertEquals("Traceback ...\nZeroDivisionError: division by zero", end.getMessage());
+            assertEquals("Traceback ... | ZeroDivisionError: division by zero", end.getMessage(), "one line, for the log");
         }
     }
 }
