@@ -51,7 +51,8 @@ class LinkedControlTest {
         ServerSocketChannel listening = ServerSocketChannel.open();
         listening.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
         int port = ((InetSocketAddress) listening.getLocalAddress()).getPort();
-        CompletableFuture<List<String>> said = CompletableFuture.supplyAsync(() -> {
+        CompletableFuture<List<String>> said = new CompletableFuture<>();
+        Thread controller = new Thread(() -> {
             List<String> answers = new ArrayList<>();
             try (Socket s = new Socket(InetAddress.getLoopbackAddress(), port)) {
                 DataOutputStream out = new DataOutputStream(s.getOutputStream());
@@ -66,8 +67,10 @@ class LinkedControlTest {
             } catch (IOException e) {
                 answers.add(e.toString());
             }
-            return answers;
-        });
+            said.complete(answers);
+        }, "controller");
+        controller.setDaemon(true);
+        controller.start();
         try (Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 2, 0))
                 .control("a", new LinkedControl(listening)).start()) {
             sim.run(20); // (a Scout drives 50 mm a step: the move takes 10 steps)
