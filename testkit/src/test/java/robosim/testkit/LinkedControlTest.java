@@ -83,4 +83,35 @@ class LinkedControlTest {
             assertEquals(null, sim.failure("a"), "a controller that said bye is control code that returned");
         }
     }
+
+    @Test
+    void theEndOfTheSimulationDuringACallIsItsOverReply() throws Exception {
+        ServerSocketChannel listening = ServerSocketChannel.open();
+        listening.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
+        int port = ((InetSocketAddress) listening.getLocalAddress()).getPort();
+        Socket s = new Socket(InetAddress.getLoopbackAddress(), port);
+        DataOutputStream out = new DataOutputStream(s.getOutputStream());
+        DataInputStream in = new DataInputStream(s.getInputStream());
+        MessageBufferPacker hello = MessagePack.newDefaultBufferPacker();
+        hello.packMapHeader(3).packString("link").packString("robosim-robot-link").packString("version").packInt(1)
+                .packString("robot").packString("a");
+        byte[] h = hello.toByteArray();
+        out.writeInt(h.length);
+        out.write(h);
+        byte[] sleep = frame("sleep", 1_000_000);
+        out.writeInt(sleep.length);
+        out.write(sleep);
+        out.flush();
+        try (s) {
+            try (Simulation sim = Simulation.of(World.arena(4, 4).robot("a", "Scout", 1, 2, 0))
+                    .control("a", new LinkedControl(listening)).start()) {
+                sim.run(5); // (the robot's first call is the sleep: five steps of it are over, it goes on)
+            } // (the end: the sleep is interrupted)
+            in.readFully(new byte[in.readInt()]); // (the welcome)
+            byte[] answer = new byte[in.readInt()];
+            in.readFully(answer);
+            assertEquals("[\"error\",\"over\",\"the simulation is over\"]",
+                    MessagePack.newDefaultUnpacker(answer).unpackValue().toJson());
+        }
+    }
 }

@@ -44,6 +44,9 @@ final class LinkFrames {
 
     /** Writes {@code payload} as one frame and flushes it. */
     static void write(DataOutputStream out, byte[] payload) throws IOException {
+        if (payload.length < 1 || payload.length > MAX_BYTES) {
+            throw new ProtocolException("a frame of " + payload.length + " bytes to write (1 to " + MAX_BYTES + ")");
+        }
         out.writeInt(payload.length);
         out.write(payload);
         out.flush();

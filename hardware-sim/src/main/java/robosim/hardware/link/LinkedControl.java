@@ -10,7 +10,6 @@ import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.api.Robot;
 import robosim.api.RobotControl;
-import robosim.protocol.ProtocolException;
 
 /**
  * Control code in another process, attached by hand over the robot link ({@link RobotLink}): the robot listens on
@@ -42,12 +41,8 @@ public final class LinkedControl implements RobotControl {
                     at.getAddress().getHostAddress(), at.getPort());
             SocketChannel controller = server.accept(); // (an interrupt, the simulation's end, closes it and ends this)
             RobotLink.serve(controller.socket(), robot);
-        } catch (ClosedByInterruptException e) {
-            throw new InterruptedException("the simulation is over");
-        } catch (ProtocolException e) {
-            throw new IllegalStateException("robot link: " + e.getMessage(), e);
-        } catch (IOException e) {
-            if (Thread.currentThread().isInterrupted()) {
+        } catch (IOException e) { // (a ClosedByInterruptException among them: the simulation's end)
+            if (Thread.currentThread().isInterrupted() || e instanceof ClosedByInterruptException) {
                 throw new InterruptedException("the simulation is over");
             }
             throw new IllegalStateException("robot link: " + e.getMessage(), e);
@@ -60,7 +55,12 @@ public final class LinkedControl implements RobotControl {
             throw new IllegalArgumentException("parameter link_port is " + port + ", not a port (0 to 65535)");
         }
         ServerSocketChannel server = ServerSocketChannel.open();
-        server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), (int) port), 1);
+        try {
+            server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), (int) port), 1);
+        } catch (IOException e) {
+            server.close();
+            throw e;
+        }
         return server;
     }
 }

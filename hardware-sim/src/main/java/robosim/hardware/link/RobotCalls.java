@@ -128,10 +128,10 @@ final class RobotCalls {
                     args.none();
                     reply.packDouble(robot.parameter(name, fallback));
                 } else {
-                    String fallback = kind == ValueType.STRING ? args.text() : null;
-                    if (kind == ValueType.NIL) {
-                        throw args.bad("parameter: its default is a text or a number, or left out");
+                    if (kind != null && kind != ValueType.STRING) {
+                        throw args.bad("parameter: a default is a text or a number, or left out");
                     }
+                    String fallback = kind == ValueType.STRING ? args.text() : null;
                     args.none();
                     text(reply, robot.parameter(name, fallback));
                 }

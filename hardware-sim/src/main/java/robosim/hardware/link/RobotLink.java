@@ -44,6 +44,12 @@ public final class RobotLink {
     public static final long HELLO_DEADLINE_MS = 10_000;
     /** The longest text a robot name, a call's name or a hello's field may have, characters. */
     private static final int MAX_NAME = 256;
+    /** The longest text argument, characters: a message's text (65,535 bytes as UTF-8 at most) fits. */
+    private static final int MAX_TEXT = 65_535;
+    /** The most fields a hello may have (version 1 has three). */
+    private static final int MAX_HELLO_FIELDS = 16;
+    /** The longest reason in an error reply, characters. */
+    private static final int MAX_REASON = 1000;
     /** Closes a connection whose hello is late (thread {@code link-deadline}). */
     private static final ScheduledExecutorService DEADLINES = deadlines();
 
@@ -82,6 +88,10 @@ public final class RobotLink {
      */
     public static void serve(Socket socket, Robot robot) throws IOException, InterruptedException {
         try (socket) {
+            if (!socket.getInetAddress().isLoopbackAddress()) { // (keys for a link beyond loopback: not yet)
+                throw new ProtocolException("the robot link takes loopback connections only, not "
+                        + socket.getInetAddress().getHostAddress());
+            }
             RobotLink link = new RobotLink(socket, robot);
             link.welcome();
             link.calls();
@@ -110,26 +120,39 @@ public final class RobotLink {
         }
         String link = null;
         String robotName = null;
-        long version = -1;
+        Long version = null;
         try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
             if (u.getNextFormat().getValueType() != ValueType.MAP) {
                 throw refuse("a hello is a map (link, version, robot)");
             }
             int fields = u.unpackMapHeader();
-            for (int i = 0; i < fields; i++) {
-                String key = text(u, "a hello's key");
-                switch (key) {
-                    case "link" -> link = text(u, "link");
-                    case "version" -> version = whole(u, "version");
-                    case "robot" -> robotName = text(u, "robot");
-                    default -> u.skipValue();
+            if (fields > MAX_HELLO_FIELDS) {
+                throw refuse("a hello of " + fields + " fields (link, version, robot: at most " + MAX_HELLO_FIELDS + ")");
+            }
+            try {
+                for (int i = 0; i < fields; i++) {
+                    String key = text(u, "a hello's key");
+                    switch (key) {
+                        case "link" -> link = text(u, "link");
+                        case "version" -> version = whole(u, "version");
+                        case "robot" -> robotName = text(u, "robot");
+                        default -> u.skipValue();
+                    }
                 }
+                if (u.hasNext()) {
+                    throw new ProtocolException("a hello frame holds more than its map");
+                }
+            } catch (ProtocolException e) {
+                throw refuse(e.getMessage());
             }
         } catch (MessagePackException e) {
-            throw refuse("a hello that is not MessagePack: " + e.getMessage());
+            throw refuse("a hello that is not MessagePack: " + oneLine(e.getMessage()));
         }
         if (!NAME.equals(link)) {
             throw refuse("not a robot link's hello (link \"" + Printable.of(link, 40) + "\", not \"" + NAME + "\")");
+        }
+        if (version == null) {
+            throw refuse("a hello without its version (this simulator speaks " + VERSION + ")");
         }
         if (version != VERSION) {
             throw refuse("robot link version " + version + " is not supported (this simulator speaks " + VERSION + ")");
@@ -177,7 +200,13 @@ public final class RobotLink {
                 if (size < 1) {
                     throw badCall("a call is an array: [CALL, ARG...]");
                 }
-                call = text(u, "a call's name");
+                if (u.getNextFormat().getValueType() != ValueType.STRING) {
+                    throw badCall("a call's name is a text");
+                }
+                call = u.unpackString();
+                if (call.length() > MAX_NAME) {
+                    throw badCall("a call's name of " + call.length() + " characters");
+                }
                 Arguments args = new Arguments(call, u, size - 1);
                 switch (call) {
                     case "bye" -> {
@@ -197,15 +226,25 @@ public final class RobotLink {
                         RobotCalls.call(robot, call, args, reply);
                     }
                 }
+                if (u.hasNext()) {
+                    throw badCall(call + ": a call's frame holds more than its array");
+                }
             } catch (MessagePackException e) {
-                throw badCall("a call that is not MessagePack: " + e.getMessage());
+                throw badCall("a call that is not MessagePack: " + oneLine(e.getMessage()));
             } catch (IllegalArgumentException e) {
                 reply = MessagePack.newDefaultBufferPacker();
                 reply.packArrayHeader(3).packString("error").packString("value").packString(oneLine(e.getMessage()));
             } catch (InterruptedException e) {
-                reply = MessagePack.newDefaultBufferPacker();
-                reply.packArrayHeader(3).packString("error").packString("over").packString("the simulation is over");
-                reply(reply);
+                // (the simulation's end interrupts this thread: cleared, so the reply is written on a socket that an
+                // interrupt would close, then the end goes on)
+                Thread.interrupted();
+                try {
+                    reply = MessagePack.newDefaultBufferPacker();
+                    reply.packArrayHeader(3).packString("error").packString("over").packString("the simulation is over");
+                    reply(reply);
+                } catch (IOException gone) {
+                    // (the controller may be gone too)
+                }
                 throw e;
             }
             reply(reply);
@@ -262,7 +301,7 @@ public final class RobotLink {
                 return u.unpackDouble();
             }
             if (f.getValueType() == ValueType.INTEGER) {
-                return u.unpackLong();
+                return u.unpackBigInteger().doubleValue(); // (a uint64 over a long's range is a number too)
             }
             throw badCall(call + ": argument " + read + " is a " + f.getValueType().name().toLowerCase()
                     + ", not a number");
@@ -273,7 +312,11 @@ public final class RobotLink {
             if (u.getNextFormat().getValueType() != ValueType.INTEGER) {
                 throw badCall(call + ": argument " + read + " is not a whole number");
             }
-            return u.unpackLong();
+            java.math.BigInteger n = u.unpackBigInteger();
+            if (n.bitLength() > 63) {
+                throw badCall(call + ": argument " + read + " is out of range");
+            }
+            return n.longValue();
         }
 
         String text() throws IOException {
@@ -281,7 +324,12 @@ public final class RobotLink {
             if (u.getNextFormat().getValueType() != ValueType.STRING) {
                 throw badCall(call + ": argument " + read + " is not a text");
             }
-            return u.unpackString();
+            String s = u.unpackString();
+            if (s.length() > MAX_TEXT) {
+                throw badCall(call + ": argument " + read + " is a text of " + s.length() + " characters, at most "
+                        + MAX_TEXT);
+            }
+            return s;
         }
 
         /** A bad call of this call's: answered, and the link's end. */
@@ -321,7 +369,7 @@ public final class RobotLink {
     }
 
     private static String oneLine(String s) {
-        return s == null ? "" : s.replaceAll("\\s+", " ");
+        return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), MAX_REASON);
     }
 
     private static ScheduledExecutorService deadlines() {

@@ -48,7 +48,7 @@ class RobotLinkTest {
         @Override public double velocity() { return 300; }
         @Override public void setRotVelocity(double v) { told.add("rot " + v); }
         @Override public double rotVelocity() { return 45; }
-        @Override public String tag() { return null; }
+        @Override public String tag() { return ""; }
         @Override public void sleep(long ms) throws InterruptedException {
             if (ms > 1_000_000) {
                 throw new InterruptedException("the simulation is over");
@@ -58,7 +58,12 @@ class RobotLinkTest {
         @Override public double[] sonarRanges() { return new double[] {1000.5, 250}; }
         @Override public double[] sonarAnglesDeg() { return new double[] {90, -90}; }
         @Override public List<String> sensorNames() { return List.of("bump"); }
-        @Override public double[] sensor(String name) { return name.equals("bump") ? new double[] {0} : null; }
+        @Override public double[] sensor(String name) {
+            if (!name.equals("bump")) {
+                throw new IllegalArgumentException("no sensor named " + name + " (it has: bump)");
+            }
+            return new double[] {0};
+        }
         @Override public double xMm() { return 1500; }
         @Override public double yMm() { return 2500; }
         @Override public double headingDeg() { return 90; }
@@ -170,6 +175,16 @@ class RobotLinkTest {
         try (Served link = Served.of(new KnownRobot())) {
             assertTrue(error(link.exchange("GET / HTTP/1.1\r\n".getBytes(StandardCharsets.US_ASCII)))
                     .startsWith("a hello is a map"));
+        }
+        try (Served link = Served.of(new KnownRobot())) {
+            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+            p.packMapHeader(2).packString("link").packString(RobotLink.NAME).packString("robot").packInt(7);
+            assertEquals("robot is not a text", error(link.exchange(p.toByteArray())));
+        }
+        try (Served link = Served.of(new KnownRobot())) {
+            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+            p.packMapHeader(2).packString("link").packString(RobotLink.NAME).packString("robot").packString("r1");
+            assertEquals("a hello without its version (this simulator speaks 1)", error(link.exchange(p.toByteArray())));
         }
     }
 
