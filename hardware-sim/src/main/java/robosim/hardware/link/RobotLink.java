@@ -19,6 +19,7 @@ import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.ValueType;
 import robosim.api.Message;
 import robosim.api.Robot;
+import robosim.protocol.Limits;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 
@@ -44,8 +45,8 @@ public final class RobotLink {
     public static final long HELLO_DEADLINE_MS = 10_000;
     /** The longest text a robot name, a call's name or a hello's field may have, characters. */
     private static final int MAX_NAME = 256;
-    /** The longest text argument, characters: a message's text (65,535 bytes as UTF-8 at most) fits. */
-    private static final int MAX_TEXT = 65_535;
+    /** The longest text argument, characters: a message's text (at most the wire's string, in bytes) fits. */
+    private static final int MAX_TEXT = Limits.MAX_UTF_BYTES;
     /** The most fields a hello may have (version 1 has three). */
     private static final int MAX_HELLO_FIELDS = 16;
     /** The longest reason in an error reply, characters. */
