@@ -213,9 +213,15 @@ final class ClassDataArchives {
             for (Path start : starts) {
                 String id = start.getFileName().toString();
                 id = id.substring(key.name().length() + 1, id.length() - ".start".length());
-                String assembler = Files.readString(start).strip();
+                String assembler;
+                long age;
+                try {
+                    assembler = Files.readString(start).strip();
+                    age = System.currentTimeMillis() - Files.getLastModifiedTime(start).toMillis();
+                } catch (java.nio.file.NoSuchFileException settled) {
+                    continue; // (settled meanwhile: by its assembler's end, or another start)
+                }
                 String pid = assembler.isEmpty() ? id.split("-")[0] : assembler;
-                long age = System.currentTimeMillis() - Files.getLastModifiedTime(start).toMillis();
                 if (age < CLAIM_MAX_AGE_MS && !pid.isEmpty() && pid.length() < 19
                         && pid.chars().allMatch(Character::isDigit)
                         && ProcessHandle.of(Long.parseLong(pid)).map(ProcessHandle::isAlive).orElse(false)) {
