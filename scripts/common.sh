@@ -21,7 +21,8 @@ ROBOSIM_CALLER_DIR=$PWD   # where the user started the script, before any cd
 # so the floors of the benchmarks run on it too. JDK 21 and later run control code on virtual threads.
 # Which one, and why, goes to the processes as ROBOSIM_JAVA_CHOICE (the robot processes and headless
 # print it in their first lines; a script prints nothing of its own, so bad input stays one line).
-# io.netty.noUnsafe: netty (the control and web links) would warn about sun.misc.Unsafe on JDK 24+.
+# io.netty.noUnsafe, msgpack.universal-buffer: netty (the control and web links) and msgpack-core (the robot link)
+# would warn about sun.misc.Unsafe on JDK 24+.
 # JDK home $1 -> its feature version (17, 21, 25), or 0, in ROBOSIM_JAVA_VERSION. Read by bash itself,
 # like the paths below: every script pays this at its start, and a fork and exec costs milliseconds.
 robosim_java_version() {
@@ -238,7 +239,7 @@ robosim_java() {
       -h|--help)
         if [ -n "$(robosim_runner_jar)" ] && [ -d "$ROBOSIM_LIB" ]; then
           # shellcheck disable=SC2086
-          java -Dio.netty.noUnsafe=true ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
+          java -Dio.netty.noUnsafe=true -Dmsgpack.universal-buffer=true ${ROBOSIM_JAVA_OPTS:-} -cp "$(robosim_classpath)" "$main" "${ROBOSIM_ARGS[@]}" || exit
         else
           robosim_usage
           echo "(RoboSim is not built yet: its full usage is printed once it is, e.g. after ./mvnw package -DskipTests.)"
@@ -252,7 +253,7 @@ robosim_java() {
   cp=$(robosim_classpath)
   robosim_cds_opts "$main" "$cp"
   # shellcheck disable=SC2086
-  exec java -Dio.netty.noUnsafe=true "${ROBOSIM_CDS_OPTS[@]}" ${ROBOSIM_JAVA_OPTS:-} -cp "$cp" "$main" "${ROBOSIM_ARGS[@]}"
+  exec java -Dio.netty.noUnsafe=true -Dmsgpack.universal-buffer=true "${ROBOSIM_CDS_OPTS[@]}" ${ROBOSIM_JAVA_OPTS:-} -cp "$cp" "$main" "${ROBOSIM_ARGS[@]}"
 }
 
 # The class-data archive options of the JVM that runs main class $1 on class path $2 (into

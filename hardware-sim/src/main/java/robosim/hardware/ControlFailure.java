@@ -11,7 +11,6 @@ package robosim.hardware;
 public record ControlFailure(String robot, long step, Throwable thrown) {
     /** Its class and message on one line (a runner reads it from stderr). */
     public String summary() {
-        String what = thrown.getClass().getName() + (thrown.getMessage() == null ? "" : ": " + thrown.getMessage());
-        return what.replaceAll("\\s+", " ");
+        return thrown.toString().replaceAll("\\s+", " "); // (a Throwable's: its class and message; a controller's: its own)
     }
 }

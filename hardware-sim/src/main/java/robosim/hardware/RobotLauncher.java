@@ -5,7 +5,9 @@ import java.net.Socket;
 import java.net.UnknownHostException;
 import robosim.api.RobotControl;
 import robosim.protocol.Connector;
+import robosim.hardware.link.ScriptControl;
 import robosim.protocol.ControlClasses;
+import robosim.protocol.ControlScripts;
 import robosim.protocol.SimulationKeys;
 
 /** Starts one robot: finds its control class and type, connects, runs until the simulation ends. */
@@ -14,10 +16,13 @@ final class RobotLauncher {
     }
 
     /**
-     * Instantiates a control class by name, found where {@link ControlClasses} says; a bad name is an
-     * IllegalArgumentException saying why.
+     * Instantiates a control class by name, found where {@link ControlClasses} says, or the control code that runs
+     * a script ({@code python:PATH}, {@link ScriptControl}); a bad name is an IllegalArgumentException saying why.
      */
     static RobotControl control(String className) {
+        if (ControlScripts.isScript(className)) {
+            return new ScriptControl(className);
+        }
         try {
             return Class.forName(className, true, ControlClasses.loader()).asSubclass(RobotControl.class)
                     .getDeclaredConstructor().newInstance();

@@ -71,8 +71,11 @@ public final class ChildProcesses implements AutoCloseable {
     }
 
     private final List<Child> started = new CopyOnWriteArrayList<>();
-    /** Netty (the control and web links) would warn about sun.misc.Unsafe on JDK 24 and later. */
-    private static final String NETTY_QUIET = "-Dio.netty.noUnsafe=true";
+    /**
+     * Netty (the control and web links) and msgpack-core (the robot link) would warn about sun.misc.Unsafe on JDK 24
+     * and later: both without it.
+     */
+    static final List<String> NO_UNSAFE = List.of("-Dio.netty.noUnsafe=true", "-Dmsgpack.universal-buffer=true");
     private final String java = Path.of(System.getProperty("java.home"), "bin", "java").toString();
     private final String classPath = System.getProperty("java.class.path");
     private final List<String> jvmOptions;
@@ -202,7 +205,7 @@ public final class ChildProcesses implements AutoCloseable {
             List<String> args) {
         List<String> cmd = new ArrayList<>();
         cmd.add(java);
-        cmd.add(NETTY_QUIET);
+        cmd.addAll(NO_UNSAFE);
         cmd.addAll(archive.options());
         cmd.addAll(options);
         cmd.add("-cp");
@@ -242,7 +245,9 @@ public final class ChildProcesses implements AutoCloseable {
 
     /** Starts a child that is not waited for nor stopped at the end (a viewer window the user closes). */
     void startDetached(String name, String mainClass, List<String> args) throws IOException {
-        List<String> cmd = new ArrayList<>(List.of(java, NETTY_QUIET, "-cp", classPath, mainClass));
+        List<String> cmd = new ArrayList<>(List.of(java));
+        cmd.addAll(NO_UNSAFE);
+        cmd.addAll(List.of("-cp", classPath, mainClass));
         cmd.addAll(args);
         new ProcessBuilder(cmd).redirectError(ProcessBuilder.Redirect.INHERIT)
                 .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();

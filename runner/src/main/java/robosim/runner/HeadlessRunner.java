@@ -152,6 +152,13 @@ public final class HeadlessRunner implements Callable<Integer> {
             if (r.control().isBlank()) {
                 return where + " needs a control class (control=\"...\") for the headless runner";
             }
+            if (robosim.protocol.ControlScripts.isScript(r.control())) {
+                String problem = robosim.protocol.ControlScripts.problem(r.control());
+                if (problem != null) {
+                    return where + ": " + problem;
+                }
+                continue;
+            }
             try {
                 Class<?> c = Class.forName(r.control(), false, robosim.protocol.ControlClasses.loader());
                 if (!RobotControl.class.isAssignableFrom(c)) {

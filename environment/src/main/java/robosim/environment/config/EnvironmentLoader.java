@@ -25,6 +25,7 @@ import robosim.environment.core.Parameters;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.Arena;
+import robosim.protocol.ControlScripts;
 import robosim.protocol.Limits;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.Printable;
@@ -89,8 +90,19 @@ public final class EnvironmentLoader {
         faults.throwIfAny();
         faults.placedBy(replaced.columns()); // (from here on, places in the replaced text)
         EnvironmentFile xml = bind(faults, replaced.text());
+        scriptsFrom(xml, file.toAbsolutePath().getParent());
         Parameters parameters = parameters(faults, xml, replaced.names(), given);
         return check(where, faults, xml, parameters); // (which throws every fault recorded, the parameters' too)
+    }
+
+    /** Each robot's and join rule's control script ({@code python:PATH}) made absolute: a relative path is the file's folder's. */
+    private static void scriptsFrom(EnvironmentFile xml, Path folder) {
+        for (EnvironmentFile.RobotXml r : xml.robots) {
+            r.control = r.control == null ? null : ControlScripts.resolved(r.control, folder);
+        }
+        for (EnvironmentFile.JoinXml j : xml.joins) {
+            j.control = j.control == null ? null : ControlScripts.resolved(j.control, folder);
+        }
     }
 
     /**

@@ -52,6 +52,9 @@ public final class RobotLaunches implements AutoCloseable {
      * is ("its robot process would run with"). The class is looked up, never initialised.
      */
     public static String controlClassProblem(String control, String whose) {
+        if (robosim.protocol.ControlScripts.isScript(control)) {
+            return robosim.protocol.ControlScripts.problem(control);
+        }
         if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
             return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
         }
@@ -81,7 +84,8 @@ public final class RobotLaunches implements AutoCloseable {
         if (refusal != null) {
             throw new IOException(refusal);
         }
-        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-cp",
+        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
+                "-Dio.netty.noUnsafe=true", "-Dmsgpack.universal-buffer=true", "-cp",
                 System.getProperty("java.class.path"), "robosim.hardware.RobotMain", control, name, host,
                 Integer.toString(robotPort), "--type", type);
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();

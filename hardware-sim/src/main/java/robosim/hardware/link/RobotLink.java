@@ -6,6 +6,8 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.Socket;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
 import java.util.List;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
@@ -17,6 +19,8 @@ import org.msgpack.core.MessagePack;
 import org.msgpack.core.MessagePackException;
 import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.ValueType;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
 import robosim.api.Message;
 import robosim.api.Robot;
 import robosim.protocol.Limits;
@@ -37,6 +41,7 @@ import robosim.protocol.ProtocolException;
  * as control code that threw ({@link ControllerFailure}).
  */
 public final class RobotLink {
+    private static final Logger LOG = LoggerFactory.getLogger(RobotLink.class);
     /** What a hello and a welcome name the link by. */
     public static final String NAME = "robosim-robot-link";
     /** The link's version: a controller of another is refused with both in one line. */
@@ -67,15 +72,24 @@ public final class RobotLink {
     }
 
     /**
-     * A controller that reported its control code failed: its own account (a traceback), its lines joined by
-     * {@code " | "}, each made safe for a log line ({@link Printable}), at most {@link #MAX_ACCOUNT} characters.
+     * A controller that reported its control code failed: its message the account's last line (in Python, the
+     * exception's: {@code ZeroDivisionError: division by zero}); the whole account (a traceback) was logged once
+     * with the robot's name when it came. Each line is made safe for a log line ({@link Printable}), the account
+     * cut at {@link #MAX_ACCOUNT} characters.
      */
     public static final class ControllerFailure extends RuntimeException {
+        private static final long serialVersionUID = 1L;
         /** The longest account kept, characters. */
         static final int MAX_ACCOUNT = 4000;
 
-        ControllerFailure(String text) {
-            super(Printable.of(String.join(" | ", text.strip().lines().toList()), MAX_ACCOUNT), null, false, false);
+        ControllerFailure(String lastLine) {
+            super(lastLine, null, false, false);
+        }
+
+        /** Its message alone (what failed is the controller's, not a Java class). */
+        @Override
+        public String toString() {
+            return getMessage();
         }
     }
 
@@ -88,18 +102,27 @@ public final class RobotLink {
      *     frame or a call that is not one; the connection ended by the controller
      */
     public static void serve(Socket socket, Robot robot) throws IOException, InterruptedException {
+        serve(socket, robot, null);
+    }
+
+    /**
+     * As {@link #serve(Socket, Robot)}, for a controller this simulator started: its hello must carry {@code key}
+     * (a secret it was given) as {@code "key"}, or it is refused ({@link HelloRefused}) before anything is served.
+     */
+    public static void serve(Socket socket, Robot robot, String key) throws IOException, InterruptedException {
         try (socket) {
             if (!socket.getInetAddress().isLoopbackAddress()) { // (keys for a link beyond loopback: not yet)
                 throw new ProtocolException("the robot link takes loopback connections only, not "
                         + socket.getInetAddress().getHostAddress());
             }
+            socket.setTcpNoDelay(true); // (a reply is one write; with a request in flight it must not wait)
             RobotLink link = new RobotLink(socket, robot);
-            link.welcome();
+            link.welcome(key);
             link.calls();
         }
     }
 
-    private void welcome() throws IOException {
+    private void welcome(String wanted) throws IOException {
         ScheduledFuture<?> late = DEADLINES.schedule(() -> {
             try {
                 socket.close();
@@ -111,16 +134,18 @@ public final class RobotLink {
         try {
             frame = LinkFrames.read(in);
         } catch (IOException e) {
-            throw late.cancel(false) ? e : new ProtocolException("no hello within " + HELLO_DEADLINE_MS + " ms");
+            throw new HelloRefused(late.cancel(false) ? oneLine(e.getMessage())
+                    : "no hello within " + HELLO_DEADLINE_MS + " ms");
         }
         if (!late.cancel(false)) {
-            throw new ProtocolException("no hello within " + HELLO_DEADLINE_MS + " ms");
+            throw new HelloRefused("no hello within " + HELLO_DEADLINE_MS + " ms");
         }
         if (frame == null) {
-            throw new ProtocolException("the controller closed the link before its hello");
+            throw new HelloRefused("the controller closed the link before its hello");
         }
         String link = null;
         String robotName = null;
+        String given = null;
         Long version = null;
         try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
             if (u.getNextFormat().getValueType() != ValueType.MAP) {
@@ -137,6 +162,7 @@ public final class RobotLink {
                         case "link" -> link = text(u, "link");
                         case "version" -> version = whole(u, "version");
                         case "robot" -> robotName = text(u, "robot");
+                        case "key" -> given = text(u, "key");
                         default -> u.skipValue();
                     }
                 }
@@ -158,6 +184,11 @@ public final class RobotLink {
         if (version != VERSION) {
             throw refuse("robot link version " + version + " is not supported (this simulator speaks " + VERSION + ")");
         }
+        if (wanted != null && (given == null || !MessageDigest.isEqual(wanted.getBytes(StandardCharsets.UTF_8),
+                given.getBytes(StandardCharsets.UTF_8)))) {
+            throw refuse(given == null ? "a hello without the key this link was started with"
+                    : "a hello with another key than this link was started with");
+        }
         if (!robot.name().equals(robotName)) {
             throw refuse("this link serves robot " + robot.name() + ", not \"" + Printable.of(robotName, 40) + "\"");
         }
@@ -173,6 +204,16 @@ public final class RobotLink {
         LinkFrames.write(out, p.toByteArray());
     }
 
+    /** The controller's failure with account {@code text}, which is logged once, each line safe for a log. */
+    private ControllerFailure failure(String text) {
+        String account = text.strip();
+        List<String> lines = account.substring(0, Math.min(account.length(), ControllerFailure.MAX_ACCOUNT)).lines()
+                .map(Printable::of).toList();
+        String last = lines.isEmpty() ? "(no account)" : lines.get(lines.size() - 1).strip();
+        LOG.error("{}: its controller failed:\n{}", robot.name(), String.join("\n", lines));
+        return new ControllerFailure(last.isEmpty() ? "(no account)" : last);
+    }
+
     /** Answers {@code {"error": why}} (best effort) and makes the refusal. */
     private ProtocolException refuse(String why) {
         try {
@@ -182,7 +223,16 @@ public final class RobotLink {
         } catch (IOException gone) {
             // (the refusal stands whether the controller hears it or not)
         }
-        return new ProtocolException(why);
+        return new HelloRefused(why);
+    }
+
+    /** A hello refused: nothing was served, the controller was told why. */
+    public static final class HelloRefused extends ProtocolException {
+        private static final long serialVersionUID = 1L;
+
+        HelloRefused(String why) {
+            super(why);
+        }
     }
 
     private void calls() throws IOException, InterruptedException {
@@ -220,7 +270,7 @@ public final class RobotLink {
                         String text = args.text();
                         reply.packArrayHeader(2).packString("ok").packNil();
                         reply(reply);
-                        throw new ControllerFailure(text);
+                        throw failure(text);
                     }
                     default -> {
                         reply.packArrayHeader(2).packString("ok");

@@ -2,13 +2,15 @@
  * The robot link ({@link robosim.hardware.link.RobotLink}; hardware-sim/README.md, "The robot link"): one robot's
  * API served to control code in another process, in any language, as length-prefixed MessagePack frames
  * ({@link robosim.hardware.link.LinkFrames}), one request and one reply per call ({@link robosim.hardware.link.RobotCalls}).
- * It runs on the thread that serves the robot's control code (its {@code control[name]}); one thread of its own:
+ * It runs on the thread that serves the robot's control code (its {@code control[name]}); threads of its own:
  *
  * <table>
  * <caption>threads</caption>
  * <tr><th>thread</th><th>role</th></tr>
  * <tr><td>{@code link-deadline}</td><td>a daemon, one per JVM: closes a connection whose hello has not come within
  * {@link robosim.hardware.link.RobotLink#HELLO_DEADLINE_MS} (a deadline, not a read timeout)</td></tr>
+ * <tr><td>{@code script-output[name]}</td><td>a daemon, one per script a {@link robosim.hardware.link.ScriptControl}
+ * started: reads the script's output and logs it line by line, until the script exits</td></tr>
  * </table>
  */
 package robosim.hardware.link;

@@ -85,11 +85,16 @@ class RobotLinkTest {
     /** A link serving {@code robot} on a loopback port, and a connection to it. */
     private record Served(Socket client, CompletableFuture<Throwable> end) implements AutoCloseable {
         static Served of(Robot robot) throws IOException {
+            return of(robot, null);
+        }
+
+        /** A link whose hello must carry {@code key} (null: none). */
+        static Served of(Robot robot, String key) throws IOException {
             ServerSocket server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
             CompletableFuture<Throwable> end = new CompletableFuture<>();
             Thread t = new Thread(() -> {
                 try (server) {
-                    RobotLink.serve(server.accept(), robot);
+                    RobotLink.serve(server.accept(), robot, key);
                     end.complete(null);
                 } catch (Throwable e) {
                     end.complete(e);
@@ -189,6 +194,31 @@ class RobotLinkTest {
     }
 
     @Test
+    void aLinkStartedWithAKeyServesOnlyAHelloThatCarriesIt() throws Exception {
+        try (Served link = Served.of(new KnownRobot(), "s3cret")) {
+            assertEquals("a hello without the key this link was started with",
+                    error(link.exchange(hello(RobotLink.NAME, 1, "r1"))));
+            assertInstanceOf(RobotLink.HelloRefused.class, link.awaitEnd());
+        }
+        try (Served link = Served.of(new KnownRobot(), "s3cret")) {
+            assertEquals("a hello with another key than this link was started with",
+                    error(link.exchange(keyed("guess"))));
+        }
+        try (Served link = Served.of(new KnownRobot(), "s3cret")) {
+            var welcome = MessagePack.newDefaultUnpacker(link.exchange(keyed("s3cret"))).unpackValue();
+            assertEquals("r1", welcome.asMapValue().map().get(org.msgpack.value.ValueFactory.newString("robot"))
+                    .toString());
+        }
+    }
+
+    private static byte[] keyed(String key) throws IOException {
+        MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+        p.packMapHeader(4).packString("link").packString(RobotLink.NAME).packString("version").packInt(1)
+                .packString("robot").packString("r1").packString("key").packString(key);
+        return p.toByteArray();
+    }
+
+    @Test
     void aBadCallIsAnsweredAndEndsTheLinkAValueTheRobotRefusesDoesNot() throws Exception {
         try (Served link = Served.of(new KnownRobot())) {
             link.exchange(hello(RobotLink.NAME, 1, "r1"));
@@ -232,7 +262,8 @@ class RobotLinkTest {
             link.exchange(failed.toByteArray());
             Throwable end = link.awaitEnd();
             assertInstanceOf(RobotLink.ControllerFailure.class, end);
-            assertEquals("Traceback ... | ZeroDivisionError: division by zero", end.getMessage(), "one line, for the log");
+            assertEquals("ZeroDivisionError: division by zero", end.getMessage(), "its last line (the whole was logged)");
+            assertEquals("ZeroDivisionError: division by zero", end.toString(), "no Java class: the failure is its own");
         }
     }
 }

@@ -1,0 +1,96 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * Control code in Python ({@code control="python:..."}, the package in {@code python/}), run by
+ * {@code scripts/headless.sh} as a user runs it: the same robot written in Java and in Python moves the same, and a
+ * Python controller that fails is a failed control code as a Java one is. Runs after package (failsafe), when
+ * runner/target/lib holds the built jars; the Python is {@link PythonForTests}'s.
+ */
+class PythonControlIT {
+    private static final Path REPO = Path.of("..").toAbsolutePath().normalize();
+    private static final String STEPS = "400";
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void theSameRobotInJavaAndInPythonGivesAByteIdenticalPoseLog() throws Exception {
+        Path python = dir.resolve("python.csv");
+        Path java = dir.resolve("java.csv");
+        ScriptRun py = headless("--env", "examples/python/bounce.xml", "--steps", STEPS, "--pose-log",
+                python.toString());
+        ScriptRun jv = headless("--env", "examples/python/bounce.xml", "--steps", STEPS, "--param",
+                "control=robosim.examples.Bounce", "--pose-log", java.toString());
+        assertEquals(0, py.exit(), py.stdout() + py.stderr());
+        assertEquals(0, jv.exit(), jv.stdout() + jv.stderr());
+        assertTrue(py.stdout().contains("steps=" + STEPS + " robots=4 ") && py.stdout().contains(" control_failed=0 "),
+                py.stdout());
+        String poses = Files.readString(python);
+        assertEquals(Files.readString(java), poses, "the Python robots moved otherwise than the Java ones");
+        assertEquals(4 * Integer.parseInt(STEPS) + 1, poses.lines().count(), "a pose a robot a step, and a header");
+        Matcher turned = Pattern.compile("(?m)^" + STEPS + ",b1,[^,]+,[^,]+,([^,]+),").matcher(poses);
+        assertTrue(turned.find() && Double.parseDouble(turned.group(1)) != 0.0,
+                "b1 bounced off something (its heading changed): " + poses.lines().skip(poses.lines().count() - 4)
+                        .toList());
+    }
+
+    @Test
+    void aPythonControllerThatRaisesOrExitsIsAFailedControlCodeAndTheWorldGoesOn() throws Exception {
+        Files.writeString(dir.resolve("raises.py"), """
+                def control(robot):
+                    robot.move(250)
+                    print("about to divide")
+                    return 1 / 0
+                """);
+        Files.writeString(dir.resolve("exits.py"), """
+                import os
+
+                def control(robot):
+                    robot.move(250)
+                    os._exit(3)
+                """);
+        Path world = Files.writeString(dir.resolve("failing.xml"), """
+                <environment name="failing" timeStepMs="100" seed="1">
+                  <arena width="6" height="6"/>
+                  <robots>
+                    <robot name="raiser" type="Scout" control="python:raises.py" x="1" y="1" heading="0"/>
+                    <robot name="quitter" type="Scout" control="python:exits.py" x="3" y="1" heading="0"/>
+                    <robot name="goer" type="Scout" control="python:%s" x="1" y="4" heading="0"/>
+                  </robots>
+                </environment>
+                """.formatted(REPO.resolve("examples/python/bounce.py")));
+        ScriptRun run = headless("--one-jvm", "--env", world.toString(), "--steps", "100");
+        String all = run.stdout() + run.stderr();
+        assertEquals(4, run.exit(), all);
+        assertTrue(run.stdout().contains("robot raiser: its control code failed: ZeroDivisionError: division by zero\n"),
+                run.stdout());
+        assertTrue(run.stdout().contains("robot quitter: its control code failed: its script exits.py exited (exit "
+                + "code 3)"), run.stdout());
+        assertTrue(run.stdout().contains("steps=100 robots=3 ") && run.stdout().contains(" control_failed=2 "),
+                run.stdout());
+        assertEquals(1, all.split("Traceback \\(most recent call last\\)", -1).length - 1, "the traceback once: " + all);
+        assertTrue(run.stderr().contains("raiser: its controller failed:\nTraceback (most recent call last):\n  File \""
+                + dir.resolve("raises.py") + "\", line 4, in control"), run.stderr());
+        assertTrue(run.stderr().contains("raiser: about to divide"), "its output logged: " + run.stderr());
+    }
+
+    private ScriptRun headless(String... args) throws Exception {
+        String[] cmd = new String[args.length + 2];
+        cmd[0] = "bash";
+        cmd[1] = "scripts/headless.sh";
+        System.arraycopy(args, 0, cmd, 2, args.length);
+        Map<String, String> env = PythonForTests.environment();
+        return ScriptRun.of(REPO, env, dir, cmd);
+    }
+}
