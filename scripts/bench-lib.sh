@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# bench-lib.sh: a library sourced by bench-reset.sh, bench-memory.sh, bench-designs.sh and bench-speed.sh, not
-# a command: reading heaps, following a headless run's progress, a run's rate and its row beside a floor (the
-# floors are this repository's own, bench/*.java), and the one table a script writes into a doc.
+# bench-lib.sh: a library sourced by bench-reset.sh, bench-memory.sh, bench-designs.sh, bench-speed.sh and
+# bench-python.sh, not a command: reading heaps, following a headless run's progress, a run's rate and its row
+# beside a floor (the floors are this repository's own, bench/*.java), and the one table a script writes into a doc.
 if [ "${BASH_SOURCE[0]}" = "$0" ]; then
   case ${1:-} in
     -h|--help) sed -nE '2,/^[^#]/s/^# ?//p' "$0"; exit 0 ;;

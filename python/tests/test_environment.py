@@ -70,3 +70,42 @@ def test_help_runs_nothing() -> None:
     run = subprocess.run([sys.executable, "-m", "robosim", "--help"], capture_output=True, text=True, timeout=60,
                          check=False)
     assert run.returncode == 0 and "usage: python -m robosim" in run.stdout and run.stderr == ""
+
+
+def test_the_session_hardware_sim_readme_shows_is_a_real_one(environment: Environment,
+                                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    import json
+
+    import robosim.robot
+    from robosim.frames import Frames
+
+    said: list[str] = []
+
+    class Recorded(Frames):
+        def send(self, value: object) -> None:
+            said.append("> " + json.dumps(value))
+            super().send(value)
+
+        def receive(self) -> object:
+            value = super().receive()
+            said.append("< " + json.dumps(value))
+            return value
+
+    monkeypatch.setattr(robosim.robot, "Frames", Recorded)
+    robot = Robot.connect(environment.host, environment.port, "py1")
+    robot.pose()
+    robot.set_velocity(robot.parameter("speed", 300.0))
+    robot.move(500)
+    robot.turn(-30)
+    robot.pose()
+    robot.send("still", "hello")
+    robot.receive()
+    robot.report("legs", 1)
+    with pytest.raises(RobotValueError):
+        robot.sensor("laser")
+    robot.call("bye")
+    readme = (REPO / "hardware-sim/README.md").read_text(encoding="utf-8")
+    parts = readme.split("<!-- a real session: python/tests/test_environment.py -->\n```text\n", 1)
+    assert len(parts) == 2, "no session in hardware-sim/README.md; this one was:\n" + "\n".join(said)
+    assert "\n".join(said) + "\n" == parts[1].split("```")[0], "this session was:\n" + "\n".join(said)
+    assert environment.wait()[0] == 0

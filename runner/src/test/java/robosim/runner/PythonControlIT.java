@@ -13,13 +13,14 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Control code in Python ({@code control="python:..."}, the package in {@code python/}), run by
- * {@code scripts/headless.sh} as a user runs it: the same robot written in Java and in Python moves the same, and a
+ * {@code scripts/headless.sh} as a user runs it, in one JVM (a layout's pose logs are every layout's:
+ * {@code SameRunEveryLayoutTest}): the same robot written in Java and in Python moves the same, and a
  * Python controller that fails is a failed control code as a Java one is. Runs after package (failsafe), when
  * runner/target/lib holds the built jars; the Python is {@link PythonForTests}'s.
  */
 class PythonControlIT {
     private static final Path REPO = Path.of("..").toAbsolutePath().normalize();
-    private static final String STEPS = "400";
+    private static final String STEPS = "300";
 
     @TempDir
     Path dir;
@@ -28,9 +29,9 @@ class PythonControlIT {
     void theSameRobotInJavaAndInPythonGivesAByteIdenticalPoseLog() throws Exception {
         Path python = dir.resolve("python.csv");
         Path java = dir.resolve("java.csv");
-        ScriptRun py = headless("--env", "examples/python/bounce.xml", "--steps", STEPS, "--pose-log",
+        ScriptRun py = headless("--one-jvm", "--env", "examples/python/bounce.xml", "--steps", STEPS, "--pose-log",
                 python.toString());
-        ScriptRun jv = headless("--env", "examples/python/bounce.xml", "--steps", STEPS, "--param",
+        ScriptRun jv = headless("--one-jvm", "--env", "examples/python/bounce.xml", "--steps", STEPS, "--param",
                 "control=robosim.examples.Bounce", "--pose-log", java.toString());
         assertEquals(0, py.exit(), py.stdout() + py.stderr());
         assertEquals(0, jv.exit(), jv.stdout() + jv.stderr());

@@ -63,6 +63,8 @@ public final class RobotLink {
     private final Robot robot;
     private final DataInputStream in;
     private final DataOutputStream out;
+    /** Calls come so far, a bye or a failure among them (for the line at the link's end). */
+    private long served;
 
     private RobotLink(Socket socket, Robot robot) throws IOException {
         this.socket = socket;
@@ -118,7 +120,11 @@ public final class RobotLink {
             socket.setTcpNoDelay(true); // (a reply is one write; with a request in flight it must not wait)
             RobotLink link = new RobotLink(socket, robot);
             link.welcome(key);
-            link.calls();
+            try {
+                link.calls();
+            } finally {
+                LOG.info("{}: its controller made {} calls over the robot link", robot.name(), link.served);
+            }
         }
     }
 
@@ -241,6 +247,7 @@ public final class RobotLink {
             if (frame == null) {
                 throw new ProtocolException("the controller closed the link without a bye");
             }
+            served++;
             MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
             String call;
             try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
@@ -430,6 +437,9 @@ public final class RobotLink {
             return t;
         });
         e.setRemoveOnCancelPolicy(true);
+        // (idle for a second, the thread ends: a warm JVM's run leaves no thread behind, the next hello makes one)
+        e.setKeepAliveTime(1, TimeUnit.SECONDS);
+        e.allowCoreThreadTimeOut(true);
         return e;
     }
 
