@@ -8,9 +8,10 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import REPO, Environment, start
 
 from robosim import Robot, RobotValueError, SimulationOver
+
+from conftest import REPO, Environment, start
 
 
 def test_a_robot_moves_senses_and_reports_in_a_real_world(environment: Environment) -> None:
@@ -37,11 +38,16 @@ def test_a_robot_moves_senses_and_reports_in_a_real_world(environment: Environme
 
 def test_the_simulations_end_raises_simulation_over(tmp_path: Path) -> None:
     environment = start(tmp_path, 30)
-    robot = Robot.connect(environment.host, environment.port, "py1")
-    with pytest.raises(SimulationOver):
-        robot.sleep(60_000)
-    code, output = environment.wait()
-    assert code == 0, output
+    try:
+        robot = Robot.connect(environment.host, environment.port, "py1")
+        with pytest.raises(SimulationOver):
+            robot.sleep(60_000)
+        code, output = environment.wait()
+        assert code == 0, output
+    finally:
+        if environment.process.poll() is None:
+            environment.process.kill()
+            environment.process.wait(timeout=30)
 
 
 def test_the_run_command_runs_a_controller_script_until_the_end(environment: Environment) -> None:

@@ -9,10 +9,11 @@ import struct
 import threading
 
 import pytest
-from conftest import TRANSCRIPT
 
 from robosim import Message, Pose, Robot, RobotValueError
 from robosim.frames import MAX_FRAME, Frames, LinkError, pack, unpack
+
+from conftest import TRANSCRIPT
 
 
 def transcript() -> list[tuple[bytes, bytes]]:

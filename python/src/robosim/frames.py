@@ -24,7 +24,7 @@ class LinkClosed(LinkError):
 
 def pack(value: Any) -> bytes:
     """One frame holding ``value`` (floats as float64, texts as MessagePack str)."""
-    body = msgpack.packb(value, use_bin_type=True)
+    body: bytes = msgpack.packb(value, use_bin_type=True)
     if not 1 <= len(body) <= MAX_FRAME:
         raise LinkError(f"a frame of {len(body)} bytes (1 to {MAX_FRAME})")
     return _LENGTH.pack(len(body)) + body
@@ -63,7 +63,3 @@ class Frames:
         if data is None or len(data) < n:
             raise LinkClosed("the simulator closed the link")
         return data
-
-    def close(self) -> None:
-        self._in.close()
-        self._sock.close()

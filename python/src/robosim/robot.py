@@ -11,8 +11,9 @@ from robosim.frames import Frames, LinkClosed, LinkError
 #: The link's name and version, said in the hello.
 LINK = "robosim-robot-link"
 VERSION = 1
-#: How long the simulator gets to answer the hello, seconds.
-HELLO_TIMEOUT_S = 10.0
+#: How long the simulator gets to answer the hello, seconds (more than the 10 s it gives a stranger's hello, which it
+#: may be hearing out first).
+HELLO_TIMEOUT_S = 30.0
 
 _NO_DEFAULT = object()
 

@@ -12,11 +12,12 @@ import argparse
 import importlib.util
 import os
 import sys
+import threading
 import traceback
 from collections.abc import Callable
 from pathlib import Path
 from types import ModuleType, TracebackType
-from typing import Any
+from typing import Any, cast
 
 from robosim.frames import LinkError
 from robosim.robot import Robot, SimulationOver
@@ -47,7 +48,7 @@ def controller(module: ModuleType, script: Path) -> Callable[[Robot], Any]:
             raise ValueError(f"{script}: its control class {control.__name__} has no run(self, robot)")
         return lambda robot: control().run(robot)
     if callable(control):
-        return control
+        return cast(Callable[[Robot], Any], control)
     raise ValueError(f"{script}: defines no control (a function control(robot), or a class with run(self, robot) "
                      "named control: control = Wander)")
 
@@ -58,13 +59,11 @@ def run(script: Path, robot: Robot) -> int:
         load(script)(robot)
     except SimulationOver:
         return 0
+    except SystemExit as e:
+        if e.code not in (None, 0):
+            return _failed(robot, e)
     except BaseException as e:  # (KeyboardInterrupt too: the control code did not return)
-        account = "".join(traceback.format_exception(e.with_traceback(_theirs(e.__traceback__))))
-        try:
-            robot.call("failed", account)
-        except (LinkError, OSError, SimulationOver):
-            sys.stderr.write(account)  # (the simulator cannot hear it: said here, once)
-        return EXIT_FAILED
+        return _failed(robot, e)
     try:
         robot.call("bye")
     except (LinkError, OSError, SimulationOver):
@@ -72,11 +71,28 @@ def run(script: Path, robot: Robot) -> int:
     return 0
 
 
+def _failed(robot: Robot, e: BaseException) -> int:
+    """Tells the simulator the control code failed with ``e`` (its traceback); the exit code."""
+    account = "".join(traceback.format_exception(e.with_traceback(_theirs(e.__traceback__))))
+    try:
+        robot.call("failed", account)
+    except (LinkError, OSError, SimulationOver):
+        sys.stderr.write(account)  # (the simulator cannot hear it: said here, once)
+    return EXIT_FAILED
+
+
 def _theirs(tb: TracebackType | None) -> TracebackType | None:
     """The traceback from the controller's own frames on (this module's left out: they are the same every time)."""
     while tb is not None and tb.tb_frame.f_code.co_filename == __file__:
         tb = tb.tb_next
     return tb
+
+
+def _end_with_stdin() -> None:
+    """Reads stdin to its end (the simulator that started this process is gone), then ends the process at once."""
+    while sys.stdin.buffer.read(4096):
+        pass
+    os._exit(EXIT_UNUSABLE)
 
 
 def _address(text: str) -> tuple[str, int]:
@@ -104,8 +120,11 @@ def main(argv: list[str] | None = None) -> int:
     if not args.script.is_file():
         print(f"robosim: {args.script}: no such script", file=sys.stderr)
         return EXIT_UNUSABLE
+    key = os.environ.get("ROBOSIM_LINK_KEY")
+    if key:  # (started by the simulator, whose pipe is its stdin: a simulator gone, however, ends it)
+        threading.Thread(target=_end_with_stdin, name="stdin-watch", daemon=True).start()
     try:
-        robot = Robot.connect(link[0], link[1], name, os.environ.get("ROBOSIM_LINK_KEY"))
+        robot = Robot.connect(link[0], link[1], name, key)
     except (OSError, LinkError) as e:
         print(f"robosim: robot {name} at {link[0]}:{link[1]}: {e}", file=sys.stderr)
         return EXIT_UNUSABLE

@@ -68,6 +68,31 @@ public final class ControlScripts {
         return null;
     }
 
+    /** How long the interpreter gets to show it can run a script ({@link #interpreterProblem}), s. */
+    private static final long CHECK_S = 60;
+
+    /**
+     * Why the interpreter ({@link #interpreter}) could not run a script here (not found; cannot import the package in
+     * {@code python/}), or null: it is asked, {@code INTERPRETER -c "import robosim"}, once for each call.
+     */
+    public static String interpreterProblem() throws InterruptedException {
+        String interpreter = interpreter();
+        String hint = " (pip install ./python into it, or set " + INTERPRETER_VARIABLE + " to a Python that has it)";
+        Process p;
+        try {
+            p = new ProcessBuilder(interpreter, "-c", "import robosim").redirectErrorStream(true)
+                    .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+        } catch (java.io.IOException e) {
+            return "cannot run the Python interpreter " + Printable.of(interpreter, 200) + ": " + e.getMessage() + hint;
+        }
+        if (!p.waitFor(CHECK_S, java.util.concurrent.TimeUnit.SECONDS)) {
+            p.destroyForcibly();
+            return Printable.of(interpreter, 200) + " -c 'import robosim' did not end within " + CHECK_S + " s";
+        }
+        return p.exitValue() == 0 ? null
+                : Printable.of(interpreter, 200) + " cannot import robosim, the package in python/" + hint;
+    }
+
     /** The interpreter a Python script runs with: {@code ROBOSIM_PYTHON}, else {@code python3} on the PATH. */
     public static String interpreter() {
         String given = System.getenv(INTERPRETER_VARIABLE);

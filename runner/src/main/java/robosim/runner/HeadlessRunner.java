@@ -144,9 +144,10 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     /**
      * Every robot of {@code spec} (of environment file {@code env}) needs a control class on the class path the robot
-     * processes get (ours): what is wrong, or null.
+     * processes get (ours), or a script there and an interpreter that can run it: what is wrong, or null.
      */
-    public static String missingControl(java.nio.file.Path env, WorldSpec spec) {
+    public static String missingControl(java.nio.file.Path env, WorldSpec spec) throws InterruptedException {
+        boolean scripts = false;
         for (WorldSpec.RobotSpec r : spec.robots()) {
             String where = env + ": <robot name=\"" + r.name() + "\">";
             if (r.control().isBlank()) {
@@ -157,6 +158,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 if (problem != null) {
                     return where + ": " + problem;
                 }
+                scripts = true;
                 continue;
             }
             try {
@@ -169,7 +171,9 @@ public final class HeadlessRunner implements Callable<Integer> {
                         + "with --classpath or ROBOSIM_CLASSPATH)";
             }
         }
-        return null;
+        String python = scripts ? robosim.protocol.ControlScripts.interpreterProblem() : null;
+        return python == null ? null : env + ": its robots' Python scripts need a Python with the robosim package: "
+                + python;
     }
 
     private int run(WorldSpec spec, ChildProcesses children) throws Exception {

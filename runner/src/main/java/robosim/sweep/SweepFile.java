@@ -296,6 +296,9 @@ public final class SweepFile {
         } catch (EnvironmentFileException e) {
             throw new SweepException(e.getMessage().lines().map(fault -> file + ": " + fault)
                     .collect(java.util.stream.Collectors.joining("\n")));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new SweepException(file + ": stopped while its world's Python was checked; no run was started");
         }
     }
 }

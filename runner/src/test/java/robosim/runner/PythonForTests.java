@@ -10,13 +10,15 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.Assumptions;
 
 /**
  * The Python that tests of Python control code run scripts with, and the environment that makes a script's
  * {@code import robosim} this checkout's package ({@code python/src}, whatever is installed): {@code ROBOSIM_PYTHON}
  * when it is set ({@code .ci/run} sets its virtual environment's), else a virtual environment made once in
  * {@code runner/target/python} by {@code python3 -m venv} with the package installed from the registry's
- * {@code msgpack} ({@code pip install ./python}).
+ * {@code msgpack} ({@code pip install ./python}); on a machine without {@code python3} (and no {@code ROBOSIM_PYTHON}),
+ * the tests that ask are skipped.
  */
 final class PythonForTests {
     private static final Path ROOT = Path.of("").toAbsolutePath().getParent();
@@ -41,6 +43,10 @@ final class PythonForTests {
                     + " cannot import msgpack: pip install ./python into it");
             return given;
         }
+        // (a machine without Python cannot run Python control code: these tests are skipped there, saying so; CI
+        // sets ROBOSIM_PYTHON, so there they always run)
+        Assumptions.assumeTrue(run(List.of("python3", "--version")) == 0, "no python3 on the PATH and no "
+                + "ROBOSIM_PYTHON: the tests of Python control code are skipped");
         Path venv = ROOT.resolve("runner/target/python");
         Path python = venv.resolve("bin/python");
         if (!Files.isExecutable(python) || run(List.of(python.toString(), "-c", "import msgpack")) != 0) {

@@ -140,6 +140,9 @@ public final class RobotLink {
         try {
             frame = LinkFrames.read(in);
         } catch (IOException e) {
+            if (Thread.currentThread().isInterrupted()) {
+                throw e; // (the simulation's end, not the controller's doing)
+            }
             throw new HelloRefused(late.cancel(false) ? oneLine(e.getMessage())
                     : "no hello within " + HELLO_DEADLINE_MS + " ms");
         }
@@ -210,13 +213,18 @@ public final class RobotLink {
         LinkFrames.write(out, p.toByteArray());
     }
 
-    /** The controller's failure with account {@code text}, which is logged once, each line safe for a log. */
+    /**
+     * The controller's failure with account {@code text}, which is logged once, each line made safe for a log and
+     * begun with the robot's name and {@code "| "} (no line of it can pass for one of the log's own).
+     */
     private ControllerFailure failure(String text) {
         String account = text.strip();
         List<String> lines = account.substring(0, Math.min(account.length(), ControllerFailure.MAX_ACCOUNT)).lines()
                 .map(Printable::of).toList();
         String last = lines.isEmpty() ? "(no account)" : lines.get(lines.size() - 1).strip();
-        LOG.error("{}: its controller failed:\n{}", robot.name(), String.join("\n", lines));
+        String name = robot.name();
+        LOG.error("{}: its controller failed:\n{}", name, String.join("\n", lines.stream().map(l -> name + "| " + l)
+                .toList()));
         return new ControllerFailure(last.isEmpty() ? "(no account)" : last);
     }
 
@@ -232,7 +240,7 @@ public final class RobotLink {
         return new HelloRefused(why);
     }
 
-    /** A hello refused: nothing was served, the controller was told why. */
+    /** A hello refused, or none come: nothing was served (a hello that came was answered why). */
     public static final class HelloRefused extends ProtocolException {
         private static final long serialVersionUID = 1L;
 

@@ -1,12 +1,12 @@
 package robosim.hardware.link;
 
-import java.io.BufferedReader;
 import java.io.IOException;
 import java.io.InputStreamReader;
+import java.io.Reader;
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
-import java.nio.channels.AsynchronousCloseException;
 import java.nio.channels.ClosedByInterruptException;
+import java.nio.channels.ClosedChannelException;
 import java.nio.channels.ServerSocketChannel;
 import java.nio.channels.SocketChannel;
 import java.nio.charset.StandardCharsets;
@@ -40,10 +40,14 @@ public final class ScriptControl implements RobotControl {
     private static final Logger LOG = LoggerFactory.getLogger(ScriptControl.class);
     /** How long a script gets to exit after its link ended, ms; then it is stopped. */
     static final long EXIT_GRACE_MS = 1000;
+    /** How long a script that broke its link is waited for, to say its exit code, ms. */
+    static final long EXIT_WAIT_MS = 5000;
     /** Connections whose hello was refused (not the script's) before the script's own is given up on. */
     static final int MAX_STRANGERS = 8;
     /** Lines of a script's output kept to say why it ended. */
     private static final int TAIL_LINES = 4;
+    /** The longest line of a script's output logged, characters; the rest of a longer one is left out. */
+    private static final int MAX_LINE = 1000;
     private static final SecureRandom KEYS = new SecureRandom();
 
     private final String control;
@@ -66,8 +70,8 @@ public final class ScriptControl implements RobotControl {
             server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
             InetSocketAddress at = (InetSocketAddress) server.getLocalAddress();
             Process process = start(robot.name(), at, key);
-            Output output = new Output(robot.name(), process);
-            process.onExit().thenRun(() -> close(server)); // (an accept waiting for a script that died ends)
+            // (its output's end, the script's exit, closes the channel: an accept waiting for a script that died ends)
+            Output output = new Output(robot.name(), process, () -> close(server));
             try {
                 serve(robot, server, process, output, key);
             } finally {
@@ -133,7 +137,7 @@ public final class ScriptControl implements RobotControl {
                 controller = server.accept();
             } catch (ClosedByInterruptException e) {
                 throw e;
-            } catch (AsynchronousCloseException e) {
+            } catch (ClosedChannelException e) { // (closed by the script's end, before or during the accept)
                 throw new IOException(ended("exited", process, output, " before it connected"
                         + (refused == null ? "" : " (a hello refused: " + refused + ")")));
             }
@@ -142,7 +146,7 @@ public final class ScriptControl implements RobotControl {
                 return; // (its bye)
             } catch (RobotLink.HelloRefused e) {
                 refused = e.getMessage();
-                if (strangers >= MAX_STRANGERS) {
+                if (strangers + 1 >= MAX_STRANGERS) {
                     throw new IOException(ended("was not heard", process, output, ": " + MAX_STRANGERS
                             + " hellos refused, the last: " + refused));
                 }
@@ -158,29 +162,45 @@ public final class ScriptControl implements RobotControl {
         }
     }
 
-    /** Why the script is gone: its exit code (waited for a while) and its last lines of output. */
+    /**
+     * Why the script is gone: its exit code (waited for up to {@link #EXIT_WAIT_MS}: it broke its link, so it is
+     * ending) and its last lines of output.
+     */
     private String ended(String what, Process process, Output output, String how) throws InterruptedException {
-        boolean exited = process.waitFor(EXIT_GRACE_MS, TimeUnit.MILLISECONDS);
-        output.await();
+        boolean exited = process.waitFor(EXIT_WAIT_MS, TimeUnit.MILLISECONDS);
+        output.await(EXIT_GRACE_MS);
         String tail = output.tail();
         return "its script " + script.getFileName() + " " + (exited ? "exited (exit code " + process.exitValue()
                 + ")" : what) + how
                 + (tail.isEmpty() ? "" : "; its last output: " + tail);
     }
 
-    /** Gives the script its grace to exit, then stops it. */
-    private static void stop(Process process, Output output) throws InterruptedException {
+    /**
+     * Gives the script its grace to exit, then stops it (SIGTERM, then SIGKILL), and awaits its output's end: within
+     * 1.5 s in all, less than the grace a robot's control code has at the end ({@code HardwareSimulator.CONTROL_GRACE_MS}). The end's interrupt,
+     * if it came, is set aside meanwhile (a wait would end at once) and set again after.
+     */
+    private static void stop(Process process, Output output) {
+        boolean interrupted = Thread.interrupted();
         try {
             if (!process.waitFor(EXIT_GRACE_MS, TimeUnit.MILLISECONDS)) {
                 process.destroy();
-                if (!process.waitFor(EXIT_GRACE_MS, TimeUnit.MILLISECONDS)) {
-                    process.destroyForcibly();
-                }
+                process.waitFor(EXIT_GRACE_MS / 4, TimeUnit.MILLISECONDS);
             }
+        } catch (InterruptedException e) {
+            interrupted = true;
         } finally {
-            if (!process.isAlive()) {
-                output.await();
+            if (process.isAlive()) {
+                process.destroyForcibly();
             }
+        }
+        try {
+            output.await(EXIT_GRACE_MS / 4);
+        } catch (InterruptedException e) {
+            interrupted = true;
+        }
+        if (interrupted) {
+            Thread.currentThread().interrupt();
         }
     }
 
@@ -192,44 +212,68 @@ public final class ScriptControl implements RobotControl {
         }
     }
 
-    /** The script's output, logged line by line on a thread of its own, its last lines kept. */
+    /**
+     * The script's output, logged line by line (each cut at {@link #MAX_LINE} characters and made safe for a log) on
+     * a thread of its own, its last lines kept; its end (the script's exit) runs {@code atEnd}.
+     */
     private static final class Output {
         private final Thread reader;
         private final Deque<String> last = new ArrayDeque<>();
 
-        Output(String robot, Process process) {
-            reader = new Thread(() -> read(robot, process), "script-output[" + robot + "]");
+        Output(String robot, Process process, Runnable atEnd) {
+            reader = new Thread(() -> {
+                try {
+                    read(robot, process);
+                } finally {
+                    atEnd.run();
+                }
+            }, "script-output[" + robot + "]");
             reader.setDaemon(true);
             reader.start();
         }
 
         private void read(String robot, Process process) {
-            try (BufferedReader r = new BufferedReader(new InputStreamReader(process.getInputStream(),
-                    StandardCharsets.UTF_8))) {
-                for (String line = r.readLine(); line != null; line = r.readLine()) {
-                    String shown = Printable.of(line, 1000);
-                    LOG.info("{}: {}", robot, shown);
-                    synchronized (last) {
-                        last.addLast(shown);
-                        if (last.size() > TAIL_LINES) {
-                            last.removeFirst();
-                        }
+            try (Reader r = new InputStreamReader(process.getInputStream(), StandardCharsets.UTF_8)) {
+                StringBuilder line = new StringBuilder();
+                boolean cut = false;
+                for (int c = r.read(); c >= 0; c = r.read()) {
+                    if (c == '\n') {
+                        said(robot, line, cut);
+                        line.setLength(0);
+                        cut = false;
+                    } else if (line.length() < MAX_LINE) {
+                        line.append((char) c);
+                    } else {
+                        cut = true;
                     }
+                }
+                if (!line.isEmpty()) {
+                    said(robot, line, cut);
                 }
             } catch (IOException ignored) {
                 // (the process is gone: its output ends)
             }
         }
 
-        /** Waits a while for the output's end (the process has exited). */
-        void await() throws InterruptedException {
-            reader.join(EXIT_GRACE_MS);
+        private void said(String robot, CharSequence line, boolean cut) {
+            String shown = Printable.of(line.toString().stripTrailing()) + (cut ? "..." : "");
+            LOG.info("{}: {}", robot, shown);
+            synchronized (last) {
+                last.addLast(shown);
+                if (last.size() > TAIL_LINES) {
+                    last.removeFirst();
+                }
+            }
+        }
+
+        /** Waits up to {@code ms} for the output's end (the process has exited). */
+        void await(long ms) throws InterruptedException {
+            reader.join(ms);
         }
 
         String tail() {
             synchronized (last) {
-                List<String> lines = new ArrayList<>(last);
-                return String.join(" | ", lines);
+                return String.join(" | ", new ArrayList<>(last));
             }
         }
     }
