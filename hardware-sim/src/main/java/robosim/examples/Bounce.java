@@ -24,23 +24,9 @@ public final class Bounce implements RobotControl {
         double[] angles = robot.sonarAnglesDeg();
         int turns = 0;
         while (true) {
-            double[] ranges = robot.sonarRanges();
-            double ahead = Double.POSITIVE_INFINITY;
-            double left = 0;
-            double right = 0;
-            for (int s = 0; s < ranges.length; s++) {
-                double a = Wander.normalise(angles[s]);
-                if (Math.abs(a) <= 60) {
-                    ahead = Math.min(ahead, ranges[s]);
-                }
-                if (a > 0 && a < 180) {
-                    left += ranges[s];
-                } else if (a < 0) {
-                    right += ranges[s];
-                }
-            }
-            if (ahead < CLEARANCE_MM) {
-                robot.turn(left >= right ? TURN_DEG : -TURN_DEG);
+            Surroundings around = Surroundings.of(angles, robot.sonarRanges());
+            if (around.aheadMm() < CLEARANCE_MM) {
+                robot.turn(around.leftMm() >= around.rightMm() ? TURN_DEG : -TURN_DEG);
                 robot.report("turns", ++turns);
             } else {
                 robot.move(LEG_MM);

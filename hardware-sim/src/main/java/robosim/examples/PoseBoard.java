@@ -41,6 +41,6 @@ class PoseBoard {
     /** Degrees to turn (in (-180, 180]) to face the point from the robot's pose. */
     static double bearingTo(Robot robot, double x, double y) {
         double to = Math.toDegrees(Math.atan2(y - robot.yMm(), x - robot.xMm()));
-        return Wander.normalise(to - robot.headingDeg());
+        return Surroundings.normalise(to - robot.headingDeg());
     }
 }

@@ -27,24 +27,10 @@ public class Wander implements RobotControl {
         int turns = 0;
         while (true) {
             everyStep(robot);
-            double[] ranges = robot.sonarRanges();
-            double ahead = Double.POSITIVE_INFINITY;
-            double left = 0;
-            double right = 0;
-            for (int s = 0; s < ranges.length; s++) {
-                double a = normalise(angles[s]);
-                if (Math.abs(a) <= 60) {
-                    ahead = Math.min(ahead, ranges[s]);
-                }
-                if (a > 0 && a < 180) {
-                    left += ranges[s];
-                } else if (a < 0) {
-                    right += ranges[s];
-                }
-            }
-            if (ahead < CLEARANCE_MM) {
+            Surroundings around = Surroundings.of(angles, robot.sonarRanges());
+            if (around.aheadMm() < CLEARANCE_MM) {
                 double by = 30 + random.nextInt(61);
-                robot.turn(left >= right ? by : -by);
+                robot.turn(around.leftMm() >= around.rightMm() ? by : -by);
                 robot.report("turns", ++turns);
             } else {
                 robot.move(LEG_MM);
@@ -54,15 +40,5 @@ public class Wander implements RobotControl {
 
     /** Called once before each step's decision; does nothing here. */
     protected void everyStep(Robot robot) throws InterruptedException {
-    }
-
-    static double normalise(double deg) {
-        double a = deg % 360;
-        if (a > 180) {
-            a -= 360;
-        } else if (a <= -180) {
-            a += 360;
-        }
-        return a;
     }
 }
