@@ -90,7 +90,7 @@ def _theirs(tb: TracebackType | None) -> TracebackType | None:
 
 def _end_with_stdin() -> None:
     """Reads stdin to its end (the simulator that started this process is gone), then ends the process at once."""
-    while sys.stdin.buffer.read(4096):
+    while os.read(0, 4096):  # (the descriptor itself: sys.stdin's buffer holds a lock the interpreter's end needs)
         pass
     os._exit(EXIT_UNUSABLE)
 

@@ -34,8 +34,8 @@ public final class MultiRobotMain implements Callable<Integer> {
             description = "Environment robot port (default: ${DEFAULT-VALUE}).")
     int port;
 
-    @Option(names = "--robot", required = true, paramLabel = "NAME:TYPE:CONTROL_CLASS",
-            description = "A robot to run; repeat for each.")
+    @Option(names = "--robot", required = true, paramLabel = "NAME:TYPE:CONTROL",
+            description = "A robot to run; repeat for each. CONTROL: a control class, or python:PATH (a script).")
     List<String> robots;
 
     @Mixin
@@ -71,7 +71,7 @@ public final class MultiRobotMain implements Callable<Integer> {
         for (String r : robots) {
             String[] p = r.split(":", 3);
             if (p.length != 3 || p[0].isBlank()) {
-                System.err.println("robots: --robot " + r + " is not NAME:TYPE:CONTROL_CLASS");
+                System.err.println("robots: --robot " + r + " is not NAME:TYPE:CONTROL");
                 return 2;
             }
             try {

@@ -13,14 +13,15 @@ import picocli.CommandLine.Parameters;
 import robosim.api.RobotControl;
 import robosim.protocol.Protocol;
 
-/** {@code scripts/robot.sh CONTROL_CLASS NAME HOST PORT}: one robot process. */
+/** {@code scripts/robot.sh CONTROL NAME HOST PORT}: one robot process. */
 @Command(name = "robot.sh", mixinStandardHelpOptions = true,
         description = "Runs one robot's control code on a Hardware Simulator connected to an Environment.")
 public final class RobotMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(RobotMain.class);
 
-    @Parameters(index = "0", paramLabel = "CONTROL_CLASS",
-            description = "Control class, e.g. robosim.examples.BackAndForth.")
+    @Parameters(index = "0", paramLabel = "CONTROL",
+            description = "Control class, e.g. robosim.examples.BackAndForth, or a Python script, python:PATH (run "
+                    + "with $ROBOSIM_PYTHON or python3, which needs the package in python/).")
     String controlClass;
 
     @Parameters(index = "1", paramLabel = "NAME", description = "The robot's name in the environment file.")
