@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib.util
 import os
+import stat
 import sys
 import threading
 import traceback
@@ -88,10 +89,22 @@ def _theirs(tb: TracebackType | None) -> TracebackType | None:
     return tb
 
 
+def _stdin_is_a_pipe() -> bool:
+    try:
+        return stat.S_ISFIFO(os.fstat(0).st_mode)
+    except OSError:
+        return False
+
+
 def _end_with_stdin() -> None:
     """Reads stdin to its end (the simulator that started this process is gone), then ends the process at once."""
-    while os.read(0, 4096):  # (the descriptor itself: sys.stdin's buffer holds a lock the interpreter's end needs)
+    try:
+        while os.read(0, 4096):  # (the descriptor itself: sys.stdin's buffer holds a lock the interpreter's end needs)
+            pass
+    except OSError:
         pass
+    sys.stderr.write("robosim: the simulator that started this script is gone (its pipe ended); ending\n")
+    sys.stderr.flush()
     os._exit(EXIT_UNUSABLE)
 
 
@@ -121,7 +134,7 @@ def main(argv: list[str] | None = None) -> int:
         print(f"robosim: {args.script}: no such script", file=sys.stderr)
         return EXIT_UNUSABLE
     key = os.environ.get("ROBOSIM_LINK_KEY")
-    if key:  # (started by the simulator, whose pipe is its stdin: a simulator gone, however, ends it)
+    if key and _stdin_is_a_pipe():  # (started by the simulator, whose pipe is its stdin: the simulator gone ends it)
         threading.Thread(target=_end_with_stdin, name="stdin-watch", daemon=True).start()
     try:
         robot = Robot.connect(link[0], link[1], name, key)

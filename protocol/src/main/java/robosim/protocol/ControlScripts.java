@@ -70,27 +70,40 @@ public final class ControlScripts {
 
     /** How long the interpreter gets to show it can run a script ({@link #interpreterProblem}), s. */
     private static final long CHECK_S = 60;
+    /** The interpreter last found able to import robosim (a sweep's many worlds ask once). */
+    private static volatile String checked;
 
     /**
      * Why the interpreter ({@link #interpreter}) could not run a script here (not found; cannot import the package in
-     * {@code python/}), or null: it is asked, {@code INTERPRETER -c "import robosim"}, once for each call.
+     * {@code python/}), or null: it is asked, {@code INTERPRETER -c "import robosim"}, until it has answered yes once in
+     * this JVM.
      */
     public static String interpreterProblem() throws InterruptedException {
         String interpreter = interpreter();
+        if (interpreter.equals(checked)) {
+            return null;
+        }
         String hint = " (pip install ./python into it, or set " + INTERPRETER_VARIABLE + " to a Python that has it)";
         Process p;
         try {
             p = new ProcessBuilder(interpreter, "-c", "import robosim").redirectErrorStream(true)
                     .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
         } catch (java.io.IOException e) {
-            return "cannot run the Python interpreter " + Printable.of(interpreter, 200) + ": " + e.getMessage() + hint;
+            return "cannot run the Python interpreter " + Printable.of(interpreter, 200) + ": "
+                    + Printable.of(e.getMessage(), 200) + hint;
         }
-        if (!p.waitFor(CHECK_S, java.util.concurrent.TimeUnit.SECONDS)) {
-            p.destroyForcibly();
-            return Printable.of(interpreter, 200) + " -c 'import robosim' did not end within " + CHECK_S + " s";
+        try {
+            if (!p.waitFor(CHECK_S, java.util.concurrent.TimeUnit.SECONDS)) {
+                return Printable.of(interpreter, 200) + " -c 'import robosim' did not end within " + CHECK_S + " s";
+            }
+        } finally {
+            p.destroyForcibly(); // (ended already, or given up on, or this thread interrupted)
         }
-        return p.exitValue() == 0 ? null
-                : Printable.of(interpreter, 200) + " cannot import robosim, the package in python/" + hint;
+        if (p.exitValue() != 0) {
+            return Printable.of(interpreter, 200) + " cannot import robosim, the package in python/" + hint;
+        }
+        checked = interpreter;
+        return null;
     }
 
     /** The interpreter a Python script runs with: {@code ROBOSIM_PYTHON}, else {@code python3} on the PATH. */

@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.Map;
 import org.junit.jupiter.api.Assumptions;
@@ -17,6 +18,8 @@ import org.junit.jupiter.api.Test;
 class PythonControlTest {
     private static final Path BOUNCE = Path.of("../examples/python/bounce.xml");
     private static final int STEPS = 200;
+    /** How long a robot may take over a step: four interpreters starting at once on a loaded machine, generously. */
+    private static final Duration START = Duration.ofMinutes(5);
 
     @Test
     void aWorldOfPythonRobotsRunsInATestAsTheSameRobotsInJava() {
@@ -24,11 +27,12 @@ class PythonControlTest {
         Assumptions.assumeTrue(python != null && !python.isBlank(),
                 "ROBOSIM_PYTHON is not set: the testkit's run of Python robots is skipped");
         Map<String, Pose> java = new LinkedHashMap<>();
-        try (Simulation s = Simulation.of(BOUNCE).param("control", "robosim.examples.Bounce").start()) {
+        try (Simulation s = Simulation.of(BOUNCE).param("control", "robosim.examples.Bounce").stepTimeout(START)
+                .start()) {
             s.run(STEPS);
             s.robots().forEach(r -> java.put(r, s.pose(r)));
         }
-        try (Simulation s = Simulation.of(BOUNCE).start()) {
+        try (Simulation s = Simulation.of(BOUNCE).stepTimeout(START).start()) {
             s.run(STEPS);
             for (String r : s.robots()) {
                 assertEquals(java.get(r), s.pose(r), r + " moved otherwise in Python than in Java");

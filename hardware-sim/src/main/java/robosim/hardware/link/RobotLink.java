@@ -141,6 +141,7 @@ public final class RobotLink {
             frame = LinkFrames.read(in);
         } catch (IOException e) {
             if (Thread.currentThread().isInterrupted()) {
+                late.cancel(false);
                 throw e; // (the simulation's end, not the controller's doing)
             }
             throw new HelloRefused(late.cancel(false) ? oneLine(e.getMessage())

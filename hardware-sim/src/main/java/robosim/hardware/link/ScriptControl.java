@@ -176,12 +176,14 @@ public final class ScriptControl implements RobotControl {
     }
 
     /**
-     * Gives the script its grace to exit, then stops it (SIGTERM, then SIGKILL), and awaits its output's end: within
-     * 1.5 s in all, less than the grace a robot's control code has at the end ({@code HardwareSimulator.CONTROL_GRACE_MS}). The end's interrupt,
+     * Gives the script its grace to exit, then stops it (SIGTERM, then SIGKILL) and any process it started, and
+     * awaits its output's end: within 1.75 s in all, less than the grace a robot's control code has at the end
+     * ({@code HardwareSimulator.CONTROL_GRACE_MS}). The end's interrupt,
      * if it came, is set aside meanwhile (a wait would end at once) and set again after.
      */
     private static void stop(Process process, Output output) {
         boolean interrupted = Thread.interrupted();
+        List<ProcessHandle> descendants = process.descendants().toList(); // (its own children: stopped with it)
         try {
             if (!process.waitFor(EXIT_GRACE_MS, TimeUnit.MILLISECONDS)) {
                 process.destroy();
@@ -193,9 +195,10 @@ public final class ScriptControl implements RobotControl {
             if (process.isAlive()) {
                 process.destroyForcibly();
             }
+            descendants.forEach(ProcessHandle::destroyForcibly);
         }
         try {
-            output.await(EXIT_GRACE_MS / 4);
+            output.await(EXIT_GRACE_MS / 2);
         } catch (InterruptedException e) {
             interrupted = true;
         }
