@@ -65,6 +65,8 @@ public final class RobotLink {
     private final DataOutputStream out;
     /** Calls come so far, a bye or a failure among them (for the line at the link's end). */
     private long served;
+    /** Each call's reply, packed here (cleared before each): one buffer for the link's life, not one a call. */
+    private final MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
 
     private RobotLink(Socket socket, Robot robot) throws IOException {
         this.socket = socket;
@@ -257,7 +259,7 @@ public final class RobotLink {
                 throw new ProtocolException("the controller closed the link without a bye");
             }
             served++;
-            MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
+            reply.clear();
             String call;
             try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
                 if (u.getNextFormat().getValueType() != ValueType.ARRAY) {
@@ -299,14 +301,14 @@ public final class RobotLink {
             } catch (MessagePackException e) {
                 throw badCall("a call that is not MessagePack: " + oneLine(e.getMessage()));
             } catch (IllegalArgumentException e) {
-                reply = MessagePack.newDefaultBufferPacker();
+                reply.clear();
                 reply.packArrayHeader(3).packString("error").packString("value").packString(oneLine(e.getMessage()));
             } catch (InterruptedException e) {
                 // (the simulation's end interrupts this thread: cleared, so the reply is written on a socket that an
                 // interrupt would close, then the end goes on)
                 Thread.interrupted();
                 try {
-                    reply = MessagePack.newDefaultBufferPacker();
+                    reply.clear();
                     reply.packArrayHeader(3).packString("error").packString("over").packString("the simulation is over");
                     reply(reply);
                 } catch (IOException gone) {
