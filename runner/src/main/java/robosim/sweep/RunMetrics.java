@@ -2,7 +2,6 @@ package robosim.sweep;
 
 import java.io.IOException;
 import java.nio.file.Path;
-import java.util.BitSet;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -153,65 +152,31 @@ public final class RunMetrics {
     private static Map<String, Double> builtInAndReports(RecordingReader recording, double areaCellM,
             Map<String, Map<String, Double>> reports) throws IOException {
         WorldSnapshot world = recording.snapshot();
-        Arena arena = world.arena();
-        String tooMany = cellProblem(arena, areaCellM);
-        if (tooMany != null) {
-            throw new IOException(tooMany);
-        }
-        double cell = areaCellM * 1000;
-        int columns = Math.max(1, (int) Math.ceil((arena.maxXMm() - arena.minXMm()) / cell));
-        int rows = Math.max(1, (int) Math.ceil((arena.maxYMm() - arena.minYMm()) / cell));
-        BitSet visited = new BitSet(columns * rows);
         PoseUpdate start = world.poses(); // (where the robots stood before step 0: its moves count too)
-        double[] lastX = new double[start.count()];
-        double[] lastY = new double[start.count()];
+        double[] startX = new double[start.count()];
+        double[] startY = new double[start.count()];
         for (int r = 0; r < start.count(); r++) {
-            lastX[r] = start.xMm(r);
-            lastY[r] = start.yMm(r);
+            startX[r] = start.xMm(r);
+            startY[r] = start.yMm(r);
         }
-        boolean[] touching = new boolean[start.count()];
-        double distanceMm = 0;
-        long contacts = 0;
-        long delivered = 0;
+        RunTally tally;
+        try {
+            tally = new RunTally(world.arena(), areaCellM, startX, startY);
+        } catch (IllegalArgumentException e) {
+            throw new IOException(e.getMessage());
+        }
         Map<Integer, Map<String, Double>> byIndex = new TreeMap<>();
         PoseUpdate last = world.poses();
         for (int i = 0; i < recording.steps(); i++) {
             RecordingReader.Step step = recording.step(i);
             PoseUpdate u = step.update();
-            int n = u.count();
-            if (n > lastX.length) {
-                int had = lastX.length;
-                lastX = java.util.Arrays.copyOf(lastX, n);
-                lastY = java.util.Arrays.copyOf(lastY, n);
-                touching = java.util.Arrays.copyOf(touching, n);
-                for (int r = had; r < n; r++) {
-                    lastX[r] = Double.NaN;
-                }
-            }
-            for (int r = 0; r < n; r++) {
-                double x = u.xMm(r);
-                double y = u.yMm(r);
-                if (!Double.isNaN(lastX[r])) {
-                    distanceMm += Math.hypot(x - lastX[r], y - lastY[r]);
-                }
-                lastX[r] = x;
-                lastY[r] = y;
-                int cx = (int) Math.floor((x - arena.minXMm()) / cell);
-                int cy = (int) Math.floor((y - arena.minYMm()) / cell);
-                if (cx >= 0 && cx < columns && cy >= 0 && cy < rows) {
-                    visited.set(cy * columns + cx);
-                }
+            for (int r = 0; r < u.count(); r++) {
+                tally.pose(r, u.xMm(r), u.yMm(r));
             }
             for (RobotView v : step.views()) {
                 int r = v.robot();
-                boolean now = !v.contact().isEmpty();
-                if (r < touching.length) {
-                    if (now && !touching[r]) {
-                        contacts++;
-                    }
-                    touching[r] = now;
-                }
-                delivered += v.delivered().size();
+                tally.contact(r, !v.contact().isEmpty());
+                tally.delivered(v.delivered().size());
                 for (Report report : v.reports()) {
                     byIndex.computeIfAbsent(r, k -> new HashMap<>()).put(report.name(), report.value());
                 }
@@ -222,11 +187,11 @@ public final class RunMetrics {
                 : recording.snapshotAt(recording.steps() - 1).robotNames();
         int robots = names.size();
         Map<String, Double> out = new LinkedHashMap<>();
-        out.put("distance_m", distanceMm / 1000);
-        out.put("contacts", (double) contacts);
-        out.put("messages_delivered", (double) delivered);
+        out.put("distance_m", tally.distanceM());
+        out.put("contacts", (double) tally.contacts());
+        out.put("messages_delivered", (double) tally.delivered());
         out.put("tags", (double) last.tags().size());
-        out.put("area_covered", visited.cardinality() / (double) (columns * rows));
+        out.put("area_covered", tally.areaCovered());
         out.put("robots_left", (double) Math.max(0, robots - last.departed().size()));
         Map<String, Double> summed = new TreeMap<>();
         byIndex.forEach((r, each) -> each.forEach((name, value) -> {
