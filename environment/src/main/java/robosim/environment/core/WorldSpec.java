@@ -71,6 +71,12 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
                 heatSources, tagRangeMm, taggable, joins, parameters);
     }
 
+    /** This world with {@code others} for its robots (the same robots elsewhere: a learning episode's start). */
+    public WorldSpec withRobots(List<RobotSpec> others) {
+        return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, others, commRangeMm, maxMessageBytes,
+                heatSources, tagRangeMm, taggable, joins, parameters);
+    }
+
     /** This world with another seed (a sweep's, or {@code --seed}'s). */
     public WorldSpec withSeed(long newSeed) {
         return new WorldSpec(source, name, timeStepMs, newSeed, arena, obstacles, robots, commRangeMm, maxMessageBytes,

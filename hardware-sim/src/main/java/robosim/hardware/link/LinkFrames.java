@@ -7,18 +7,19 @@ import java.io.IOException;
 import robosim.protocol.ProtocolException;
 
 /**
- * The robot link's frames: a 4-byte big-endian length, then that many bytes of one MessagePack value. A length of 0
- * or over {@link #MAX_BYTES} is refused before anything of the frame is read on.
+ * The robot link's frames (and the learning link's, {@code robosim.rl.BatchLink}): a 4-byte big-endian length,
+ * then that many bytes of one MessagePack value. A length of 0 or over {@link #MAX_BYTES} is refused before
+ * anything of the frame is read on.
  */
-final class LinkFrames {
+public final class LinkFrames {
     /** The largest frame, bytes: a message's text (64 KiB at most) and a robot's readings fit many times over. */
-    static final int MAX_BYTES = 1 << 20;
+    public static final int MAX_BYTES = 1 << 20;
 
     private LinkFrames() {
     }
 
     /** The next frame's bytes; null at a clean end of the stream (between frames). */
-    static byte[] read(DataInputStream in) throws IOException {
+    public static byte[] read(DataInputStream in) throws IOException {
         int first = in.read();
         if (first < 0) {
             return null;
@@ -43,7 +44,7 @@ final class LinkFrames {
     }
 
     /** Writes {@code payload} as one frame and flushes it. */
-    static void write(DataOutputStream out, byte[] payload) throws IOException {
+    public static void write(DataOutputStream out, byte[] payload) throws IOException {
         if (payload.length < 1 || payload.length > MAX_BYTES) {
             throw new ProtocolException("a frame of " + payload.length + " bytes to write (1 to " + MAX_BYTES + ")");
         }

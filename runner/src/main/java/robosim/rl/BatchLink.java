@@ -1,0 +1,410 @@
+package robosim.rl;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.net.Socket;
+import java.nio.ByteOrder;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.util.List;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
+import org.msgpack.core.MessageBufferPacker;
+import org.msgpack.core.MessagePack;
+import org.msgpack.core.MessagePackException;
+import org.msgpack.core.MessageUnpacker;
+import org.msgpack.value.ValueType;
+import robosim.hardware.link.LinkFrames;
+import robosim.protocol.Printable;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.SonarSpec;
+
+/**
+ * The learning link (python/README.md, "Learning controllers"): a learner in another process steps a
+ * {@link BatchWorlds} over one connection, in the robot link's frames ({@link LinkFrames}): a hello
+ * {@code {link: "robosim-batch-link", version: 1, key}} within {@link #HELLO_DEADLINE_MS}, the welcome (the worlds,
+ * robots and their limits, the arrays' shapes), then one request and one reply a step:
+ * <ul>
+ * <li>{@code ["step", ACTIONS, RESETS]}: ACTIONS a binary of float32 (little-endian), world by world, robot by robot,
+ * the action's fields each; RESETS nil or a map world -> seed: those worlds begin a new episode instead (their
+ * actions are not read). Reply {@code ["ok", BATCH]};
+ * <li>{@code ["reset", SEEDS]}: SEEDS an array, one per world, a seed or nil (that world goes on). Reply
+ * {@code ["ok", BATCH]};
+ * <li>{@code ["bye"]}: reply {@code ["ok"]}, and the link ends.
+ * </ul>
+ * BATCH is a map of binaries, each a little-endian array (shapes in the welcome): {@code steps} (int64), {@code sonar},
+ * {@code pose} (float32), {@code contact} (uint8), {@code metrics} (float64), {@code messages} (float32, when
+ * messages have numbers). A request that is not one, or actions not finite or not of the batch's size, is answered
+ * {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}) and the link goes on; velocities beyond a
+ * robot's limits are held to them.
+ */
+public final class BatchLink {
+    public static final String NAME = "robosim-batch-link";
+    public static final int VERSION = 1;
+    public static final long HELLO_DEADLINE_MS = 10_000;
+    private static final int MAX_HELLO_FIELDS = 16;
+    private static final int MAX_TEXT = 1000;
+    private static final VarHandle FLOAT = MethodHandles.byteArrayViewVarHandle(float[].class, ByteOrder.LITTLE_ENDIAN);
+
+    private final Socket socket;
+    private final DataInputStream in;
+    private final DataOutputStream out;
+    private final BatchWorlds batch;
+    private final WatchedWorld watch;
+    private final MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
+    private final float[] actions;
+    private final byte[] actionBytes;
+    private final boolean[] reset;
+    private final long[] seeds;
+    private final double[][] limits;
+    private long stepsServed;
+
+    BatchLink(Socket socket, BatchWorlds batch, WatchedWorld watch) throws IOException {
+        this.socket = socket;
+        this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream()));
+        this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
+        this.batch = batch;
+        this.watch = watch;
+        this.actions = new float[batch.count() * batch.robots() * batch.actionFields()];
+        this.actionBytes = new byte[actions.length * 4];
+        this.reset = new boolean[batch.count()];
+        this.seeds = new long[batch.count()];
+        this.limits = batch.limits();
+    }
+
+    /** The largest reply of {@code batch}, bytes (its arrays and their names). */
+    static long replyBytes(int worlds, int robots, int sonars, int messageSize) {
+        return 256L + worlds * (8L + BatchWorlds.METRICS.size() * 8L + robots * (sonars * 4L + 12 + 1
+                + (long) robots * messageSize * 4));
+    }
+
+    /**
+     * The hello, checked ({@code key}: the secret the learner was given; a hello without it is refused), then the
+     * welcome. A hello that is late, not this link's or of another version is refused, answered why if it came.
+     *
+     * @throws ProtocolException the refusal
+     */
+    void welcome(String key, ScheduledExecutorService deadlines) throws IOException {
+        ScheduledFuture<?> late = deadlines.schedule(() -> {
+            try {
+                socket.close();
+            } catch (IOException ignored) {
+                // (closing is all)
+            }
+        }, HELLO_DEADLINE_MS, TimeUnit.MILLISECONDS);
+        byte[] frame;
+        try {
+            frame = LinkFrames.read(in);
+        } catch (IOException e) {
+            throw new ProtocolException(late.cancel(false) ? oneLine(e.getMessage())
+                    : "no hello within " + HELLO_DEADLINE_MS + " ms");
+        }
+        if (!late.cancel(false)) {
+            throw new ProtocolException("no hello within " + HELLO_DEADLINE_MS + " ms");
+        }
+        if (frame == null) {
+            throw new ProtocolException("the learner closed the link before its hello");
+        }
+        String link = null;
+        String given = null;
+        Long version = null;
+        try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
+            if (u.getNextFormat().getValueType() != ValueType.MAP) {
+                throw refuse("a hello is a map (link, version, key)");
+            }
+            int fields = u.unpackMapHeader();
+            if (fields > MAX_HELLO_FIELDS) {
+                throw refuse("a hello of " + fields + " fields (at most " + MAX_HELLO_FIELDS + ")");
+            }
+            for (int i = 0; i < fields; i++) {
+                String name = text(u);
+                switch (name == null ? "" : name) {
+                    case "link" -> link = text(u);
+                    case "version" -> version = u.getNextFormat().getValueType() == ValueType.INTEGER ? u.unpackLong()
+                            : null;
+                    case "key" -> given = text(u);
+                    default -> u.skipValue();
+                }
+            }
+        } catch (MessagePackException e) {
+            throw refuse("a hello that is not MessagePack: " + oneLine(e.getMessage()));
+        }
+        if (!NAME.equals(link)) {
+            throw refuse("not a learning link's hello (link \"" + Printable.of(link, 40) + "\", not \"" + NAME + "\")");
+        }
+        if (version == null || version != VERSION) {
+            throw refuse("learning link version " + version + " is not supported (this simulator speaks " + VERSION + ")");
+        }
+        if (key != null && (given == null || !MessageDigest.isEqual(key.getBytes(StandardCharsets.UTF_8),
+                given.getBytes(StandardCharsets.UTF_8)))) {
+            throw refuse(given == null ? "a hello without the key this link was started with"
+                    : "a hello with another key than this link was started with");
+        }
+        LinkFrames.write(out, welcomeFrame());
+    }
+
+    private byte[] welcomeFrame() throws IOException {
+        MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+        List<RobotProperties> properties = batch.properties();
+        p.packMapHeader(17);
+        p.packString("link").packString(NAME);
+        p.packString("version").packInt(VERSION);
+        p.packString("world").packString(batch.spec().name());
+        p.packString("worlds").packInt(batch.count());
+        p.packString("robots").packArrayHeader(batch.robots());
+        batch.spec().robots().forEach(r -> pack(p, r.name()));
+        p.packString("types").packArrayHeader(batch.robots());
+        batch.spec().robots().forEach(r -> pack(p, r.type()));
+        p.packString("sonars").packInt(batch.sonars());
+        p.packString("sonar_angles_deg").packArrayHeader(batch.robots());
+        for (RobotProperties r : properties) {
+            p.packArrayHeader(r.sonars().size());
+            for (SonarSpec s : r.sonars()) {
+                p.packDouble(s.angleDeg());
+            }
+        }
+        p.packString("sonar_max_mm").packArrayHeader(batch.robots());
+        for (int i = 0; i < batch.robots(); i++) {
+            p.packDouble(batch.sonarMaxMm(i));
+        }
+        p.packString("max_speed_mm_s").packArrayHeader(batch.robots());
+        for (double[] l : limits) {
+            p.packDouble(l[0]);
+        }
+        p.packString("max_turn_deg_s").packArrayHeader(batch.robots());
+        for (double[] l : limits) {
+            p.packDouble(l[1]);
+        }
+        p.packString("step_ms").packLong(batch.spec().timeStepMs());
+        p.packString("repeat").packInt(batch.repeat());
+        p.packString("message_size").packInt(batch.messageSize());
+        p.packString("metrics").packArrayHeader(BatchWorlds.METRICS.size());
+        BatchWorlds.METRICS.forEach(m -> pack(p, m));
+        p.packString("arena_mm").packArrayHeader(4).packDouble(batch.spec().arena().minXMm())
+                .packDouble(batch.spec().arena().minYMm()).packDouble(batch.spec().arena().maxXMm())
+                .packDouble(batch.spec().arena().maxYMm());
+        p.packString("seed").packLong(batch.spec().seed());
+        return p.toByteArray();
+    }
+
+    /** Serves requests until the learner says bye or closes the link; returns the steps served. */
+    long serve() throws IOException {
+        while (true) {
+            byte[] frame = LinkFrames.read(in);
+            if (frame == null) {
+                return stepsServed;
+            }
+            reply.clear();
+            boolean bye = false;
+            try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
+                String call = call(u);
+                switch (call) {
+                    case "step" -> {
+                        expectArguments(u, 2, call);
+                        readActions(u);
+                        readResets(u);
+                        step();
+                    }
+                    case "reset" -> {
+                        expectArguments(u, 1, call);
+                        java.util.Arrays.fill(reset, false);
+                        readSeeds(u);
+                        step();
+                    }
+                    case "bye" -> {
+                        expectArguments(u, 0, call);
+                        reply.packArrayHeader(1).packString("ok");
+                        bye = true;
+                    }
+                    default -> throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40)
+                            + "\" (step, reset, bye)");
+                }
+            } catch (BadCall e) {
+                reply.clear();
+                reply.packArrayHeader(3).packString("error").packString(e.kind).packString(e.getMessage());
+            } catch (MessagePackException e) {
+                reply.clear();
+                reply.packArrayHeader(3).packString("error").packString("bad_call")
+                        .packString("a request that is not one: " + oneLine(e.getMessage()));
+            }
+            LinkFrames.write(out, reply.toByteArray());
+            if (bye) {
+                return stepsServed;
+            }
+        }
+    }
+
+    private int arguments;
+
+    private String call(MessageUnpacker u) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.ARRAY) {
+            throw new BadCall("bad_call", "a request is an array [CALL, ARG...]");
+        }
+        arguments = u.unpackArrayHeader() - 1;
+        if (arguments < 0 || u.getNextFormat().getValueType() != ValueType.STRING) {
+            throw new BadCall("bad_call", "a request begins with its call's name");
+        }
+        return u.unpackString();
+    }
+
+    private void expectArguments(MessageUnpacker u, int count, String call) {
+        if (arguments != count) {
+            throw new BadCall("bad_call", call + " takes " + count + " arguments, not " + arguments);
+        }
+    }
+
+    private void readActions(MessageUnpacker u) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.BINARY) {
+            throw new BadCall("value", "the actions are a binary of float32");
+        }
+        int length = u.unpackBinaryHeader();
+        if (length != actionBytes.length) {
+            throw new BadCall("value", "actions of " + length + " bytes; this batch takes " + actionBytes.length + " ("
+                    + batch.count() + " worlds x " + batch.robots() + " robots x " + batch.actionFields()
+                    + " float32)");
+        }
+        u.readPayload(actionBytes);
+        int fields = batch.actionFields();
+        for (int i = 0; i < actions.length; i++) {
+            float v = (float) FLOAT.get(actionBytes, i * 4);
+            if (!Float.isFinite(v)) {
+                int robot = (i / fields) % batch.robots();
+                throw new BadCall("value", "world " + i / fields / batch.robots() + ", robot "
+                        + batch.spec().robots().get(robot).name() + ": action field " + i % fields + " is " + v);
+            }
+            int field = i % fields;
+            if (field < BatchWorlds.VELOCITIES) {
+                double max = limits[(i / fields) % batch.robots()][field];
+                v = (float) Math.max(-max, Math.min(max, v));
+            }
+            actions[i] = v;
+        }
+    }
+
+    private void readResets(MessageUnpacker u) throws IOException {
+        java.util.Arrays.fill(reset, false);
+        if (u.tryUnpackNil()) {
+            return;
+        }
+        if (u.getNextFormat().getValueType() != ValueType.MAP) {
+            throw new BadCall("value", "the resets are nil or a map world -> seed");
+        }
+        int n = u.unpackMapHeader();
+        for (int i = 0; i < n; i++) {
+            int w = world(u);
+            seeds[w] = seed(u);
+            reset[w] = true;
+        }
+    }
+
+    private void readSeeds(MessageUnpacker u) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.ARRAY) {
+            throw new BadCall("value", "the seeds are an array, one a world (a seed, or nil)");
+        }
+        int n = u.unpackArrayHeader();
+        if (n != batch.count()) {
+            throw new BadCall("value", n + " seeds for " + batch.count() + " worlds");
+        }
+        for (int w = 0; w < n; w++) {
+            if (!u.tryUnpackNil()) {
+                seeds[w] = seed(u);
+                reset[w] = true;
+            }
+        }
+    }
+
+    private int world(MessageUnpacker u) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.INTEGER) {
+            throw new BadCall("value", "a world is a number");
+        }
+        long w = u.unpackLong();
+        if (w < 0 || w >= batch.count()) {
+            throw new BadCall("value", "no world " + w + " (0 to " + (batch.count() - 1) + ")");
+        }
+        return (int) w;
+    }
+
+    private static long seed(MessageUnpacker u) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.INTEGER) {
+            throw new BadCall("value", "a seed is a whole number");
+        }
+        try {
+            return u.unpackLong();
+        } catch (MessagePackException e) {
+            throw new BadCall("value", "a seed is a signed 64-bit number");
+        }
+    }
+
+    private void step() throws IOException {
+        batch.step(actions, reset, seeds);
+        if (watch != null) {
+            watch.stepped();
+        }
+        stepsServed++;
+        reply.packArrayHeader(2).packString("ok");
+        reply.packMapHeader(batch.messageSize() > 0 ? 6 : 5);
+        binary("steps", batch.steps());
+        binary("sonar", batch.sonar());
+        binary("pose", batch.pose());
+        binary("contact", batch.contact());
+        binary("metrics", batch.metrics());
+        if (batch.messageSize() > 0) {
+            binary("messages", batch.messages());
+        }
+    }
+
+    private void binary(String name, byte[] bytes) throws IOException {
+        reply.packString(name).packBinaryHeader(bytes.length);
+        reply.writePayload(bytes);
+    }
+
+    private ProtocolException refuse(String why) {
+        try {
+            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+            p.packMapHeader(1).packString("error").packString(why);
+            LinkFrames.write(out, p.toByteArray());
+        } catch (IOException gone) {
+            // (the refusal stands whether the learner hears it or not)
+        }
+        return new ProtocolException(why);
+    }
+
+    private static String text(MessageUnpacker u) throws IOException {
+        if (u.getNextFormat().getValueType() != ValueType.STRING) {
+            u.skipValue();
+            return null;
+        }
+        String s = u.unpackString();
+        return s.length() > MAX_TEXT ? s.substring(0, MAX_TEXT) : s;
+    }
+
+    private static void pack(MessageBufferPacker p, String s) {
+        try {
+            p.packString(s);
+        } catch (IOException e) {
+            throw new java.io.UncheckedIOException(e);
+        }
+    }
+
+    private static String oneLine(String s) {
+        return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), MAX_TEXT);
+    }
+
+    /** A request answered with an error; the link goes on. */
+    private static final class BadCall extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        private final String kind;
+
+        BadCall(String kind, String why) {
+            super(why, null, false, false);
+            this.kind = kind;
+        }
+    }
+}

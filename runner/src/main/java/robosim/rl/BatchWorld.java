@@ -1,0 +1,218 @@
+package robosim.rl;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.SplittableRandom;
+import robosim.environment.core.InProcessGeometry;
+import robosim.environment.core.SimulationCore;
+import robosim.environment.core.WorldSpec;
+import robosim.protocol.CommEvent;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.RobotView;
+import robosim.protocol.StepRequest;
+import robosim.protocol.StepResponse;
+import robosim.protocol.WorldSnapshot;
+import robosim.sweep.RunTally;
+
+/**
+ * One world of a {@link BatchWorlds}: the Environment's simulation core and the Geometry engine of an environment
+ * file, stepped inline (no threads, no links), its robots' requests made from an action each (a linear and a
+ * rotational velocity, perhaps a message), and what the robots sensed written into the batch's arrays. Its episode
+ * starts at {@link #reset}: a new world from the file with the episode's seed (and, if asked, headings drawn from
+ * it), one step of standing still that reads the sonars, and a {@link RunTally} of the built-in metrics. Not
+ * thread-safe: one caller at a time (the batch hands each world to one thread a step).
+ */
+final class BatchWorld {
+    private static final VarHandle FLOAT = MethodHandles.byteArrayViewVarHandle(float[].class, ByteOrder.LITTLE_ENDIAN);
+    private static final VarHandle DOUBLE = MethodHandles.byteArrayViewVarHandle(double[].class,
+            ByteOrder.LITTLE_ENDIAN);
+    private static final VarHandle LONG = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.LITTLE_ENDIAN);
+
+    private final BatchWorlds batch;
+    private final int index;
+    private final int robots;
+    private final String[] names;
+    private final Map<String, Integer> byName = new HashMap<>();
+    private final double seconds;
+    private final StepRequest[] requests;
+    private final StepRequest[] lastRequests;
+    private final boolean[] touched;
+    private SimulationCore core;
+    private InProcessGeometry geometry;
+    private RunTally tally;
+    private long step;
+    private boolean newWorld;
+
+    BatchWorld(BatchWorlds batch, int index) {
+        this.batch = batch;
+        this.index = index;
+        WorldSpec spec = batch.spec();
+        this.robots = spec.robots().size();
+        this.names = new String[robots];
+        for (int i = 0; i < robots; i++) {
+            names[i] = spec.robots().get(i).name();
+            byName.put(names[i], i);
+        }
+        this.seconds = spec.timeStepMs() / 1000.0;
+        this.requests = new StepRequest[robots];
+        this.lastRequests = new StepRequest[robots];
+        this.touched = new boolean[robots];
+    }
+
+    /**
+     * A new episode: the world of the file with {@code seed} (robots' headings drawn from it if the batch says so),
+     * then one step of standing still, whose readings are the episode's first observation.
+     */
+    void reset(long seed) throws ProtocolException {
+        WorldSpec spec = batch.spec().withSeed(seed);
+        if (batch.randomHeadings()) {
+            SplittableRandom random = new SplittableRandom(seed);
+            List<WorldSpec.RobotSpec> turned = new ArrayList<>();
+            for (WorldSpec.RobotSpec r : spec.robots()) {
+                turned.add(new WorldSpec.RobotSpec(r.name(), r.type(), r.control(), r.xMm(), r.yMm(),
+                        random.nextDouble(360), r.sensors(), r.sonarNoiseMm(), r.radiusMm(), r.sonarCount()));
+            }
+            spec = spec.withRobots(turned);
+        }
+        List<RobotProperties> properties = batch.properties();
+        core = new SimulationCore(spec, properties);
+        geometry = new InProcessGeometry(core.map().geometryWorld());
+        double[] x = new double[robots];
+        double[] y = new double[robots];
+        for (int i = 0; i < robots; i++) {
+            x[i] = core.map().xMm(i);
+            y[i] = core.map().yMm(i);
+        }
+        tally = new RunTally(spec.arena(), batch.areaCellM(), x, y);
+        step = 0;
+        newWorld = true;
+        Arrays.fill(touched, false);
+        for (int i = 0; i < robots; i++) {
+            requests[i] = new StepRequest(step, 0, 0, true, List.of());
+        }
+        advance();
+        write();
+    }
+
+    /**
+     * Applies each robot's action, {@code actions[offset + robot * fields ...]}: velocities (mm/s, deg/s; finite,
+     * bounded by the robot type's limits before they come here), then the message's numbers, for the batch's
+     * repeat of time steps (the message goes out in the first, the sonars are read in the last), and writes what
+     * the robots sensed.
+     */
+    void act(float[] actions, int offset) throws ProtocolException {
+        int fields = batch.actionFields();
+        int repeat = batch.repeat();
+        Arrays.fill(touched, false);
+        if (batch.messageSize() > 0) {
+            Arrays.fill(batch.messages(), messagesAt(0), messagesAt(robots), (byte) 0);
+        }
+        for (int r = 0; r < repeat; r++) {
+            for (int i = 0; i < robots; i++) {
+                int a = offset + i * fields;
+                List<CommEvent> sent = r == 0 && batch.messageSize() > 0
+                        ? List.of(new CommEvent(names[i], CommEvent.EVERYONE, MessageNumbers.text(actions, a + 2,
+                        batch.messageSize())))
+                        : List.of();
+                requests[i] = new StepRequest(step, actions[a] * seconds, actions[a + 1] * seconds, r == repeat - 1,
+                        sent);
+            }
+            advance();
+        }
+        write();
+    }
+
+    /** One time step of the requests in hand: the core and Geometry, then the tally and the messages heard. */
+    private void advance() throws ProtocolException {
+        core.complete(geometry.resolve(core.prepare(step, requests)));
+        System.arraycopy(requests, 0, lastRequests, 0, robots);
+        for (int i = 0; i < robots; i++) {
+            StepResponse response = core.response(i);
+            boolean contact = !response.contact().isEmpty();
+            touched[i] |= contact;
+            tally.pose(i, response.xMm(), response.yMm());
+            tally.contact(i, contact);
+            tally.delivered(response.inbox().size());
+            if (batch.messageSize() > 0) {
+                for (CommEvent m : response.inbox()) {
+                    Integer from = byName.get(m.from());
+                    if (from != null) {
+                        MessageNumbers.read(m.payload(), batch.messages(), messagesAt(i) + from * batch.messageSize() * 4,
+                                batch.messageSize());
+                    }
+                }
+            }
+        }
+        step++;
+    }
+
+    private int messagesAt(int robot) {
+        return ((index * robots + robot) * robots) * batch.messageSize() * 4;
+    }
+
+    /**
+     * The sonars (each held to its robot's farthest range: noise may read beyond it), poses, contacts, metrics and
+     * step of this world into the batch's arrays.
+     */
+    private void write() {
+        int sonars = batch.sonars();
+        byte[] sonar = batch.sonar();
+        byte[] pose = batch.pose();
+        byte[] contact = batch.contact();
+        for (int i = 0; i < robots; i++) {
+            StepResponse response = core.response(i);
+            double[] ranges = response.sonarMm();
+            int at = ((index * robots) + i) * sonars * 4;
+            for (int s = 0; s < sonars; s++) {
+                FLOAT.set(sonar, at + s * 4, s < ranges.length ? (float) Math.min(ranges[s], batch.sonarMaxMm(i)) : 0f);
+            }
+            int p = ((index * robots) + i) * 3 * 4;
+            FLOAT.set(pose, p, (float) response.xMm());
+            FLOAT.set(pose, p + 4, (float) response.yMm());
+            FLOAT.set(pose, p + 8, (float) response.headingDeg());
+            contact[index * robots + i] = (byte) (touched[i] ? 1 : 0);
+        }
+        byte[] metrics = batch.metrics();
+        int m = index * BatchWorlds.METRICS.size() * 8;
+        DOUBLE.set(metrics, m, tally.distanceM());
+        DOUBLE.set(metrics, m + 8, (double) tally.contacts());
+        DOUBLE.set(metrics, m + 16, (double) tally.delivered());
+        DOUBLE.set(metrics, m + 24, (double) core.tags().size());
+        DOUBLE.set(metrics, m + 32, tally.areaCovered());
+        DOUBLE.set(metrics, m + 40, (double) robots);
+        LONG.set(batch.steps(), index * 8, step);
+    }
+
+    /** The world as it stands, for a viewer that joins (the caller holds the batch's watch lock). */
+    WorldSnapshot snapshot() {
+        return core.map().snapshot(step - 1);
+    }
+
+    /** True once after each reset: a viewer is sent the new world whole. */
+    boolean takeNewWorld() {
+        boolean was = newWorld;
+        newWorld = false;
+        return was;
+    }
+
+    SimulationCore core() {
+        return core;
+    }
+
+    /** Robot {@code robot}'s view of the last step, for a viewer that watches it. */
+    RobotView view(int robot) {
+        return RobotView.of(step - 1, robot, names[robot], lastRequests[robot], core.response(robot));
+    }
+
+    int robot(String name) {
+        Integer i = byName.get(name);
+        return i == null ? -1 : i;
+    }
+}

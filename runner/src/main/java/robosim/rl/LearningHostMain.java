@@ -1,0 +1,300 @@
+package robosim.rl;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.InetSocketAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.net.SocketTimeoutException;
+import java.nio.file.Path;
+import java.util.List;
+import java.util.Locale;
+import java.util.concurrent.Callable;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import org.slf4j.Logger;
+import org.slf4j.LoggerFactory;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Option;
+import robosim.environment.config.EnvironmentFileException;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.control.ControlCommands;
+import robosim.environment.control.ControlVerb;
+import robosim.environment.control.WebViewers;
+import robosim.environment.core.WorldSpec;
+import robosim.environment.net.Settings;
+import robosim.environment.server.Acceptors;
+import robosim.environment.server.Port;
+import robosim.environment.server.PortGuide;
+import robosim.environment.server.ServerContext;
+import robosim.environment.server.ViewerClientWorker;
+import robosim.hardware.link.LinkFrames;
+import robosim.protocol.ObjectConnection;
+import robosim.protocol.Printable;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.RobotModels;
+import robosim.sweep.RunMetrics;
+import robosim.web.WebViewerServer;
+
+/**
+ * {@code scripts/learning-host.sh}: K copies of an environment file's world ({@link BatchWorlds}) served to one
+ * learner over the learning link ({@link BatchLink}) on loopback, world 0 to viewers if asked. Python's
+ * {@code robosim.rl} starts it and reads where it listens from its first line; it serves one learner (the first
+ * whose hello carries {@code ROBOSIM_LINK_KEY}, when that is set) and exits when the learner says bye or goes.
+ * The file's robots are the agents: their control code is not run.
+ */
+@Command(name = "learning-host.sh", mixinStandardHelpOptions = true,
+        description = "Serves K copies of an environment file's world to one learner (Python's robosim.rl) over the "
+                + "learning link on loopback: one exchange a step for every robot of every world.")
+public final class LearningHostMain implements Callable<Integer> {
+    private static final Logger LOG = LoggerFactory.getLogger(LearningHostMain.class);
+    /** Hellos refused before the host gives up (strangers on this machine). */
+    static final int MAX_STRANGERS = 8;
+    /** The most worlds a batch holds. */
+    static final int MAX_WORLDS = 1024;
+
+    @Option(names = "--env", required = true, paramLabel = "FILE.xml", description = "The environment file.")
+    Path env;
+
+    @Option(names = "--param", paramLabel = "NAME=VALUE", description = "Give the environment file's parameter NAME "
+            + "this value; repeat for more.")
+    java.util.Map<String, String> params = new java.util.LinkedHashMap<>();
+
+    @Option(names = "--worlds", defaultValue = "1", description = "Copies of the world, stepped together, 1 to "
+            + MAX_WORLDS + " (default: ${DEFAULT-VALUE}).")
+    int worlds;
+
+    @Option(names = "--repeat", defaultValue = "1", description = "Time steps an action is held, 1 to 10000 "
+            + "(default: ${DEFAULT-VALUE}).")
+    int repeat;
+
+    @Option(names = "--message-size", defaultValue = "0", description = "Numbers in a robot's message, 0 to 64 "
+            + "(default: ${DEFAULT-VALUE}: no messages).")
+    int messageSize;
+
+    @Option(names = "--random-headings", description = "Draw each robot's start heading from the episode's seed "
+            + "(default: the file's headings).")
+    boolean randomHeadings;
+
+    @Option(names = "--area-cell-m", defaultValue = "" + RunMetrics.DEFAULT_AREA_CELL_M,
+            description = "The side of area_covered's cells, m (default: ${DEFAULT-VALUE}).")
+    double areaCellM;
+
+    @Option(names = "--threads", description = "Threads that step the worlds (default: the machine's cores).")
+    Integer threads;
+
+    @Option(names = "--port", defaultValue = "0", description = "The learning link's port on loopback "
+            + "(default: ${DEFAULT-VALUE}: one the system picks, printed).")
+    int port;
+
+    @Option(names = "--accept-timeout-s", defaultValue = "60", description = "Exit 3 if no learner has said hello "
+            + "within this long (default: ${DEFAULT-VALUE}).")
+    int acceptTimeoutS;
+
+    @Option(names = "--viewer-port", defaultValue = "-1", description = "Serve world 0 to viewers (viewer2d.sh, "
+            + "pose-log.sh) on this loopback port (default: ${DEFAULT-VALUE}: none; 0: one the system picks).")
+    int viewerPort;
+
+    @Option(names = "--web-port", defaultValue = "-1", description = "Serve world 0 to a browser on this loopback "
+            + "port (default: ${DEFAULT-VALUE}: none; 0: one the system picks).")
+    int webPort;
+
+    @Override
+    public Integer call() throws Exception {
+        WorldSpec spec;
+        try {
+            spec = new EnvironmentLoader().load(env, params);
+        } catch (EnvironmentFileException e) {
+            System.err.println(e.getMessage());
+            return 2;
+        }
+        String bad = badOption(spec);
+        if (bad != null) {
+            System.err.println("learning-host: " + bad);
+            return 2;
+        }
+        int shares = threads != null ? threads : Runtime.getRuntime().availableProcessors();
+        InetAddress loopback = InetAddress.getLoopbackAddress();
+        ScheduledExecutorService deadlines = Executors.newSingleThreadScheduledExecutor(r -> {
+            Thread t = new Thread(r, "rl-deadline");
+            t.setDaemon(true);
+            return t;
+        });
+        try (BatchWorlds batch = new BatchWorlds(spec, worlds, repeat, messageSize, randomHeadings, areaCellM, shares);
+                ServerSocket server = new ServerSocket()) {
+            server.bind(new InetSocketAddress(loopback, port), 1);
+            WatchedWorld watch = viewerPort >= 0 || webPort >= 0 ? new WatchedWorld(batch) : null;
+            Acceptors viewers = null;
+            WebViewerServer web = null;
+            try {
+                if (watch != null) {
+                    ServerContext context = ServerContext.of(null, ObjectConnection.DEFAULT_RESET_EVERY, 10_000,
+                            Settings.DEFAULT_WRITE_TIMEOUT_MS, GUIDE);
+                    viewers = new Acceptors(context, loopback, 256);
+                    viewers.bind(Port.VIEWER, Math.max(0, viewerPort), Settings.DEFAULT_MAX_CONNECTIONS,
+                            (s, n) -> new ViewerClientWorker(context, s, "rl-viewer[" + n + "]", watch));
+                    if (webPort >= 0) {
+                        web = WebViewers.start(webPort, loopback, viewers.port(Port.VIEWER), null, NO_COMMANDS);
+                    }
+                    viewers.accept();
+                }
+            } catch (IOException e) {
+                System.err.println("learning-host: " + e.getMessage());
+                return 2;
+            }
+            System.out.println("robosim-batch-link listening on " + loopback.getHostAddress() + ":"
+                    + server.getLocalPort() + (viewerPort >= 0 ? " viewers=" + viewers.port(Port.VIEWER) : "")
+                    + (web != null ? " web=" + web.port() : ""));
+            System.out.flush();
+            try {
+                return serve(server, batch, watch, deadlines);
+            } finally {
+                if (watch != null) {
+                    watch.end("the learner has gone", 2000);
+                }
+                if (web != null) {
+                    web.close();
+                }
+                if (viewers != null) {
+                    viewers.close();
+                }
+            }
+        } catch (ProtocolException e) {
+            System.err.println("learning-host: " + env + ": " + e.getMessage());
+            return 2;
+        } finally {
+            deadlines.shutdownNow();
+        }
+    }
+
+    private int serve(ServerSocket server, BatchWorlds batch, WatchedWorld watch, ScheduledExecutorService deadlines)
+            throws IOException {
+        String key = System.getenv("ROBOSIM_LINK_KEY");
+        long deadline = System.nanoTime() + acceptTimeoutS * 1_000_000_000L;
+        int strangers = 0;
+        while (true) {
+            long left = (deadline - System.nanoTime()) / 1_000_000;
+            if (left <= 0) {
+                System.err.println("learning-host: no learner said hello within " + acceptTimeoutS + " s");
+                return 3;
+            }
+            server.setSoTimeout((int) Math.min(Integer.MAX_VALUE, left));
+            Socket socket;
+            try {
+                socket = server.accept();
+            } catch (SocketTimeoutException e) {
+                continue;
+            }
+            try (socket) {
+                socket.setTcpNoDelay(true);
+                BatchLink link = new BatchLink(socket, batch, watch);
+                try {
+                    link.welcome(key, deadlines);
+                } catch (ProtocolException e) {
+                    LOG.warn("a hello from {} refused: {}", socket.getInetAddress().getHostAddress(), e.getMessage());
+                    if (++strangers >= MAX_STRANGERS) {
+                        System.err.println("learning-host: " + strangers + " hellos refused; giving up");
+                        return 3;
+                    }
+                    continue;
+                }
+                long start = System.nanoTime();
+                long steps;
+                try {
+                    steps = link.serve();
+                } catch (IOException e) {
+                    System.err.println("learning-host: the learning link failed: " + Printable.of(e.getMessage(), 1000));
+                    return 1;
+                }
+                double seconds = (System.nanoTime() - start) / 1e9;
+                LOG.info(String.format(Locale.ROOT, "served %d steps of %d worlds x %d robots (%d robot-steps, x%d "
+                        + "time steps an action) in %.1f s", steps, batch.count(), batch.robots(),
+                        steps * batch.count() * batch.robots(), batch.repeat(), seconds));
+                return 0;
+            }
+        }
+    }
+
+    private String badOption(WorldSpec spec) {
+        if (worlds < 1 || worlds > MAX_WORLDS) {
+            return "--worlds must be 1 to " + MAX_WORLDS + ", got " + worlds;
+        }
+        if (repeat < 1 || repeat > 10_000) {
+            return "--repeat must be 1 to 10000, got " + repeat;
+        }
+        if (messageSize < 0 || messageSize > 64) {
+            return "--message-size must be 0 to 64, got " + messageSize;
+        }
+        if (threads != null && threads < 1) {
+            return "--threads must be >= 1, got " + threads;
+        }
+        if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
+            return "--area-cell-m must be > 0, got " + areaCellM;
+        }
+        for (String[] p : List.of(new String[] {"--port", "" + port}, new String[] {"--viewer-port", "" + viewerPort},
+                new String[] {"--web-port", "" + webPort})) {
+            int v = Integer.parseInt(p[1]);
+            if (v < (p[0].equals("--port") ? 0 : -1) || v > 65535) {
+                return p[0] + " must be " + (p[0].equals("--port") ? "0" : "-1") + " to 65535, got " + v;
+            }
+        }
+        if (acceptTimeoutS < 1) {
+            return "--accept-timeout-s must be >= 1, got " + acceptTimeoutS;
+        }
+        if (spec.robots().isEmpty()) {
+            return env + ": no robots: a learning environment's agents are the file's robots";
+        }
+        if (!spec.joins().isEmpty()) {
+            return env + ": robots that join during a run are not for learning (the agents are the file's robots)";
+        }
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            if (RobotModels.byName(r.type()) == null) {
+                return env + ": robot " + r.name() + ": type " + r.type() + " is not a known model";
+            }
+        }
+        int sonars = spec.robots().stream().mapToInt(r -> RobotModels.byName(r.type()).sonars().size()).max().orElse(0);
+        long bytes = BatchLink.replyBytes(worlds, spec.robots().size(), sonars, messageSize);
+        if (bytes > LinkFrames.MAX_BYTES) {
+            return worlds + " worlds of " + spec.robots().size() + " robots make a step's reply of " + bytes
+                    + " bytes, over the link's " + LinkFrames.MAX_BYTES + ": fewer worlds (or a smaller message)";
+        }
+        return null;
+    }
+
+    /** A page asks nothing of a learning host: the learner steps it. */
+    private static final ControlCommands NO_COMMANDS = new ControlCommands() {
+        @Override
+        public List<ControlVerb> verbs() {
+            return List.of();
+        }
+    };
+
+    /** What a learning host's viewer port says of itself. */
+    private static final PortGuide GUIDE = new PortGuide() {
+        @Override
+        public String description(Port p) {
+            return "a learning host's viewer port";
+        }
+
+        @Override
+        public String wrongPort(Port here, java.io.Externalizable hello) {
+            return "that is a learning host's viewer port (world 0 of a learner's batch); robots and Geometry "
+                    + "connect to a live Environment";
+        }
+
+        @Override
+        public String speaker() {
+            return "this learning host";
+        }
+    };
+
+    public static void main(String[] args) {
+        CommandLine cl = new CommandLine(new LearningHostMain());
+        cl.setParameterExceptionHandler((ex, a) -> {
+            System.err.println("learning-host: " + ex.getMessage() + " (see --help)");
+            return 2;
+        });
+        System.exit(cl.execute(args));
+    }
+}

@@ -1,0 +1,18 @@
+/**
+ * Learning controllers: K copies of a world stepped together for a learner in another process
+ * ({@link robosim.rl.BatchWorlds}, {@link robosim.rl.BatchLink}, {@link robosim.rl.LearningHostMain}; Python's
+ * {@code robosim.rl}, python/README.md "Learning controllers"). The thread that serves the link owns time: it reads
+ * a step's actions, steps its share of the worlds (world 0 among them) while the others step the rest, and answers.
+ *
+ * <table>
+ * <caption>threads</caption>
+ * <tr><th>thread</th><th>role</th></tr>
+ * <tr><td>{@code main}</td><td>accepts the learner and serves its link: the owner of time</td></tr>
+ * <tr><td>{@code rl-worlds[t]}</td><td>daemons, one fewer than the threads asked for (the cores, at most the
+ * worlds): each steps its share of the worlds while {@code main} waits for them, and nothing else</td></tr>
+ * <tr><td>{@code rl-deadline}</td><td>a daemon: closes a learner's connection whose hello is late (a deadline)</td></tr>
+ * <tr><td>{@code rl-viewer[n]}</td><td>with {@code --viewer-port} or {@code --web-port}: one a viewer, as an
+ * Environment's viewer workers (robosim.environment.server), fed world 0 through a bounded queue</td></tr>
+ * </table>
+ */
+package robosim.rl;

@@ -1,0 +1,133 @@
+package robosim.rl;
+
+import static org.junit.jupiter.api.Assertions.assertArrayEquals;
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
+import java.nio.ByteOrder;
+import java.nio.file.Path;
+import java.util.Arrays;
+import java.util.SplittableRandom;
+import org.junit.jupiter.api.Test;
+import robosim.environment.config.EnvironmentLoader;
+import robosim.environment.core.WorldSpec;
+
+class BatchWorldsTest {
+    private static final VarHandle FLOAT = MethodHandles.byteArrayViewVarHandle(float[].class, ByteOrder.LITTLE_ENDIAN);
+    private static final VarHandle DOUBLE = MethodHandles.byteArrayViewVarHandle(double[].class,
+            ByteOrder.LITTLE_ENDIAN);
+    private static final VarHandle LONG = MethodHandles.byteArrayViewVarHandle(long[].class, ByteOrder.LITTLE_ENDIAN);
+
+    static WorldSpec world() throws Exception {
+        return new EnvironmentLoader().load(Path.of("src/test/resources/learning.xml"));
+    }
+
+    /** Every array of the batch, one after another. */
+    private static byte[] arrays(BatchWorlds b) {
+        byte[][] all = {b.steps(), b.sonar(), b.pose(), b.contact(), b.metrics(), b.messages()};
+        return Arrays.stream(all).reduce(new byte[0], (x, y) -> {
+            byte[] z = Arrays.copyOf(x, x.length + y.length);
+            System.arraycopy(y, 0, z, x.length, y.length);
+            return z;
+        });
+    }
+
+    private static float[] randomActions(BatchWorlds b, SplittableRandom random) {
+        float[] a = new float[b.count() * b.robots() * b.actionFields()];
+        double[][] limits = b.limits();
+        for (int i = 0; i < a.length; i++) {
+            int field = i % b.actionFields();
+            a[i] = field < 2 ? (float) random.nextDouble(-limits[(i / b.actionFields()) % b.robots()][field],
+                    limits[(i / b.actionFields()) % b.robots()][field]) : (float) random.nextDouble(-1, 1);
+        }
+        return a;
+    }
+
+    @Test
+    void theSameSeedsAndActionsGiveTheSameArraysBitForBitOnOneThreadOrTwo() throws Exception {
+        WorldSpec spec = world();
+        try (BatchWorlds one = new BatchWorlds(spec, 3, 2, 2, true, 0.5, 1);
+                BatchWorlds two = new BatchWorlds(spec, 3, 2, 2, true, 0.5, 2);
+                BatchWorlds other = new BatchWorlds(spec.withSeed(6), 3, 2, 2, true, 0.5, 2)) {
+            SplittableRandom r1 = new SplittableRandom(9);
+            SplittableRandom r2 = new SplittableRandom(9);
+            boolean[] none = new boolean[3];
+            long[] seeds = new long[3];
+            assertArrayEquals(arrays(one), arrays(two));
+            assertFalse(Arrays.equals(arrays(one), arrays(other)), "another seed, other headings");
+            for (int k = 0; k < 150; k++) {
+                one.step(randomActions(one, r1), none, seeds);
+                two.step(randomActions(two, r2), none, seeds);
+                assertArrayEquals(arrays(one), arrays(two), "step " + k);
+            }
+            assertEquals(1 + 150 * 2, (long) LONG.get(one.steps(), 16), "a settling step, then 2 time steps an action");
+            assertTrue((double) DOUBLE.get(one.metrics(), 0) > 0, "the robots went somewhere");
+        }
+    }
+
+    @Test
+    void anActionIsAVelocityHeldForTheRepeatAndTheSonarsOfEachTypeFillTheirRow() throws Exception {
+        try (BatchWorlds b = new BatchWorlds(world(), 1, 5, 0, false, 0.5, 1)) {
+            assertEquals(16, b.sonars(), "the most sonars of a robot of the world (a Scout's)");
+            float[] a = new float[3 * 2];
+            a[2] = 400; // b: 400 mm/s ahead (north, heading 90)
+            a[5] = 30; // c: turns at 30 deg/s
+            b.step(a, new boolean[1], new long[1]);
+            assertEquals(1000 + 400 * 0.1 * 5, (float) FLOAT.get(b.pose(), 12 + 4), 1e-3, "b's y, mm");
+            assertEquals(3000, (float) FLOAT.get(b.pose(), 12), 1e-3, "b's x, mm");
+            assertEquals(45 + 30 * 0.1 * 5, (float) FLOAT.get(b.pose(), 24 + 8), 1e-3, "c's heading");
+            for (int s = 8; s < 16; s++) {
+                assertEquals(0f, (float) FLOAT.get(b.sonar(), s * 4), "beyond the ArRobot's 8 sonars");
+            }
+            for (int s = 0; s < 16; s++) {
+                float range = (float) FLOAT.get(b.sonar(), (16 + s) * 4);
+                assertTrue(range > 0 && range <= b.sonarMaxMm(1), "b's sonar " + s + ": " + range);
+            }
+            assertEquals(6L, (long) LONG.get(b.steps(), 0), "a settling step, then the action's 5");
+        }
+    }
+
+    @Test
+    void aMessageGoesToEveryRobotInRangeAndIsReadBackExactly() throws Exception {
+        try (BatchWorlds b = new BatchWorlds(world(), 2, 1, 2, false, 0.5, 2)) {
+            float[] a = new float[2 * 3 * 4];
+            a[1 * 4 + 2] = 1.5f; // world 0, robot b's message
+            a[1 * 4 + 3] = -0.25f;
+            b.step(a, new boolean[2], new long[2]);
+            int fieldsOfRow = 3 * 2;
+            for (int to : new int[] {0, 2}) {
+                int at = (to * fieldsOfRow + 1 * 2) * 4;
+                assertEquals(1.5f, (float) FLOAT.get(b.messages(), at), "robot " + to + " heard b");
+                assertEquals(-0.25f, (float) FLOAT.get(b.messages(), at + 4));
+            }
+            assertEquals(0f, (float) FLOAT.get(b.messages(), (1 * fieldsOfRow + 1 * 2) * 4), "not to itself");
+            int world1 = 3 * fieldsOfRow * 4;
+            for (int i = world1; i < b.messages().length; i += 4) {
+                assertEquals(0f, (float) FLOAT.get(b.messages(), i), "world 1 sent nothing");
+            }
+            assertEquals(6.0, (double) DOUBLE.get(b.metrics(), 16), "messages_delivered in world 0: each robot sends");
+            b.step(new float[a.length], new boolean[2], new long[2]);
+            assertEquals(0f, (float) FLOAT.get(b.messages(), (0 * fieldsOfRow + 1 * 2) * 4), "b sent zeros this time");
+        }
+    }
+
+    @Test
+    void aWorldThatIsResetBeginsAgainWhileTheOthersGoOn() throws Exception {
+        try (BatchWorlds b = new BatchWorlds(world(), 2, 1, 0, false, 0.5, 2)) {
+            float[] a = new float[2 * 3 * 2];
+            Arrays.fill(a, 200);
+            for (int k = 0; k < 10; k++) {
+                b.step(a, new boolean[2], new long[2]);
+            }
+            b.step(a, new boolean[] {false, true}, new long[] {0, 5});
+            assertEquals(12L, (long) LONG.get(b.steps(), 0));
+            assertEquals(1L, (long) LONG.get(b.steps(), 8), "the settling step of a new episode");
+            assertEquals(1000f, (float) FLOAT.get(b.pose(), 3 * 12), "world 1's a at its start again");
+            assertEquals(0.0, (double) DOUBLE.get(b.metrics(), 6 * 8), "world 1's distance from its new start");
+            assertTrue((double) DOUBLE.get(b.metrics(), 0) > 0);
+        }
+    }
+}
