@@ -1,0 +1,60 @@
+"""What an agent observes and does, as Gymnasium spaces, and the batch's arrays as observations."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from gymnasium import spaces
+
+from robosim.rl.host import Batch, Welcome
+
+#: The bounds of a message's numbers (the link carries any finite float32; the declared space is this).
+MESSAGE_BOUND = 1.0
+
+
+@dataclass(frozen=True)
+class Layout:
+    """Which parts an observation has (``sonar`` and ``contact`` always; ``pose`` and ``messages`` if asked), and each
+    agent's spaces: its sonars (mm, 0 to its farthest range), contact (0 or 1), pose (x, y mm within the arena,
+    heading 0 to 360 degrees), the last message heard from each robot (zeros if none); its action: linear velocity
+    (mm/s) and rotational velocity (deg/s) within its type's limits, then its message's numbers (-1 to 1)."""
+
+    welcome: Welcome
+    pose: bool
+
+    def observation_space(self, robot: int) -> spaces.Dict:
+        w = self.welcome
+        parts: dict[str, spaces.Space] = {
+            "sonar": spaces.Box(0.0, w.sonar_max_mm[robot], (len(w.sonar_angles_deg[robot]),), np.float32),
+            "contact": spaces.Box(0.0, 1.0, (1,), np.float32),
+        }
+        if self.pose:
+            x0, y0, x1, y1 = w.arena_mm
+            parts["pose"] = spaces.Box(np.array([x0, y0, 0.0], np.float32), np.array([x1, y1, 360.0], np.float32),
+                                       dtype=np.float32)
+        if w.message_size:
+            parts["messages"] = spaces.Box(-np.inf, np.inf, (len(w.robots), w.message_size), np.float32)
+        return spaces.Dict(parts)
+
+    def action_space(self, robot: int) -> spaces.Box:
+        w = self.welcome
+        high = np.array([w.max_speed_mm_s[robot], w.max_turn_deg_s[robot]] + [MESSAGE_BOUND] * w.message_size,
+                        np.float32)
+        return spaces.Box(-high, high, dtype=np.float32)
+
+    def observations(self, batch: Batch) -> dict[str, np.ndarray]:
+        """The batch's observations, part by part, each (K, N, ...): views where they can be, one copy for contact
+        (as float32); a robot with fewer sonars than the most has zeros beyond its own."""
+        out = {"sonar": batch.sonar, "contact": batch.contact[..., None].astype(np.float32)}
+        if self.pose:
+            out["pose"] = batch.pose
+        if batch.messages is not None:
+            out["messages"] = batch.messages
+        return out
+
+    def agent_observation(self, parts: dict[str, np.ndarray], world: int, robot: int) -> dict[str, np.ndarray]:
+        """Robot ``robot`` of world ``world``'s observation: its own arrays (copies, which the next step leaves)."""
+        count = len(self.welcome.sonar_angles_deg[robot])
+        return {name: (a[world, robot, :count] if name == "sonar" else a[world, robot]).copy()
+                for name, a in parts.items()}

@@ -1,0 +1,204 @@
+"""K copies of a world stepped together, the learner's view: arrays (K, N, ...) in, arrays out, one exchange a step."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+from gymnasium import spaces
+
+from robosim.rl.host import Batch, LearningHost
+from robosim.rl.spaces import Layout
+
+#: Actions an episode holds before it is truncated, unless told otherwise.
+DEFAULT_MAX_STEPS = 500
+
+
+class Metrics(Mapping[str, np.ndarray]):
+    """The built-in metrics of K worlds by name, each (K,): views of one array (K, M), made when asked for."""
+
+    def __init__(self, names: list[str], values: np.ndarray) -> None:
+        self._index = {name: i for i, name in enumerate(names)}
+        self._values = values
+
+    def __getitem__(self, name: str) -> np.ndarray:
+        return self._values[:, self._index[name]]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._index)
+
+    def __len__(self) -> int:
+        return len(self._index)
+
+
+@dataclass(frozen=True)
+class Transition:
+    """What a reward or termination function sees of one step of K worlds (arrays of the batch, read-only):
+    ``observations`` part by part (K, N, ...), the robots' ``pose`` (K, N, 3) and ``contact`` (K, N) whether observed
+    or not, the built-in ``metrics`` of each world's episode so far and before this step, by name (K,), ``actions``
+    (K, N, 2 + message size) and ``steps``: actions since each episode began (K,)."""
+
+    observations: dict[str, np.ndarray]
+    pose: np.ndarray
+    contact: np.ndarray
+    metrics: Mapping[str, np.ndarray]
+    previous_metrics: Mapping[str, np.ndarray]
+    actions: np.ndarray
+    steps: np.ndarray
+
+
+#: A reward: an array broadcastable to (K, N) from a transition, or the name of a built-in metric whose increase in a
+#: step every robot of the world gets (``"area_covered"``: a share of the arena's cells newly visited).
+Reward = Callable[[Transition], np.ndarray] | str | None
+#: Which robots' episodes end (True where one does): an array broadcastable to (K, N) of bools.
+Terminate = Callable[[Transition], np.ndarray] | None
+
+
+class VectorEnv:
+    """K copies of the world of an environment file, each with its own seed, stepped together in one JVM (the worlds
+    shared out over its cores): ``reset(seed)`` gives observations (K, N, ...); ``step(actions)`` with actions (K, N,
+    2 + message size) gives observations, rewards (K, N), terminations (K, N), truncations (K, N) and infos. A world
+    whose episode has ended (every robot terminated, or ``max_steps`` actions) begins its next at the following
+    ``step`` (Gymnasium's next-step autoreset: that step's actions for it are not used, its rewards are 0 and
+    ``infos["reset"]`` says which worlds began again). A terminated robot stands still until its world begins again.
+    World w of ``reset(seed=s)`` runs with seed s + w; its later episodes with seeds drawn from (s, w)."""
+
+    def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
+                 message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
+                 terminate: Terminate = None, random_headings: bool = False, threads: int | None = None,
+                 web_port: int | None = None, viewer_port: int | None = None, params: dict[str, str] | None = None,
+                 robosim_home: str | os.PathLike[str] | None = None) -> None:
+        if max_steps < 1:
+            raise ValueError(f"max_steps must be >= 1, got {max_steps}")
+        self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size,
+                                 random_headings=random_headings, threads=threads, web_port=web_port,
+                                 viewer_port=viewer_port, params=params, robosim_home=robosim_home)
+        self.welcome = self.host.welcome
+        if isinstance(reward, str) and reward not in self.welcome.metrics:
+            self.host.close()
+            raise ValueError(f"reward {reward!r} is not a built-in metric ({', '.join(self.welcome.metrics)})")
+        self.layout = Layout(self.welcome, pose)
+        self.agents = list(self.welcome.robots)
+        self.num_worlds = worlds
+        self.max_steps = max_steps
+        self._reward = reward
+        self._terminate = terminate
+        self._observation_spaces = [self.layout.observation_space(i) for i in range(len(self.agents))]
+        self._action_spaces = [self.layout.action_space(i) for i in range(len(self.agents))]
+        n = len(self.agents)
+        self._actions = np.zeros((worlds, n, 2 + message_size), np.float32)
+        self._done = np.zeros((worlds, n), bool)
+        self._any_done = False
+        #: The worlds whose episode has ended: they begin again at the next step.
+        self._ended: list[int] = []
+        self._steps = np.zeros(worlds, np.int64)
+        #: Steps until the first world's truncation (while no robot is done and there is no termination function).
+        self._first_end = max_steps
+        self._generators: list[np.random.Generator] = []
+        self._metrics: np.ndarray | None = None
+        #: Every robot's pose after the last reset or step (K, N, 3): x mm, y mm, heading degrees.
+        self.last_pose = np.zeros((worlds, n, 3), np.float32)
+
+    def observation_space(self, agent: str) -> spaces.Dict:
+        return self._observation_spaces[self.agents.index(agent)]
+
+    def action_space(self, agent: str) -> spaces.Box:
+        return self._action_spaces[self.agents.index(agent)]
+
+    def reset(self, seed: int | None = None) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
+        """Every world begins a new episode (seed None: seeds drawn from the last seeded reset's, or the file's)."""
+        if seed is None:
+            seed = self.welcome.seed if not self._generators else int(self._generators[0].integers(2**62))
+        self._generators = [np.random.default_rng([seed, w]) for w in range(self.num_worlds)]
+        seeds = [seed + w for w in range(self.num_worlds)]
+        batch = self.host.reset(seeds)
+        self._done[:] = False
+        self._any_done = False
+        self._ended = []
+        self._steps[:] = 0
+        self._first_end = self.max_steps
+        self._metrics = batch.metrics.copy()
+        self.last_pose = batch.pose
+        return self.layout.observations(batch), {"seeds": seeds}
+
+    def step(self, actions: np.ndarray) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray, np.ndarray,
+                                                 dict[str, Any]]:
+        """One action of every robot of every world (float32 (K, N, 2 + message size); velocities beyond a robot's
+        limits are held to them)."""
+        if self._metrics is None:
+            raise RuntimeError("reset() before step()")
+        np.copyto(self._actions, actions, casting="same_kind")
+        again = self._ended
+        if self._any_done:
+            self._actions[self._done] = 0.0
+        resets = {w: int(self._generators[w].integers(2**62)) for w in again}
+        batch = self.host.step(self._actions, resets)
+        observations = self.layout.observations(batch)
+        previous = self._metrics
+        metrics = batch.metrics.copy()
+        self._steps += 1
+        self._first_end -= 1
+        if again:
+            previous[again] = metrics[again]
+            self._steps[again] = 0
+            self._done[again] = False
+            self._first_end = self.max_steps - int(self._steps.max())
+        transition = Transition(observations, batch.pose, batch.contact, Metrics(self.welcome.metrics, metrics),
+                                Metrics(self.welcome.metrics, previous), self._actions, self._steps)
+        shape = self._done.shape
+        rewards = self._rewards(transition, shape)
+        ending = self._first_end <= 0 or self._terminate is not None or self._any_done
+        if ending:
+            terminated = np.zeros(shape, bool) if self._terminate is None else np.broadcast_to(
+                np.asarray(self._terminate(transition), bool), shape).copy()
+            terminated &= ~self._done
+            truncated = np.broadcast_to((self._steps >= self.max_steps)[:, None], shape) & ~self._done & ~terminated
+            rewards[self._done] = 0.0
+            if again:
+                rewards[again] = 0.0
+                terminated[again] = False
+                truncated[again] = False
+            self._done |= terminated | truncated
+            self._any_done = bool(self._done.any())
+            self._ended = np.flatnonzero(self._done.all(axis=1)).tolist() if self._any_done else []
+        else:
+            terminated = np.zeros(shape, bool)
+            truncated = np.zeros(shape, bool)
+            if again:
+                rewards[again] = 0.0
+            self._ended = []
+        self._metrics = metrics
+        self.last_pose = batch.pose
+        reset = np.zeros(self.num_worlds, bool)
+        reset[again] = True
+        return observations, rewards, terminated, truncated, {"reset": reset, "metrics": transition.metrics}
+
+    def _rewards(self, transition: Transition, shape: tuple[int, int]) -> np.ndarray:
+        if self._reward is None:
+            return np.zeros(shape, np.float32)
+        if isinstance(self._reward, str):
+            gain = transition.metrics[self._reward] - transition.previous_metrics[self._reward]
+            return np.broadcast_to(gain[:, None], shape).astype(np.float32)
+        return np.broadcast_to(np.asarray(self._reward(transition), np.float32), shape).copy()
+
+    def close(self) -> None:
+        self.host.close()
+
+    def __enter__(self) -> VectorEnv:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def sample_actions(env: VectorEnv, rng: np.random.Generator) -> np.ndarray:
+    """Uniformly random actions for every robot of every world, within each robot's action space."""
+    lows = np.stack([env.action_space(a).low for a in env.agents])
+    highs = np.stack([env.action_space(a).high for a in env.agents])
+    return rng.uniform(lows, highs, size=(env.num_worlds, *lows.shape)).astype(np.float32)
+
+
+__all__ = ["Batch", "Metrics", "Transition", "VectorEnv", "sample_actions"]

@@ -1,0 +1,201 @@
+"""robosim.rl against a real learning host (scripts/learning-host.sh, started by the package): the PettingZoo and
+Gymnasium checkers, the same episode from the same seed in two processes, autoreset, rewards and terminations,
+viewers watching world 0, and the example's two policies."""
+
+from __future__ import annotations
+
+import base64
+import functools
+import json
+import os
+import socket
+import struct
+import subprocess
+import sys
+import time
+import urllib.request
+import warnings
+from pathlib import Path
+
+import numpy as np
+import pytest
+from gymnasium.utils.env_checker import check_env
+from pettingzoo.test import parallel_api_test, parallel_seed_test
+
+from robosim.rl import HostError, ParallelEnv, SingleRobotEnv, Transition, VectorEnv, sample_actions
+
+REPO = Path(__file__).resolve().parents[2]
+#: Two types of robot (an ArRobot, 8 sonars, and a Scout, 16), a box and a rock.
+MIXED = REPO / "test-envs/test.xml"
+DISPERSION = REPO / "examples/python/learning/dispersion.xml"
+#: A generous bound on anything a test waits for (a loaded machine).
+WAIT_S = 120.0
+
+
+def test_a_world_passes_pettingzoos_parallel_api_test() -> None:
+    env = ParallelEnv(MIXED, pose=True, message_size=2, max_steps=40)
+    try:
+        assert env.possible_agents == ["robot1", "robot2"]
+        assert env.observation_space("robot1")["sonar"].shape == (8,)
+        assert env.observation_space("robot2")["sonar"].shape == (16,)
+        assert env.action_space("robot1").high.tolist()[2:] == [1.0, 1.0], "velocities, then the message's numbers"
+        parallel_api_test(env, num_cycles=100)
+    finally:
+        env.close()
+
+
+def test_a_world_passes_pettingzoos_seed_test() -> None:
+    parallel_seed_test(functools.partial(ParallelEnv, DISPERSION, random_headings=True, max_steps=30))
+
+
+def test_one_robot_passes_gymnasiums_env_checker() -> None:
+    env = SingleRobotEnv(DISPERSION, robot="d3", pose=True, max_steps=30, reward="area_covered")
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")  # (its advice: a normalised action space, a spec from gymnasium.make)
+            check_env(env, skip_render_check=True)
+    finally:
+        env.close()
+
+
+def run(seed: int, actions: list[np.ndarray]) -> list[dict[str, np.ndarray]]:
+    with VectorEnv(DISPERSION, worlds=3, repeat=2, pose=True, message_size=1, max_steps=10**6,
+                   random_headings=True) as env:
+        observations, _ = env.reset(seed=seed)
+        seen = [{k: v.copy() for k, v in observations.items()}]
+        for a in actions:
+            observations, *_ = env.step(a)
+            seen.append({k: v.copy() for k, v in observations.items()})
+        return seen
+
+
+def test_the_same_seed_and_actions_give_the_same_episode_in_another_process_and_another_seed_another() -> None:
+    probe = VectorEnv(DISPERSION, worlds=3, message_size=1)
+    rng = np.random.default_rng(4)
+    actions = [sample_actions(probe, rng) for _ in range(60)]
+    probe.close()
+    first, again, other = run(11, actions), run(11, actions), run(12, actions)
+    for step, (a, b) in enumerate(zip(first, again, strict=True)):
+        for part in a:
+            assert np.array_equal(a[part], b[part]), f"step {step}: {part}"
+    assert not np.array_equal(first[0]["pose"], other[0]["pose"]), "another seed, other headings"
+    assert not np.array_equal(first[-1]["pose"][1], first[-1]["pose"][0]), "world 1 has seed 12, world 0 seed 11"
+    assert np.array_equal(first[0]["pose"][1], other[0]["pose"][0]), "world 1 of seed 11 is world 0 of seed 12"
+
+
+def test_a_world_whose_episode_ended_begins_again_at_the_next_step() -> None:
+    with VectorEnv(DISPERSION, worlds=2, max_steps=3, reward="distance_m") as env:
+        start, _ = env.reset(seed=3)
+        forward = np.zeros((2, 6, 2), np.float32)
+        forward[..., 0] = 500
+        total = np.zeros((2, 6))
+        for k in range(3):
+            _, rewards, terminated, truncated, infos = env.step(forward)
+            total += rewards
+            assert not terminated.any()
+            assert truncated.all() == (k == 2)
+        assert np.allclose(total[:, 0], infos["metrics"]["distance_m"]), "the metric's gains add up to it"
+        observations, rewards, terminated, truncated, infos = env.step(forward)
+        assert infos["reset"].tolist() == [True, True]
+        assert not rewards.any() and not truncated.any()
+        assert np.array_equal(observations["sonar"], start["sonar"]), "the file's headings: the same start"
+        _, rewards, *_ = env.step(forward)
+        assert (rewards > 0).all()
+
+
+def test_an_agent_whose_episode_ends_leaves_the_parallel_env() -> None:
+    def out_east(t: Transition) -> np.ndarray:  # a robot that crosses x = 4.7 m is done
+        return t.pose[..., 0] > 4700
+
+    env = ParallelEnv(DISPERSION, terminate=out_east, max_steps=200)
+    try:
+        env.reset(seed=1)
+        east = {a: np.array([800.0, 0.0], np.float32) for a in env.agents}
+        _, _, terminated, _, _ = env.step(east)
+        assert not any(terminated.values())
+        seen: set[str] = set()
+        while env.agents:
+            _, _, terminated, truncated, _ = env.step({a: east[a] for a in env.agents})
+            ended = {a for a in terminated if terminated[a] or truncated[a]}
+            seen |= {a for a, t in terminated.items() if t}
+            assert not ended & set(env.agents), "an agent whose episode ended has left"
+        assert {"d3", "d6"} <= seen, "the two nearest the line end by termination"
+    finally:
+        env.close()
+
+
+def test_bad_choices_are_one_clear_error() -> None:
+    with pytest.raises(ValueError, match="reward 'speed' is not a built-in metric"):
+        VectorEnv(DISPERSION, worlds=1, reward="speed")
+    with pytest.raises(HostError, match="no-such.xml: no such environment file"):
+        ParallelEnv(REPO / "no-such.xml")
+    with pytest.raises(HostError, match="--worlds must be 1 to 1024, got 0"):
+        VectorEnv(DISPERSION, worlds=0)
+
+
+def read_frame(sock: socket.socket) -> bytes:
+    """One frame from a server (unmasked), its payload."""
+    head = sock.recv(2, socket.MSG_WAITALL)
+    length = head[1] & 0x7F
+    if length == 126:
+        length = struct.unpack(">H", sock.recv(2, socket.MSG_WAITALL))[0]
+    elif length == 127:
+        length = struct.unpack(">Q", sock.recv(8, socket.MSG_WAITALL))[0]
+    return sock.recv(length, socket.MSG_WAITALL)
+
+
+def test_viewers_watch_world_0_while_a_learner_steps_it(tmp_path: Path) -> None:
+    env = ParallelEnv(DISPERSION, viewer_port=0, web_port=0, max_steps=10**6)
+    try:
+        env.reset(seed=1)
+        assert env.viewer_port and env.web_port
+        page = urllib.request.urlopen(f"http://127.0.0.1:{env.web_port}/", timeout=WAIT_S).read().decode()
+        assert "<html" in page.lower()
+        web = socket.create_connection(("127.0.0.1", env.web_port), timeout=WAIT_S)
+        key = base64.b64encode(os.urandom(16)).decode()
+        origin = f"http://127.0.0.1:{env.web_port}"
+        web.sendall(f"GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{env.web_port}\r\nUpgrade: websocket\r\n"
+                    f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
+                    f"Origin: {origin}\r\n\r\n".encode())
+        answer = b""
+        while b"\r\n\r\n" not in answer:
+            answer += web.recv(1)
+        assert answer.startswith(b"HTTP/1.1 101"), answer
+        csv = tmp_path / "poses.csv"
+        log = subprocess.Popen(["bash", str(REPO / "scripts/pose-log.sh"), "127.0.0.1", str(env.viewer_port), str(csv)],
+                               stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True)
+        go = {a: np.array([300.0, 20.0], np.float32) for a in env.possible_agents}
+        deadline = time.monotonic() + WAIT_S
+        kinds: set[str] = set()
+        while time.monotonic() < deadline and not ({"snapshot", "update"} <= kinds and csv.exists()
+                                                   and csv.stat().st_size > 2000):
+            env.step(go)
+            web.settimeout(0.05)
+            try:
+                kinds.add(json.loads(read_frame(web))["type"])
+            except (TimeoutError, json.JSONDecodeError):
+                pass
+            web.settimeout(WAIT_S)
+        assert {"snapshot", "update"} <= kinds, kinds
+        web.close()
+    finally:
+        env.close()
+    output, _ = log.communicate(timeout=WAIT_S)
+    assert log.returncode == 0, output
+    rows = csv.read_text().splitlines()
+    assert rows[0].startswith("step,robot,x_m,y_m,heading_deg")
+    assert {row.split(",")[1] for row in rows[1:]} == {"d1", "d2", "d3", "d4", "d5", "d6"}
+
+
+def test_the_examples_hand_written_policy_disperses_better_than_random() -> None:
+    sys.path.insert(0, str(REPO / "examples/python/learning"))
+    try:
+        import dispersion
+    finally:
+        sys.path.pop(0)
+    with VectorEnv(dispersion.WORLD, worlds=4, repeat=dispersion.REPEAT, max_steps=dispersion.EPISODE,
+                   reward=dispersion.reward, random_headings=True) as env:
+        written = dispersion.episodes(env, "hand-written", [1, 2, 3, 4])
+        random = dispersion.episodes(env, "random", [1, 2, 3, 4])
+    assert min(r for r, _, _ in written) > max(r for r, _, _ in random)
+    assert sum(c for _, _, c in written) < sum(c for _, _, c in random)
