@@ -12,7 +12,9 @@
  * worlds): each steps its share of the worlds while {@code main} waits for them, and nothing else</td></tr>
  * <tr><td>{@code rl-deadline}</td><td>a daemon: closes a learner's connection whose hello is late (a deadline)</td></tr>
  * <tr><td>{@code rl-viewer[n]}</td><td>with {@code --viewer-port} or {@code --web-port}: one a viewer, as an
- * Environment's viewer workers (robosim.environment.server), fed world 0 through a bounded queue</td></tr>
+ * Environment's viewer workers (robosim.environment.server), fed world 0 through a bounded queue; with them that
+ * package's {@code accept-viewers} and {@code connection-watch}, and with {@code --web-port} the browser viewer's
+ * {@code web-*} threads (robosim.web)</td></tr>
  * </table>
  */
 package robosim.rl;
