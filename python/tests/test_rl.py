@@ -103,6 +103,21 @@ def test_a_world_whose_episode_ended_begins_again_at_the_next_step() -> None:
         assert (rewards > 0).all()
 
 
+def test_an_episode_metric_is_measured_from_the_episodes_recording_when_it_ends() -> None:
+    with VectorEnv(DISPERSION, worlds=2, max_steps=5, episode_metric="area_covered", random_headings=True) as env:
+        env.reset(seed=8)
+        go = np.zeros((2, 6, 2), np.float32)
+        go[..., 0] = 900
+        for k in range(5):
+            _, rewards, _, truncated, infos = env.step(go)
+            assert np.isnan(infos["episode_metric"]).all() == (k < 4)
+        assert truncated.all()
+        assert np.array_equal(infos["episode_metric"], infos["metrics"]["area_covered"]), "as the live metric"
+        assert np.array_equal(rewards, np.repeat(infos["episode_metric"][:, None], 6, axis=1).astype(np.float32))
+    with pytest.raises(HostError, match="--episode-metric no.such.Metric: class no.such.Metric is not a"):
+        VectorEnv(DISPERSION, worlds=1, episode_metric="no.such.Metric")
+
+
 def test_an_agent_whose_episode_ends_leaves_the_parallel_env() -> None:
     def out_east(t: Transition) -> np.ndarray:  # a robot that crosses x = 4.7 m is done
         return t.pose[..., 0] > 4700

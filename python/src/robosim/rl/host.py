@@ -52,6 +52,7 @@ class Welcome:
     metrics: list[str]
     arena_mm: list[float]
     seed: int
+    episode_metric: str | None
 
 
 @dataclass(frozen=True)
@@ -90,7 +91,7 @@ class LearningHost:
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 1, repeat: int = 1, message_size: int = 0,
                  random_headings: bool = False, area_cell_m: float | None = None, threads: int | None = None,
-                 web_port: int | None = None, viewer_port: int | None = None,
+                 episode_metric: str | None = None, web_port: int | None = None, viewer_port: int | None = None,
                  params: dict[str, str] | None = None, robosim_home: str | os.PathLike[str] | None = None) -> None:
         file = Path(path)
         if not file.is_file():
@@ -104,6 +105,8 @@ class LearningHost:
             command += ["--area-cell-m", str(area_cell_m)]
         if threads is not None:
             command += ["--threads", str(threads)]
+        if episode_metric is not None:
+            command += ["--episode-metric", episode_metric]
         if web_port is not None:
             command += ["--web-port", str(web_port)]
         if viewer_port is not None:
@@ -218,6 +221,20 @@ class LearningHost:
             raise ValueError(f"actions of shape {actions.shape}; this batch takes {self._action_shape}")
         data = actions.astype("<f4", copy=False).tobytes()
         return self._call(["step", data, {int(w): int(s) for w, s in resets.items()} if resets else None])
+
+    def measure(self, worlds: list[int]) -> list[float]:
+        """The episode metric (``episode_metric``) over each of ``worlds``' episodes so far, from their recordings."""
+        if self._closed:
+            raise HostError("the learning host is closed")
+        try:
+            self._frames.send(["measure", [int(w) for w in worlds]])
+        except OSError as e:
+            self._stop()
+            raise HostError(f"the learning link broke ({e}){self._said()}") from e
+        answer = self._receive()
+        if not isinstance(answer, list) or not answer or answer[0] != "ok" or len(answer[1]) != len(worlds):
+            raise HostError(f"the learning host refused measure: {answer[2] if len(answer) > 2 else answer}")
+        return [float(v) for v in answer[1]]
 
     def close(self) -> None:
         """Says bye and waits for the host to exit."""

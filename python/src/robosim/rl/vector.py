@@ -64,18 +64,22 @@ class VectorEnv:
     whose episode has ended (every robot terminated, or ``max_steps`` actions) begins its next at the following
     ``step`` (Gymnasium's next-step autoreset: that step's actions for it are not used, its rewards are 0 and
     ``infos["reset"]`` says which worlds began again). A terminated robot stands still until its world begins again.
+    With ``episode_metric`` (a built-in metric's name or a ``robosim.sweep.Metric`` class on the host's class path),
+    a world whose episode ends is measured from its episode's recording, as a sweep measures a run, and the value is
+    added to the last reward of each robot that ends with it (``infos["episode_metric"]``: (K,), NaN for the other
+    worlds); one more exchange with the host an episode end.
     World w of ``reset(seed=s)`` runs with seed s + w; its later episodes with seeds drawn from (s, w)."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
                  message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
-                 terminate: Terminate = None, random_headings: bool = False, threads: int | None = None,
-                 web_port: int | None = None, viewer_port: int | None = None, params: dict[str, str] | None = None,
-                 robosim_home: str | os.PathLike[str] | None = None) -> None:
+                 terminate: Terminate = None, episode_metric: str | None = None, random_headings: bool = False,
+                 threads: int | None = None, web_port: int | None = None, viewer_port: int | None = None,
+                 params: dict[str, str] | None = None, robosim_home: str | os.PathLike[str] | None = None) -> None:
         if max_steps < 1:
             raise ValueError(f"max_steps must be >= 1, got {max_steps}")
         self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size,
-                                 random_headings=random_headings, threads=threads, web_port=web_port,
-                                 viewer_port=viewer_port, params=params, robosim_home=robosim_home)
+                                 random_headings=random_headings, threads=threads, episode_metric=episode_metric,
+                                 web_port=web_port, viewer_port=viewer_port, params=params, robosim_home=robosim_home)
         self.welcome = self.host.welcome
         if isinstance(reward, str) and reward not in self.welcome.metrics:
             self.host.close()
@@ -150,8 +154,8 @@ class VectorEnv:
                                 Metrics(self.welcome.metrics, previous), self._actions, self._steps)
         shape = self._done.shape
         rewards = self._rewards(transition, shape)
-        ending = self._first_end <= 0 or self._terminate is not None or self._any_done
-        if ending:
+        measured: np.ndarray | None = None
+        if self._first_end <= 0 or self._terminate is not None or self._any_done:
             terminated = np.zeros(shape, bool) if self._terminate is None else np.broadcast_to(
                 np.asarray(self._terminate(transition), bool), shape).copy()
             terminated &= ~self._done
@@ -164,6 +168,12 @@ class VectorEnv:
             self._done |= terminated | truncated
             self._any_done = bool(self._done.any())
             self._ended = np.flatnonzero(self._done.all(axis=1)).tolist() if self._any_done else []
+            if self._ended and self.welcome.episode_metric is not None:
+                values = self.host.measure(self._ended)
+                measured = np.full(self.num_worlds, np.nan)
+                measured[self._ended] = values
+                last = terminated | truncated
+                rewards[self._ended] += np.where(last[self._ended], np.asarray(values, np.float32)[:, None], 0.0)
         else:
             terminated = np.zeros(shape, bool)
             truncated = np.zeros(shape, bool)
@@ -174,7 +184,10 @@ class VectorEnv:
         self.last_pose = batch.pose
         reset = np.zeros(self.num_worlds, bool)
         reset[again] = True
-        return observations, rewards, terminated, truncated, {"reset": reset, "metrics": transition.metrics}
+        infos = {"reset": reset, "metrics": transition.metrics}
+        if self.welcome.episode_metric is not None:
+            infos["episode_metric"] = measured if measured is not None else np.full(self.num_worlds, np.nan)
+        return observations, rewards, terminated, truncated, infos
 
     def _rewards(self, transition: Transition, shape: tuple[int, int]) -> np.ndarray:
         if self._reward is None:

@@ -37,6 +37,8 @@ import robosim.protocol.SonarSpec;
  * actions are not read). Reply {@code ["ok", BATCH]};
  * <li>{@code ["reset", SEEDS]}: SEEDS an array, one per world, a seed or nil (that world goes on). Reply
  * {@code ["ok", BATCH]};
+ * <li>{@code ["measure", [WORLD, ...]]}: with an episode metric ({@code --episode-metric}), its value over each
+ * world's episode so far, from the episode's recording. Reply {@code ["ok", [VALUE, ...]]};
  * <li>{@code ["bye"]}: reply {@code ["ok"]}, and the link ends.
  * </ul>
  * BATCH is a map of binaries, each a little-endian array (shapes in the welcome): {@code steps} (int64), {@code sonar},
@@ -153,7 +155,7 @@ public final class BatchLink {
     private byte[] welcomeFrame() throws IOException {
         MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
         List<RobotProperties> properties = batch.properties();
-        p.packMapHeader(17);
+        p.packMapHeader(18);
         p.packString("link").packString(NAME);
         p.packString("version").packInt(VERSION);
         p.packString("world").packString(batch.spec().name());
@@ -191,6 +193,11 @@ public final class BatchLink {
                 .packDouble(batch.spec().arena().minYMm()).packDouble(batch.spec().arena().maxXMm())
                 .packDouble(batch.spec().arena().maxYMm());
         p.packString("seed").packLong(batch.spec().seed());
+        if (batch.episodeMetric() == null) {
+            p.packString("episode_metric").packNil();
+        } else {
+            p.packString("episode_metric").packString(batch.episodeMetric().name());
+        }
         return p.toByteArray();
     }
 
@@ -218,13 +225,17 @@ public final class BatchLink {
                         readSeeds(u);
                         step();
                     }
+                    case "measure" -> {
+                        expectArguments(u, 1, call);
+                        measure(u);
+                    }
                     case "bye" -> {
                         expectArguments(u, 0, call);
                         reply.packArrayHeader(1).packString("ok");
                         bye = true;
                     }
                     default -> throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40)
-                            + "\" (step, reset, bye)");
+                            + "\" (step, reset, measure, bye)");
                 }
             } catch (BadCall e) {
                 reply.clear();
@@ -339,6 +350,36 @@ public final class BatchLink {
             return u.unpackLong();
         } catch (MessagePackException e) {
             throw new BadCall("value", "a seed is a signed 64-bit number");
+        }
+    }
+
+    private void measure(MessageUnpacker u) throws IOException {
+        if (batch.episodeMetric() == null) {
+            throw new BadCall("bad_call", "this host measures no episode metric (--episode-metric)");
+        }
+        if (u.getNextFormat().getValueType() != ValueType.ARRAY) {
+            throw new BadCall("value", "measure takes an array of worlds");
+        }
+        int n = u.unpackArrayHeader();
+        if (n > batch.count()) {
+            throw new BadCall("value", n + " worlds to measure of " + batch.count());
+        }
+        int[] which = new int[n];
+        for (int i = 0; i < n; i++) {
+            which[i] = world(u);
+        }
+        double[] values = new double[n];
+        for (int i = 0; i < n; i++) {
+            try {
+                values[i] = batch.measure(which[i]);
+            } catch (IOException | RuntimeException e) { // (a metric class of one's own may throw anything)
+                throw new BadCall("value", "metric " + batch.episodeMetric().name() + " of world " + which[i] + ": "
+                        + oneLine(e.toString()));
+            }
+        }
+        reply.packArrayHeader(2).packString("ok").packArrayHeader(n);
+        for (double v : values) {
+            reply.packDouble(v);
         }
     }
 

@@ -1,5 +1,6 @@
 package robosim.rl;
 
+import java.io.IOException;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.nio.ByteOrder;
@@ -13,7 +14,6 @@ import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.CommEvent;
-import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.StepRequest;
@@ -26,7 +26,8 @@ import robosim.sweep.RunTally;
  * file, stepped inline (no threads, no links), its robots' requests made from an action each (a linear and a
  * rotational velocity, perhaps a message), and what the robots sensed written into the batch's arrays. Its episode
  * starts at {@link #reset}: a new world from the file with the episode's seed (and, if asked, headings drawn from
- * it), one step of standing still that reads the sonars, and a {@link RunTally} of the built-in metrics. Not
+ * it), one step of standing still that reads the sonars, a {@link RunTally} of the built-in metrics, and, if the
+ * batch measures a metric of each episode, the episode's {@link EpisodeRecording}. Not
  * thread-safe: one caller at a time (the batch hands each world to one thread a step).
  */
 final class BatchWorld {
@@ -44,6 +45,9 @@ final class BatchWorld {
     private final StepRequest[] requests;
     private final StepRequest[] lastRequests;
     private final boolean[] touched;
+    /** Null unless the batch measures a metric of each episode's recording. */
+    private final EpisodeRecording recording;
+    private final StepResponse[] responses;
     private SimulationCore core;
     private InProcessGeometry geometry;
     private RunTally tally;
@@ -64,13 +68,16 @@ final class BatchWorld {
         this.requests = new StepRequest[robots];
         this.lastRequests = new StepRequest[robots];
         this.touched = new boolean[robots];
+        this.responses = new StepResponse[robots];
+        this.recording = batch.episodeMetric() == null ? null
+                : new EpisodeRecording(batch.recordings(), index, batch.episodeMetric(), batch.areaCellM());
     }
 
     /**
      * A new episode: the world of the file with {@code seed} (robots' headings drawn from it if the batch says so),
      * then one step of standing still, whose readings are the episode's first observation.
      */
-    void reset(long seed) throws ProtocolException {
+    void reset(long seed) throws IOException {
         WorldSpec spec = batch.spec().withSeed(seed);
         if (batch.randomHeadings()) {
             SplittableRandom random = new SplittableRandom(seed);
@@ -97,6 +104,9 @@ final class BatchWorld {
         for (int i = 0; i < robots; i++) {
             requests[i] = new StepRequest(step, 0, 0, true, List.of());
         }
+        if (recording != null) {
+            recording.begin(core.map().snapshot(-1));
+        }
         advance();
         write();
     }
@@ -107,7 +117,7 @@ final class BatchWorld {
      * repeat of time steps (the message goes out in the first, the sonars are read in the last), and writes what
      * the robots sensed.
      */
-    void act(float[] actions, int offset) throws ProtocolException {
+    void act(float[] actions, int offset) throws IOException {
         int fields = batch.actionFields();
         int repeat = batch.repeat();
         Arrays.fill(touched, false);
@@ -130,9 +140,15 @@ final class BatchWorld {
     }
 
     /** One time step of the requests in hand: the core and Geometry, then the tally and the messages heard. */
-    private void advance() throws ProtocolException {
+    private void advance() throws IOException {
         core.complete(geometry.resolve(core.prepare(step, requests)));
         System.arraycopy(requests, 0, lastRequests, 0, robots);
+        if (recording != null) {
+            for (int i = 0; i < robots; i++) {
+                responses[i] = core.response(i);
+            }
+            recording.step(core.viewerUpdate(), requests, responses);
+        }
         for (int i = 0; i < robots; i++) {
             StepResponse response = core.response(i);
             boolean contact = !response.contact().isEmpty();
@@ -209,6 +225,17 @@ final class BatchWorld {
     /** Robot {@code robot}'s view of the last step, for a viewer that watches it. */
     RobotView view(int robot) {
         return RobotView.of(step - 1, robot, names[robot], lastRequests[robot], core.response(robot));
+    }
+
+    /** The batch's episode metric over this world's episode so far (the batch measures one). */
+    double measure() throws IOException {
+        return recording.measure();
+    }
+
+    void close() throws IOException {
+        if (recording != null) {
+            recording.close();
+        }
     }
 
     int robot(String name) {

@@ -1,5 +1,8 @@
 package robosim.rl;
 
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ExecutionException;
@@ -8,9 +11,9 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 import java.util.concurrent.atomic.AtomicInteger;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
+import robosim.sweep.MetricChoice;
 import robosim.sweep.RunMetrics;
 
 /**
@@ -32,10 +35,8 @@ public final class BatchWorlds implements AutoCloseable {
     private final int robots;
     private final int sonars;
     private final double[] sonarMaxMm;
-    private final int repeat;
-    private final int messageSize;
-    private final boolean randomHeadings;
-    private final double areaCellM;
+    private final Settings settings;
+    private final Path recordings;
     private final BatchWorld[] worlds;
     private final int threads;
     private final ExecutorService helpers;
@@ -48,13 +49,25 @@ public final class BatchWorlds implements AutoCloseable {
     private final byte[] steps;
 
     /**
-     * {@code count} worlds of {@code spec}, each action held {@code repeat} time steps, messages of
-     * {@code messageSize} numbers (0: none), headings drawn from each episode's seed if {@code randomHeadings}, the
-     * area metric's cells of {@code areaCellM} m, stepped on {@code threads} threads. Every world starts with
-     * seed {@code spec.seed() + w}.
+     * How a batch's worlds are stepped and what they tell.
+     *
+     * @param repeat time steps an action is held
+     * @param messageSize numbers in a robot's message (0: none)
+     * @param randomHeadings the robots' start headings drawn from each episode's seed
+     * @param areaCellM the side of {@code area_covered}'s cells, m
+     * @param threads threads that step the worlds (at most the worlds)
+     * @param episodeMetric a metric of each episode's recording ({@link #measure}), or null
      */
-    public BatchWorlds(WorldSpec spec, int count, int repeat, int messageSize, boolean randomHeadings, double areaCellM,
-            int threads) throws ProtocolException {
+    public record Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
+            MetricChoice episodeMetric) {
+        /** Without an episode metric. */
+        public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads) {
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, null);
+        }
+    }
+
+    /** {@code count} worlds of {@code spec}, as {@code settings} says. Every world starts with seed {@code spec.seed() + w}. */
+    public BatchWorlds(WorldSpec spec, int count, Settings settings) throws IOException {
         this.spec = spec;
         List<RobotProperties> p = new ArrayList<>();
         int most = 0;
@@ -68,17 +81,16 @@ public final class BatchWorlds implements AutoCloseable {
         this.sonars = most;
         this.sonarMaxMm = p.stream().mapToDouble(r -> r.sonars().stream().mapToDouble(s -> s.maxRangeMm()).max()
                 .orElse(0)).toArray();
-        this.repeat = repeat;
-        this.messageSize = messageSize;
-        this.randomHeadings = randomHeadings;
-        this.areaCellM = areaCellM;
+        this.settings = settings;
+        int messageSize = settings.messageSize();
+        this.recordings = settings.episodeMetric() == null ? null : Files.createTempDirectory("robosim-episodes-");
         this.sonar = new byte[count * robots * sonars * 4];
         this.pose = new byte[count * robots * 3 * 4];
         this.contact = new byte[count * robots];
         this.messages = new byte[count * robots * robots * messageSize * 4];
         this.metrics = new byte[count * METRICS.size() * 8];
         this.steps = new byte[count * 8];
-        this.threads = Math.max(1, Math.min(threads, count));
+        this.threads = Math.max(1, Math.min(settings.threads(), count));
         AtomicInteger made = new AtomicInteger();
         this.helpers = this.threads == 1 ? null : Executors.newFixedThreadPool(this.threads - 1, r -> {
             Thread t = new Thread(r, "rl-worlds[" + made.incrementAndGet() + "]");
@@ -95,7 +107,12 @@ public final class BatchWorlds implements AutoCloseable {
             seeds[w] = spec.seed() + w;
             all[w] = true;
         }
-        step(null, all, seeds);
+        try {
+            step(null, all, seeds);
+        } catch (IOException | RuntimeException e) {
+            close();
+            throw e;
+        }
     }
 
     /**
@@ -103,7 +120,7 @@ public final class BatchWorlds implements AutoCloseable {
      * applies its robots' actions ({@code actions}: world by world, robot by robot, {@link #actionFields()} each,
      * already checked: finite, velocities within {@link #limits}).
      */
-    public void step(float[] actions, boolean[] reset, long[] seeds) throws ProtocolException {
+    public void step(float[] actions, boolean[] reset, long[] seeds) throws IOException {
         List<Future<?>> others = new ArrayList<>(threads - 1);
         for (int t = 1; t < threads; t++) {
             int share = t;
@@ -117,7 +134,7 @@ public final class BatchWorlds implements AutoCloseable {
             synchronized (watchLock) { // (world 0 is in this share: a viewer that joins sees it between steps)
                 stepShare(0, actions, reset, seeds);
             }
-        } catch (ProtocolException | RuntimeException e) {
+        } catch (IOException | RuntimeException e) {
             failed = e;
         }
         for (Future<?> f : others) {
@@ -130,15 +147,15 @@ public final class BatchWorlds implements AutoCloseable {
                 failed = failed == null ? e : failed;
             }
         }
-        if (failed instanceof ProtocolException p) {
-            throw p;
+        if (failed instanceof IOException e) { // (a ProtocolException among them)
+            throw e;
         }
         if (failed != null) {
             throw new IllegalStateException("a world's step failed: " + failed, failed);
         }
     }
 
-    private void stepShare(int share, float[] actions, boolean[] reset, long[] seeds) throws ProtocolException {
+    private void stepShare(int share, float[] actions, boolean[] reset, long[] seeds) throws IOException {
         for (int w = share; w < worlds.length; w += threads) {
             if (reset[w]) {
                 worlds[w].reset(seeds[w]);
@@ -186,7 +203,7 @@ public final class BatchWorlds implements AutoCloseable {
     }
 
     public int actionFields() {
-        return VELOCITIES + messageSize;
+        return VELOCITIES + settings.messageSize();
     }
 
     public WorldSpec spec() {
@@ -198,19 +215,42 @@ public final class BatchWorlds implements AutoCloseable {
     }
 
     public int repeat() {
-        return repeat;
+        return settings.repeat();
     }
 
     public int messageSize() {
-        return messageSize;
+        return settings.messageSize();
     }
 
     boolean randomHeadings() {
-        return randomHeadings;
+        return settings.randomHeadings();
     }
 
     double areaCellM() {
-        return areaCellM;
+        return settings.areaCellM();
+    }
+
+    /** The metric of each episode's recording, or null. */
+    public MetricChoice episodeMetric() {
+        return settings.episodeMetric();
+    }
+
+    /** Where the episodes are recorded (with an episode metric). */
+    Path recordings() {
+        return recordings;
+    }
+
+    /**
+     * The episode metric over world {@code w}'s episode so far, computed from its recording as a sweep measures a
+     * run (the caller steps no world meanwhile).
+     *
+     * @throws IllegalStateException if the batch measures no metric
+     */
+    public double measure(int w) throws IOException {
+        if (settings.episodeMetric() == null) {
+            throw new IllegalStateException("no episode metric");
+        }
+        return worlds[w].measure();
     }
 
     /** float32 [worlds][robots][sonars], mm. */
@@ -244,9 +284,22 @@ public final class BatchWorlds implements AutoCloseable {
     }
 
     @Override
-    public void close() {
+    public void close() throws IOException {
         if (helpers != null) {
             helpers.shutdownNow();
+        }
+        for (BatchWorld w : worlds) {
+            if (w != null) {
+                w.close();
+            }
+        }
+        if (recordings != null) {
+            try (java.util.stream.Stream<Path> files = Files.list(recordings)) {
+                for (Path f : files.toList()) {
+                    Files.deleteIfExists(f);
+                }
+            }
+            Files.deleteIfExists(recordings);
         }
     }
 }

@@ -34,6 +34,7 @@ import robosim.protocol.ObjectConnection;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotModels;
+import robosim.sweep.MetricChoice;
 import robosim.sweep.RunMetrics;
 import robosim.web.WebViewerServer;
 
@@ -81,6 +82,11 @@ public final class LearningHostMain implements Callable<Integer> {
             description = "The side of area_covered's cells, m (default: ${DEFAULT-VALUE}).")
     double areaCellM;
 
+    @Option(names = "--episode-metric", paramLabel = "NAME", description = "Record each world's episodes and compute "
+            + "this metric of them when the learner asks (measure): a built-in metric's name or a robosim.sweep.Metric "
+            + "class on the class path, as a sweep's (default: none).")
+    String episodeMetric;
+
     @Option(names = "--threads", description = "Threads that step the worlds (default: the machine's cores).")
     Integer threads;
 
@@ -121,7 +127,9 @@ public final class LearningHostMain implements Callable<Integer> {
             t.setDaemon(true);
             return t;
         });
-        try (BatchWorlds batch = new BatchWorlds(spec, worlds, repeat, messageSize, randomHeadings, areaCellM, shares);
+        MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
+        try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
+                randomHeadings, areaCellM, shares, metric));
                 ServerSocket server = new ServerSocket()) {
             server.bind(new InetSocketAddress(loopback, port), 1);
             WatchedWorld watch = viewerPort >= 0 || webPort >= 0 ? new WatchedWorld(batch) : null;
@@ -163,6 +171,9 @@ public final class LearningHostMain implements Callable<Integer> {
         } catch (ProtocolException e) {
             System.err.println("learning-host: " + env + ": " + e.getMessage());
             return 2;
+        } catch (IOException e) {
+            System.err.println("learning-host: " + Printable.of(String.valueOf(e.getMessage()), 1000));
+            return 1;
         } finally {
             deadlines.shutdownNow();
         }
@@ -237,6 +248,14 @@ public final class LearningHostMain implements Callable<Integer> {
             int v = Integer.parseInt(p[1]);
             if (v < (p[0].equals("--port") ? 0 : -1) || v > 65535) {
                 return p[0] + " must be " + (p[0].equals("--port") ? "0" : "-1") + " to 65535, got " + v;
+            }
+        }
+        if (episodeMetric != null) {
+            MetricChoice metric = MetricChoice.parse(episodeMetric);
+            String wrong = metric.kind() == MetricChoice.Kind.REPORT
+                    ? "a report of control code (learning robots run none)" : metric.problem();
+            if (wrong != null) {
+                return "--episode-metric " + Printable.of(episodeMetric, 200) + ": " + wrong;
             }
         }
         if (acceptTimeoutS < 1) {

@@ -34,7 +34,7 @@ class BatchLinkTest {
 
     @BeforeEach
     void start() throws Exception {
-        batch = new BatchWorlds(BatchWorldsTest.world(), 2, 1, 0, false, 0.5, 2);
+        batch = new BatchWorlds(BatchWorldsTest.world(), 2, new BatchWorlds.Settings(1, 0, false, 0.5, 2));
         server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
     }
 
@@ -109,7 +109,11 @@ class BatchLinkTest {
             send(out, "step", nan, null);
             assertEquals("[\"error\",\"value\",\"world 0, robot c: action field 1 is NaN\"]", receive(in).toJson());
             send(out, "jump");
-            assertEquals("[\"error\",\"bad_call\",\"no call \\\"jump\\\" (step, reset, bye)\"]", receive(in).toJson());
+            assertEquals("[\"error\",\"bad_call\",\"no call \\\"jump\\\" (step, reset, measure, bye)\"]",
+                    receive(in).toJson());
+            send(out, "measure", org.msgpack.value.ValueFactory.newArray(org.msgpack.value.ValueFactory.newInteger(0)));
+            assertEquals("[\"error\",\"bad_call\",\"this host measures no episode metric (--episode-metric)\"]",
+                    receive(in).toJson());
             send(out, "reset", org.msgpack.value.ValueFactory.newArray(org.msgpack.value.ValueFactory.newNil()));
             assertEquals("[\"error\",\"value\",\"1 seeds for 2 worlds\"]", receive(in).toJson());
             send(out, "reset", org.msgpack.value.ValueFactory.newArray(org.msgpack.value.ValueFactory.newNil(),

@@ -49,9 +49,9 @@ class BatchWorldsTest {
     @Test
     void theSameSeedsAndActionsGiveTheSameArraysBitForBitOnOneThreadOrTwo() throws Exception {
         WorldSpec spec = world();
-        try (BatchWorlds one = new BatchWorlds(spec, 3, 2, 2, true, 0.5, 1);
-                BatchWorlds two = new BatchWorlds(spec, 3, 2, 2, true, 0.5, 2);
-                BatchWorlds other = new BatchWorlds(spec.withSeed(6), 3, 2, 2, true, 0.5, 2)) {
+        try (BatchWorlds one = new BatchWorlds(spec, 3, new BatchWorlds.Settings(2, 2, true, 0.5, 1));
+                BatchWorlds two = new BatchWorlds(spec, 3, new BatchWorlds.Settings(2, 2, true, 0.5, 2));
+                BatchWorlds other = new BatchWorlds(spec.withSeed(6), 3, new BatchWorlds.Settings(2, 2, true, 0.5, 2))) {
             SplittableRandom r1 = new SplittableRandom(9);
             SplittableRandom r2 = new SplittableRandom(9);
             boolean[] none = new boolean[3];
@@ -70,7 +70,7 @@ class BatchWorldsTest {
 
     @Test
     void anActionIsAVelocityHeldForTheRepeatAndTheSonarsOfEachTypeFillTheirRow() throws Exception {
-        try (BatchWorlds b = new BatchWorlds(world(), 1, 5, 0, false, 0.5, 1)) {
+        try (BatchWorlds b = new BatchWorlds(world(), 1, new BatchWorlds.Settings(5, 0, false, 0.5, 1))) {
             assertEquals(16, b.sonars(), "the most sonars of a robot of the world (a Scout's)");
             float[] a = new float[3 * 2];
             a[2] = 400; // b: 400 mm/s ahead (north, heading 90)
@@ -92,7 +92,7 @@ class BatchWorldsTest {
 
     @Test
     void aMessageGoesToEveryRobotInRangeAndIsReadBackExactly() throws Exception {
-        try (BatchWorlds b = new BatchWorlds(world(), 2, 1, 2, false, 0.5, 2)) {
+        try (BatchWorlds b = new BatchWorlds(world(), 2, new BatchWorlds.Settings(1, 2, false, 0.5, 2))) {
             float[] a = new float[2 * 3 * 4];
             a[1 * 4 + 2] = 1.5f; // world 0, robot b's message
             a[1 * 4 + 3] = -0.25f;
@@ -116,7 +116,7 @@ class BatchWorldsTest {
 
     @Test
     void aWorldThatIsResetBeginsAgainWhileTheOthersGoOn() throws Exception {
-        try (BatchWorlds b = new BatchWorlds(world(), 2, 1, 0, false, 0.5, 2)) {
+        try (BatchWorlds b = new BatchWorlds(world(), 2, new BatchWorlds.Settings(1, 0, false, 0.5, 2))) {
             float[] a = new float[2 * 3 * 2];
             Arrays.fill(a, 200);
             for (int k = 0; k < 10; k++) {
@@ -128,6 +128,34 @@ class BatchWorldsTest {
             assertEquals(1000f, (float) FLOAT.get(b.pose(), 3 * 12), "world 1's a at its start again");
             assertEquals(0.0, (double) DOUBLE.get(b.metrics(), 6 * 8), "world 1's distance from its new start");
             assertTrue((double) DOUBLE.get(b.metrics(), 0) > 0);
+        }
+    }
+
+    @Test
+    void anEpisodeMetricIsComputedFromTheEpisodesRecordingAsASweepWould() throws Exception {
+        for (String name : new String[] {"distance_m", "robosim.sweep.MeanFinalX"}) {
+            try (BatchWorlds b = new BatchWorlds(world(), 2, new BatchWorlds.Settings(3, 0, false, 0.5, 2,
+                    robosim.sweep.MetricChoice.parse(name)))) {
+                float[] a = new float[2 * 3 * 2];
+                SplittableRandom random = new SplittableRandom(2);
+                for (int k = 0; k < 40; k++) {
+                    for (int i = 0; i < a.length; i++) {
+                        a[i] = (float) random.nextDouble(-200, 600);
+                    }
+                    b.step(a, new boolean[2], new long[2]);
+                    if (k == 20) {
+                        b.step(a, new boolean[] {false, true}, new long[] {0, 7});
+                    }
+                }
+                for (int w = 0; w < 2; w++) {
+                    double meanX = 0;
+                    for (int i = 0; i < 3; i++) {
+                        meanX += (float) FLOAT.get(b.pose(), (w * 3 + i) * 12) / 3000.0;
+                    }
+                    double expected = name.equals("distance_m") ? (double) DOUBLE.get(b.metrics(), w * 6 * 8) : meanX;
+                    assertEquals(expected, b.measure(w), name.equals("distance_m") ? 0 : 1e-6, name + ", world " + w);
+                }
+            }
         }
     }
 }
