@@ -21,7 +21,7 @@ public class LearningEngine {
         long steps = Long.parseLong(args[2]);
         long warm = args.length > 3 ? Long.parseLong(args[3]) : 500;
         int threads = args.length > 4 ? Integer.parseInt(args[4]) : Runtime.getRuntime().availableProcessors();
-        try (BatchWorlds batch = new BatchWorlds(spec, worlds, 1, 0, false, 0.5, threads)) {
+        try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(1, 0, false, 0.5, threads))) {
             int n = batch.robots();
             double[][] limits = batch.limits();
             float[] actions = new float[worlds * n * 2];
