@@ -8,6 +8,7 @@ import base64
 import functools
 import json
 import os
+import select
 import socket
 import struct
 import subprocess
@@ -95,8 +96,10 @@ def test_a_world_whose_episode_ended_begins_again_at_the_next_step() -> None:
             assert not terminated.any()
             assert truncated.all() == (k == 2)
         assert np.allclose(total[:, 0], infos["metrics"]["distance_m"]), "the metric's gains add up to it"
+        assert infos["active"].all(), "the last step is still one of the episode's"
         observations, rewards, terminated, truncated, infos = env.step(forward)
         assert infos["reset"].tolist() == [True, True]
+        assert not infos["active"].any(), "a step that begins an episode is none of a robot's"
         assert not rewards.any() and not truncated.any()
         assert np.array_equal(observations["sonar"], start["sonar"]), "the file's headings: the same start"
         _, rewards, *_ = env.step(forward)
@@ -148,53 +151,62 @@ def test_bad_choices_are_one_clear_error() -> None:
         VectorEnv(DISPERSION, worlds=0)
 
 
-def read_frame(sock: socket.socket) -> bytes:
-    """One frame from a server (unmasked), its payload."""
-    head = sock.recv(2, socket.MSG_WAITALL)
+def read_exact(sock: socket.socket, n: int, deadline: float) -> bytes:
+    """``n`` bytes, however the server's writes split them, by ``deadline``; its end is an assertion."""
+    data = b""
+    while len(data) < n:
+        sock.settimeout(max(0.01, deadline - time.monotonic()))
+        chunk = sock.recv(n - len(data))
+        assert chunk, "the web viewer closed the WebSocket"
+        data += chunk
+    return data
+
+
+def read_frame(sock: socket.socket, deadline: float) -> tuple[int, bytes]:
+    """One whole frame from the server (unmasked): its opcode and payload."""
+    head = read_exact(sock, 2, deadline)
     length = head[1] & 0x7F
     if length == 126:
-        length = struct.unpack(">H", sock.recv(2, socket.MSG_WAITALL))[0]
+        length = struct.unpack(">H", read_exact(sock, 2, deadline))[0]
     elif length == 127:
-        length = struct.unpack(">Q", sock.recv(8, socket.MSG_WAITALL))[0]
-    return sock.recv(length, socket.MSG_WAITALL)
+        length = struct.unpack(">Q", read_exact(sock, 8, deadline))[0]
+    return head[0] & 0x0F, read_exact(sock, length, deadline)
 
 
 def test_viewers_watch_world_0_while_a_learner_steps_it(tmp_path: Path) -> None:
     env = ParallelEnv(DISPERSION, viewer_port=0, web_port=0, max_steps=10**6)
+    log: subprocess.Popen[str] | None = None
     try:
         env.reset(seed=1)
         assert env.viewer_port and env.web_port
         page = urllib.request.urlopen(f"http://127.0.0.1:{env.web_port}/", timeout=WAIT_S).read().decode()
         assert "<html" in page.lower()
+        deadline = time.monotonic() + WAIT_S
         web = socket.create_connection(("127.0.0.1", env.web_port), timeout=WAIT_S)
         key = base64.b64encode(os.urandom(16)).decode()
-        origin = f"http://127.0.0.1:{env.web_port}"
         web.sendall(f"GET /ws HTTP/1.1\r\nHost: 127.0.0.1:{env.web_port}\r\nUpgrade: websocket\r\n"
                     f"Connection: Upgrade\r\nSec-WebSocket-Key: {key}\r\nSec-WebSocket-Version: 13\r\n"
-                    f"Origin: {origin}\r\n\r\n".encode())
+                    f"Origin: http://127.0.0.1:{env.web_port}\r\n\r\n".encode())
         answer = b""
         while b"\r\n\r\n" not in answer:
-            answer += web.recv(1)
+            answer += read_exact(web, 1, deadline)
         assert answer.startswith(b"HTTP/1.1 101"), answer
         csv = tmp_path / "poses.csv"
         log = subprocess.Popen(["bash", str(REPO / "scripts/pose-log.sh"), "127.0.0.1", str(env.viewer_port), str(csv)],
                                stdout=subprocess.PIPE, stderr=subprocess.STDOUT, stdin=subprocess.DEVNULL, text=True)
         go = {a: np.array([300.0, 20.0], np.float32) for a in env.possible_agents}
-        deadline = time.monotonic() + WAIT_S
         kinds: set[str] = set()
-        while time.monotonic() < deadline and not ({"snapshot", "update"} <= kinds and csv.exists()
-                                                   and csv.stat().st_size > 2000):
+        while not ({"snapshot", "update"} <= kinds and csv.exists() and csv.stat().st_size > 2000):
+            assert time.monotonic() < deadline, f"within {WAIT_S} s: frames {kinds}, the CSV's {csv.exists()}"
             env.step(go)
-            web.settimeout(0.05)
-            try:
-                kinds.add(json.loads(read_frame(web))["type"])
-            except (TimeoutError, json.JSONDecodeError):
-                pass
-            web.settimeout(WAIT_S)
-        assert {"snapshot", "update"} <= kinds, kinds
+            while select.select([web], [], [], 0)[0]:  # (every frame the page has been sent so far, each whole)
+                opcode, payload = read_frame(web, deadline)
+                if opcode == 1:
+                    kinds.add(json.loads(payload)["type"])
         web.close()
     finally:
         env.close()
+    assert log is not None
     output, _ = log.communicate(timeout=WAIT_S)
     assert log.returncode == 0, output
     rows = csv.read_text().splitlines()

@@ -118,6 +118,15 @@ class LearningHost:
         self._process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                          stdin=subprocess.DEVNULL, env=env, text=True, errors="replace")
         self._output: collections.deque[str] = collections.deque(maxlen=40)
+        self._closed = False
+        try:
+            self._connect(key)
+        except BaseException:
+            self._stop()
+            raise
+
+    def _connect(self, key: str) -> None:
+        """Where the host listens (its first line), the hello, the welcome checked: the batch's shapes."""
         where = self._listening()
         host, port = where.group(1), int(where.group(2))
         self.viewer_port = int(where.group(3)) if where.group(3) else None
@@ -129,10 +138,13 @@ class LearningHost:
         self._frames.send({"link": LINK, "version": VERSION, "key": key})
         answer = self._receive()
         if not isinstance(answer, dict) or "error" in answer:
-            self._stop()
             why = answer.get("error") if isinstance(answer, dict) else answer
-            raise HostError(f"the learning host refused the hello: {why}")
-        self.welcome = Welcome(**{f: answer[f] for f in Welcome.__dataclass_fields__})
+            raise HostError(f"the learning host refused the hello: {why!r:.300}")
+        fields = list(Welcome.__dataclass_fields__)
+        if answer.get("link") != LINK or answer.get("version") != VERSION or any(f not in answer for f in fields):
+            raise HostError(f"a welcome that is not a learning link's version {VERSION} (another RoboSim's host?): "
+                            f"{sorted(answer)!r:.300}")
+        self.welcome = Welcome(**{f: answer[f] for f in fields})
         w = self.welcome
         n = len(w.robots)
         shapes = [("steps", "<i8", (w.worlds,)), ("sonar", "<f4", (w.worlds, n, w.sonars)),
@@ -143,8 +155,7 @@ class LearningHost:
         #: Each array of a reply: its name, type, shape and size in bytes (Batch's fields, in order).
         self._arrays = [(name, dtype, shape, int(np.prod(shape)) * np.dtype(dtype).itemsize)
                         for name, dtype, shape in shapes]
-        self._action_shape = (w.worlds, len(w.robots), 2 + w.message_size)
-        self._closed = False
+        self._action_shape = (w.worlds, n, 2 + w.message_size)
 
     def _listening(self) -> re.Match[str]:
         assert self._process.stdout is not None
@@ -165,7 +176,6 @@ class LearningHost:
         reader.start()
         done.wait(START_S)
         if not found:
-            self._stop()
             raise HostError("the learning host did not start" + self._said())
         reader.join()
         return found[0]
@@ -249,9 +259,14 @@ class LearningHost:
         self._stop()
 
     def _stop(self) -> None:
+        """The link closed (the host, reading, sees its end) and the host waited for (killed after 10 s)."""
         self._closed = True
         sock = getattr(self, "_sock", None)
         if sock is not None:
+            try:
+                sock.shutdown(socket.SHUT_RDWR)  # (a close alone leaves the connection open: Frames' file holds it)
+            except OSError:
+                pass
             sock.close()
         try:
             self._process.wait(timeout=10)

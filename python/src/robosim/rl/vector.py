@@ -63,7 +63,9 @@ class VectorEnv:
     2 + message size) gives observations, rewards (K, N), terminations (K, N), truncations (K, N) and infos. A world
     whose episode has ended (every robot terminated, or ``max_steps`` actions) begins its next at the following
     ``step`` (Gymnasium's next-step autoreset: that step's actions for it are not used, its rewards are 0 and
-    ``infos["reset"]`` says which worlds began again). A terminated robot stands still until its world begins again.
+    ``infos["reset"]`` says which worlds began again). A terminated robot stands still until its world begins again;
+    ``infos["active"]`` (K, N) is True where a robot's step is one of its episode's (False for robots done before the
+    step and for worlds that began again): a learner that takes the K x N robots as a batch keeps those.
     With ``episode_metric`` (a built-in metric's name or a ``robosim.sweep.Metric`` class on the host's class path),
     a world whose episode ends is measured from its episode's recording, as a sweep measures a run, and the value is
     added to the last reward of each robot that ends with it (``infos["episode_metric"]``: (K,), NaN for the other
@@ -73,13 +75,15 @@ class VectorEnv:
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
                  message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
                  terminate: Terminate = None, episode_metric: str | None = None, random_headings: bool = False,
-                 threads: int | None = None, web_port: int | None = None, viewer_port: int | None = None,
-                 params: dict[str, str] | None = None, robosim_home: str | os.PathLike[str] | None = None) -> None:
+                 area_cell_m: float | None = None, threads: int | None = None, web_port: int | None = None,
+                 viewer_port: int | None = None, params: dict[str, str] | None = None,
+                 robosim_home: str | os.PathLike[str] | None = None) -> None:
         if max_steps < 1:
             raise ValueError(f"max_steps must be >= 1, got {max_steps}")
         self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size,
-                                 random_headings=random_headings, threads=threads, episode_metric=episode_metric,
-                                 web_port=web_port, viewer_port=viewer_port, params=params, robosim_home=robosim_home)
+                                 random_headings=random_headings, area_cell_m=area_cell_m, threads=threads,
+                                 episode_metric=episode_metric, web_port=web_port, viewer_port=viewer_port,
+                                 params=params, robosim_home=robosim_home)
         self.welcome = self.host.welcome
         if isinstance(reward, str) and reward not in self.welcome.metrics:
             self.host.close()
@@ -96,8 +100,8 @@ class VectorEnv:
         self._actions = np.zeros((worlds, n, 2 + message_size), np.float32)
         self._done = np.zeros((worlds, n), bool)
         self._any_done = False
-        #: The worlds whose episode has ended: they begin again at the next step.
-        self._ended: list[int] = []
+        #: The worlds whose episode has ended, and the seed each begins its next with at the next step.
+        self._ended: dict[int, int] = {}
         self._steps = np.zeros(worlds, np.int64)
         #: Steps until the first world's truncation (while no robot is done and there is no termination function).
         self._first_end = max_steps
@@ -121,7 +125,7 @@ class VectorEnv:
         batch = self.host.reset(seeds)
         self._done[:] = False
         self._any_done = False
-        self._ended = []
+        self._ended = {}
         self._steps[:] = 0
         self._first_end = self.max_steps
         self._metrics = batch.metrics.copy()
@@ -135,11 +139,10 @@ class VectorEnv:
         if self._metrics is None:
             raise RuntimeError("reset() before step()")
         np.copyto(self._actions, actions, casting="same_kind")
-        again = self._ended
+        again = list(self._ended)
         if self._any_done:
             self._actions[self._done] = 0.0
-        resets = {w: int(self._generators[w].integers(2**62)) for w in again}
-        batch = self.host.step(self._actions, resets)
+        batch = self.host.step(self._actions, self._ended)
         observations = self.layout.observations(batch)
         previous = self._metrics
         metrics = batch.metrics.copy()
@@ -150,6 +153,8 @@ class VectorEnv:
             self._steps[again] = 0
             self._done[again] = False
             self._first_end = self.max_steps - int(self._steps.max())
+        active = ~self._done
+        active[again] = False
         transition = Transition(observations, batch.pose, batch.contact, Metrics(self.welcome.metrics, metrics),
                                 Metrics(self.welcome.metrics, previous), self._actions, self._steps)
         shape = self._done.shape
@@ -167,24 +172,25 @@ class VectorEnv:
                 truncated[again] = False
             self._done |= terminated | truncated
             self._any_done = bool(self._done.any())
-            self._ended = np.flatnonzero(self._done.all(axis=1)).tolist() if self._any_done else []
-            if self._ended and self.welcome.episode_metric is not None:
-                values = self.host.measure(self._ended)
+            ended = np.flatnonzero(self._done.all(axis=1)).tolist() if self._any_done else []
+            self._ended = {w: int(self._generators[w].integers(2**62)) for w in ended}
+            if ended and self.welcome.episode_metric is not None:
+                values = self.host.measure(ended)
                 measured = np.full(self.num_worlds, np.nan)
-                measured[self._ended] = values
+                measured[ended] = values
                 last = terminated | truncated
-                rewards[self._ended] += np.where(last[self._ended], np.asarray(values, np.float32)[:, None], 0.0)
+                rewards[ended] += np.where(last[ended], np.asarray(values, np.float32)[:, None], 0.0)
         else:
             terminated = np.zeros(shape, bool)
             truncated = np.zeros(shape, bool)
             if again:
                 rewards[again] = 0.0
-            self._ended = []
+            self._ended = {}
         self._metrics = metrics
         self.last_pose = batch.pose
         reset = np.zeros(self.num_worlds, bool)
         reset[again] = True
-        infos = {"reset": reset, "metrics": transition.metrics}
+        infos = {"reset": reset, "active": active, "metrics": transition.metrics}
         if self.welcome.episode_metric is not None:
             infos["episode_metric"] = measured if measured is not None else np.full(self.num_worlds, np.nan)
         return observations, rewards, terminated, truncated, infos

@@ -35,7 +35,7 @@ import robosim.protocol.SonarSpec;
  * <li>{@code ["step", ACTIONS, RESETS]}: ACTIONS a binary of float32 (little-endian), world by world, robot by robot,
  * the action's fields each; RESETS nil or a map world -> seed: those worlds begin a new episode instead (their
  * actions are not read). Reply {@code ["ok", BATCH]};
- * <li>{@code ["reset", SEEDS]}: SEEDS an array, one per world, a seed or nil (that world goes on). Reply
+ * <li>{@code ["reset", SEEDS]}: SEEDS an array, one per world, a seed or nil (that world stays as it is). Reply
  * {@code ["ok", BATCH]};
  * <li>{@code ["measure", [WORLD, ...]]}: with an episode metric ({@code --episode-metric}), its value over each
  * world's episode so far, from the episode's recording. Reply {@code ["ok", [VALUE, ...]]};
@@ -45,7 +45,8 @@ import robosim.protocol.SonarSpec;
  * {@code pose} (float32), {@code contact} (uint8), {@code metrics} (float64), {@code messages} (float32, when
  * messages have numbers). A request that is not one, or actions not finite or not of the batch's size, is answered
  * {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}) and the link goes on; velocities beyond a
- * robot's limits are held to them.
+ * robot's limits are held to them. A world that cannot go on (an internal failure) is answered
+ * {@code ["error", "failed", WHY]} and the link ends.
  */
 public final class BatchLink {
     public static final String NAME = "robosim-batch-link";
@@ -217,13 +218,15 @@ public final class BatchLink {
                         expectArguments(u, 2, call);
                         readActions(u);
                         readResets(u);
-                        step();
+                        whole(u);
+                        step(true);
                     }
                     case "reset" -> {
                         expectArguments(u, 1, call);
                         java.util.Arrays.fill(reset, false);
                         readSeeds(u);
-                        step();
+                        whole(u);
+                        step(false);
                     }
                     case "measure" -> {
                         expectArguments(u, 1, call);
@@ -231,6 +234,7 @@ public final class BatchLink {
                     }
                     case "bye" -> {
                         expectArguments(u, 0, call);
+                        whole(u);
                         reply.packArrayHeader(1).packString("ok");
                         bye = true;
                     }
@@ -265,6 +269,13 @@ public final class BatchLink {
         return u.unpackString();
     }
 
+    /** The request read, nothing may follow it in its frame. */
+    private static void whole(MessageUnpacker u) throws IOException {
+        if (u.hasNext()) {
+            throw new BadCall("bad_call", "a request frame holds more than its array");
+        }
+    }
+
     private void expectArguments(MessageUnpacker u, int count, String call) {
         if (arguments != count) {
             throw new BadCall("bad_call", call + " takes " + count + " arguments, not " + arguments);
@@ -283,13 +294,16 @@ public final class BatchLink {
         }
         u.readPayload(actionBytes);
         int fields = batch.actionFields();
-        for (int i = 0; i < actions.length; i++) {
+        for (int i = 0; i < actions.length; i++) { // (all checked before any is taken)
             float v = (float) FLOAT.get(actionBytes, i * 4);
             if (!Float.isFinite(v)) {
                 int robot = (i / fields) % batch.robots();
                 throw new BadCall("value", "world " + i / fields / batch.robots() + ", robot "
                         + batch.spec().robots().get(robot).name() + ": action field " + i % fields + " is " + v);
             }
+        }
+        for (int i = 0; i < actions.length; i++) {
+            float v = (float) FLOAT.get(actionBytes, i * 4);
             int field = i % fields;
             if (field < BatchWorlds.VELOCITIES) {
                 double max = limits[(i / fields) % batch.robots()][field];
@@ -368,6 +382,7 @@ public final class BatchLink {
         for (int i = 0; i < n; i++) {
             which[i] = world(u);
         }
+        whole(u);
         double[] values = new double[n];
         for (int i = 0; i < n; i++) {
             try {
@@ -383,8 +398,16 @@ public final class BatchLink {
         }
     }
 
-    private void step() throws IOException {
-        batch.step(actions, reset, seeds);
+    private void step(boolean act) throws IOException {
+        try {
+            batch.step(act ? actions : null, reset, seeds);
+        } catch (IllegalStateException e) { // (a world that cannot go on: the learner is told, then the link ends)
+            String why = oneLine(e.getMessage());
+            reply.clear();
+            reply.packArrayHeader(3).packString("error").packString("failed").packString(why);
+            LinkFrames.write(out, reply.toByteArray());
+            throw new IOException(why, e);
+        }
         if (watch != null) {
             watch.stepped();
         }

@@ -101,6 +101,7 @@ final class BatchWorld {
         step = 0;
         newWorld = true;
         Arrays.fill(touched, false);
+        forgetMessages();
         for (int i = 0; i < robots; i++) {
             requests[i] = new StepRequest(step, 0, 0, true, List.of());
         }
@@ -121,9 +122,7 @@ final class BatchWorld {
         int fields = batch.actionFields();
         int repeat = batch.repeat();
         Arrays.fill(touched, false);
-        if (batch.messageSize() > 0) {
-            Arrays.fill(batch.messages(), messagesAt(0), messagesAt(robots), (byte) 0);
-        }
+        forgetMessages();
         for (int r = 0; r < repeat; r++) {
             for (int i = 0; i < robots; i++) {
                 int a = offset + i * fields;
@@ -167,6 +166,13 @@ final class BatchWorld {
             }
         }
         step++;
+    }
+
+    /** Zeros for every message this world's robots heard: each action (and episode) hears its own. */
+    private void forgetMessages() {
+        if (batch.messageSize() > 0) {
+            Arrays.fill(batch.messages(), messagesAt(0), messagesAt(robots), (byte) 0);
+        }
     }
 
     private int messagesAt(int robot) {

@@ -118,7 +118,8 @@ public final class BatchWorlds implements AutoCloseable {
     /**
      * One step of every world: world w starts a new episode with {@code seeds[w]} where {@code reset[w]}, else
      * applies its robots' actions ({@code actions}: world by world, robot by robot, {@link #actionFields()} each,
-     * already checked: finite, velocities within {@link #limits}).
+     * already checked: finite, velocities within {@link #limits}); with {@code actions} null the worlds not reset
+     * stay as they are.
      */
     public void step(float[] actions, boolean[] reset, long[] seeds) throws IOException {
         List<Future<?>> others = new ArrayList<>(threads - 1);
@@ -131,9 +132,7 @@ public final class BatchWorlds implements AutoCloseable {
         }
         Throwable failed = null;
         try {
-            synchronized (watchLock) { // (world 0 is in this share: a viewer that joins sees it between steps)
-                stepShare(0, actions, reset, seeds);
-            }
+            stepShare(0, actions, reset, seeds);
         } catch (IOException | RuntimeException e) {
             failed = e;
         }
@@ -157,11 +156,21 @@ public final class BatchWorlds implements AutoCloseable {
 
     private void stepShare(int share, float[] actions, boolean[] reset, long[] seeds) throws IOException {
         for (int w = share; w < worlds.length; w += threads) {
-            if (reset[w]) {
-                worlds[w].reset(seeds[w]);
+            if (w == 0) {
+                synchronized (watchLock) { // (a viewer that joins sees world 0 between steps; share 0 is the caller's)
+                    stepWorld(0, actions, reset, seeds);
+                }
             } else {
-                worlds[w].act(actions, w * robots * actionFields());
+                stepWorld(w, actions, reset, seeds);
             }
+        }
+    }
+
+    private void stepWorld(int w, float[] actions, boolean[] reset, long[] seeds) throws IOException {
+        if (reset[w]) {
+            worlds[w].reset(seeds[w]);
+        } else if (actions != null) {
+            worlds[w].act(actions, w * robots * actionFields());
         }
     }
 

@@ -50,8 +50,8 @@ import robosim.web.WebViewerServer;
                 + "learning link on loopback: one exchange a step for every robot of every world.")
 public final class LearningHostMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(LearningHostMain.class);
-    /** Hellos refused before the host gives up (strangers on this machine). */
-    static final int MAX_STRANGERS = 8;
+    /** Refused hellos logged, at most (strangers on this machine may try many). */
+    static final int MAX_LOGGED_REFUSALS = 8;
     /** The most worlds a batch holds. */
     static final int MAX_WORLDS = 1024;
 
@@ -95,7 +95,8 @@ public final class LearningHostMain implements Callable<Integer> {
     int port;
 
     @Option(names = "--accept-timeout-s", defaultValue = "60", description = "Exit 3 if no learner has said hello "
-            + "within this long (default: ${DEFAULT-VALUE}).")
+            + "within this long; hellos refused meanwhile (another key, another link) are logged (default: "
+            + "${DEFAULT-VALUE}).")
     int acceptTimeoutS;
 
     @Option(names = "--viewer-port", defaultValue = "-1", description = "Serve world 0 to viewers (viewer2d.sh, "
@@ -183,7 +184,7 @@ public final class LearningHostMain implements Callable<Integer> {
             throws IOException {
         String key = System.getenv("ROBOSIM_LINK_KEY");
         long deadline = System.nanoTime() + acceptTimeoutS * 1_000_000_000L;
-        int strangers = 0;
+        int refused = 0;
         while (true) {
             long left = (deadline - System.nanoTime()) / 1_000_000;
             if (left <= 0) {
@@ -202,11 +203,10 @@ public final class LearningHostMain implements Callable<Integer> {
                 BatchLink link = new BatchLink(socket, batch, watch);
                 try {
                     link.welcome(key, deadlines);
-                } catch (ProtocolException e) {
-                    LOG.warn("a hello from {} refused: {}", socket.getInetAddress().getHostAddress(), e.getMessage());
-                    if (++strangers >= MAX_STRANGERS) {
-                        System.err.println("learning-host: " + strangers + " hellos refused; giving up");
-                        return 3;
+                } catch (ProtocolException e) { // (a stranger: refused, and the learner still awaited until the deadline)
+                    if (++refused <= MAX_LOGGED_REFUSALS) {
+                        LOG.warn("a hello from {} refused: {}{}", socket.getInetAddress().getHostAddress(), e.getMessage(),
+                                refused == MAX_LOGGED_REFUSALS ? " (further refusals are not logged)" : "");
                     }
                     continue;
                 }
@@ -242,6 +242,9 @@ public final class LearningHostMain implements Callable<Integer> {
         }
         if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
             return "--area-cell-m must be > 0, got " + areaCellM;
+        }
+        if (RunMetrics.cellProblem(spec.arena(), areaCellM) != null) {
+            return "--area-cell-m " + areaCellM + ": " + RunMetrics.cellProblem(spec.arena(), areaCellM);
         }
         for (String[] p : List.of(new String[] {"--port", "" + port}, new String[] {"--viewer-port", "" + viewerPort},
                 new String[] {"--web-port", "" + webPort})) {

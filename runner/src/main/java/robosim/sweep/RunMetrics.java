@@ -128,7 +128,7 @@ public final class RunMetrics {
     }
 
     /** Why cells of {@code areaCellM} are too many for {@code arena}'s {@code area_covered}, or null. */
-    static String cellProblem(Arena arena, double areaCellM) {
+    public static String cellProblem(Arena arena, double areaCellM) {
         double cells = Math.ceil((arena.maxXMm() - arena.minXMm()) / (areaCellM * 1000))
                 * Math.ceil((arena.maxYMm() - arena.minYMm()) / (areaCellM * 1000));
         return cells <= MAX_AREA_CELLS ? null : "area cells of " + areaCellM + " m make " + (long) cells + " cells of this "

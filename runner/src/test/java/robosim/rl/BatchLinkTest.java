@@ -118,7 +118,16 @@ class BatchLinkTest {
             assertEquals("[\"error\",\"value\",\"1 seeds for 2 worlds\"]", receive(in).toJson());
             send(out, "reset", org.msgpack.value.ValueFactory.newArray(org.msgpack.value.ValueFactory.newNil(),
                     org.msgpack.value.ValueFactory.newInteger(3)));
-            assertEquals("ok", receive(in).asArrayValue().get(0).asStringValue().asString());
+            Value reset = receive(in);
+            byte[] steps = reset.asArrayValue().get(1).asMapValue().map().get(org.msgpack.value.ValueFactory
+                    .newString("steps")).asBinaryValue().asByteArray();
+            java.nio.LongBuffer each = java.nio.ByteBuffer.wrap(steps).order(java.nio.ByteOrder.LITTLE_ENDIAN).asLongBuffer();
+            assertEquals(2, each.get(0), "world 0 (nil) stays: its settling step and the one step");
+            assertEquals(1, each.get(1), "world 1 begins again");
+            MessageBufferPacker trailing = MessagePack.newDefaultBufferPacker();
+            trailing.packArrayHeader(1).packString("bye").packInt(0);
+            LinkFrames.write(out, trailing.toByteArray());
+            assertEquals("[\"error\",\"bad_call\",\"a request frame holds more than its array\"]", receive(in).toJson());
 
             send(out, "bye");
             assertEquals("[\"ok\"]", receive(in).toJson());

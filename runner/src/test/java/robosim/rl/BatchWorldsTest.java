@@ -111,6 +111,13 @@ class BatchWorldsTest {
             assertEquals(6.0, (double) DOUBLE.get(b.metrics(), 16), "messages_delivered in world 0: each robot sends");
             b.step(new float[a.length], new boolean[2], new long[2]);
             assertEquals(0f, (float) FLOAT.get(b.messages(), (0 * fieldsOfRow + 1 * 2) * 4), "b sent zeros this time");
+            b.step(a, new boolean[2], new long[2]);
+            long world1Steps = (long) LONG.get(b.steps(), 8);
+            b.step(null, new boolean[] {true, false}, new long[] {5, 0});
+            for (int i = 0; i < 3 * fieldsOfRow * 4; i += 4) {
+                assertEquals(0f, (float) FLOAT.get(b.messages(), i), "a new episode has heard nothing");
+            }
+            assertEquals(world1Steps, (long) LONG.get(b.steps(), 8), "without actions the worlds not reset stay as they are");
         }
     }
 
