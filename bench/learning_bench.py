@@ -1,6 +1,7 @@
 """What a learner sees: K worlds of an environment file stepped from Python over the learning link (robosim.rl's
 VectorEnv), every robot's action uniformly random within its limits (drawn ahead, 64 blocks, used in turn), rewards
-of a Python function (the sonars' mean, so the arrays are read). The clock starts after WARM steps and runs STEPS.
+the built-in metric area_covered's gains (what the package does a step, and no more: a learner's own reward and
+policy cost what they cost). The clock starts after WARM steps and runs STEPS.
 usage: PYTHON bench/learning_bench.py FILE.xml WORLDS STEPS [WARM]   (with robosim[rl] installed)
 Prints one line: worlds=K robots=N steps=S wall=Ws steps/s=R robot-steps/s=R."""
 
@@ -15,8 +16,7 @@ from robosim.rl import VectorEnv, sample_actions
 def main() -> None:
     path, worlds, steps = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
     warm = int(sys.argv[4]) if len(sys.argv) > 4 else 500
-    with VectorEnv(path, worlds=worlds, max_steps=10**9,
-                   reward=lambda t: t.observations["sonar"].mean(axis=2)) as env:
+    with VectorEnv(path, worlds=worlds, max_steps=10**9, reward="area_covered") as env:
         rng = np.random.default_rng(1)
         blocks = [sample_actions(env, rng) for _ in range(64)]
         env.reset(seed=1)

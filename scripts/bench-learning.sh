@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # What a learner sees, against the limit: K worlds of test-envs/bench-10.xml (ten Scouts) stepped from Python over the
-# learning link (bench/learning_bench.py: robosim.rl's VectorEnv, random actions, a reward read from the sonars), and
+# learning link (bench/learning_bench.py: robosim.rl's VectorEnv, random actions, a built-in metric's reward), and
 # the same worlds stepped in the JVM with the actions made inline (bench/LearningEngine.java: the same BatchWorlds
 # and threads, no link), alternated, in one sitting, and the link's floor (bench/LearningLinkFloor.java: the same
 # frames both ways, answered at once, nothing simulated):

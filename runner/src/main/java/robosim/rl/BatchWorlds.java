@@ -5,11 +5,6 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.concurrent.ExecutionException;
-import java.util.concurrent.ExecutorService;
-import java.util.concurrent.Executors;
-import java.util.concurrent.Future;
-import java.util.concurrent.atomic.AtomicInteger;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
@@ -21,7 +16,7 @@ import robosim.sweep.RunMetrics;
  * world and leaves what they sensed in flat little-endian arrays, laid out world by world, robot by robot (the
  * learning link's batch, {@link BatchLink}). The worlds are shared out over {@code threads} threads: the caller's
  * (the owner of time: it steps its share, world 0 among them, and waits for the rest) and {@code threads - 1}
- * threads {@code rl-worlds[t]}, which step only while the caller waits. The same seed and the same actions give
+ * threads {@code rl-worlds[t]} ({@link StepCrew}), which step only when the caller steps. The same seed and the same actions give
  * the same arrays, bit for bit, whatever the threads.
  */
 public final class BatchWorlds implements AutoCloseable {
@@ -39,7 +34,8 @@ public final class BatchWorlds implements AutoCloseable {
     private final Path recordings;
     private final BatchWorld[] worlds;
     private final int threads;
-    private final ExecutorService helpers;
+    /** The threads beside the caller's, or null for one thread. */
+    private final StepCrew crew;
     private final Object watchLock = new Object();
     private final byte[] sonar;
     private final byte[] pose;
@@ -91,12 +87,7 @@ public final class BatchWorlds implements AutoCloseable {
         this.metrics = new byte[count * METRICS.size() * 8];
         this.steps = new byte[count * 8];
         this.threads = Math.max(1, Math.min(settings.threads(), count));
-        AtomicInteger made = new AtomicInteger();
-        this.helpers = this.threads == 1 ? null : Executors.newFixedThreadPool(this.threads - 1, r -> {
-            Thread t = new Thread(r, "rl-worlds[" + made.incrementAndGet() + "]");
-            t.setDaemon(true);
-            return t;
-        });
+        this.crew = this.threads == 1 ? null : new StepCrew(this.threads);
         this.worlds = new BatchWorld[count];
         for (int w = 0; w < count; w++) {
             worlds[w] = new BatchWorld(this, w);
@@ -122,35 +113,16 @@ public final class BatchWorlds implements AutoCloseable {
      * stay as they are.
      */
     public void step(float[] actions, boolean[] reset, long[] seeds) throws IOException {
-        List<Future<?>> others = new ArrayList<>(threads - 1);
-        for (int t = 1; t < threads; t++) {
-            int share = t;
-            others.add(helpers.submit(() -> {
-                stepShare(share, actions, reset, seeds);
-                return null;
-            }));
-        }
-        Throwable failed = null;
-        try {
+        if (crew == null) {
             stepShare(0, actions, reset, seeds);
-        } catch (IOException | RuntimeException e) {
-            failed = e;
+            return;
         }
-        for (Future<?> f : others) {
-            try {
-                f.get();
-            } catch (ExecutionException e) {
-                failed = failed == null ? e.getCause() : failed;
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                failed = failed == null ? e : failed;
-            }
-        }
-        if (failed instanceof IOException e) { // (a ProtocolException among them)
+        try {
+            crew.run(share -> stepShare(share, actions, reset, seeds));
+        } catch (IOException | RuntimeException e) { // (a ProtocolException among them)
             throw e;
-        }
-        if (failed != null) {
-            throw new IllegalStateException("a world's step failed: " + failed, failed);
+        } catch (Exception e) {
+            throw new IllegalStateException("a world's step failed: " + e, e);
         }
     }
 
@@ -294,8 +266,8 @@ public final class BatchWorlds implements AutoCloseable {
 
     @Override
     public void close() throws IOException {
-        if (helpers != null) {
-            helpers.shutdownNow();
+        if (crew != null) {
+            crew.close();
         }
         for (BatchWorld w : worlds) {
             if (w != null) {

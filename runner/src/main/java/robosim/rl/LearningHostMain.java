@@ -87,7 +87,8 @@ public final class LearningHostMain implements Callable<Integer> {
             + "class on the class path, as a sweep's (default: none).")
     String episodeMetric;
 
-    @Option(names = "--threads", description = "Threads that step the worlds (default: the machine's cores).")
+    @Option(names = "--threads", description = "Threads that step the worlds (default: the machine's cores; more "
+            + "than the cores is slower: a thread spins a little between steps).")
     Integer threads;
 
     @Option(names = "--port", defaultValue = "0", description = "The learning link's port on loopback "
