@@ -221,7 +221,8 @@ class LearningHost:
         return Batch(*views) if len(views) == 6 else Batch(*views, None)
 
     def reset(self, seeds: list[int | None]) -> Batch:
-        """World w begins a new episode with ``seeds[w]`` (None: it stays as it is, not stepped); every world's arrays."""
+        """World w begins a new episode with ``seeds[w]`` (None: it stays as it is, not stepped); every world's
+        arrays."""
         return self._call(["reset", [None if s is None else int(s) for s in seeds]])
 
     def step(self, actions: np.ndarray, resets: dict[int, int] | None = None) -> Batch:

@@ -154,7 +154,8 @@ class VectorEnv:
             self._done[again] = False
             self._first_end = self.max_steps - int(self._steps.max())
         active = ~self._done
-        active[again] = False
+        if again:
+            active[again] = False
         transition = Transition(observations, batch.pose, batch.contact, Metrics(self.welcome.metrics, metrics),
                                 Metrics(self.welcome.metrics, previous), self._actions, self._steps)
         shape = self._done.shape
@@ -189,7 +190,8 @@ class VectorEnv:
         self._metrics = metrics
         self.last_pose = batch.pose
         reset = np.zeros(self.num_worlds, bool)
-        reset[again] = True
+        if again:
+            reset[again] = True
         infos = {"reset": reset, "active": active, "metrics": transition.metrics}
         if self.welcome.episode_metric is not None:
             infos["episode_metric"] = measured if measured is not None else np.full(self.num_worlds, np.nan)
@@ -199,9 +201,10 @@ class VectorEnv:
         if self._reward is None:
             return np.zeros(shape, np.float32)
         if isinstance(self._reward, str):
-            gain = transition.metrics[self._reward] - transition.previous_metrics[self._reward]
-            return np.broadcast_to(gain[:, None], shape).astype(np.float32)
-        return np.broadcast_to(np.asarray(self._reward(transition), np.float32), shape).copy()
+            gain = (transition.metrics[self._reward] - transition.previous_metrics[self._reward]).astype(np.float32)
+            return np.repeat(gain[:, None], shape[1], axis=1)
+        given = np.array(self._reward(transition), np.float32)  # (a copy: this step's zeros go into it, not theirs)
+        return given if given.shape == shape else np.broadcast_to(given, shape).copy()
 
     def close(self) -> None:
         self.host.close()
