@@ -12,9 +12,6 @@ import java.nio.ByteOrder;
 import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.util.List;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
-import java.util.concurrent.TimeUnit;
 import org.msgpack.core.MessageBufferPacker;
 import org.msgpack.core.MessagePack;
 import org.msgpack.core.MessagePackException;
@@ -94,24 +91,8 @@ public final class BatchLink {
      *
      * @throws ProtocolException the refusal
      */
-    void welcome(String key, ScheduledExecutorService deadlines) throws IOException {
-        ScheduledFuture<?> late = deadlines.schedule(() -> {
-            try {
-                socket.close();
-            } catch (IOException ignored) {
-                // (closing is all)
-            }
-        }, HELLO_DEADLINE_MS, TimeUnit.MILLISECONDS);
-        byte[] frame;
-        try {
-            frame = LinkFrames.read(in);
-        } catch (IOException e) {
-            throw new ProtocolException(late.cancel(false) ? oneLine(e.getMessage())
-                    : "no hello within " + HELLO_DEADLINE_MS + " ms");
-        }
-        if (!late.cancel(false)) {
-            throw new ProtocolException("no hello within " + HELLO_DEADLINE_MS + " ms");
-        }
+    void welcome(String key) throws IOException {
+        byte[] frame = LinkFrames.hello(in, socket, HELLO_DEADLINE_MS);
         if (frame == null) {
             throw new ProtocolException("the learner closed the link before its hello");
         }

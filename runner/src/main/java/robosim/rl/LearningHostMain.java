@@ -10,8 +10,6 @@ import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine;
@@ -124,11 +122,6 @@ public final class LearningHostMain implements Callable<Integer> {
         }
         int shares = threads != null ? threads : Runtime.getRuntime().availableProcessors();
         InetAddress loopback = InetAddress.getLoopbackAddress();
-        ScheduledExecutorService deadlines = Executors.newSingleThreadScheduledExecutor(r -> {
-            Thread t = new Thread(r, "rl-deadline");
-            t.setDaemon(true);
-            return t;
-        });
         MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
                 randomHeadings, areaCellM, shares, metric));
@@ -158,7 +151,7 @@ public final class LearningHostMain implements Callable<Integer> {
                     + (web != null ? " web=" + web.port() : ""));
             System.out.flush();
             try {
-                return serve(server, batch, watch, deadlines);
+                return serve(server, batch, watch);
             } finally {
                 if (watch != null) {
                     watch.end("the learner has gone", 2000);
@@ -176,13 +169,10 @@ public final class LearningHostMain implements Callable<Integer> {
         } catch (IOException e) {
             System.err.println("learning-host: " + Printable.of(String.valueOf(e.getMessage()), 1000));
             return 1;
-        } finally {
-            deadlines.shutdownNow();
         }
     }
 
-    private int serve(ServerSocket server, BatchWorlds batch, WatchedWorld watch, ScheduledExecutorService deadlines)
-            throws IOException {
+    private int serve(ServerSocket server, BatchWorlds batch, WatchedWorld watch) throws IOException {
         String key = System.getenv("ROBOSIM_LINK_KEY");
         long deadline = System.nanoTime() + acceptTimeoutS * 1_000_000_000L;
         int refused = 0;
@@ -203,7 +193,7 @@ public final class LearningHostMain implements Callable<Integer> {
                 socket.setTcpNoDelay(true);
                 BatchLink link = new BatchLink(socket, batch, watch);
                 try {
-                    link.welcome(key, deadlines);
+                    link.welcome(key);
                 } catch (ProtocolException e) { // (a stranger: refused, and the learner still awaited until the deadline)
                     if (++refused <= MAX_LOGGED_REFUSALS) {
                         LOG.warn("a hello from {} refused: {}{}", socket.getInetAddress().getHostAddress(), e.getMessage(),

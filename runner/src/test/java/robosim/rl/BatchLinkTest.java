@@ -12,7 +12,6 @@ import java.net.Socket;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
@@ -28,7 +27,6 @@ import robosim.protocol.ProtocolException;
 class BatchLinkTest {
     private static final long WAIT_S = 60;
     private final ExecutorService serving = Executors.newSingleThreadExecutor(r -> new Thread(r, "test-batch-link"));
-    private final ScheduledExecutorService deadlines = Executors.newSingleThreadScheduledExecutor();
     private BatchWorlds batch;
     private ServerSocket server;
 
@@ -41,7 +39,6 @@ class BatchLinkTest {
     @AfterEach
     void stop() throws Exception {
         serving.shutdownNow();
-        deadlines.shutdownNow();
         server.close();
         batch.close();
     }
@@ -51,7 +48,7 @@ class BatchLinkTest {
         return serving.submit(() -> {
             try (Socket s = server.accept()) {
                 BatchLink link = new BatchLink(s, batch, null);
-                link.welcome(key, deadlines);
+                link.welcome(key);
                 return link.serve();
             }
         });

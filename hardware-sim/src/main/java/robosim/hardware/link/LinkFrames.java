@@ -4,6 +4,12 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.EOFException;
 import java.io.IOException;
+import java.net.Socket;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.ScheduledThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
+import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 
 /**
@@ -14,6 +20,8 @@ import robosim.protocol.ProtocolException;
 public final class LinkFrames {
     /** The largest frame, bytes: a message's text (64 KiB at most) and a robot's readings fit many times over. */
     public static final int MAX_BYTES = 1 << 20;
+    /** Closes a connection whose hello is late (thread {@code link-deadline}). */
+    private static final ScheduledExecutorService DEADLINES = deadlines();
 
     private LinkFrames() {
     }
@@ -41,6 +49,55 @@ public final class LinkFrames {
             throw new ProtocolException("the connection ended inside a frame of " + length + " bytes");
         }
         return payload;
+    }
+
+    /**
+     * The hello: the next frame, which must be in within {@code deadlineMs} of now (a deadline, not a read timeout:
+     * the thread {@code link-deadline} closes {@code socket} when it passes); null if the peer closed the link first.
+     *
+     * @throws ProtocolException "no hello within N ms", or what was wrong with the frame
+     * @throws IOException the read's own failure when this thread was interrupted (the caller's end, not the peer's)
+     */
+    public static byte[] hello(DataInputStream in, Socket socket, long deadlineMs) throws IOException {
+        ScheduledFuture<?> late = DEADLINES.schedule(() -> {
+            try {
+                socket.close();
+            } catch (IOException ignored) {
+                // (closing is all)
+            }
+        }, deadlineMs, TimeUnit.MILLISECONDS);
+        byte[] frame;
+        try {
+            frame = read(in);
+        } catch (IOException e) {
+            boolean inTime = late.cancel(false);
+            if (Thread.currentThread().isInterrupted()) {
+                throw e;
+            }
+            throw e instanceof ProtocolException p && inTime ? p
+                    : new ProtocolException(inTime ? oneLine(e.getMessage()) : "no hello within " + deadlineMs + " ms");
+        }
+        if (!late.cancel(false)) {
+            throw new ProtocolException("no hello within " + deadlineMs + " ms");
+        }
+        return frame;
+    }
+
+    private static String oneLine(String s) {
+        return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), 1000);
+    }
+
+    private static ScheduledExecutorService deadlines() {
+        ScheduledThreadPoolExecutor e = new ScheduledThreadPoolExecutor(1, r -> {
+            Thread t = new Thread(r, "link-deadline");
+            t.setDaemon(true);
+            return t;
+        });
+        e.setRemoveOnCancelPolicy(true);
+        // (idle for a second, the thread ends: a warm JVM's run leaves no thread behind, the next hello makes one)
+        e.setKeepAliveTime(1, TimeUnit.SECONDS);
+        e.allowCoreThreadTimeOut(true);
+        return e;
     }
 
     /** Writes {@code payload} as one frame and flushes it. */

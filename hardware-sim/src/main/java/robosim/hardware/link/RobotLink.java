@@ -9,10 +9,6 @@ import java.net.Socket;
 import java.nio.charset.StandardCharsets;
 import java.security.MessageDigest;
 import java.util.List;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledFuture;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
 import org.msgpack.core.MessageBufferPacker;
 import org.msgpack.core.MessageFormat;
 import org.msgpack.core.MessagePack;
@@ -56,8 +52,6 @@ public final class RobotLink {
     private static final int MAX_HELLO_FIELDS = 16;
     /** The longest reason in an error reply, characters. */
     private static final int MAX_REASON = 1000;
-    /** Closes a connection whose hello is late (thread {@code link-deadline}). */
-    private static final ScheduledExecutorService DEADLINES = deadlines();
 
     private final Socket socket;
     private final Robot robot;
@@ -131,27 +125,15 @@ public final class RobotLink {
     }
 
     private void welcome(String wanted) throws IOException {
-        ScheduledFuture<?> late = DEADLINES.schedule(() -> {
-            try {
-                socket.close();
-            } catch (IOException ignored) {
-                // (closing is all)
-            }
-        }, HELLO_DEADLINE_MS, TimeUnit.MILLISECONDS);
         byte[] frame;
         try {
-            frame = LinkFrames.read(in);
-        } catch (IOException e) {
+            frame = LinkFrames.hello(in, socket, HELLO_DEADLINE_MS);
+        } catch (ProtocolException e) {
             if (Thread.currentThread().isInterrupted()) {
-                late.cancel(false);
                 throw e; // (the simulation's end, not the controller's doing)
             }
-            throw new HelloRefused(late.cancel(false) ? oneLine(e.getMessage())
-                    : "no hello within " + HELLO_DEADLINE_MS + " ms");
-        }
-        if (!late.cancel(false)) {
-            throw new HelloRefused("no hello within " + HELLO_DEADLINE_MS + " ms");
-        }
+            throw new HelloRefused(e.getMessage());
+        } // (any other IOException: this thread was interrupted, as above)
         if (frame == null) {
             throw new HelloRefused("the controller closed the link before its hello");
         }
@@ -439,19 +421,6 @@ public final class RobotLink {
 
     private static String oneLine(String s) {
         return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), MAX_REASON);
-    }
-
-    private static ScheduledExecutorService deadlines() {
-        ScheduledThreadPoolExecutor e = new ScheduledThreadPoolExecutor(1, r -> {
-            Thread t = new Thread(r, "link-deadline");
-            t.setDaemon(true);
-            return t;
-        });
-        e.setRemoveOnCancelPolicy(true);
-        // (idle for a second, the thread ends: a warm JVM's run leaves no thread behind, the next hello makes one)
-        e.setKeepAliveTime(1, TimeUnit.SECONDS);
-        e.allowCoreThreadTimeOut(true);
-        return e;
     }
 
     /** What a robot's message is on the link: {@code [from, text]}, or nil. */
