@@ -124,7 +124,8 @@ public final class BatchLink {
             throw refuse("not a learning link's hello (link \"" + Printable.of(link, 40) + "\", not \"" + NAME + "\")");
         }
         if (version == null || version != VERSION) {
-            throw refuse("learning link version " + version + " is not supported (this simulator speaks " + VERSION + ")");
+            throw refuse("learning link version " + version + " is not supported (this simulator speaks " + VERSION
+                    + ")");
         }
         if (key != null && (given == null || !MessageDigest.isEqual(key.getBytes(StandardCharsets.UTF_8),
                 given.getBytes(StandardCharsets.UTF_8)))) {

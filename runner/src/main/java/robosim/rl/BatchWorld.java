@@ -159,7 +159,8 @@ final class BatchWorld {
                 for (CommEvent m : response.inbox()) {
                     Integer from = byName.get(m.from());
                     if (from != null) {
-                        MessageNumbers.read(m.payload(), batch.messages(), messagesAt(i) + from * batch.messageSize() * 4,
+                        MessageNumbers.read(m.payload(), batch.messages(),
+                                messagesAt(i) + from * batch.messageSize() * 4,
                                 batch.messageSize());
                     }
                 }

@@ -16,8 +16,8 @@ import robosim.sweep.RunMetrics;
  * world and leaves what they sensed in flat little-endian arrays, laid out world by world, robot by robot (the
  * learning link's batch, {@link BatchLink}). The worlds are shared out over {@code threads} threads: the caller's
  * (the owner of time: it steps its share, world 0 among them, and waits for the rest) and {@code threads - 1}
- * threads {@code rl-worlds[t]} ({@link StepCrew}), which step only when the caller steps. The same seed and the same actions give
- * the same arrays, bit for bit, whatever the threads.
+ * threads {@code rl-worlds[t]} ({@link StepCrew}), which step only when the caller steps. The same seed and the
+ * same actions give the same arrays, bit for bit, whatever the threads.
  */
 public final class BatchWorlds implements AutoCloseable {
     /** The live metrics of each world, in this order: the built-in metrics of a sweep. */
@@ -62,7 +62,7 @@ public final class BatchWorlds implements AutoCloseable {
         }
     }
 
-    /** {@code count} worlds of {@code spec}, as {@code settings} says. Every world starts with seed {@code spec.seed() + w}. */
+    /** {@code count} worlds of {@code spec}, as {@code settings} says; world w starts with seed {@code seed + w}. */
     public BatchWorlds(WorldSpec spec, int count, Settings settings) throws IOException {
         this.spec = spec;
         List<RobotProperties> p = new ArrayList<>();
@@ -173,7 +173,7 @@ public final class BatchWorlds implements AutoCloseable {
         return robots;
     }
 
-    /** The most sonars of a robot of the world: each robot's row of {@link #sonar()} is this long (0 beyond its own). */
+    /** The most sonars of a robot of the world: each robot's row of {@link #sonar()} is this long (0s past its own). */
     public int sonars() {
         return sonars;
     }

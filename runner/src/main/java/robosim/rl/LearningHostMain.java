@@ -194,9 +194,10 @@ public final class LearningHostMain implements Callable<Integer> {
                 BatchLink link = new BatchLink(socket, batch, watch);
                 try {
                     link.welcome(key);
-                } catch (ProtocolException e) { // (a stranger: refused, and the learner still awaited until the deadline)
+                } catch (ProtocolException e) { // (a stranger: refused; the learner awaited until the deadline)
                     if (++refused <= MAX_LOGGED_REFUSALS) {
-                        LOG.warn("a hello from {} refused: {}{}", socket.getInetAddress().getHostAddress(), e.getMessage(),
+                        LOG.warn("a hello from {} refused: {}{}", socket.getInetAddress().getHostAddress(),
+                                e.getMessage(),
                                 refused == MAX_LOGGED_REFUSALS ? " (further refusals are not logged)" : "");
                     }
                     continue;
@@ -206,7 +207,8 @@ public final class LearningHostMain implements Callable<Integer> {
                 try {
                     steps = link.serve();
                 } catch (IOException e) {
-                    System.err.println("learning-host: the learning link failed: " + Printable.of(e.getMessage(), 1000));
+                    System.err.println("learning-host: the learning link failed: "
+                            + Printable.of(e.getMessage(), 1000));
                     return 1;
                 }
                 double seconds = (System.nanoTime() - start) / 1e9;
