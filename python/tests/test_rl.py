@@ -96,11 +96,13 @@ def test_a_world_whose_episode_ended_begins_again_at_the_next_step() -> None:
             assert not terminated.any()
             assert truncated.all() == (k == 2)
         assert np.allclose(total[:, 0], infos["metrics"]["distance_m"]), "the metric's gains add up to it"
+        last = infos["metrics"]["distance_m"]
         assert infos["active"].all(), "the last step is still one of the episode's"
         observations, rewards, terminated, truncated, infos = env.step(forward)
         assert infos["reset"].tolist() == [True, True]
         assert not infos["active"].any(), "a step that begins an episode is none of a robot's"
         assert not rewards.any() and not truncated.any()
+        assert np.allclose(last, total[:, 0]), "the episode's last metrics, as they were given"
         assert np.array_equal(observations["sonar"], start["sonar"]), "the file's headings: the same start"
         _, rewards, *_ = env.step(forward)
         assert (rewards > 0).all()

@@ -50,8 +50,9 @@ class Transition:
     steps: np.ndarray
 
 
-#: A reward: an array broadcastable to (K, N) from a transition, or the name of a built-in metric whose increase in a
-#: step every robot of the world gets (``"area_covered"``: a share of the arena's cells newly visited).
+#: A reward: an array broadcastable to (K, N) from a transition ((K, N); (K, 1), a world's for each of its robots; or
+#: a number), or the name of a built-in metric whose increase in a step every robot of the world gets
+#: (``"area_covered"``: a share of the arena's cells newly visited).
 Reward = Callable[[Transition], np.ndarray] | str | None
 #: Which robots' episodes end (True where one does): an array broadcastable to (K, N) of bools.
 Terminate = Callable[[Transition], np.ndarray] | None
@@ -149,6 +150,7 @@ class VectorEnv:
         self._steps += 1
         self._first_end -= 1
         if again:
+            previous = previous.copy()  # (the array the last step gave out, as infos["metrics"], stays as it was)
             previous[again] = metrics[again]
             self._steps[again] = 0
             self._done[again] = False
@@ -175,6 +177,8 @@ class VectorEnv:
             self._any_done = bool(self._done.any())
             ended = np.flatnonzero(self._done.all(axis=1)).tolist() if self._any_done else []
             self._ended = {w: int(self._generators[w].integers(2**62)) for w in ended}
+            self._metrics = metrics
+            self.last_pose = batch.pose
             if ended and self.welcome.episode_metric is not None:
                 values = self.host.measure(ended)
                 measured = np.full(self.num_worlds, np.nan)

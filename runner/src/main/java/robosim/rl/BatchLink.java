@@ -369,7 +369,9 @@ public final class BatchLink {
         for (int i = 0; i < n; i++) {
             try {
                 values[i] = batch.measure(which[i]);
-            } catch (IOException | RuntimeException e) { // (a metric class of one's own may throw anything)
+            } catch (VirtualMachineError e) {
+                throw e;
+            } catch (IOException | RuntimeException | Error e) { // (a metric class of one's own may throw anything)
                 throw new BadCall("value", "metric " + batch.episodeMetric().name() + " of world " + which[i] + ": "
                         + oneLine(e.toString()));
             }

@@ -51,7 +51,7 @@ public final class BatchWorlds implements AutoCloseable {
      * @param messageSize numbers in a robot's message (0: none)
      * @param randomHeadings the robots' start headings drawn from each episode's seed
      * @param areaCellM the side of {@code area_covered}'s cells, m
-     * @param threads threads that step the worlds (at most the worlds)
+     * @param threads threads that step the worlds (at most the worlds; no more than the cores, {@link StepCrew})
      * @param episodeMetric a metric of each episode's recording ({@link #measure}), or null
      */
     public record Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
@@ -113,15 +113,17 @@ public final class BatchWorlds implements AutoCloseable {
      * stay as they are.
      */
     public void step(float[] actions, boolean[] reset, long[] seeds) throws IOException {
-        if (crew == null) {
-            stepShare(0, actions, reset, seeds);
-            return;
-        }
         try {
-            crew.run(share -> stepShare(share, actions, reset, seeds));
-        } catch (IOException | RuntimeException e) { // (a ProtocolException among them)
+            if (crew == null) {
+                stepShare(0, actions, reset, seeds);
+            } else {
+                crew.run(share -> stepShare(share, actions, reset, seeds));
+            }
+        } catch (IOException e) { // (a ProtocolException among them)
             throw e;
-        } catch (Exception e) {
+        } catch (VirtualMachineError e) {
+            throw e;
+        } catch (Exception | Error e) { // (a world that cannot go on: said as one failure, whatever it was)
             throw new IllegalStateException("a world's step failed: " + e, e);
         }
     }

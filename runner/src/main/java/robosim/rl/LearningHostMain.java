@@ -85,8 +85,8 @@ public final class LearningHostMain implements Callable<Integer> {
             + "class on the class path, as a sweep's (default: none).")
     String episodeMetric;
 
-    @Option(names = "--threads", description = "Threads that step the worlds (default: the machine's cores; more "
-            + "than the cores is slower: a thread spins a little between steps).")
+    @Option(names = "--threads", description = "Threads that step the worlds, at most the machine's cores (a thread "
+            + "spins a little between steps) (default: the cores).")
     Integer threads;
 
     @Option(names = "--port", defaultValue = "0", description = "The learning link's port on loopback "
@@ -230,8 +230,10 @@ public final class LearningHostMain implements Callable<Integer> {
         if (messageSize < 0 || messageSize > 64) {
             return "--message-size must be 0 to 64, got " + messageSize;
         }
-        if (threads != null && threads < 1) {
-            return "--threads must be >= 1, got " + threads;
+        int cores = Runtime.getRuntime().availableProcessors();
+        if (threads != null && (threads < 1 || threads > cores)) {
+            return "--threads must be 1 to " + cores + " (this machine's cores: a helper spins between steps), got "
+                    + threads;
         }
         if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
             return "--area-cell-m must be > 0, got " + areaCellM;

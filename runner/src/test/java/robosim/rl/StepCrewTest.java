@@ -8,8 +8,12 @@ import static org.junit.jupiter.api.Assertions.assertTrue;
 import java.io.IOException;
 import java.util.concurrent.atomic.AtomicIntegerArray;
 import java.util.concurrent.locks.LockSupport;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.Timeout;
 
+@Timeout(value = 5, unit = TimeUnit.MINUTES, threadMode = Timeout.ThreadMode.SEPARATE_THREAD) // (a hang fails, never blocks)
 class StepCrewTest {
     @Test
     void everyShareOfEveryStepRunsOnceOnItsOwnThreadWhetherTheHelpersSpinOrPark() throws Exception {
@@ -47,5 +51,40 @@ class StepCrewTest {
             crew.run(share -> ran[share] = true);
             assertTrue(ran[0] && ran[1]);
         }
+    }
+
+    @Test
+    void bothSharesFailingAreOneFailureWithTheOtherSuppressedInIt() {
+        try (StepCrew crew = new StepCrew(2)) {
+            IllegalArgumentException mine = assertThrows(IllegalArgumentException.class, () -> crew.run(share -> {
+                throw share == 0 ? new IllegalArgumentException("share 0") : new IllegalStateException("share 1");
+            }));
+            assertEquals("share 1", mine.getSuppressed()[0].getMessage());
+        }
+    }
+
+    @Test
+    void aCrewClosedDuringAStepFinishesItAndThenTakesNoMore() throws Exception {
+        StepCrew crew = new StepCrew(2);
+        CountDownLatch inStep = new CountDownLatch(1);
+        boolean[] ran = new boolean[2];
+        Thread closer = new Thread(() -> {
+            try {
+                inStep.await();
+            } catch (InterruptedException e) {
+                return;
+            }
+            crew.close();
+        }, "test-closer");
+        closer.start();
+        crew.run(share -> {
+            if (share == 0) {
+                inStep.countDown();
+                closer.join();
+            }
+            ran[share] = true;
+        });
+        assertTrue(ran[0] && ran[1], "the step handed over was run whole");
+        assertThrows(IllegalStateException.class, () -> crew.run(share -> { }));
     }
 }
