@@ -159,7 +159,7 @@ class VectorEnv:
         if again:
             active[again] = False
         transition = Transition(observations, batch.pose, batch.contact, Metrics(self.welcome.metrics, metrics),
-                                Metrics(self.welcome.metrics, previous), self._actions, self._steps)
+                                Metrics(self.welcome.metrics, previous), self._actions.copy(), self._steps.copy())
         shape = self._done.shape
         rewards = self._rewards(transition, shape)
         measured: np.ndarray | None = None
