@@ -410,7 +410,7 @@ public final class BatchLink {
 
     private void binary(String name, byte[] bytes) throws IOException {
         reply.packString(name).packBinaryHeader(bytes.length);
-        reply.writePayload(bytes);
+        reply.addPayload(bytes); // (by reference, not copied: the frame's one copy is made before the next step)
     }
 
     private ProtocolException refuse(String why) {
