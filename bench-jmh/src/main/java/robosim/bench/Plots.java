@@ -59,21 +59,12 @@ public final class Plots {
     /** Key: scenario|variant|robots|robots_in -> steps/s of each run (newest sitting only). */
     private static void readResults(Path csv, Map<String, List<Double>> runs, Map<String, List<Double>> ratios)
             throws IOException {
-        List<String> lines = Files.readAllLines(csv);
-        String newest = "";
-        for (String line : lines.subList(1, lines.size())) {
-            String sitting = line.split(",", -1)[0];
-            newest = sitting.compareTo(newest) > 0 ? sitting : newest;
-        }
-        for (String line : lines.subList(1, lines.size())) {
-            String[] f = line.split(",", -1);
-            if (f.length < 11 || !f[0].equals(newest) || f[7].isEmpty()) {
-                continue;
-            }
-            String key = f[1] + "|" + f[2] + "|" + f[3] + "|" + f[4];
-            runs.computeIfAbsent(key, k -> new ArrayList<>()).add(Double.parseDouble(f[7]));
-            if (!f[10].isEmpty()) {
-                ratios.computeIfAbsent(key, k -> new ArrayList<>()).add(Double.parseDouble(f[10]));
+        for (Map<String, String> f : ResultsCsv.newest(ResultsCsv.read(csv), "steps_per_s")) {
+            String key = f.get("scenario") + "|" + f.get("variant") + "|" + f.get("robots") + "|" + f.get("robots_in");
+            runs.computeIfAbsent(key, k -> new ArrayList<>()).add(Double.parseDouble(f.get("steps_per_s")));
+            String ratio = f.getOrDefault("ratio_to_floor", "");
+            if (!ratio.isEmpty()) {
+                ratios.computeIfAbsent(key, k -> new ArrayList<>()).add(Double.parseDouble(ratio));
             }
         }
     }

@@ -37,22 +37,16 @@ public final class SpeedPlot {
 
     public static void main(String[] args) throws IOException {
         Path dir = Path.of(args.length > 0 ? args[0] : "docs/perf");
-        List<String> lines = Files.readAllLines(dir.resolve("speed.csv"));
-        String newest = "";
-        for (String line : lines.subList(1, lines.size())) {
-            String s = line.split(",", -1)[0];
-            newest = s.compareTo(newest) > 0 ? s : newest;
-        }
+        List<Map<String, String>> rows = ResultsCsv.newest(ResultsCsv.read(dir.resolve("speed.csv")), "steps_per_s");
+        String newest = rows.isEmpty() ? "" : rows.get(0).get("sitting");
         Map<String, List<Double>> rates = new LinkedHashMap<>();
         Map<String, List<Double>> ratios = new LinkedHashMap<>();
-        for (String line : lines.subList(1, lines.size())) {
-            String[] f = line.split(",", -1);
-            if (f.length < 9 || !f[0].equals(newest) || f[5].isEmpty()) {
-                continue;
-            }
-            rates.computeIfAbsent(f[1] + "|" + f[2], k -> new ArrayList<>()).add(Double.parseDouble(f[5]));
-            if (!f[8].isEmpty()) {
-                ratios.computeIfAbsent(f[1] + "|" + f[2], k -> new ArrayList<>()).add(Double.parseDouble(f[8]));
+        for (Map<String, String> f : rows) {
+            String key = f.get("variant") + "|" + f.get("robots");
+            rates.computeIfAbsent(key, k -> new ArrayList<>()).add(Double.parseDouble(f.get("steps_per_s")));
+            String ratio = f.getOrDefault("ratio_to_floor", "");
+            if (!ratio.isEmpty()) {
+                ratios.computeIfAbsent(key, k -> new ArrayList<>()).add(Double.parseDouble(ratio));
             }
         }
         boolean peersMeasured = rates.keySet().stream().anyMatch(k -> k.startsWith(PEERS.get(0) + "|"));

@@ -7,10 +7,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
-import java.util.Locale;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.StepNumbers;
 import robosim.protocol.WorldSnapshot;
+import robosim.sweep.Csv;
 
 /**
  * Writes {@code step,robot,x_m,y_m,heading_deg,state}, one row per robot per step, from a recording viewer
@@ -45,16 +45,16 @@ final class PoseLog implements AutoCloseable {
     }
 
     /** The header of every pose log. */
-    static final String HEADER = "step,robot,x_m,y_m,heading_deg,state\n";
+    static final String HEADER = Csv.line(List.of("step", "robot", "x_m", "y_m", "heading_deg", "state"));
 
     /** One step's rows: each robot's pose, in snapshot order ({@code names}). */
     static void write(PoseUpdate u, List<String> names, java.io.Writer out) throws IOException {
+        String step = Long.toString(StepNumbers.shown(u.step()));
         for (int i = 0; i < u.count(); i++) {
             String name = names.get(i);
             String state = u.departed().contains(name) ? "gone" : u.held().contains(name) ? "held" : "running";
-            out.write(String.format(Locale.ROOT, "%d,%s,%s,%s,%s,%s%n", StepNumbers.shown(u.step()), name,
-                    Double.toString(u.xMm(i) / 1000.0), Double.toString(u.yMm(i) / 1000.0),
-                    Double.toString(u.headingDeg(i)), state));
+            out.write(Csv.line(List.of(step, name, Double.toString(u.xMm(i) / 1000.0),
+                    Double.toString(u.yMm(i) / 1000.0), Double.toString(u.headingDeg(i)), state)));
         }
     }
 

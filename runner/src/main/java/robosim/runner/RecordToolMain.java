@@ -15,6 +15,7 @@ import robosim.protocol.CommEvent;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RobotView;
 import robosim.protocol.StepNumbers;
+import robosim.sweep.Csv;
 
 /**
  * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
@@ -158,12 +159,13 @@ public final class RecordToolMain implements Callable<Integer> {
     }
 
     static void messages(RecordingReader r, BufferedWriter out) throws IOException {
-        out.write("step,from,to,text\n");
+        out.write(Csv.line(List.of("step", "from", "to", "text")));
         for (int k = 0; k < r.steps(); k++) {
             RecordingReader.Step s = r.step(k);
             for (RobotView v : s.views()) {
                 for (CommEvent m : v.delivered()) {
-                    out.write(StepNumbers.shown(s.update().step()) + "," + csv(m.from()) + "," + csv(m.to()) + "," + csv(m.payload()) + "\n");
+                    out.write(Csv.line(List.of(Long.toString(StepNumbers.shown(s.update().step())), m.from(), m.to(),
+                            m.payload())));
                 }
             }
         }
@@ -171,23 +173,18 @@ public final class RecordToolMain implements Callable<Integer> {
 
     /** Every value a robot reported, with the step whose request carried it (steps completed, as {@code poses}). */
     static void reports(RecordingReader r, BufferedWriter out) throws IOException {
-        out.write("step,robot,name,value\n");
+        out.write(Csv.line(List.of("step", "robot", "name", "value")));
         for (int k = 0; k < r.steps(); k++) {
             RecordingReader.Step s = r.step(k);
             List<String> names = r.snapshotAt(k).robotNames();
             for (RobotView v : s.views()) {
                 for (robosim.protocol.Report report : v.reports()) {
-                    out.write(StepNumbers.shown(s.update().step()) + "," + csv(v.robot() < names.size() ? names.get(v.robot())
-                            : "robot" + v.robot()) + "," + report.name() + ","
-                            + Double.toString(report.value()) + "\n");
+                    out.write(Csv.line(List.of(Long.toString(StepNumbers.shown(s.update().step())),
+                            v.robot() < names.size() ? names.get(v.robot()) : "robot" + v.robot(), report.name(),
+                            Double.toString(report.value()))));
                 }
             }
         }
-    }
-
-    /** A CSV field: quoted when it holds a comma, a quote or a line break. */
-    private static String csv(String s) {
-        return s.matches("[^,\"\r\n]*") ? s : "\"" + s.replace("\"", "\"\"") + "\"";
     }
 
     public static void main(String[] args) {

@@ -1,64 +1,61 @@
 package robosim.sweep;
 
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.MappingIterator;
+import com.fasterxml.jackson.databind.ObjectReader;
+import com.fasterxml.jackson.databind.ObjectWriter;
+import com.fasterxml.jackson.databind.SequenceWriter;
+import com.fasterxml.jackson.dataformat.csv.CsvGenerator;
+import com.fasterxml.jackson.dataformat.csv.CsvMapper;
+import com.fasterxml.jackson.dataformat.csv.CsvParser;
+import java.io.IOException;
+import java.io.Writer;
 import java.util.ArrayList;
 import java.util.List;
 
-/** The tables' CSV (RFC 4180: a field with a comma, a quote or a line break is quoted) and their numbers. */
-final class Csv {
+/**
+ * RoboSim's CSV, for every file of rows it writes or reads (a sweep's rows and tables, pose logs, record-tool's
+ * tables): RFC 4180 through jackson-dataformat-csv (a field is quoted only when it holds a comma, a quote or a line
+ * break; lines end in {@code \n}), and the numbers as the tables write them ({@link #number}).
+ */
+public final class Csv {
+    private static final CsvMapper MAPPER = CsvMapper.builder()
+            .enable(CsvGenerator.Feature.STRICT_CHECK_FOR_QUOTING) // (quoted only when it must be)
+            .enable(CsvParser.Feature.WRAP_AS_ARRAY)
+            .build();
+    private static final ObjectWriter ROW = MAPPER.writer();
+    private static final ObjectReader ROWS = MAPPER.readerForListOf(String.class);
+
     private Csv() {
     }
 
-    /** One line of {@code fields}, without its line break. */
-    static String line(List<String> fields) {
-        StringBuilder b = new StringBuilder();
-        for (int i = 0; i < fields.size(); i++) {
-            if (i > 0) {
-                b.append(',');
-            }
-            String f = fields.get(i) == null ? "" : fields.get(i);
-            if (f.indexOf(',') >= 0 || f.indexOf('"') >= 0 || f.indexOf('\n') >= 0 || f.indexOf('\r') >= 0) {
-                b.append('"').append(f.replace("\"", "\"\"")).append('"');
-            } else {
-                b.append(f);
-            }
+    /** One line of {@code fields} (null as empty), with its line break. */
+    public static String line(List<String> fields) {
+        try {
+            return ROW.writeValueAsString(fields);
+        } catch (JsonProcessingException e) {
+            throw new IllegalStateException("a list of texts is always a CSV line", e);
         }
-        return b.toString();
     }
 
-    /** The fields of one line as {@link #line} writes it; null if it is not such a line (a quote left open). */
-    static List<String> fields(String line) {
-        List<String> out = new ArrayList<>();
-        StringBuilder f = new StringBuilder();
-        boolean quoted = false;
-        for (int i = 0; i < line.length(); i++) {
-            char c = line.charAt(i);
-            if (quoted) {
-                if (c == '"' && i + 1 < line.length() && line.charAt(i + 1) == '"') {
-                    f.append('"');
-                    i++;
-                } else if (c == '"') {
-                    quoted = false;
-                } else {
-                    f.append(c);
-                }
-            } else if (c == '"') {
-                quoted = true;
-            } else if (c == ',') {
-                out.add(f.toString());
-                f.setLength(0);
-            } else {
-                f.append(c);
+    /** Writes rows, one a call, to {@code out}; closing it flushes them and closes {@code out}. */
+    public static SequenceWriter writer(Writer out) throws IOException {
+        return ROW.writeValues(out);
+    }
+
+    /** Every row of {@code text} (the header too, if it has one); an IOException when it is not CSV (a quote left open). */
+    public static List<List<String>> rows(String text) throws IOException {
+        List<List<String>> out = new ArrayList<>();
+        try (MappingIterator<List<String>> it = ROWS.readValues(text)) {
+            while (it.hasNextValue()) {
+                out.add(it.nextValue());
             }
         }
-        if (quoted) {
-            return null;
-        }
-        out.add(f.toString());
         return out;
     }
 
     /** A number as the tables write it: a whole number without a fraction, else the shortest decimal that reads back as the same double (Java's). */
-    static String number(double v) {
+    public static String number(double v) {
         if (Double.isNaN(v)) {
             return "";
         }

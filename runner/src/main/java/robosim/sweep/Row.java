@@ -47,21 +47,23 @@ record Row(Map<String, String> values) {
     /** Writes this row into {@code file} at once (a temporary file beside it, renamed over it). */
     void write(Path file) throws IOException {
         Path temporary = file.resolveSibling("." + file.getFileName() + ".tmp-" + ProcessHandle.current().pid());
-        String text = Csv.line(new ArrayList<>(values.keySet())) + "\n" + Csv.line(new ArrayList<>(values.values())) + "\n";
+        String text = Csv.line(new ArrayList<>(values.keySet())) + Csv.line(new ArrayList<>(values.values()));
         Files.writeString(temporary, text, StandardCharsets.UTF_8);
         Files.move(temporary, file, StandardCopyOption.ATOMIC_MOVE, StandardCopyOption.REPLACE_EXISTING);
     }
 
     /** The row in {@code file}; an IOException naming it when it is not a row. */
     static Row read(Path file) throws IOException {
-        List<String> lines;
+        List<List<String>> lines;
         try {
-            lines = Files.readAllLines(file, StandardCharsets.UTF_8);
+            lines = Csv.rows(Files.readString(file, StandardCharsets.UTF_8));
         } catch (java.nio.charset.CharacterCodingException e) {
             throw new IOException(file + ": not a run's row (bytes that are not UTF-8)");
+        } catch (com.fasterxml.jackson.core.JacksonException e) {
+            lines = List.of();
         }
-        List<String> names = lines.size() == 2 ? Csv.fields(lines.get(0)) : null;
-        List<String> fields = lines.size() == 2 ? Csv.fields(lines.get(1)) : null;
+        List<String> names = lines.size() == 2 ? lines.get(0) : null;
+        List<String> fields = lines.size() == 2 ? lines.get(1) : null;
         if (names == null || fields == null || names.size() != fields.size() || !names.containsAll(FIRST)) {
             throw new IOException(file + ": not a run's row (a header line and a value line)");
         }

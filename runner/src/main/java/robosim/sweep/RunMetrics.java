@@ -124,7 +124,7 @@ public final class RunMetrics {
     public static String csv(Map<String, Double> metrics) {
         List<String> values = new java.util.ArrayList<>();
         metrics.values().forEach(v -> values.add(Csv.number(v)));
-        return Csv.line(new java.util.ArrayList<>(metrics.keySet())) + "\n" + Csv.line(values) + "\n";
+        return Csv.line(new java.util.ArrayList<>(metrics.keySet())) + Csv.line(values);
     }
 
     /** Why cells of {@code areaCellM} are too many for {@code arena}'s {@code area_covered}, or null. */

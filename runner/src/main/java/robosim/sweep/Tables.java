@@ -124,13 +124,13 @@ final class Tables {
 
     /** Writes {@code runs.csv} and {@code summary.csv} into {@code dir}. */
     void write(Path dir) throws IOException {
-        StringBuilder runs = new StringBuilder(Csv.line(columns)).append('\n');
+        StringBuilder runs = new StringBuilder(Csv.line(columns));
         for (Row r : rows) {
             List<String> line = new ArrayList<>();
             for (String c : columns) {
                 line.add(r.values().getOrDefault(c, ""));
             }
-            runs.append(Csv.line(line)).append('\n');
+            runs.append(Csv.line(line));
         }
         replace(dir.resolve("runs.csv"), runs.toString());
         List<String> header = new ArrayList<>(sweep.values().keySet());
@@ -138,7 +138,7 @@ final class Tables {
         for (String m : metrics) {
             header.addAll(List.of(m + "_mean", m + "_sd", m + "_ci95_low", m + "_ci95_high"));
         }
-        StringBuilder summary = new StringBuilder(Csv.line(header)).append('\n');
+        StringBuilder summary = new StringBuilder(Csv.line(header));
         byCombination.forEach((combination, stats) -> {
             List<String> line = new ArrayList<>(combination.values());
             int[] n = counts.get(combination);
@@ -152,7 +152,7 @@ final class Tables {
                 line.add(ci == null ? "" : Csv.number(ci[0]));
                 line.add(ci == null ? "" : Csv.number(ci[1]));
             }
-            summary.append(Csv.line(line)).append('\n');
+            summary.append(Csv.line(line));
         });
         replace(dir.resolve("summary.csv"), summary.toString());
     }

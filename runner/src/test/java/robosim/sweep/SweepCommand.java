@@ -30,11 +30,16 @@ record SweepCommand(int code, String err) {
         return f;
     }
 
+    /** The fields of one CSV line. */
+    static List<String> fields(String line) throws java.io.IOException {
+        return Csv.rows(line).get(0);
+    }
+
     /** The lines of a runs.csv without their last column, {@code wall_s}. */
-    static List<String> withoutWallTime(List<String> csv) {
+    static List<String> withoutWallTime(List<String> csv) throws java.io.IOException {
         List<String> out = new ArrayList<>();
         for (String line : csv) {
-            List<String> f = Csv.fields(line);
+            List<String> f = SweepCommand.fields(line);
             out.add(String.join(",", f.subList(0, f.size() - 1)));
         }
         return out;

@@ -34,7 +34,7 @@ class SweepFailuresTest {
         assertEquals(3, runs.size(), "both runs have rows: " + runs);
         String reason = "parameter speed is 'fast', not a number";
         for (String line : runs.subList(1, 3)) {
-            List<String> f = Csv.fields(line);
+            List<String> f = SweepCommand.fields(line);
             assertEquals(List.of("failed", "4"), f.subList(4, 6), line);
             assertTrue(f.get(f.size() - 2).contains(reason), line);
         }
@@ -70,9 +70,9 @@ class SweepFailuresTest {
         assertTrue(r.err().contains("no robot reported 'turnz' (reported: turns)"), r.err());
         assertTrue(r.err().contains("no robot reported 'turnz' in any run"), r.err());
         List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
-        List<String> header = Csv.fields(runs.get(0));
+        List<String> header = SweepCommand.fields(runs.get(0));
         for (String line : runs.subList(1, runs.size())) {
-            List<String> f = Csv.fields(line);
+            List<String> f = SweepCommand.fields(line);
             List<Double> each = new ArrayList<>();
             for (int c = 0; c < header.size(); c++) {
                 if (header.get(c).matches("turns\\.w[0-9]") && !f.get(c).isEmpty()) {
@@ -109,18 +109,18 @@ class SweepFailuresTest {
         assertEquals(1, r.code(), r.err());
         List<String> runs = Files.readAllLines(out.resolve("runs.csv"));
         assertEquals(5, runs.size(), String.join("\n", runs));
-        List<String> stand = Csv.fields(runs.get(1));
+        List<String> stand = SweepCommand.fields(runs.get(1));
         assertEquals(List.of("stand", "ok", "0"), stand.subList(3, 6), runs.get(1));
-        List<String> exit = Csv.fields(runs.get(2));
+        List<String> exit = SweepCommand.fields(runs.get(2));
         assertEquals(List.of("exit", "failed", "7"), exit.subList(3, 6), runs.get(2));
         assertTrue(exit.get(exit.size() - 2).contains("its warm JVM exited with code 7 during the run"), runs.get(2));
-        List<String> leave = Csv.fields(runs.get(3));
+        List<String> leave = SweepCommand.fields(runs.get(3));
         assertEquals(List.of("leave", "failed"), leave.subList(3, 5), runs.get(3));
         // (its control code ends as the run does; on a loaded machine it may still be ending when it is looked at)
         String why = leave.get(leave.size() - 2);
         assertTrue(why.contains("the run left threads running 5 s after its end: never-ends")
                 || why.contains("the control code of b1 was still running after the run's end"), runs.get(3));
-        assertEquals(Csv.fields(runs.get(1)).subList(4, 10), Csv.fields(runs.get(4)).subList(4, 10),
+        assertEquals(SweepCommand.fields(runs.get(1)).subList(4, 10), SweepCommand.fields(runs.get(4)).subList(4, 10),
                 "the run after them, in a fresh worker, is the first's again (its mode stands still too)");
         assertTrue(r.err().contains("4 of 4 runs have rows, 2 failed"), r.err());
     }

@@ -37,13 +37,13 @@ class SweepTest {
                 + "area_covered,turns,mean_final_x_m,error,wall_s", runs.get(0));
         assertEquals(5, runs.size(), String.join("\n", runs));
         for (int i = 1; i < runs.size(); i++) {
-            List<String> f = Csv.fields(runs.get(i));
+            List<String> f = SweepCommand.fields(runs.get(i));
             assertEquals(List.of(Integer.toString(i - 1), i % 2 == 1 ? "1" : "2", "1", i <= 2 ? "300" : "900", "ok", "0",
                     "300", "6"), f.subList(0, 8), runs.get(i));
             assertTrue(Double.parseDouble(f.get(10)) > 0 && Double.parseDouble(f.get(12)) >= 0, runs.get(i));
         }
-        assertNotEquals(Csv.fields(runs.get(1)).get(10), Csv.fields(runs.get(3)).get(10), "speed changes the distance");
-        assertNotEquals(Csv.fields(runs.get(1)).get(10), Csv.fields(runs.get(2)).get(10), "the seed changes the run");
+        assertNotEquals(SweepCommand.fields(runs.get(1)).get(10), SweepCommand.fields(runs.get(3)).get(10), "speed changes the distance");
+        assertNotEquals(SweepCommand.fields(runs.get(1)).get(10), SweepCommand.fields(runs.get(2)).get(10), "the seed changes the run");
         List<String> summary = Files.readAllLines(out.resolve("summary.csv"));
         assertEquals(3, summary.size());
         assertTrue(summary.get(0).startsWith("speed,runs,failed,distance_m_mean,distance_m_sd,distance_m_ci95_low,"
@@ -58,7 +58,7 @@ class SweepTest {
         Path recording = out.resolve("recordings").resolve("run-000002.rec");
         Map<String, Double> again = RunMetrics.of(recording, SweepFile.read(spec).metrics(),
                 RunMetrics.DEFAULT_AREA_CELL_M);
-        List<String> row = Csv.fields(runs.get(3));
+        List<String> row = SweepCommand.fields(runs.get(3));
         assertEquals(List.of(row.get(10), row.get(11), row.get(12), row.get(13)),
                 again.values().stream().map(Csv::number).toList());
 
