@@ -9,8 +9,6 @@ import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.net.Socket;
 import java.nio.ByteOrder;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import java.util.List;
 import org.msgpack.core.MessageBufferPacker;
 import org.msgpack.core.MessagePack;
@@ -18,6 +16,7 @@ import org.msgpack.core.MessagePackException;
 import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.ValueType;
 import robosim.hardware.link.LinkFrames;
+import robosim.hardware.link.LinkHello;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotProperties;
@@ -26,7 +25,7 @@ import robosim.protocol.SonarSpec;
 /**
  * The learning link (python/README.md, "Learning controllers"): a learner in another process steps a
  * {@link BatchWorlds} over one connection, in the robot link's frames ({@link LinkFrames}): a hello
- * {@code {link: "robosim-batch-link", version: 1, key}} within {@link #HELLO_DEADLINE_MS}, the welcome (the worlds,
+ * {@code {link: "robosim-batch-link", version: 1, key}} within {@link LinkHello#DEADLINE_MS} ({@link LinkHello}), the welcome (the worlds,
  * robots and their limits, the arrays' shapes), then one request and one reply a step:
  * <ul>
  * <li>{@code ["step", ACTIONS, RESETS]}: ACTIONS a binary of float32 (little-endian), world by world, robot by robot,
@@ -48,8 +47,8 @@ import robosim.protocol.SonarSpec;
 public final class BatchLink {
     public static final String NAME = "robosim-batch-link";
     public static final int VERSION = 1;
-    public static final long HELLO_DEADLINE_MS = 10_000;
-    private static final int MAX_HELLO_FIELDS = 16;
+    /** What its hello must be: the link's name and version. */
+    private static final LinkHello.Link HELLO = new LinkHello.Link(NAME, "learning link", VERSION, "learner", List.of());
     private static final int MAX_TEXT = 1000;
     private static final VarHandle FLOAT = MethodHandles.byteArrayViewVarHandle(float[].class, ByteOrder.LITTLE_ENDIAN);
 
@@ -92,46 +91,7 @@ public final class BatchLink {
      * @throws ProtocolException the refusal
      */
     void welcome(String key) throws IOException {
-        byte[] frame = LinkFrames.hello(in, socket, HELLO_DEADLINE_MS);
-        if (frame == null) {
-            throw new ProtocolException("the learner closed the link before its hello");
-        }
-        String link = null;
-        String given = null;
-        Long version = null;
-        try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
-            if (u.getNextFormat().getValueType() != ValueType.MAP) {
-                throw refuse("a hello is a map (link, version, key)");
-            }
-            int fields = u.unpackMapHeader();
-            if (fields > MAX_HELLO_FIELDS) {
-                throw refuse("a hello of " + fields + " fields (at most " + MAX_HELLO_FIELDS + ")");
-            }
-            for (int i = 0; i < fields; i++) {
-                String name = text(u);
-                switch (name == null ? "" : name) {
-                    case "link" -> link = text(u);
-                    case "version" -> version = u.getNextFormat().getValueType() == ValueType.INTEGER ? u.unpackLong()
-                            : null;
-                    case "key" -> given = text(u);
-                    default -> u.skipValue();
-                }
-            }
-        } catch (MessagePackException e) {
-            throw refuse("a hello that is not MessagePack: " + oneLine(e.getMessage()));
-        }
-        if (!NAME.equals(link)) {
-            throw refuse("not a learning link's hello (link \"" + Printable.of(link, 40) + "\", not \"" + NAME + "\")");
-        }
-        if (version == null || version != VERSION) {
-            throw refuse("learning link version " + version + " is not supported (this simulator speaks " + VERSION
-                    + ")");
-        }
-        if (key != null && (given == null || !MessageDigest.isEqual(key.getBytes(StandardCharsets.UTF_8),
-                given.getBytes(StandardCharsets.UTF_8)))) {
-            throw refuse(given == null ? "a hello without the key this link was started with"
-                    : "a hello with another key than this link was started with");
-        }
+        LinkHello.read(HELLO, socket, in, out, key);
         LinkFrames.write(out, welcomeFrame());
     }
 
@@ -411,26 +371,6 @@ public final class BatchLink {
     private void binary(String name, byte[] bytes) throws IOException {
         reply.packString(name).packBinaryHeader(bytes.length);
         reply.addPayload(bytes); // (by reference, not copied: the frame's one copy is made before the next step)
-    }
-
-    private ProtocolException refuse(String why) {
-        try {
-            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
-            p.packMapHeader(1).packString("error").packString(why);
-            LinkFrames.write(out, p.toByteArray());
-        } catch (IOException gone) {
-            // (the refusal stands whether the learner hears it or not)
-        }
-        return new ProtocolException(why);
-    }
-
-    private static String text(MessageUnpacker u) throws IOException {
-        if (u.getNextFormat().getValueType() != ValueType.STRING) {
-            u.skipValue();
-            return null;
-        }
-        String s = u.unpackString();
-        return s.length() > MAX_TEXT ? s.substring(0, MAX_TEXT) : s;
     }
 
     private static void pack(MessageBufferPacker p, String s) {

@@ -135,16 +135,27 @@ class BatchLinkTest {
     @Test
     void aHelloWithoutTheKeyOrOfAnotherLinkIsRefusedAndAnsweredWhy() throws Exception {
         for (String[] c : new String[][] {{"wrong", "a hello with another key than this link was started with"},
-                {null, "not a learning link's hello (link \"robosim-robot-link\", not \"robosim-batch-link\")"}}) {
+                {"robot", "not a learning link's hello (link \"robosim-robot-link\", not \"robosim-batch-link\")"},
+                {"more", "a hello frame holds more than its map"},
+                {"version", "version is not a whole number"}}) {
             Future<Long> served = serve("k1");
             try (Socket s = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort())) {
                 DataOutputStream out = new DataOutputStream(s.getOutputStream());
-                if (c[0] != null) {
-                    hello(out, c[0]);
-                } else {
-                    MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
-                    p.packMapHeader(2).packString("link").packString("robosim-robot-link").packString("version")
-                            .packInt(1);
+                MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+                switch (c[0]) {
+                    case "robot" -> p.packMapHeader(2).packString("link").packString("robosim-robot-link")
+                            .packString("version").packInt(1);
+                    case "more" -> p.packMapHeader(3).packString("link").packString(BatchLink.NAME).packString("version")
+                            .packInt(1).packString("key").packString("k1").packInt(0); // (the learning link's hello,
+                            // checked as strictly as the robot link's: LinkHello)
+                    case "version" -> p.packMapHeader(3).packString("link").packString(BatchLink.NAME)
+                            .packString("version").packString("1").packString("key").packString("k1");
+                    default -> {
+                        hello(out, c[0]);
+                        p = null;
+                    }
+                }
+                if (p != null) {
                     LinkFrames.write(out, p.toByteArray());
                 }
                 assertEquals("{\"error\":\"" + c[1].replace("\"", "\\\"") + "\"}",

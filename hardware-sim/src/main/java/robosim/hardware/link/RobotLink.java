@@ -6,8 +6,6 @@ import java.io.DataInputStream;
 import java.io.DataOutputStream;
 import java.io.IOException;
 import java.net.Socket;
-import java.nio.charset.StandardCharsets;
-import java.security.MessageDigest;
 import java.util.List;
 import org.msgpack.core.MessageBufferPacker;
 import org.msgpack.core.MessageFormat;
@@ -27,7 +25,7 @@ import robosim.protocol.ProtocolException;
  * The robot link: one robot's API served to control code in another process, in any language, over a socket of
  * length-prefixed MessagePack frames ({@link LinkFrames}; hardware-sim/README.md, "The robot link"). The controller
  * says hello ({@code {"link": "robosim-robot-link", "version": 1, "robot": NAME}}) within
- * {@link #HELLO_DEADLINE_MS}; the link answers with the robot's facts ({@code {"link", "version", "robot", "step_ms",
+ * {@link LinkHello#DEADLINE_MS} ({@link LinkHello}); the link answers with the robot's facts ({@code {"link", "version", "robot", "step_ms",
  * "robots", "seed"}}) or {@code {"error": WHY}} and closes. Then each call of the robot API is one request, an array
  * {@code [CALL, ARG...]}, and one reply, {@code ["ok", RESULT]} or {@code ["error", KIND, WHY]}: the Hardware
  * Simulator keeps the time, so {@code ["move", 2000]} is answered once the robot has moved (or touched something),
@@ -42,14 +40,13 @@ public final class RobotLink {
     public static final String NAME = "robosim-robot-link";
     /** The link's version: a controller of another is refused with both in one line. */
     public static final int VERSION = 1;
-    /** How long a controller has from its connection to its whole hello, ms. */
-    public static final long HELLO_DEADLINE_MS = 10_000;
-    /** The longest text a robot name, a call's name or a hello's field may have, characters. */
+    /** What its hello must be: the link's name and version, and the robot's name. */
+    private static final LinkHello.Link HELLO = new LinkHello.Link(NAME, "robot link", VERSION, "controller",
+            List.of("robot"));
+    /** The longest text a robot name or a call's name may have, characters. */
     private static final int MAX_NAME = 256;
     /** The longest text argument, characters: a message's text (at most the wire's string, in bytes) fits. */
     private static final int MAX_TEXT = Limits.MAX_UTF_BYTES;
-    /** The most fields a hello may have (version 1 has three). */
-    private static final int MAX_HELLO_FIELDS = 16;
     /** The longest reason in an error reply, characters. */
     private static final int MAX_REASON = 1000;
 
@@ -105,7 +102,8 @@ public final class RobotLink {
 
     /**
      * As {@link #serve(Socket, Robot)}, for a controller this simulator started: its hello must carry {@code key}
-     * (a secret it was given) as {@code "key"}, or it is refused ({@link HelloRefused}) before anything is served.
+     * (a secret it was given) as {@code "key"}, or it is refused ({@link LinkHello.HelloRefused}) before anything is
+     * served.
      */
     public static void serve(Socket socket, Robot robot, String key) throws IOException, InterruptedException {
         try (socket) {
@@ -125,66 +123,11 @@ public final class RobotLink {
     }
 
     private void welcome(String wanted) throws IOException {
-        byte[] frame;
-        try {
-            frame = LinkFrames.hello(in, socket, HELLO_DEADLINE_MS);
-        } catch (ProtocolException e) {
-            if (Thread.currentThread().isInterrupted()) {
-                throw e; // (the simulation's end, not the controller's doing)
-            }
-            throw new HelloRefused(e.getMessage());
-        } // (any other IOException: this thread was interrupted, as above)
-        if (frame == null) {
-            throw new HelloRefused("the controller closed the link before its hello");
-        }
-        String link = null;
-        String robotName = null;
-        String given = null;
-        Long version = null;
-        try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
-            if (u.getNextFormat().getValueType() != ValueType.MAP) {
-                throw refuse("a hello is a map (link, version, robot)");
-            }
-            int fields = u.unpackMapHeader();
-            if (fields > MAX_HELLO_FIELDS) {
-                throw refuse("a hello of " + fields + " fields (link, version, robot: at most " + MAX_HELLO_FIELDS + ")");
-            }
-            try {
-                for (int i = 0; i < fields; i++) {
-                    String key = text(u, "a hello's key");
-                    switch (key) {
-                        case "link" -> link = text(u, "link");
-                        case "version" -> version = whole(u, "version");
-                        case "robot" -> robotName = text(u, "robot");
-                        case "key" -> given = text(u, "key");
-                        default -> u.skipValue();
-                    }
-                }
-                if (u.hasNext()) {
-                    throw new ProtocolException("a hello frame holds more than its map");
-                }
-            } catch (ProtocolException e) {
-                throw refuse(e.getMessage());
-            }
-        } catch (MessagePackException e) {
-            throw refuse("a hello that is not MessagePack: " + oneLine(e.getMessage()));
-        }
-        if (!NAME.equals(link)) {
-            throw refuse("not a robot link's hello (link \"" + Printable.of(link, 40) + "\", not \"" + NAME + "\")");
-        }
-        if (version == null) {
-            throw refuse("a hello without its version (this simulator speaks " + VERSION + ")");
-        }
-        if (version != VERSION) {
-            throw refuse("robot link version " + version + " is not supported (this simulator speaks " + VERSION + ")");
-        }
-        if (wanted != null && (given == null || !MessageDigest.isEqual(wanted.getBytes(StandardCharsets.UTF_8),
-                given.getBytes(StandardCharsets.UTF_8)))) {
-            throw refuse(given == null ? "a hello without the key this link was started with"
-                    : "a hello with another key than this link was started with");
-        }
+        LinkHello hello = LinkHello.read(HELLO, socket, in, out, wanted);
+        String robotName = hello.text("robot");
         if (!robot.name().equals(robotName)) {
-            throw refuse("this link serves robot " + robot.name() + ", not \"" + Printable.of(robotName, 40) + "\"");
+            throw hello.refuse("this link serves robot " + robot.name() + ", not \"" + Printable.of(robotName, 40)
+                    + "\"");
         }
         MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
         p.packMapHeader(6);
@@ -211,27 +154,6 @@ public final class RobotLink {
         LOG.error("{}: its controller failed:\n{}", name, String.join("\n", lines.stream().map(l -> name + "| " + l)
                 .toList()));
         return new ControllerFailure(last.isEmpty() ? "(no account)" : last);
-    }
-
-    /** Answers {@code {"error": why}} (best effort) and makes the refusal. */
-    private ProtocolException refuse(String why) {
-        try {
-            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
-            p.packMapHeader(1).packString("error").packString(why);
-            LinkFrames.write(out, p.toByteArray());
-        } catch (IOException gone) {
-            // (the refusal stands whether the controller hears it or not)
-        }
-        return new HelloRefused(why);
-    }
-
-    /** A hello refused, or none come: nothing was served (a hello that came was answered why). */
-    public static final class HelloRefused extends ProtocolException {
-        private static final long serialVersionUID = 1L;
-
-        HelloRefused(String why) {
-            super(why);
-        }
     }
 
     private void calls() throws IOException, InterruptedException {
@@ -392,24 +314,6 @@ public final class RobotLink {
         ValueType peek() throws IOException {
             return read < count ? u.getNextFormat().getValueType() : null;
         }
-    }
-
-    private static String text(MessageUnpacker u, String what) throws IOException {
-        if (u.getNextFormat().getValueType() != ValueType.STRING) {
-            throw new ProtocolException(what + " is not a text");
-        }
-        String s = u.unpackString();
-        if (s.length() > MAX_NAME) {
-            throw new ProtocolException(what + " is longer than " + MAX_NAME + " characters");
-        }
-        return s;
-    }
-
-    private static long whole(MessageUnpacker u, String what) throws IOException {
-        if (u.getNextFormat().getValueType() != ValueType.INTEGER) {
-            throw new ProtocolException(what + " is not a whole number");
-        }
-        return u.unpackLong();
     }
 
     static void strings(MessageBufferPacker p, List<String> list) throws IOException {

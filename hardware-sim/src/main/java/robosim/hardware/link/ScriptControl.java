@@ -144,7 +144,7 @@ public final class ScriptControl implements RobotControl {
             try {
                 RobotLink.serve(controller.socket(), robot, key);
                 return; // (its bye)
-            } catch (RobotLink.HelloRefused e) {
+            } catch (LinkHello.HelloRefused e) {
                 refused = e.getMessage();
                 if (strangers + 1 >= MAX_STRANGERS) {
                     throw new IOException(ended("was not heard", process, output, ": " + MAX_STRANGERS

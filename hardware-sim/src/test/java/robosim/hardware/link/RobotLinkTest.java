@@ -198,7 +198,7 @@ class RobotLinkTest {
         try (Served link = Served.of(new KnownRobot(), "s3cret")) {
             assertEquals("a hello without the key this link was started with",
                     error(link.exchange(hello(RobotLink.NAME, 1, "r1"))));
-            assertInstanceOf(RobotLink.HelloRefused.class, link.awaitEnd());
+            assertInstanceOf(LinkHello.HelloRefused.class, link.awaitEnd());
         }
         try (Served link = Served.of(new KnownRobot(), "s3cret")) {
             assertEquals("a hello with another key than this link was started with",
