@@ -58,7 +58,7 @@ public final class GeometryClient {
         try (connection) {
             connection.write(new GeometryHello());
             connection.flush();
-            Externalizable first = SimulationKeys.answerChallenge(connection, secret, "geometry");
+            Externalizable first = connection.answerChallenge(secret, "geometry");
             if (first instanceof SimulationEnd end) {
                 throw new ProtocolException(end.reason());
             }

@@ -71,7 +71,7 @@ public final class HardwareSimulator {
         connection.flush();
         Externalizable answer;
         try {
-            answer = SimulationKeys.answerChallenge(connection, secret, "robot");
+            answer = connection.answerChallenge(secret, "robot");
         } catch (IOException e) {
             connection.close(); // (e.g. asked for a secret this process does not have)
             throw e;

@@ -74,7 +74,7 @@ final class SharedLink {
         try {
             c.write(new SharedHello(robots.size()));
             c.flush();
-            SharedReplies welcomes = frame(SimulationKeys.answerChallenge(c, keys, "robot"));
+            SharedReplies welcomes = frame(c.answerChallenge(keys, "robot"));
             if (welcomes.count() == 0) { // (go on: the hellos)
                 for (HardwareSimulator sim : robots) {
                     c.write(sim.hello());

@@ -9,14 +9,17 @@ import java.io.ObjectOutput;
  * fresh random nonce the client must answer with a {@link Proof} ({@link SimulationKeys}).
  */
 public final class Challenge implements java.io.Externalizable {
-    private byte[] nonce = new byte[SimulationKeys.NONCE_BYTES];
+    /** A nonce's length, bytes. */
+    public static final int NONCE_BYTES = 32;
+
+    private byte[] nonce = new byte[NONCE_BYTES];
 
     public Challenge() {
     }
 
     public Challenge(byte[] nonce) {
-        if (nonce.length != SimulationKeys.NONCE_BYTES) {
-            throw new IllegalArgumentException("a nonce has " + SimulationKeys.NONCE_BYTES + " bytes, got " + nonce.length);
+        if (nonce.length != NONCE_BYTES) {
+            throw new IllegalArgumentException("a nonce has " + NONCE_BYTES + " bytes, got " + nonce.length);
         }
         this.nonce = nonce.clone();
     }

@@ -54,7 +54,7 @@ public final class LineProof {
         }
         boolean right;
         try {
-            right = n != null && proofHex.length() == 2 * SimulationKeys.MAC_BYTES
+            right = n != null && proofHex.length() == 2 * Proof.MAC_BYTES
                     && keys.proves(role, n, HEX.parseHex(proofHex));
         } catch (IllegalArgumentException e) {
             right = false;
@@ -71,8 +71,8 @@ public final class LineProof {
         } catch (IllegalArgumentException e) {
             throw new ProtocolException("the challenge is not a hex nonce");
         }
-        if (n.length != SimulationKeys.NONCE_BYTES) {
-            throw new ProtocolException("the challenge is not a " + SimulationKeys.NONCE_BYTES + "-byte nonce");
+        if (n.length != Challenge.NONCE_BYTES) {
+            throw new ProtocolException("the challenge is not a " + Challenge.NONCE_BYTES + "-byte nonce");
         }
         return PROVE + " " + HEX.formatHex(keys.prove(role, n));
     }

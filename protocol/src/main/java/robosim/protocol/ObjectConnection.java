@@ -218,6 +218,25 @@ public final class ObjectConnection implements Closeable {
         }
     }
 
+    /**
+     * The client's side, right after it has sent its hello: reads the Environment's first answer; if it is a
+     * {@link Challenge}, answers it with this process's proof (or fails, naming what to set, when {@code secret} is
+     * null) and reads the answer after it. Returns that first real answer.
+     */
+    public Externalizable answerChallenge(SimulationKeys secret, String role) throws IOException {
+        Externalizable first = read(Externalizable.class);
+        if (!(first instanceof Challenge challenge)) {
+            return first;
+        }
+        if (secret == null) {
+            throw new ProtocolException("the Environment asks for the shared secret: set ROBOSIM_KEYS (the directory "
+                    + "scripts/make-keys.sh made), ROBOSIM_SECRET_FILE (a file holding the secret) or ROBOSIM_SECRET");
+        }
+        write(new Proof(secret.prove(role, challenge.nonce())));
+        flush();
+        return read(Externalizable.class);
+    }
+
     /** Reads one message of the expected type; anything else is a {@link ProtocolException}. */
     public <T extends Externalizable> T read(Class<T> type) throws IOException {
         if (type != lastType) { // (one type after another on a connection: no look-up per message)

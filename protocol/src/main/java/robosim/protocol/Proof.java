@@ -6,14 +6,17 @@ import java.io.ObjectOutput;
 
 /** Client -> Environment, the answer to a {@link Challenge}: an HMAC of the nonce under the shared secret. */
 public final class Proof implements java.io.Externalizable {
-    private byte[] mac = new byte[SimulationKeys.MAC_BYTES];
+    /** An HMAC-SHA256's length, bytes. */
+    public static final int MAC_BYTES = 32;
+
+    private byte[] mac = new byte[MAC_BYTES];
 
     public Proof() {
     }
 
     public Proof(byte[] mac) {
-        if (mac.length != SimulationKeys.MAC_BYTES) {
-            throw new IllegalArgumentException("a proof has " + SimulationKeys.MAC_BYTES + " bytes, got " + mac.length);
+        if (mac.length != MAC_BYTES) {
+            throw new IllegalArgumentException("a proof has " + MAC_BYTES + " bytes, got " + mac.length);
         }
         this.mac = mac.clone();
     }

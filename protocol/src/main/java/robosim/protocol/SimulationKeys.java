@@ -1,6 +1,5 @@
 package robosim.protocol;
 
-import java.io.Externalizable;
 import java.io.IOException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
@@ -24,8 +23,6 @@ import javax.crypto.spec.SecretKeySpec;
  * Immutable; any thread.
  */
 public final class SimulationKeys {
-    public static final int NONCE_BYTES = 32;
-    public static final int MAC_BYTES = 32;
     /** The shortest secret taken, characters. */
     public static final int MIN_CHARS = 16;
     private static final SecureRandom RANDOM = new SecureRandom();
@@ -114,7 +111,7 @@ public final class SimulationKeys {
 
     /** A fresh random nonce for one {@link Challenge}. */
     public static byte[] nonce() {
-        byte[] n = new byte[NONCE_BYTES];
+        byte[] n = new byte[Challenge.NONCE_BYTES];
         RANDOM.nextBytes(n);
         return n;
     }
@@ -134,26 +131,6 @@ public final class SimulationKeys {
     /** True if {@code proof} is {@code role}'s proof for {@code nonce} (constant time). */
     public boolean proves(String role, byte[] nonce, byte[] proof) {
         return MessageDigest.isEqual(prove(role, nonce), proof);
-    }
-
-    /**
-     * The client's side, right after it has sent its hello: reads the Environment's first answer; if it
-     * is a {@link Challenge}, answers it with this process's proof (or fails, naming what to set, when
-     * {@code secret} is null) and reads the answer after it. Returns that first real answer.
-     */
-    public static Externalizable answerChallenge(ObjectConnection c, SimulationKeys secret, String role)
-            throws IOException {
-        Externalizable first = c.read(Externalizable.class);
-        if (!(first instanceof Challenge challenge)) {
-            return first;
-        }
-        if (secret == null) {
-            throw new ProtocolException("the Environment asks for the shared secret: set ROBOSIM_KEYS (the directory "
-                    + "scripts/make-keys.sh made), ROBOSIM_SECRET_FILE (a file holding the secret) or ROBOSIM_SECRET");
-        }
-        c.write(new Proof(secret.prove(role, challenge.nonce())));
-        c.flush();
-        return c.read(Externalizable.class);
     }
 
     @Override

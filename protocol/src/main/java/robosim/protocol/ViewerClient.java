@@ -80,7 +80,7 @@ public final class ViewerClient implements Closeable {
             ObjectConnection c = ObjectConnection.client(s, ObjectConnection.DEFAULT_RESET_EVERY, secret, timeoutMs);
             c.write(hello);
             c.flush();
-            Externalizable first = SimulationKeys.answerChallenge(c, secret, "viewer");
+            Externalizable first = c.answerChallenge(secret, "viewer");
             if (!(first instanceof WorldSnapshot) && !(first instanceof SimulationEnd)) {
                 throw new ProtocolException("expected a WorldSnapshot, got a " + first.getClass().getSimpleName());
             }

@@ -151,17 +151,17 @@ public final class ChildProcesses implements AutoCloseable {
     }
 
     /**
-     * Starts a warm JVM ({@link RunHost}) with the common JVM options and its class-data archive: its stdout lines go
+     * Starts a warm JVM (main class {@code mainClass}, a run host) with the common JVM options and its class-data archive: its stdout lines go
      * to {@code stdoutLines} (and {@code atEnd} runs at the end of its stdout, when it has exited), its stderr is
      * kept (its last lines, {@link Child#lastErrorLines}), not copied to ours: its runs write into their logs, and
      * what the JVM itself says as it dies (out of memory) is the reason of the run it broke.
      */
-    Child startWorker(String name, Consumer<String> stdoutLines, Runnable atEnd) throws IOException {
+    Child startWorker(String name, String mainClass, Consumer<String> stdoutLines, Runnable atEnd) throws IOException {
         List<String> options = new ArrayList<>(jvmOptions);
         options.add("-XX:+ExitOnOutOfMemoryError"); // (a JVM short of memory anywhere runs nothing more)
-        ClassDataArchives.Launch archive = archives.launch(RunHost.class.getName(), classPath, options, false);
-        Child child = new Child(name, startOrFinish(new ProcessBuilder(command(archive, options,
-                RunHost.class.getName(), List.of())), archive), archive);
+        ClassDataArchives.Launch archive = archives.launch(mainClass, classPath, options, false);
+        Child child = new Child(name, startOrFinish(new ProcessBuilder(command(archive, options, mainClass,
+                List.of())), archive), archive);
         keep(child);
         child.process.onExit().thenRun(() -> {
             archive.finish();

@@ -53,7 +53,7 @@ final class ExtraViewers implements AutoCloseable {
         c.write(new ViewerHello(false));
         c.flush();
         if (secret != null) { // prove it (and take the snapshot), then never read again
-            robosim.protocol.SimulationKeys.answerChallenge(c, secret, "viewer");
+            c.answerChallenge(secret, "viewer");
         }
         return s;
     }

@@ -26,7 +26,7 @@ final class SoakClients {
                 SimulationKeys.fromEnvironment())) {
             c.write(new RobotHello(name, RobotModels.AR_ROBOT));
             c.flush();
-            java.io.Externalizable welcome = SimulationKeys.answerChallenge(c, SimulationKeys.fromEnvironment(), "robot");
+            java.io.Externalizable welcome = c.answerChallenge(SimulationKeys.fromEnvironment(), "robot");
             if (!(welcome instanceof RobotWelcome w) || !w.isAccepted()) {
                 faults.accept(name + " was refused");
                 return;
@@ -55,7 +55,7 @@ final class SoakClients {
         c.write(new ViewerHello(false));
         c.flush();
         if (secret != null) { // prove it (and take the snapshot), then never read again
-            SimulationKeys.answerChallenge(c, secret, "viewer");
+            c.answerChallenge(secret, "viewer");
         }
         return s; // never read again
     }

@@ -83,7 +83,7 @@ public final class WarmWorker implements HeadlessRuns {
     /** Starts a fresh JVM, its answers into a queue of its own. */
     private void start() throws IOException {
         BlockingQueue<String> queue = new LinkedBlockingQueue<>();
-        jvm = children.startWorker(name, line -> {
+        jvm = children.startWorker(name, RunHost.class.getName(), line -> {
             if (RunHost.parseAnswer(line) != null) { // (anything else the JVM itself printed: not an answer)
                 queue.add(line);
             }

@@ -69,7 +69,7 @@ final class Plots {
             default -> null;
         };
         if (unit == null) {
-            MetricChoice owner = SweepMain.owner(sweep, metric);
+            MetricChoice owner = sweep.owner(metric);
             if (owner != null) {
                 unit = owner.over() == null || owner.over() == MetricChoice.Over.SUM ? "reported, summed over the robots"
                         : owner.over() == MetricChoice.Over.EACH ? "reported by robot "

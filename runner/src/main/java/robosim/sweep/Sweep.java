@@ -186,4 +186,25 @@ public record Sweep(Path file, Path world, long steps, long seedFrom, long seedT
         long within = index % perCombination;
         return new Run(index, seedFrom + within / repeat, (int) (within % repeat) + 1, combination(c));
     }
+
+    /**
+     * The report choice of this sweep whose column {@code column} is, or null: a report's own column (a row writes
+     * {@code report.NAME} where a parameter has the name), {@code NAME.robot_OVER}, else {@code NAME.ROBOT} of an
+     * {@code over="each"} one.
+     */
+    MetricChoice owner(String column) {
+        MetricChoice each = null;
+        for (MetricChoice c : metrics) {
+            if (c.kind() != MetricChoice.Kind.REPORT) {
+                continue;
+            }
+            if (c.over() == MetricChoice.Over.EACH) {
+                each = each == null && column.startsWith(c.name() + ".") ? c : each;
+            } else if (column.equals(c.column(null)) || (c.over() == null && values.containsKey(c.name())
+                    && column.equals("report." + c.name()))) {
+                return c;
+            }
+        }
+        return each;
+    }
 }

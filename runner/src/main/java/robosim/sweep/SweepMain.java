@@ -259,32 +259,11 @@ public final class SweepMain implements Callable<Integer> {
         }
         for (MetricChoice c : sweep.metrics()) {
             if (c.kind() == MetricChoice.Kind.REPORT && ok.stream().noneMatch(r -> r.values().keySet().stream()
-                    .anyMatch(column -> c.equals(owner(sweep, column))))) {
+                    .anyMatch(column -> c.equals(sweep.owner(column))))) {
                 out.add(c.name());
             }
         }
         return out;
-    }
-
-    /**
-     * The report choice of {@code sweep} whose column {@code column} is, or null: a report's own column (a row writes
-     * {@code report.NAME} where a parameter has the name), {@code NAME.robot_OVER}, else {@code NAME.ROBOT} of an
-     * {@code over="each"} one.
-     */
-    static MetricChoice owner(Sweep sweep, String column) {
-        MetricChoice each = null;
-        for (MetricChoice c : sweep.metrics()) {
-            if (c.kind() != MetricChoice.Kind.REPORT) {
-                continue;
-            }
-            if (c.over() == MetricChoice.Over.EACH) {
-                each = each == null && column.startsWith(c.name() + ".") ? c : each;
-            } else if (column.equals(c.column(null)) || (c.over() == null && sweep.values().containsKey(c.name())
-                    && column.equals("report." + c.name()))) {
-                return c;
-            }
-        }
-        return each;
     }
 
     private static String name(Path spec) {
