@@ -11,6 +11,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
 import robosim.protocol.SimulationKeys;
 
 /**
@@ -143,11 +144,7 @@ public final class ControlPanelMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new ControlPanelMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("control-panel: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
+        CommandLine cl = CommandLines.of("control-panel", new ControlPanelMain());
         int code = cl.execute(args);
         if (!windowOpened) {
             System.exit(code);

@@ -101,7 +101,7 @@ class EnvironmentMainTest {
     void aSessionWithoutStepsRunsInRealTimeUnlessSpeedSaysOtherwise(String args, double expected) {
         EnvironmentMain main = new EnvironmentMain();
         new CommandLine(main).parseArgs(args.split(" "));
-        assertEquals(expected, EnvironmentMain.effectiveSpeed(main.speed, main.steps));
+        assertEquals(expected, main.run.speed(main.steps));
     }
 
     @Test

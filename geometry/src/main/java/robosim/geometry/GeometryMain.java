@@ -5,13 +5,14 @@ import java.net.Socket;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
+import robosim.protocol.ClientOptions;
 import robosim.protocol.Connector;
 import robosim.protocol.SimulationKeys;
-import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 
 /** {@code scripts/geometry.sh HOST PORT}: the Geometry process, a client of the Environment. */
@@ -28,14 +29,8 @@ public final class GeometryMain implements Callable<Integer> {
             description = "Environment geometry port (default: ${DEFAULT-VALUE}).")
     int port;
 
-    @Option(names = "--connect-timeout-s", defaultValue = "30",
-            description = "Keep trying to connect for this long, so start order does not matter "
-                    + "(default: ${DEFAULT-VALUE}).")
-    int connectTimeoutS;
-
-    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY,
-            description = "Messages between object-stream resets (default: ${DEFAULT-VALUE}).")
-    int resetEvery;
+    @Mixin
+    ClientOptions connection;
 
     @Option(names = "--split-sonar-from", paramLabel = "ROBOTS",
             description = "Split each step's sonar pass over two cores when at least this many robots ask for sonar; "
@@ -55,20 +50,22 @@ public final class GeometryMain implements Callable<Integer> {
         }
         Socket socket;
         try {
-            socket = Connector.connect(host, port, connectTimeoutS * 1000L, System.err::println);
+            socket = Connector.connect(host, port, connection.connect().millis(), System.err::println);
         } catch (IOException e) {
             System.err.println("geometry: cannot connect to " + host + ":" + port + ": " + e.getMessage());
             return e instanceof java.net.UnknownHostException ? 2 : 1;
         }
         if (socket == null) {
-            System.err.println("geometry: cannot connect to " + host + ":" + port + " within " + connectTimeoutS
+            System.err.println("geometry: cannot connect to " + host + ":" + port + " within "
+                    + connection.connect().seconds()
                     + " s (is the Environment running?)");
             return 1;
         }
         String reason;
         GeometryClient client;
         try {
-            client = new GeometryClient(socket, resetEvery, SimulationKeys.fromEnvironment(), connectTimeoutS * 1000L);
+            client = new GeometryClient(socket, connection.resetEvery(), SimulationKeys.fromEnvironment(),
+                    connection.connect().millis());
             if (splitSonarFrom != null) {
                 client.splitSonarFrom(splitSonarFrom);
             }
@@ -82,11 +79,6 @@ public final class GeometryMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new GeometryMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("geometry: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("geometry", new GeometryMain(), args);
     }
 }

@@ -6,12 +6,14 @@ import java.util.concurrent.Callable;
 import java.util.concurrent.atomic.AtomicInteger;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import picocli.CommandLine;
+
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.api.RobotControl;
+import robosim.protocol.CommandLines;
+import robosim.protocol.ClientOptions;
 import robosim.protocol.Protocol;
 
 /**
@@ -39,27 +41,13 @@ public final class MultiRobotMain implements Callable<Integer> {
     List<String> robots;
 
     @Mixin
-    ConnectOptions connect;
+    ClientOptions client;
 
-    /** How the robots' exchanges are threaded. */
-    enum Threading { ONE_THREAD, SEND_RECEIVE, SHARED }
+    @Mixin
+    ExchangeOption exchange;
 
-    @Option(names = "--exchange", defaultValue = "SHARED",
-            description = "With --connection PER_ROBOT: SHARED: one thread for every robot's exchange, in the order "
-                    + "the robots are given (list "
-                    + "them in world order; the default, fastest as measured in docs/PERFORMANCE.md); ONE_THREAD: a "
-                    + "Hardware Simulator thread per robot; SEND_RECEIVE: a sending and a receiving thread per robot.")
-    Threading exchange;
-
-    /** How the robots reach the Environment. */
-    enum Connection { SHARED, PER_ROBOT }
-
-    @Option(names = "--connection", defaultValue = "SHARED",
-            description = "SHARED: one connection for every robot, each step's requests in one frame and its responses "
-                    + "in one (the default; at most " + robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION + " robots; "
-                    + "needs the THREADS or TWO_THREADS coordinator); PER_ROBOT: a connection per robot, threaded as "
-                    + "--exchange says.")
-    Connection connection;
+    @Mixin
+    ConnectionOption connection;
 
     @Override
     public Integer call() throws Exception {
@@ -84,19 +72,21 @@ public final class MultiRobotMain implements Callable<Integer> {
             parsed.add(p);
         }
         LOG.info("{}", ControlThreads.describe());
-        if (connection == Connection.SHARED) {
+        RobotLauncher launcher = new RobotLauncher(host, port, client);
+        if (connection.given() != ConnectionOption.Connection.PER_ROBOT) {
             if (parsed.size() > robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION) {
                 System.err.println("robots: " + parsed.size() + " robots are more than one shared connection carries ("
                         + robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION + "): use --connection PER_ROBOT or "
                         + "several processes");
                 return 2;
             }
-            return runOnThisThread(parsed, true);
+            return runOnThisThread(launcher, parsed, true);
         }
-        if (exchange == Threading.SHARED) {
-            return runOnThisThread(parsed, false);
+        ExchangeOption.Threading threading = exchange.or(ExchangeOption.Threading.SHARED);
+        if (threading == ExchangeOption.Threading.SHARED) {
+            return runOnThisThread(launcher, parsed, false);
         }
-        HardwareSimulator.Exchange each = exchange == Threading.SEND_RECEIVE
+        HardwareSimulator.Exchange each = threading == ExchangeOption.Threading.SEND_RECEIVE
                 ? HardwareSimulator.Exchange.SEND_RECEIVE : HardwareSimulator.Exchange.ONE_THREAD;
         AtomicInteger failures = new AtomicInteger();
         List<HardwareSimulator> ran = java.util.Collections.synchronizedList(new ArrayList<>());
@@ -105,7 +95,7 @@ public final class MultiRobotMain implements Callable<Integer> {
             Thread t = new Thread(() -> {
                 try {
                     RobotControl control = RobotLauncher.control(p[2]);
-                    HardwareSimulator sim = RobotLauncher.connect(p[0], RobotType.byName(p[1]), host, port, connect);
+                    HardwareSimulator sim = launcher.connect(p[0], RobotType.byName(p[1]));
                     ran.add(sim);
                     sim.run(control, each);
                 } catch (Exception e) {
@@ -140,7 +130,7 @@ public final class MultiRobotMain implements Callable<Integer> {
      * Every robot's exchange on this thread ({@code exchange}): over one connection ({@code --connection SHARED}),
      * or each robot connected in turn over its own ({@code --exchange SHARED}).
      */
-    private int runOnThisThread(List<String[]> parsed, boolean oneConnection) {
+    private int runOnThisThread(RobotLauncher launcher, List<String[]> parsed, boolean oneConnection) {
         List<HardwareSimulator> sims = new ArrayList<>();
         List<RobotControl> controls = new ArrayList<>();
         try {
@@ -148,13 +138,13 @@ public final class MultiRobotMain implements Callable<Integer> {
                 controls.add(RobotLauncher.control(p[2]));
                 RobotType type = RobotType.byName(p[1]);
                 sims.add(oneConnection ? new HardwareSimulator(p[0], type)
-                        : RobotLauncher.connect(p[0], type, host, port, connect));
+                        : launcher.connect(p[0], type));
             }
-            java.net.Socket socket = oneConnection ? RobotLauncher.open(host, port, connect) : null;
+            java.net.Socket socket = oneConnection ? launcher.open() : null;
             Thread.currentThread().setName("exchange");
             if (oneConnection) {
-                SharedLink.connect(sims, socket, connect.resetEvery, robosim.protocol.SimulationKeys.fromEnvironment(),
-                        connect.connectTimeoutMs()).run(controls);
+                SharedLink.connect(sims, socket, launcher.resetEvery(), robosim.protocol.SimulationKeys.fromEnvironment(),
+                        launcher.connectTimeoutMs()).run(controls);
             } else {
                 ManyRobots.runShared(sims, controls);
             }
@@ -170,11 +160,6 @@ public final class MultiRobotMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new MultiRobotMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("robots: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("robots", new MultiRobotMain(), args);
     }
 }

@@ -3,16 +3,42 @@ package robosim.hardware;
 import java.io.IOException;
 import java.net.Socket;
 import java.net.UnknownHostException;
+import java.util.concurrent.atomic.AtomicBoolean;
 import robosim.api.RobotControl;
+import robosim.protocol.ClientOptions;
+import robosim.protocol.ConnectOptions;
 import robosim.protocol.Connector;
 import robosim.hardware.link.ScriptControl;
 import robosim.protocol.ControlClasses;
 import robosim.protocol.ControlScripts;
 import robosim.protocol.SimulationKeys;
 
-/** Starts one robot: finds its control class and type, connects, runs until the simulation ends. */
+/**
+ * Starts a process's robots: finds each one's control class and type, and connects it to the Environment at
+ * {@code host:port}, trying for the connect timeout; says once per process that it waits for the Environment.
+ */
 final class RobotLauncher {
-    private RobotLauncher() {
+    private final String host;
+    private final int port;
+    private final ConnectOptions connect;
+    private final int resetEvery;
+    private final AtomicBoolean toldWaiting = new AtomicBoolean();
+
+    RobotLauncher(String host, int port, ClientOptions client) {
+        this.host = host;
+        this.port = port;
+        this.connect = client.connect();
+        this.resetEvery = client.resetEvery();
+    }
+
+    /** Messages between the connections' stream resets. */
+    int resetEvery() {
+        return resetEvery;
+    }
+
+    /** How long a connection is tried for, ms. */
+    long connectTimeoutMs() {
+        return connect.millis();
     }
 
     /**
@@ -46,12 +72,11 @@ final class RobotLauncher {
      * an IOException whose message is one line naming the host and port and what answered there (a port of
      * another kind says which it is; one that answers nothing ends within the connect timeout).
      */
-    static HardwareSimulator connect(String name, RobotType type, String host, int port, ConnectOptions options)
-            throws IOException, InterruptedException {
+    HardwareSimulator connect(String name, RobotType type) throws IOException, InterruptedException {
         HardwareSimulator sim = new HardwareSimulator(name, type);
-        Socket socket = open(host, port, options);
+        Socket socket = open();
         try {
-            sim.connect(socket, options.resetEvery, SimulationKeys.fromEnvironment(), options.connectTimeoutMs());
+            sim.connect(socket, resetEvery, SimulationKeys.fromEnvironment(), connect.millis());
         } catch (IOException e) {
             throw new IOException(host + ":" + port + ": " + e.getMessage(), e);
         }
@@ -59,10 +84,14 @@ final class RobotLauncher {
     }
 
     /** Opens a connection to the Environment's robot port; a failure is one line naming the host and port. */
-    static Socket open(String host, int port, ConnectOptions options) throws IOException, InterruptedException {
+    Socket open() throws IOException, InterruptedException {
         Socket socket;
         try {
-            socket = Connector.connect(host, port, options.connectTimeoutMs(), options::waiting);
+            socket = Connector.connect(host, port, connect.millis(), line -> {
+                if (toldWaiting.compareAndSet(false, true)) {
+                    System.err.println(line);
+                }
+            });
         } catch (UnknownHostException e) {
             throw new UnknownHostException("cannot connect to the Environment at " + host + ":" + port + ": "
                     + e.getMessage());
@@ -71,7 +100,7 @@ final class RobotLauncher {
         }
         if (socket == null) {
             throw new IOException("cannot connect to the Environment at " + host + ":" + port + " within "
-                    + options.connectTimeoutS + " s (is it running, on that port?)");
+                    + connect.seconds() + " s (is it running, on that port?)");
         }
         return socket;
     }

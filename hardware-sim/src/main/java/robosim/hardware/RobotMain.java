@@ -5,12 +5,14 @@ import java.net.UnknownHostException;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import picocli.CommandLine;
+
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
 import robosim.api.RobotControl;
+import robosim.protocol.CommandLines;
+import robosim.protocol.ClientOptions;
 import robosim.protocol.Protocol;
 
 /** {@code scripts/robot.sh CONTROL NAME HOST PORT}: one robot process. */
@@ -41,17 +43,19 @@ public final class RobotMain implements Callable<Integer> {
     String type;
 
     @Mixin
-    ConnectOptions connect;
+    ClientOptions client;
 
-    @Option(names = "--exchange", defaultValue = "ONE_THREAD",
-            description = "ONE_THREAD: one Hardware Simulator thread sends and receives (default); SEND_RECEIVE: a "
-                    + "sending and a receiving thread (the report's two-thread Hardware Simulator).")
-    HardwareSimulator.Exchange exchange;
+    @Mixin
+    ExchangeOption exchange;
 
     @Override
     public Integer call() throws Exception {
         if (robosim.protocol.Connector.badPort(port) != null) {
             System.err.println("robot " + name + ": " + host + ":" + port + ": " + robosim.protocol.Connector.badPort(port));
+            return 2;
+        }
+        if (exchange.given() == ExchangeOption.Threading.SHARED) {
+            System.err.println("robot " + name + ": --exchange SHARED is for several robots in one process (robots.sh)");
             return 2;
         }
         RobotControl control;
@@ -65,8 +69,9 @@ public final class RobotMain implements Callable<Integer> {
         }
         LOG.info("robot {}: {}", name, ControlThreads.describe());
         try {
-            HardwareSimulator sim = RobotLauncher.connect(name, robotType, host, port, connect);
-            String reason = sim.run(control, exchange);
+            HardwareSimulator sim = new RobotLauncher(host, port, client).connect(name, robotType);
+            String reason = sim.run(control, exchange.given() == ExchangeOption.Threading.SEND_RECEIVE
+                    ? HardwareSimulator.Exchange.SEND_RECEIVE : HardwareSimulator.Exchange.ONE_THREAD);
             LOG.info("robot {}: simulation over: {}", name, reason);
             if (sim.controlFailure() != null) {
                 System.err.println("robot " + name + ": its control code failed: " + sim.controlFailure());
@@ -83,11 +88,6 @@ public final class RobotMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new RobotMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("robot: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("robot", new RobotMain(), args);
     }
 }

@@ -7,6 +7,7 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
 import robosim.examples.RobotInfo;
 
 /** The Remote Control: drives the robots listed in RobotInfo.xml from the keyboard. */
@@ -56,11 +57,7 @@ public final class RemoteControlMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new RemoteControlMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("remote-control: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
+        CommandLine cl = CommandLines.of("remote-control", new RemoteControlMain());
         int code = cl.execute(args);
         if (!windowOpened) {
             System.exit(code);

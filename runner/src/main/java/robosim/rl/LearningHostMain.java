@@ -6,32 +6,35 @@ import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.net.SocketTimeoutException;
-import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
+import robosim.protocol.CommandLines;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlCommands;
 import robosim.environment.control.ControlVerb;
 import robosim.environment.control.WebViewers;
 import robosim.environment.core.WorldSpec;
-import robosim.environment.net.Settings;
 import robosim.environment.server.Acceptors;
 import robosim.environment.server.Port;
 import robosim.environment.server.PortGuide;
 import robosim.environment.server.ServerContext;
 import robosim.environment.server.ViewerClientWorker;
+import robosim.environment.server.WebPortOption;
+import robosim.environment.ParamOption;
 import robosim.hardware.link.LinkFrames;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotModels;
+import robosim.runner.EnvOption;
+import robosim.sweep.AreaCellOption;
 import robosim.sweep.MetricChoice;
 import robosim.sweep.RunMetrics;
 import robosim.web.WebViewerServer;
@@ -53,12 +56,11 @@ public final class LearningHostMain implements Callable<Integer> {
     /** The most worlds a batch holds. */
     static final int MAX_WORLDS = 1024;
 
-    @Option(names = "--env", required = true, paramLabel = "FILE.xml", description = "The environment file.")
-    Path env;
+    @Mixin
+    EnvOption env;
 
-    @Option(names = "--param", paramLabel = "NAME=VALUE", description = "Give the environment file's parameter NAME "
-            + "this value; repeat for more.")
-    java.util.Map<String, String> params = new java.util.LinkedHashMap<>();
+    @Mixin
+    ParamOption params;
 
     @Option(names = "--worlds", defaultValue = "1", description = "Copies of the world, stepped together, 1 to "
             + MAX_WORLDS + " (default: ${DEFAULT-VALUE}).")
@@ -76,9 +78,8 @@ public final class LearningHostMain implements Callable<Integer> {
             + "(default: the file's headings).")
     boolean randomHeadings;
 
-    @Option(names = "--area-cell-m", defaultValue = "" + RunMetrics.DEFAULT_AREA_CELL_M,
-            description = "The side of area_covered's cells, m (default: ${DEFAULT-VALUE}).")
-    double areaCellM;
+    @Mixin
+    AreaCellOption areaCell;
 
     @Option(names = "--episode-metric", paramLabel = "NAME", description = "Record each world's episodes and compute "
             + "this metric of them when the learner asks (measure): a built-in metric's name or a robosim.sweep.Metric "
@@ -102,15 +103,14 @@ public final class LearningHostMain implements Callable<Integer> {
             + "pose-log.sh) on this loopback port (default: ${DEFAULT-VALUE}: none; 0: one the system picks).")
     int viewerPort;
 
-    @Option(names = "--web-port", defaultValue = "-1", description = "Serve world 0 to a browser on this loopback "
-            + "port (default: ${DEFAULT-VALUE}: none; 0: one the system picks).")
-    int webPort;
+    @Mixin
+    WebPortOption web;
 
     @Override
     public Integer call() throws Exception {
         WorldSpec spec;
         try {
-            spec = new EnvironmentLoader().load(env, params);
+            spec = new EnvironmentLoader().load(env.file(), params.values());
         } catch (EnvironmentFileException e) {
             System.err.println(e.getMessage());
             return 2;
@@ -124,21 +124,21 @@ public final class LearningHostMain implements Callable<Integer> {
         InetAddress loopback = InetAddress.getLoopbackAddress();
         MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
-                randomHeadings, areaCellM, shares, metric));
+                randomHeadings, areaCell.metres(), shares, metric));
                 ServerSocket server = new ServerSocket()) {
             server.bind(new InetSocketAddress(loopback, port), 1);
-            WatchedWorld watch = viewerPort >= 0 || webPort >= 0 ? new WatchedWorld(batch) : null;
+            WatchedWorld watch = viewerPort >= 0 || web.port() >= 0 ? new WatchedWorld(batch) : null;
             Acceptors viewers = null;
-            WebViewerServer web = null;
+            WebViewerServer browsers = null;
             try {
                 if (watch != null) {
-                    ServerContext context = ServerContext.of(null, ObjectConnection.DEFAULT_RESET_EVERY, 10_000,
-                            Settings.DEFAULT_WRITE_TIMEOUT_MS, GUIDE);
+                    ServerContext context = ServerContext.of(null, ObjectConnection.DEFAULT_RESET_EVERY,
+                            ServerContext.DEFAULT_HANDSHAKE_TIMEOUT_MS, ServerContext.DEFAULT_WRITE_TIMEOUT_MS, GUIDE);
                     viewers = new Acceptors(context, loopback, 256);
-                    viewers.bind(Port.VIEWER, Math.max(0, viewerPort), Settings.DEFAULT_MAX_CONNECTIONS,
+                    viewers.bind(Port.VIEWER, Math.max(0, viewerPort), ServerContext.DEFAULT_MAX_CONNECTIONS,
                             (s, n) -> new ViewerClientWorker(context, s, "rl-viewer[" + n + "]", watch));
-                    if (webPort >= 0) {
-                        web = WebViewers.start(webPort, loopback, viewers.port(Port.VIEWER), null, NO_COMMANDS);
+                    if (web.port() >= 0) {
+                        browsers = WebViewers.start(web.port(), loopback, viewers.port(Port.VIEWER), null, NO_COMMANDS);
                     }
                     viewers.accept();
                 }
@@ -148,7 +148,7 @@ public final class LearningHostMain implements Callable<Integer> {
             }
             System.out.println("robosim-batch-link listening on " + loopback.getHostAddress() + ":"
                     + server.getLocalPort() + (viewerPort >= 0 ? " viewers=" + viewers.port(Port.VIEWER) : "")
-                    + (web != null ? " web=" + web.port() : ""));
+                    + (browsers != null ? " web=" + browsers.port() : ""));
             System.out.flush();
             try {
                 return serve(server, batch, watch);
@@ -156,15 +156,15 @@ public final class LearningHostMain implements Callable<Integer> {
                 if (watch != null) {
                     watch.end("the learner has gone", 2000);
                 }
-                if (web != null) {
-                    web.close();
+                if (browsers != null) {
+                    browsers.close();
                 }
                 if (viewers != null) {
                     viewers.close();
                 }
             }
         } catch (ProtocolException e) {
-            System.err.println("learning-host: " + env + ": " + e.getMessage());
+            System.err.println("learning-host: " + env.file() + ": " + e.getMessage());
             return 2;
         } catch (IOException e) {
             System.err.println("learning-host: " + Printable.of(String.valueOf(e.getMessage()), 1000));
@@ -235,14 +235,16 @@ public final class LearningHostMain implements Callable<Integer> {
             return "--threads must be 1 to " + cores + " (this machine's cores: a helper spins between steps), got "
                     + threads;
         }
-        if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
-            return "--area-cell-m must be > 0, got " + areaCellM;
+        if (areaCell.problem() != null) {
+            return areaCell.problem();
         }
-        if (RunMetrics.cellProblem(spec.arena(), areaCellM) != null) {
-            return "--area-cell-m " + areaCellM + ": " + RunMetrics.cellProblem(spec.arena(), areaCellM);
+        if (RunMetrics.cellProblem(spec.arena(), areaCell.metres()) != null) {
+            return "--area-cell-m " + areaCell.metres() + ": " + RunMetrics.cellProblem(spec.arena(), areaCell.metres());
         }
-        for (String[] p : List.of(new String[] {"--port", "" + port}, new String[] {"--viewer-port", "" + viewerPort},
-                new String[] {"--web-port", "" + webPort})) {
+        if (web.problem(null) != null) {
+            return web.problem(null);
+        }
+        for (String[] p : List.of(new String[] {"--port", "" + port}, new String[] {"--viewer-port", "" + viewerPort})) {
             int v = Integer.parseInt(p[1]);
             if (v < (p[0].equals("--port") ? 0 : -1) || v > 65535) {
                 return p[0] + " must be " + (p[0].equals("--port") ? "0" : "-1") + " to 65535, got " + v;
@@ -260,14 +262,14 @@ public final class LearningHostMain implements Callable<Integer> {
             return "--accept-timeout-s must be >= 1, got " + acceptTimeoutS;
         }
         if (spec.robots().isEmpty()) {
-            return env + ": no robots: a learning environment's agents are the file's robots";
+            return env.file() + ": no robots: a learning environment's agents are the file's robots";
         }
         if (!spec.joins().isEmpty()) {
-            return env + ": robots that join during a run are not for learning (the agents are the file's robots)";
+            return env.file() + ": robots that join during a run are not for learning (the agents are the file's robots)";
         }
         for (WorldSpec.RobotSpec r : spec.robots()) {
             if (RobotModels.byName(r.type()) == null) {
-                return env + ": robot " + r.name() + ": type " + r.type() + " is not a known model";
+                return env.file() + ": robot " + r.name() + ": type " + r.type() + " is not a known model";
             }
         }
         int sonars = spec.robots().stream().mapToInt(r -> RobotModels.byName(r.type()).sonars().size()).max().orElse(0);
@@ -307,11 +309,6 @@ public final class LearningHostMain implements Callable<Integer> {
     };
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new LearningHostMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("learning-host: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("learning-host", new LearningHostMain(), args);
     }
 }

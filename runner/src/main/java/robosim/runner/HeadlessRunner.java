@@ -16,13 +16,20 @@ import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
-import robosim.environment.config.EnvironmentFileException;
-import robosim.environment.config.EnvironmentLoader;
 import robosim.api.RobotControl;
 import robosim.control.ControlClient;
-import robosim.protocol.SimulationKeys;
+import robosim.environment.Environment;
+import robosim.environment.RunOptions;
+import robosim.environment.config.EnvironmentFileException;
+import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.net.Settings;
 import robosim.environment.net.Transport;
+import robosim.environment.server.WebPortOption;
+import robosim.hardware.ConnectionOption;
+import robosim.hardware.ExchangeOption;
+import robosim.protocol.ResetOption;
+import robosim.protocol.SimulationKeys;
 
 /**
  * {@code scripts/headless.sh --env FILE --steps N}: runs a whole simulation with every part as its
@@ -38,66 +45,50 @@ public final class HeadlessRunner implements Callable<Integer> {
     /** The exit code of a run in which a robot's control code threw out of {@code run} (each is named before the summary). */
     static final int EXIT_CONTROL_FAILED = robosim.environment.control.EnvironmentHost.EXIT_CONTROL_FAILED;
 
-    @Option(names = "--env", required = true, paramLabel = "FILE", description = "The environment file.")
-    Path env;
+    @Mixin
+    EnvOption env;
 
     @Option(names = "--steps", defaultValue = "1000", description = "Steps to run (default: ${DEFAULT-VALUE}).")
     long steps;
+
+    @Mixin
+    RunOptions run;
+
+    @Option(names = "--ports", paramLabel = "ROBOT,VIEWER,GEOMETRY", split = ",",
+            description = "Environment ports (default: free ports picked by the system).")
+    List<Integer> ports;
+
+    @Mixin
+    WebPortOption web;
 
     @Option(names = "--robots-in-one-process",
             description = "Run every robot in one JVM, over one shared connection (see --connection).")
     boolean robotsInOneProcess;
 
-    /** How robots in one process connect (robots.sh's --connection). */
-    enum Connection { SHARED, PER_ROBOT }
+    @Mixin
+    ConnectionOption connection;
 
-    @Option(names = "--connection", paramLabel = "KIND",
-            description = "With --robots-in-one-process: SHARED (one connection for every robot, each step's requests "
-                    + "and responses in one frame each; the default) or PER_ROBOT (a socket each, threaded as "
-                    + "--exchange says; the default with --exchange or --coordinator SEQUENTIAL).")
-    Connection connection;
+    @Mixin
+    ExchangeOption exchange;
 
-    @Option(names = "--no-geometry", description = "Do collision and sonar inside the Environment.")
-    boolean noGeometry;
-
-    @Option(names = "--one-jvm", description = "Run the Environment, collision and sonar and every robot (its Hardware "
-            + "Simulator and control code) in one JVM, this one, through in-memory links: the same messages and results "
-            + "as separate processes, without their start-up, sockets and serialization (robots_in=one-jvm). Its JVM "
-            + "options are this script's (ROBOSIM_JAVA_OPTS), not --jvm-opt or --*-jvm-opts.")
-    boolean oneJvm;
+    @Mixin
+    ResetOption reset;
 
     @Option(names = "--pose-log", paramLabel = "FILE.csv",
             description = "Write every robot's pose after every step: step,robot,x_m,y_m,heading_deg,state (running, held or gone).")
     Path poseLog;
 
-    @Option(names = "--progress", description = "Print the step and steps/s once a second.")
-    boolean progress;
-
-    @Option(names = "--exchange", paramLabel = "THREADING",
-            description = "The robots' exchange threading: ONE_THREAD, SEND_RECEIVE, or, with "
-                    + "--robots-in-one-process, SHARED (one thread for every robot; the default there).")
-    String exchange;
-
-    @Option(names = "--reset-every", paramLabel = "N",
-            description = "Messages between object-stream resets, for every process (default: each process's own, "
-                    + "256; 0 = never, for measurement only).")
-    Integer resetEvery;
+    @Mixin
+    WatchOptions watching;
 
     @Option(names = "--viewer", description = "Open a Viewer2D window (needs a display); it stays open after the run.")
     boolean viewer;
 
     @Mixin
-    EnvironmentOptions environmentOptions = new EnvironmentOptions();
+    ExtraViewerOptions extraViewers;
 
     @Mixin
-    ExtraViewerOptions extraViewers = new ExtraViewerOptions();
-
-    @Mixin
-    ChildJvmOptions jvm = new ChildJvmOptions();
-
-    @Option(names = "--timeout-s", defaultValue = "0",
-            description = "Give up after this long (default: ${DEFAULT-VALUE} = no limit).")
-    long timeoutS;
+    ChildJvmOptions jvm;
 
     /** One JVM: the robots whose control code was still running after the end (a warm JVM must not go on). */
     private final List<String> controlStillRunning = new CopyOnWriteArrayList<>();
@@ -106,14 +97,14 @@ public final class HeadlessRunner implements Callable<Integer> {
     public Integer call() throws Exception {
         WorldSpec spec;
         try {
-            spec = new EnvironmentLoader().load(env, environmentOptions.params);
+            spec = run.world(env.file());
         } catch (EnvironmentFileException e) {
             System.err.println(e.getMessage());
             return 2;
         }
         String bad = badOptions();
         if (bad == null) {
-            bad = missingControl(env, spec);
+            bad = missingControl(env.file(), spec);
         }
         if (bad != null) {
             System.err.println(bad);
@@ -128,18 +119,25 @@ public final class HeadlessRunner implements Callable<Integer> {
         if (steps <= 0) {
             return "headless: --steps must be > 0, got " + steps;
         }
-        if (oneJvm && !jvm.all.isEmpty()) {
+        if (run.oneJvm() && !jvm.all.isEmpty()) {
             return "headless: --one-jvm runs the Environment in this JVM: give its JVM options in ROBOSIM_JAVA_OPTS, "
                     + "not --jvm-opt";
         }
-        if (oneJvm && (robotsInOneProcess || connection != null || exchange != null)) {
+        if (run.oneJvm() && (robotsInOneProcess || connection.given() != null || exchange.given() != null)) {
             return "headless: --one-jvm starts no robot process: --robots-in-one-process, --connection and --exchange "
                     + "do not apply";
         }
-        if (extraViewers.negative() || !(environmentOptions.speed >= 0)) {
-            return "headless: --speed, --live-viewers and --frozen-viewers must be >= 0";
+        if (extraViewers.negative()) {
+            return "headless: --live-viewers and --frozen-viewers must be >= 0";
         }
-        return environmentOptions.bad();
+        if (ports != null && ports.size() != 3) {
+            return "headless: --ports needs three ports ROBOT,VIEWER,GEOMETRY, got " + ports;
+        }
+        String bad = run.problem(steps);
+        if (bad == null) {
+            bad = web.problem(null);
+        }
+        return bad == null ? null : "headless: " + bad;
     }
 
     /**
@@ -182,14 +180,16 @@ public final class HeadlessRunner implements Callable<Integer> {
         CompletableFuture<Void> started = new CompletableFuture<>();
         List<String> removed = new CopyOnWriteArrayList<>();
         List<String> controlFailed = new CopyOnWriteArrayList<>(); // (one JVM: the Environment's lines)
-        List<String> environmentArgs = new ArrayList<>(environmentOptions.args(env, steps, noGeometry, resetArgs()));
         // one JVM: its robots are there at once, so when the watch must see step 0 (the pose log's, the progress's
         // viewer) it holds before step 0 until the watch has its snapshot; otherwise (a sweep's runs) it starts at once
-        boolean holdForViewers = poseLog != null || progress;
-        if (oneJvm) {
-            environmentArgs.add("--one-jvm");
-            if (holdForViewers) {
-                environmentArgs.add("--start-paused");
+        boolean holdForViewers = poseLog != null || watching.progress();
+        Environment.Plan plan = null;
+        if (run.oneJvm()) {
+            try {
+                plan = planInThisJvm(spec, holdForViewers);
+            } catch (IllegalArgumentException | IOException e) {
+                System.err.println("environment: " + e.getMessage());
+                return 2;
             }
         }
         java.util.function.Consumer<String> lines = line -> {
@@ -215,9 +215,9 @@ public final class HeadlessRunner implements Callable<Integer> {
             }
         };
         // one JVM: the Environment (and with it every robot) runs in this one, so a run starts one JVM
-        Process environment = oneJvm ? InJvmEnvironment.start(environmentArgs, lines, jvm.profile)
+        Process environment = plan != null ? InJvmEnvironment.start(plan, lines, jvm.profile)
                 : children.start("environment", jvm.environment(), "robosim.environment.EnvironmentMain",
-                        environmentArgs, lines);
+                        environmentArgs(), lines);
         environment.onExit().thenRun(() -> listening.complete(Map.of()));
         Map<String, String> bound = listening.get(60, TimeUnit.SECONDS);
         if (bound.isEmpty()) {
@@ -229,7 +229,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 + " geometry=" + bound.get("geometry") + " control=" + bound.get("control")
                 + (bound.containsKey("web") ? " web=" + bound.get("web") : "") + " tls=" + bound.get("tls"));
         int viewerPort = Integer.parseInt(bound.get("viewers"));
-        RunWatch watch = RunWatch.connect("127.0.0.1", viewerPort, poseLog, progress, steps, 10_000);
+        RunWatch watch = RunWatch.connect("127.0.0.1", viewerPort, poseLog, watching.progress(), steps, 10_000);
         ExtraViewers extras = extraViewers.connect(viewerPort);
         if (this.viewer) {
             // this Environment exits after its one run: the window keeps the last picture and stops
@@ -238,13 +238,13 @@ public final class HeadlessRunner implements Callable<Integer> {
                     List.of("127.0.0.1", Integer.toString(viewerPort), "--next-run-wait-s", "5"));
         }
         List<ChildProcesses.Child> clients = new ArrayList<>();
-        if (!noGeometry && !oneJvm) {
+        if (!run.inProcessGeometry()) {
             List<String> geometryArgs = new ArrayList<>(List.of("127.0.0.1", bound.get("geometry")));
             geometryArgs.addAll(resetArgs());
             clients.add(children.startChild("geometry", jvm.geometry(),
                     "robosim.geometry.GeometryMain", geometryArgs, null));
         }
-        if (oneJvm && holdForViewers) {
+        if (run.oneJvm() && holdForViewers) {
             // the robots are here already: the run starts once the watch is one of its viewers (its snapshot came)
             if (watch != null && !watch.awaitSnapshot(60)) {
                 System.err.println("headless: the Environment sent the pose log's viewer no snapshot within 60 s");
@@ -258,7 +258,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                     return 1;
                 }
             }
-        } else if (!oneJvm) {
+        } else if (!run.oneJvm()) {
             clients.addAll(startRobots(spec, children, bound.get("robots")));
         }
         String early = EarlyExit.await(started, environment, clients);
@@ -271,9 +271,9 @@ public final class HeadlessRunner implements Callable<Integer> {
             System.out.println("running " + spec.robots().size() + " robots for " + steps + " steps on Java "
                     + Runtime.version().feature() + (choice == null ? "" : " from " + choice));
         }
-        long limit = timeoutS > 0 ? timeoutS : Long.MAX_VALUE / 2;
+        long limit = watching.timeoutS() > 0 ? watching.timeoutS() : Long.MAX_VALUE / 2;
         if (!environment.waitFor(limit, TimeUnit.SECONDS)) {
-            System.err.println("headless: no end after " + timeoutS + " s; stopping everything");
+            System.err.println("headless: no end after " + watching.timeoutS() + " s; stopping everything");
             return 1;
         }
         int code = environment.exitValue();
@@ -313,20 +313,53 @@ public final class HeadlessRunner implements Callable<Integer> {
                         + "control_failed=%d geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
                 s.get("messages"), s.get("robots_left"), controlFailed.size(),
-                noGeometry || oneJvm ? "in-process" : "process",
-                oneJvm ? "one-jvm" : robotsInOneProcess ? "one-process"
-                        + (connectionKind() == Connection.SHARED ? "" : "-per-robot") : "processes"));
+                run.inProcessGeometry() ? "in-process" : "process",
+                run.oneJvm() ? "one-jvm" : robotsInOneProcess ? "one-process"
+                        + (connectionKind() == ConnectionOption.Connection.SHARED ? "" : "-per-robot") : "processes"));
         return code;
     }
 
     /** How robots in one process connect: as {@code --connection} says, else shared unless that cannot be. */
-    private Connection connectionKind() {
-        boolean perRobot = exchange != null || environmentOptions.coordinator.refuses(Transport.SHARED) != null;
-        return connection != null ? connection : perRobot ? Connection.PER_ROBOT : Connection.SHARED;
+    private ConnectionOption.Connection connectionKind() {
+        boolean perRobot = exchange.given() != null || run.design().refuses(Transport.SHARED) != null;
+        return connection.given() != null ? connection.given()
+                : perRobot ? ConnectionOption.Connection.PER_ROBOT : ConnectionOption.Connection.SHARED;
     }
 
     private List<String> exchangeArgs() {
-        return exchange == null ? List.of() : List.of("--exchange", exchange);
+        return exchange.given() == null ? List.of() : List.of("--exchange", exchange.given().name());
+    }
+
+    /**
+     * The Environment's command line for a process of its own: the file, the steps, the ports (free ones unless
+     * {@code --ports}), a free control port, robots it may start for the control port's add, the stream resets,
+     * and the run's options as they were given.
+     */
+    private List<String> environmentArgs() {
+        List<String> args = new ArrayList<>(List.of(env.file().toString(), "--steps", Long.toString(steps),
+                "--robot-port", port(0), "--viewer-port", port(1), "--geometry-port", port(2), "--control-port", "0",
+                "--launch-robots", "--web-port", Integer.toString(web.port())));
+        args.addAll(resetArgs());
+        args.addAll(run.given());
+        return args;
+    }
+
+    private String port(int i) {
+        return ports == null ? "0" : Integer.toString(ports.get(i));
+    }
+
+    /**
+     * The Environment in this JVM, every robot in it: the world {@code spec} as the run's options say, on loopback
+     * (free ports unless {@code --ports}), a free control port, held before step 1 if {@code startPaused}.
+     */
+    private Environment.Plan planInThisJvm(WorldSpec spec, boolean startPaused) throws IOException {
+        java.net.InetAddress loopback = java.net.InetAddress.getLoopbackAddress();
+        Settings settings = run.applyTo(Settings.builder(), steps)
+                .ports(loopback, Integer.parseInt(port(0)), Integer.parseInt(port(1)), Integer.parseInt(port(2)))
+                .keys(SimulationKeys.fromEnvironment()).resetEvery(reset.messages())
+                .robotsInThisJvm(Environment.robotsInThisJvm(env.file(), spec)).build();
+        return new Environment.Plan(env.file(), spec, settings, 0, web.port(),
+                EnvironmentDirectories.of(env.file()), false, startPaused, true);
     }
 
     private List<ChildProcesses.Child> startRobots(WorldSpec spec, ChildProcesses children, String robotPort)
@@ -356,7 +389,7 @@ public final class HeadlessRunner implements Callable<Integer> {
     }
 
     private List<String> resetArgs() {
-        return resetEvery == null ? List.of() : List.of("--reset-every", Integer.toString(resetEvery));
+        return List.of("--reset-every", Integer.toString(reset.messages()));
     }
 
     static Map<String, String> fields(String line) {

@@ -6,7 +6,6 @@ import java.io.OutputStream;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.text.ParseException;
-import java.util.List;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
@@ -14,10 +13,10 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import jdk.jfr.Configuration;
 import jdk.jfr.Recording;
-import robosim.environment.EnvironmentMain;
+import robosim.environment.Environment;
 
 /**
- * {@code headless.sh --one-jvm}'s Environment: {@link EnvironmentMain} run in the runner's own JVM, on thread
+ * {@code headless.sh --one-jvm}'s Environment: {@link Environment} run from its plan in the runner's own JVM, on thread
  * {@code environment}, its lines handed to the runner as a child's would be; seen by the runner as the
  * {@link Process} an Environment child would be (its exit code, its end), so a run has one JVM to start,
  * not two. With {@code --profile DIR} this JVM records a flight recording into {@code DIR/environment.jfr}.
@@ -27,13 +26,13 @@ final class InJvmEnvironment extends Process {
     private final Thread thread;
     private volatile int code = -1;
 
-    private InJvmEnvironment(List<String> args, Consumer<String> lines, Path profile) {
+    private InJvmEnvironment(Environment.Plan plan, Consumer<String> lines, Path profile) {
         thread = new Thread(() -> {
             Recording recording = null;
             try {
                 recording = profile == null ? null : record(profile);
-                code = EnvironmentMain.run(args.toArray(new String[0]), lines);
-            } catch (IOException | ParseException | RuntimeException e) {
+                code = Environment.run(plan, lines);
+            } catch (IOException | ParseException | RuntimeException | InterruptedException e) {
                 System.err.println("headless: the Environment failed: " + e);
                 code = 1;
             } finally {
@@ -46,9 +45,9 @@ final class InJvmEnvironment extends Process {
         }, "environment");
     }
 
-    /** Starts the Environment with {@code args} (as environment.sh takes them); its lines go to {@code lines}. */
-    static InJvmEnvironment start(List<String> args, Consumer<String> lines, Path profile) {
-        InJvmEnvironment e = new InJvmEnvironment(args, lines, profile);
+    /** Starts the Environment of {@code plan}; its lines go to {@code lines}. */
+    static InJvmEnvironment start(Environment.Plan plan, Consumer<String> lines, Path profile) {
+        InJvmEnvironment e = new InJvmEnvironment(plan, lines, profile);
         e.thread.start();
         return e;
     }

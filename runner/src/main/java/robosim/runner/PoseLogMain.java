@@ -5,10 +5,11 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
+import robosim.protocol.ConnectOptions;
 import robosim.protocol.Connector;
 
 /**
@@ -30,16 +31,11 @@ public final class PoseLogMain implements Callable<Integer> {
     @Parameters(index = "2", paramLabel = "FILE.csv", description = "Where to write the poses (not overwritten).")
     Path file;
 
-    @Option(names = "--progress", description = "Print the step and steps/s once a second.")
-    boolean progress;
+    @Mixin
+    WatchOptions watching;
 
-    @Option(names = "--connect-timeout-s", defaultValue = "30",
-            description = "How long to keep trying to connect (default: ${DEFAULT-VALUE}).")
-    int connectTimeoutS;
-
-    @Option(names = "--timeout-s", defaultValue = "0",
-            description = "Give up if the simulation has not ended after this long (default: 0, wait for the end).")
-    long timeoutS;
+    @Mixin
+    ConnectOptions connect;
 
     @Override
     public Integer call() throws Exception {
@@ -54,7 +50,7 @@ public final class PoseLogMain implements Callable<Integer> {
         }
         RunWatch watch;
         try {
-            watch = RunWatch.connect(host, port, file, progress, 0, connectTimeoutS * 1000L,
+            watch = RunWatch.connect(host, port, file, watching.progress(), 0, connect.millis(),
                     java.nio.file.StandardOpenOption.CREATE_NEW, java.nio.file.StandardOpenOption.WRITE);
         } catch (java.nio.file.FileAlreadyExistsException e) {
             System.err.println("pose-log: " + file + " already exists: not overwritten");
@@ -64,7 +60,8 @@ public final class PoseLogMain implements Callable<Integer> {
             System.err.println("pose-log: " + host + ":" + port + ": " + e.getMessage());
             return e instanceof java.net.UnknownHostException ? 2 : 1;
         }
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(timeoutS > 0 ? timeoutS : 100L * 365 * 86_400);
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(watching.timeoutS() > 0 ? watching.timeoutS()
+                : 100L * 365 * 86_400);
         try (watch) {
             // (a simulation that ends before its snapshot ends the connection: awaitEnd says how)
             if (watch.awaitSnapshot(secondsLeft(deadline))) {
@@ -86,11 +83,6 @@ public final class PoseLogMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new PoseLogMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("pose-log: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("pose-log", new PoseLogMain(), args);
     }
 }

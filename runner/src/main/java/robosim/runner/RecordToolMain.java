@@ -8,9 +8,9 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
 import java.util.List;
 import java.util.concurrent.Callable;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
 import robosim.protocol.CommEvent;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RobotView;
@@ -52,9 +52,8 @@ public final class RecordToolMain implements Callable<Integer> {
             + "min, max or each) or a robosim.sweep.Metric class; repeat for more.")
     java.util.List<String> metrics = new java.util.ArrayList<>();
 
-    @picocli.CommandLine.Option(names = "--area-cell-m", paramLabel = "M", description = "With metrics: the side of "
-            + "area_covered's cells, m (default: " + robosim.sweep.RunMetrics.DEFAULT_AREA_CELL_M + ", as a sweep's).")
-    double areaCellM = robosim.sweep.RunMetrics.DEFAULT_AREA_CELL_M;
+    @picocli.CommandLine.Mixin
+    robosim.sweep.AreaCellOption areaCell;
 
     @Parameters(index = "1", paramLabel = "FILE", description = "The recording.")
     Path file;
@@ -118,12 +117,12 @@ public final class RecordToolMain implements Callable<Integer> {
             }
             chosen.add(c);
         }
-        if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
-            System.err.println("record-tool: --area-cell-m must be > 0, got " + areaCellM);
+        if (areaCell.problem() != null) {
+            System.err.println("record-tool: " + areaCell.problem());
             return 2;
         }
         try {
-            System.out.print(robosim.sweep.RunMetrics.csv(robosim.sweep.RunMetrics.of(file, chosen, areaCellM)));
+            System.out.print(robosim.sweep.RunMetrics.csv(robosim.sweep.RunMetrics.of(file, chosen, areaCell.metres())));
             return 0;
         } catch (IOException e) {
             System.err.println("record-tool: " + e.getMessage());
@@ -188,11 +187,6 @@ public final class RecordToolMain implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new RecordToolMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("record-tool: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("record-tool", new RecordToolMain(), args);
     }
 }

@@ -23,9 +23,9 @@ import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicLong;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
+import robosim.protocol.CommandLines;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
@@ -76,10 +76,8 @@ public final class Soak implements Callable<Integer> {
             description = "Extra robots that fall silent at random steps (default: ${DEFAULT-VALUE}).")
     int silentRobots;
 
-    @Option(names = "--on-geometry-loss", defaultValue = "IN_PROCESS", description = "What the Environment does when "
-            + "the soak kills its Geometry process: IN_PROCESS (the default) goes on in-process until the new one "
-            + "attaches; WAIT holds the step until it has, so that even a short soak sees it attach.")
-    String onGeometryLoss;
+    @picocli.CommandLine.Mixin
+    robosim.environment.GeometryLossOption geometryLoss; // (WAIT: even a short soak sees the new one attach)
 
     @Option(names = "--step-timeout-ms", defaultValue = "2000",
             description = "The Environment's step timeout (default: ${DEFAULT-VALUE}).")
@@ -108,7 +106,7 @@ public final class Soak implements Callable<Integer> {
                     "robosim.environment.EnvironmentMain", List.of(env.toString(), "--steps", Long.toString(steps),
                             "--robot-port", "0", "--viewer-port", "0", "--geometry-port", "0",
                             "--step-timeout-ms", Long.toString(stepTimeoutMs), "--control-port", "0",
-                            "--on-geometry-loss", onGeometryLoss), line -> {
+                            "--on-geometry-loss", geometryLoss.policy().name()), line -> {
                         if (line.startsWith("listening ")) {
                             listening.complete(HeadlessRunner.fields(line));
                         } else if (line.startsWith("summary ")) {
@@ -330,11 +328,6 @@ public final class Soak implements Callable<Integer> {
     }
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new Soak());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("soak: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("soak", new Soak(), args);
     }
 }

@@ -10,8 +10,10 @@ import java.util.Map;
 import java.util.concurrent.Callable;
 import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
 import robosim.runner.ChildProcesses;
 
 /**
@@ -47,15 +49,8 @@ public final class SweepMain implements Callable<Integer> {
     @Option(names = "--resume", description = "Run only the runs that have no row in --out yet.")
     boolean resume;
 
-    @Option(names = "--keep-recordings", description = "Keep each run's recording in DIR/recordings "
-            + "(scripts/replay.sh plays it; scripts/record-tool.sh metrics gives its row again).")
-    boolean keepRecordings;
-
-    @Option(names = "--fresh-jvm-per-run", description = "Run each run in a JVM of its own, started for it (the isolation "
-            + "of control code that needs it: static state a class loader of its own does not reset, threads it leaves "
-            + "running, System.exit). By default each of the pool's workers is a warm JVM that runs run after run, "
-            + "each run's control classes loaded afresh.")
-    boolean freshJvmPerRun;
+    @Mixin
+    WorkerOptions workers;
 
     @Option(names = "--give-up-after", paramLabel = "K", description = "On this machine: when the first K runs to end "
             + "all failed for one reason, stop there, say why and remove their rows (default: 3; 0: run every run "
@@ -158,8 +153,8 @@ public final class SweepMain implements Callable<Integer> {
         say(sweep, dir, todo, err);
         int cores = Runtime.getRuntime().availableProcessors();
         Progress progress = new Progress(todo.size(), err, System.console() != null);
-        int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, keepRecordings, freshJvmPerRun,
-                giveUpAfter == null ? 3 : giveUpAfter, err).run(todo, progress);
+        int unfinished = new LocalPool(sweep, dir, jobs != null ? jobs : cores, workers.keepRecordings,
+                workers.freshJvmPerRun, giveUpAfter == null ? 3 : giveUpAfter, err).run(todo, progress);
         return finish(sweep, dir, unfinished, err);
     }
 
@@ -184,7 +179,8 @@ public final class SweepMain implements Callable<Integer> {
         Slurm.Submitted submitted;
         try {
             submitted = Slurm.submit(sweep, dir, todo, new Slurm.Options(partition, time, maxParallel,
-                    keepRecordings, runsPerTask == null ? 0 : runsPerTask, freshJvmPerRun), Path.of(script));
+                    workers.keepRecordings, runsPerTask == null ? 0 : runsPerTask, workers.freshJvmPerRun),
+                    Path.of(script));
         } catch (SweepException e) {
             return bad(e.getMessage());
         }
@@ -325,11 +321,8 @@ public final class SweepMain implements Callable<Integer> {
         @Option(names = "--runs", paramLabel = "LIST", description = "The runs, as 0-9,12,15-20.")
         String runs;
 
-        @Option(names = "--keep-recordings", description = "Keep the runs' recordings in DIR/recordings.")
-        boolean keepRecordings;
-
-        @Option(names = "--fresh-jvm-per-run", description = "Run each run in a JVM of its own.")
-        boolean freshJvmPerRun;
+        @Mixin
+        WorkerOptions workers;
 
         @Override
         public Integer call() throws Exception {
@@ -352,10 +345,10 @@ public final class SweepMain implements Callable<Integer> {
             java.util.concurrent.atomic.AtomicBoolean stopping = new java.util.concurrent.atomic.AtomicBoolean();
             // (Slurm ends a task past its time with SIGTERM: the run then under way writes no row, nor any after it)
             Runtime.getRuntime().addShutdownHook(new Thread(() -> stopping.set(true), "sweep-stop"));
-            SweepRun sweepRun = new SweepRun(sweep, out, keepRecordings, stopping::get, System.err::println);
+            SweepRun sweepRun = new SweepRun(sweep, out, workers.keepRecordings, stopping::get, System.err::println);
             int unfinished = 0;
             try (ChildProcesses children = new ChildProcesses(sweep.jvmOptions());
-                 robosim.runner.HeadlessRuns where = freshJvmPerRun ? robosim.runner.HeadlessRuns.freshJvms(children)
+                 robosim.runner.HeadlessRuns where = workers.freshJvmPerRun ? robosim.runner.HeadlessRuns.freshJvms(children)
                          : new robosim.runner.WarmWorker(children, "worker")) {
                 for (int i : todo) {
                     if (java.nio.file.Files.exists(out.row(i))) {
@@ -430,11 +423,7 @@ public final class SweepMain implements Callable<Integer> {
 
     /** sweep.sh's command line: a bad option or a failure is one line, not a stack trace. */
     static CommandLine commandLine() {
-        CommandLine cl = new CommandLine(new SweepMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("sweep: " + ex.getMessage() + " (see --help)");
-            return EXIT_BAD_INPUT;
-        });
+        CommandLine cl = CommandLines.of("sweep", new SweepMain());
         cl.setExecutionExceptionHandler((ex, c, parsed) -> {
             System.err.println("sweep: " + (ex instanceof java.nio.file.AccessDeniedException ? "permission denied: "
                     : ex instanceof java.nio.file.NoSuchFileException ? "no such file: " : "") + ex.getMessage());

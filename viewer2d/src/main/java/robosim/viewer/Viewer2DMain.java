@@ -3,10 +3,12 @@ package robosim.viewer;
 import java.awt.GraphicsEnvironment;
 import java.io.IOException;
 import java.util.concurrent.Callable;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
+import robosim.protocol.ConnectOptions;
 import robosim.protocol.Protocol;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
@@ -37,9 +39,8 @@ public final class Viewer2DMain implements Callable<Integer> {
     @Option(names = "--fps", defaultValue = "30", description = "Frames per second (default: ${DEFAULT-VALUE}).")
     int fps;
 
-    @Option(names = "--connect-timeout-s", defaultValue = "30",
-            description = "Keep trying to connect for this long (default: ${DEFAULT-VALUE}).")
-    int connectTimeoutS;
+    @Mixin
+    ConnectOptions connect;
 
     @Option(names = "--next-run-wait-s", defaultValue = "0",
             description = "After a simulation ends (or the connection is lost), wait this long for the next run "
@@ -68,7 +69,7 @@ public final class Viewer2DMain implements Callable<Integer> {
         }
         if (watch != null) {
             try {
-                RobotWatch.open(host, port, watch, fps, connectTimeoutS * 1000L, nextRunWaitS * 1000L, true);
+                RobotWatch.open(host, port, watch, fps, connect.millis(), nextRunWaitS * 1000L, true);
             } catch (IOException e) {
                 System.err.println("viewer2d: " + e.getMessage());
                 return 1;
@@ -80,7 +81,7 @@ public final class Viewer2DMain implements Callable<Integer> {
         ViewerHello hello = new ViewerHello(false, fps);
         ViewerClient client;
         try {
-            client = ViewerClient.connect(host, port, hello, connectTimeoutS * 1000L);
+            client = ViewerClient.connect(host, port, hello, connect.millis());
         } catch (IOException e) {
             System.err.println("viewer2d: " + e.getMessage());
             return 1;
@@ -93,7 +94,7 @@ public final class Viewer2DMain implements Callable<Integer> {
         new RunFollower(host, port, hello, feed, FIRST_RETRY_MS, MAX_RETRY_MS, nextRunWaitS * 1000L).start(client);
         ViewerWindow.open("RoboSim - " + host + ":" + port, feed, new SceneRenderer.Options(true, !noTrails, sonar),
                 fps, robot -> RobotWatch.openLater(host, port, robot, fps,
-                connectTimeoutS * 1000L, nextRunWaitS * 1000L));
+                connect.millis(), nextRunWaitS * 1000L));
         windowOpen = true;
         return 0;
     }
@@ -103,12 +104,7 @@ public final class Viewer2DMain implements Callable<Integer> {
 
     public static void main(String[] args) {
         Viewer2DMain app = new Viewer2DMain();
-        CommandLine cl = new CommandLine(app);
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("viewer2d: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        int code = cl.execute(args);
+        int code = CommandLines.of("viewer2d", app).execute(args);
         if (!app.windowOpen) {
             System.exit(code);
         }

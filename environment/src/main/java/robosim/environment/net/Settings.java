@@ -2,7 +2,9 @@ package robosim.environment.net;
 
 import java.net.InetAddress;
 import robosim.protocol.InMemoryLink;
+import robosim.environment.server.ServerContext;
 import robosim.protocol.ObjectConnection;
+import robosim.protocol.Protocol;
 import robosim.protocol.SimulationKeys;
 
 /**
@@ -16,14 +18,9 @@ import robosim.protocol.SimulationKeys;
  */
 public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.file.Path record,
         InMemoryLink.Starter robotsInThisJvm) {
-    /** Default step and Geometry timeouts, ms. */
+    /** Default step and Geometry timeouts, ms (the server's own defaults: {@link ServerContext}). */
     public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
     public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
-    /** A robot or viewer that cannot take one write in this long is dropped, ms. */
-    public static final long DEFAULT_WRITE_TIMEOUT_MS = 10_000;
-
-    /** Connections each port holds at once, beyond the robots the file names, by default. */
-    public static final int DEFAULT_MAX_CONNECTIONS = 64;
 
     /**
      * Listening: the address and the robot, viewer and Geometry ports (0: a free one), how many
@@ -155,15 +152,15 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
     /** Builds {@link Settings}; each setter changes one value. */
     public static final class Builder {
         private InetAddress bind = InetAddress.getLoopbackAddress();
-        private int robotPort = 8000;
-        private int viewerPort = 3000;
-        private int geometryPort = 10000;
-        private int maxConnections = DEFAULT_MAX_CONNECTIONS;
+        private int robotPort = Protocol.DEFAULT_ROBOT_PORT;
+        private int viewerPort = Protocol.DEFAULT_VIEWER_PORT;
+        private int geometryPort = Protocol.DEFAULT_GEOMETRY_PORT;
+        private int maxConnections = ServerContext.DEFAULT_MAX_CONNECTIONS;
         private SimulationKeys keys;
-        private int handshakeTimeoutMs = 10_000;
+        private int handshakeTimeoutMs = ServerContext.DEFAULT_HANDSHAKE_TIMEOUT_MS;
         private long stepTimeoutMs = DEFAULT_STEP_TIMEOUT_MS;
         private long geometryTimeoutMs = DEFAULT_GEOMETRY_TIMEOUT_MS;
-        private long writeTimeoutMs = DEFAULT_WRITE_TIMEOUT_MS;
+        private long writeTimeoutMs = ServerContext.DEFAULT_WRITE_TIMEOUT_MS;
         private CoordinatorDesign design = CoordinatorDesign.THREADS;
         private boolean inProcessGeometry;
         private GeometryLoss onGeometryLoss = GeometryLoss.IN_PROCESS;

@@ -7,23 +7,22 @@ import java.net.InetAddress;
 import java.nio.file.Path;
 import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
-import picocli.CommandLine;
 import picocli.CommandLine.Command;
+import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.protocol.CommandLines;
 import robosim.environment.control.ControlServer;
 import robosim.environment.control.WebViewers;
 import robosim.environment.net.RunListener;
-import robosim.environment.net.Settings;
 import robosim.environment.server.Acceptors;
 import robosim.environment.server.Port;
 import robosim.environment.server.PortGuide;
 import robosim.environment.server.ServerContext;
+import robosim.environment.server.ServerOptions;
 import robosim.environment.server.ViewerClientWorker;
 import robosim.environment.server.Viewers;
 import robosim.protocol.GeometryHello;
-import robosim.protocol.ObjectConnection;
-import robosim.protocol.Protocol;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.SimulationKeys;
 import robosim.protocol.StepNumbers;
@@ -41,21 +40,8 @@ public final class ReplayMain implements Callable<Integer> {
     @Parameters(index = "0", paramLabel = "FILE", description = "The recording (environment.sh or headless.sh --record).")
     Path file;
 
-    @Option(names = "--viewer-port", defaultValue = "" + Protocol.DEFAULT_VIEWER_PORT,
-            description = "Port for viewers (default: ${DEFAULT-VALUE}; 0 picks a free one).")
-    int viewerPort;
-
-    @Option(names = "--control-port", defaultValue = "" + Protocol.DEFAULT_CONTROL_PORT,
-            description = "Port for the Control Panel (default: ${DEFAULT-VALUE}; 0 picks a free one; -1 none).")
-    int controlPort;
-
-    @Option(names = "--web-port", defaultValue = "-1", description = "Serve the browser viewer on this port, on "
-            + "--bind; with ROBOSIM_KEYS over TLS to browsers holding the key pair (default: none; 0: a free one).")
-    int webPort;
-
-    @Option(names = "--bind", defaultValue = "127.0.0.1",
-            description = "Address to listen on (default: ${DEFAULT-VALUE}, loopback only).")
-    String bind;
+    @Mixin
+    ServerOptions server;
 
     @Option(names = "--speed", defaultValue = "1", description = "Times real time, from " + ReplayClock.MIN_SPEED
             + " to " + ReplayClock.MAX_SPEED + " (default: ${DEFAULT-VALUE}: the run's time step per step).")
@@ -69,66 +55,48 @@ public final class ReplayMain implements Callable<Integer> {
             + "the live run did (default: hold at the last step, so viewers can seek back, until stop).")
     boolean exitAtEnd;
 
-    @Option(names = "--max-connections", defaultValue = "" + Settings.DEFAULT_MAX_CONNECTIONS,
-            description = "Viewers the port holds at once; one more is closed at once (default: ${DEFAULT-VALUE}).")
-    int maxConnections;
-
-    @Option(names = "--handshake-timeout-ms", defaultValue = "10000",
-            description = "A viewer's hello (and proof) must be in within this long (default: ${DEFAULT-VALUE}).")
-    int handshakeTimeoutMs;
-
-    @Option(names = "--write-timeout-ms", defaultValue = "" + Settings.DEFAULT_WRITE_TIMEOUT_MS,
-            description = "A viewer stuck this long in one write is dropped (default: ${DEFAULT-VALUE}; 0 never).")
-    long writeTimeoutMs;
-
-    @Option(names = "--reset-every", defaultValue = "" + ObjectConnection.DEFAULT_RESET_EVERY, hidden = true,
-            description = "Messages between object-stream resets, as the Environment's option.")
-    int resetEvery;
-
     @Override
     public Integer call() throws Exception {
-        String bad = badOption();
-        if (bad != null) {
-            System.err.println("replay: " + bad);
+        if (!(speed >= ReplayClock.MIN_SPEED && speed <= ReplayClock.MAX_SPEED)) {
+            System.err.println("replay: --speed must be from " + ReplayClock.MIN_SPEED + " to "
+                    + ReplayClock.MAX_SPEED + ", got " + speed);
             return 2;
         }
         InetAddress bindAddress;
-        try {
-            bindAddress = InetAddress.getByName(bind);
-        } catch (java.net.UnknownHostException e) {
-            System.err.println("replay: --bind " + bind + ": no such address");
-            return 2;
-        }
         SimulationKeys keys;
         RecordingReader recording;
         try {
+            bindAddress = server.bind();
             keys = SimulationKeys.fromEnvironment();
-            WebViewers.check(webPort, keys);
+            String bad = server.problem(keys, bindAddress);
+            if (bad != null) {
+                System.err.println("replay: " + bad);
+                return 2;
+            }
             recording = new RecordingReader(file);
+        } catch (java.net.UnknownHostException e) {
+            System.err.println("replay: --bind " + server.bindName() + ": no such address");
+            return 2;
         } catch (IOException e) {
             System.err.println("replay: " + e.getMessage());
             return 2;
         }
-        if ((keys == null || keys.tls() == null) && !bindAddress.isLoopbackAddress()) {
-            System.err.println("replay: --bind " + bind + " opens the viewer and control ports beyond this machine: "
-                    + "set ROBOSIM_KEYS to a directory made by scripts/make-keys.sh");
-            return 2;
-        }
         Viewers viewers = new Viewers();
         ReplayClock clock = new ReplayClock(recording, viewers, speed, exitAtEnd, paused);
-        ServerContext server = ServerContext.of(keys, resetEvery, handshakeTimeoutMs, writeTimeoutMs, GUIDE);
-        Acceptors port = new Acceptors(server, bindAddress, 256);
+        ServerContext context = server.context(keys, GUIDE);
+        Acceptors port = new Acceptors(context, bindAddress, 256);
         ControlServer control = null;
         WebViewerServer web = null;
         try {
-            port.bind(Port.VIEWER, viewerPort, maxConnections,
-                    (s, n) -> new ViewerClientWorker(server, s, "replay-viewer[" + n + "]", clock));
-            if (controlPort >= 0) {
-                control = new ControlServer(new ReplayCommands(clock, file), keys, handshakeTimeoutMs);
-                control.start(bindAddress, controlPort);
+            port.bind(Port.VIEWER, server.viewerPort(), server.maxConnections(),
+                    (s, n) -> new ViewerClientWorker(context, s, "replay-viewer[" + n + "]", clock));
+            if (server.controlPort() >= 0) {
+                control = new ControlServer(new ReplayCommands(clock, file), keys, server.handshakeTimeoutMs());
+                control.start(bindAddress, server.controlPort());
             }
-            if (webPort >= 0) {
-                web = WebViewers.start(webPort, bindAddress, port.port(Port.VIEWER), keys, new ReplayCommands(clock, file));
+            if (server.webPort() >= 0) {
+                web = WebViewers.start(server.webPort(), bindAddress, port.port(Port.VIEWER), keys,
+                        new ReplayCommands(clock, file));
             }
         } catch (IOException e) {
             close(port, control, recording);
@@ -151,7 +119,7 @@ public final class ReplayMain implements Callable<Integer> {
             while (!clock.awaitEnd(TimeUnit.DAYS.toMillis(1))) {
                 // a replay held at its end waits for stop for as long as it takes
             }
-            viewers.awaitDone(Math.max(1000, writeTimeoutMs));
+            viewers.awaitDone(Math.max(1000, server.writeTimeoutMs()));
             System.out.println("replay ended step=" + clock.endedAt());
             return 0;
         } finally {
@@ -160,27 +128,6 @@ public final class ReplayMain implements Callable<Integer> {
             }
             close(port, control, recording);
         }
-    }
-
-    private String badOption() {
-        if (!(speed >= ReplayClock.MIN_SPEED && speed <= ReplayClock.MAX_SPEED)) {
-            return "--speed must be from " + ReplayClock.MIN_SPEED + " to " + ReplayClock.MAX_SPEED + ", got " + speed;
-        }
-        for (int p : new int[] {viewerPort, controlPort, webPort}) {
-            if (p < -1 || p > 65535) {
-                return "ports must be from 0 to 65535 (-1: none), got " + p;
-            }
-        }
-        if (viewerPort < 0) {
-            return "--viewer-port must be from 0 to 65535, got " + viewerPort;
-        }
-        if (maxConnections < 1) {
-            return "--max-connections must be >= 1, got " + maxConnections;
-        }
-        if (handshakeTimeoutMs < 1 || writeTimeoutMs < 0 || resetEvery < 0) {
-            return "--handshake-timeout-ms must be >= 1, --write-timeout-ms and --reset-every >= 0";
-        }
-        return null;
     }
 
     /** Ctrl-C or SIGTERM: the end goes to every viewer before the process goes. */
@@ -225,11 +172,6 @@ public final class ReplayMain implements Callable<Integer> {
     };
 
     public static void main(String[] args) {
-        CommandLine cl = new CommandLine(new ReplayMain());
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("replay: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
-        System.exit(cl.execute(args));
+        CommandLines.exit("replay", new ReplayMain(), args);
     }
 }

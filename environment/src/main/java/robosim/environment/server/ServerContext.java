@@ -11,6 +11,13 @@ import robosim.protocol.SimulationKeys;
  */
 public record ServerContext(SimulationKeys keys, int resetEvery, int handshakeTimeoutMs, long writeTimeoutMs,
         StrangerBudget strangers, ConnectionWatch watch, PortGuide guide) {
+    /** A client whose hello is not accepted this long after it connected is dropped, ms. */
+    public static final int DEFAULT_HANDSHAKE_TIMEOUT_MS = 10_000;
+    /** A robot or viewer that cannot take one write in this long is dropped, ms. */
+    public static final long DEFAULT_WRITE_TIMEOUT_MS = 10_000;
+    /** Connections each port holds at once, beyond the robots the file names, by default. */
+    public static final int DEFAULT_MAX_CONNECTIONS = 64;
+
     /** A context with a stranger budget and a connection watch of its own (the watch is started by {@link Acceptors}). */
     public static ServerContext of(SimulationKeys keys, int resetEvery, int handshakeTimeoutMs, long writeTimeoutMs,
             PortGuide guide) {
