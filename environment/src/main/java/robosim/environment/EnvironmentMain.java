@@ -14,7 +14,7 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.RobotLaunches;
 import robosim.environment.core.WorldSpec;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.environment.server.ServerOptions;
 import robosim.protocol.CommandLines;
 import robosim.protocol.Protocol;
@@ -22,7 +22,7 @@ import robosim.protocol.SimulationKeys;
 
 /**
  * {@code scripts/environment.sh FILE.xml}: the Environment server in a process of its own: its options made into
- * an {@link Environment.Plan}, run by {@link Environment}, its lines on stdout. Exit codes: 0 done, 1 the run failed,
+ * an {@link EnvironmentServer.Plan}, run by {@link EnvironmentServer}, its lines on stdout. Exit codes: 0 done, 1 the run failed,
  * 2 bad input (file, option, port), 3 it lost a robot, 4 (--one-jvm) a robot's control code threw out of run.
  */
 @Command(name = "environment.sh", mixinStandardHelpOptions = true,
@@ -108,7 +108,7 @@ public final class EnvironmentMain implements Callable<Integer> {
                         : e.getMessage();
             }
         }
-        Environment.Plan plan = null;
+        EnvironmentServer.Plan plan = null;
         if (bad == null) {
             try {
                 Settings settings = run.applyTo(Settings.builder(), steps)
@@ -116,8 +116,8 @@ public final class EnvironmentMain implements Callable<Integer> {
                         .maxConnections(server.maxConnections()).handshakeTimeoutMs(server.handshakeTimeoutMs())
                         .writeTimeoutMs(server.writeTimeoutMs()).geometryTimeoutMs(geometryTimeoutMs)
                         .onGeometryLoss(geometryLoss.policy()).resetEvery(server.resetEvery())
-                        .robotsInThisJvm(run.oneJvm() ? Environment.robotsInThisJvm(file, world) : null).build();
-                plan = new Environment.Plan(file, world, settings, server.controlPort(), server.webPort(),
+                        .robotsInThisJvm(run.oneJvm() ? EnvironmentServer.robotsInThisJvm(file, world) : null).build();
+                plan = new EnvironmentServer.Plan(file, world, settings, server.controlPort(), server.webPort(),
                         envDirs == null ? EnvironmentDirectories.of(file) : new EnvironmentDirectories(envDirs),
                         keepRunning != null ? keepRunning : steps == 0, startPaused, launchRobots);
             } catch (IllegalArgumentException | IOException e) { // (the design refuses these settings; a directory)
@@ -128,7 +128,7 @@ public final class EnvironmentMain implements Callable<Integer> {
             System.err.println("environment: " + bad);
             return 2;
         }
-        return Environment.run(plan, STDOUT);
+        return EnvironmentServer.run(plan, STDOUT);
     }
 
     public static void main(String[] args) {

@@ -1,7 +1,7 @@
 package robosim.environment;
 
 import picocli.CommandLine.Option;
-import robosim.environment.net.GeometryLoss;
+import robosim.environment.run.GeometryLoss;
 
 /** What the Environment does when its Geometry process is lost (a picocli mixin of environment.sh and soak.sh). */
 public final class GeometryLossOption {

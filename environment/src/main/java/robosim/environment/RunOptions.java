@@ -12,9 +12,9 @@ import picocli.CommandLine.Spec;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
-import robosim.environment.net.CoordinatorDesign;
-import robosim.environment.net.RobotLoss;
-import robosim.environment.net.Settings;
+import robosim.environment.run.CoordinatorDesign;
+import robosim.environment.run.RobotLoss;
+import robosim.environment.run.Settings;
 
 /**
  * How a run of a world goes: its parameters and seed, its pace, the coordinator design, where collisions are

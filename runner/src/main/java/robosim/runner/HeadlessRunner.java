@@ -18,13 +18,13 @@ import picocli.CommandLine.Mixin;
 import picocli.CommandLine.Option;
 import robosim.api.RobotControl;
 import robosim.control.ControlClient;
-import robosim.environment.Environment;
+import robosim.environment.EnvironmentServer;
 import robosim.environment.RunOptions;
 import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.core.WorldSpec;
-import robosim.environment.net.Settings;
-import robosim.environment.net.Transport;
+import robosim.environment.run.Settings;
+import robosim.environment.run.Transport;
 import robosim.environment.server.WebPortOption;
 import robosim.hardware.ConnectionOption;
 import robosim.hardware.ExchangeOption;
@@ -183,7 +183,7 @@ public final class HeadlessRunner implements Callable<Integer> {
         // one JVM: its robots are there at once, so when the watch must see step 0 (the pose log's, the progress's
         // viewer) it holds before step 0 until the watch has its snapshot; otherwise (a sweep's runs) it starts at once
         boolean holdForViewers = poseLog != null || watching.progress();
-        Environment.Plan plan = null;
+        EnvironmentServer.Plan plan = null;
         if (run.oneJvm()) {
             try {
                 plan = planInThisJvm(spec, holdForViewers);
@@ -352,13 +352,13 @@ public final class HeadlessRunner implements Callable<Integer> {
      * The Environment in this JVM, every robot in it: the world {@code spec} as the run's options say, on loopback
      * (free ports unless {@code --ports}), a free control port, held before step 1 if {@code startPaused}.
      */
-    private Environment.Plan planInThisJvm(WorldSpec spec, boolean startPaused) throws IOException {
+    private EnvironmentServer.Plan planInThisJvm(WorldSpec spec, boolean startPaused) throws IOException {
         java.net.InetAddress loopback = java.net.InetAddress.getLoopbackAddress();
         Settings settings = run.applyTo(Settings.builder(), steps)
                 .ports(loopback, Integer.parseInt(port(0)), Integer.parseInt(port(1)), Integer.parseInt(port(2)))
                 .keys(SimulationKeys.fromEnvironment()).resetEvery(reset.messages())
-                .robotsInThisJvm(Environment.robotsInThisJvm(env.file(), spec)).build();
-        return new Environment.Plan(env.file(), spec, settings, 0, web.port(),
+                .robotsInThisJvm(EnvironmentServer.robotsInThisJvm(env.file(), spec)).build();
+        return new EnvironmentServer.Plan(env.file(), spec, settings, 0, web.port(),
                 EnvironmentDirectories.of(env.file()), false, startPaused, true);
     }
 

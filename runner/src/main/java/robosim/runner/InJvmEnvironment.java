@@ -13,10 +13,10 @@ import java.util.concurrent.TimeoutException;
 import java.util.function.Consumer;
 import jdk.jfr.Configuration;
 import jdk.jfr.Recording;
-import robosim.environment.Environment;
+import robosim.environment.EnvironmentServer;
 
 /**
- * {@code headless.sh --one-jvm}'s Environment: {@link Environment} run from its plan in the runner's own JVM, on thread
+ * {@code headless.sh --one-jvm}'s Environment: {@link EnvironmentServer} run from its plan in the runner's own JVM, on thread
  * {@code environment}, its lines handed to the runner as a child's would be; seen by the runner as the
  * {@link Process} an Environment child would be (its exit code, its end), so a run has one JVM to start,
  * not two. With {@code --profile DIR} this JVM records a flight recording into {@code DIR/environment.jfr}.
@@ -26,12 +26,12 @@ final class InJvmEnvironment extends Process {
     private final Thread thread;
     private volatile int code = -1;
 
-    private InJvmEnvironment(Environment.Plan plan, Consumer<String> lines, Path profile) {
+    private InJvmEnvironment(EnvironmentServer.Plan plan, Consumer<String> lines, Path profile) {
         thread = new Thread(() -> {
             Recording recording = null;
             try {
                 recording = profile == null ? null : record(profile);
-                code = Environment.run(plan, lines);
+                code = EnvironmentServer.run(plan, lines);
             } catch (IOException | ParseException | RuntimeException | InterruptedException e) {
                 System.err.println("headless: the Environment failed: " + e);
                 code = 1;
@@ -46,7 +46,7 @@ final class InJvmEnvironment extends Process {
     }
 
     /** Starts the Environment of {@code plan}; its lines go to {@code lines}. */
-    static InJvmEnvironment start(Environment.Plan plan, Consumer<String> lines, Path profile) {
+    static InJvmEnvironment start(EnvironmentServer.Plan plan, Consumer<String> lines, Path profile) {
         InJvmEnvironment e = new InJvmEnvironment(plan, lines, profile);
         e.thread.start();
         return e;

@@ -20,7 +20,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.protocol.GeometryHello;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.RobotHello;

@@ -14,7 +14,7 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;

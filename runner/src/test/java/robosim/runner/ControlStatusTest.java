@@ -17,7 +17,7 @@ import org.junit.jupiter.api.Test;
 import robosim.control.ControlClient;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 
 /** The control port's status tells the truth: where geometry is resolved, who is connected, who has left. */
 class ControlStatusTest {

@@ -8,7 +8,7 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
-import robosim.environment.net.CoordinatorDesign;
+import robosim.environment.run.CoordinatorDesign;
 import robosim.examples.Wander;
 import robosim.environment.core.WorldSpec;
 import robosim.protocol.PoseUpdate;

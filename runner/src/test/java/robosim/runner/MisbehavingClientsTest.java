@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.ArRobot;
 import robosim.hardware.HardwareSimulator;

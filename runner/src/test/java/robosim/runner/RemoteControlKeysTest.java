@@ -24,7 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.examples.RemoteControlRobot;
 import robosim.examples.RobotInfo;
 import robosim.hardware.HardwareSimulator;

@@ -12,7 +12,7 @@ import java.util.concurrent.TimeUnit;
 import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.ArRobot;
 import robosim.hardware.HardwareSimulator;

@@ -11,7 +11,7 @@ import robosim.api.Robot;
 import robosim.api.RobotControl;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.hardware.HardwareSimulator;
 import robosim.hardware.RobotType;
 import robosim.protocol.ProtocolException;

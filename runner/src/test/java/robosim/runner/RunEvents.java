@@ -4,8 +4,8 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Departure;
-import robosim.environment.net.RunListener;
+import robosim.environment.run.Departure;
+import robosim.environment.run.RunListener;
 
 /** Test fixture: what a run told its listener, with latches to wait on the first of each event. */
 final class RunEvents implements RunListener {

@@ -14,11 +14,11 @@ import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Departure;
-import robosim.environment.net.RobotLoss;
-import robosim.environment.net.RunListener;
-import robosim.environment.net.RunSummary;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Departure;
+import robosim.environment.run.RobotLoss;
+import robosim.environment.run.RunListener;
+import robosim.environment.run.RunSummary;
+import robosim.environment.run.Settings;
 import robosim.protocol.Protocol;
 import robosim.protocol.RobotModels;
 import robosim.protocol.SharedReplies;
@@ -289,7 +289,7 @@ class SharedConnectionTest {
     @Test
     void aSequentialEnvironmentRefusesASharedConnectionAsAWholeBeforeItsHellos() throws Exception {
         try (ClientWorkerCoordinator env = start(Settings.builder().design(
-                robosim.environment.net.CoordinatorDesign.SEQUENTIAL))) {
+                robosim.environment.run.CoordinatorDesign.SEQUENTIAL))) {
             java.io.IOException e = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
                     () -> new RawSharedRobots(env.ports()[0], List.of("r1", "r2"), RobotModels.AR_ROBOT));
             assertEquals("refused before the hellos, 2 refusals: a shared connection needs the THREADS or TWO_THREADS "

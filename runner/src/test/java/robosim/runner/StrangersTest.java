@@ -18,7 +18,7 @@ import java.util.concurrent.locks.LockSupport;
 import org.junit.jupiter.api.Test;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.protocol.RobotHello;
 import robosim.protocol.RobotModels;
 import robosim.protocol.SharedHello;

@@ -22,7 +22,7 @@ import robosim.environment.control.ControlServer;
 import robosim.environment.control.EnvironmentCommands;
 import robosim.environment.control.EnvironmentDirectories;
 import robosim.environment.control.EnvironmentHost;
-import robosim.environment.net.Settings;
+import robosim.environment.run.Settings;
 import robosim.geometry.GeometryMain;
 import robosim.hardware.MultiRobotMain;
 import robosim.hardware.RobotMain;

@@ -10,8 +10,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.RobotState;
-import robosim.environment.net.RunStatus;
+import robosim.environment.run.RobotState;
+import robosim.environment.run.RunStatus;
 
 /**
  * The Environment's control requests, on the {@link EnvironmentHost}'s current simulation: each declared once, in

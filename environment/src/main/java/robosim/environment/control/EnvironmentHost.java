@@ -10,9 +10,9 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
-import robosim.environment.net.RunStatus;
-import robosim.environment.net.RunSummary;
-import robosim.environment.net.Settings;
+import robosim.environment.run.RunStatus;
+import robosim.environment.run.RunSummary;
+import robosim.environment.run.Settings;
 
 /**
  * Runs simulations one after another on the same ports: the first from the file given at start-up,

@@ -1,5 +1,20 @@
 package robosim.environment.net;
 
+import robosim.environment.run.HelloCheck;
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.Progress;
+import robosim.environment.run.ReleaseListener;
+import robosim.environment.run.RobotState;
+import robosim.environment.run.Run;
+import robosim.environment.run.RunListener;
+import robosim.environment.run.RunListeners;
+import robosim.environment.run.RunRecorder;
+import robosim.environment.run.RunStatus;
+import robosim.environment.run.RunSummary;
+import robosim.environment.run.RunViewers;
+import robosim.environment.run.Settings;
+import robosim.environment.run.SimulationLoop;
+import robosim.environment.run.Transport;
 import java.io.Closeable;
 import java.io.IOException;
 import java.util.ArrayList;
@@ -234,7 +249,7 @@ public final class ClientWorkerCoordinator implements Closeable {
     }
 
     public RunSummary summary() {
-        long inWorld = run.published().states.stream().filter(r -> !RobotState.ADDED.equals(r.state())).count();
+        long inWorld = run.published().states().stream().filter(r -> !RobotState.ADDED.equals(r.state())).count();
         return run.published().summary((int) Math.max(robotNames.size(), inWorld));
     }
 

@@ -1,5 +1,8 @@
 package robosim.environment.net;
 
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.RunListener;
+import robosim.environment.run.SimulationLoop;
 import java.io.IOException;
 
 /**

@@ -1,5 +1,8 @@
 package robosim.environment.net;
 
+import robosim.environment.run.GeometryPeer;
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.SimulationLoop;
 import robosim.environment.server.ClientWorker;
 import robosim.environment.server.Port;
 import robosim.environment.server.ServerContext;

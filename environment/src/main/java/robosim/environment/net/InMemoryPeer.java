@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.environment.run.RobotPeer;
 import java.util.concurrent.atomic.AtomicBoolean;
 import robosim.protocol.InMemoryLink;
 import robosim.protocol.Protocol;

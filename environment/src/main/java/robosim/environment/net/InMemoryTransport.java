@@ -1,5 +1,10 @@
 package robosim.environment.net;
 
+import robosim.environment.run.HelloCheck;
+import robosim.environment.run.Hellos;
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.LoopHook;
+import robosim.environment.run.Run;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;

@@ -1,5 +1,9 @@
 package robosim.environment.net;
 
+import robosim.environment.run.HelloCheck;
+import robosim.environment.run.Hellos;
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.RobotPeer;
 import java.io.IOException;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;

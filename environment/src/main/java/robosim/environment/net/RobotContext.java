@@ -1,5 +1,8 @@
 package robosim.environment.net;
 
+import robosim.environment.run.HelloCheck;
+import robosim.environment.run.SimulationLoop;
+
 /**
  * What the Environment's robot port serves robots with, and all a robot's transport sees of the Environment (but a
  * shared connection's {@link SharedOutput}): the check every hello passes on the thread that read it, the loop to

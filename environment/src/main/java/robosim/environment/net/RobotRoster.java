@@ -1,5 +1,7 @@
 package robosim.environment.net;
 
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.SimulationLoop;
 import robosim.protocol.Printable;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
@@ -49,7 +51,7 @@ public final class RobotRoster {
      *
      * @throws IllegalArgumentException why there is none (an unknown type, a bad name, a pose that is no number)
      */
-    static JoinRule rule(String name, String type, double xM, double yM, double headingDeg, String control) {
+    public static JoinRule rule(String name, String type, double xM, double yM, double headingDeg, String control) {
         RobotProperties model = RobotModels.byName(type);
         if (model == null) {
             throw new IllegalArgumentException("type \"" + Printable.of(type, 64) + "\" is not a known robot type "

@@ -1,5 +1,7 @@
 package robosim.environment.net;
 
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.SimulationLoop;
 import java.io.IOException;
 import java.util.ArrayList;
 import java.util.Comparator;

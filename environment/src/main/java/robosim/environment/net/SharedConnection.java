@@ -1,5 +1,9 @@
 package robosim.environment.net;
 
+import robosim.environment.run.HelloCheck;
+import robosim.environment.run.Hellos;
+import robosim.environment.run.LoopEvent;
+import robosim.environment.run.Progress;
 import robosim.environment.server.ClientWorker;
 import robosim.environment.server.Handshake;
 import robosim.protocol.Printable;

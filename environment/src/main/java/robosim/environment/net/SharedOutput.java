@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.environment.run.LoopHook;
 import java.util.ArrayList;
 import java.util.List;
 

@@ -1,5 +1,6 @@
 package robosim.environment.net;
 
+import robosim.environment.run.RobotPeer;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotWelcome;

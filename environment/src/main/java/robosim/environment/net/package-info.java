@@ -1,29 +1,17 @@
 /**
- * The Environment's client interface: sockets and threads around one run, no world logic (that is the core's).
+ * The Environment's transports and their facade: sockets and threads around one run, no world logic (the core's)
+ * and no run logic (the run's, {@code robosim.environment.run}).
  *
  * <h2>The layout</h2>
  * <ul>
  * <li>The facade, {@link robosim.environment.net.ClientWorkerCoordinator} (the report's name): the one class that
- *     knows every part; it builds them, starts the threads and turns the control port's calls into events. Nothing
- *     else here names it.</li>
- * <li>The run, loop thread only, and drivable by hand (a test drives it with a fake clock, no thread, no socket):
- *     {@link robosim.environment.net.Run} (time and the order of a step: start, begin, collect, resolve, release,
- *     publish) and its parts, each owning its state: {@link robosim.environment.net.Progress} (the phase machine),
- *     {@link robosim.environment.net.Roster} (the robots and their lifecycle: the transitions are its own),
- *     {@link robosim.environment.net.Admission} (the verdicts on hellos, {@code add}, {@code remove}),
- *     {@link robosim.environment.net.RunControl} and {@link robosim.environment.net.ReleasePoint} (pause, step N,
- *     pace), {@link robosim.environment.net.GeometryLink} (where steps are resolved, the Geometry timeout and
- *     failover), {@link robosim.environment.net.StatusBoard} (the status, derived from the parts) publishing a
- *     {@link robosim.environment.net.PublishedRun} and, after each release, one immutable
- *     {@link robosim.environment.net.ReleasedWorld}; its outputs are a {@link robosim.environment.net.RunListener}
- *     and {@link robosim.environment.net.ReleaseListener}s ({@link robosim.environment.net.RunViewers},
- *     {@link robosim.environment.net.RunRecorder}).</li>
- * <li>The one owner of time: {@link robosim.environment.net.SimulationLoop} (the loop thread and its
- *     {@link robosim.environment.net.Inbox}) applies each {@link robosim.environment.net.LoopEvent} to the run, then
- *     lets the transports' {@link robosim.environment.net.LoopHook}s hand in and write.</li>
- * <li>The transports, behind one seam ({@link robosim.environment.net.RobotPeer}, and a
- *     {@link robosim.environment.net.LoopHook} where one is needed; {@link robosim.environment.net.Transport} names
- *     them): a socket per robot ({@link robosim.environment.net.RobotClientWorker},
+ *     knows every part; it builds the run and the transports, starts the threads and turns the control port's calls
+ *     into events ({@link robosim.environment.net.RobotRoster}: {@code add} and {@code remove}). Nothing else here
+ *     names it.</li>
+ * <li>The run, its loop and the seams the transports meet it at are {@code robosim.environment.run}'s: a transport
+ *     hands the loop {@code LoopEvent}s, is a {@code RobotPeer} (or a {@code GeometryPeer}) to the run, and a
+ *     {@code LoopHook} where it must act on the loop's thread.</li>
+ * <li>The transports: a socket per robot ({@link robosim.environment.net.RobotClientWorker},
  *     {@link robosim.environment.net.RobotConnection}, read and written as its {@link robosim.environment.net.Design}
  *     says: {@link robosim.environment.net.ThreadsDesign}, {@link robosim.environment.net.SequentialDesign} with
  *     its {@link robosim.environment.net.SequentialReader}, {@link robosim.environment.net.TwoThreadsDesign} with a
@@ -31,29 +19,28 @@
  *     shared connection ({@link robosim.environment.net.SharedConnection}, {@link robosim.environment.net.SharedRobot},
  *     {@link robosim.environment.net.SharedOutput}), robots in this JVM
  *     ({@link robosim.environment.net.InMemoryTransport}, {@link robosim.environment.net.InMemoryPeer}). They see
- *     the Environment through a {@link robosim.environment.net.RobotContext}; every robot's hello passes the
- *     {@link robosim.environment.net.HelloCheck} on its reader's thread, every request the one
- *     {@link robosim.environment.net.RequestOrder}. Geometry: {@link robosim.environment.net.GeometryClientWorker},
- *     a {@link robosim.environment.net.GeometryPeer} to the run.</li>
+ *     the Environment through a {@link robosim.environment.net.RobotContext}; every robot's hello passes the run's
+ *     {@code HelloCheck} on its reader's thread, every request the one {@link robosim.environment.net.RequestOrder}.
+ *     Geometry: {@link robosim.environment.net.GeometryClientWorker}, a {@code GeometryPeer} to the run.</li>
  * <li>The connections' server layer (accepting, handshakes, deadlines, viewers' workers) is
  *     {@code robosim.environment.server}'s, shared with the replay.</li>
  * </ul>
  *
  * <h2>The threads</h2>
  * One of them, {@code simulation-loop}, owns simulation time, and every other posts events to it through its
- * {@link robosim.environment.net.Inbox}. No lock is held across a socket read or write, a sleep or a wait. This is
+ * {@link robosim.environment.run.Inbox}. No lock is held across a socket read or write, a sleep or a wait. This is
  * the one list of the Environment's threads; other pages link here.
  *
  * <table>
  * <caption>The Environment's threads</caption>
  * <tr><th>thread</th><th>code</th><th>what it does</th><th>where it blocks</th></tr>
- * <tr><td>{@code simulation-loop}</td><td>{@link robosim.environment.net.SimulationLoop},
- *     {@link robosim.environment.net.Run}</td><td>every step (collect, resolve, release), the roster, pace,
+ * <tr><td>{@code simulation-loop}</td><td>{@link robosim.environment.run.SimulationLoop},
+ *     {@link robosim.environment.run.Run}</td><td>every step (collect, resolve, release), the roster, pace,
  *     pause, the robots' deadlines, the end; a platform thread, or in a one-JVM run a virtual one beside the
- *     control code ({@link robosim.environment.net.LoopThread})</td><td>its inbox, timed to the next deadline
+ *     control code ({@link robosim.environment.run.LoopThread})</td><td>its inbox, timed to the next deadline
  *     (a virtual loop: untimed, {@code loop-watch} wakes it); its writes to robots and shared connections (one
  *     frame each after every event), which the connection watch bounds; a full recording queue</td></tr>
- * <tr><td>{@code loop-watch}</td><td>{@link robosim.environment.net.LoopThread}</td><td>with a virtual loop only:
+ * <tr><td>{@code loop-watch}</td><td>{@link robosim.environment.run.LoopThread}</td><td>with a virtual loop only:
  *     wakes it at each tick, and gives virtual threads a second carrier when it has not come round for a
  *     second</td><td>a timed wait on the loop's end</td></tr>
  * <tr><td>{@code robot-worker[#n]}, then {@code robot-worker[name]}</td><td>{@link
@@ -79,7 +66,7 @@
  * <tr><td>{@code connection-watch}</td><td>{@link robosim.environment.server.ConnectionWatch}</td><td>cuts off
  *     any connection (robot, shared, viewer, Geometry) that misses its handshake deadline or does not take a
  *     write within the write timeout</td><td>sleeps between looks</td></tr>
- * <tr><td>{@code recorder}</td><td>{@link robosim.environment.net.RunRecorder} ({@code --record})</td>
+ * <tr><td>{@code recorder}</td><td>{@link robosim.environment.run.RunRecorder} ({@code --record})</td>
  *     <td>writes the recording from the queue the loop fills after each step</td><td>its queue; the
  *     disk</td></tr>
  * <tr><td>{@code control-io}</td><td>{@code robosim.environment.control.ControlServer} (netty)</td><td>the
@@ -111,7 +98,7 @@
  * within the step. With {@code --one-jvm} the file's robots start no thread here: their control threads hand their
  * requests to {@link robosim.environment.net.InMemoryTransport}, and the last one owed wakes the loop.
  * A replay ({@code robosim.environment.replay}) has its own clock thread and this package's
- * {@link robosim.environment.net.Inbox}, and serves its viewers with the same server layer as the Environment
+ * {@link robosim.environment.run.Inbox}, and serves its viewers with the same server layer as the Environment
  * ({@code robosim.environment.server}); its threads are listed in its package.
  */
 package robosim.environment.net;

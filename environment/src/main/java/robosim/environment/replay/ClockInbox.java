@@ -4,7 +4,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongFunction;
-import robosim.environment.net.Inbox;
+import robosim.environment.run.Inbox;
 
 /**
  * The questions other threads put to the {@link ReplayClock}, each answered on its thread, through the same

@@ -1,6 +1,6 @@
 package robosim.environment.replay;
 
-import robosim.environment.net.RunStatus;
+import robosim.environment.run.RunStatus;
 
 import java.util.concurrent.CompletableFuture;
 import org.slf4j.Logger;

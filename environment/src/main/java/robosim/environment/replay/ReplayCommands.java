@@ -1,6 +1,6 @@
 package robosim.environment.replay;
 
-import robosim.environment.net.RunStatus;
+import robosim.environment.run.RunStatus;
 
 import static robosim.environment.control.ControlReplies.ok;
 

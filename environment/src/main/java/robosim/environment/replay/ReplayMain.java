@@ -14,7 +14,7 @@ import picocli.CommandLine.Parameters;
 import robosim.protocol.CommandLines;
 import robosim.environment.control.ControlServer;
 import robosim.environment.control.WebViewers;
-import robosim.environment.net.RunListener;
+import robosim.environment.run.RunListener;
 import robosim.environment.server.Acceptors;
 import robosim.environment.server.Port;
 import robosim.environment.server.PortGuide;

@@ -1,6 +1,6 @@
 package robosim.environment.replay;
 
-import robosim.environment.net.RunStatus;
+import robosim.environment.run.RunStatus;
 
 /**
  * Where a replay stands, as its {@code status} request tells (its state named as a live run's): {@code step} is the step shown,

@@ -4,8 +4,8 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 
 import java.util.List;
 import org.junit.jupiter.api.Test;
-import robosim.environment.net.Departure;
-import robosim.environment.net.RunSummary;
+import robosim.environment.run.Departure;
+import robosim.environment.run.RunSummary;
 
 /** The Environment's exit code from how its run went. */
 class EnvironmentHostTest {

@@ -1,5 +1,0 @@
-package robosim.environment.net;
-
-/** A robot that left the run at {@code step}, and why (network text already made safe to print). */
-public record Departure(String robot, long step, String why) {
-}
