@@ -7,7 +7,6 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.StepRequest;
@@ -48,8 +47,7 @@ public class Engine {
             for (int i = 0; i < n; i++) {
                 requests[i] = robots[i].request(k);
             }
-            GeometryStepResponse answer = geometry.resolve(core.prepare(k, requests));
-            core.complete(answer);
+            core.step(k, requests, geometry);
             for (int i = 0; i < n; i++) {
                 robots[i].respond(core.response(i));
             }

@@ -29,8 +29,9 @@ public class LearningLinkFloor {
         int steps = Integer.parseInt(args[4]);
         MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
         p.packArrayHeader(2).packString("ok").packMapHeader(5);
+        int metrics = robosim.environment.metrics.Metrics.names().size(); // (the learning link's, BatchWorlds.METRICS)
         int[][] sizes = {{8 * worlds}, {worlds * robots * sonars * 4}, {worlds * robots * 12}, {worlds * robots},
-                {worlds * 6 * 8}};
+                {worlds * metrics * 8}};
         String[] names = {"steps", "sonar", "pose", "contact", "metrics"};
         for (int i = 0; i < names.length; i++) {
             p.packString(names[i]).packBinaryHeader(sizes[i][0]);
@@ -42,12 +43,12 @@ public class LearningLinkFloor {
                     import socket, sys, time
                     import numpy as np
                     from robosim.frames import Frames
-                    port, k, n, s, steps = (int(a) for a in sys.argv[1:])
+                    port, k, n, s, steps, m = (int(a) for a in sys.argv[1:])
                     sock = socket.create_connection(("127.0.0.1", port))
                     sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
                     frames = Frames(sock)
                     shapes = [("steps", "<i8", (k,)), ("sonar", "<f4", (k, n, s)), ("pose", "<f4", (k, n, 3)),
-                              ("contact", "u1", (k, n)), ("metrics", "<f8", (k, 6))]
+                              ("contact", "u1", (k, n)), ("metrics", "<f8", (k, m))]
                     actions = np.zeros((k, n, 2), np.float32)
                     def step():
                         frames.send(["step", actions.astype("<f4", copy=False).tobytes(), None])
@@ -62,7 +63,7 @@ public class LearningLinkFloor {
                     """;
             ProcessBuilder pb = new ProcessBuilder(python, "-c", learner, Integer.toString(server.getLocalPort()),
                     Integer.toString(worlds), Integer.toString(robots), Integer.toString(sonars),
-                    Integer.toString(steps)).redirectError(ProcessBuilder.Redirect.INHERIT);
+                    Integer.toString(steps), Integer.toString(metrics)).redirectError(ProcessBuilder.Redirect.INHERIT);
             pb.environment().put("PYTHONPATH", "python/src");
             Process learnerProcess = pb.start();
             try (Socket s = server.accept()) {

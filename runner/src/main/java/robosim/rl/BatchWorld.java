@@ -13,21 +13,22 @@ import java.util.SplittableRandom;
 import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.metrics.MetricTally;
 import robosim.protocol.CommEvent;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
-import robosim.sweep.RunTally;
 
 /**
  * One world of a {@link BatchWorlds}: the Environment's simulation core and the Geometry engine of an environment
  * file, stepped inline (no threads, no links), its robots' requests made from an action each (a linear and a
  * rotational velocity, perhaps a message), and what the robots sensed written into the batch's arrays. Its episode
  * starts at {@link #reset}: a new world from the file with the episode's seed (and, if asked, headings drawn from
- * it), one step of standing still that reads the sonars, a {@link RunTally} of the built-in metrics, and, if the
- * batch measures a metric of each episode, the episode's {@link EpisodeRecording}. Not
+ * it), one step of standing still that reads the sonars, the core's tally of the built-in metrics
+ * ({@link robosim.environment.metrics.MetricTally}), and, if the batch measures a metric of each episode, the
+ * episode's {@link EpisodeRecording}. Not
  * thread-safe: one caller at a time (the batch hands each world to one thread a step).
  */
 final class BatchWorld {
@@ -50,7 +51,6 @@ final class BatchWorld {
     private final StepResponse[] responses;
     private SimulationCore core;
     private InProcessGeometry geometry;
-    private RunTally tally;
     private long step;
     private boolean newWorld;
 
@@ -89,15 +89,8 @@ final class BatchWorld {
             spec = spec.withRobots(turned);
         }
         List<RobotProperties> properties = batch.properties();
-        core = new SimulationCore(spec, properties);
+        core = new SimulationCore(spec, properties, batch.areaCellM());
         geometry = new InProcessGeometry(core.map().geometryWorld());
-        double[] x = new double[robots];
-        double[] y = new double[robots];
-        for (int i = 0; i < robots; i++) {
-            x[i] = core.map().xMm(i);
-            y[i] = core.map().yMm(i);
-        }
-        tally = new RunTally(spec.arena(), batch.areaCellM(), x, y);
         step = 0;
         newWorld = true;
         Arrays.fill(touched, false);
@@ -138,9 +131,9 @@ final class BatchWorld {
         write();
     }
 
-    /** One time step of the requests in hand: the core and Geometry, then the tally and the messages heard. */
+    /** One time step of the requests in hand (the world's step, its metrics counted), then the messages heard. */
     private void advance() throws IOException {
-        core.complete(geometry.resolve(core.prepare(step, requests)));
+        core.step(step, requests, geometry);
         System.arraycopy(requests, 0, lastRequests, 0, robots);
         if (recording != null) {
             for (int i = 0; i < robots; i++) {
@@ -150,11 +143,7 @@ final class BatchWorld {
         }
         for (int i = 0; i < robots; i++) {
             StepResponse response = core.response(i);
-            boolean contact = !response.contact().isEmpty();
-            touched[i] |= contact;
-            tally.pose(i, response.xMm(), response.yMm());
-            tally.contact(i, contact);
-            tally.delivered(response.inbox().size());
+            touched[i] |= !response.contact().isEmpty();
             if (batch.messageSize() > 0) {
                 for (CommEvent m : response.inbox()) {
                     Integer from = byName.get(m.from());
@@ -203,13 +192,11 @@ final class BatchWorld {
             contact[index * robots + i] = (byte) (touched[i] ? 1 : 0);
         }
         byte[] metrics = batch.metrics();
-        int m = index * BatchWorlds.METRICS.size() * 8;
-        DOUBLE.set(metrics, m, tally.distanceM());
-        DOUBLE.set(metrics, m + 8, (double) tally.contacts());
-        DOUBLE.set(metrics, m + 16, (double) tally.delivered());
-        DOUBLE.set(metrics, m + 24, (double) core.tags().size());
-        DOUBLE.set(metrics, m + 32, tally.areaCovered());
-        DOUBLE.set(metrics, m + 40, (double) robots);
+        MetricTally tally = core.metrics();
+        int m = index * tally.size() * 8;
+        for (int k = 0; k < tally.size(); k++) {
+            DOUBLE.set(metrics, m + k * 8, tally.value(k));
+        }
         LONG.set(batch.steps(), index * 8, step);
     }
 

@@ -9,7 +9,7 @@ import robosim.environment.core.WorldSpec;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.sweep.MetricChoice;
-import robosim.sweep.RunMetrics;
+import robosim.environment.metrics.Metrics;
 
 /**
  * K copies of one world ({@link BatchWorld}), stepped together: one call applies every robot's action in every
@@ -21,7 +21,8 @@ import robosim.sweep.RunMetrics;
  */
 public final class BatchWorlds implements AutoCloseable {
     /** The live metrics of each world, in this order: the built-in metrics of a sweep. */
-    public static final List<String> METRICS = RunMetrics.BUILT_IN;
+    /** The metrics of each world, in their column order (the registry's, {@link Metrics}). */
+    public static final List<String> METRICS = Metrics.names();
     /** A robot's action: linear velocity (mm/s), rotational velocity (deg/s), then its message's numbers. */
     public static final int VELOCITIES = 2;
 

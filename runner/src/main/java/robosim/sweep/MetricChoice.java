@@ -2,10 +2,11 @@ package robosim.sweep;
 
 import java.util.Arrays;
 import java.util.Locale;
+import robosim.environment.metrics.Metrics;
 import robosim.protocol.Report;
 
 /**
- * A metric a sweep file asks for: a built-in one ({@link RunMetrics#BUILT_IN}), a value the control code reports
+ * A metric a sweep file asks for: a built-in one ({@link Metrics}), a value the control code reports
  * ({@code Robot.report}), taken over the robots as {@link Over} says, or a {@link Metric} class of one's own.
  *
  * @param kind which of the three
@@ -82,8 +83,8 @@ public record MetricChoice(Kind kind, String name, Over over) {
     /** What is wrong with this choice (an unknown built-in, a bad report name, a class that is not a Metric), or null. */
     public String problem() {
         return switch (kind) {
-            case BUILT_IN -> RunMetrics.BUILT_IN.contains(name) ? null
-                    : "'" + name + "' is not a built-in metric (they are: " + String.join(", ", RunMetrics.BUILT_IN) + ")";
+            case BUILT_IN -> Metrics.info(name) != null ? null
+                    : "'" + name + "' is not a built-in metric (they are: " + String.join(", ", Metrics.names()) + ")";
             case REPORT -> Report.problem(name, 0);
             case CLASS -> {
                 try {

@@ -8,6 +8,8 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import org.apache.commons.math3.stat.descriptive.SummaryStatistics;
+import robosim.environment.metrics.MetricInfo;
+import robosim.environment.metrics.Metrics;
 import org.knowm.xchart.BitmapEncoder;
 import org.knowm.xchart.CategoryChart;
 import org.knowm.xchart.CategoryChartBuilder;
@@ -61,13 +63,8 @@ final class Plots {
 
     /** The y axis of metric column {@code metric}: its name, with its unit or what it is over the robots. */
     static String axis(Sweep sweep, String metric) {
-        String unit = switch (metric) {
-            case "distance_m" -> "m, all robots' paths";
-            case "contacts", "messages_delivered", "tags" -> "count";
-            case "area_covered" -> "share of the arena, 0 to 1";
-            case "robots_left" -> "robots";
-            default -> null;
-        };
+        MetricInfo builtIn = Metrics.info(metric);
+        String unit = builtIn == null ? null : builtIn.unit();
         if (unit == null) {
             MetricChoice owner = sweep.owner(metric);
             if (owner != null) {
@@ -76,7 +73,7 @@ final class Plots {
                         + metric.substring(owner.name().length() + 1)
                         : "reported, " + owner.over().written() + " over the robots";
             }
-            if (unit == null && sweep.metrics().isEmpty() && !RunMetrics.BUILT_IN.contains(metric)) {
+            if (unit == null && sweep.metrics().isEmpty() && builtIn == null) {
                 unit = "reported, summed over the robots";
             }
         }

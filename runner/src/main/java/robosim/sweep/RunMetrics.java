@@ -7,6 +7,11 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
+import robosim.environment.metrics.AreaCoveredMetric;
+import robosim.environment.metrics.MetricTally;
+import robosim.environment.metrics.Metrics;
+import robosim.environment.metrics.RunStart;
+import robosim.environment.metrics.StepView;
 import robosim.protocol.Arena;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
@@ -18,13 +23,8 @@ import robosim.protocol.WorldSnapshot;
  * A run's metrics, read from its recording alone (one pass over its steps), so a kept recording gives its row
  * again ({@code scripts/record-tool.sh metrics FILE}):
  * <ul>
- * <li>{@code distance_m}: the robots' paths, summed, m (each robot's straight moves from step to step);
- * <li>{@code contacts}: times a robot touched something (a step with a contact after one without);
- * <li>{@code messages_delivered}: messages delivered to robots;
- * <li>{@code tags}: tags made (a robot's tag that hit a robot or a taggable obstacle);
- * <li>{@code area_covered}: the share of the arena's square cells (side {@code areaCellM}) a robot's centre has
- * been in at the end of some step, 0 to 1;
- * <li>{@code robots_left}: robots still in the world at the end;
+ * <li>every built-in metric ({@link Metrics}), counted by the same code that counts it live, each step of the
+ * recording read back as the step's {@link StepView};
  * <li>each name the control code reported ({@code Robot.report}): each robot's newest value, summed over the
  * robots that reported it (a name that is also a built-in's or a row's own column, {@code seed} say, is
  * {@code report.NAME}), or as a sweep file's {@code over} says ({@link MetricChoice#column});
@@ -32,13 +32,8 @@ import robosim.protocol.WorldSnapshot;
  * </ul>
  */
 public final class RunMetrics {
-    /** The built-in metrics, in their column order. */
-    public static final List<String> BUILT_IN = List.of("distance_m", "contacts", "messages_delivered", "tags",
-            "area_covered", "robots_left");
     /** The side of {@code area_covered}'s cells unless a sweep says otherwise, m. */
-    public static final double DEFAULT_AREA_CELL_M = 0.5;
-    /** The most cells {@code area_covered} counts (one bit each). */
-    static final long MAX_AREA_CELLS = 1L << 26;
+    public static final double DEFAULT_AREA_CELL_M = AreaCoveredMetric.DEFAULT_CELL_M;
 
     private RunMetrics() {
     }
@@ -129,10 +124,7 @@ public final class RunMetrics {
 
     /** Why cells of {@code areaCellM} are too many for {@code arena}'s {@code area_covered}, or null. */
     public static String cellProblem(Arena arena, double areaCellM) {
-        double cells = Math.ceil((arena.maxXMm() - arena.minXMm()) / (areaCellM * 1000))
-                * Math.ceil((arena.maxYMm() - arena.minYMm()) / (areaCellM * 1000));
-        return cells <= MAX_AREA_CELLS ? null : "area cells of " + areaCellM + " m make " + (long) cells + " cells of this "
-                + "arena, at most " + MAX_AREA_CELLS;
+        return AreaCoveredMetric.cellProblem(arena, areaCellM);
     }
 
     /** The column of a reported name: the name, or {@code report.NAME} where a built-in or a row's own column has it. */
@@ -142,7 +134,7 @@ public final class RunMetrics {
 
     /** A column name of a built-in metric or of every row ({@link Row}): no reported or own metric may take it. */
     static boolean reserved(String name) {
-        return BUILT_IN.contains(name) || Row.FIRST.contains(name) || Row.RUN.contains(name) || Row.LAST.contains(name);
+        return Metrics.info(name) != null || Row.FIRST.contains(name) || Row.RUN.contains(name) || Row.LAST.contains(name);
     }
 
     /**
@@ -152,47 +144,30 @@ public final class RunMetrics {
     private static Map<String, Double> builtInAndReports(RecordingReader recording, double areaCellM,
             Map<String, Map<String, Double>> reports) throws IOException {
         WorldSnapshot world = recording.snapshot();
-        PoseUpdate start = world.poses(); // (where the robots stood before step 0: its moves count too)
-        double[] startX = new double[start.count()];
-        double[] startY = new double[start.count()];
-        for (int r = 0; r < start.count(); r++) {
-            startX[r] = start.xMm(r);
-            startY[r] = start.yMm(r);
+        String tooMany = AreaCoveredMetric.cellProblem(world.arena(), areaCellM);
+        if (tooMany != null) {
+            throw new IOException(tooMany);
         }
-        RunTally tally;
-        try {
-            tally = new RunTally(world.arena(), areaCellM, startX, startY);
-        } catch (IllegalArgumentException e) {
-            throw new IOException(e.getMessage());
-        }
+        RecordedStep step = new RecordedStep();
+        step.read(world.poses(), List.of()); // (where the robots stood before step 0: its moves count too)
+        MetricTally tally = new MetricTally(new RunStart(world.arena(), areaCellM, step));
         Map<Integer, Map<String, Double>> byIndex = new TreeMap<>();
-        PoseUpdate last = world.poses();
         for (int i = 0; i < recording.steps(); i++) {
-            RecordingReader.Step step = recording.step(i);
-            PoseUpdate u = step.update();
-            for (int r = 0; r < u.count(); r++) {
-                tally.pose(r, u.xMm(r), u.yMm(r));
-            }
-            for (RobotView v : step.views()) {
-                int r = v.robot();
-                tally.contact(r, !v.contact().isEmpty());
-                tally.delivered(v.delivered().size());
+            RecordingReader.Step recorded = recording.step(i);
+            step.read(recorded.update(), recorded.views());
+            tally.step(step);
+            for (RobotView v : recorded.views()) {
                 for (Report report : v.reports()) {
-                    byIndex.computeIfAbsent(r, k -> new HashMap<>()).put(report.name(), report.value());
+                    byIndex.computeIfAbsent(v.robot(), k -> new HashMap<>()).put(report.name(), report.value());
                 }
             }
-            last = u;
         }
         List<String> names = recording.steps() == 0 ? world.robotNames()
                 : recording.snapshotAt(recording.steps() - 1).robotNames();
-        int robots = names.size();
         Map<String, Double> out = new LinkedHashMap<>();
-        out.put("distance_m", tally.distanceM());
-        out.put("contacts", (double) tally.contacts());
-        out.put("messages_delivered", (double) tally.delivered());
-        out.put("tags", (double) last.tags().size());
-        out.put("area_covered", tally.areaCovered());
-        out.put("robots_left", (double) Math.max(0, robots - last.departed().size()));
+        for (int m = 0; m < tally.size(); m++) {
+            out.put(tally.info(m).name(), tally.value(m));
+        }
         Map<String, Double> summed = new TreeMap<>();
         byIndex.forEach((r, each) -> each.forEach((name, value) -> {
             summed.merge(reportColumn(name), value, Double::sum);
@@ -201,5 +176,71 @@ public final class RunMetrics {
         }));
         out.putAll(summed);
         return out;
+    }
+
+    /** A recorded step as the metrics see it: the update's poses, tags and departures, and each view's robot. */
+    private static final class RecordedStep implements StepView {
+        private PoseUpdate update;
+        private boolean[] tookPart = new boolean[0];
+        private boolean[] touching = new boolean[0];
+        private int[] delivered = new int[0];
+
+        void read(PoseUpdate u, List<RobotView> views) {
+            update = u;
+            if (tookPart.length < u.count()) {
+                tookPart = new boolean[u.count()];
+                touching = new boolean[u.count()];
+                delivered = new int[u.count()];
+            }
+            java.util.Arrays.fill(tookPart, false);
+            for (RobotView v : views) {
+                int r = v.robot();
+                if (r >= 0 && r < u.count()) {
+                    tookPart[r] = true;
+                    touching[r] = !v.contact().isEmpty();
+                    delivered[r] = v.delivered().size();
+                }
+            }
+        }
+
+        @Override
+        public int robots() {
+            return update.count();
+        }
+
+        @Override
+        public double xMm(int robot) {
+            return update.xMm(robot);
+        }
+
+        @Override
+        public double yMm(int robot) {
+            return update.yMm(robot);
+        }
+
+        @Override
+        public boolean tookPart(int robot) {
+            return tookPart[robot];
+        }
+
+        @Override
+        public boolean touching(int robot) {
+            return touching[robot];
+        }
+
+        @Override
+        public int delivered(int robot) {
+            return delivered[robot];
+        }
+
+        @Override
+        public int tags() {
+            return update.tags().size();
+        }
+
+        @Override
+        public int departed() {
+            return update.departed().size();
+        }
     }
 }

@@ -246,7 +246,7 @@ public final class SweepFile {
             int given = (m.name == null ? 0 : 1) + (m.report == null ? 0 : 1) + (m.className == null ? 0 : 1);
             if (given != 1) {
                 throw new SweepException(file + ": <metric> needs one of name=\"BUILT-IN\" (" + String.join(", ",
-                        RunMetrics.BUILT_IN) + "), report=\"NAME\" or class=\"CLASS\"");
+                        robosim.environment.metrics.Metrics.names()) + "), report=\"NAME\" or class=\"CLASS\"");
             }
             MetricChoice.Over over = m.over == null ? null : MetricChoice.Over.of(m.over);
             if (m.over != null && (m.report == null || over == null)) {

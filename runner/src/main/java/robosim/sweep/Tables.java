@@ -12,14 +12,16 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import org.apache.commons.math3.distribution.TDistribution;
+import robosim.environment.metrics.MetricInfo;
+import robosim.environment.metrics.Metrics;
 import org.apache.commons.math3.stat.descriptive.SummaryStatistics;
 
 /**
  * The tables made from a sweep's rows: {@code runs.csv} (every row, by index, the columns of all of them) and
  * {@code summary.csv} (one row per combination of the parameters: how many runs, how many failed, and per metric
  * the mean, the sample standard deviation and the 95% confidence interval of the mean over the runs that succeeded:
- * a bootstrap percentile interval for the built-in counts and the share {@code area_covered}, which stays within
- * their range, Student's t for every other metric). Each is written whole, then renamed into place.
+ * a bootstrap percentile interval for the built-in metrics whose description asks for one (counts and shares: it
+ * stays within their range), Student's t for every other metric). Each is written whole, then renamed into place.
  */
 final class Tables {
     /** The metrics of the rows: every column that is neither the run's nor a parameter, in first-seen order. */
@@ -30,9 +32,6 @@ final class Tables {
     private final Map<Map<String, String>, Map<String, List<Double>>> samples = new LinkedHashMap<>();
     /** Runs and failed runs per combination. */
     final Map<Map<String, String>, int[]> counts = new LinkedHashMap<>();
-    /** The metrics whose interval is a bootstrap percentile one: counts and a share, which a t-interval can leave. */
-    static final Set<String> BOOTSTRAPPED = Set.of("contacts", "messages_delivered", "tags", "robots_left",
-            "area_covered");
     /** The bootstrap's resamples. */
     private static final int RESAMPLES = 10_000;
     private final Sweep sweep;
@@ -159,14 +158,16 @@ final class Tables {
 
     /**
      * The 95% confidence interval of the mean of {@code metric} at {@code combination}: a bootstrap percentile one for
-     * {@link #BOOTSTRAPPED} metrics, else Student's t with n - 1 degrees of freedom; null for fewer than 2 values.
+     * built-in metric whose {@link MetricInfo#interval()} says so (counts and shares, which a t-interval can leave),
+     * else Student's t with n - 1 degrees of freedom; null for fewer than 2 values.
      */
     double[] interval(Map<String, String> combination, String metric) {
         SummaryStatistics s = byCombination.get(combination).get(metric);
         if (s == null || s.getN() < 2) {
             return null;
         }
-        if (BOOTSTRAPPED.contains(metric)) {
+        MetricInfo builtIn = Metrics.info(metric);
+        if (builtIn != null && builtIn.interval() == MetricInfo.Interval.BOOTSTRAP) {
             return bootstrap(samples.get(combination).get(metric), (combination + " " + metric).hashCode());
         }
         double t = new TDistribution(null, s.getN() - 1).inverseCumulativeProbability(0.975);

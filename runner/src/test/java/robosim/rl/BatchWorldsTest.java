@@ -64,7 +64,7 @@ class BatchWorldsTest {
                 assertArrayEquals(arrays(one), arrays(two), "step " + k);
             }
             assertEquals(1 + 150 * 2, (long) LONG.get(one.steps(), 16), "a settling step, then 2 time steps an action");
-            assertTrue((double) DOUBLE.get(one.metrics(), 0) > 0, "the robots went somewhere");
+            assertTrue(metric(one, 0, "distance_m") > 0, "the robots went somewhere");
         }
     }
 
@@ -108,7 +108,7 @@ class BatchWorldsTest {
             for (int i = world1; i < b.messages().length; i += 4) {
                 assertEquals(0f, (float) FLOAT.get(b.messages(), i), "world 1 sent nothing");
             }
-            assertEquals(6.0, (double) DOUBLE.get(b.metrics(), 16), "messages_delivered in world 0: each robot sends");
+            assertEquals(6.0, metric(b, 0, "messages_delivered"), "messages_delivered in world 0: each robot sends");
             b.step(new float[a.length], new boolean[2], new long[2]);
             assertEquals(0f, (float) FLOAT.get(b.messages(), (0 * fieldsOfRow + 1 * 2) * 4), "b sent zeros this time");
             b.step(a, new boolean[2], new long[2]);
@@ -133,8 +133,8 @@ class BatchWorldsTest {
             assertEquals(12L, (long) LONG.get(b.steps(), 0));
             assertEquals(1L, (long) LONG.get(b.steps(), 8), "the settling step of a new episode");
             assertEquals(1000f, (float) FLOAT.get(b.pose(), 3 * 12), "world 1's a at its start again");
-            assertEquals(0.0, (double) DOUBLE.get(b.metrics(), 6 * 8), "world 1's distance from its new start");
-            assertTrue((double) DOUBLE.get(b.metrics(), 0) > 0);
+            assertEquals(0.0, metric(b, 1, "distance_m"), "world 1's distance from its new start");
+            assertTrue(metric(b, 0, "distance_m") > 0);
         }
     }
 
@@ -159,10 +159,16 @@ class BatchWorldsTest {
                     for (int i = 0; i < 3; i++) {
                         meanX += (float) FLOAT.get(b.pose(), (w * 3 + i) * 12) / 3000.0;
                     }
-                    double expected = name.equals("distance_m") ? (double) DOUBLE.get(b.metrics(), w * 6 * 8) : meanX;
+                    double expected = name.equals("distance_m") ? metric(b, w, "distance_m") : meanX;
                     assertEquals(expected, b.measure(w), name.equals("distance_m") ? 0 : 1e-6, name + ", world " + w);
                 }
             }
         }
+    }
+
+    /** World {@code w}'s value of built-in metric {@code name}, where the registry's column order puts it. */
+    private static double metric(BatchWorlds b, int w, String name) {
+        int at = (w * BatchWorlds.METRICS.size() + BatchWorlds.METRICS.indexOf(name)) * 8;
+        return (double) DOUBLE.get(b.metrics(), at);
     }
 }

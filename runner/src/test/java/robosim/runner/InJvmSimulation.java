@@ -42,6 +42,8 @@ final class InJvmSimulation {
     /** The last update each extra live viewer saw. */
     final List<PoseUpdate> liveLast = new ArrayList<>();
     RunSummary summary;
+    /** The run's built-in metrics at its end, as the run counted them live. */
+    java.util.Map<String, Double> metrics;
     int viewersAtEnd;
     private int liveViewers;
     private int frozenViewers;
@@ -277,6 +279,7 @@ final class InJvmSimulation {
                 throw new AssertionError("a client failed", failures.get(0));
             }
             summary = env.summary();
+            metrics = env.metrics();
             return this;
         } finally {
             env.close();

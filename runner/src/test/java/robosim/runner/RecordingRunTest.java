@@ -46,6 +46,11 @@ class RecordingRunTest {
             assertEquals("completed 300 steps", r.end().reason());
             assertNull(r.cutShort());
         }
+        assertEquals(sim.metrics, robosim.sweep.RunMetrics.of(file, java.util.List.of(), 0.5).entrySet().stream()
+                .filter(e -> sim.metrics.containsKey(e.getKey()))
+                .collect(java.util.stream.Collectors.toMap(java.util.Map.Entry::getKey, java.util.Map.Entry::getValue)),
+                "the built-in metrics counted live are the recording's, bit for bit (one implementation)");
+        assertTrue(sim.metrics.get("messages_delivered") > 0 && sim.metrics.get("distance_m") > 0, sim.metrics.toString());
     }
 
     static byte[] bytes(java.io.Externalizable u) throws IOException {

@@ -18,6 +18,7 @@ import robosim.environment.config.EnvironmentFileException;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.Parameters;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.metrics.Metrics;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.run.RunStatus;
 import robosim.environment.run.Settings;
@@ -31,7 +32,8 @@ import robosim.protocol.InMemoryLink;
  * {@code headless.sh --one-jvm} (the same steps as a run of separate processes). Build it from an environment
  * file or a {@link World} built in code, give robots control objects of your own (or let them run the file's
  * control classes), then run it a number of steps or until a condition holds, and ask where each robot is,
- * what it sensed, which messages it received, what it touched and what it reported.
+ * what it sensed, which messages it received, what it touched and what it reported, and the run's built-in
+ * metrics ({@link #metric}).
  *
  * <p>A robot whose control code throws out of {@code run} fails the test: the next {@link #run}, {@link #runUntil}
  * or {@link #close} throws an {@link AssertionError} naming the robot and the step, with what it threw as its
@@ -366,6 +368,25 @@ public final class Simulation implements AutoCloseable {
     /** Everything {@code robot} reported so far: the newest value of each name, in the order first reported. */
     public Map<String, Double> reports(String robot) {
         return watched(robot).reports();
+    }
+
+    /**
+     * The built-in metric {@code name} of the run so far ({@code distance_m}, {@code contacts}, ...: the same numbers a
+     * sweep's row gives for a run of these steps; {@code describe.sh metrics} lists them).
+     *
+     * @throws IllegalArgumentException naming the built-in metrics, for a name that is none of them
+     */
+    public double metric(String name) {
+        if (Metrics.info(name) == null) {
+            throw new IllegalArgumentException("no built-in metric named \"" + name + "\" (they are: "
+                    + String.join(", ", Metrics.names()) + ")");
+        }
+        return coordinator.metrics().getOrDefault(name, Double.NaN);
+    }
+
+    /** Every built-in metric of the run so far, by name in column order (none before the first step). */
+    public Map<String, Double> metrics() {
+        return coordinator.metrics();
     }
 
     /** Why the simulation is over for {@code robot} (dropped, the end), or null while it takes part. */

@@ -38,6 +38,22 @@ class SimulationTest {
     }
 
     @Test
+    void theRunsBuiltInMetricsAreCountedAsItGoes() {
+        try (Simulation sim = Simulation.of(World.arena(3, 3).robot("r1", "Scout", 1.5, 1.5, 0))
+                .control("r1", new Ram()).start()) {
+            assertTrue(sim.metrics().isEmpty(), "no step yet");
+            assertTrue(sim.runUntil(s -> !s.contacts("r1").isEmpty(), 200), "never touched the wall");
+            assertEquals((sim.pose("r1").xMm() - 1500) / 1000, sim.metric("distance_m"), 1e-9, "its path, straight");
+            assertEquals(1, sim.metric("contacts"));
+            assertEquals(1, sim.metric("robots_left"));
+            assertEquals(robosim.environment.metrics.Metrics.names(), List.copyOf(sim.metrics().keySet()));
+            IllegalArgumentException e = assertThrows(IllegalArgumentException.class, () -> sim.metric("speed"));
+            assertTrue(e.getMessage().contains(String.join(", ", robosim.environment.metrics.Metrics.names())),
+                    e.getMessage());
+        }
+    }
+
+    @Test
     void runUntilStopsAtTheFirstStepTheConditionHolds() {
         try (Simulation sim = Simulation.of(World.arena(4, 4).robot("r1", "Scout", 1, 2, 0))
                 .control("r1", new AheadOneMetre()).start()) {

@@ -148,6 +148,11 @@ public final class EnvironmentMap {
     }
 
     /** True once robot {@code robot} has left. */
+    /** Robots that have left the world. */
+    public int departedCount() {
+        return departed.size();
+    }
+
     public boolean isGone(int robot) {
         return gone != null && gone[robot];
     }

@@ -8,7 +8,7 @@ import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.GeometryWorld;
 
 /** {@code --no-geometry} (the original's GEOMETRY_USED off): the geometry library, called directly. */
-public final class InProcessGeometry {
+public final class InProcessGeometry implements SimulationCore.Geometry {
     private final GeometryEngine engine;
     private final GeometryStepResponse response;
 
@@ -18,6 +18,7 @@ public final class InProcessGeometry {
     }
 
     /** The answer to {@code request}; valid until the next call. */
+    @Override
     public GeometryStepResponse resolve(GeometryStepRequest request) {
         engine.step(request, response);
         return response;

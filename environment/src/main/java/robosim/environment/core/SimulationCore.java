@@ -4,6 +4,10 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import robosim.environment.metrics.AreaCoveredMetric;
+import robosim.environment.metrics.MetricTally;
+import robosim.environment.metrics.RunStart;
+import robosim.environment.metrics.StepView;
 import robosim.geometry.Kinematics;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
@@ -15,16 +19,25 @@ import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
- * One simulated world and its step function, in two calls and without calling out: {@link #prepare}
- * takes every robot's request for step k and runs the gather phase (route COMMEVENTs, bound each
- * ACTION by the robot's speed limits) and returns the one Geometry request of the step (every ACTION
- * and SONAR request); whoever owns the Geometry link resolves it; {@link #complete} checks the answer
- * and runs apply (poses from the distances Geometry returns), tag, sense (sonar from the answer, the
- * other SENSOR requests from each robot's {@code RobotSensor}s, on the world after every move; noise
- * from the world's one seeded generator, in robot order) and respond. Deterministic: the same world
- * and the same requests give the same responses, bit for bit. Not thread-safe; one caller.
+ * One simulated world and its step, the one every stepper runs (the Environment's {@code Run}, the learning host's
+ * worlds, {@code bench/Engine.java}), as a straight sequence of phases ({@link #step}, like ARGoS's
+ * {@code CSpace::Update}): gather (route COMMEVENTs, bound each ACTION by the robot's speed limits), resolve (the one
+ * Geometry request of the step, every ACTION and SONAR request, resolved by a {@link Geometry}: in this process at
+ * once, or by a Geometry process whose answer comes later, {@link #answer}), apply (poses from the distances Geometry
+ * returns), tag, sense (sonar from the answer, the other SENSOR requests from each robot's {@code RobotSensor}s, on
+ * the world after every move; noise from the world's one seeded generator, in robot order), respond, and tally (the
+ * built-in metrics, {@link MetricTally}). Deterministic: the same world and the same requests give the same
+ * responses, bit for bit. Not thread-safe; one caller.
  */
 public final class SimulationCore {
+    /**
+     * What resolves a step's Geometry request: its answer, valid until the next request, or null when the answer
+     * comes later (to {@link #answer}).
+     */
+    public interface Geometry {
+        GeometryStepResponse resolve(GeometryStepRequest request);
+    }
+
     private static final double EPS = 1e-9;
 
     private final EnvironmentMap map;
@@ -36,16 +49,27 @@ public final class SimulationCore {
     private int[] sonarCount;
     private GeometryStepRequest geometryRequest;
     private StepResponse[] responses;
-    /** The requests of the step prepared and not yet completed. */
+    /** The requests of the step gathered and not yet completed. */
     private StepRequest[] pending;
+    /** The requests of the last step completed (the caller's array; read by the tally only). */
+    private StepRequest[] lastRequests;
     /**
      * Every distinct "tagger>target" so far, first time first (bounded by robots x (robots +
      * obstacles)); replaced, never changed, when a new pair appears.
      */
     private List<String> tags = List.of();
     private long lastStep = -1;
+    /** The built-in metrics, counted step by step, and what they see of the last step. */
+    private final MetricTally tally;
+    private final StepView released = new Released();
 
+    /** The world of {@code spec}, each robot as its {@code properties} say; area counted in cells of 0.5 m. */
     public SimulationCore(WorldSpec spec, List<RobotProperties> properties) {
+        this(spec, properties, AreaCoveredMetric.DEFAULT_CELL_M);
+    }
+
+    /** The world of {@code spec}, each robot as its {@code properties} say; area counted in cells of {@code areaCellM}. */
+    public SimulationCore(WorldSpec spec, List<RobotProperties> properties, double areaCellM) {
         this.map = new EnvironmentMap(spec, properties);
         this.robots = map.robotCount();
         Map<String, Integer> index = new HashMap<>();
@@ -62,6 +86,7 @@ public final class SimulationCore {
         }
         this.geometryRequest = new GeometryStepRequest(robots);
         this.responses = new StepResponse[robots];
+        this.tally = new MetricTally(new RunStart(spec.arena(), areaCellM, released));
     }
 
     private void limits(int i, RobotProperties p) {
@@ -142,13 +167,50 @@ public final class SimulationCore {
     }
 
     /**
-     * Gathers step {@code k}: {@code requests[i]} is robot i's request, or null for a robot that sends
-     * none (departed): it stands still. Returns the step's Geometry request, valid until the next call;
-     * the array is read again by {@link #complete}, so it must not change in between.
+     * Step {@code k} of the world: {@code requests[i]} is robot i's request, or null for a robot that sends none
+     * (departed, or away): it stands still. The array is read until the step is complete, so it must not change in
+     * between. Returns true once the step is complete ({@link #response(int)} holds each robot's answer), false when
+     * {@code geometry} answers later: then the step completes at {@link #answer}.
      *
-     * @throws ProtocolException if a request is not for step k or holds a non-finite number
+     * @throws ProtocolException if a request is not for step k or holds a non-finite number, or an answer at once
+     *     is not a valid answer to the step's request
      */
-    public GeometryStepRequest prepare(long k, StepRequest[] requests) throws ProtocolException {
+    public boolean step(long k, StepRequest[] requests, Geometry geometry) throws ProtocolException {
+        GeometryStepRequest request = gather(k, requests);
+        GeometryStepResponse answer = geometry.resolve(request);
+        if (answer == null) {
+            return false;
+        }
+        answer(answer);
+        return true;
+    }
+
+    /**
+     * The rest of the step whose Geometry request was answered later: apply, tag, sense, respond, tally.
+     *
+     * @throws ProtocolException if {@code g} is not a valid answer to the step's Geometry request
+     */
+    public void answer(GeometryStepResponse g) throws ProtocolException {
+        if (pending == null) {
+            throw new IllegalStateException("no step waits for an answer");
+        }
+        GeometryAnswerCheck.check(geometryRequest, g, sonarCount, map.spec().obstacles().size());
+        StepRequest[] requests = pending;
+        pending = null;
+        lastRequests = requests;
+        long k = geometryRequest.step();
+        apply(g);
+        String[] tagged = tag(requests);
+        senseAndRespond(k, g, requests, tagged);
+        lastStep = k;
+        tally.step(released);
+    }
+
+    /**
+     * Gather: each robot's request checked (for step {@code k}, finite), its messages routed, its move and turn
+     * bounded by its speed limits; the step's Geometry request, valid until the next step.
+     */
+    private GeometryStepRequest gather(long k, StepRequest[] requests) throws ProtocolException {
         geometryRequest.setStep(k);
         for (int i = 0; i < robots; i++) {
             StepRequest q = requests[i];
@@ -173,28 +235,20 @@ public final class SimulationCore {
         return geometryRequest;
     }
 
-    /**
-     * Completes the prepared step from Geometry's answer (checked first): apply, tag, sense, respond.
-     * Afterwards {@link #response(int)} holds each robot's answer.
-     *
-     * @throws ProtocolException if the answer is not a valid answer to the prepared request
-     */
-    public void complete(GeometryStepResponse g) throws ProtocolException {
-        if (pending == null) {
-            throw new IllegalStateException("no step prepared");
-        }
-        GeometryAnswerCheck.check(geometryRequest, g, sonarCount, map.spec().obstacles().size());
-        StepRequest[] requests = pending;
-        pending = null;
-        long k = geometryRequest.step();
-        // apply
+    /** Apply: each robot's pose from the distance moved and the angle turned that Geometry returns. */
+    private void apply(GeometryStepResponse g) {
         for (int i = 0; i < robots; i++) {
             double h = Kinematics.turn(map.headingDeg(i), g.turnedDeg(i));
             double moved = g.movedMm(i);
             map.setPose(i, map.xMm(i) + Kinematics.dx(h, moved), map.yMm(i) + Kinematics.dy(h, moved), h);
         }
-        String[] tagged = tag(requests);
-        // sense (the world after every move) and respond
+    }
+
+    /**
+     * Sense (sonar from the answer, the plug-in sensors on the world after every move) and respond: each robot's
+     * response to step {@code k}, with its messages and notices.
+     */
+    private void senseAndRespond(long k, GeometryStepResponse g, StepRequest[] requests, String[] tagged) {
         int range = 0;
         for (int i = 0; i < robots; i++) {
             double[] sonar = StepSensing.none();
@@ -208,7 +262,6 @@ public final class SimulationCore {
                     map.yMm(i), map.headingDeg(i), sonar, router.takeInbox(i), router.takeNotices(i), readings,
                     tagged == null || tagged[i] == null ? "" : tagged[i]);
         }
-        lastStep = k;
     }
 
     /** The tag ACTION, after every move: each tagger's nearest robot or obstacle in range, or null. */
@@ -273,6 +326,54 @@ public final class SimulationCore {
     /** Robot i's response to the last step. */
     public StepResponse response(int robot) {
         return responses[robot];
+    }
+
+    /** The built-in metrics of the run so far, counted after each step. */
+    public MetricTally metrics() {
+        return tally;
+    }
+
+    /** The world after the last step (before the first: every robot at its start pose), as the metrics see it. */
+    private final class Released implements StepView {
+        @Override
+        public int robots() {
+            return robots;
+        }
+
+        @Override
+        public double xMm(int robot) {
+            return map.xMm(robot);
+        }
+
+        @Override
+        public double yMm(int robot) {
+            return map.yMm(robot);
+        }
+
+        @Override
+        public boolean tookPart(int robot) {
+            return lastStep >= 0 && lastRequests[robot] != null;
+        }
+
+        @Override
+        public boolean touching(int robot) {
+            return !responses[robot].contact().isEmpty();
+        }
+
+        @Override
+        public int delivered(int robot) {
+            return responses[robot].inbox().size();
+        }
+
+        @Override
+        public int tags() {
+            return tags.size();
+        }
+
+        @Override
+        public int departed() {
+            return map.departedCount();
+        }
     }
 
     public long messagesDelivered() {

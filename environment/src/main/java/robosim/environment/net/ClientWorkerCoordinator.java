@@ -248,6 +248,11 @@ public final class ClientWorkerCoordinator implements Closeable {
         return run.published().status(robotNames, viewers.list().count());
     }
 
+    /** The run's built-in metrics as of the last step out, by name in column order (none before it began). */
+    public java.util.Map<String, Double> metrics() {
+        return run.published().metrics();
+    }
+
     public RunSummary summary() {
         long inWorld = run.published().states().stream().filter(r -> !RobotState.ADDED.equals(r.state())).count();
         return run.published().summary((int) Math.max(robotNames.size(), inWorld));

@@ -4,6 +4,7 @@ import java.util.function.LongSupplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.environment.core.InProcessGeometry;
+import robosim.environment.core.SimulationCore;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.GeometryWorld;
@@ -15,7 +16,7 @@ import robosim.protocol.GeometryWorld;
  * {@link GeometryLoss#IN_PROCESS}). Owns the Geometry timeout and the failover.
  * Loop thread only.
  */
-public final class GeometryLink {
+public final class GeometryLink implements SimulationCore.Geometry {
     private static final Logger LOG = LoggerFactory.getLogger(GeometryLink.class);
 
     private final Settings settings;
@@ -138,7 +139,8 @@ public final class GeometryLink {
      * Resolves {@code request}: returns the answer at once when geometry is in-process, else sends it to
      * the Geometry process and returns null (the answer comes as an event, see {@link #answer}).
      */
-    GeometryStepResponse resolve(GeometryStepRequest request) {
+    @Override
+    public GeometryStepResponse resolve(GeometryStepRequest request) {
         outstanding = request;
         if (attached != null) {
             if (sentWorld != world) {

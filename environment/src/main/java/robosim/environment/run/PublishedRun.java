@@ -2,6 +2,7 @@ package robosim.environment.run;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongSupplier;
@@ -53,6 +54,12 @@ public final class PublishedRun {
     /** {@code clock}: the run's (ns), for the wall time of a run under way. */
     PublishedRun(LongSupplier clock) {
         this.clock = clock;
+    }
+
+    /** The run's built-in metrics as of the last step out, by name (none before the run began). */
+    public Map<String, Double> metrics() {
+        ReleasedWorld w = world;
+        return w == null ? Map.of() : w.metrics();
     }
 
     /** Steps whose responses have gone out. */

@@ -1,10 +1,14 @@
 package robosim.environment.run;
 
 import java.util.ArrayList;
+import java.util.LinkedHashMap;
 import java.util.List;
+import java.util.Map;
 import robosim.environment.core.EnvironmentMap;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.metrics.MetricTally;
+import robosim.environment.metrics.Metrics;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
@@ -13,7 +17,8 @@ import robosim.protocol.WorldSnapshot;
 /**
  * The world as the run last released it, one immutable object published after each release: how many steps have
  * gone out, the world's robots (those that joined included) and what each is, and every robot's pose after the
- * step with the step's sonar ranges, the tags so far and who has left or is away ({@link PoseUpdate}). The status,
+ * step with the step's sonar ranges, the tags so far and who has left or is away ({@link PoseUpdate}), and the run's
+ * built-in metrics so far (in the registry's column order, {@link Metrics}). The status,
  * the control port's queries, a viewer that joins and the recording read this, never the core's map, which moves
  * on as soon as the next step is computed (a step held at the release point is computed already). Any thread.
  */
@@ -23,14 +28,16 @@ public final class ReleasedWorld {
     private final List<RobotProperties> properties;
     private final PoseUpdate update;
     private final boolean grown;
+    private final double[] metrics;
 
     private ReleasedWorld(long steps, WorldSpec spec, List<RobotProperties> properties, PoseUpdate update,
-            boolean grown) {
+            boolean grown, double[] metrics) {
         this.steps = steps;
         this.spec = spec;
         this.properties = properties;
         this.update = update;
         this.grown = grown;
+        this.metrics = metrics;
     }
 
     /**
@@ -52,19 +59,38 @@ public final class ReleasedWorld {
             y[i] = r.yMm();
             h[i] = r.headingDeg();
         }
-        return new ReleasedWorld(0, spec, List.copyOf(props), new PoseUpdate(-1, x, y, h), false);
+        return new ReleasedWorld(0, spec, List.copyOf(props), new PoseUpdate(-1, x, y, h), false, new double[0]);
     }
 
-    /** The world as the run starts from it: no step out yet, every robot where the map has it. */
-    static ReleasedWorld start(EnvironmentMap map) {
-        return new ReleasedWorld(0, map.spec(), map.properties(), map.poses(-1), false);
+    /** The world as the run starts from it: no step out yet, every robot where {@code core}'s map has it. */
+    static ReleasedWorld start(SimulationCore core) {
+        EnvironmentMap map = core.map();
+        return new ReleasedWorld(0, map.spec(), map.properties(), map.poses(-1), false, values(core.metrics()));
     }
 
     /** The world after {@code core}'s last step, the {@code steps}-th out; grown if robots joined since this one. */
     ReleasedWorld next(long stepsOut, SimulationCore core) {
         EnvironmentMap map = core.map();
         return new ReleasedWorld(stepsOut, map.spec(), map.properties(), core.viewerUpdate(),
-                map.robotCount() != update.count());
+                map.robotCount() != update.count(), values(core.metrics()));
+    }
+
+    private static double[] values(MetricTally tally) {
+        double[] v = new double[tally.size()];
+        for (int i = 0; i < v.length; i++) {
+            v[i] = tally.value(i);
+        }
+        return v;
+    }
+
+    /** The run's built-in metrics so far, by name in column order (none before the run has started). */
+    public Map<String, Double> metrics() {
+        Map<String, Double> out = new LinkedHashMap<>();
+        List<String> names = Metrics.names();
+        for (int i = 0; i < metrics.length; i++) {
+            out.put(names.get(i), metrics[i]);
+        }
+        return out;
     }
 
     /** Steps whose responses have gone out. */

@@ -10,7 +10,6 @@ import org.slf4j.LoggerFactory;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
@@ -189,7 +188,7 @@ public final class Run {
         releasedNanos = now;
         progress.begun();
         roster.begin();
-        world = ReleasedWorld.start(core.map());
+        world = ReleasedWorld.start(core);
         published.begin(now, world);
         published.ready(true);
         listener.started(roster.size());
@@ -226,25 +225,22 @@ public final class Run {
 
     // ---- stage 2: resolving --------------------------------------------------------------------------------
 
-    /** The core prepares the step and the geometry link resolves it; true if it is computed already (in-process). */
+    /** The core steps the world, its geometry resolved by the geometry link; true if it is computed already (in-process). */
     private boolean resolve() {
         StepRequest[] batch = roster.takeRequests();
-        GeometryStepRequest prepared;
+        progress.resolving();
         try {
-            prepared = core.prepare(progress.step(), batch);
+            return core.step(progress.step(), batch, geometry) && computed();
         } catch (ProtocolException e) {
             finish("step " + StepNumbers.shown(progress.step()) + " failed: " + e.getMessage(), false);
             return false;
         }
-        progress.resolving();
-        GeometryStepResponse answer = geometry.resolve(prepared);
-        return answer != null && complete(answer, null);
     }
 
-    /** Completes the step from an answer; {@code from}: the Geometry process that gave it, or null (in-process). */
+    /** Completes the step from an answer that came later; {@code from}: the Geometry process that gave it, or null (in-process). */
     private boolean complete(GeometryStepResponse answer, GeometryPeer from) {
         try {
-            core.complete(answer);
+            core.answer(answer);
         } catch (ProtocolException e) {
             if (from == null) {
                 finish("step " + StepNumbers.shown(progress.step()) + " failed: " + e.getMessage(), false);
@@ -253,6 +249,11 @@ public final class Run {
             }
             return false;
         }
+        return computed();
+    }
+
+    /** The step is computed: the geometry link and the roster are told, the step waits for its release. */
+    private boolean computed() {
         geometry.resolved();
         roster.resolved();
         progress.computed();
@@ -389,7 +390,7 @@ public final class Run {
      * every robot at its start pose (as it said it is, or as the file expects it).
      */
     WorldSnapshot snapshot() {
-        return world != null ? world.snapshot() : core != null ? ReleasedWorld.start(core.map()).snapshot()
+        return world != null ? world.snapshot() : core != null ? ReleasedWorld.start(core).snapshot()
                 : ReleasedWorld.expected(spec, roster.said()).snapshot();
     }
 

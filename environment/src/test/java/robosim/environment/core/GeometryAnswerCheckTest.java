@@ -1,6 +1,7 @@
 package robosim.environment.core;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertFalse;
 import static org.junit.jupiter.api.Assertions.assertThrows;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
@@ -46,10 +47,14 @@ class GeometryAnswerCheckTest {
 
     private static void refused(Consumer<GeometryStepResponse> tamper, String what) throws Exception {
         SimulationCore core = core();
-        GeometryStepRequest asked = core.prepare(0, moveBoth(0));
-        ProtocolException e = assertThrows(ProtocolException.class, () -> core.complete(answer(core, asked, tamper)));
+        GeometryStepRequest[] asked = new GeometryStepRequest[1];
+        assertFalse(core.step(0, moveBoth(0), request -> {
+            asked[0] = request;
+            return null; // (answered later, as a Geometry process does)
+        }));
+        ProtocolException e = assertThrows(ProtocolException.class, () -> core.answer(answer(core, asked[0], tamper)));
         assertTrue(e.getMessage().contains(what), e.getMessage());
-        core.complete(answer(core, asked, g -> { })); // the step is still there to complete with a good answer
+        core.answer(answer(core, asked[0], g -> { })); // the step is still there to complete with a good answer
         assertEquals(1200, core.response(0).xMm(), 1e-9);
     }
 

@@ -21,9 +21,9 @@ public final class InProcessSteps {
         return new InProcessSteps(new SimulationCore(spec, properties));
     }
 
-    /** Prepares step k, resolves it in-process and completes it. */
+    /** Step k, resolved in-process. */
     public void step(long k, StepRequest[] requests) throws ProtocolException {
-        core.complete(geometry.resolve(core.prepare(k, requests)));
+        core.step(k, requests, geometry);
     }
 
     public StepResponse response(int robot) {

@@ -1,0 +1,57 @@
+package robosim.environment.metrics;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.ServiceLoader;
+
+/**
+ * The built-in metrics: every {@link StepMetric} registered for {@link ServiceLoader} on the class path, in column
+ * order (their {@link MetricInfo#column()}, then their names). What reads the built-in metrics reads them here: a
+ * sweep's columns, tables and plots, {@code record-tool.sh metrics}, a run's live tally, the testkit, the learning
+ * link's metrics array and {@code describe.sh metrics}. Any thread.
+ */
+public final class Metrics {
+    private static final List<MetricInfo> BUILT_IN = load().stream().map(StepMetric::info).toList();
+
+    private Metrics() {
+    }
+
+    /** Every built-in metric, in column order. */
+    public static List<MetricInfo> builtIn() {
+        return BUILT_IN;
+    }
+
+    /** Their names, in column order. */
+    public static List<String> names() {
+        return BUILT_IN.stream().map(MetricInfo::name).toList();
+    }
+
+    /** The built-in metric named {@code name}, or null. */
+    public static MetricInfo info(String name) {
+        for (MetricInfo m : BUILT_IN) {
+            if (m.name().equals(name)) {
+                return m;
+            }
+        }
+        return null;
+    }
+
+    /** A new instance of every built-in metric, in column order: a run's tally. */
+    public static List<StepMetric> fresh() {
+        return load();
+    }
+
+    private static List<StepMetric> load() {
+        List<StepMetric> all = new ArrayList<>();
+        ServiceLoader.load(StepMetric.class, Metrics.class.getClassLoader()).forEach(all::add);
+        all.sort(Comparator.comparingInt((StepMetric m) -> m.info().column()).thenComparing(m -> m.info().name()));
+        for (int i = 1; i < all.size(); i++) {
+            if (all.get(i).info().name().equals(all.get(i - 1).info().name())) {
+                throw new IllegalStateException("two built-in metrics are named " + all.get(i).info().name() + ": "
+                        + all.get(i - 1).getClass().getName() + " and " + all.get(i).getClass().getName());
+            }
+        }
+        return all;
+    }
+}
