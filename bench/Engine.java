@@ -7,7 +7,6 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -33,7 +32,7 @@ public class Engine {
         int n = spec.robots().size();
         List<RobotProperties> properties = new ArrayList<>();
         for (WorldSpec.RobotSpec r : spec.robots()) {
-            properties.add(RobotModels.byName(r.type()));
+            properties.add(robosim.devices.RobotTypes.properties(r.type()));
         }
         SimulationCore core = new SimulationCore(spec, properties);
         InProcessGeometry geometry = new InProcessGeometry(core.map().geometryWorld());

@@ -29,6 +29,8 @@ REPO = Path(__file__).resolve().parents[2]
 #: Two types of robot (an ArRobot, 8 sonars, and a Scout, 16), a box and a rock.
 MIXED = REPO / "test-envs/test.xml"
 DISPERSION = REPO / "examples/python/learning/dispersion.xml"
+#: Three robots each with a laser, a heat and a bump sensor, near a heat source.
+SENSORS = REPO / "test-envs/sensors.xml"
 #: A generous bound on anything a test waits for (a loaded machine).
 WAIT_S = 120.0
 
@@ -41,6 +43,24 @@ def test_a_world_passes_pettingzoos_parallel_api_test() -> None:
         assert env.observation_space("robot2")["sonar"].shape == (16,)
         assert env.action_space("robot1").high.tolist()[2:] == [1.0, 1.0], "velocities, then the message's numbers"
         parallel_api_test(env, num_cycles=100)
+    finally:
+        env.close()
+
+
+def test_a_robots_sensors_are_observed_each_a_box_its_description_gives() -> None:
+    env = ParallelEnv(SENSORS, max_steps=20)
+    try:
+        space = env.observation_space("f1")
+        laser, heat, bump = space["laser"], space["heat"], space["bump"]
+        assert (laser.shape, float(laser.low[0]), float(laser.high[0])) == ((181,), 0.0, 8000.0), "rangeM 8, 1 deg"
+        assert (bump.shape, float(bump.low[0]), float(bump.high[0])) == ((4,), 0.0, 1.0)
+        assert heat.shape == (1,) and heat.low[0] == 0.0 and heat.high[0] == np.inf
+        observations, _ = env.reset(seed=3)
+        f1 = observations["f1"]
+        assert all(space[part].contains(f1[part]) for part in space), "every part within its box"
+        assert f1["laser"].min() < 8000, "a wall in sight"
+        assert f1["heat"][0] > 0, "the stove in sight"
+        parallel_api_test(env, num_cycles=20)
     finally:
         env.close()
 

@@ -53,6 +53,10 @@ class Welcome:
     arena_mm: list[float]
     seed: int
     episode_metric: str | None
+    #: Each robot's sensors (its environment file's), in its file's order: name, type, count, low, high, unit.
+    sensors: list[list[dict[str, Any]]]
+    #: Columns of a robot's row of ``Batch.readings`` (0: no robot has a sensor, no readings array).
+    readings: int
 
 
 @dataclass(frozen=True)
@@ -65,6 +69,7 @@ class Batch:
     contact: np.ndarray  # uint8 (K, N): 1 if the robot touched something during the action
     metrics: np.ndarray  # float64 (K, M): each world's built-in metrics so far (Welcome.metrics)
     messages: np.ndarray | None  # float32 (K, N, N, m): the last message robot i heard from robot j, or zeros
+    readings: np.ndarray | None  # float32 (K, N, R): each robot's sensors, a block of columns each (Layout)
 
 
 def find_home(near: Path | None = None) -> Path:
@@ -152,6 +157,8 @@ class LearningHost:
                   ("metrics", "<f8", (w.worlds, len(w.metrics)))]
         if w.message_size:
             shapes.append(("messages", "<f4", (w.worlds, n, n, w.message_size)))
+        if w.readings:
+            shapes.append(("readings", "<f4", (w.worlds, n, w.readings)))
         #: Each array of a reply: its name, type, shape and size in bytes (Batch's fields, in order).
         self._arrays = [(name, dtype, shape, int(np.prod(shape)) * np.dtype(dtype).itemsize)
                         for name, dtype, shape in shapes]
@@ -212,13 +219,13 @@ class LearningHost:
         arrays = answer[1]
         if not isinstance(arrays, dict):
             raise HostError(f"an answer that is not one: {answer!r:.200}")
-        views = []
+        views: dict[str, np.ndarray | None] = {"messages": None, "readings": None}
         for name, dtype, shape, size in self._arrays:
             data = arrays.get(name)
             if not isinstance(data, bytes) or len(data) != size:
                 raise HostError(f"the host's {name} is not {dtype} {shape}")
-            views.append(np.frombuffer(data, dtype=dtype).reshape(shape))
-        return Batch(*views) if len(views) == 6 else Batch(*views, None)
+            views[name] = np.frombuffer(data, dtype=dtype).reshape(shape)
+        return Batch(**views)
 
     def reset(self, seeds: list[int | None]) -> Batch:
         """World w begins a new episode with ``seeds[w]`` (None: it stays as it is, not stepped); every world's

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import cached_property
 
 import numpy as np
 from gymnasium import spaces
@@ -15,13 +16,29 @@ MESSAGE_BOUND = 1.0
 
 @dataclass(frozen=True)
 class Layout:
-    """Which parts an observation has (``sonar`` and ``contact`` always; ``pose`` and ``messages`` if asked), and each
-    agent's spaces: its sonars (mm, 0 to its farthest range), contact (0 or 1), pose (x, y mm within the arena,
-    heading 0 to 360 degrees), the last message heard from each robot (zeros if none); its action: linear velocity
+    """Which parts an observation has (``sonar`` and ``contact`` always; ``pose`` and ``messages`` if asked; one part
+    per sensor of the robots' environment file, by its name), and each agent's spaces: its sonars (mm, 0 to its
+    farthest range), contact (0 or 1), pose (x, y mm within the arena, heading 0 to 360 degrees), the last message
+    heard from each robot (zeros if none), each of its sensors (a box of its count of values within its range, as the
+    sensor's description in RoboSim's registry says: ``scripts/describe.sh SENSOR``); its action: linear velocity
     (mm/s) and rotational velocity (deg/s) within its type's limits, then its message's numbers (-1 to 1)."""
 
     welcome: Welcome
     pose: bool
+
+    @cached_property
+    def sensor_blocks(self) -> dict[str, tuple[int, int]]:
+        """Each sensor name's block of ``Batch.readings``' columns, (start, width), in the order the world first names
+        them; as wide as the most values a robot's sensor of that name gives (the host's layout)."""
+        widths: dict[str, int] = {}
+        for own in self.welcome.sensors:
+            for s in own:
+                widths[s["name"]] = max(widths.get(s["name"], 0), int(s["count"]))
+        blocks, start = {}, 0
+        for name, width in widths.items():
+            blocks[name] = (start, width)
+            start += width
+        return blocks
 
     def observation_space(self, robot: int) -> spaces.Dict:
         w = self.welcome
@@ -35,6 +52,8 @@ class Layout:
                                        dtype=np.float32)
         if w.message_size:
             parts["messages"] = spaces.Box(-np.inf, np.inf, (len(w.robots), w.message_size), np.float32)
+        for s in w.sensors[robot]:
+            parts[s["name"]] = spaces.Box(np.float32(s["low"]), np.float32(s["high"]), (int(s["count"]),), np.float32)
         return spaces.Dict(parts)
 
     def action_space(self, robot: int) -> spaces.Box:
@@ -51,10 +70,17 @@ class Layout:
             out["pose"] = batch.pose
         if batch.messages is not None:
             out["messages"] = batch.messages
+        if batch.readings is not None:
+            for name, (start, width) in self.sensor_blocks.items():
+                out[name] = batch.readings[:, :, start:start + width]
         return out
 
     def agent_observation(self, parts: dict[str, np.ndarray], world: int, robot: int) -> dict[str, np.ndarray]:
-        """Robot ``robot`` of world ``world``'s observation: its own arrays (copies, which the next step leaves)."""
-        count = len(self.welcome.sonar_angles_deg[robot])
-        return {name: (a[world, robot, :count] if name == "sonar" else a[world, robot]).copy()
-                for name, a in parts.items()}
+        """Robot ``robot`` of world ``world``'s observation: its own arrays (copies, which the next step leaves): its
+        own sonars and its own sensors, each as many values as it gives."""
+        counts = {"sonar": len(self.welcome.sonar_angles_deg[robot])}
+        counts.update({s["name"]: int(s["count"]) for s in self.welcome.sensors[robot]})
+        sensors = {s["name"] for s in self.welcome.sensors[robot]}
+        blocks = self.sensor_blocks
+        return {name: (a[world, robot, :counts[name]] if name in counts else a[world, robot]).copy()
+                for name, a in parts.items() if name not in blocks or name in sensors}

@@ -9,7 +9,6 @@ import java.util.List;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.StepRequest;
 
@@ -38,7 +37,7 @@ public final class BareRobots {
         ObjectConnection[] robots = new ObjectConnection[n];
         for (int i = 0; i < n; i++) {
             robots[i] = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 256);
-            robots[i].write(new RobotHello("b" + (i + 1), RobotModels.SCOUT));
+            robots[i].write(new RobotHello("b" + (i + 1), robosim.devices.RobotTypes.properties("Scout")));
             robots[i].flush();
             RobotWelcome welcome = robots[i].read(RobotWelcome.class);
             if (!welcome.isAccepted()) {

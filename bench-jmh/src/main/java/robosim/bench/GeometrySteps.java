@@ -9,7 +9,6 @@ import robosim.geometry.StaticWorld;
 import robosim.protocol.Arena;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 
 /**
@@ -36,7 +35,7 @@ public final class GeometrySteps {
         int side = 2 * (int) Math.ceil(Math.sqrt(n));
         List<RobotProperties> props = new ArrayList<>();
         for (int i = 0; i < n; i++) {
-            props.add(RobotModels.SCOUT);
+            props.add(robosim.devices.RobotTypes.properties("Scout"));
         }
         GeometryEngine engine = new GeometryEngine(new StaticWorld(new Arena(0, 0, side * 1000.0, side * 1000.0),
                 List.of()), props, split);

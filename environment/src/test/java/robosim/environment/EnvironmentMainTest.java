@@ -63,7 +63,8 @@ class EnvironmentMainTest {
         Result r = run(f.toString());
         assertEquals(2, r.code());
         assertEquals(java.util.List.of(f + ":1:1: <environment> timeStepMs must be > 0, got -500",
-                f + ":4:1: <robot name=\"a\"> type \"Roomba\" is not a known robot type (known: [ArRobot, Scout], or the "
+                f + ":4:1: <robot name=\"a\"> type \"Roomba\" is not a known robot type (known: "
+                        + robosim.devices.RobotTypes.names() + ", or the "
                         + "class name of a RobotType with radius=\"...\")",
                 f + ":5:1: <robot name=\"a\"> the name is used twice"), r.err().strip().lines().toList());
     }

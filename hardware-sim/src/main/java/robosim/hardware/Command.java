@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.Drive;
 import robosim.protocol.StepResponse;
 
 /**
@@ -47,7 +48,7 @@ abstract class Command {
 
         @Override
         void plan(double stepSeconds) {
-            double piece = Math.copySign(Math.min(Math.abs(remaining), rate * stepSeconds), remaining);
+            double piece = Drive.piece(remaining, rate, stepSeconds);
             plannedMoveMm = turn ? 0 : piece;
             plannedTurnDeg = turn ? piece : 0;
         }

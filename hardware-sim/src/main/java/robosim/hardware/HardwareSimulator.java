@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.RobotType;
 import java.io.EOFException;
 import java.io.Externalizable;
 import java.io.IOException;
@@ -13,7 +14,6 @@ import robosim.protocol.ObjectConnection;
 import robosim.protocol.Protocol;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationKeys;
 import robosim.protocol.SimulationEnd;
@@ -97,11 +97,11 @@ public final class HardwareSimulator {
      */
     void welcomed(RobotWelcome w) throws ProtocolException {
         if (type == null) {
-            if (RobotModels.byName(w.type()) == null) {
+            if (robosim.devices.RobotTypes.properties(w.type()) == null) {
                 throw new ProtocolException("the Environment gave robot " + name + " the type \""
                         + robosim.protocol.Printable.of(w.type(), 64) + "\", which it cannot take unnamed: give --type");
             }
-            type = RobotType.byName(w.type());
+            type = robosim.devices.RobotTypes.byName(w.type());
             state = new RobotKnowledge(name, type);
         }
         welcome = w;
@@ -193,7 +193,7 @@ public final class HardwareSimulator {
         }
         SimulatedRobot api = new SimulatedRobot(state, link, welcome.robotNames(), welcome.timeStepMs(),
                 welcome.sensors(), welcome.seed(), welcome.parameters());
-        stepSeconds = welcome.timeStepMs() / 1000.0;
+        stepSeconds = robosim.devices.Drive.seconds(welcome.timeStepMs());
         sonarWanted = !type.properties().sonars().isEmpty();
         sensorsWanted = welcome.sensors();
         controlThread = ControlThreads.start("control[" + name + "]", () -> runControl(control, api));

@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.RobotType;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.List;
@@ -66,7 +67,7 @@ public final class InMemoryRobots implements InMemoryLink.Starter {
      */
     public InMemoryLink.Robot start(String name, String type, RobotControl control,
             InMemoryLink.Environment environment) {
-        InMemoryRobot r = new InMemoryRobot(new HardwareSimulator(name, RobotType.byName(type)), control, environment);
+        InMemoryRobot r = new InMemoryRobot(new HardwareSimulator(name, robosim.devices.RobotTypes.byName(type)), control, environment);
         started.add(r);
         return r;
     }

@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.RobotType;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.Callable;
@@ -64,7 +65,7 @@ public final class MultiRobotMain implements Callable<Integer> {
             }
             try {
                 RobotLauncher.control(p[2]);
-                RobotType.byName(p[1]);
+                robosim.devices.RobotTypes.byName(p[1]);
             } catch (IllegalArgumentException e) {
                 System.err.println("robots: robot " + p[0] + ": " + e.getMessage());
                 return 2;
@@ -95,7 +96,7 @@ public final class MultiRobotMain implements Callable<Integer> {
             Thread t = new Thread(() -> {
                 try {
                     RobotControl control = RobotLauncher.control(p[2]);
-                    HardwareSimulator sim = launcher.connect(p[0], RobotType.byName(p[1]));
+                    HardwareSimulator sim = launcher.connect(p[0], robosim.devices.RobotTypes.byName(p[1]));
                     ran.add(sim);
                     sim.run(control, each);
                 } catch (Exception e) {
@@ -136,7 +137,7 @@ public final class MultiRobotMain implements Callable<Integer> {
         try {
             for (String[] p : parsed) {
                 controls.add(RobotLauncher.control(p[2]));
-                RobotType type = RobotType.byName(p[1]);
+                RobotType type = robosim.devices.RobotTypes.byName(p[1]);
                 sims.add(oneConnection ? new HardwareSimulator(p[0], type)
                         : launcher.connect(p[0], type));
             }

@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.RobotType;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Arrays;

@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.RobotType;
 import java.io.IOException;
 import java.net.Socket;
 import java.net.UnknownHostException;

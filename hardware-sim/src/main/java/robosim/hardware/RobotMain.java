@@ -1,5 +1,6 @@
 package robosim.hardware;
 
+import robosim.devices.RobotType;
 import java.io.IOException;
 import java.net.UnknownHostException;
 import java.util.concurrent.Callable;
@@ -62,7 +63,7 @@ public final class RobotMain implements Callable<Integer> {
         RobotType robotType;
         try {
             control = RobotLauncher.control(controlClass);
-            robotType = type == null ? null : RobotType.byName(type);
+            robotType = type == null ? null : robosim.devices.RobotTypes.byName(type);
         } catch (IllegalArgumentException e) {
             System.err.println("robot " + name + ": " + e.getMessage());
             return 2;

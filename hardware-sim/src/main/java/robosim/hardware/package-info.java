@@ -13,7 +13,7 @@
  * thread reads and applies responses). In a one-JVM run a robot is an {@link robosim.hardware.InMemoryRobot}
  * and has no exchange thread: the Environment's {@code simulation-loop} applies its responses and builds
  * the requests of a call that goes on, and its {@code control[name]} thread builds the request of each new
- * call as it makes it ({@link robosim.hardware.ControlLink#onYield}). Robot types ({@link robosim.hardware.ArRobot},
- * {@link robosim.hardware.Scout}) are one class each.
+ * call as it makes it ({@link robosim.hardware.ControlLink#onYield}). Robot types ({@link robosim.devices.ArRobot},
+ * {@link robosim.devices.Scout}) are one class each.
  */
 package robosim.hardware;

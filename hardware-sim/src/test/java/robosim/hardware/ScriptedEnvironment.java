@@ -46,7 +46,7 @@ final class ScriptedEnvironment {
                 }
             }, "scripted-environment");
             environment.start();
-            HardwareSimulator sim = new HardwareSimulator("robot1", new ArRobot());
+            HardwareSimulator sim = new HardwareSimulator("robot1", new robosim.devices.ArRobot());
             sim.connect(new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort()), 16);
             String reason = sim.run(control);
             return new Run(hello.get(10, TimeUnit.SECONDS), List.copyOf(seen), reason);

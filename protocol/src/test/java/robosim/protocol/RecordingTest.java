@@ -21,6 +21,12 @@ import org.junit.jupiter.api.io.TempDir;
  * up to its last whole frame, saying where it stops.
  */
 class RecordingTest {
+    /** Two robots' properties (the devices module's ArRobot and Scout, which this module does not see). */
+    private static final RobotProperties AR_ROBOT = new RobotProperties("ArRobot", 250, 1000, 300,
+            List.of(SonarSpec.onRim(250, 0, 15, 5000)));
+    private static final RobotProperties SCOUT = new RobotProperties("Scout", 190, 1000, 300,
+            List.of(SonarSpec.onRim(190, 0, 22.5, 5000), SonarSpec.onRim(190, 180, 22.5, 5000)));
+
     private static final List<String> NAMES = List.of("a", "b");
 
     private static PoseUpdate update(long k) {
@@ -46,7 +52,7 @@ class RecordingTest {
         List<Long> ends = new ArrayList<>();
         try (RecordingWriter w = new RecordingWriter(file)) {
             w.snapshot(new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), NAMES,
-                    List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT), update(0)));
+                    List.of(AR_ROBOT, SCOUT), update(0)));
             w.flush();
             ends.add(Files.size(file));
             for (int k = 0; k < n; k++) {
@@ -66,7 +72,7 @@ class RecordingTest {
         Path file = dir.resolve("v3.rec");
         try (RecordingWriter w = new RecordingWriter(file)) { // (views with nothing more: the same bytes in 3 and 4)
             w.snapshot(new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), NAMES,
-                    List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT), update(0)));
+                    List.of(AR_ROBOT, SCOUT), update(0)));
             StepRequest still = new StepRequest(0, 0, 0, false, List.of());
             StepResponse nothing = new StepResponse(0, 0, 0, "", 0, 1, 0, new double[0], List.of(), List.of(), List.of());
             w.step(update(0), new StepRequest[] {still, null}, new StepResponse[] {nothing, null});
@@ -123,9 +129,9 @@ class RecordingTest {
         Path file = dir.resolve("joins.rec");
         Arena arena = new Arena(0, 0, 1000, 1000);
         WorldSnapshot three = new WorldSnapshot(500, arena, List.of(), List.of("a", "b", "c"),
-                List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT, RobotModels.SCOUT), update3(2));
+                List.of(AR_ROBOT, SCOUT, SCOUT), update3(2));
         try (RecordingWriter w = new RecordingWriter(file)) {
-            w.snapshot(new WorldSnapshot(500, arena, List.of(), NAMES, List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+            w.snapshot(new WorldSnapshot(500, arena, List.of(), NAMES, List.of(AR_ROBOT, SCOUT),
                     update(0)));
             for (int k = 0; k < 3; k++) {
                 w.step(update(k), requests(k), responses(k));

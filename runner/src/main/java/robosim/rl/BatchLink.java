@@ -15,6 +15,7 @@ import org.msgpack.core.MessagePack;
 import org.msgpack.core.MessagePackException;
 import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.ValueType;
+import robosim.environment.core.WorldSpec;
 import robosim.hardware.link.LinkFrames;
 import robosim.hardware.link.LinkHello;
 import robosim.protocol.Printable;
@@ -79,9 +80,9 @@ public final class BatchLink {
     }
 
     /** The largest reply of {@code batch}, bytes (its arrays and their names). */
-    static long replyBytes(int worlds, int robots, int sonars, int messageSize) {
+    static long replyBytes(int worlds, int robots, int sonars, int messageSize, int readings) {
         return 256L + worlds * (8L + BatchWorlds.METRICS.size() * 8L + robots * (sonars * 4L + 12 + 1
-                + (long) robots * messageSize * 4));
+                + (long) robots * messageSize * 4 + readings * 4L));
     }
 
     /**
@@ -98,7 +99,7 @@ public final class BatchLink {
     private byte[] welcomeFrame() throws IOException {
         MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
         List<RobotProperties> properties = batch.properties();
-        p.packMapHeader(18);
+        p.packMapHeader(20);
         p.packString("link").packString(NAME);
         p.packString("version").packInt(VERSION);
         p.packString("world").packString(batch.spec().name());
@@ -136,6 +137,23 @@ public final class BatchLink {
                 .packDouble(batch.spec().arena().minYMm()).packDouble(batch.spec().arena().maxXMm())
                 .packDouble(batch.spec().arena().maxYMm());
         p.packString("seed").packLong(batch.spec().seed());
+        p.packString("readings").packInt(batch.sensorColumns().width());
+        p.packString("sensors").packArrayHeader(batch.robots());
+        for (int i = 0; i < batch.robots(); i++) { // (each robot's sensors: their boxes, from their descriptions)
+            List<SensorColumns.Column> own = batch.sensorColumns().of(i);
+            p.packArrayHeader(own.size());
+            for (int k = 0; k < own.size(); k++) {
+                SensorColumns.Column c = own.get(k);
+                WorldSpec.SensorSpec spec = batch.spec().robots().get(i).sensors().get(k);
+                p.packMapHeader(6);
+                p.packString("name").packString(c.name());
+                p.packString("type").packString(spec.type());
+                p.packString("count").packInt(c.values().count());
+                p.packString("low").packDouble(c.values().low());
+                p.packString("high").packDouble(c.values().high());
+                p.packString("unit").packString(c.values().unit());
+            }
+        }
         if (batch.episodeMetric() == null) {
             p.packString("episode_metric").packNil();
         } else {
@@ -357,7 +375,8 @@ public final class BatchLink {
         }
         stepsServed++;
         reply.packArrayHeader(2).packString("ok");
-        reply.packMapHeader(batch.messageSize() > 0 ? 6 : 5);
+        boolean readings = batch.sensorColumns().width() > 0;
+        reply.packMapHeader(5 + (batch.messageSize() > 0 ? 1 : 0) + (readings ? 1 : 0));
         binary("steps", batch.steps());
         binary("sonar", batch.sonar());
         binary("pose", batch.pose());
@@ -365,6 +384,9 @@ public final class BatchLink {
         binary("metrics", batch.metrics());
         if (batch.messageSize() > 0) {
             binary("messages", batch.messages());
+        }
+        if (readings) {
+            binary("readings", batch.readings());
         }
     }
 

@@ -10,6 +10,7 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
+import robosim.devices.Drive;
 import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
@@ -17,6 +18,7 @@ import robosim.environment.metrics.MetricTally;
 import robosim.protocol.CommEvent;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
+import robosim.protocol.SensorReading;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 import robosim.protocol.WorldSnapshot;
@@ -44,6 +46,8 @@ final class BatchWorld {
     private final Map<String, Integer> byName = new HashMap<>();
     private final double seconds;
     private final StepRequest[] requests;
+    /** Each robot's sensors, asked for with the last time step of each action (the sonars with them). */
+    private final List<String>[] sensors;
     private final StepRequest[] lastRequests;
     private final boolean[] touched;
     /** Null unless the batch measures a metric of each episode's recording. */
@@ -64,8 +68,14 @@ final class BatchWorld {
             names[i] = spec.robots().get(i).name();
             byName.put(names[i], i);
         }
-        this.seconds = spec.timeStepMs() / 1000.0;
+        this.seconds = Drive.seconds(spec.timeStepMs());
         this.requests = new StepRequest[robots];
+        @SuppressWarnings("unchecked")
+        List<String>[] asked = new List[robots];
+        for (int i = 0; i < robots; i++) {
+            asked[i] = batch.sensorColumns().names(i);
+        }
+        this.sensors = asked;
         this.lastRequests = new StepRequest[robots];
         this.touched = new boolean[robots];
         this.responses = new StepResponse[robots];
@@ -96,7 +106,7 @@ final class BatchWorld {
         Arrays.fill(touched, false);
         forgetMessages();
         for (int i = 0; i < robots; i++) {
-            requests[i] = new StepRequest(step, 0, 0, true, List.of());
+            requests[i] = new StepRequest(step, 0, 0, true, List.of(), sensors[i]);
         }
         if (recording != null) {
             recording.begin(core.map().snapshot(-1));
@@ -123,8 +133,9 @@ final class BatchWorld {
                         ? List.of(new CommEvent(names[i], CommEvent.EVERYONE, MessageNumbers.text(actions, a + 2,
                         batch.messageSize())))
                         : List.of();
-                requests[i] = new StepRequest(step, actions[a] * seconds, actions[a + 1] * seconds, r == repeat - 1,
-                        sent);
+                boolean last = r == repeat - 1;
+                requests[i] = new StepRequest(step, Drive.perStep(actions[a], seconds),
+                        Drive.perStep(actions[a + 1], seconds), last, sent, last ? sensors[i] : List.of());
             }
             advance();
         }
@@ -190,6 +201,7 @@ final class BatchWorld {
             FLOAT.set(pose, p + 4, (float) response.yMm());
             FLOAT.set(pose, p + 8, (float) response.headingDeg());
             contact[index * robots + i] = (byte) (touched[i] ? 1 : 0);
+            writeReadings(i, response);
         }
         byte[] metrics = batch.metrics();
         MetricTally tally = core.metrics();
@@ -198,6 +210,36 @@ final class BatchWorld {
             DOUBLE.set(metrics, m + k * 8, tally.value(k));
         }
         LONG.set(batch.steps(), index * 8, step);
+    }
+
+    /**
+     * Robot {@code i}'s readings into its row of the batch's readings: each sensor's values in its columns, held to
+     * its range; zeros where it has none, or a sensor gave none this step (it failed: its notice says why).
+     */
+    private void writeReadings(int i, StepResponse response) {
+        SensorColumns columns = batch.sensorColumns();
+        int width = columns.width();
+        if (width == 0) {
+            return;
+        }
+        byte[] readings = batch.readings();
+        int row = ((index * robots) + i) * width * 4;
+        Arrays.fill(readings, row, row + width * 4, (byte) 0);
+        List<SensorColumns.Column> own = columns.of(i);
+        List<SensorReading> got = response.readings();
+        for (int k = 0; k < own.size(); k++) {
+            SensorColumns.Column c = own.get(k);
+            double[] values = null;
+            for (int g = 0; g < got.size() && values == null; g++) {
+                if (got.get(g).name().equals(c.name())) {
+                    values = got.get(g).values();
+                }
+            }
+            for (int v = 0; values != null && v < values.length && v < c.values().count(); v++) {
+                double held = Math.max(c.values().low(), Math.min(c.values().high(), values[v]));
+                FLOAT.set(readings, row + (c.offset() + v) * 4, (float) held);
+            }
+        }
     }
 
     /** The world as it stands, for a viewer that joins (the caller holds the batch's watch lock). */

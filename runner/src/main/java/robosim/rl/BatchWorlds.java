@@ -6,7 +6,6 @@ import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.List;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.sweep.MetricChoice;
 import robosim.environment.metrics.Metrics;
@@ -20,7 +19,6 @@ import robosim.environment.metrics.Metrics;
  * same actions give the same arrays, bit for bit, whatever the threads.
  */
 public final class BatchWorlds implements AutoCloseable {
-    /** The live metrics of each world, in this order: the built-in metrics of a sweep. */
     /** The metrics of each world, in their column order (the registry's, {@link Metrics}). */
     public static final List<String> METRICS = Metrics.names();
     /** A robot's action: linear velocity (mm/s), rotational velocity (deg/s), then its message's numbers. */
@@ -42,6 +40,8 @@ public final class BatchWorlds implements AutoCloseable {
     private final byte[] pose;
     private final byte[] contact;
     private final byte[] messages;
+    private final SensorColumns sensorColumns;
+    private final byte[] readings;
     private final byte[] metrics;
     private final byte[] steps;
 
@@ -69,7 +69,7 @@ public final class BatchWorlds implements AutoCloseable {
         List<RobotProperties> p = new ArrayList<>();
         int most = 0;
         for (WorldSpec.RobotSpec r : spec.robots()) {
-            RobotProperties model = RobotModels.byName(r.type());
+            RobotProperties model = robosim.devices.RobotTypes.properties(r.type());
             p.add(model);
             most = Math.max(most, model.sonars().size());
         }
@@ -85,6 +85,8 @@ public final class BatchWorlds implements AutoCloseable {
         this.pose = new byte[count * robots * 3 * 4];
         this.contact = new byte[count * robots];
         this.messages = new byte[count * robots * robots * messageSize * 4];
+        this.sensorColumns = new SensorColumns(spec);
+        this.readings = new byte[count * robots * sensorColumns.width() * 4];
         this.metrics = new byte[count * METRICS.size() * 8];
         this.steps = new byte[count * 8];
         this.threads = Math.max(1, Math.min(settings.threads(), count));
@@ -255,6 +257,19 @@ public final class BatchWorlds implements AutoCloseable {
     /** float32 [worlds][robots][robots][messageSize]: the last message each robot heard from each, zeros if none. */
     public byte[] messages() {
         return messages;
+    }
+
+    /**
+     * float32 [worlds][robots][{@link SensorColumns#width()}]: each robot's sensors' readings of the last action's last
+     * time step, in their sensors' columns, zeros where it has none.
+     */
+    public byte[] readings() {
+        return readings;
+    }
+
+    /** Where each robot's sensors lie in {@link #readings()}. */
+    SensorColumns sensorColumns() {
+        return sensorColumns;
     }
 
     /** float64 [worlds][{@link #METRICS}]: each world's episode so far. */

@@ -32,7 +32,6 @@ import robosim.hardware.link.LinkFrames;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
-import robosim.protocol.RobotModels;
 import robosim.runner.EnvOption;
 import robosim.sweep.AreaCellOption;
 import robosim.sweep.MetricChoice;
@@ -268,12 +267,21 @@ public final class LearningHostMain implements Callable<Integer> {
             return env.file() + ": robots that join during a run are not for learning (the agents are the file's robots)";
         }
         for (WorldSpec.RobotSpec r : spec.robots()) {
-            if (RobotModels.byName(r.type()) == null) {
+            if (robosim.devices.RobotTypes.properties(r.type()) == null) {
                 return env.file() + ": robot " + r.name() + ": type " + r.type() + " is not a known model";
             }
         }
-        int sonars = spec.robots().stream().mapToInt(r -> RobotModels.byName(r.type()).sonars().size()).max().orElse(0);
-        long bytes = BatchLink.replyBytes(worlds, spec.robots().size(), sonars, messageSize);
+        int sonars = spec.robots().stream().mapToInt(r -> robosim.devices.RobotTypes.properties(r.type()).sonars().size()).max().orElse(0);
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            for (String name : r.sensorNames()) {
+                if (List.of("sonar", "contact", "pose", "messages").contains(name)) {
+                    return env.file() + ": robot " + r.name() + ": a sensor named " + name + " would hide the "
+                            + "observation of that name: name it otherwise (<sensor name=\"...\">)";
+                }
+            }
+        }
+        long bytes = BatchLink.replyBytes(worlds, spec.robots().size(), sonars, messageSize,
+                new SensorColumns(spec).width());
         if (bytes > LinkFrames.MAX_BYTES) {
             return worlds + " worlds of " + spec.robots().size() + " robots make a step's reply of " + bytes
                     + " bytes, over the link's " + LinkFrames.MAX_BYTES + ": fewer worlds (or a smaller message)";

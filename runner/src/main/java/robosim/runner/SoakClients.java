@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.function.Consumer;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationKeys;
 import robosim.protocol.StepRequest;
@@ -24,7 +23,7 @@ final class SoakClients {
     static void silentRobot(String name, int port, long silentAt, Consumer<String> faults) {
         try (ObjectConnection c = ObjectConnection.client(new Socket(InetAddress.getLoopbackAddress(), port), 256,
                 SimulationKeys.fromEnvironment())) {
-            c.write(new RobotHello(name, RobotModels.AR_ROBOT));
+            c.write(new RobotHello(name, robosim.devices.RobotTypes.properties("ArRobot")));
             c.flush();
             java.io.Externalizable welcome = c.answerChallenge(SimulationKeys.fromEnvironment(), "robot");
             if (!(welcome instanceof RobotWelcome w) || !w.isAccepted()) {

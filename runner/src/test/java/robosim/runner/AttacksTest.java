@@ -24,7 +24,6 @@ import robosim.environment.run.Settings;
 import robosim.protocol.GeometryHello;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
@@ -56,7 +55,7 @@ class AttacksTest {
     private static List<ObjectConnection> robots(int port) throws IOException {
         List<ObjectConnection> robots = new ArrayList<>();
         String[] names = {"r1", "r2", "r3"};
-        RobotProperties[] types = {RobotModels.AR_ROBOT, RobotModels.AR_ROBOT, RobotModels.SCOUT};
+        RobotProperties[] types = {robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("Scout")};
         for (int i = 0; i < 3; i++) {
             ObjectConnection c = new ObjectConnection(socket(port), 64);
             c.write(new RobotHello(names[i], types[i]));
@@ -259,7 +258,7 @@ class AttacksTest {
         try (ClientWorkerCoordinator env = start(settings())) {
             System.setErr(new PrintStream(captured, true, StandardCharsets.UTF_8));
             try (ObjectConnection c = new ObjectConnection(socket(env.ports()[0]), 64)) {
-                c.write(new RobotHello("evil\n" + forged, RobotModels.AR_ROBOT));
+                c.write(new RobotHello("evil\n" + forged, robosim.devices.RobotTypes.properties("ArRobot")));
                 c.flush();
                 RobotWelcome refusal = c.read(RobotWelcome.class);
                 assertFalse(refusal.isAccepted());

@@ -17,7 +17,7 @@ import robosim.environment.control.EnvironmentHost;
 import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.SimulationKeys;
 
 /** An Environment host with its control port, on ephemeral ports; paused until told. */
@@ -78,7 +78,7 @@ final class ControlFixture implements AutoCloseable {
         int port = host.ports()[0];
         List<CompletableFuture<String>> out = new ArrayList<>();
         for (var r : new EnvironmentLoader().load(host.file()).robots()) {
-            HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+            HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
             Socket socket = new Socket(InetAddress.getLoopbackAddress(), port);
             sockets.add(socket);
             sim.connect(socket, 64);

@@ -53,7 +53,7 @@ class ControlPortTest {
                 JsonNode r = c.request(bad[0]);
                 assertTrue(!r.path("ok").asBoolean() && r.path("error").asText().startsWith(bad[1]), bad[0] + " -> " + r);
             }
-            try (RawRobot r9 = new RawRobot("r9", robosim.protocol.RobotModels.SCOUT, f.host.ports()[0])) {
+            try (RawRobot r9 = new RawRobot("r9", robosim.devices.RobotTypes.properties("Scout"), f.host.ports()[0])) {
                 assertTrue(r9.welcome.isAccepted(), r9.welcome.reason());
                 assertEquals(11_000, r9.welcome.xMm());
                 assertEquals(2_000, r9.welcome.yMm());

@@ -21,12 +21,11 @@ import robosim.examples.TagChase;
 import robosim.examples.Wander;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 
 /** The example control programs in their environments, over real sockets with a Geometry client. */
 class ExamplesIntegrationTest {
     private static double radius(WorldSpec.RobotSpec r) {
-        return RobotModels.byName(r.type()).radiusMm();
+        return robosim.devices.RobotTypes.properties(r.type()).radiusMm();
     }
 
     /**

@@ -34,15 +34,14 @@ import robosim.environment.run.RunSummary;
 import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
 import robosim.geometry.GeometryClient;
-import robosim.hardware.ArRobot;
+import robosim.devices.ArRobot;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.Scout;
+import robosim.devices.Scout;
 import robosim.protocol.GeometryHello;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.Protocol;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -82,7 +81,7 @@ class FaultsTest {
                 .maxSteps(steps).resetEvery(64).handshakeTimeoutMs(10_000);
     }
 
-    private static CompletableFuture<String> robot(String name, robosim.hardware.RobotType type, int port) {
+    private static CompletableFuture<String> robot(String name, robosim.devices.RobotType type, int port) {
         return CompletableFuture.supplyAsync(() -> {
             try {
                 HardwareSimulator sim = new HardwareSimulator(name, type);
@@ -97,7 +96,7 @@ class FaultsTest {
     /** A robot client by hand: hello, welcome, then {@code steps} steps standing still. */
     private static ObjectConnection rawRobot(String name, int port, int steps) throws IOException {
         ObjectConnection c = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 64);
-        c.write(new RobotHello(name, RobotModels.AR_ROBOT));
+        c.write(new RobotHello(name, robosim.devices.RobotTypes.properties("ArRobot")));
         c.flush();
         assertTrue(c.read(RobotWelcome.class).isAccepted());
         for (int k = 0; k < steps; k++) {
@@ -459,7 +458,7 @@ class FaultsTest {
         ByteArrayOutputStream bytes = new ByteArrayOutputStream();
         try (ObjectOutputStream out = new ObjectOutputStream(bytes)) {
             out.writeUnshared(switch (port) {
-                case "robot" -> new RobotHello("r1", RobotModels.AR_ROBOT);
+                case "robot" -> new RobotHello("r1", robosim.devices.RobotTypes.properties("ArRobot"));
                 case "viewer" -> new ViewerHello(true);
                 default -> new GeometryHello();
             });

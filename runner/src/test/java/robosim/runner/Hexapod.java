@@ -1,31 +1,18 @@
 package robosim.runner;
 
-import java.util.ArrayList;
-import java.util.List;
-import robosim.hardware.RobotType;
-import robosim.protocol.RobotProperties;
-import robosim.protocol.SonarSpec;
+import robosim.devices.Body;
+import robosim.devices.RobotType;
 
-/** A robot type that exists only in the tests: one class, radius 300 mm, six sonars all round. */
+/** A robot type that exists only in the tests, named by its class: radius 300 mm, six sonars all round. */
 public final class Hexapod extends RobotType {
     static final double RADIUS_MM = 300;
-
-    private final double radiusMm;
 
     public Hexapod() {
         this(RADIUS_MM);
     }
 
     Hexapod(double radiusMm) {
-        this.radiusMm = radiusMm;
-    }
-
-    @Override
-    public RobotProperties properties() {
-        List<SonarSpec> sonars = new ArrayList<>();
-        for (int i = 0; i < 6; i++) {
-            sonars.add(SonarSpec.onRim(radiusMm, i * 60, 20, 4000));
-        }
-        return new RobotProperties(Hexapod.class.getName(), radiusMm, 600, 120, sonars);
+        super(Hexapod.class.getName(), "a test's six-legged robot", new Body(radiusMm, 600, 120),
+                ring(radiusMm, 20, 4000, 0, 60, 120, 180, 240, 300));
     }
 }

@@ -17,7 +17,7 @@ import robosim.environment.run.RunListener;
 import robosim.environment.run.Settings;
 import robosim.geometry.GeometryClient;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.SimulationKeys;
@@ -226,7 +226,7 @@ final class InJvmSimulation {
             if (exchange == Exchange.ONE_CONNECTION) {
                 threads.add(thread("one-connection", failures, () -> {
                     robosim.hardware.ManyRobots.runOverOneConnection(spec.robots().stream().map(r ->
-                            new HardwareSimulator(r.name(), RobotType.byName(r.type()))).toList(), controls,
+                            new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()))).toList(), controls,
                             new Socket(InetAddress.getLoopbackAddress(), ports[0]), resetEvery,
                             keys);
                     return null;
@@ -235,7 +235,7 @@ final class InJvmSimulation {
                 threads.add(thread("shared-exchange", failures, () -> {
                     List<HardwareSimulator> sims = new ArrayList<>();
                     for (WorldSpec.RobotSpec r : spec.robots()) {
-                        HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                        HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
                         sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
                                 resetEvery, keys);
                         sims.add(sim);
@@ -250,7 +250,7 @@ final class InJvmSimulation {
                     WorldSpec.RobotSpec r = spec.robots().get(i);
                     RobotControl c = controls.get(i);
                     threads.add(thread(r.name(), failures, () -> {
-                        HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                        HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
                         sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]),
                                 resetEvery, keys);
                         return sim.run(c, each);

@@ -17,14 +17,13 @@ import robosim.environment.core.WorldSpec;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
-import robosim.hardware.ArRobot;
+import robosim.devices.ArRobot;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.Scout;
+import robosim.devices.Scout;
 import robosim.protocol.GeometryHello;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.ProtocolException;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.StepRequest;
 
@@ -41,7 +40,7 @@ class MisbehavingClientsTest {
         return env;
     }
 
-    private static HardwareSimulator connect(String name, robosim.hardware.RobotType type, int port) throws Exception {
+    private static HardwareSimulator connect(String name, robosim.devices.RobotType type, int port) throws Exception {
         HardwareSimulator sim = new HardwareSimulator(name, type);
         sim.connect(new Socket(InetAddress.getLoopbackAddress(), port), 64);
         return sim;
@@ -60,7 +59,7 @@ class MisbehavingClientsTest {
     /** A raw robot client: says hello as {@code name} and reads its welcome. */
     private static ObjectConnection raw(String name, int port) throws IOException {
         ObjectConnection c = new ObjectConnection(new Socket(InetAddress.getLoopbackAddress(), port), 64);
-        c.write(new RobotHello(name, RobotModels.AR_ROBOT));
+        c.write(new RobotHello(name, robosim.devices.RobotTypes.properties("ArRobot")));
         c.flush();
         assertTrue(c.read(RobotWelcome.class).isAccepted());
         return c;

@@ -19,7 +19,7 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.WorldSpec;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.ViewerClient;
@@ -63,7 +63,7 @@ class RecordingCrashTest {
             });
             WorldSpec spec = new EnvironmentLoader().load(envFile);
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
                 sim.connect(new Socket(InetAddress.getLoopbackAddress(), robotPort), 64, null);
                 Thread t = new Thread(() -> {
                     try {

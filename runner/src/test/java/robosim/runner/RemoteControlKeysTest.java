@@ -28,7 +28,7 @@ import robosim.environment.run.Settings;
 import robosim.examples.RemoteControlRobot;
 import robosim.examples.RobotInfo;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.SimulationKeys;
 import robosim.protocol.ViewerClient;
@@ -77,7 +77,7 @@ class RemoteControlKeysTest {
                 }
             });
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                HardwareSimulator sim = new HardwareSimulator(r.name(), RobotType.byName(r.type()));
+                HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
                 sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
                 CompletableFuture.runAsync(() -> {
                     try {

@@ -17,7 +17,6 @@ import robosim.control.ControlClient;
 import robosim.protocol.CommEvent;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotView;
 import robosim.protocol.StepRequest;
 
@@ -103,7 +102,7 @@ class RobotHoldProcessesTest {
         Path still = dir.resolve("still.rec");
         try (ProcessLines env = environment(still)) {
             int port = Integer.parseInt(HeadlessRunner.fields(env.await("listening robots=", LONG_S)).get("robots"));
-            try (ProcessLines others = others(port); RawRobot ring2 = new RawRobot("ring2", RobotModels.AR_ROBOT, port)) {
+            try (ProcessLines others = others(port); RawRobot ring2 = new RawRobot("ring2", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(ring2.welcome.isAccepted(), ring2.welcome.reason());
                 while (ring2.next()) {
                     RobotView v = withHold.get((int) ring2.step).view(RING2);

@@ -23,11 +23,10 @@ import robosim.environment.run.CoordinatorDesign;
 import robosim.environment.run.Settings;
 import robosim.examples.Wander;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
-import robosim.protocol.RobotModels;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.WorldSnapshot;
 
@@ -118,7 +117,7 @@ class RobotJoinTest {
                 }, TestThreads.ROBOTS);
             }
             Seen seen = watch(ports[1], log);
-            HardwareSimulator walker = new HardwareSimulator("walker", RobotType.byName("ArRobot"));
+            HardwareSimulator walker = new HardwareSimulator("walker", robosim.devices.RobotTypes.byName("ArRobot"));
             walker.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
             CompletableFuture<String> walking = CompletableFuture.supplyAsync(() -> {
                 try {
@@ -132,7 +131,7 @@ class RobotJoinTest {
             for (int k = 1; k <= 20; k++) {
                 env.step(4, LONG, TimeUnit.SECONDS);
                 env.pause(LONG, TimeUnit.SECONDS); // (step 4k is computed and held: the scout joins after it)
-                RawRobot scout = new RawRobot("scout-" + k, RobotModels.SCOUT, ports[0]);
+                RawRobot scout = new RawRobot("scout-" + k, robosim.devices.RobotTypes.properties("Scout"), ports[0]);
                 assertTrue(scout.welcome.isAccepted(), scout.welcome.reason());
                 assertEquals(1 + k, scout.welcome.robotNames().size(), "it is told every robot's name, its own last");
                 scouts.add(drive(scout));
@@ -224,20 +223,20 @@ class RobotJoinTest {
     void aNameNoRuleAllowsAFullSpawnRegionATakenStartPoseAndADuplicateAreRefusedNamingTheValue() throws Exception {
         try (ClientWorkerCoordinator env = start()) {
             int port = env.ports()[0];
-            try (RawRobot walker = new RawRobot("walker", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot walker = new RawRobot("walker", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(walker.welcome.isAccepted());
                 assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
                 String refused = refusal("rover", port);
                 assertTrue(refused.startsWith("no robot named \"rover\" in " + WORLD + " (robots: walker; may join: "
                         + "late, scout-*, pack-?)"), refused);
-                try (RawRobot pack = new RawRobot("pack-1", RobotModels.SCOUT, port)) {
+                try (RawRobot pack = new RawRobot("pack-1", robosim.devices.RobotTypes.properties("Scout"), port)) {
                     assertTrue(pack.welcome.isAccepted(), pack.welcome.reason());
                     refused = refusal("pack-2", port);
                     assertTrue(refused.startsWith("the spawn region of pack-? in " + WORLD + " has no free pose for "
                             + "pack-2 (every pose in it is taken)"), refused);
                     refused = refusal("pack-1", port);
                     assertTrue(refused.startsWith("robot pack-1 is already connected"), refused);
-                    try (RawRobot late = new RawRobot("late", RobotModels.SCOUT, port)) {
+                    try (RawRobot late = new RawRobot("late", robosim.devices.RobotTypes.properties("Scout"), port)) {
                         assertTrue(late.welcome.isAccepted(), late.welcome.reason());
                         assertEquals(10_000, late.welcome.xMm());
                         assertEquals(7_000, late.welcome.yMm());
@@ -248,7 +247,7 @@ class RobotJoinTest {
         }
         try (ClientWorkerCoordinator env = start(Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0)
                 .inProcessGeometry(true).maxSteps(STEPS).design(CoordinatorDesign.SEQUENTIAL).build());
-                RawRobot walker = new RawRobot("walker", RobotModels.AR_ROBOT, env.ports()[0])) {
+                RawRobot walker = new RawRobot("walker", robosim.devices.RobotTypes.properties("ArRobot"), env.ports()[0])) {
             assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
             String refused = refusal("scout-1", env.ports()[0]);
             assertTrue(refused.startsWith("robots cannot join this run: its SEQUENTIAL coordinator"), refused);
@@ -256,7 +255,7 @@ class RobotJoinTest {
     }
 
     private static String refusal(String name, int port) throws Exception {
-        try (RawRobot r = new RawRobot(name, RobotModels.SCOUT, port)) {
+        try (RawRobot r = new RawRobot(name, robosim.devices.RobotTypes.properties("Scout"), port)) {
             assertFalse(r.welcome.isAccepted(), name + " was let in");
             return r.welcome.reason();
         }

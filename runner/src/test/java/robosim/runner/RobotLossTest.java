@@ -23,7 +23,6 @@ import robosim.environment.run.RunListener;
 import robosim.environment.run.RunSummary;
 import robosim.environment.run.Settings;
 import robosim.protocol.CommEvent;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.StepResponse;
 
@@ -60,7 +59,7 @@ class RobotLossTest {
     private static CompletableFuture<Long> others(int port, long waitAt, CountDownLatch reached, CountDownLatch go) {
         CompletableFuture<Void> r3 = CompletableFuture.runAsync(() -> standStill("r3", port), TestThreads.ROBOTS);
         return CompletableFuture.supplyAsync(() -> {
-            try (RawRobot r2 = new RawRobot("r2", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r2 = new RawRobot("r2", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(r2.welcome.isAccepted(), r2.welcome.reason());
                 long last = -1;
                 while (r2.next()) {
@@ -81,7 +80,7 @@ class RobotLossTest {
     }
 
     private static void standStill(String name, int port) {
-        try (RawRobot r = new RawRobot(name, RobotModels.SCOUT, port)) {
+        try (RawRobot r = new RawRobot(name, robosim.devices.RobotTypes.properties("Scout"), port)) {
             while (r.next()) {
                 r.step(0, 0, false, List.of());
             }
@@ -132,11 +131,11 @@ class RobotLossTest {
             CompletableFuture<Long> others = others(port, 41, at41, back);
             List<String> inbox = new ArrayList<>();
             StepResponse before;
-            try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 before = r1Steps(r1, 20, inbox); // steps 0..19, then its connection closes
             }
             assertTrue(at41.await(LONG, TimeUnit.SECONDS), "the others went on without it");
-            try (RawRobot again = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot again = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(again.welcome.isAccepted(), again.welcome.reason());
                 assertEquals(before.xMm(), again.welcome.xMm(), "it comes back where it stood");
                 assertEquals(before.yMm(), again.welcome.yMm());
@@ -166,11 +165,11 @@ class RobotLossTest {
             int port = env.ports()[0];
             CompletableFuture<Long> others = others(port, -1, new CountDownLatch(1), new CountDownLatch(0));
             List<String> inbox = new ArrayList<>();
-            try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 r1Steps(r1, 20, inbox);
             }
             assertTrue(held.await(LONG, TimeUnit.SECONDS), "r1 is held");
-            try (RawRobot again = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot again = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(again.welcome.isAccepted(), again.welcome.reason());
                 assertTrue(again.next());
                 assertEquals(20, again.step, "the world waited at the step it was lost in");
@@ -190,7 +189,7 @@ class RobotLossTest {
         try (ClientWorkerCoordinator env = start(RobotLoss.WAIT, CoordinatorDesign.THREADS, STEP_TIMEOUT_MS)) {
             int port = env.ports()[0];
             CompletableFuture<Long> others = others(port, -1, new CountDownLatch(1), new CountDownLatch(0));
-            try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 r1Steps(r1, 20, new ArrayList<>());
             }
             assertEquals(STEPS - 1, others.get(LONG, TimeUnit.SECONDS));
@@ -212,16 +211,16 @@ class RobotLossTest {
             int port = env.ports()[0];
             CountDownLatch done = new CountDownLatch(1);
             CompletableFuture<Long> others = others(port, 30, new CountDownLatch(1), done);
-            try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 r1Steps(r1, 20, new ArrayList<>());
-                try (RawRobot twin = new RawRobot("r2", RobotModels.AR_ROBOT, port)) {
+                try (RawRobot twin = new RawRobot("r2", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                     assertFalse(twin.welcome.isAccepted());
                     assertTrue(twin.welcome.reason().startsWith("robot r2 is already connected"), twin.welcome.reason());
                 }
             }
-            RobotProperties faster = new RobotProperties("ArRobot", RobotModels.AR_ROBOT.radiusMm(),
-                    2 * RobotModels.AR_ROBOT.maxSpeedMmPerS(), RobotModels.AR_ROBOT.maxTurnDegPerS(),
-                    RobotModels.AR_ROBOT.sonars());
+            RobotProperties faster = new RobotProperties("ArRobot", robosim.devices.RobotTypes.properties("ArRobot").radiusMm(),
+                    2 * robosim.devices.RobotTypes.properties("ArRobot").maxSpeedMmPerS(), robosim.devices.RobotTypes.properties("ArRobot").maxTurnDegPerS(),
+                    robosim.devices.RobotTypes.properties("ArRobot").sonars());
             assertTrue(held.await(LONG, TimeUnit.SECONDS), "r1 is held");
             try (RawRobot other = new RawRobot("r1", faster, port)) {
                 assertFalse(other.welcome.isAccepted());
@@ -242,11 +241,11 @@ class RobotLossTest {
             int port = env.ports()[0];
             CountDownLatch done = new CountDownLatch(1);
             CompletableFuture<Long> others = others(port, 30, new CountDownLatch(1), done);
-            try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 r1Steps(r1, 20, new ArrayList<>());
             }
             assertTrue(left.await(LONG, TimeUnit.SECONDS), "r1 is removed");
-            try (RawRobot again = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot again = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertFalse(again.welcome.isAccepted());
                 assertTrue(again.welcome.reason().contains("--on-robot-loss HOLD or WAIT"), again.welcome.reason());
             }

@@ -14,7 +14,7 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
-import robosim.hardware.ArRobot;
+import robosim.devices.ArRobot;
 import robosim.hardware.HardwareSimulator;
 import robosim.protocol.ProtocolException;
 
@@ -63,13 +63,13 @@ class RobotRefusalTest {
         }
     }
 
-    private static HardwareSimulator connect(String name, robosim.hardware.RobotType type, int port) throws Exception {
+    private static HardwareSimulator connect(String name, robosim.devices.RobotType type, int port) throws Exception {
         HardwareSimulator sim = new HardwareSimulator(name, type);
         sim.connect(new Socket(InetAddress.getLoopbackAddress(), port), 64);
         return sim;
     }
 
-    private static String refusal(String name, robosim.hardware.RobotType type, int port) {
+    private static String refusal(String name, robosim.devices.RobotType type, int port) {
         return assertThrows(ProtocolException.class, () -> connect(name, type, port)).getMessage();
     }
 

@@ -18,7 +18,6 @@ import robosim.environment.run.RobotLoss;
 import robosim.environment.run.RunListener;
 import robosim.environment.run.Settings;
 import robosim.protocol.CommEvent;
-import robosim.protocol.RobotModels;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
@@ -51,7 +50,7 @@ class RobotReturnTest {
     /** {@code name} by hand to the end; r2 sends r1 its step number every step. */
     private static CompletableFuture<Void> steps(String name, int port) {
         return CompletableFuture.runAsync(() -> {
-            try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r = new RawRobot(name, name.equals("r3") ? robosim.devices.RobotTypes.properties("Scout") : robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 while (r.next() && r.step(0, 0, false, name.equals("r2")
                         ? List.of(new CommEvent("r2", "r1", Long.toString(r.step))) : List.of()) != null) {
                     // (to the end)
@@ -90,7 +89,7 @@ class RobotReturnTest {
             CountDownLatch close = new CountDownLatch(1);
             List<String> inbox = new ArrayList<>();
             CompletableFuture<Void> first = CompletableFuture.runAsync(() -> {
-                try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+                try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                     while (r1.next() && r1.step < 10) {
                         r1.step(0, 0, false, List.of()).inbox().forEach(m -> inbox.add(m.payload()));
                     }
@@ -111,7 +110,7 @@ class RobotReturnTest {
             close.countDown();
             first.get(LONG, TimeUnit.SECONDS); // its connection closed, whether or not the loop has heard yet
             awaitClosed(env, "r1"); // (the Environment's end of it too: a hello before that is "already connected")
-            try (RawRobot again = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot again = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(again.welcome.isAccepted(), again.welcome.reason());
                 env.resume();
                 assertTrue(again.next());
@@ -141,7 +140,7 @@ class RobotReturnTest {
             List<CompletableFuture<Void>> fiveSteps = new ArrayList<>();
             for (String name : List.of("r1", "r2", "r3")) {
                 fiveSteps.add(CompletableFuture.runAsync(() -> {
-                    try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT,
+                    try (RawRobot r = new RawRobot(name, name.equals("r3") ? robosim.devices.RobotTypes.properties("Scout") : robosim.devices.RobotTypes.properties("ArRobot"),
                             port)) {
                         for (int k = 0; k < 5 && r.next(); k++) {
                             r.step(0, 0, false, List.of());
@@ -159,7 +158,7 @@ class RobotReturnTest {
                     "the loop answers (it is not spinning through the steps)");
             long at = env.status().step();
             assertTrue(at < STEPS, "the world waited at step " + at);
-            try (RawRobot r1 = new RawRobot("r1", RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r1 = new RawRobot("r1", robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(r1.welcome.isAccepted(), r1.welcome.reason());
                 int steps = 0;
                 while (r1.next()) {
@@ -183,13 +182,13 @@ class RobotReturnTest {
             CompletableFuture<Void> r3 = steps("r3", port);
             assertTrue(env.awaitStart(LONG, TimeUnit.SECONDS));
             assertNull(env.roster().add("r9", "Scout", 11, 2, 180, ""));
-            try (RawRobot r9 = new RawRobot("r9", RobotModels.SCOUT, port)) {
+            try (RawRobot r9 = new RawRobot("r9", robosim.devices.RobotTypes.properties("Scout"), port)) {
                 assertTrue(r9.welcome.isAccepted(), r9.welcome.reason());
                 assertTrue(r9.next());
                 r9.step(50, 0, false, List.of());
             }
             assertTrue(held.await(LONG, TimeUnit.SECONDS), "r9 is held");
-            try (RawRobot again = new RawRobot("r9", RobotModels.SCOUT, port)) {
+            try (RawRobot again = new RawRobot("r9", robosim.devices.RobotTypes.properties("Scout"), port)) {
                 assertTrue(again.welcome.isAccepted(), again.welcome.reason());
                 assertEquals(11_000 - 50, again.welcome.xMm(), 1e-6, "where it stood");
                 for (int k = 0; k < 3; k++) {

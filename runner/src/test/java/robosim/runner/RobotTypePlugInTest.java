@@ -13,7 +13,7 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.run.Settings;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.ProtocolException;
 
 /** A new robot type is one class on the Hardware Simulator's side; the Environment learns it from the handshake. */
@@ -32,7 +32,7 @@ class RobotTypePlugInTest {
 
     @Test
     void aHexapodRunsWithItsOwnShapeAndSonars() throws Exception {
-        assertEquals(Hexapod.class, RobotType.byName(Hexapod.class.getName()).getClass());
+        assertEquals(Hexapod.class, robosim.devices.RobotTypes.byName(Hexapod.class.getName()).getClass());
         Drive[] drive = new Drive[1];
         InJvmSimulation sim = new InJvmSimulation(Path.of("src/test/resources/hexapod.xml"))
                 .run(20, false, () -> drive[0] = new Drive());

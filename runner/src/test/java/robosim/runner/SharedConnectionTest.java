@@ -20,7 +20,6 @@ import robosim.environment.run.RunListener;
 import robosim.environment.run.RunSummary;
 import robosim.environment.run.Settings;
 import robosim.protocol.Protocol;
-import robosim.protocol.RobotModels;
 import robosim.protocol.SharedReplies;
 import robosim.protocol.SharedRequests;
 import robosim.protocol.StepRequest;
@@ -54,7 +53,7 @@ class SharedConnectionTest {
 
     private static CompletableFuture<Void> standStill(String name, int port) {
         return CompletableFuture.runAsync(() -> {
-            try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT, port)) {
+            try (RawRobot r = new RawRobot(name, name.equals("r3") ? robosim.devices.RobotTypes.properties("Scout") : robosim.devices.RobotTypes.properties("ArRobot"), port)) {
                 assertTrue(r.welcome.isAccepted(), r.welcome.reason());
                 while (r.next()) {
                     r.step(0, 0, false, List.of());
@@ -104,7 +103,7 @@ class SharedConnectionTest {
         try {
             int port = env.ports()[0];
             CompletableFuture<Void> r3 = standStill("r3", port);
-            try (RawSharedRobots shared = new RawSharedRobots(port, List.of("r1", "r2"), RobotModels.AR_ROBOT)) {
+            try (RawSharedRobots shared = new RawSharedRobots(port, List.of("r1", "r2"), robosim.devices.RobotTypes.properties("ArRobot"))) {
                 assertEquals(2, shared.welcomes.count());
                 for (int i = 0; i < 2; i++) {
                     assertEquals(i, shared.welcomes.slot(i));
@@ -159,7 +158,7 @@ class SharedConnectionTest {
             CompletableFuture<Void> r2 = standStill("r2", port);
             CompletableFuture<Void> r3 = standStill("r3", port);
             long last = -1;
-            try (RawSharedRobots shared = new RawSharedRobots(port, List.of("ghost", "r1"), RobotModels.AR_ROBOT)) {
+            try (RawSharedRobots shared = new RawSharedRobots(port, List.of("ghost", "r1"), robosim.devices.RobotTypes.properties("ArRobot"))) {
                 assertEquals(2, shared.welcomes.count());
                 assertFalse(shared.welcomes.welcome(0).isAccepted());
                 assertTrue(shared.welcomes.welcome(0).reason().startsWith("no robot named \"ghost\" in"),
@@ -225,7 +224,7 @@ class SharedConnectionTest {
             });
             java.util.concurrent.CountDownLatch atTen = new java.util.concurrent.CountDownLatch(1);
             CompletableFuture<Void> r3 = CompletableFuture.runAsync(() -> {
-                try (RawRobot r = new RawRobot("r3", RobotModels.SCOUT, port)) {
+                try (RawRobot r = new RawRobot("r3", robosim.devices.RobotTypes.properties("Scout"), port)) {
                     while (r.next()) {
                         if (r.step == 10) {
                             atTen.countDown(); // (the world collects step 10 until r1 and r2 are back)
@@ -239,7 +238,7 @@ class SharedConnectionTest {
                     throw new IllegalStateException(e);
                 }
             }, TestThreads.ROBOTS);
-            try (RawSharedRobots first = new RawSharedRobots(port, List.of("r1", "r2"), RobotModels.AR_ROBOT)) {
+            try (RawSharedRobots first = new RawSharedRobots(port, List.of("r1", "r2"), robosim.devices.RobotTypes.properties("ArRobot"))) {
                 long[] due = {-1, -1};
                 while (due[0] < 5 || due[1] < 5) { // (steps 0 to 4 taken, then the connection is lost)
                     SharedReplies f = first.next();
@@ -260,8 +259,8 @@ class SharedConnectionTest {
             assertTrue(held.await(LONG, TimeUnit.SECONDS), "r1 and r2 held");
             assertTrue(atTen.await(LONG, TimeUnit.SECONDS), "r3 at step 10");
             List<robosim.hardware.HardwareSimulator> sims = List.of(
-                    new robosim.hardware.HardwareSimulator("r1", robosim.hardware.RobotType.byName("ArRobot")),
-                    new robosim.hardware.HardwareSimulator("r2", robosim.hardware.RobotType.byName("ArRobot")));
+                    new robosim.hardware.HardwareSimulator("r1", robosim.devices.RobotTypes.byName("ArRobot")),
+                    new robosim.hardware.HardwareSimulator("r2", robosim.devices.RobotTypes.byName("ArRobot")));
             CompletableFuture<Void> newProcess = CompletableFuture.runAsync(() -> {
                 try {
                     robosim.hardware.ManyRobots.runOverOneConnection(sims, List.of(new robosim.examples.BackAndForth(),
@@ -291,7 +290,7 @@ class SharedConnectionTest {
         try (ClientWorkerCoordinator env = start(Settings.builder().design(
                 robosim.environment.run.CoordinatorDesign.SEQUENTIAL))) {
             java.io.IOException e = org.junit.jupiter.api.Assertions.assertThrows(java.io.IOException.class,
-                    () -> new RawSharedRobots(env.ports()[0], List.of("r1", "r2"), RobotModels.AR_ROBOT));
+                    () -> new RawSharedRobots(env.ports()[0], List.of("r1", "r2"), robosim.devices.RobotTypes.properties("ArRobot")));
             assertEquals("refused before the hellos, 2 refusals: a shared connection needs the THREADS or TWO_THREADS "
                     + "coordinator (SEQUENTIAL reads a socket per robot; run the robots with --connection PER_ROBOT)",
                     e.getMessage());

@@ -20,11 +20,10 @@ import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.run.Departure;
 import robosim.environment.run.Settings;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.StepRequest;
 import robosim.protocol.ViewerClient;
@@ -75,12 +74,12 @@ class SlowReaderTest {
             s.setReceiveBufferSize(4096);
             s.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), ports[0]));
             ObjectConnection slow = new ObjectConnection(s, 64);
-            slow.write(new RobotHello("r1", RobotModels.AR_ROBOT));
+            slow.write(new RobotHello("r1", robosim.devices.RobotTypes.properties("ArRobot")));
             slow.flush();
             assertTrue(slow.read(RobotWelcome.class).isAccepted());
             List<CompletableFuture<String>> others = new ArrayList<>();
             for (String name : List.of("r2", "r3")) {
-                HardwareSimulator sim = new HardwareSimulator(name, RobotType.byName(name.equals("r3") ? "Scout" : "ArRobot"));
+                HardwareSimulator sim = new HardwareSimulator(name, robosim.devices.RobotTypes.byName(name.equals("r3") ? "Scout" : "ArRobot"));
                 sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
                 others.add(CompletableFuture.supplyAsync(() -> {
                     try {

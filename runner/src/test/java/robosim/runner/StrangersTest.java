@@ -20,7 +20,6 @@ import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.net.ClientWorkerCoordinator;
 import robosim.environment.run.Settings;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.SharedHello;
 import robosim.protocol.SharedReplies;
 
@@ -47,7 +46,7 @@ class StrangersTest {
         List<CompletableFuture<Void>> robots = new ArrayList<>();
         for (String name : List.of("r1", "r2", "r3")) {
             robots.add(CompletableFuture.runAsync(() -> {
-                try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT,
+                try (RawRobot r = new RawRobot(name, name.equals("r3") ? robosim.devices.RobotTypes.properties("Scout") : robosim.devices.RobotTypes.properties("ArRobot"),
                         port)) {
                     while (r.next() && r.step(0, 0, false, List.of()) != null) {
                         // (until the end, between steps or mid-step)
@@ -63,10 +62,10 @@ class StrangersTest {
             stranger.connect(new InetSocketAddress(InetAddress.getLoopbackAddress(), port));
             ObjectOutputStream out = new ObjectOutputStream(new BufferedOutputStream(stranger.getOutputStream()));
             out.writeObject(new SharedHello(HELLOS));
-            out.writeObject(new RobotHello("r1", RobotModels.AR_ROBOT)); // (running: it passes the file's check)
+            out.writeObject(new RobotHello("r1", robosim.devices.RobotTypes.properties("ArRobot"))); // (running: it passes the file's check)
             String filler = "x".repeat(NAME_CHARS);
             for (int i = 1; i < HELLOS; i++) {
-                out.writeObject(new RobotHello(i + filler, RobotModels.AR_ROBOT));
+                out.writeObject(new RobotHello(i + filler, robosim.devices.RobotTypes.properties("ArRobot")));
                 out.reset(); // (each name sent whole, as a stranger would)
             }
             out.flush();
@@ -170,7 +169,7 @@ class StrangersTest {
     /** Robot {@code name} drives ahead (100 mm a step, a turn now and then) until the end; its poses. */
     private static List<String> drive(String name, int port) {
         List<String> poses = new ArrayList<>();
-        try (RawRobot r = new RawRobot(name, name.equals("r3") ? RobotModels.SCOUT : RobotModels.AR_ROBOT, port)) {
+        try (RawRobot r = new RawRobot(name, name.equals("r3") ? robosim.devices.RobotTypes.properties("Scout") : robosim.devices.RobotTypes.properties("ArRobot"), port)) {
             while (r.next()) {
                 robosim.protocol.StepResponse p = r.step(100, r.step % 50 == 0 ? 90 : 0, false, List.of());
                 if (p == null) {
@@ -191,7 +190,7 @@ class StrangersTest {
             out.writeObject(new SharedHello(robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION));
             String filler = "y".repeat(14 * 1024);
             for (int i = 0; i < robosim.protocol.Limits.MAX_ROBOTS_PER_CONNECTION; i++) {
-                out.writeObject(new RobotHello(serial + ":" + i + filler, RobotModels.AR_ROBOT));
+                out.writeObject(new RobotHello(serial + ":" + i + filler, robosim.devices.RobotTypes.properties("ArRobot")));
                 out.reset();
             }
             out.flush();

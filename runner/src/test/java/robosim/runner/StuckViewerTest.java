@@ -22,7 +22,7 @@ import robosim.environment.run.RunStatus;
 import robosim.environment.run.Settings;
 import robosim.examples.BackAndForth;
 import robosim.hardware.HardwareSimulator;
-import robosim.hardware.RobotType;
+import robosim.devices.RobotType;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.ViewerClient;
 import robosim.protocol.ViewerHello;
@@ -61,7 +61,7 @@ class StuckViewerTest {
     private static List<CompletableFuture<String>> robots(ClientWorkerCoordinator env) throws Exception {
         List<CompletableFuture<String>> out = new ArrayList<>();
         for (String name : List.of("r1", "r2", "r3")) {
-            HardwareSimulator sim = new HardwareSimulator(name, RobotType.byName(name.equals("r3") ? "Scout" : "ArRobot"));
+            HardwareSimulator sim = new HardwareSimulator(name, robosim.devices.RobotTypes.byName(name.equals("r3") ? "Scout" : "ArRobot"));
             sim.connect(new Socket(InetAddress.getLoopbackAddress(), env.ports()[0]), 64);
             out.add(CompletableFuture.supplyAsync(() -> {
                 try {

@@ -178,7 +178,7 @@ class WrongPortTest {
             assertTrue(c.request("status").path("ok").asBoolean());
         }
         try (Socket s = new Socket(InetAddress.getLoopbackAddress(), robots)) {
-            new robosim.hardware.HardwareSimulator("robot1", new robosim.hardware.ArRobot()).connect(s, 64, null);
+            new robosim.hardware.HardwareSimulator("robot1", new robosim.devices.ArRobot()).connect(s, 64, null);
         }
     }
 

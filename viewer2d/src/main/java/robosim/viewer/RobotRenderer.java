@@ -11,6 +11,8 @@ import java.awt.geom.Line2D;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
+import robosim.devices.SensorInfo;
+import robosim.devices.Sensors;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.SensorReading;
@@ -20,14 +22,13 @@ import robosim.protocol.StepNumbers;
 /**
  * Draws one robot as it senses the world: on the left a polar plot in the robot's own frame (heading
  * up, a ring every metre, or every few when it reaches far: at most ten; nothing beyond
- * {@link #MAX_REACH_MM}), its sonar cones filled out to each range and laser-like readings (more than
- * {@link #POLAR_VALUES} values) as points; on the right its step, pose, command, contact, tag and only the
- * sensors it has: sonar when its type has any, bump (front, left, back, right) and the other readings when its
- * view holds them. A laser's field of view is not on the wire: its
+ * {@link #MAX_REACH_MM}), its sonar cones filled out to each range and the readings its sensors' kinds show as
+ * ranges ({@link Sensors#display}: a laser's) as points; on the right its step, pose, command, contact, tag and only
+ * the sensors it has: sonar when its type has any, a reading shown by sides (a bump sensor's: front, left, back,
+ * right) and the other readings when its view holds them. A laser's field of view is not on the wire: its
  * beams are drawn at the default resolution of one degree each, centred on the heading. Pure drawing.
  */
 public final class RobotRenderer {
-    static final int POLAR_VALUES = 8;
     /** The farthest the plot reaches, mm (a value from the network beyond it is not drawn). */
     static final double MAX_REACH_MM = 100_000;
     private static final Color BACKGROUND = new Color(0xF7F8FA);
@@ -57,7 +58,7 @@ public final class RobotRenderer {
         }
         List<double[]> polar = new ArrayList<>();
         for (SensorReading r : v == null ? List.<SensorReading>of() : v.readings()) {
-            if (r.values().length > POLAR_VALUES) {
+            if (Sensors.display(r.name(), r.values().length) == SensorInfo.Display.RANGES) {
                 polar.add(r.values());
                 for (double d : r.values()) {
                     reach = farther(reach, d);
@@ -162,13 +163,13 @@ public final class RobotRenderer {
         SensorReading bump = v == null ? null : bump(v);
         if (bump != null) {
             y += 6;
-            String[] sides = {"front", "left", "back", "right"};
-            for (int k = 0; k < 4; k++) {
+            List<String> sides = SensorInfo.Display.SIDES_NAMED;
+            for (int k = 0; k < sides.size() && k < bump.values().length; k++) {
                 boolean hit = bump.values()[k] != 0;
                 g.setColor(hit ? LASER : RING);
                 g.fillRect(x + k * 62, y, 56, 18);
                 g.setColor(hit ? Color.WHITE : TEXT);
-                g.drawString(sides[k], x + k * 62 + 6, y + 13);
+                g.drawString(sides.get(k), x + k * 62 + 6, y + 13);
             }
         }
     }
@@ -178,10 +179,10 @@ public final class RobotRenderer {
         return Double.isFinite(d) ? Math.min(MAX_REACH_MM, Math.max(reach, d)) : reach;
     }
 
-    /** The first reading named like a bump sensor with four values (front, left, back, right), or null. */
+    /** The first reading its sensor shows by sides (a bump sensor's: front, left, back, right), or null. */
     private static SensorReading bump(RobotView v) {
         for (SensorReading r : v.readings()) {
-            if (r.values().length == 4 && r.name().toLowerCase(Locale.ROOT).contains("bump")) {
+            if (Sensors.display(r.name(), r.values().length) == SensorInfo.Display.SIDES) {
                 return r;
             }
         }

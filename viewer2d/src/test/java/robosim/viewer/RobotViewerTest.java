@@ -13,7 +13,6 @@ import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
 import robosim.protocol.CommEvent;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.SensorReading;
@@ -46,7 +45,7 @@ class RobotViewerTest {
     void theFeedLogsWhatTheRobotSentAndGotAndSaysWhatItSkipped() {
         RobotFeed feed = new RobotFeed("a");
         feed.snapshot(new WorldSnapshot(500, ARENA, List.of(), List.of("a", "b"),
-                List.of(RobotModels.SCOUT, RobotModels.SCOUT), new PoseUpdate(-1, new double[2], new double[2], new double[2])));
+                List.of(robosim.devices.RobotTypes.properties("Scout"), robosim.devices.RobotTypes.properties("Scout")), new PoseUpdate(-1, new double[2], new double[2], new double[2])));
         assertNull(feed.view());
         RobotView first = view(3, filled(181, 2000), new double[4], List.of(new CommEvent("", "b", "ping\u0007")),
                 List.of(new CommEvent("b", "a", "pong")), List.of("b is out of range"));
@@ -73,7 +72,7 @@ class RobotViewerTest {
         sonar[1] = 3000; // (only the sonar 22.5 degrees to the left of the heading sees something)
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {30, 90}, new double[][] {sonar, {}});
-        Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(RobotModels.SCOUT, RobotModels.SCOUT),
+        Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(robosim.devices.RobotTypes.properties("Scout"), robosim.devices.RobotTypes.properties("Scout")),
                 poses, new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
         double[] laser = filled(181, 3000);
         Arrays.fill(laser, 0, 10, 1000); // (its rightmost beams, 90 to 81 degrees right of the heading, see close)
@@ -116,7 +115,7 @@ class RobotViewerTest {
     @Test
     void theFactsNameOnlyTheSensorsTheRobotHas() {
         RobotProperties noSonar = new RobotProperties("Crawler", 200, 500, 90, List.of());
-        Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(noSonar, RobotModels.SCOUT),
+        Scene scene = new Scene(ARENA, List.of(), List.of("a", "b"), List.of(noSonar, robosim.devices.RobotTypes.properties("Scout")),
                 new PoseUpdate(7, new double[] {2000, 8000}, new double[] {2500, 4000}, new double[] {0, 90}),
                 new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
         StepRequest q = new StepRequest(7, 100, 0, false, List.of(), List.of("heat"));

@@ -10,7 +10,6 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.WorldSnapshot;
@@ -28,7 +27,7 @@ class SceneFeedTest {
 
     /** The world of robot "a" standing where {@code poses} say, as a replay's seek or the start sends it. */
     private static WorldSnapshot world(PoseUpdate poses) {
-        return new WorldSnapshot(500, ARENA, List.of(), List.of("a"), List.of(RobotModels.SCOUT), poses);
+        return new WorldSnapshot(500, ARENA, List.of(), List.of("a"), List.of(robosim.devices.RobotTypes.properties("Scout")), poses);
     }
 
     @Test
@@ -69,7 +68,7 @@ class SceneFeedTest {
         assertEquals("STOPPED: stopped from the control port - waiting for the next run on localhost:3000",
                 StatusLine.state(feed.latest()));
         feed.snapshot(new WorldSnapshot(500, ARENA, List.of(), List.of("b", "c"),
-                List.of(RobotModels.SCOUT, RobotModels.AR_ROBOT), new PoseUpdate(-1, new double[] {1, 2},
+                List.of(robosim.devices.RobotTypes.properties("Scout"), robosim.devices.RobotTypes.properties("ArRobot")), new PoseUpdate(-1, new double[] {1, 2},
                 new double[] {1, 2}, new double[] {0, 0})));
         Scene next = feed.latest();
         assertEquals("waiting for robots", StatusLine.state(next));

@@ -11,7 +11,6 @@ import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 
 /** The viewer's drawing, off-screen, from a known scene: pixels where robots and walls must be. */
 class SceneRendererTest {
@@ -21,7 +20,7 @@ class SceneRendererTest {
     private static Scene scene() {
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {0, 90});
-        return new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+        return new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("Scout")),
                 poses, new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
     }
 
@@ -73,7 +72,7 @@ class SceneRendererTest {
     void aTaggedRobotGetsARing() {
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {0, 90}, null, List.of("a>b"));
-        Scene s = new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+        Scene s = new Scene(ARENA, List.of(BOX), List.of("a", "b"), List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("Scout")),
                 poses, new double[][] {{}, {}}, 0, ViewedRun.of(ViewedRun.Kind.RUNNING));
         BufferedImage img = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);
         ViewTransform t = new ViewTransform();

@@ -6,13 +6,12 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 
 /** The viewer's status line: the state told truthfully, steps/s only while running. */
 class StatusLineTest {
     private static Scene scene(double stepsPerSecond, ViewedRun status) {
         return new Scene(new Arena(0, 0, 1000, 1000), List.of(), List.of("rc1", "rc2"),
-                List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT), new PoseUpdate(41, new double[] {1, 2},
+                List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("Scout")), new PoseUpdate(41, new double[] {1, 2},
                 new double[] {1, 2}, new double[] {0, 0}), new double[][] {{}, {}}, stepsPerSecond, status);
     }
 

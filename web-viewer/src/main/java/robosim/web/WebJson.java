@@ -9,6 +9,7 @@ import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
+import robosim.devices.Sensors;
 import robosim.protocol.SensorReading;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.SonarSpec;
@@ -19,8 +20,9 @@ import robosim.protocol.WorldSnapshot;
  * (the world: time step, arena, obstacles as polygons, every robot's name, type, radius and sonar layout,
  * and the poses), {@code update} (a step: poses, sonar ranges, tags, departed robots, robots held for their return), {@code state}
  * (waiting, running, paused, at a step), {@code end}, and for a page that watches a robot {@code watchStarted},
- * {@code view} (its step as it saw it: command, contact, tag, readings, messages sent and delivered,
- * notices) and {@code viewEnded}. Lengths in mm and angles in degrees, as on the wire.
+ * {@code view} (its step as it saw it: command, contact, tag, readings, each with how its sensor shows it,
+ * {@code RANGES}, {@code SIDES} or {@code VALUES} from {@code robosim.devices.Sensors#display}, messages sent and
+ * delivered, notices) and {@code viewEnded}. Lengths in mm and angles in degrees, as on the wire.
  */
 final class WebJson {
     private static final ObjectMapper JSON = new ObjectMapper();
@@ -104,7 +106,8 @@ final class WebJson {
         n.put("contact", v.contact()).put("tagged", v.tagged());
         ArrayNode readings = n.putArray("readings");
         for (SensorReading r : v.readings()) {
-            ArrayNode values = readings.addObject().put("name", r.name()).putArray("values");
+            ArrayNode values = readings.addObject().put("name", r.name())
+                    .put("display", Sensors.display(r.name(), r.values().length).name()).putArray("values");
             for (double d : r.values()) {
                 values.add(Math.round(d * 10) / 10.0);
             }

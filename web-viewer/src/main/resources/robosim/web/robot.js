@@ -1,8 +1,9 @@
 // The robot panel (the robot-specific viewer in the page): one robot as it senses the world - a polar
 // plot in its own frame (heading up, a ring every metre, or every few when it reaches far) of its sonar cones out to each range and its
-// laser (a reading of more than 8 values, drawn one degree a beam, centred on the heading), its pose,
-// command, contact, tag and only the sensors it has: sonar when its type has any, bump (front, left, back,
-// right), heat and other readings when its view holds them; and a log of the messages it sent and got and
+// readings its sensor shows as ranges (a laser's; each reading's display comes from the sensors' registry, WebJson:
+// drawn one degree a beam, centred on the heading), its pose, command, contact, tag and only the sensors it has:
+// sonar when its type has any, a reading shown by sides (bump: front, left, back, right), heat and other readings
+// when its view holds them; and a log of the messages it sent and got and
 // its notices. Network text is only ever set as textContent.
 const LOG_LINES = 200;
 const MAX_REACH = 100000; // mm
@@ -98,7 +99,7 @@ export class RobotPanel {
         `  ${sonar}tag ${v.tag ? 'asked' : 'no'}`,
         `contact ${v.contact || 'none'}   tagged ${v.tagged || 'none'}`);
       for (const s of v.readings) {
-        if (s.values.length === 4 && /bump/i.test(s.name)) bump = s.values;
+        if (s.display === 'SIDES') bump = s.values;
         lines.push(`${s.name}  ${s.values.length <= 6 ? s.values.join(' ')
           : `${s.values.length} values, ${Math.min(...s.values)} to ${Math.max(...s.values)}`}`);
       }
@@ -113,7 +114,7 @@ export class RobotPanel {
     const c = this.canvas, g = c.getContext('2d'), size = c.width, mid = size / 2;
     g.fillStyle = '#f7f8fa'; g.fillRect(0, 0, size, size);
     if (!r) return;
-    const lasers = v ? v.readings.filter((s) => s.values.length > 8).map((s) => s.values) : [];
+    const lasers = v ? v.readings.filter((s) => s.display === 'RANGES').map((s) => s.values) : [];
     let reach = 1000; // mm: the farthest a sonar or laser reaches, at most MAX_REACH (network values)
     const seen = (d) => { if (Number.isFinite(d)) reach = Math.min(MAX_REACH, Math.max(reach, d)); };
     for (const s of r.sonars) seen(s.range + Math.hypot(s.x, s.y));

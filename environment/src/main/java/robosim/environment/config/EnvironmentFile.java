@@ -193,8 +193,6 @@ public final class EnvironmentFile extends FileElement {
         public String name;
         @JacksonXmlProperty(isAttribute = true)
         public String type;
-        @JacksonXmlProperty(isAttribute = true)
-        public Double noise;
         public final java.util.Map<String, String> attributes = new java.util.LinkedHashMap<>();
 
         @com.fasterxml.jackson.annotation.JsonAnySetter

@@ -241,7 +241,7 @@ public final class EnvironmentLoader {
         if (maxBytes < 1 || maxBytes > Limits.MAX_UTF_BYTES) {
             faults.add(xml.at, env + " maxMessageBytes must be in 1.." + Limits.MAX_UTF_BYTES + ", got " + maxBytes);
         }
-        List<WorldSpec.HeatSource> heat = heatSources(faults, xml);
+        List<robosim.devices.HeatSource> heat = heatSources(faults, xml);
         faults.throwIfAny();
         return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles.shapes(), robots.fromStart(), range,
                 maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters);
@@ -273,8 +273,8 @@ public final class EnvironmentLoader {
     }
 
     /** The heat sources that have no fault, mm. */
-    private static List<WorldSpec.HeatSource> heatSources(FileFaults faults, EnvironmentFile xml) {
-        List<WorldSpec.HeatSource> out = new ArrayList<>();
+    private static List<robosim.devices.HeatSource> heatSources(FileFaults faults, EnvironmentFile xml) {
+        List<robosim.devices.HeatSource> out = new ArrayList<>();
         for (int i = 0; i < xml.heatSources.size(); i++) {
             EnvironmentFile.HeatXml src = xml.heatSources.get(i);
             String name = src.name == null ? "heat" + (i + 1) : src.name;
@@ -285,7 +285,7 @@ public final class EnvironmentLoader {
             if (intensity != null && !(intensity >= 0)) {
                 faults.add(src.at, el + " intensity must be >= 0, got " + intensity);
             } else if (x != null && y != null && intensity != null) {
-                out.add(new WorldSpec.HeatSource(name, x * MM_PER_M, y * MM_PER_M, intensity));
+                out.add(new robosim.devices.HeatSource(name, x * MM_PER_M, y * MM_PER_M, intensity));
             }
         }
         return out;

@@ -6,13 +6,14 @@ import java.util.List;
 import java.util.Set;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
-import robosim.protocol.RobotModels;
+import robosim.devices.RobotTypes;
+import robosim.devices.Sensors;
 import robosim.protocol.RobotProperties;
 
 /**
  * What a robot is, as a {@code <robot>} or a {@code <join>} rule of an environment file says: its type
- * (a known model, or a RobotType class with its radius), sonar count and noise, control class and
- * plug-in sensors, each checked, each fault recorded at the element; where it stands is the caller's to check.
+ * (a registered type, or a RobotType class with its radius), sonar count and noise, control class and
+ * sensors, each checked, each fault recorded at the element; where it stands is the caller's to check.
  */
 final class RobotReader {
     private static final double MM_PER_M = 1000.0;
@@ -50,13 +51,13 @@ final class RobotReader {
     /** The radius of a robot of {@code type}, mm: its model's, or the file's for a RobotType class; null at a fault. */
     private static Double radiusMm(FileFaults faults, FileElement element, String el, String type, Double radius) {
         if (type == null) {
-            faults.add(element.at, el + " needs a type (known: " + RobotModels.names() + ")");
+            faults.add(element.at, el + " needs a type (known: " + RobotTypes.names() + ")");
             return null;
         }
-        RobotProperties props = RobotModels.byName(type);
+        RobotProperties props = RobotTypes.properties(type);
         if (props == null && !type.contains(".")) {
             faults.add(element.at, el + " type \"" + type + "\" is not a known robot type (known: "
-                    + RobotModels.names() + ", or the class name of a RobotType with radius=\"...\")");
+                    + RobotTypes.names() + ", or the class name of a RobotType with radius=\"...\")");
             return null;
         }
         if (radius == null) {
@@ -88,7 +89,7 @@ final class RobotReader {
         Set<String> names = new HashSet<>();
         for (EnvironmentFile.SensorXml s : xml) {
             if (s.type == null || s.type.isBlank()) {
-                faults.add(s.at, robot + " <sensor> needs a type (laser, heat, bump or a RobotSensor class name)");
+                faults.add(s.at, robot + " <sensor> needs a type (" + Sensors.fileNames() + " or a RobotSensor class name)");
                 continue;
             }
             String name = s.name == null || s.name.isBlank() ? s.type : s.name;
@@ -98,19 +99,14 @@ final class RobotReader {
                 faults.add(s.at, el + " the name is used twice on this robot");
                 usable = false;
             }
-            double noise = s.noise == null ? 0 : s.noise;
-            if (!(noise >= 0) || Double.isInfinite(noise)) {
-                faults.add(s.at, el + " noise must be >= 0, got " + noise);
-                usable = false;
-            }
             try {
-                robosim.environment.sensors.RobotSensors.create(s.type, s.attributes);
+                Sensors.create(s.type, s.attributes);
             } catch (IllegalArgumentException e) {
                 faults.add(s.at, el + " " + e.getMessage());
                 usable = false;
             }
             if (usable) {
-                out.add(new WorldSpec.SensorSpec(name, s.type, noise, s.attributes));
+                out.add(new WorldSpec.SensorSpec(name, s.type, s.attributes));
             }
         }
         return out;

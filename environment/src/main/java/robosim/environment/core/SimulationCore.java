@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import robosim.devices.Drive;
 import robosim.environment.metrics.AreaCoveredMetric;
 import robosim.environment.metrics.MetricTally;
 import robosim.environment.metrics.RunStart;
@@ -90,9 +91,9 @@ public final class SimulationCore {
     }
 
     private void limits(int i, RobotProperties p) {
-        double seconds = map.spec().timeStepMs() / 1000.0;
-        maxMoveMm[i] = p.maxSpeedMmPerS() * seconds;
-        maxTurnDeg[i] = p.maxTurnDegPerS() * seconds;
+        double seconds = Drive.seconds(map.spec().timeStepMs());
+        maxMoveMm[i] = Drive.perStep(p.maxSpeedMmPerS(), seconds);
+        maxTurnDeg[i] = Drive.perStep(p.maxTurnDegPerS(), seconds);
         sonarCount[i] = p.sonars().size();
     }
 

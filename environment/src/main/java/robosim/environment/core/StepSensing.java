@@ -2,10 +2,9 @@ package robosim.environment.core;
 
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Random;
-import robosim.environment.sensors.RobotSensor;
-import robosim.environment.sensors.RobotSensors;
-import robosim.environment.sensors.SensorContext;
+import robosim.devices.RobotSensor;
+import robosim.devices.Sensors;
+import robosim.devices.SonarSensor;
 import robosim.geometry.StaticWorld;
 import robosim.geometry.WorldQueries;
 import robosim.protocol.GeometryStepResponse;
@@ -14,54 +13,56 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.SensorReading;
 
 /**
- * The sense phase of a step, on the world after every move: sonar ranges from Geometry's answer with
- * the robot's sonar noise, and the plug-in sensors ({@link RobotSensor}s, stored with each robot) a
- * request names. All noise comes from the world's one seeded generator, in robot order, so a run is
- * reproducible bit for bit.
+ * The sense phase of a step, on the world after every move: each robot's sonar (its {@link SonarSensor}, from
+ * Geometry's answer) and the sensors a request names (the {@link RobotSensor}s of its file entry, made by
+ * {@link Sensors}), each computing its values and its noise itself through one {@link SensedWorld}, whose one seeded
+ * generator they draw from in robot order, so a run is reproducible bit for bit.
  */
 final class StepSensing {
     private static final double[] NO_RANGES = new double[0];
 
     private final EnvironmentMap map;
     private final WorldQueries queries;
+    private final SensedWorld world;
+    private SonarSensor[] sonars;
     private RobotSensor[][] sensors;
-    private WorldSpec.SensorSpec[][] sensorSpecs;
+    private String[][] sensorNames;
     private double[] sensorRadius;
-    private SensorContext context;
-    private final Random random;
 
     StepSensing(WorldSpec spec, List<RobotProperties> properties, EnvironmentMap map) {
         this.map = map;
         int robots = map.robotCount();
-        this.random = new Random(spec.seed());
+        this.sonars = new SonarSensor[robots];
         this.sensors = new RobotSensor[robots][];
-        this.sensorSpecs = new WorldSpec.SensorSpec[robots][];
+        this.sensorNames = new String[robots][];
         this.sensorRadius = new double[robots];
         for (int i = 0; i < robots; i++) {
             equip(i, spec.robots().get(i), properties.get(i));
         }
         this.queries = new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles()));
-        this.context = new SensorContext(queries, spec.heatSources(), map.xs(), map.ys(), sensorRadius, map.headings());
+        this.world = new SensedWorld(queries, spec.heatSources(), map, sensorRadius, spec.seed());
     }
 
     private void equip(int i, WorldSpec.RobotSpec robot, RobotProperties p) {
         sensorRadius[i] = p.radiusMm();
+        sonars[i] = SonarSensor.of(p.sonars(), robot.sonarNoiseMm());
         List<WorldSpec.SensorSpec> specs = robot.sensors();
-        sensorSpecs[i] = specs.toArray(new WorldSpec.SensorSpec[0]);
+        sensorNames[i] = new String[specs.size()];
         sensors[i] = new RobotSensor[specs.size()];
         for (int k = 0; k < specs.size(); k++) {
-            sensors[i][k] = RobotSensors.create(specs.get(k).type(), specs.get(k).attributes());
+            sensorNames[i][k] = specs.get(k).name();
+            sensors[i][k] = Sensors.create(specs.get(k).type(), specs.get(k).attributes());
         }
     }
 
-    /** Robot {@code i}, the last, has joined (the map has it already): its sensors, and a context that sees it. */
+    /** Robot {@code i}, the last, has joined (the map has it already): its sensors, and a world that sees it. */
     void add(int i, WorldSpec.RobotSpec robot, RobotProperties p) {
+        sonars = java.util.Arrays.copyOf(sonars, i + 1);
         sensors = java.util.Arrays.copyOf(sensors, i + 1);
-        sensorSpecs = java.util.Arrays.copyOf(sensorSpecs, i + 1);
+        sensorNames = java.util.Arrays.copyOf(sensorNames, i + 1);
         sensorRadius = java.util.Arrays.copyOf(sensorRadius, i + 1);
         equip(i, robot, p);
-        context = new SensorContext(queries, map.spec().heatSources(), map.xs(), map.ys(), sensorRadius,
-                map.headings());
+        world.radii(sensorRadius);
     }
 
     /** A robot that has left can no longer be sensed: its disc never meets a query. */
@@ -70,28 +71,21 @@ final class StepSensing {
     }
 
     /**
-     * Robot i's sonar ranges from {@code answer}, starting at range {@code first}, with its noise; the
-     * caller has checked that the answer holds them.
+     * Robot i's sonar ranges from {@code answer}, starting at range {@code first}, with its noise; the caller has
+     * checked that the answer holds them.
      */
     double[] sonar(int i, GeometryStepResponse answer, int first) {
-        int n = map.properties(i).sonars().size();
-        if (n == 0) {
+        if (map.properties(i).sonars().isEmpty()) {
             return NO_RANGES;
         }
-        double noise = map.spec().robots().get(i).sonarNoiseMm();
-        double[] sonar = new double[n];
-        for (int s = 0; s < n; s++) {
-            double r = answer.rangeMm(first + s);
-            sonar[s] = noise > 0 ? Math.max(0, r + noise * random.nextGaussian()) : r;
-        }
-        return sonar;
+        return sonars[i].generateSensorResponse(world.aim(i, answer, first));
     }
 
     static double[] none() {
         return NO_RANGES;
     }
 
-    /** Robot i's plug-in sensors, in the order asked; a name it lacks or a failing sensor gets a notice. */
+    /** Robot i's sensors, in the order asked; a name it lacks or a failing sensor gets a notice. */
     List<SensorReading> read(int i, List<String> names, MessageRouter notices) {
         if (names.isEmpty()) {
             return List.of();
@@ -99,16 +93,16 @@ final class StepSensing {
         List<SensorReading> out = new ArrayList<>(names.size());
         for (String name : names) {
             int s = 0;
-            while (s < sensorSpecs[i].length && !sensorSpecs[i][s].name().equals(name)) {
+            while (s < sensorNames[i].length && !sensorNames[i][s].equals(name)) {
                 s++;
             }
-            if (s == sensorSpecs[i].length) {
+            if (s == sensorNames[i].length) {
                 notices.notice(i, "no sensor named " + name + " on " + map.name(i));
                 continue;
             }
             double[] values;
             try {
-                values = sensors[i][s].generateSensorResponse(context.aim(i));
+                values = sensors[i][s].generateSensorResponse(world.aim(i, null, 0));
             } catch (RuntimeException e) {
                 notices.notice(i, "sensor " + name + " failed: " + e);
                 continue;
@@ -118,14 +112,7 @@ final class StepSensing {
                         : values.length + " values, more than " + Limits.MAX_SENSOR_VALUES));
                 continue;
             }
-            values = values.clone();
-            double noise = sensorSpecs[i][s].noise();
-            if (noise > 0) {
-                for (int v = 0; v < values.length; v++) {
-                    values[v] += noise * random.nextGaussian();
-                }
-            }
-            out.add(new SensorReading(name, values));
+            out.add(new SensorReading(name, values.clone()));
         }
         return out;
     }

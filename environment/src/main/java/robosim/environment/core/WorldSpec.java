@@ -2,6 +2,7 @@ package robosim.environment.core;
 
 import java.util.List;
 import java.util.Map;
+import robosim.devices.HeatSource;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
 
@@ -127,19 +128,14 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, List.of());
     }
 
-    /** A source of heat for heat sensors: position (mm) and intensity (reading at the source). */
-    public record HeatSource(String name, double xMm, double yMm, double intensity) {
-    }
-
     /**
-     * One plug-in sensor on a robot, as the file names it.
+     * One sensor on a robot, as the file names it.
      *
      * @param name what the robot asks for it by
-     * @param type {@code laser}, {@code heat}, {@code bump} or a RobotSensor class name
-     * @param noise standard deviation of Gaussian noise added to every value, in the sensor's units
-     * @param attributes its other attributes, for {@code RobotSensor.configure}
+     * @param type a registered sensor's name ({@code robosim.devices.Sensors}) or a RobotSensor class name
+     * @param attributes its attributes, for its {@code RobotSensor.configure} (its noise among them)
      */
-    public record SensorSpec(String name, String type, double noise, Map<String, String> attributes) {
+    public record SensorSpec(String name, String type, Map<String, String> attributes) {
         public SensorSpec {
             attributes = Map.copyOf(attributes);
         }
@@ -170,11 +166,11 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
             sensors = List.copyOf(sensors);
         }
 
-        /** A robot of a known model ({@code ArRobot}, {@code Scout}), its radius the model's. */
+        /** A robot of a registered type ({@code robosim.devices.RobotTypes}), its radius the type's. */
         public RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
                 List<SensorSpec> sensors, double sonarNoiseMm) {
             this(name, type, control, xMm, yMm, headingDeg, sensors, sonarNoiseMm,
-                    robosim.protocol.RobotModels.byName(type).radiusMm(), -1);
+                    robosim.devices.RobotTypes.properties(type).radiusMm(), -1);
         }
 
         /** This robot standing at another pose (mm, degrees). */

@@ -7,7 +7,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.TimeUnit;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.WorldSpec;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 
 /**
@@ -52,10 +51,10 @@ public final class RobotRoster {
      * @throws IllegalArgumentException why there is none (an unknown type, a bad name, a pose that is no number)
      */
     public static JoinRule rule(String name, String type, double xM, double yM, double headingDeg, String control) {
-        RobotProperties model = RobotModels.byName(type);
+        RobotProperties model = robosim.devices.RobotTypes.properties(type);
         if (model == null) {
             throw new IllegalArgumentException("type \"" + Printable.of(type, 64) + "\" is not a known robot type "
-                    + "(known: " + RobotModels.names() + "; a RobotType class needs a <join> rule with its radius in the "
+                    + "(known: " + robosim.devices.RobotTypes.names() + "; a RobotType class needs a <join> rule with its radius in the "
                     + "file)");
         }
         if (JoinRule.badName(name) != null) {

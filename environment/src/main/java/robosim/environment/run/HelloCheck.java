@@ -9,7 +9,6 @@ import robosim.environment.core.WorldSpec;
 import robosim.protocol.Printable;
 import robosim.protocol.Protocol;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 
 /**
@@ -66,7 +65,7 @@ public final class HelloCheck {
             entry = spec.robots().get(index);
         }
         if (hello.anyType()) {
-            RobotProperties model = RobotModels.byName(entry.type());
+            RobotProperties model = robosim.devices.RobotTypes.properties(entry.type());
             return model == null ? "robot " + entry.name() + " is a " + entry.type() + " in " + spec.source()
                     + ", a type a robot must name itself: give --type " + entry.type()
                     : entry.contradiction(model, spec.source());
@@ -84,7 +83,7 @@ public final class HelloCheck {
             return hello;
         }
         WorldSpec.RobotSpec entry = index >= 0 ? spec.robots().get(index) : entry(hello.name());
-        RobotProperties model = entry == null ? null : RobotModels.byName(entry.type());
+        RobotProperties model = entry == null ? null : robosim.devices.RobotTypes.properties(entry.type());
         return model == null ? null : new RobotHello(hello.name(), model);
     }
 

@@ -10,7 +10,6 @@ import robosim.environment.core.WorldSpec;
 import robosim.environment.metrics.MetricTally;
 import robosim.environment.metrics.Metrics;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.WorldSnapshot;
 
@@ -52,7 +51,7 @@ public final class ReleasedWorld {
         double[] h = new double[n];
         for (int i = 0; i < n; i++) {
             WorldSpec.RobotSpec r = spec.robots().get(i);
-            RobotProperties model = RobotModels.byName(r.type());
+            RobotProperties model = robosim.devices.RobotTypes.properties(r.type());
             props.add(said[i] != null ? said[i] : model != null ? model
                     : new RobotProperties(r.type(), r.radiusMm(), 1, 1, List.of()));
             x[i] = r.xMm();

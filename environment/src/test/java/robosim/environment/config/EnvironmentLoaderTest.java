@@ -101,8 +101,8 @@ class EnvironmentLoaderTest {
     void anUnknownRobotType() throws Exception {
         String m = failure(env("timeStepMs=\"500\"",
                 "<robots><robot name=\"r1\" type=\"Roomba\" x=\"1\" y=\"1\"/></robots>"));
-        assertTrue(m.endsWith("<robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: [ArRobot, Scout], "
-                + "or the class name of a RobotType with radius=\"...\")"), m);
+        assertTrue(m.endsWith("<robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: "
+                + robosim.devices.RobotTypes.names() + ", or the class name of a RobotType with radius=\"...\")"), m);
     }
 
     @Test
@@ -203,20 +203,22 @@ class EnvironmentLoaderTest {
                         + "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\" sonarNoiseMm=\"15\">"
                         + "<sensor name=\"front\" type=\"laser\" fovDeg=\"90\" noise=\"5\"/><sensor type=\"bump\"/>"
                         + "</robot></robots>")));
-        assertEquals(List.of(new WorldSpec.HeatSource("fire", 5000, 2000, 10)), s.heatSources());
+        assertEquals(List.of(new robosim.devices.HeatSource("fire", 5000, 2000, 10)), s.heatSources());
         WorldSpec.RobotSpec r = s.robots().get(0);
         assertEquals(List.of("front", "bump"), r.sensorNames());
-        assertEquals(5, r.sensors().get(0).noise());
-        assertEquals(java.util.Map.of("fovDeg", "90"), r.sensors().get(0).attributes());
+        assertEquals(java.util.Map.of("fovDeg", "90", "noise", "5"), r.sensors().get(0).attributes());
         assertEquals(15, r.sonarNoiseMm());
 
         String m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\">"
                 + "<sensor type=\"sniffer\"/></robot></robots>"));
-        assertTrue(m.endsWith("<robot name=\"r1\"> <sensor name=\"sniffer\"> type \"sniffer\" is neither laser, heat, "
-                + "bump nor a class on the class path"), m);
+        assertTrue(m.endsWith("<robot name=\"r1\"> <sensor name=\"sniffer\"> type \"sniffer\" is neither "
+                + robosim.devices.Sensors.fileNames() + " nor a class on the class path"), m);
         m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\">"
                 + "<sensor type=\"laser\" fov=\"90\"/></robot></robots>"));
-        assertTrue(m.endsWith("unknown attribute(s) [fov] for a laser sensor"), m);
+        assertTrue(m.contains("unknown attribute(s) [fov] for a laser sensor (it takes: fovDeg, "), m);
+        m = failure(env("timeStepMs=\"500\"", "<robots><robot name=\"r1\" type=\"ArRobot\" x=\"1\" y=\"1\">"
+                + "<sensor type=\"laser\" noise=\"-1\"/></robot></robots>"));
+        assertTrue(m.endsWith("noise must be >= 0, got -1.0"), m);
         m = failure(env("timeStepMs=\"500\"", "<heatSources><heat name=\"h\" x=\"1\" y=\"1\"/></heatSources>" + ROBOT));
         assertTrue(m.endsWith("<heat name=\"h\"> needs the attribute intensity"), m);
     }
@@ -259,8 +261,8 @@ class EnvironmentLoaderTest {
         List<String> lines = faults(f);
         assertEquals(3, lines.size(), String.join("\n", lines));
         assertEquals(f + ":4:7: <heat name=\"h\"> needs the attribute intensity", lines.get(0));
-        assertEquals(f + ":7:5: <robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: [ArRobot, "
-                + "Scout], or the class name of a RobotType with radius=\"...\")", lines.get(1));
+        assertEquals(f + ":7:5: <robot name=\"r1\"> type \"Roomba\" is not a known robot type (known: "
+                + robosim.devices.RobotTypes.names() + ", or the class name of a RobotType with radius=\"...\")", lines.get(1));
         assertTrue(lines.get(2).startsWith(f + ":7:51: unknown element or attribute 'colour' (known here: ["),
                 lines.get(2));
     }
@@ -348,7 +350,7 @@ class EnvironmentLoaderTest {
         List<String> lines = faults(f);
         assertEquals(2, lines.size(), String.join("\n", lines));
         assertTrue(lines.get(0).startsWith(f + ":2:42: unknown element or attribute 'nil'"), lines.get(0));
-        assertEquals(f + ":3:53: <robot name=\"r1\"> <sensor name=\"laser\"> unknown attribute(s) [nil] for a laser "
-                + "sensor", lines.get(1));
+        assertTrue(lines.get(1).startsWith(f + ":3:53: <robot name=\"r1\"> <sensor name=\"laser\"> unknown attribute(s) "
+                + "[nil] for a laser sensor (it takes: "), lines.get(1));
     }
 }

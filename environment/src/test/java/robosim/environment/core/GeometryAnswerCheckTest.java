@@ -12,7 +12,6 @@ import robosim.protocol.Arena;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.ProtocolException;
-import robosim.protocol.RobotModels;
 import robosim.protocol.StepRequest;
 
 /** The core takes nothing from Geometry on trust: a bad answer is refused and changes nothing. */
@@ -22,7 +21,7 @@ class GeometryAnswerCheckTest {
                     new WorldSpec.RobotSpec("b", "ArRobot", "", 1000, 5000, 0)), 0, 8192, List.of());
 
     private static SimulationCore core() {
-        return new SimulationCore(TWO, List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT));
+        return new SimulationCore(TWO, List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("ArRobot")));
     }
 
     private static StepRequest[] moveBoth(long k) {
@@ -72,10 +71,10 @@ class GeometryAnswerCheckTest {
     @Test
     void theWrongStepOrTooFewSonarRangesOrANegativeRangeAreRefused() throws Exception {
         refused(g -> g.begin(7), "step 7");
-        refused(g -> g.begin(0), "0 sonar ranges, expected " + RobotModels.AR_ROBOT.sonars().size());
+        refused(g -> g.begin(0), "0 sonar ranges, expected " + robosim.devices.RobotTypes.properties("ArRobot").sonars().size());
         refused(g -> {
             g.begin(0);
-            for (int s = 0; s < RobotModels.AR_ROBOT.sonars().size(); s++) {
+            for (int s = 0; s < robosim.devices.RobotTypes.properties("ArRobot").sonars().size(); s++) {
                 g.addRange(-1);
             }
         }, "sonar range -1.0 mm");

@@ -11,7 +11,6 @@ import robosim.protocol.Arena;
 import robosim.protocol.CommEvent;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.ProtocolException;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -23,8 +22,8 @@ class SimulationCoreTest {
             List.of(new WorldSpec.RobotSpec("a", "ArRobot", "", 1000, 1000, 0),
                     new WorldSpec.RobotSpec("b", "ArRobot", "", 1000, 3000, 0),
                     new WorldSpec.RobotSpec("c", "Scout", "", 5000, 5000, 0)));
-    private static final List<RobotProperties> PROPS = List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT,
-            RobotModels.SCOUT);
+    private static final List<RobotProperties> PROPS = List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("ArRobot"),
+            robosim.devices.RobotTypes.properties("Scout"));
 
     private static StepRequest req(long k, double move, double turn, CommEvent... messages) {
         return new StepRequest(k, move, turn, true, List.of(messages));

@@ -7,7 +7,6 @@ import java.util.Set;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
-import robosim.protocol.RobotModels;
 import robosim.protocol.StepRequest;
 
 /** The tag ACTION: nearest thing in front, within range of the rim; taggable obstacles; the record of tags. */
@@ -20,8 +19,8 @@ class TagsTest {
         List<ObstacleShape> obstacles = List.of(ObstacleShape.rectangle("flag", 1700, 1300, 100, 100));
         WorldSpec spec = new WorldSpec("mem", "t", 500, 1, new Arena(0, 0, 10_000, 10_000), obstacles, robots, 0,
                 8192, List.of(), 1000, taggable);
-        return InProcessSteps.of(spec, List.of(RobotModels.AR_ROBOT, RobotModels.AR_ROBOT,
-                RobotModels.AR_ROBOT));
+        return InProcessSteps.of(spec, List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("ArRobot"),
+                robosim.devices.RobotTypes.properties("ArRobot")));
     }
 
     private static String tagOnce(InProcessSteps core) throws Exception {

@@ -11,7 +11,6 @@ import robosim.protocol.Arena;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.RecordingWriter;
-import robosim.protocol.RobotModels;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
@@ -30,7 +29,7 @@ class RecordingCursorTest {
     private static WorldSnapshot world(int n, long step) {
         List<String> names = List.of("a", "b", "c").subList(0, n);
         return new WorldSnapshot(500, new Arena(0, 0, 10_000, 10_000), List.of(), names,
-                List.of(RobotModels.SCOUT, RobotModels.SCOUT, RobotModels.SCOUT).subList(0, n), poses(step, n));
+                List.of(robosim.devices.RobotTypes.properties("Scout"), robosim.devices.RobotTypes.properties("Scout"), robosim.devices.RobotTypes.properties("Scout")).subList(0, n), poses(step, n));
     }
 
     @Test

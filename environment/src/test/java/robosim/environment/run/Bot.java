@@ -5,7 +5,6 @@ import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.function.Consumer;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotWelcome;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepRequest;
@@ -60,7 +59,7 @@ final class Bot implements RobotPeer {
     /** Says hello (as the file's robot {@code fileIndex}, or -1 for one that is not in the file); its verdict, once drained. */
     CompletableFuture<String> hello(int fileIndex) {
         CompletableFuture<String> verdict = new CompletableFuture<>();
-        post.accept(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(this, new RobotHello(name, RobotModels.AR_ROBOT),
+        post.accept(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(this, new RobotHello(name, robosim.devices.RobotTypes.properties("ArRobot")),
                 fileIndex, verdict))));
         return verdict;
     }

@@ -16,10 +16,9 @@ import robosim.environment.core.JoinRule;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.environment.core.WorldSpec.SensorSpec;
-import robosim.environment.sensors.ThreadRecordingSensor;
+import robosim.environment.core.ThreadRecordingSensor;
 import robosim.protocol.Arena;
 import robosim.protocol.RobotHello;
-import robosim.protocol.RobotModels;
 
 /**
  * The {@link SimulationLoop} on its own thread, driving a {@link Run} with robots that post to it and in-process
@@ -30,7 +29,7 @@ import robosim.protocol.RobotModels;
 class SimulationLoopTest {
     private static final long LONG_S = 60;
     private static final List<SensorSpec> THREAD = List.of(new SensorSpec("thread",
-            ThreadRecordingSensor.class.getName(), 0, Map.of()));
+            ThreadRecordingSensor.class.getName(), Map.of()));
     private static final WorldSpec THREE = new WorldSpec("mem", "three", 500, 1, new Arena(0, 0, 20_000, 20_000),
             List.of(), List.of(new RobotSpec("a", "ArRobot", "", 2000, 2000, 0, THREAD, 0),
                     new RobotSpec("b", "ArRobot", "", 2000, 6000, 0, THREAD, 0),
@@ -117,7 +116,7 @@ class SimulationLoopTest {
         never.post(new LoopEvent.AddRobot(new JoinRule("z", THREE.robots().get(0), null, 1), added));
         never.post(new LoopEvent.RemoveRobot("a", removed));
         never.post(new LoopEvent.HellosCome(Hellos.of(new Hellos.Hello(new Bot(never::post, "a", Bot.NEVER, 0),
-                new RobotHello("a", RobotModels.AR_ROBOT), 0, hello))));
+                new RobotHello("a", robosim.devices.RobotTypes.properties("ArRobot")), 0, hello))));
         never.never(); // (the loop is done, as the run's end races these callers)
         assertTrue(resumed.isDone(), "resume() is answered, not left to its 5 s limit");
         assertTrue(paused.isDone());

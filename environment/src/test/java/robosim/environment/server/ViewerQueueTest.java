@@ -10,7 +10,6 @@ import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
 import robosim.protocol.CommEvent;
 import robosim.protocol.PoseUpdate;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
@@ -43,7 +42,7 @@ class ViewerQueueTest {
     void theWorldAfterAJoinGoesRightBeforeItsFirstUpdateAndALiveViewerKeepsItWhenTheUpdateIsReplaced()
             throws Exception {
         WorldSnapshot grown = new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), List.of("a", "b"),
-                List.of(RobotModels.AR_ROBOT, RobotModels.SCOUT),
+                List.of(robosim.devices.RobotTypes.properties("ArRobot"), robosim.devices.RobotTypes.properties("Scout")),
                 new PoseUpdate(1, new double[] {0, 1}, new double[] {0, 1}, new double[] {0, 0}));
         ViewerQueue recording = new ViewerQueue(true, 0, System::nanoTime);
         recording.offer(null, update(0), null);

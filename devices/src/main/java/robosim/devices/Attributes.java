@@ -1,16 +1,16 @@
-package robosim.environment.sensors;
+package robosim.devices;
 
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.Map;
 import java.util.Set;
 
-/** A sensor's attributes from the environment file; remembers which ones the sensor read. */
-public final class SensorParameters {
+/** The attributes the environment file gives one device, as text; remembers which ones the device read. */
+public final class Attributes {
     private final Map<String, String> values;
     private final Set<String> read = new LinkedHashSet<>();
 
-    public SensorParameters(Map<String, String> values) {
+    public Attributes(Map<String, String> values) {
         this.values = new LinkedHashMap<>(values);
     }
 

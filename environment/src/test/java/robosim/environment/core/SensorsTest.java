@@ -1,4 +1,4 @@
-package robosim.environment.sensors;
+package robosim.environment.core;
 
 import static org.junit.jupiter.api.Assertions.assertArrayEquals;
 import static org.junit.jupiter.api.Assertions.assertEquals;
@@ -11,13 +11,12 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import org.junit.jupiter.api.Test;
-import robosim.environment.core.InProcessSteps;
-import robosim.environment.core.WorldSpec;
+import robosim.devices.RobotSensor;
+import robosim.devices.Sensors;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.environment.core.WorldSpec.SensorSpec;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
-import robosim.protocol.RobotModels;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.StepRequest;
 
@@ -26,14 +25,14 @@ class SensorsTest {
     private static final Arena ARENA = new Arena(0, 0, 10_000, 10_000);
     /** A wall whose face is at x = 4 m, floor to ceiling. */
     private static final ObstacleShape WALL = ObstacleShape.rectangle("wall", 4000, 0, 100, 10_000);
-    private static final List<SensorSpec> ALL = List.of(new SensorSpec("laser", "laser", 0, Map.of()),
-            new SensorSpec("heat", "heat", 0, Map.of()), new SensorSpec("bump", "bump", 0, Map.of()));
+    private static final List<SensorSpec> ALL = List.of(new SensorSpec("laser", "laser", Map.of()),
+            new SensorSpec("heat", "heat", Map.of()), new SensorSpec("bump", "bump", Map.of()));
 
-    private static InProcessSteps core(List<RobotSpec> robots, List<WorldSpec.HeatSource> heat, long seed) {
+    private static InProcessSteps core(List<RobotSpec> robots, List<robosim.devices.HeatSource> heat, long seed) {
         WorldSpec spec = new WorldSpec("mem", "t", 500, seed, ARENA, List.of(WALL), robots, 0, 8192, heat);
         List<RobotProperties> props = new ArrayList<>();
         for (int i = 0; i < robots.size(); i++) {
-            props.add(RobotModels.AR_ROBOT);
+            props.add(robosim.devices.RobotTypes.properties("ArRobot"));
         }
         return InProcessSteps.of(spec, props);
     }
@@ -66,7 +65,7 @@ class SensorsTest {
         // source of 10 at (2, 1) m; a 1 m from it reads 10 / (1 + 1); c behind the wall reads nothing
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, ALL, 0),
                 new RobotSpec("c", "ArRobot", "", 5000, 1000, 0, ALL, 0)),
-                List.of(new WorldSpec.HeatSource("fire", 2000, 1000, 10)), 1);
+                List.of(new robosim.devices.HeatSource("fire", 2000, 1000, 10)), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "heat"), ask(0, 0, "heat")});
         assertArrayEquals(new double[] {5}, reading(core, 0, "heat"), 1e-12);
         assertArrayEquals(new double[] {0}, reading(core, 1, "heat"), 0);
@@ -76,15 +75,15 @@ class SensorsTest {
     void aHeatSourceOnAWallsFaceIsInSight() throws Exception {
         // the wall's face is at x = 4 m; a source on that face, 2 m from a: 10 / (1 + 4) = 2
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 2000, 1000, 0, ALL, 0)),
-                List.of(new WorldSpec.HeatSource("lamp", 4000, 1000, 10)), 1);
+                List.of(new robosim.devices.HeatSource("lamp", 4000, 1000, 10)), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "heat")});
         assertArrayEquals(new double[] {2}, reading(core, 0, "heat"), 1e-12);
     }
 
     @Test
     void aFailingSensorIsANoticeNotTheEndOfTheRun() throws Exception {
-        List<SensorSpec> failing = List.of(new SensorSpec("broken", FailingTestSensor.class.getName(), 0, Map.of()),
-                new SensorSpec("bump", "bump", 0, Map.of()));
+        List<SensorSpec> failing = List.of(new SensorSpec("broken", FailingTestSensor.class.getName(), Map.of()),
+                new SensorSpec("bump", "bump", Map.of()));
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, failing, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "broken", "bump")});
         assertEquals(List.of("sensor broken failed: java.lang.IllegalStateException: out of order"),
@@ -107,7 +106,7 @@ class SensorsTest {
 
     @Test
     void noiseComesFromTheWorldsSeedSoTheSameSeedGivesTheSameReadings() throws Exception {
-        List<SensorSpec> noisy = List.of(new SensorSpec("laser", "laser", 20, Map.of("fovDeg", "10")));
+        List<SensorSpec> noisy = List.of(new SensorSpec("laser", "laser", Map.of("fovDeg", "10", "noise", "20")));
         double[] first = noisyLaser(noisy, 7);
         assertArrayEquals(first, noisyLaser(noisy, 7), 0);
         assertNotEquals(first[0], noisyLaser(noisy, 8)[0]);
@@ -130,7 +129,7 @@ class SensorsTest {
 
     @Test
     void aPlugInSensorIsOneClassNamedInTheWorld() throws Exception {
-        List<SensorSpec> compass = List.of(new SensorSpec("compass", CompassTestSensor.class.getName(), 0,
+        List<SensorSpec> compass = List.of(new SensorSpec("compass", CompassTestSensor.class.getName(),
                 Map.of("offsetDeg", "10")));
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 30, compass, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "compass", "nonsense")});
@@ -140,24 +139,25 @@ class SensorsTest {
 
     @Test
     void badSensorsAreRefusedWithTheReason() {
-        assertEquals("type \"sniffer\" is neither laser, heat, bump nor a class on the class path",
-                assertThrows(IllegalArgumentException.class, () -> RobotSensors.create("sniffer", Map.of())).getMessage());
-        assertEquals("unknown attribute(s) [fov] for a laser sensor",
-                assertThrows(IllegalArgumentException.class, () -> RobotSensors.create("laser", Map.of("fov", "90")))
+        assertEquals("type \"sniffer\" is neither " + Sensors.fileNames() + " nor a class on the class path",
+                assertThrows(IllegalArgumentException.class, () -> Sensors.create("sniffer", Map.of())).getMessage());
+        assertEquals("unknown attribute(s) [fov] for a laser sensor (it takes: " + String.join(", ", Sensors.info("laser")
+                .attributes().stream().map(robosim.devices.Attribute::name).toList()) + ")",
+                assertThrows(IllegalArgumentException.class, () -> Sensors.create("laser", Map.of("fov", "90")))
                         .getMessage());
         assertTrue(assertThrows(IllegalArgumentException.class,
-                () -> RobotSensors.create("laser", Map.of("resolutionDeg", "1e-8"))).getMessage()
+                () -> Sensors.create("laser", Map.of("resolutionDeg", "1e-8"))).getMessage()
                 .endsWith("beams, more than 4096"));
         assertEquals("attribute rangeM value 'far' is not a number",
-                assertThrows(IllegalArgumentException.class, () -> RobotSensors.create("laser", Map.of("rangeM", "far")))
+                assertThrows(IllegalArgumentException.class, () -> Sensors.create("laser", Map.of("rangeM", "far")))
                         .getMessage());
     }
 
     @Test
     void aClassThatIsNotASensorIsRefusedBeforeItIsInitialised() {
-        assertEquals("class robosim.environment.sensors.NotASensor does not extend " + RobotSensor.class.getName(),
+        assertEquals("class robosim.environment.core.NotASensor does not extend " + RobotSensor.class.getName(),
                 assertThrows(IllegalArgumentException.class,
-                        () -> RobotSensors.create("robosim.environment.sensors.NotASensor", Map.of())).getMessage());
+                        () -> Sensors.create("robosim.environment.core.NotASensor", Map.of())).getMessage());
         assertFalse(NotASensor.Initialised.notASensor, "its static initialiser ran");
     }
 }

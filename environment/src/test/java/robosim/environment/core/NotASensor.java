@@ -1,7 +1,7 @@
-package robosim.environment.sensors;
+package robosim.environment.core;
 
 /**
- * Named as a sensor type in a test: not a {@link RobotSensor}, with a static initialiser that must never
+ * Named as a sensor type in a test: not a {@code RobotSensor}, with a static initialiser that must never
  * run (it says so in {@link Initialised}, which can be read without initialising this class).
  */
 public final class NotASensor {

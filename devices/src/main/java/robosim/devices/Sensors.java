@@ -1,0 +1,116 @@
+package robosim.devices;
+
+import java.util.Comparator;
+import java.util.List;
+import java.util.Map;
+import java.util.ServiceLoader;
+import java.util.TreeMap;
+
+/**
+ * The sensors a world may give its robots: every {@link RobotSensor} registered for {@link ServiceLoader} on the class
+ * path, by name, and any RobotSensor class named in a file. The file reader makes each robot's sensors here, and its
+ * errors, {@code describe.sh sensors} and whoever shows a reading read the names and the {@link SensorInfo}s here.
+ * Any thread.
+ */
+public final class Sensors {
+    /** Each registered sensor's provider (a new instance a call), by name. */
+    private static final Map<String, ServiceLoader.Provider<RobotSensor>> PROVIDERS = load();
+    private static final List<SensorInfo> REGISTERED = PROVIDERS.values().stream().map(p -> p.get().info())
+            .sorted(Comparator.comparing(SensorInfo::name)).toList();
+
+    private Sensors() {
+    }
+
+    /** Every registered sensor, by name. */
+    public static List<SensorInfo> all() {
+        return REGISTERED;
+    }
+
+    /** The registered sensor named {@code name}, or null. */
+    public static SensorInfo info(String name) {
+        for (SensorInfo s : REGISTERED) {
+            if (s.name().equals(name)) {
+                return s;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * How a viewer shows a reading named {@code reading} of {@code values} values: as its sensor's {@link SensorInfo}
+     * says when the reading has a registered sensor's name (a file's sensor named after its type, as by default);
+     * otherwise (a sensor named otherwise, or of one's own) ranges when it has more than {@link #RANGES_FROM} values,
+     * else the values.
+     */
+    public static SensorInfo.Display display(String reading, int values) {
+        SensorInfo s = info(reading);
+        return s != null ? s.display() : values >= RANGES_FROM ? SensorInfo.Display.RANGES : SensorInfo.Display.VALUES;
+    }
+
+    /** The fewest values of a reading of an unknown sensor that a viewer draws as ranges. */
+    public static final int RANGES_FROM = 9;
+
+    /** The names of the sensors a file's {@code <sensor type="...">} may name (those the Environment computes), as a list. */
+    public static String fileNames() {
+        return String.join(", ", REGISTERED.stream().filter(s -> !s.geometry()).map(SensorInfo::name).toList());
+    }
+
+    /**
+     * A configured sensor of {@code type}: a registered sensor's name, or a RobotSensor class name. Anything wrong
+     * (an unknown type, a sensor the Geometry process computes, a class that is not a RobotSensor, a bad or unknown
+     * attribute) is an IllegalArgumentException whose message says what. A class named in a file is checked to be a
+     * {@link RobotSensor} before it is initialised: a class that is not one never runs its static initialiser.
+     */
+    public static RobotSensor create(String type, Map<String, String> attributes) {
+        RobotSensor sensor = registered(type);
+        if (sensor == null) {
+            sensor = ofClass(type);
+        }
+        if (sensor.info().geometry()) {
+            throw new IllegalArgumentException("type \"" + type + "\" is computed by the Geometry process and comes with "
+                    + "the robot's type, not a <sensor>");
+        }
+        Attributes a = new Attributes(attributes);
+        sensor.configure(a);
+        if (!a.unread().isEmpty()) {
+            throw new IllegalArgumentException("unknown attribute(s) " + a.unread() + " for a " + type + " sensor "
+                    + "(it takes: " + String.join(", ", sensor.info().attributes().stream().map(Attribute::name)
+                    .toList()) + ")");
+        }
+        return sensor;
+    }
+
+    private static RobotSensor registered(String type) {
+        ServiceLoader.Provider<RobotSensor> p = PROVIDERS.get(type);
+        return p == null ? null : p.get();
+    }
+
+    private static RobotSensor ofClass(String type) {
+        Class<? extends RobotSensor> c;
+        try {
+            c = Class.forName(type, false, Sensors.class.getClassLoader()).asSubclass(RobotSensor.class);
+        } catch (ClassNotFoundException e) {
+            throw new IllegalArgumentException("type \"" + type + "\" is neither " + fileNames()
+                    + " nor a class on the class path");
+        } catch (ClassCastException e) {
+            throw new IllegalArgumentException("class " + type + " does not extend " + RobotSensor.class.getName());
+        }
+        try {
+            return c.getDeclaredConstructor().newInstance();
+        } catch (ReflectiveOperationException e) {
+            throw new IllegalArgumentException("class " + type + " needs a public no-argument constructor");
+        }
+    }
+
+    private static Map<String, ServiceLoader.Provider<RobotSensor>> load() {
+        Map<String, ServiceLoader.Provider<RobotSensor>> all = new TreeMap<>();
+        ServiceLoader.load(RobotSensor.class, Sensors.class.getClassLoader()).stream().forEach(p -> {
+            ServiceLoader.Provider<RobotSensor> was = all.put(p.get().info().name(), p);
+            if (was != null) {
+                throw new IllegalStateException("two sensors are named " + p.get().info().name() + ": "
+                        + was.type().getName() + " and " + p.type().getName());
+            }
+        });
+        return all;
+    }
+}
