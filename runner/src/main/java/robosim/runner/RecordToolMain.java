@@ -22,16 +22,19 @@ import robosim.sweep.Csv;
  * world, the steps and how the run ended (or where the file stops); {@code poses} writes every step's
  * poses as CSV on stdout, the {@code --pose-log} columns; {@code messages} every message delivered as CSV
  * ({@code step,from,to,text}); {@code reports} every value the robots reported as CSV ({@code step,robot,name,value});
+ * {@code readings} every sensor reading as CSV, a value a row ({@code step,robot,sensor,unit,index,value}: the unit
+ * its sensor's description in the registry gives, {@code Sensors});
  * {@code metrics} the run's metrics as a sweep's row has them (CSV: a header and a line), from the recording alone;
  * {@code plot} draws the robots' trajectories over the arena into a PNG ({@link TrajectoryPlot}).
  */
 @Command(name = "record-tool.sh", mixinStandardHelpOptions = true,
         description = "Reads a recording made with --record (or kept by a sweep's --keep-recordings): summary, poses "
-                + "(CSV), messages (CSV), reports (CSV: every value the robots reported, step by step) or metrics (CSV: "
+                + "(CSV), messages (CSV), reports (CSV: every value the robots reported, step by step), readings (CSV: "
+                + "every sensor reading, a value a row, with its sensor's unit) or metrics (CSV: "
                 + "the built-in metrics and every reported value, as a sweep's row has them; docs/EXPERIMENTS.md) on "
                 + "stdout; plot draws each robot's trajectory over the arena and its obstacles into --out FILE.png.")
 public final class RecordToolMain implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "summary|poses|messages|reports|metrics|plot", description = "What to print "
+    @Parameters(index = "0", paramLabel = "summary|poses|messages|reports|readings|metrics|plot", description = "What to print "
             + "(or draw).")
     String what;
 
@@ -60,9 +63,9 @@ public final class RecordToolMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (!List.of("summary", "poses", "messages", "reports", "metrics", "plot").contains(what)) {
+        if (!List.of("summary", "poses", "messages", "reports", "readings", "metrics", "plot").contains(what)) {
             System.err.println("record-tool: unknown request \"" + robosim.protocol.Printable.of(what, 40)
-                    + "\" (summary, poses, messages, reports, metrics or plot)");
+                    + "\" (summary, poses, messages, reports, readings, metrics or plot)");
             return 2;
         }
         if (what.equals("metrics") && png == null && report == null) {
@@ -87,6 +90,7 @@ public final class RecordToolMain implements Callable<Integer> {
                 case "summary" -> summary(r, System.out);
                 case "poses" -> poses(r, out);
                 case "reports" -> reports(r, out);
+                case "readings" -> readings(r, out);
                 case "plot" -> {
                     if (report == null) {
                         TrajectoryPlot.draw(r, png, sizePx);
@@ -165,6 +169,32 @@ public final class RecordToolMain implements Callable<Integer> {
                 for (CommEvent m : v.delivered()) {
                     out.write(Csv.line(List.of(Long.toString(StepNumbers.shown(s.update().step())), m.from(), m.to(),
                             m.payload())));
+                }
+            }
+        }
+    }
+
+    /**
+     * Every sensor reading, a value a row, with the step whose response carried it (steps completed, as {@code poses})
+     * and the unit its sensor's description gives ({@code Sensors.info} by the reading's name; "" for a sensor the
+     * registry does not know by that name).
+     */
+    static void readings(RecordingReader r, BufferedWriter out) throws IOException {
+        out.write(Csv.line(List.of("step", "robot", "sensor", "unit", "index", "value")));
+        for (int k = 0; k < r.steps(); k++) {
+            RecordingReader.Step s = r.step(k);
+            List<String> names = r.snapshotAt(k).robotNames();
+            String step = Long.toString(StepNumbers.shown(s.update().step()));
+            for (RobotView v : s.views()) {
+                String robot = v.robot() < names.size() ? names.get(v.robot()) : "robot" + v.robot();
+                for (robosim.protocol.SensorReading reading : v.readings()) {
+                    robosim.devices.SensorInfo kind = robosim.devices.Sensors.info(reading.name());
+                    String unit = kind == null ? "" : kind.unit();
+                    double[] values = reading.values();
+                    for (int i = 0; i < values.length; i++) {
+                        out.write(Csv.line(List.of(step, robot, reading.name(), unit, Integer.toString(i),
+                                Double.toString(values[i]))));
+                    }
                 }
             }
         }

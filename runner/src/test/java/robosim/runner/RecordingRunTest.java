@@ -53,6 +53,22 @@ class RecordingRunTest {
         assertTrue(sim.metrics.get("messages_delivered") > 0 && sim.metrics.get("distance_m") > 0, sim.metrics.toString());
     }
 
+    @Test
+    void recordToolsReadingsAreEveryValueWithItsSensorsUnit(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("sensors.rec");
+        new InJvmSimulation(InJvmSimulation.env("sensors.xml")).settings(s -> s.record(file)).run(5, false,
+                Chatter::new);
+        java.io.StringWriter text = new java.io.StringWriter();
+        try (RecordingReader r = new RecordingReader(file); java.io.BufferedWriter out = new java.io.BufferedWriter(text)) {
+            RecordToolMain.readings(r, out);
+        }
+        java.util.List<String> rows = text.toString().lines().toList();
+        assertEquals("step,robot,sensor,unit,index,value", rows.get(0));
+        assertTrue(rows.stream().anyMatch(l -> l.startsWith("1,f1,laser,mm,180,")), "a laser's last beam, in mm");
+        assertTrue(rows.stream().anyMatch(l -> l.startsWith("1,f1,bump,,3,")), "a bump's right side, no unit");
+        assertEquals(5 * 3 * (181 + 1 + 4), rows.size() - 1, "5 steps of 3 robots' laser, heat and bump");
+    }
+
     static byte[] bytes(java.io.Externalizable u) throws IOException {
         ByteArrayOutputStream b = new ByteArrayOutputStream();
         try (ObjectOutputStream o = new ObjectOutputStream(b)) {
