@@ -20,7 +20,7 @@ final class AddRobotForm {
     /** Asks for the robot on {@code owner}'s screen; the request, or null when cancelled. */
     static String ask(java.awt.Component owner) {
         JTextField name = new JTextField("robot-new", 14);
-        JComboBox<String> type = new JComboBox<>(new String[] {"ArRobot", "Scout"});
+        JComboBox<String> type = new JComboBox<>(robosim.devices.RobotTypes.names().toArray(new String[0]));
         JTextField x = new JTextField("1.0");
         JTextField y = new JTextField("1.0");
         JTextField heading = new JTextField("0");
