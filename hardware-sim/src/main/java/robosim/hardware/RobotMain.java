@@ -39,8 +39,9 @@ public final class RobotMain implements Callable<Integer> {
     int port;
 
     @Option(names = "--type",
-            description = "Robot type: ArRobot, Scout or a RobotType class name (default: the type the environment "
-                    + "file gives this robot, when it is ArRobot or Scout; a RobotType class must be named).")
+            description = "Robot type: a registered one (scripts/describe.sh robots) or a RobotType class name "
+                    + "(default: the type the environment file gives this robot, when it is a registered one; a "
+                    + "RobotType class must be named).")
     String type;
 
     @Mixin
