@@ -3,6 +3,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
 import java.util.Random;
+import robosim.devices.Drive;
 import robosim.environment.config.EnvironmentLoader;
 import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
@@ -47,6 +48,7 @@ public class Engine {
                 requests[i] = robots[i].request(k);
             }
             core.step(k, requests, geometry);
+            core.tally();
             for (int i = 0; i < n; i++) {
                 robots[i].respond(core.response(i));
             }
@@ -62,8 +64,10 @@ public class Engine {
         static final double LEG_MM = 250;
         final Random random;
         final double[] angles;
-        final double moveStep;
-        final double turnStep;
+        /** Wander's velocities: a Scout's defaults. */
+        static final double VELOCITY_MM_S = 500;
+        static final double ROT_VELOCITY_DEG_S = 90;
+        final double stepSeconds;
         double moveLeft;
         double turnLeft;
         double[] sonar = new double[0];
@@ -75,8 +79,7 @@ public class Engine {
             for (int s = 0; s < angles.length; s++) {
                 angles[s] = normalise(p.sonars().get(s).angleDeg());
             }
-            moveStep = 500.0 * stepMs / 1000;
-            turnStep = 90.0 * stepMs / 1000;
+            stepSeconds = Drive.seconds(stepMs);
         }
 
         StepRequest request(long k) {
@@ -84,8 +87,8 @@ public class Engine {
                 decide();
             }
             slept = true;
-            double move = Math.min(moveLeft, moveStep);
-            double turn = Math.copySign(Math.min(Math.abs(turnLeft), turnStep), turnLeft);
+            double move = Drive.piece(moveLeft, VELOCITY_MM_S, stepSeconds);
+            double turn = Drive.piece(turnLeft, ROT_VELOCITY_DEG_S, stepSeconds);
             moveLeft -= move;
             turnLeft -= turn;
             return new StepRequest(k, move, turn, true, List.of());

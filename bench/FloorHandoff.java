@@ -7,7 +7,7 @@ import java.util.concurrent.locks.ReentrantLock;
 
 /**
  * The floor of the one-JVM shape: the hand-off between the simulation loop and N robots' blocking control code, with
- * nothing else. As in a one-JVM run (environment/.../net/SimulationLoop, InMemoryTransport, hardware/ControlLink),
+ * nothing else. As in a one-JVM run (environment/.../run/SimulationLoop, InMemoryTransport, hardware/ControlLink),
  * each robot's control code runs on a thread of its own and blocks in each call on its baton (a ReentrantLock and
  * its Condition); the loop gives every robot its step (completes its call), the control code makes its decision
  * (WORK_NS of arithmetic) and blocks in its next call, and the robot whose request is the last one owed posts a

@@ -145,6 +145,7 @@ final class BatchWorld {
     /** One time step of the requests in hand (the world's step, its metrics counted), then the messages heard. */
     private void advance() throws IOException {
         core.step(step, requests, geometry);
+        core.tally();
         System.arraycopy(requests, 0, lastRequests, 0, robots);
         if (recording != null) {
             for (int i = 0; i < robots; i++) {

@@ -24,7 +24,7 @@ class RecordingRunTest {
     void theRecordingHoldsWhatTheViewersGotAndEveryMessage(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("run.rec");
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
-                .settings(s -> s.record(file))
+                .settings(s -> s.record(file).liveMetrics(true))
                 .run(300, false, Chatter::new);
         assertTrue(sim.summary.completed(), sim.summary.reason());
         try (RecordingReader r = new RecordingReader(file)) {
@@ -51,6 +51,41 @@ class RecordingRunTest {
                 .collect(java.util.stream.Collectors.toMap(java.util.Map.Entry::getKey, java.util.Map.Entry::getValue)),
                 "the built-in metrics counted live are the recording's, bit for bit (one implementation)");
         assertTrue(sim.metrics.get("messages_delivered") > 0 && sim.metrics.get("distance_m") > 0, sim.metrics.toString());
+    }
+
+    /** Broadcasts every step. */
+    static final class Broadcaster implements robosim.api.RobotControl {
+        @Override
+        public void run(robosim.api.Robot robot) throws InterruptedException {
+            for (int i = 0; true; i++) {
+                robot.broadcast("step " + i);
+                robot.move(100);
+            }
+        }
+    }
+
+    @Test
+    void aRobotThatLeavesIsCountedLiveAsTheRecordingCountsIt(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("leaving.rec");
+        java.util.concurrent.CompletableFuture<robosim.environment.net.ClientWorkerCoordinator> env =
+                new java.util.concurrent.CompletableFuture<>();
+        java.util.concurrent.atomic.AtomicBoolean removed = new java.util.concurrent.atomic.AtomicBoolean();
+        InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("wander.xml"))
+                .settings(s -> s.record(file).liveMetrics(true)).sideline((e, ports) -> env.complete(e))
+                .onUpdate((u, port) -> { // (w1 is removed while the others broadcast to it: mid-run, mid-step)
+                    if (u.step() >= 30 && !removed.getAndSet(true)) {
+                        try {
+                            assertNull(env.get().roster().remove("w1"));
+                        } catch (Exception ex) {
+                            throw new AssertionError(ex);
+                        }
+                    }
+                }).run(80, true, Broadcaster::new);
+        assertEquals(5.0, sim.metrics.get("robots_left"), "w1 left");
+        assertEquals(sim.metrics, robosim.sweep.RunMetrics.of(file, java.util.List.of(), 0.5).entrySet().stream()
+                .filter(e -> sim.metrics.containsKey(e.getKey()))
+                .collect(java.util.stream.Collectors.toMap(java.util.Map.Entry::getKey, java.util.Map.Entry::getValue)),
+                "live and recorded, bit for bit, with a robot gone mid-run");
     }
 
     @Test

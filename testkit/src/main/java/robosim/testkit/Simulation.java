@@ -228,7 +228,8 @@ public final class Simulation implements AutoCloseable {
             Settings settings;
             try {
                 settings = Settings.builder().ports(InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true)
-                        .stepTimeoutMs(stepTimeout.toMillis()).speed(0).robotsInThisJvm(starter).build();
+                        .stepTimeoutMs(stepTimeout.toMillis()).speed(0).robotsInThisJvm(starter).liveMetrics(true)
+                        .build();
             } catch (RuntimeException e) {
                 throw new IllegalArgumentException(e.getMessage(), e);
             }
@@ -372,7 +373,8 @@ public final class Simulation implements AutoCloseable {
 
     /**
      * The built-in metric {@code name} of the run so far ({@code distance_m}, {@code contacts}, ...: the same numbers a
-     * sweep's row gives for a run of these steps; {@code describe.sh metrics} lists them).
+     * sweep's row gives for a run of these steps, its area counted in cells of 0.5 m, a sweep's default;
+     * {@code describe.sh metrics} lists them).
      *
      * @throws IllegalArgumentException naming the built-in metrics, for a name that is none of them
      */

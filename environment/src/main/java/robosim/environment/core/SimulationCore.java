@@ -5,7 +5,6 @@ import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import robosim.devices.Drive;
-import robosim.environment.metrics.AreaCoveredMetric;
 import robosim.environment.metrics.MetricTally;
 import robosim.environment.metrics.RunStart;
 import robosim.environment.metrics.StepView;
@@ -26,8 +25,9 @@ import robosim.protocol.StepResponse;
  * Geometry request of the step, every ACTION and SONAR request, resolved by a {@link Geometry}: in this process at
  * once, or by a Geometry process whose answer comes later, {@link #answer}), apply (poses from the distances Geometry
  * returns), tag, sense (sonar from the answer, the other SENSOR requests from each robot's {@code RobotSensor}s, on
- * the world after every move; noise from the world's one seeded generator, in robot order), respond, and tally (the
- * built-in metrics, {@link MetricTally}). Deterministic: the same world and the same requests give the same
+ * the world after every move; noise from the world's one seeded generator, in robot order), respond; and, once the
+ * step's responses have gone out, tally ({@link #tally}: the built-in metrics, {@link MetricTally}, count the step as
+ * it went out). Deterministic: the same world and the same requests give the same
  * responses, bit for bit. Not thread-safe; one caller.
  */
 public final class SimulationCore {
@@ -63,13 +63,18 @@ public final class SimulationCore {
     /** The built-in metrics, counted step by step, and what they see of the last step. */
     private final MetricTally tally;
     private final StepView released = new Released();
+    /** The robots the last step went out to, as its tally was told. */
+    private java.util.function.IntPredicate wentOut = robot -> false;
 
-    /** The world of {@code spec}, each robot as its {@code properties} say; area counted in cells of 0.5 m. */
+    /** The world of {@code spec}, each robot as its {@code properties} say, its metrics not counted. */
     public SimulationCore(WorldSpec spec, List<RobotProperties> properties) {
-        this(spec, properties, AreaCoveredMetric.DEFAULT_CELL_M);
+        this(spec, properties, Double.NaN);
     }
 
-    /** The world of {@code spec}, each robot as its {@code properties} say; area counted in cells of {@code areaCellM}. */
+    /**
+     * The world of {@code spec}, each robot as its {@code properties} say, its built-in metrics counted at each
+     * {@link #tally} (area in cells of {@code areaCellM}; NaN: not counted, {@link #tally} does nothing).
+     */
     public SimulationCore(WorldSpec spec, List<RobotProperties> properties, double areaCellM) {
         this.map = new EnvironmentMap(spec, properties);
         this.robots = map.robotCount();
@@ -87,7 +92,7 @@ public final class SimulationCore {
         }
         this.geometryRequest = new GeometryStepRequest(robots);
         this.responses = new StepResponse[robots];
-        this.tally = new MetricTally(new RunStart(spec.arena(), areaCellM, released));
+        this.tally = Double.isNaN(areaCellM) ? null : new MetricTally(new RunStart(spec.arena(), areaCellM, released));
     }
 
     private void limits(int i, RobotProperties p) {
@@ -204,7 +209,6 @@ public final class SimulationCore {
         String[] tagged = tag(requests);
         senseAndRespond(k, g, requests, tagged);
         lastStep = k;
-        tally.step(released);
     }
 
     /**
@@ -329,7 +333,27 @@ public final class SimulationCore {
         return responses[robot];
     }
 
-    /** The built-in metrics of the run so far, counted after each step. */
+    /**
+     * Tally: the built-in metrics count the last step as it went out to every robot that took part (its request was
+     * in): the last phase of a step whose responses all go out as computed.
+     */
+    public void tally() {
+        tally(robot -> lastRequests[robot] != null);
+    }
+
+    /**
+     * Tally, for a stepper that releases the responses itself (the Environment's {@code Run}): the metrics count the
+     * last step as it went out, to the robots {@code released} says took part in it (a robot that left during the
+     * step, its response withheld, did not), their responses as they went out.
+     */
+    public void tally(java.util.function.IntPredicate released) {
+        if (tally != null) {
+            wentOut = released;
+            tally.step(this.released);
+        }
+    }
+
+    /** The built-in metrics of the run so far, as of the last {@link #tally}; null for a world that counts none. */
     public MetricTally metrics() {
         return tally;
     }
@@ -353,7 +377,7 @@ public final class SimulationCore {
 
         @Override
         public boolean tookPart(int robot) {
-            return lastStep >= 0 && lastRequests[robot] != null;
+            return lastStep >= 0 && wentOut.test(robot);
         }
 
         @Override

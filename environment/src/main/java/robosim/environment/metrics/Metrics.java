@@ -12,7 +12,9 @@ import java.util.ServiceLoader;
  * link's metrics array and {@code describe.sh metrics}. Any thread.
  */
 public final class Metrics {
-    private static final List<MetricInfo> BUILT_IN = load().stream().map(StepMetric::info).toList();
+    /** Each built-in metric's provider (a new instance a call), in column order. */
+    private static final List<ServiceLoader.Provider<StepMetric>> PROVIDERS = load();
+    private static final List<MetricInfo> BUILT_IN = PROVIDERS.stream().map(p -> p.get().info()).toList();
 
     private Metrics() {
     }
@@ -39,19 +41,21 @@ public final class Metrics {
 
     /** A new instance of every built-in metric, in column order: a run's tally. */
     public static List<StepMetric> fresh() {
-        return load();
+        return PROVIDERS.stream().map(ServiceLoader.Provider::get).toList();
     }
 
-    private static List<StepMetric> load() {
-        List<StepMetric> all = new ArrayList<>();
-        ServiceLoader.load(StepMetric.class, Metrics.class.getClassLoader()).forEach(all::add);
-        all.sort(Comparator.comparingInt((StepMetric m) -> m.info().column()).thenComparing(m -> m.info().name()));
+    private static List<ServiceLoader.Provider<StepMetric>> load() {
+        List<ServiceLoader.Provider<StepMetric>> all = new ArrayList<>(ServiceLoader.load(StepMetric.class,
+                Metrics.class.getClassLoader()).stream().toList());
+        all.sort(Comparator.comparingInt((ServiceLoader.Provider<StepMetric> p) -> p.get().info().column())
+                .thenComparing(p -> p.get().info().name()));
         for (int i = 1; i < all.size(); i++) {
-            if (all.get(i).info().name().equals(all.get(i - 1).info().name())) {
-                throw new IllegalStateException("two built-in metrics are named " + all.get(i).info().name() + ": "
-                        + all.get(i - 1).getClass().getName() + " and " + all.get(i).getClass().getName());
+            String name = all.get(i).get().info().name();
+            if (name.equals(all.get(i - 1).get().info().name())) {
+                throw new IllegalStateException("two built-in metrics are named " + name + ": "
+                        + all.get(i - 1).type().getName() + " and " + all.get(i).type().getName());
             }
         }
-        return all;
+        return List.copyOf(all);
     }
 }

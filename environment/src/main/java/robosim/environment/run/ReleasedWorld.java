@@ -28,6 +28,7 @@ public final class ReleasedWorld {
     private final PoseUpdate update;
     private final boolean grown;
     private final double[] metrics;
+    private static final double[] NO_METRICS = new double[0];
 
     private ReleasedWorld(long steps, WorldSpec spec, List<RobotProperties> properties, PoseUpdate update,
             boolean grown, double[] metrics) {
@@ -75,6 +76,9 @@ public final class ReleasedWorld {
     }
 
     private static double[] values(MetricTally tally) {
+        if (tally == null) {
+            return NO_METRICS;
+        }
         double[] v = new double[tally.size()];
         for (int i = 0; i < v.length; i++) {
             v[i] = tally.value(i);

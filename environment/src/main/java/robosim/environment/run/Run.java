@@ -10,6 +10,7 @@ import org.slf4j.LoggerFactory;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
+import robosim.environment.metrics.AreaCoveredMetric;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
@@ -153,7 +154,8 @@ public final class Run {
         for (Roster.Slot s : roster.all()) {
             properties.add(s.properties());
         }
-        core = new SimulationCore(spec, properties);
+        core = settings.liveMetrics() ? new SimulationCore(spec, properties, AreaCoveredMetric.DEFAULT_CELL_M)
+                : new SimulationCore(spec, properties);
         roster.start(core);
         admission.start(core);
         geometry.start(core.map().geometryWorld());
@@ -330,6 +332,7 @@ public final class Run {
                 roster.drop(s, "could not send its response: " + e.getMessage());
             }
         }
+        core.tally(releasedStep::tookPart); // (as it went out: a robot that left during the step is not counted)
         long out = clock.getAsLong();
         world = world.next(step, core);
         published.released(world, out);

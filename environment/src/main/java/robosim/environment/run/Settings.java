@@ -44,11 +44,13 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
      * The run: the coordinator design; geometry in-process ({@code --no-geometry}) or a Geometry process
      * and what to do when it is lost; steps to run (0: until stopped); the pace ({@code speed} times real
      * time, 0 as fast as possible); the step number after every response ({@code stepMessages}, else only
-     * step 0 and robots count on); the object streams' reset interval; what to do when a robot is lost.
+     * step 0 and robots count on); the object streams' reset interval; what to do when a robot is lost; whether the
+     * run counts its built-in metrics as it goes ({@code liveMetrics}: each released world carries them; a sweep reads
+     * them from the recording instead).
      */
     public record Shape(CoordinatorDesign design, boolean inProcessGeometry,
             GeometryLoss onGeometryLoss, long maxSteps, double speed, boolean stepMessages,
-            int resetEvery, RobotLoss onRobotLoss) {
+            int resetEvery, RobotLoss onRobotLoss, boolean liveMetrics) {
     }
 
     public static Builder builder() {
@@ -72,6 +74,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         b.stepMessages = shape.stepMessages();
         b.resetEvery = shape.resetEvery();
         b.onRobotLoss = shape.onRobotLoss();
+        b.liveMetrics = shape.liveMetrics();
         b.record = record;
         b.robotsInThisJvm = robotsInThisJvm;
         return b;
@@ -149,6 +152,11 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         return shape.resetEvery();
     }
 
+    /** The run counts its built-in metrics as it goes. */
+    public boolean liveMetrics() {
+        return shape.liveMetrics();
+    }
+
     /** Builds {@link Settings}; each setter changes one value. */
     public static final class Builder {
         private InetAddress bind = InetAddress.getLoopbackAddress();
@@ -170,6 +178,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
         private java.nio.file.Path record;
         private RobotLoss onRobotLoss = RobotLoss.REMOVE;
+        private boolean liveMetrics;
         private InMemoryLink.Starter robotsInThisJvm;
 
         private Builder() {
@@ -255,6 +264,12 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
             return this;
         }
 
+        /** The run counts its built-in metrics as it goes (the testkit's {@code Simulation.metric}); off by default. */
+        public Builder liveMetrics(boolean on) {
+            this.liveMetrics = on;
+            return this;
+        }
+
         /** Records the run into this file, which must not exist yet ({@code --record}; null: no recording). */
         public Builder record(java.nio.file.Path file) {
             this.record = file;
@@ -283,7 +298,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
             return new Settings(new Ports(bind, robotPort, viewerPort, geometryPort, maxConnections, keys),
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery,
-                            onRobotLoss),
+                            onRobotLoss, liveMetrics),
                     record, robotsInThisJvm);
         }
     }

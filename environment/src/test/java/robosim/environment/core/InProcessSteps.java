@@ -24,6 +24,7 @@ public final class InProcessSteps {
     /** Step k, resolved in-process. */
     public void step(long k, StepRequest[] requests) throws ProtocolException {
         core.step(k, requests, geometry);
+        core.tally();
     }
 
     public StepResponse response(int robot) {

@@ -47,6 +47,21 @@ class SimulationCoreTest {
     }
 
     @Test
+    void theTallyCountsAStepAsItWentOutNotAResponseWithheld() throws Exception {
+        SimulationCore core = new SimulationCore(SPEC, PROPS, 0.5);
+        InProcessGeometry geometry = new InProcessGeometry(core.map().geometryWorld());
+        core.step(0, new StepRequest[] {req(0, 0, 0), req(0, 0, 0, new CommEvent("", "a", "to a")), req(0, 0, 0)},
+                geometry);
+        core.withhold(0); // (a left during the step: its message goes back to its inbox)
+        core.tally(robot -> robot != 0);
+        int delivered = robosim.environment.metrics.Metrics.names().indexOf("messages_delivered");
+        assertEquals(0, core.metrics().value(delivered), "nothing went out to a");
+        core.step(1, new StepRequest[] {req(1, 0, 0), req(1, 0, 0), req(1, 0, 0)}, geometry);
+        core.tally();
+        assertEquals(1, core.metrics().value(delivered), "a gets it the next step, counted once");
+    }
+
+    @Test
     void aBroadcastReachesEveryOtherRobotInSenderOrder() throws Exception {
         InProcessSteps core = InProcessSteps.of(SPEC, PROPS);
         core.step(0, new StepRequest[] {req(0, 0, 0, new CommEvent("", "*", "hello all")),
