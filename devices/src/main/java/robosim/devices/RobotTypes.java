@@ -50,8 +50,8 @@ public final class RobotTypes {
         if (t != null) {
             return t;
         }
-        try {
-            return Class.forName(name, true, RobotTypes.class.getClassLoader()).asSubclass(RobotType.class)
+        try { // (a class that is not a RobotType is not initialised: its static code never runs)
+            return Class.forName(name, false, RobotTypes.class.getClassLoader()).asSubclass(RobotType.class)
                     .getDeclaredConstructor().newInstance();
         } catch (ReflectiveOperationException | ClassCastException | LinkageError e) {
             throw new IllegalArgumentException("robot type \"" + name + "\" is neither " + String.join(", ", names())

@@ -37,13 +37,34 @@ public final class Sensors {
     }
 
     /**
-     * How a viewer shows a reading named {@code reading} of {@code values} values: as its sensor's {@link SensorInfo}
-     * says when the reading has a registered sensor's name (a file's sensor named after its type, as by default);
-     * otherwise (a sensor named otherwise, or of one's own) ranges when it has more than {@link #RANGES_FROM} values,
-     * else the values.
+     * The registered sensor a reading named {@code reading} of {@code values} values is most likely of, for whoever
+     * sees readings without the file (a viewer, a recording): the one of that name (a file's sensor named after its
+     * type, as by default), else the one whose name the reading's holds (case aside; {@code front-laser}), the
+     * longest such name first, one that shows sides only with as many values as it has sides; null for none.
+     */
+    public static SensorInfo kindOf(String reading, int values) {
+        SensorInfo exact = info(reading);
+        if (exact != null) {
+            return exact;
+        }
+        String lower = reading.toLowerCase(java.util.Locale.ROOT);
+        SensorInfo best = null;
+        for (SensorInfo s : REGISTERED) {
+            boolean fits = s.display() != SensorInfo.Display.SIDES || values == SensorInfo.Display.SIDES_NAMED.size();
+            if (fits && lower.contains(s.name()) && (best == null || s.name().length() > best.name().length())) {
+                best = s;
+            }
+        }
+        return best;
+    }
+
+    /**
+     * How a viewer shows a reading named {@code reading} of {@code values} values: as the sensor it is most likely of
+     * says ({@link #kindOf}); for none (a sensor of one's own), ranges when it has at least {@link #RANGES_FROM}
+     * values, else the values.
      */
     public static SensorInfo.Display display(String reading, int values) {
-        SensorInfo s = info(reading);
+        SensorInfo s = kindOf(reading, values);
         return s != null ? s.display() : values >= RANGES_FROM ? SensorInfo.Display.RANGES : SensorInfo.Display.VALUES;
     }
 
@@ -94,11 +115,15 @@ public final class Sensors {
                     + " nor a class on the class path");
         } catch (ClassCastException e) {
             throw new IllegalArgumentException("class " + type + " does not extend " + RobotSensor.class.getName());
+        } catch (LinkageError e) {
+            throw new IllegalArgumentException("class " + type + " could not be loaded: " + e);
         }
         try {
             return c.getDeclaredConstructor().newInstance();
         } catch (ReflectiveOperationException e) {
             throw new IllegalArgumentException("class " + type + " needs a public no-argument constructor");
+        } catch (LinkageError e) {
+            throw new IllegalArgumentException("class " + type + " could not be loaded: " + e);
         }
     }
 

@@ -12,7 +12,9 @@ import robosim.protocol.SonarSpec;
  */
 @AutoService(RobotSensor.class)
 public final class SonarSensor extends RobotSensor {
-    private static final Attribute NOISE = Attribute.noise("mm");
+    /** The robot's {@code sonarNoiseMm}: the sonar has no {@code <sensor>} of its own, it comes with the type. */
+    private static final Attribute NOISE = Attribute.number("sonarNoiseMm", 0, "mm", "on the <robot>: the standard "
+            + "deviation of Gaussian noise on every range, from the world's seed").atLeast(0);
 
     private int count;
     private double farthestMm;
@@ -21,8 +23,8 @@ public final class SonarSensor extends RobotSensor {
     public SonarSensor() {
         super(new SensorInfo("sonar", "the robot's sonar ring, as its type carries it", List.of(NOISE),
                 "one range a transducer, mm, in the type's order (Robot.sonarAnglesDeg), measured from the transducer "
-                        + "on the rim; a transducer's farthest range when nothing is in its cone; the noise is the "
-                        + "robot's sonarNoiseMm=\"...\"", "mm", true, SensorInfo.Display.RANGES));
+                        + "on the rim; a transducer's farthest range when nothing is in its cone", "mm", true,
+                SensorInfo.Display.RANGES));
     }
 
     /** The sonar of a robot with {@code ring}, its noise {@code noiseMm} (the file's {@code sonarNoiseMm}). */

@@ -89,6 +89,16 @@ class RegistriesTest {
     }
 
     @Test
+    void aReadingIsShownAsTheSensorItsNameSaysItIsOf() {
+        assertEquals("laser", Sensors.kindOf("laser", 181).name());
+        assertEquals("laser", Sensors.kindOf("front-laser", 90).name(), "a name that holds a sensor's");
+        assertEquals(SensorInfo.Display.SIDES, Sensors.display("Rear_Bump", 4));
+        assertNull(Sensors.kindOf("rear_bump", 3), "sides only with as many values as there are sides");
+        assertEquals(SensorInfo.Display.RANGES, Sensors.display("gas", Sensors.RANGES_FROM), "one's own, many values");
+        assertEquals(SensorInfo.Display.VALUES, Sensors.display("gas", 2));
+    }
+
+    @Test
     void aSensorReadsItsDeclaredAttributesAndRefusesOthersSayingWhichItTakes() {
         RobotSensor laser = Sensors.create("laser", Map.of("fovDeg", "90", "resolutionDeg", "0.5", "rangeM", "4"));
         assertEquals(new SensorValues(181, 0, 4000, "mm"), laser.values());

@@ -176,8 +176,8 @@ public final class RecordToolMain implements Callable<Integer> {
 
     /**
      * Every sensor reading, a value a row, with the step whose response carried it (steps completed, as {@code poses})
-     * and the unit its sensor's description gives ({@code Sensors.info} by the reading's name; "" for a sensor the
-     * registry does not know by that name).
+     * and the unit its sensor's description gives ({@code Sensors.kindOf} the reading's name: "" for a sensor of
+     * one's own).
      */
     static void readings(RecordingReader r, BufferedWriter out) throws IOException {
         out.write(Csv.line(List.of("step", "robot", "sensor", "unit", "index", "value")));
@@ -188,7 +188,8 @@ public final class RecordToolMain implements Callable<Integer> {
             for (RobotView v : s.views()) {
                 String robot = v.robot() < names.size() ? names.get(v.robot()) : "robot" + v.robot();
                 for (robosim.protocol.SensorReading reading : v.readings()) {
-                    robosim.devices.SensorInfo kind = robosim.devices.Sensors.info(reading.name());
+                    robosim.devices.SensorInfo kind = robosim.devices.Sensors.kindOf(reading.name(),
+                            reading.values().length);
                     String unit = kind == null ? "" : kind.unit();
                     double[] values = reading.values();
                     for (int i = 0; i < values.length; i++) {

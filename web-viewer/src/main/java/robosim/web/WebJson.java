@@ -9,6 +9,7 @@ import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotProperties;
 import robosim.protocol.RobotView;
 import robosim.protocol.RunState;
+import robosim.devices.SensorInfo;
 import robosim.devices.Sensors;
 import robosim.protocol.SensorReading;
 import robosim.protocol.SimulationEnd;
@@ -106,8 +107,12 @@ final class WebJson {
         n.put("contact", v.contact()).put("tagged", v.tagged());
         ArrayNode readings = n.putArray("readings");
         for (SensorReading r : v.readings()) {
-            ArrayNode values = readings.addObject().put("name", r.name())
-                    .put("display", Sensors.display(r.name(), r.values().length).name()).putArray("values");
+            SensorInfo.Display display = Sensors.display(r.name(), r.values().length);
+            ObjectNode reading = readings.addObject().put("name", r.name()).put("display", display.name());
+            if (display == SensorInfo.Display.SIDES) {
+                SensorInfo.Display.SIDES_NAMED.forEach(reading.putArray("sides")::add);
+            }
+            ArrayNode values = reading.putArray("values");
             for (double d : r.values()) {
                 values.add(Math.round(d * 10) / 10.0);
             }

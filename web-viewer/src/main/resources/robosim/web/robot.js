@@ -99,7 +99,7 @@ export class RobotPanel {
         `  ${sonar}tag ${v.tag ? 'asked' : 'no'}`,
         `contact ${v.contact || 'none'}   tagged ${v.tagged || 'none'}`);
       for (const s of v.readings) {
-        if (s.display === 'SIDES') bump = s.values;
+        if (s.display === 'SIDES') { bump = s.values; this.bumps.forEach((b, k) => { b.textContent = s.sides[k]; }); }
         lines.push(`${s.name}  ${s.values.length <= 6 ? s.values.join(' ')
           : `${s.values.length} values, ${Math.min(...s.values)} to ${Math.max(...s.values)}`}`);
       }
