@@ -48,7 +48,7 @@ def test_a_world_passes_pettingzoos_parallel_api_test() -> None:
 
 
 def test_a_robots_sensors_are_observed_each_a_box_its_description_gives() -> None:
-    env = ParallelEnv(SENSORS, max_steps=20)
+    env = ParallelEnv(SENSORS, sensors=True, max_steps=20)
     try:
         space = env.observation_space("f1")
         laser, heat, bump = space["laser"], space["heat"], space["bump"]

@@ -53,7 +53,8 @@ class Welcome:
     arena_mm: list[float]
     seed: int
     episode_metric: str | None
-    #: Each robot's sensors (its environment file's), in its file's order: name, type, count, low, high, unit.
+    #: Each robot's sensors (its environment file's, with ``sensors=True``), in its file's order: name, offset (its
+    #: first column of ``Batch.readings``), type, count, low, high, unit.
     sensors: list[list[dict[str, Any]]]
     #: Columns of a robot's row of ``Batch.readings`` (0: no robot has a sensor, no readings array).
     readings: int
@@ -95,7 +96,8 @@ class LearningHost:
     """A started learning host and the link to it. ``close()`` (or ``with``) says bye and waits for it to end."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 1, repeat: int = 1, message_size: int = 0,
-                 random_headings: bool = False, area_cell_m: float | None = None, threads: int | None = None,
+                 sensors: bool = False, random_headings: bool = False, area_cell_m: float | None = None,
+                 threads: int | None = None,
                  episode_metric: str | None = None, web_port: int | None = None, viewer_port: int | None = None,
                  params: dict[str, str] | None = None, robosim_home: str | os.PathLike[str] | None = None) -> None:
         file = Path(path)
@@ -104,6 +106,8 @@ class LearningHost:
         home = Path(robosim_home) if robosim_home is not None else find_home(file.parent)
         command = ["bash", str(home / "scripts/learning-host.sh"), "--env", str(file.resolve()),
                    "--worlds", str(worlds), "--repeat", str(repeat), "--message-size", str(message_size)]
+        if sensors:
+            command.append("--sensors")
         if random_headings:
             command.append("--random-headings")
         if area_cell_m is not None:

@@ -28,16 +28,13 @@ class Layout:
 
     @cached_property
     def sensor_blocks(self) -> dict[str, tuple[int, int]]:
-        """Each sensor name's block of ``Batch.readings``' columns, (start, width), in the order the world first names
-        them; as wide as the most values a robot's sensor of that name gives (the host's layout)."""
-        widths: dict[str, int] = {}
+        """Each sensor name's block of ``Batch.readings``' columns, (start, width): where the host's welcome puts it,
+        as wide as the most values a robot's sensor of that name gives."""
+        blocks: dict[str, tuple[int, int]] = {}
         for own in self.welcome.sensors:
             for s in own:
-                widths[s["name"]] = max(widths.get(s["name"], 0), int(s["count"]))
-        blocks, start = {}, 0
-        for name, width in widths.items():
-            blocks[name] = (start, width)
-            start += width
+                start, width = blocks.get(s["name"], (int(s["offset"]), 0))
+                blocks[s["name"]] = (start, max(width, int(s["count"])))
         return blocks
 
     def observation_space(self, robot: int) -> spaces.Dict:

@@ -74,14 +74,15 @@ class VectorEnv:
     World w of ``reset(seed=s)`` runs with seed s + w; its later episodes with seeds drawn from (s, w)."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
-                 message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
+                 sensors: bool = False, message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS,
+                 reward: Reward = None,
                  terminate: Terminate = None, episode_metric: str | None = None, random_headings: bool = False,
                  area_cell_m: float | None = None, threads: int | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
         if max_steps < 1:
             raise ValueError(f"max_steps must be >= 1, got {max_steps}")
-        self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size,
+        self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size, sensors=sensors,
                                  random_headings=random_headings, area_cell_m=area_cell_m, threads=threads,
                                  episode_metric=episode_metric, web_port=web_port, viewer_port=viewer_port,
                                  params=params, robosim_home=robosim_home)

@@ -48,9 +48,10 @@ import robosim.protocol.SonarSpec;
 public final class BatchLink {
     public static final String NAME = "robosim-batch-link";
     public static final int VERSION = 1;
+    /** The arrays a learner observes besides each robot's sensors (a sensor may not take their names). */
+    static final List<String> OBSERVED = List.of("sonar", "contact", "pose", "messages");
     /** What its hello must be: the link's name and version. */
     private static final LinkHello.Link HELLO = new LinkHello.Link(NAME, "learning link", VERSION, "learner", List.of());
-    private static final int MAX_TEXT = 1000;
     private static final VarHandle FLOAT = MethodHandles.byteArrayViewVarHandle(float[].class, ByteOrder.LITTLE_ENDIAN);
 
     private final Socket socket;
@@ -145,8 +146,9 @@ public final class BatchLink {
             for (int k = 0; k < own.size(); k++) {
                 SensorColumns.Column c = own.get(k);
                 WorldSpec.SensorSpec spec = batch.spec().robots().get(i).sensors().get(k);
-                p.packMapHeader(6);
+                p.packMapHeader(7);
                 p.packString("name").packString(c.name());
+                p.packString("offset").packInt(c.offset());
                 p.packString("type").packString(spec.type());
                 p.packString("count").packInt(c.values().count());
                 p.packString("low").packDouble(c.values().low());
@@ -207,7 +209,7 @@ public final class BatchLink {
             } catch (MessagePackException e) {
                 reply.clear();
                 reply.packArrayHeader(3).packString("error").packString("bad_call")
-                        .packString("a request that is not one: " + oneLine(e.getMessage()));
+                        .packString("a request that is not one: " + LinkFrames.oneLine(e.getMessage()));
             }
             LinkFrames.write(out, reply.toByteArray());
             if (bye) {
@@ -351,7 +353,7 @@ public final class BatchLink {
                 throw e;
             } catch (IOException | RuntimeException | Error e) { // (a metric class of one's own may throw anything)
                 throw new BadCall("value", "metric " + batch.episodeMetric().name() + " of world " + which[i] + ": "
-                        + oneLine(e.toString()));
+                        + LinkFrames.oneLine(e.toString()));
             }
         }
         reply.packArrayHeader(2).packString("ok").packArrayHeader(n);
@@ -364,7 +366,7 @@ public final class BatchLink {
         try {
             batch.step(act ? actions : null, reset, seeds);
         } catch (IllegalStateException e) { // (a world that cannot go on: the learner is told, then the link ends)
-            String why = oneLine(e.getMessage());
+            String why = LinkFrames.oneLine(e.getMessage());
             reply.clear();
             reply.packArrayHeader(3).packString("error").packString("failed").packString(why);
             LinkFrames.write(out, reply.toByteArray());
@@ -403,9 +405,6 @@ public final class BatchLink {
         }
     }
 
-    private static String oneLine(String s) {
-        return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), MAX_TEXT);
-    }
 
     /** A request answered with an error; the link goes on. */
     private static final class BadCall extends RuntimeException {

@@ -54,12 +54,20 @@ public final class BatchWorlds implements AutoCloseable {
      * @param areaCellM the side of {@code area_covered}'s cells, m
      * @param threads threads that step the worlds (at most the worlds; no more than the cores, {@link StepCrew})
      * @param episodeMetric a metric of each episode's recording ({@link #measure}), or null
+     * @param sensors each robot's sensors (its file's) read with each action's last time step, into
+     *     {@link #readings()}; without, they are not read (no ray cast, no noise drawn)
      */
     public record Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
-            MetricChoice episodeMetric) {
-        /** Without an episode metric. */
+            MetricChoice episodeMetric, boolean sensors) {
+        /** Without the robots' sensors. */
+        public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
+                MetricChoice episodeMetric) {
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, episodeMetric, false);
+        }
+
+        /** Without an episode metric or the robots' sensors. */
         public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads) {
-            this(repeat, messageSize, randomHeadings, areaCellM, threads, null);
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, null, false);
         }
     }
 
@@ -85,7 +93,7 @@ public final class BatchWorlds implements AutoCloseable {
         this.pose = new byte[count * robots * 3 * 4];
         this.contact = new byte[count * robots];
         this.messages = new byte[count * robots * robots * messageSize * 4];
-        this.sensorColumns = new SensorColumns(spec);
+        this.sensorColumns = new SensorColumns(spec, settings.sensors());
         this.readings = new byte[count * robots * sensorColumns.width() * 4];
         this.metrics = new byte[count * METRICS.size() * 8];
         this.steps = new byte[count * 8];

@@ -73,6 +73,10 @@ public final class LearningHostMain implements Callable<Integer> {
             + "(default: ${DEFAULT-VALUE}: no messages).")
     int messageSize;
 
+    @Option(names = "--sensors", description = "Read each robot's sensors (its environment file's <sensor>s) with "
+            + "each action's last time step, for the learner to observe (default: not: no ray cast, no noise drawn).")
+    boolean sensors;
+
     @Option(names = "--random-headings", description = "Draw each robot's start heading from the episode's seed "
             + "(default: the file's headings).")
     boolean randomHeadings;
@@ -123,7 +127,7 @@ public final class LearningHostMain implements Callable<Integer> {
         InetAddress loopback = InetAddress.getLoopbackAddress();
         MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
-                randomHeadings, areaCell.metres(), shares, metric));
+                randomHeadings, areaCell.metres(), shares, metric, sensors));
                 ServerSocket server = new ServerSocket()) {
             server.bind(new InetSocketAddress(loopback, port), 1);
             WatchedWorld watch = viewerPort >= 0 || web.port() >= 0 ? new WatchedWorld(batch) : null;
@@ -271,17 +275,18 @@ public final class LearningHostMain implements Callable<Integer> {
                 return env.file() + ": robot " + r.name() + ": type " + r.type() + " is not a known model";
             }
         }
-        int sonars = spec.robots().stream().mapToInt(r -> robosim.devices.RobotTypes.properties(r.type()).sonars().size()).max().orElse(0);
-        for (WorldSpec.RobotSpec r : spec.robots()) {
+        int sonars = spec.robots().stream().mapToInt(r -> robosim.devices.RobotTypes.properties(r.type()).sonars()
+                .size()).max().orElse(0);
+        for (WorldSpec.RobotSpec r : sensors ? spec.robots() : List.<WorldSpec.RobotSpec>of()) {
             for (String name : r.sensorNames()) {
-                if (List.of("sonar", "contact", "pose", "messages").contains(name)) {
+                if (BatchLink.OBSERVED.contains(name)) {
                     return env.file() + ": robot " + r.name() + ": a sensor named " + name + " would hide the "
                             + "observation of that name: name it otherwise (<sensor name=\"...\">)";
                 }
             }
         }
         long bytes = BatchLink.replyBytes(worlds, spec.robots().size(), sonars, messageSize,
-                new SensorColumns(spec).width());
+                new SensorColumns(spec, sensors).width());
         if (bytes > LinkFrames.MAX_BYTES) {
             return worlds + " worlds of " + spec.robots().size() + " robots make a step's reply of " + bytes
                     + " bytes, over the link's " + LinkFrames.MAX_BYTES + ": fewer worlds (or a smaller message)";

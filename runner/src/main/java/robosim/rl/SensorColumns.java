@@ -13,6 +13,7 @@ import robosim.environment.core.WorldSpec;
  * per sensor name, in the order the world first names them, each as wide as the most values a robot's sensor of that
  * name gives; a robot without one, or with fewer values, has zeros there. Each robot's sensors are configured as the
  * world's core configures them, so their {@link SensorValues} (count, range, unit) are the observation spaces' boxes.
+ * A batch that does not read its robots' sensors has none (no column).
  */
 final class SensorColumns {
     /** One robot's sensor: its name, where its block starts, and its values' shape. */
@@ -23,18 +24,19 @@ final class SensorColumns {
     private final List<List<Column>> byRobot = new ArrayList<>();
     private final int width;
 
-    SensorColumns(WorldSpec spec) {
+    /** The columns of {@code spec}'s robots' sensors, or none if the batch does not read them ({@code read} false). */
+    SensorColumns(WorldSpec spec, boolean read) {
         Map<String, Integer> widths = new LinkedHashMap<>();
         List<List<WorldSpec.SensorSpec>> specs = new ArrayList<>();
         List<List<SensorValues>> values = new ArrayList<>();
         for (WorldSpec.RobotSpec r : spec.robots()) {
             List<SensorValues> each = new ArrayList<>();
-            for (WorldSpec.SensorSpec s : r.sensors()) {
+            for (WorldSpec.SensorSpec s : read ? r.sensors() : List.<WorldSpec.SensorSpec>of()) {
                 SensorValues v = Sensors.create(s.type(), s.attributes()).values();
                 each.add(v);
                 widths.merge(s.name(), v.count(), Math::max);
             }
-            specs.add(r.sensors());
+            specs.add(read ? r.sensors() : List.of());
             values.add(each);
         }
         int at = 0;
