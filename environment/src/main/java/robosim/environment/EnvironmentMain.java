@@ -93,6 +93,9 @@ public final class EnvironmentMain implements Callable<Integer> {
             return 2;
         }
         String bad = run.problem(steps);
+        if (bad == null && (robotPort < 0 || robotPort > 65535 || geometryPort < 0 || geometryPort > 65535)) {
+            bad = "--robot-port and --geometry-port must be from 0 to 65535, got " + robotPort + " and " + geometryPort;
+        }
         if (bad == null && geometryTimeoutMs < 0) {
             bad = "--geometry-timeout-ms must be >= 0, got " + geometryTimeoutMs;
         }

@@ -43,7 +43,7 @@ public final class HardwareSimulator {
     private String endReason = "";
     private volatile ControlFailure controlFailure;
 
-    /** @param type its type, or null: any type, the one the environment file gives it (ArRobot or Scout) */
+    /** @param type its type, or null: any type, the one the environment file gives it (a registered type) */
     public HardwareSimulator(String name, RobotType type) {
         this.name = name;
         this.type = type;

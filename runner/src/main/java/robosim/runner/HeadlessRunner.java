@@ -28,6 +28,7 @@ import robosim.environment.run.Transport;
 import robosim.environment.server.WebPortOption;
 import robosim.hardware.ConnectionOption;
 import robosim.hardware.ExchangeOption;
+import robosim.protocol.CommandLines;
 import robosim.protocol.ResetOption;
 import robosim.protocol.SimulationKeys;
 
@@ -354,9 +355,13 @@ public final class HeadlessRunner implements Callable<Integer> {
      */
     private EnvironmentServer.Plan planInThisJvm(WorldSpec spec, boolean startPaused) throws IOException {
         java.net.InetAddress loopback = java.net.InetAddress.getLoopbackAddress();
+        SimulationKeys keys = SimulationKeys.fromEnvironment();
+        if (web.problem(keys) != null) {
+            throw new IllegalArgumentException(web.problem(keys));
+        }
         Settings settings = run.applyTo(Settings.builder(), steps)
                 .ports(loopback, Integer.parseInt(port(0)), Integer.parseInt(port(1)), Integer.parseInt(port(2)))
-                .keys(SimulationKeys.fromEnvironment()).resetEvery(reset.messages())
+                .keys(keys).resetEvery(reset.messages())
                 .robotsInThisJvm(EnvironmentServer.robotsInThisJvm(env.file(), spec)).build();
         return new EnvironmentServer.Plan(env.file(), spec, settings, 0, web.port(),
                 EnvironmentDirectories.of(env.file()), false, startPaused, true);
@@ -414,12 +419,8 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     /** headless.sh's command line for {@code runner}: a bad option is one line. */
     static CommandLine commandLine(HeadlessRunner runner) {
-        CommandLine cl = new CommandLine(runner);
+        CommandLine cl = CommandLines.of("headless", runner);
         cl.setOverwrittenOptionsAllowed(true); // demo.sh's defaults, then the user's: the last one wins
-        cl.setParameterExceptionHandler((ex, a) -> {
-            System.err.println("headless: " + ex.getMessage() + " (see --help)");
-            return 2;
-        });
         return cl;
     }
 }

@@ -4,12 +4,10 @@ import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.MappingIterator;
 import com.fasterxml.jackson.databind.ObjectReader;
 import com.fasterxml.jackson.databind.ObjectWriter;
-import com.fasterxml.jackson.databind.SequenceWriter;
 import com.fasterxml.jackson.dataformat.csv.CsvGenerator;
 import com.fasterxml.jackson.dataformat.csv.CsvMapper;
 import com.fasterxml.jackson.dataformat.csv.CsvParser;
 import java.io.IOException;
-import java.io.Writer;
 import java.util.ArrayList;
 import java.util.List;
 
@@ -36,11 +34,6 @@ public final class Csv {
         } catch (JsonProcessingException e) {
             throw new IllegalStateException("a list of texts is always a CSV line", e);
         }
-    }
-
-    /** Writes rows, one a call, to {@code out}; closing it flushes them and closes {@code out}. */
-    public static SequenceWriter writer(Writer out) throws IOException {
-        return ROW.writeValues(out);
     }
 
     /** Every row of {@code text} (the header too, if it has one); an IOException when it is not CSV (a quote left open). */

@@ -68,7 +68,8 @@ public final class ReplayMain implements Callable<Integer> {
         try {
             bindAddress = server.bind();
             keys = SimulationKeys.fromEnvironment();
-            String bad = server.problem(keys, bindAddress);
+            String bad = server.handshakeTimeoutMs() < 1 ? "--handshake-timeout-ms must be >= 1 (a viewer's hello "
+                    + "has a deadline), got " + server.handshakeTimeoutMs() : server.problem(keys, bindAddress);
             if (bad != null) {
                 System.err.println("replay: " + bad);
                 return 2;

@@ -97,13 +97,11 @@ public final class ServerOptions {
      * or without a handshake deadline.
      */
     public String problem(SimulationKeys keys, InetAddress address) {
-        for (int p : new int[] {viewerPort, controlPort}) {
-            if (p < -1 || p > 65535) {
-                return "ports must be from 0 to 65535 (-1: none), got " + p;
-            }
-        }
-        if (viewerPort < 0) {
+        if (viewerPort < 0 || viewerPort > 65535) {
             return "--viewer-port must be from 0 to 65535, got " + viewerPort;
+        }
+        if (controlPort < -1 || controlPort > 65535) {
+            return "--control-port must be from 0 to 65535 (-1: none), got " + controlPort;
         }
         if (maxConnections < 1) {
             return "--max-connections must be >= 1, got " + maxConnections;

@@ -9,8 +9,8 @@ import robosim.protocol.SimulationKeys;
  */
 public final class WebPortOption {
     @Option(names = "--web-port", paramLabel = "PORT", defaultValue = "-1", description = "Serve the browser viewer "
-            + "on this port, on the viewer port's address; with ROBOSIM_KEYS over TLS to browsers holding the key pair "
-            + "(default: none; 0: a free one, said on the listening line).")
+            + "on this port, beside the viewer port (default: none; 0: a free one, said on the listening line); over "
+            + "TLS to browsers holding the key pair where the simulation has ROBOSIM_KEYS.")
     private int port;
 
     /** The port, 0 for a free one, or -1: none. */
@@ -21,7 +21,7 @@ public final class WebPortOption {
     /** What is wrong with it, with {@code keys} (null: none), or null. */
     public String problem(SimulationKeys keys) {
         if (port < -1 || port > 65535) {
-            return "--web-port must be from 0 to 65535, got " + port;
+            return "--web-port must be from 0 to 65535 (-1: none), got " + port;
         }
         if (port >= 0 && keys != null && keys.tls() == null) { // (a browser cannot answer the secret's challenge)
             return "--web-port needs the simulation's key pair when there is a shared secret: set ROBOSIM_KEYS to a "

@@ -83,7 +83,8 @@ public final class LinkFrames {
         return frame;
     }
 
-    private static String oneLine(String s) {
+    /** A reason as a link says it: on one line, made safe for a log line, at most 1000 characters. */
+    public static String oneLine(String s) {
         return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), 1000);
     }
 

@@ -33,9 +33,7 @@ public final class LinkHello {
     /** The most fields a hello may have. */
     static final int MAX_FIELDS = 16;
     /** The longest text a hello's key or field may have, characters. */
-    static final int MAX_TEXT = 256;
-    /** The longest reason in a refusal, characters. */
-    private static final int MAX_REASON = 1000;
+    static final int MAX_TEXT = 1000;
 
     /**
      * What a link expects of its hello: its {@code name} (the hello's {@code link}), what it is called in a refusal
@@ -106,7 +104,7 @@ public final class LinkHello {
                 throw hello.refuse(e.getMessage());
             }
         } catch (MessagePackException e) {
-            throw hello.refuse("a hello that is not MessagePack: " + oneLine(e.getMessage()));
+            throw hello.refuse("a hello that is not MessagePack: " + LinkFrames.oneLine(e.getMessage()));
         }
         String name = hello.text("link");
         if (!link.name().equals(name)) {
@@ -136,7 +134,7 @@ public final class LinkHello {
 
     /** Answers {@code {"error": why}} (best effort) and makes the refusal. */
     public HelloRefused refuse(String why) {
-        String reason = oneLine(why);
+        String reason = LinkFrames.oneLine(why);
         try {
             MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
             p.packMapHeader(1).packString("error").packString(reason);
@@ -165,9 +163,6 @@ public final class LinkHello {
         return u.unpackLong();
     }
 
-    private static String oneLine(String s) {
-        return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), MAX_REASON);
-    }
 
     /** A hello refused, or none come: nothing was served (a hello that came was answered why). */
     public static final class HelloRefused extends ProtocolException {

@@ -47,8 +47,6 @@ public final class RobotLink {
     private static final int MAX_NAME = 256;
     /** The longest text argument, characters: a message's text (at most the wire's string, in bytes) fits. */
     private static final int MAX_TEXT = Limits.MAX_UTF_BYTES;
-    /** The longest reason in an error reply, characters. */
-    private static final int MAX_REASON = 1000;
 
     private final Socket socket;
     private final Robot robot;
@@ -203,10 +201,10 @@ public final class RobotLink {
                     throw badCall(call + ": a call's frame holds more than its array");
                 }
             } catch (MessagePackException e) {
-                throw badCall("a call that is not MessagePack: " + oneLine(e.getMessage()));
+                throw badCall("a call that is not MessagePack: " + LinkFrames.oneLine(e.getMessage()));
             } catch (IllegalArgumentException e) {
                 reply.clear();
-                reply.packArrayHeader(3).packString("error").packString("value").packString(oneLine(e.getMessage()));
+                reply.packArrayHeader(3).packString("error").packString("value").packString(LinkFrames.oneLine(e.getMessage()));
             } catch (InterruptedException e) {
                 // (the simulation's end interrupts this thread: cleared, so the reply is written on a socket that an
                 // interrupt would close, then the end goes on)
@@ -323,9 +321,6 @@ public final class RobotLink {
         }
     }
 
-    private static String oneLine(String s) {
-        return s == null ? "" : Printable.of(s.replaceAll("\\s+", " "), MAX_REASON);
-    }
 
     /** What a robot's message is on the link: {@code [from, text]}, or nil. */
     static void message(MessageBufferPacker p, Message m) throws IOException {
