@@ -61,7 +61,7 @@ public final class EnvironmentServer {
     public static InMemoryLink.Starter robotsInThisJvm(Path file, WorldSpec world) {
         if (System.getProperty(VirtualThreads.PARALLELISM) == null) {
             // every robot's control code and the loop on one carrier: a step passes between them without a wake of
-            // the operating system's (the loop's thread: net.LoopThread); read once, as the first virtual thread
+            // the operating system's (the loop's thread: run.LoopThread); read once, as the first virtual thread
             // starts, so a JVM that has run virtual threads already keeps what it has
             System.setProperty(VirtualThreads.PARALLELISM, "1");
         }

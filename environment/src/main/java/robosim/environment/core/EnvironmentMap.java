@@ -147,12 +147,12 @@ public final class EnvironmentMap {
         held = List.copyOf(now);
     }
 
-    /** True once robot {@code robot} has left. */
     /** Robots that have left the world. */
     public int departedCount() {
         return departed.size();
     }
 
+    /** True once robot {@code robot} has left. */
     public boolean isGone(int robot) {
         return gone != null && gone[robot];
     }

@@ -20,7 +20,7 @@ import robosim.protocol.SimulationEnd;
 
 /**
  * Serves the Geometry process on its own thread, {@code geometry-worker}, which owns that connection:
- * after the handshake it does what the {@link GeometryLink} asks, one task at a time - send the world,
+ * after the handshake it does what the {@code GeometryLink} asks, one task at a time - send the world,
  * do a step's round trip (write the request, read the answer) and hand the answer to the loop, send
  * the end - and while idle looks a few times a second whether its process has closed the connection
  * (then it is lost at once, and a new Geometry process may attach). The simulation loop never touches this socket, so a Geometry process that hangs holds up

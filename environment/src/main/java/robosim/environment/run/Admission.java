@@ -24,7 +24,7 @@ import robosim.protocol.RobotWelcome;
  * once it is in is the {@link Roster}'s. Hellos that come while a step is resolved wait for its end: robots come
  * and go between steps only.
  */
-public final class Admission {
+final class Admission {
     private static final Logger LOG = LoggerFactory.getLogger(Admission.class);
 
     /** Robots one run lets join, at most (each join grows the world and sends Geometry the world). */

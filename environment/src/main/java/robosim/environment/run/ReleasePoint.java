@@ -12,7 +12,7 @@ import robosim.protocol.RunState;
  * viewer that is a whole backlog behind. Viewers are told when a hold by pause begins and ends; nothing
  * here waits - the loop asks again after its next event or deadline. Loop thread only.
  */
-public final class ReleasePoint {
+final class ReleasePoint {
     private static final Logger LOG = LoggerFactory.getLogger(ReleasePoint.class);
 
     private final RunControl control;

@@ -24,7 +24,7 @@ import robosim.protocol.StepRequest;
  * cost nothing per event. Robots come and go between steps only: one lost while a step is resolved or released
  * goes at that step's end ({@link #stepReleased}). Loop thread only.
  */
-public final class Roster {
+final class Roster {
     private static final Logger LOG = LoggerFactory.getLogger(Roster.class);
 
     /**

@@ -10,7 +10,7 @@ import java.util.concurrent.CompletableFuture;
  * ({@code --speed}: simulated time at most that many times real time, counted afresh after every hold,
  * so a pause is never caught up in a rush). Loop thread only; the callers wait on futures.
  */
-public final class RunControl {
+final class RunControl {
     private record StepWaiter(long target, CompletableFuture<Long> done) {
     }
 

@@ -10,7 +10,7 @@ import java.util.List;
  * hello, every robot's state and who has left. Nothing sets a flag to say something changed: what is published
  * is derived from what the parts hold. What it publishes is a {@link PublishedRun}, read by any thread.
  */
-public final class StatusBoard {
+final class StatusBoard {
     private final PublishedRun published;
     private final Progress progress;
     private final RunControl control;
