@@ -39,23 +39,32 @@ public final class Sensors {
     /**
      * The registered sensor a reading named {@code reading} of {@code values} values is most likely of, for whoever
      * sees readings without the file (a viewer, a recording): the one of that name (a file's sensor named after its
-     * type, as by default), else the one whose name the reading's holds (case aside; {@code front-laser}), the
-     * longest such name first, one that shows sides only with as many values as it has sides; null for none.
+     * type, as by default), else the one named by a word of the reading's name, words being parted by anything but a
+     * letter, case aside ({@code front-laser}, {@code Rear_Bump}; not {@code heatmap}, nor a class name such as
+     * {@code com.example.HeatCamera}); null for none, for two kinds named ({@code sonar_laser}), or where the values
+     * do not fit the kind (one that shows sides has as many values as it has sides).
      */
     public static SensorInfo kindOf(String reading, int values) {
         SensorInfo exact = info(reading);
         if (exact != null) {
-            return exact;
+            return fits(exact, values) ? exact : null;
         }
-        String lower = reading.toLowerCase(java.util.Locale.ROOT);
-        SensorInfo best = null;
-        for (SensorInfo s : REGISTERED) {
-            boolean fits = s.display() != SensorInfo.Display.SIDES || values == SensorInfo.Display.SIDES_NAMED.size();
-            if (fits && lower.contains(s.name()) && (best == null || s.name().length() > best.name().length())) {
-                best = s;
+        SensorInfo found = null;
+        for (String word : reading.split("[^\\p{L}]+")) {
+            for (SensorInfo s : REGISTERED) {
+                if (s.name().equalsIgnoreCase(word) && s != found) {
+                    if (found != null) {
+                        return null;
+                    }
+                    found = s;
+                }
             }
         }
-        return best;
+        return found != null && fits(found, values) ? found : null;
+    }
+
+    private static boolean fits(SensorInfo kind, int values) {
+        return kind.display() != SensorInfo.Display.SIDES || values == SensorInfo.Display.SIDES_NAMED.size();
     }
 
     /**
@@ -71,7 +80,7 @@ public final class Sensors {
     /** The fewest values of a reading of an unknown sensor that a viewer draws as ranges. */
     public static final int RANGES_FROM = 9;
 
-    /** The names of the sensors a file's {@code <sensor type="...">} may name (those the Environment computes), as a list. */
+    /** The names of the sensors a file's {@code <sensor type="...">} may name (those the Environment computes). */
     public static String fileNames() {
         return String.join(", ", REGISTERED.stream().filter(s -> !s.geometry()).map(SensorInfo::name).toList());
     }
@@ -88,8 +97,8 @@ public final class Sensors {
             sensor = ofClass(type);
         }
         if (sensor.info().geometry()) {
-            throw new IllegalArgumentException("type \"" + type + "\" is computed by the Geometry process and comes with "
-                    + "the robot's type, not a <sensor>");
+            throw new IllegalArgumentException("type \"" + type + "\" is computed by the Geometry process and comes "
+                    + "with the robot's type, not a <sensor>");
         }
         Attributes a = new Attributes(attributes);
         sensor.configure(a);

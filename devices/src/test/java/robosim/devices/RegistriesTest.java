@@ -94,6 +94,11 @@ class RegistriesTest {
         assertEquals("laser", Sensors.kindOf("front-laser", 90).name(), "a name that holds a sensor's");
         assertEquals(SensorInfo.Display.SIDES, Sensors.display("Rear_Bump", 4));
         assertNull(Sensors.kindOf("rear_bump", 3), "sides only with as many values as there are sides");
+        assertNull(Sensors.kindOf("bump", 1), "nor by its exact name (a heat sensor named bump)");
+        assertNull(Sensors.kindOf("heatmap", 100), "a word, not a part of one");
+        assertNull(Sensors.kindOf("com.example.HeatCamera", 1), "a class name's words are not parted by case");
+        assertNull(Sensors.kindOf("sonar_laser", 181), "two kinds named: neither");
+        assertEquals(SensorInfo.Display.RANGES, Sensors.display("heatmap", 100), "an unknown one's many values");
         assertEquals(SensorInfo.Display.RANGES, Sensors.display("gas", Sensors.RANGES_FROM), "one's own, many values");
         assertEquals(SensorInfo.Display.VALUES, Sensors.display("gas", 2));
     }
