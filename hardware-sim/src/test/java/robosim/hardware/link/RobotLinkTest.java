@@ -191,6 +191,19 @@ class RobotLinkTest {
             p.packMapHeader(2).packString("link").packString(RobotLink.NAME).packString("robot").packString("r1");
             assertEquals("a hello without its version (this simulator speaks 1)", error(link.exchange(p.toByteArray())));
         }
+        try (Served link = Served.of(new KnownRobot())) {
+            assertEquals("robot is longer than " + LinkHello.MAX_TEXT + " characters",
+                    error(link.exchange(hello(RobotLink.NAME, 1, "r".repeat(LinkHello.MAX_TEXT + 1)))));
+        }
+        try (Served link = Served.of(new KnownRobot())) {
+            MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+            p.packMapHeader(LinkHello.MAX_FIELDS + 1);
+            for (int f = 0; f <= LinkHello.MAX_FIELDS; f++) {
+                p.packString("f" + f).packInt(f);
+            }
+            assertTrue(error(link.exchange(p.toByteArray())).startsWith("a hello of " + (LinkHello.MAX_FIELDS + 1)
+                    + " fields"));
+        }
     }
 
     @Test
