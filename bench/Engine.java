@@ -35,7 +35,7 @@ public class Engine {
         for (WorldSpec.RobotSpec r : spec.robots()) {
             properties.add(robosim.devices.RobotTypes.properties(r.type()));
         }
-        SimulationCore core = new SimulationCore(spec, properties);
+        SimulationCore core = new SimulationCore(spec, properties); // (no metrics: as a run without liveMetrics)
         InProcessGeometry geometry = new InProcessGeometry(core.map().geometryWorld());
         Wanderer[] robots = new Wanderer[n];
         for (int i = 0; i < n; i++) {
@@ -48,7 +48,6 @@ public class Engine {
                 requests[i] = robots[i].request(k);
             }
             core.step(k, requests, geometry);
-            core.tally();
             for (int i = 0; i < n; i++) {
                 robots[i].respond(core.response(i));
             }

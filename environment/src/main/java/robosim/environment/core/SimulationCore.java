@@ -192,7 +192,8 @@ public final class SimulationCore {
     }
 
     /**
-     * The rest of the step whose Geometry request was answered later: apply, tag, sense, respond, tally.
+     * The rest of the step whose Geometry request was answered later: apply, tag, sense, respond (the tally is the
+     * caller's, once the responses have gone out: {@link #tally}).
      *
      * @throws ProtocolException if {@code g} is not a valid answer to the step's Geometry request
      */
@@ -343,8 +344,9 @@ public final class SimulationCore {
 
     /**
      * Tally, for a stepper that releases the responses itself (the Environment's {@code Run}): the metrics count the
-     * last step as it went out, to the robots {@code released} says took part in it (a robot that left during the
-     * step, its response withheld, did not), their responses as they went out.
+     * last step as it went out, to the robots {@code released} says took part in it, their responses as they went out
+     * (a robot that left during the step took part, its move and its contact count, but a response withheld from it
+     * delivered nothing: {@link #withhold}).
      */
     public void tally(java.util.function.IntPredicate released) {
         if (tally != null) {

@@ -12,9 +12,12 @@ import java.util.ServiceLoader;
  * link's metrics array and {@code describe.sh metrics}. Any thread.
  */
 public final class Metrics {
-    /** Each built-in metric's provider (a new instance a call), in column order. */
-    private static final List<ServiceLoader.Provider<StepMetric>> PROVIDERS = load();
-    private static final List<MetricInfo> BUILT_IN = PROVIDERS.stream().map(p -> p.get().info()).toList();
+    /** Each built-in metric's provider (a new instance a call) and what it is, in column order. */
+    private static final List<Registered> REGISTERED = load();
+    private static final List<MetricInfo> BUILT_IN = REGISTERED.stream().map(Registered::info).toList();
+
+    private record Registered(ServiceLoader.Provider<StepMetric> provider, MetricInfo info) {
+    }
 
     private Metrics() {
     }
@@ -41,19 +44,22 @@ public final class Metrics {
 
     /** A new instance of every built-in metric, in column order: a run's tally. */
     public static List<StepMetric> fresh() {
-        return PROVIDERS.stream().map(ServiceLoader.Provider::get).toList();
+        return REGISTERED.stream().map(r -> r.provider().get()).toList();
     }
 
-    private static List<ServiceLoader.Provider<StepMetric>> load() {
-        List<ServiceLoader.Provider<StepMetric>> all = new ArrayList<>(ServiceLoader.load(StepMetric.class,
-                Metrics.class.getClassLoader()).stream().toList());
-        all.sort(Comparator.comparingInt((ServiceLoader.Provider<StepMetric> p) -> p.get().info().column())
-                .thenComparing(p -> p.get().info().name()));
+    private static List<Registered> load() {
+        List<Registered> all = new ArrayList<>();
+        for (ServiceLoader.Provider<StepMetric> p : ServiceLoader.load(StepMetric.class, Metrics.class.getClassLoader())
+                .stream().toList()) {
+            all.add(new Registered(p, p.get().info()));
+        }
+        all.sort(Comparator.comparingInt((Registered r) -> r.info().column()).thenComparing(r -> r.info().name()));
         for (int i = 1; i < all.size(); i++) {
-            String name = all.get(i).get().info().name();
-            if (name.equals(all.get(i - 1).get().info().name())) {
+            String name = all.get(i).info().name();
+            if (name.equals(all.get(i - 1).info().name())) {
                 throw new IllegalStateException("two built-in metrics are named " + name + ": "
-                        + all.get(i - 1).type().getName() + " and " + all.get(i).type().getName());
+                        + all.get(i - 1).provider().type().getName() + " and "
+                        + all.get(i).provider().type().getName());
             }
         }
         return List.copyOf(all);

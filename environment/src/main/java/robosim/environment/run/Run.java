@@ -332,7 +332,7 @@ public final class Run {
                 roster.drop(s, "could not send its response: " + e.getMessage());
             }
         }
-        core.tally(releasedStep::tookPart); // (as it went out: a robot that left during the step is not counted)
+        core.tally(releasedStep::tookPart); // (as it went out: to one that left during the step, nothing delivered)
         long out = clock.getAsLong();
         world = world.next(step, core);
         published.released(world, out);

@@ -7,7 +7,7 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
-/** Test fixture: a {@link SimulationCore} whose steps are resolved by the geometry library in-process. */
+/** Test fixture: a {@link SimulationCore} (no metrics) whose steps are resolved by the geometry library in-process. */
 public final class InProcessSteps {
     private final SimulationCore core;
     private final InProcessGeometry geometry;
@@ -24,7 +24,6 @@ public final class InProcessSteps {
     /** Step k, resolved in-process. */
     public void step(long k, StepRequest[] requests) throws ProtocolException {
         core.step(k, requests, geometry);
-        core.tally();
     }
 
     public StepResponse response(int robot) {

@@ -53,7 +53,7 @@ class SimulationCoreTest {
         core.step(0, new StepRequest[] {req(0, 0, 0), req(0, 0, 0, new CommEvent("", "a", "to a")), req(0, 0, 0)},
                 geometry);
         core.withhold(0); // (a left during the step: its message goes back to its inbox)
-        core.tally(robot -> robot != 0);
+        core.tally(robot -> true); // (as the Run's: a robot leaving at the step's end took part in it)
         int delivered = robosim.environment.metrics.Metrics.names().indexOf("messages_delivered");
         assertEquals(0, core.metrics().value(delivered), "nothing went out to a");
         core.step(1, new StepRequest[] {req(1, 0, 0), req(1, 0, 0), req(1, 0, 0)}, geometry);
