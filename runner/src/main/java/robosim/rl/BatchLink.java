@@ -40,7 +40,7 @@ import robosim.protocol.SonarSpec;
  * </ul>
  * BATCH is a map of binaries, each a little-endian array (shapes in the welcome): {@code steps} (int64), {@code sonar},
  * {@code pose} (float32), {@code contact} (uint8), {@code metrics} (float64), {@code messages} (float32, when
- * messages have numbers). A request that is not one, or actions not finite or not of the batch's size, is answered
+ * messages have numbers), {@code readings} (float32, with {@code --sensors}, when the robots have sensors). A request that is not one, or actions not finite or not of the batch's size, is answered
  * {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}) and the link goes on; velocities beyond a
  * robot's limits are held to them. A world that cannot go on (an internal failure) is answered
  * {@code ["error", "failed", WHY]} and the link ends.

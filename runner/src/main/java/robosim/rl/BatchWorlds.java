@@ -59,6 +59,12 @@ public final class BatchWorlds implements AutoCloseable {
      */
     public record Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
             MetricChoice episodeMetric, boolean sensors) {
+        public Settings {
+            if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
+                throw new IllegalArgumentException("the area cell must be a side > 0 m, got " + areaCellM);
+            }
+        }
+
         /** Without the robots' sensors. */
         public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
                 MetricChoice episodeMetric) {

@@ -166,6 +166,31 @@ class BatchWorldsTest {
         }
     }
 
+    @Test
+    void withSensorsEachRobotsReadingsLieInTheirSensorsColumns() throws Exception {
+        WorldSpec spec = new EnvironmentLoader().load(Path.of("src/test/resources/sensors.xml"));
+        try (BatchWorlds without = new BatchWorlds(spec, 1, new BatchWorlds.Settings(1, 0, false, 0.5, 1))) {
+            assertEquals(0, without.sensorColumns().width(), "none unless asked");
+        }
+        try (BatchWorlds b = new BatchWorlds(spec, 2, new BatchWorlds.Settings(1, 0, false, 0.5, 1, null, true))) {
+            SensorColumns columns = b.sensorColumns();
+            assertEquals(java.util.List.of("laser", "bump", "heat"), columns.names(0));
+            assertEquals(java.util.List.of(0, 181, 185), columns.of(0).stream().map(SensorColumns.Column::offset)
+                    .toList(), "181 laser beams, 4 bump sides, 1 heat value");
+            assertEquals(186, columns.width());
+            b.step(new float[2 * 2], new boolean[2], new long[2]);
+            for (int w = 0; w < 2; w++) {
+                int row = w * 186 * 4;
+                assertEquals(3000f, (float) FLOAT.get(b.readings(), row + 90 * 4), "the laser's middle beam: the wall");
+                for (int side = 0; side < 4; side++) {
+                    assertEquals(0f, (float) FLOAT.get(b.readings(), row + (181 + side) * 4), "touching nothing");
+                }
+                // the stove 0.5 m behind: 8 / (1 + 0.5^2)
+                assertEquals(6.4f, (float) FLOAT.get(b.readings(), row + 185 * 4), 1e-5f, "the heat");
+            }
+        }
+    }
+
     /** World {@code w}'s value of built-in metric {@code name}, where the registry's column order puts it. */
     private static double metric(BatchWorlds b, int w, String name) {
         int at = (w * BatchWorlds.METRICS.size() + BatchWorlds.METRICS.indexOf(name)) * 8;

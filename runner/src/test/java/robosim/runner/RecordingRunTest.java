@@ -72,7 +72,8 @@ class RecordingRunTest {
         java.util.concurrent.atomic.AtomicBoolean removed = new java.util.concurrent.atomic.AtomicBoolean();
         InJvmSimulation sim = new InJvmSimulation(InJvmSimulation.env("wander.xml"))
                 .settings(s -> s.record(file).liveMetrics(true)).sideline((e, ports) -> env.complete(e))
-                .onUpdate((u, port) -> { // (w1 is removed while the others broadcast to it: mid-run, mid-step)
+                .onUpdate((u, port) -> { // (w1 removed mid-run, while the others broadcast to it; live and
+                    // recorded agree at whatever moment of a step the loop takes the removal)
                     if (u.step() >= 30 && !removed.getAndSet(true)) {
                         try {
                             assertNull(env.get().roster().remove("w1"));
