@@ -17,11 +17,12 @@ MESSAGE_BOUND = 1.0
 @dataclass(frozen=True)
 class Layout:
     """Which parts an observation has (``sonar`` and ``contact`` always; ``pose`` and ``messages`` if asked; with
-    ``sensors=True``, one part per sensor of the robots' environment file, by its name), and each agent's spaces: its sonars (mm, 0 to its
-    farthest range), contact (0 or 1), pose (x, y mm within the arena, heading 0 to 360 degrees), the last message
-    heard from each robot (zeros if none), each of its sensors (a box of its count of values within its range, as the
-    sensor's description in RoboSim's registry says: ``scripts/describe.sh SENSOR``); its action: linear velocity
-    (mm/s) and rotational velocity (deg/s) within its type's limits, then its message's numbers (-1 to 1)."""
+    ``sensors=True``, one part per sensor of the robots' environment file, by its name), and each agent's spaces:
+    its sonars (mm, 0 to its farthest range), contact (0 or 1), pose (x, y mm within the arena, heading 0 to 360
+    degrees), the last message heard from each robot (zeros if none), each of its sensors (a box of its count of
+    values within its range, as the sensor's description in RoboSim's registry says: ``scripts/describe.sh
+    SENSOR``); its action: linear velocity (mm/s) and rotational velocity (deg/s) within its type's limits, then its
+    message's numbers (-1 to 1)."""
 
     welcome: Welcome
     pose: bool
