@@ -65,8 +65,7 @@ public final class GeometryClient {
             if (!(first instanceof GeometryWorld world)) {
                 throw new ProtocolException("expected a GeometryWorld, got a " + first.getClass().getSimpleName());
             }
-            GeometryEngine engine = new GeometryEngine(new StaticWorld(world.arena(), world.obstacles()),
-                    world.robots(), splitSonarFrom);
+            GeometryEngine engine = new GeometryEngine(world, splitSonarFrom);
             GeometryStepResponse response = engine.newResponse();
             LOG.info("world received: {} robots, {} obstacles", engine.robotCount(), world.obstacles().size());
             while (true) {
@@ -80,8 +79,7 @@ public final class GeometryClient {
                     return end.reason();
                 }
                 if (m instanceof GeometryWorld grown) { // robots joined: the world from the next step on
-                    engine = new GeometryEngine(new StaticWorld(grown.arena(), grown.obstacles()), grown.robots(),
-                            splitSonarFrom);
+                    engine = new GeometryEngine(grown, splitSonarFrom);
                     response = engine.newResponse();
                     LOG.info("world received again: {} robots", engine.robotCount());
                     continue;

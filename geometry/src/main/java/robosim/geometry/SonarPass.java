@@ -6,9 +6,9 @@ import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.SonarSpec;
 
 /**
- * Reads sonars in the world as it stands after a step's moves: for each transducer, the nearest wall or
- * robot inside its cone, up to its range. Looks at the walls and robots whose boxes meet the cone's box
- * (the wall index and the {@link RobotGrid}) and tests only those exactly. One per thread: its cone, box,
+ * Reads sonars in the world as it stands after a step's moves: for each transducer, the nearest wall,
+ * robot or object inside its cone, up to its range. Looks at the walls, robots and objects whose boxes meet the
+ * cone's box (the wall index, the {@link RobotGrid}, each object's bounding box) and tests only those exactly. One per thread: its cone, box,
  * visitor and grid walk are its own, and it writes only the ranges of the robots it is given, so two
  * passes over halves of the robots give the ranges one pass would, bit for bit.
  */
@@ -21,6 +21,7 @@ final class SonarPass {
     private final double[] heading;
     private final double[] radius;
     private final SonarSpec[][] sonars;
+    private final ObjectLayer things;
     /** Each sonar's cone vectors in its robot's frame, worked out once ({@link Cone#beam}). */
     private final double[][][] beams;
     private final Envelope area = new Envelope();
@@ -28,7 +29,8 @@ final class SonarPass {
     private final Nearest nearest = new Nearest();
 
     SonarPass(StaticWorld world, RobotGrid grid, double[] x, double[] y, double[] heading, double[] radius,
-            SonarSpec[][] sonars) {
+            SonarSpec[][] sonars, ObjectLayer things) {
+        this.things = things;
         this.world = world;
         this.grid = grid;
         this.cells = grid.new Cursor();
@@ -77,6 +79,11 @@ final class SonarPass {
                 if (j != i && !outside(area, x[j], y[j], radius[j])) {
                     v.best = Math.min(v.best, cone.toDisc(x[j], y[j], radius[j]));
                 }
+            }
+        }
+        for (int o = 0; o < things.count(); o++) {
+            if (!things.outside(o, area)) {
+                v.best = Math.min(v.best, things.cone(cone, o));
             }
         }
         return v.best;

@@ -36,10 +36,19 @@ final class Sweep {
 
     /** As {@link #toCircle}, for the capsule of radius {@code r} around segment AB. */
     static double toCapsule(double px, double py, double ux, double uy, double r, Segment s) {
-        double ex = s.bx - s.ax;
-        double ey = s.by - s.ay;
+        return toCapsule(px, py, ux, uy, r, s.ax, s.ay, s.bx, s.by);
+    }
+
+    /**
+     * As {@link #toCircle}, for the capsule of radius {@code r} around segment (ax, ay)-(bx, by); with {@code r} 0,
+     * the distance a point travels before it meets the segment (a corner of a moving box, a wall's end).
+     */
+    static double toCapsule(double px, double py, double ux, double uy, double r, double ax, double ay, double bx,
+            double by) {
+        double ex = bx - ax;
+        double ey = by - ay;
         double len = Math.sqrt(ex * ex + ey * ey);
-        double best = Math.min(toCircle(px, py, ux, uy, r, s.ax, s.ay), toCircle(px, py, ux, uy, r, s.bx, s.by));
+        double best = Math.min(toCircle(px, py, ux, uy, r, ax, ay), toCircle(px, py, ux, uy, r, bx, by));
         if (len == 0) {
             return best;
         }
@@ -47,14 +56,14 @@ final class Sweep {
         ey /= len;
         double nx = -ey;
         double ny = ex;
-        double s0 = (px - s.ax) * nx + (py - s.ay) * ny;
+        double s0 = (px - ax) * nx + (py - ay) * ny;
         double sv = ux * nx + uy * ny;
         if (s0 * sv >= 0) {
             return best;
         }
         double side = Math.abs(s0);
         double t = side <= r ? 0 : (side - r) / Math.abs(sv);
-        double along = (px + t * ux - s.ax) * ex + (py + t * uy - s.ay) * ey;
+        double along = (px + t * ux - ax) * ex + (py + t * uy - ay) * ey;
         if (along >= 0 && along <= len) {
             best = Math.min(best, t);
         }

@@ -4,24 +4,34 @@ import org.locationtech.jts.geom.Envelope;
 import org.locationtech.jts.index.ItemVisitor;
 
 /**
- * Questions sensors ask about the world as it stands (static walls plus robot discs at given poses,
- * mm): the first thing a ray hits (laser), whether a straight line is clear of obstacles (heat),
- * and which directions a robot is touching something in (bump). Reuses scratch state: one thread
+ * Questions sensors ask about the world as it stands (static walls, the objects at their poses, robot discs at given
+ * poses, mm): the first thing a ray hits (laser), whether a straight line is clear of obstacles (heat), whether a line
+ * of sight between two heights is clear of everything taller than it where it passes (light, camera,
+ * range-and-bearing), and which directions a robot is touching something in (bump). Reuses scratch state: one thread
  * at a time.
  */
 public final class WorldQueries {
     private final StaticWorld world;
+    private final ObjectLayer things;
     private final Envelope area = new Envelope();
     private final RayVisitor rayVisitor = new RayVisitor();
     private final SightVisitor sightVisitor = new SightVisitor();
     private final TouchVisitor touchVisitor = new TouchVisitor();
+    private final double[] scratch = new double[2];
 
+    /** A world without objects. */
     public WorldQueries(StaticWorld world) {
+        this(world, new ObjectLayer(java.util.List.of()));
+    }
+
+    /** {@code things}: the world's objects, kept where they stand by the caller ({@link ObjectLayer#place}). */
+    public WorldQueries(StaticWorld world, ObjectLayer things) {
         this.world = world;
+        this.things = things;
     }
 
     /**
-     * Distance from (ox, oy) along {@code angleDeg} to the first wall or robot disc, capped at
+     * Distance from (ox, oy) along {@code angleDeg} to the first wall, object or robot disc, capped at
      * {@code maxMm}; robot {@code exclude} (the one asking) is ignored.
      */
     public double ray(double ox, double oy, double angleDeg, double maxMm, double[] x, double[] y, double[] r,
@@ -43,7 +53,66 @@ public final class WorldQueries {
                 v.best = Math.min(v.best, Sweep.toCircle(ox, oy, ux, uy, r[j], x[j], y[j]));
             }
         }
+        for (int o = 0; o < things.count(); o++) {
+            if (!things.outside(o, area)) {
+                v.best = Math.min(v.best, things.ray(o, ox, oy, ux, uy));
+            }
+        }
         return v.best;
+    }
+
+    /**
+     * True when the straight line from A, {@code az} over the floor, to B, {@code bz} over it, passes nothing as tall
+     * as the line where it passes: obstacles (as tall as any line), objects and robots (each as tall as it is; robots
+     * {@code excludeA} and {@code excludeB}, whose own the ends are, -1 for none, are passed through).
+     *
+     * @param height each robot's height, mm
+     */
+    public boolean sight(double ax, double ay, double az, double bx, double by, double bz, double[] x, double[] y,
+            double[] r, double[] height, int excludeA, int excludeB) {
+        if (!clear(ax, ay, bx, by)) {
+            return false;
+        }
+        area.init(Math.min(ax, bx), Math.max(ax, bx), Math.min(ay, by), Math.max(ay, by));
+        for (int o = 0; o < things.count(); o++) {
+            if (!things.outside(o, area) && things.crossing(o, ax, ay, bx, by, scratch)
+                    && below(az, bz, scratch[0], scratch[1], things.object(o).heightMm())) {
+                return false;
+            }
+        }
+        double dx = bx - ax;
+        double dy = by - ay;
+        double len2 = dx * dx + dy * dy;
+        for (int j = 0; j < x.length; j++) {
+            if (j == excludeA || j == excludeB || len2 == 0) {
+                continue;
+            }
+            double rj = r[j];
+            if (x[j] + rj < area.getMinX() || x[j] - rj > area.getMaxX() || y[j] + rj < area.getMinY()
+                    || y[j] - rj > area.getMaxY()) {
+                continue;
+            }
+            double fx = ax - x[j];
+            double fy = ay - y[j];
+            double b = 2 * (fx * dx + fy * dy);
+            double c = fx * fx + fy * fy - rj * rj;
+            double disc = b * b - 4 * len2 * c;
+            if (disc <= 0) {
+                continue;
+            }
+            double root = Math.sqrt(disc);
+            double t0 = Math.max(0, (-b - root) / (2 * len2));
+            double t1 = Math.min(1, (-b + root) / (2 * len2));
+            if (t0 < t1 && below(az, bz, t0, t1, height[j])) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** True when the line from height az to bz runs lower than {@code top} somewhere between fractions t0 and t1. */
+    private static boolean below(double az, double bz, double t0, double t1, double top) {
+        return Math.min(az + (bz - az) * t0, az + (bz - az) * t1) < top;
     }
 
     /** True when the straight line from A to B crosses no obstacle edge (the arena's edges do not count). */
@@ -69,6 +138,11 @@ public final class WorldQueries {
         for (int j = 0; j < x.length && v.count < out.length; j++) {
             if (j != i && Math.hypot(x[j] - x[i], y[j] - y[i]) <= reach + r[j]) {
                 out[v.count++] = Math.toDegrees(Math.atan2(y[j] - y[i], x[j] - x[i]));
+            }
+        }
+        for (int o = 0; o < things.count() && v.count < out.length; o++) {
+            if (!things.outside(o, area) && things.nearest(o, x[i], y[i], scratch) <= reach) {
+                out[v.count++] = Math.toDegrees(Math.atan2(scratch[1] - y[i], scratch[0] - x[i]));
             }
         }
         return v.count;

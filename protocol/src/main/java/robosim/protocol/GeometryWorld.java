@@ -8,20 +8,28 @@ import java.util.List;
 
 /**
  * Environment -> Geometry, once, in answer to {@link GeometryHello}: the static world (arena and
- * obstacles, mm) and every robot's name and properties, in world order (the order every later
- * per-step batch uses).
+ * obstacles, mm), every robot's name and properties and every object's shape and physics, in world order (the order
+ * every later per-step batch uses).
  */
 public final class GeometryWorld implements java.io.Externalizable {
     private Arena arena;
     private List<ObstacleShape> obstacles = List.of();
     private List<String> robotNames = List.of();
     private List<RobotProperties> robots = List.of();
+    private List<WorldObject> objects = List.of();
 
     public GeometryWorld() {
     }
 
+    /** A world without objects. */
     public GeometryWorld(Arena arena, List<ObstacleShape> obstacles, List<String> robotNames,
             List<RobotProperties> robots) {
+        this(arena, obstacles, robotNames, robots, List.of());
+    }
+
+    /** @param objects the world's objects, in world order (their poses come with each step) */
+    public GeometryWorld(Arena arena, List<ObstacleShape> obstacles, List<String> robotNames,
+            List<RobotProperties> robots, List<WorldObject> objects) {
         if (robotNames.size() != robots.size()) {
             throw new IllegalArgumentException("robot names and properties differ in length: " + robotNames.size()
                     + " vs " + robots.size());
@@ -30,6 +38,12 @@ public final class GeometryWorld implements java.io.Externalizable {
         this.obstacles = List.copyOf(obstacles);
         this.robotNames = List.copyOf(robotNames);
         this.robots = List.copyOf(robots);
+        this.objects = List.copyOf(objects);
+    }
+
+    /** The world's objects, in world order (the order of every step's object poses). */
+    public List<WorldObject> objects() {
+        return objects;
     }
 
     public Arena arena() {
@@ -57,6 +71,7 @@ public final class GeometryWorld implements java.io.Externalizable {
             out.writeUTF(robotNames.get(i));
             robots.get(i).write(out);
         }
+        Scenery.writeObjects(out, objects);
     }
 
     @Override
@@ -72,5 +87,6 @@ public final class GeometryWorld implements java.io.Externalizable {
         }
         robotNames = List.copyOf(names);
         robots = List.copyOf(props);
+        objects = Scenery.readObjects(in);
     }
 }

@@ -16,6 +16,18 @@ public final class Limits {
     public static final int MAX_OBSTACLES = 100_000;
     /** Vertices of one obstacle polygon. */
     public static final int MAX_VERTICES = 10_000;
+    /** Objects (boxes, cylinders) in one world. */
+    public static final int MAX_OBJECTS = 100_000;
+    /** Lights in one world. */
+    public static final int MAX_LIGHTS = 10_000;
+    /** Painted regions of one floor. */
+    public static final int MAX_FLOOR_REGIONS = 10_000;
+    /** Pixels of a floor's image (1024 x 1024): what every viewer is sent once. */
+    public static final int MAX_FLOOR_PIXELS = 1 << 20;
+    /** Rays of one robot's proximity sensors. */
+    public static final int MAX_RAYS = 64;
+    /** LEDs on one robot. */
+    public static final int MAX_LEDS = 64;
     /** Sonar transducers on one robot. */
     public static final int MAX_SONARS = 64;
     /** Tags listed in one pose update. */

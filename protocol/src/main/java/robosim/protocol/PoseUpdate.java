@@ -23,8 +23,16 @@ public final class PoseUpdate implements java.io.Externalizable {
     private List<String> tags = List.of();
     private List<String> departed = List.of();
     private List<String> held = List.of();
+    /** Each object's pose at the end of the step, in the snapshot's order (none in a world without objects). */
+    private double[] objectXMm = NONE;
+    private double[] objectYMm = NONE;
+    private double[] objectHeadingDeg = NONE;
+    /** Each robot's LED colours ({@code 0xRRGGBB}, black is off), its LEDs' order; {@link #NO_LEDS} for none. */
+    private int[][] leds;
 
     private static final double[] NONE = new double[0];
+    /** The LEDs of a robot that has none, or whose LEDs are all off and always were. */
+    public static final int[] NO_LEDS = new int[0];
 
     public PoseUpdate() {
     }
@@ -77,11 +85,51 @@ public final class PoseUpdate implements java.io.Externalizable {
     }
 
     /**
-     * The poses alone: the same step, robots, poses and who has left or is away, without sonar ranges or tags (what a
-     * {@link WorldSnapshot} carries). Shares this update's arrays.
+     * This update with the objects' poses and the robots' LED colours of its step (taken as they are: the caller must
+     * never change them; {@code leds} null or a robot's {@link #NO_LEDS} for none).
+     */
+    public PoseUpdate withScene(double[] objectX, double[] objectY, double[] objectHeading, int[][] robotLeds) {
+        if (objectX.length != objectY.length || objectX.length != objectHeading.length
+                || (robotLeds != null && robotLeds.length != xMm.length)) {
+            throw new IllegalArgumentException("object or LED arrays differ in length");
+        }
+        PoseUpdate u = new PoseUpdate(step, xMm, yMm, headingDeg, sonarMm, tags, departed, held);
+        u.objectXMm = objectX;
+        u.objectYMm = objectY;
+        u.objectHeadingDeg = objectHeading;
+        u.leds = robotLeds;
+        return u;
+    }
+
+    /**
+     * The poses alone: the same step, robots, poses, objects, LEDs and who has left or is away, without sonar ranges
+     * or tags (what a {@link WorldSnapshot} carries). Shares this update's arrays.
      */
     public PoseUpdate posesOnly() {
-        return new PoseUpdate(step, xMm, yMm, headingDeg, null, List.of(), departed, held);
+        return new PoseUpdate(step, xMm, yMm, headingDeg, null, List.of(), departed, held)
+                .withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
+    }
+
+    /** Objects whose poses it holds: all the world's, or none. */
+    public int objectCount() {
+        return objectXMm.length;
+    }
+
+    public double objectXMm(int object) {
+        return objectXMm[object];
+    }
+
+    public double objectYMm(int object) {
+        return objectYMm[object];
+    }
+
+    public double objectHeadingDeg(int object) {
+        return objectHeadingDeg[object];
+    }
+
+    /** Robot {@code robot}'s LED colours, its LEDs' order ({@link #NO_LEDS} for none). Do not change. */
+    public int[] leds(int robot) {
+        return leds == null ? NO_LEDS : leds[robot];
     }
 
     /** The robots away now, standing where they were until they come back, in the order they were lost. */
@@ -138,6 +186,21 @@ public final class PoseUpdate implements java.io.Externalizable {
         Wire.writeStrings(out, tags);
         Wire.writeStrings(out, departed);
         Wire.writeStrings(out, held);
+        out.writeInt(objectXMm.length);
+        for (int o = 0; o < objectXMm.length; o++) {
+            out.writeDouble(objectXMm[o]);
+            out.writeDouble(objectYMm[o]);
+            out.writeDouble(objectHeadingDeg[o]);
+        }
+        out.writeBoolean(leds != null);
+        if (leds != null) {
+            for (int[] robot : leds) {
+                out.writeByte(robot.length);
+                for (int c : robot) {
+                    out.writeInt(c);
+                }
+            }
+        }
     }
 
     @Override
@@ -158,5 +221,27 @@ public final class PoseUpdate implements java.io.Externalizable {
         tags = Wire.readStrings(in, "tag count", Limits.MAX_TAGS);
         departed = Wire.readStrings(in, "departed robot count", Limits.MAX_ROBOTS);
         held = Wire.readStrings(in, "held robot count", Limits.MAX_ROBOTS);
+        if (!Wire.withScene(in)) {
+            return; // (a recording made before objects and LEDs)
+        }
+        int objects = Limits.checkCount("object count", in.readInt(), Limits.MAX_OBJECTS);
+        objectXMm = objects == 0 ? NONE : new double[objects];
+        objectYMm = objects == 0 ? NONE : new double[objects];
+        objectHeadingDeg = objects == 0 ? NONE : new double[objects];
+        for (int o = 0; o < objects; o++) {
+            objectXMm[o] = in.readDouble();
+            objectYMm[o] = in.readDouble();
+            objectHeadingDeg[o] = in.readDouble();
+        }
+        if (in.readBoolean()) {
+            leds = new int[n][];
+            for (int i = 0; i < n; i++) {
+                int count = Limits.checkCount("LED count", in.readUnsignedByte(), Limits.MAX_LEDS);
+                leds[i] = count == 0 ? NO_LEDS : new int[count];
+                for (int k = 0; k < count; k++) {
+                    leds[i][k] = in.readInt() & 0xFFFFFF;
+                }
+            }
+        }
     }
 }

@@ -18,9 +18,22 @@ final class ProtocolInputStream extends ObjectInputStream {
     /** The most of a refused class's name a refusal repeats. */
     private static final int MAX_NAME = 100;
 
+    /** The recording version it reads a frame of, or {@link RecordingFormat#VERSION} (a connection's). */
+    private final int recordingVersion;
+
     ProtocolInputStream(InputStream in, ProtocolFilter filter) throws IOException {
+        this(in, filter, RecordingFormat.VERSION);
+    }
+
+    /** A stream of a frame of a recording of {@code version}: its messages as that version wrote them. */
+    ProtocolInputStream(InputStream in, ProtocolFilter filter, int recordingVersion) throws IOException {
         super(in);
         setObjectInputFilter(filter);
+        this.recordingVersion = recordingVersion;
+    }
+
+    int recordingVersion() {
+        return recordingVersion;
     }
 
     @Override

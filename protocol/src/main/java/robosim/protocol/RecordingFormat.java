@@ -3,8 +3,9 @@ package robosim.protocol;
 import java.nio.charset.StandardCharsets;
 
 /**
- * A run's recording, {@code --record FILE} (version {@value #VERSION}; {@code protocol/README.md};
- * version 3, whose views hold no reports, is read as such; versions 1 and 2 are refused): the
+ * A run's recording, {@code --record FILE} (version {@value #VERSION}; {@code protocol/README.md}; version 4, whose
+ * snapshot holds no scenery and whose steps no objects and LEDs, and version 3, whose views hold no reports either,
+ * are read as such; versions 1 and 2 are refused): the
  * bytes {@code ROBOSIMREC} and a version byte, then frames, each {@code int length}, {@code length} bytes
  * ({@code byte type}, {@code long step}, then an object stream of the body) and the {@code int} CRC-32 of
  * those bytes. Types: {@link #SNAPSHOT} (a {@link WorldSnapshot}, first), {@link #STEP} (the fields
@@ -18,8 +19,10 @@ import java.nio.charset.StandardCharsets;
  */
 public final class RecordingFormat {
     static final byte[] MAGIC = "ROBOSIMREC".getBytes(StandardCharsets.US_ASCII);
-    public static final byte VERSION = 4;
-    /** The version before: the same but for the reports in each robot's view; read as views without reports. */
+    public static final byte VERSION = 5;
+    /** The version before: the same but for the scenery, the objects' poses and the LEDs; read as without them. */
+    static final byte VERSION_WITHOUT_SCENE = 4;
+    /** The version before that: also without the reports in each robot's view; read as views without reports. */
     static final byte VERSION_WITHOUT_REPORTS = 3;
     static final byte SNAPSHOT = 1;
     static final byte STEP = 2;

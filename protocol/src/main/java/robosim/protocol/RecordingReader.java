@@ -33,7 +33,7 @@ public final class RecordingReader implements Closeable {
 
     private final Path file;
     private final RandomAccessFile in;
-    /** The file's version: {@link RecordingFormat#VERSION}, or the one before it (views without reports). */
+    /** The file's version: {@link RecordingFormat#VERSION} or an older one it reads ({@link RecordingFormat}). */
     private int version;
     private final WorldSnapshot snapshot;
     private long[] stepOffsets = new long[1024];
@@ -60,7 +60,8 @@ public final class RecordingReader implements Closeable {
                 throw new IOException(file + ": not a RoboSim recording");
             }
             version = in.readByte();
-            if (version != RecordingFormat.VERSION && version != RecordingFormat.VERSION_WITHOUT_REPORTS) {
+            if (version != RecordingFormat.VERSION && version != RecordingFormat.VERSION_WITHOUT_SCENE
+                    && version != RecordingFormat.VERSION_WITHOUT_REPORTS) {
                 throw new IOException(file + ": recording version " + version + ", this RoboSim reads "
                         + RecordingFormat.VERSION);
             }
@@ -151,8 +152,9 @@ public final class RecordingReader implements Closeable {
         return bytes;
     }
 
-    private static ObjectInputStream body(byte[] frame) throws IOException {
-        return new ProtocolInputStream(new ByteArrayInputStream(frame, 9, frame.length - 9), new ProtocolFilter());
+    private ObjectInputStream body(byte[] frame) throws IOException {
+        return new ProtocolInputStream(new ByteArrayInputStream(frame, 9, frame.length - 9), new ProtocolFilter(),
+                version);
     }
 
     public WorldSnapshot snapshot() {
@@ -227,7 +229,8 @@ public final class RecordingReader implements Closeable {
             int n = count(o, update.count());
             List<RobotView> views = new ArrayList<>(n);
             for (int k = 0; k < n; k++) {
-                RobotView v = RobotView.readRecorded(o, update.step(), version == RecordingFormat.VERSION);
+                RobotView v = RobotView.readRecorded(o, update.step(),
+                        version > RecordingFormat.VERSION_WITHOUT_REPORTS);
                 if (v.robot() >= update.count() || (k > 0 && v.robot() <= views.get(k - 1).robot())) {
                     throw new IOException("a view of robot " + v.robot() + " out of order");
                 }

@@ -13,6 +13,12 @@ import java.util.List;
  * robots in the same order.
  */
 public final class WorldSnapshot implements java.io.Externalizable {
+    /**
+     * Fixed at the value the JDK computed for the class recordings of version 4 hold, so that they read; what each
+     * version writes is told apart by the recording's version ({@link RecordingFormat}), not by this.
+     */
+    private static final long serialVersionUID = -3996007456098852125L;
+
     private long step;
     private long timeStepMs;
     private Arena arena;
@@ -20,12 +26,23 @@ public final class WorldSnapshot implements java.io.Externalizable {
     private List<String> robotNames = List.of();
     private List<RobotProperties> robots = List.of();
     private PoseUpdate poses = new PoseUpdate();
+    private Scenery scenery = Scenery.NONE;
 
     public WorldSnapshot() {
     }
 
+    /** A world without floor, lights or objects. */
     public WorldSnapshot(long timeStepMs, Arena arena, List<ObstacleShape> obstacles, List<String> robotNames,
             List<RobotProperties> robots, PoseUpdate poses) {
+        this(timeStepMs, arena, obstacles, robotNames, robots, poses, Scenery.NONE);
+    }
+
+    /**
+     * @param scenery the floor, the lights and the objects (at their start poses; where they stand at {@code step} is
+     *     in {@code poses})
+     */
+    public WorldSnapshot(long timeStepMs, Arena arena, List<ObstacleShape> obstacles, List<String> robotNames,
+            List<RobotProperties> robots, PoseUpdate poses, Scenery scenery) {
         this.step = poses.step();
         this.timeStepMs = timeStepMs;
         this.arena = arena;
@@ -33,8 +50,13 @@ public final class WorldSnapshot implements java.io.Externalizable {
         this.robotNames = List.copyOf(robotNames);
         this.robots = List.copyOf(robots);
         this.poses = poses;
+        this.scenery = scenery;
         if (robotNames.size() != robots.size() || robotNames.size() != poses.count()) {
             throw new IllegalArgumentException("snapshot robot fields differ in length");
+        }
+        if (poses.objectCount() != 0 && poses.objectCount() != scenery.objects().size()) {
+            throw new IllegalArgumentException("snapshot has " + scenery.objects().size() + " objects but "
+                    + poses.objectCount() + " object poses");
         }
     }
 
@@ -67,6 +89,11 @@ public final class WorldSnapshot implements java.io.Externalizable {
         return robots.get(robot).radiusMm();
     }
 
+    /** The floor, the lights, and the objects (at their start poses). */
+    public Scenery scenery() {
+        return scenery;
+    }
+
     /** The robots' poses at {@link #step()}. */
     public PoseUpdate poses() {
         return poses;
@@ -84,6 +111,7 @@ public final class WorldSnapshot implements java.io.Externalizable {
             robots.get(i).write(out);
         }
         poses.writeExternal(out);
+        scenery.write(out);
     }
 
     @Override
@@ -105,6 +133,11 @@ public final class WorldSnapshot implements java.io.Externalizable {
         poses.readExternal(in);
         if (poses.count() != n) {
             throw new ProtocolException("snapshot has " + n + " robots but " + poses.count() + " poses");
+        }
+        scenery = Wire.withScene(in) ? Scenery.read(in) : Scenery.NONE;
+        if (poses.objectCount() != 0 && poses.objectCount() != scenery.objects().size()) {
+            throw new ProtocolException("snapshot has " + scenery.objects().size() + " objects but "
+                    + poses.objectCount() + " object poses");
         }
     }
 }

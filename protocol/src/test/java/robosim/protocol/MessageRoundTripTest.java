@@ -69,7 +69,7 @@ class MessageRoundTripTest {
         assertEquals(Protocol.VERSION, m.protocolVersion());
         assertEquals("robot1", m.name());
         assertEquals(PROPS, m.properties());
-        int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
+        int props = utf("ArRobot") + 5 * 8 + 4 + 5 * 8 + 4 + 4 + 1; // (no rays, no LEDs, no gripper)
         assertEquals(OVERHEAD + 4 + utf("robot1") + 1 + props, repeatedSize(new RobotHello("robot1", PROPS)));
         RobotHello any = roundTrip(RobotHello.anyType("robot1"));
         assertTrue(any.anyType());
@@ -175,8 +175,8 @@ class MessageRoundTripTest {
         assertEquals(List.of(box), m.obstacles());
         assertEquals(List.of("r1"), m.robotNames());
         assertEquals(List.of(PROPS), m.robots());
-        int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
-        assertEquals(OVERHEAD + 4 * 8 + 4 + utf("box") + 4 + 8 * 8 + 4 + utf("r1") + props,
+        int props = utf("ArRobot") + 5 * 8 + 4 + 5 * 8 + 4 + 4 + 1; // (no rays, no LEDs, no gripper)
+        assertEquals(OVERHEAD + 4 * 8 + 4 + utf("box") + 4 + 8 * 8 + 4 + utf("r1") + props + 4,
                 repeatedSize(new GeometryWorld(arena, List.of(box), List.of("r1"), List.of(PROPS))));
     }
 
@@ -193,7 +193,7 @@ class MessageRoundTripTest {
         assertEquals(9, q2.turnDeg(1));
         assertTrue(q2.wantsSonar(0));
         assertFalse(q2.wantsSonar(1));
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (5 * 8 + 1), repeatedSize(q));
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (5 * 8 + 1) + 4, repeatedSize(q)); // (and no objects)
 
         GeometryStepResponse r = new GeometryStepResponse(2, 4);
         r.begin(9);
@@ -207,7 +207,8 @@ class MessageRoundTripTest {
         assertEquals(3, r2.contactIndex(1));
         assertEquals(1, r2.rangeCount());
         assertEquals(1500, r2.rangeMm(0));
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (8 + 8 + 1 + 4) + 4 + 8, repeatedSize(r));
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (8 + 8 + 1 + 4) + 4 + 8 + 4 + 4 + 4, repeatedSize(r)); // (no rays,
+        // objects or grips)
     }
 
     @Test
@@ -228,8 +229,8 @@ class MessageRoundTripTest {
         assertEquals(6, p2.headingDeg(1));
         assertArrayEquals(new double[] {700, 800}, p2.sonarMm(0));
         assertEquals(0, p2.sonarMm(1).length);
-        // tags, departed and held robots: three empty string lists
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4 + 4, repeatedSize(p));
+        // tags, departed and held robots: three empty string lists; no objects, no LEDs
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4 + 4 + 4 + 1, repeatedSize(p));
         PoseUpdate tagged = new PoseUpdate(4, new double[] {1}, new double[] {3}, new double[] {5}, null,
                 List.of("a>b"));
         assertEquals(List.of("a>b"), roundTrip(tagged).tags());
@@ -252,9 +253,11 @@ class MessageRoundTripTest {
         assertEquals(250, s2.radiusMm(1));
         assertEquals(PROPS, s2.robots().get(0));
         assertEquals(3, s2.poses().yMm(0));
-        int props = utf("ArRobot") + 3 * 8 + 4 + 5 * 8;
+        int props = utf("ArRobot") + 5 * 8 + 4 + 5 * 8 + 4 + 4 + 1; // (no rays, no LEDs, no gripper)
         int robots = 2 * (utf("a") + props);
-        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4 + 4), repeatedSize(s));
+        int scenery = 4 + 4 + 1 + 4 + 4; // a plain floor (colour, no regions, no image), no lights, no objects
+        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4 + 4 + 4 + 1 + scenery),
+                repeatedSize(s));
 
         RunState r = roundTrip(new RunState(12, RunState.Phase.PAUSED));
         assertEquals(12, r.step());

@@ -67,17 +67,25 @@ class RecordingTest {
         return ends;
     }
 
+    /**
+     * A version 4 recording (written by RoboSim before worlds had scenery: {@code v4.rec}, a snapshot of robots a and b
+     * and one step) reads without scenery, objects or LEDs; as version 3 (the same bytes: its views hold nothing
+     * more) without reports; version 2 is refused.
+     */
     @Test
-    void aVersionThreeRecordingReadsAsViewsWithoutReportsAndVersionTwoIsRefused(@TempDir Path dir) throws IOException {
-        Path file = dir.resolve("v3.rec");
-        try (RecordingWriter w = new RecordingWriter(file)) { // (views with nothing more: the same bytes in 3 and 4)
-            w.snapshot(new WorldSnapshot(500, new Arena(0, 0, 1000, 1000), List.of(), NAMES,
-                    List.of(AR_ROBOT, SCOUT), update(0)));
-            StepRequest still = new StepRequest(0, 0, 0, false, List.of());
-            StepResponse nothing = new StepResponse(0, 0, 0, "", 0, 1, 0, new double[0], List.of(), List.of(), List.of());
-            w.step(update(0), new StepRequest[] {still, null}, new StepResponse[] {nothing, null});
+    void olderRecordingsReadAsTheyWereWrittenAndVersionTwoIsRefused(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("v4.rec");
+        byte[] bytes = getClass().getResourceAsStream("/v4.rec").readAllBytes();
+        Files.write(file, bytes);
+        try (RecordingReader r = new RecordingReader(file)) {
+            assertEquals(NAMES, r.snapshot().robotNames());
+            assertEquals(Scenery.NONE, r.snapshot().scenery());
+            assertEquals(AR_ROBOT, r.snapshot().robots().get(0));
+            assertEquals(1, r.steps());
+            assertEquals(0, r.step(0).update().objectCount());
+            assertEquals(0, r.step(0).update().leds(0).length);
+            assertEquals(2, r.step(0).update().yMm(1));
         }
-        byte[] bytes = Files.readAllBytes(file);
         bytes[RecordingFormat.MAGIC.length] = 3;
         Files.write(file, bytes);
         try (RecordingReader r = new RecordingReader(file)) {
@@ -87,7 +95,7 @@ class RecordingTest {
         bytes[RecordingFormat.MAGIC.length] = 2;
         Files.write(file, bytes);
         IOException e = assertThrows(IOException.class, () -> new RecordingReader(file));
-        assertEquals(file + ": recording version 2, this RoboSim reads 4", e.getMessage());
+        assertEquals(file + ": recording version 2, this RoboSim reads 5", e.getMessage());
     }
 
     @Test

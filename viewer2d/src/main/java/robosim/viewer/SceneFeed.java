@@ -29,6 +29,8 @@ public final class SceneFeed implements RunFollower.Listener {
     private final AtomicReference<Scene> latest = new AtomicReference<>();
     private final LongSupplier nanoClock;
     private WorldSnapshot world;
+    /** The floor's image of {@link #world}, drawn once a snapshot. */
+    private java.awt.image.BufferedImage floorImage;
     private double[][] ring;
     private int[] ringStart;
     private int[] ringSize;
@@ -58,6 +60,7 @@ public final class SceneFeed implements RunFollower.Listener {
             // robots joined the running world: the others keep their trails, the run its state; the steps per second
             // are measured afresh (a replay sought forward across a join looks the same, and its jump is no rate)
             world = snapshot;
+            floorImage = Scene.picture(snapshot.scenery().floor().image());
             rateStep = -1;
             stepsPerSecond = Double.NaN;
             ring = java.util.Arrays.copyOf(ring, n);
@@ -70,6 +73,7 @@ public final class SceneFeed implements RunFollower.Listener {
             return;
         }
         world = snapshot;
+        floorImage = Scene.picture(snapshot.scenery().floor().image());
         ring = new double[n][2 * TRAIL_POINTS];
         ringStart = new int[n];
         ringSize = new int[n];
@@ -178,6 +182,6 @@ public final class SceneFeed implements RunFollower.Listener {
             trails[i] = t;
         }
         latest.set(new Scene(world.arena(), world.obstacles(), world.robotNames(), world.robots(), u, trails,
-                stepsPerSecond, status));
+                stepsPerSecond, status, world.scenery(), floorImage));
     }
 }

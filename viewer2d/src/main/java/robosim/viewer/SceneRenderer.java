@@ -11,19 +11,25 @@ import java.awt.geom.Path2D;
 import java.awt.geom.Rectangle2D;
 import java.util.List;
 import robosim.protocol.Arena;
+import robosim.protocol.Floor;
+import robosim.protocol.LedSpec;
+import robosim.protocol.Light;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.SonarSpec;
+import robosim.protocol.WorldObject;
 
 /**
- * Draws a {@link Scene} with a {@link ViewTransform}: arena (white, 1 m grid), obstacles (grey),
- * optional trails and sonar rays, robots (a disc in the robot's colour, a line to the rim along its
- * heading, its name), and a crimson ring around anything that has been tagged. Pure drawing, no state: the window and the off-screen test use the same code.
+ * Draws a {@link Scene} with a {@link ViewTransform}: arena (its floor: colour, image and painted regions; 1 m grid),
+ * obstacles (grey), objects (in their colours; movable ones outlined dashed), lights (a disc of their colour, hollow
+ * when off), optional trails and sonar rays, robots (a disc in the robot's colour, a line to the rim along its
+ * heading, its LEDs that are lit, its name), and a crimson ring around anything that has been tagged. Pure drawing,
+ * no state: the window and the off-screen test use the same code.
  */
 public final class SceneRenderer {
     public static final Color OUTSIDE = new Color(0xDDE1E6);
-    public static final Color FLOOR = Color.WHITE;
-    public static final Color GRID = new Color(0xEEF0F3);
+    /** The 1 m grid, translucent: it shows on any floor. */
+    public static final Color GRID = new Color(0, 0, 0, 18);
     public static final Color WALL = new Color(0x6B6F76);
     public static final Color OUTLINE = new Color(0x22262B);
     /** The ring around anything that has been tagged. */
@@ -49,7 +55,7 @@ public final class SceneRenderer {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setColor(OUTSIDE);
         g.fillRect(0, 0, width, height);
-        drawArena(g, s.arena(), t);
+        drawArena(g, s, t);
         g.setStroke(new BasicStroke(1f));
         java.util.Set<String> tagged = new java.util.HashSet<>();
         for (String tag : s.poses().tags()) {
@@ -66,6 +72,8 @@ public final class SceneRenderer {
         }
         g.setStroke(new BasicStroke(1f));
         PoseUpdate poses = s.poses();
+        drawObjects(g, s, t);
+        drawLights(g, s.scenery().lights(), t);
         if (o.trails()) {
             for (int i = 0; i < s.robotCount(); i++) {
                 drawTrail(g, s.trails()[i], t, robotColor(i));
@@ -90,13 +98,23 @@ public final class SceneRenderer {
         }
     }
 
-    private static void drawArena(Graphics2D g, Arena a, ViewTransform t) {
+    private static void drawArena(Graphics2D g, Scene s, ViewTransform t) {
+        Arena a = s.arena();
         double x0 = t.toScreenX(a.minXMm());
         double y0 = t.toScreenY(a.maxYMm());
         double x1 = t.toScreenX(a.maxXMm());
         double y1 = t.toScreenY(a.minYMm());
-        g.setColor(FLOOR);
+        Floor floor = s.scenery().floor();
+        g.setColor(new Color(floor.rgb()));
         g.fill(new Rectangle2D.Double(x0, y0, x1 - x0, y1 - y0));
+        if (s.floorImage() != null) {
+            g.drawImage(s.floorImage(), (int) Math.round(x0), (int) Math.round(y0), (int) Math.round(x1 - x0),
+                    (int) Math.round(y1 - y0), null);
+        }
+        for (Floor.Region r : floor.regions()) {
+            g.setColor(new Color(r.rgb()));
+            g.fill(region(r.area(), t));
+        }
         if (t.scale() * 1000 >= 8) {
             g.setColor(GRID);
             g.setStroke(new BasicStroke(1f));
@@ -110,6 +128,75 @@ public final class SceneRenderer {
         g.setColor(OUTLINE);
         g.setStroke(new BasicStroke(2f));
         g.draw(new Rectangle2D.Double(x0, y0, x1 - x0, y1 - y0));
+    }
+
+    private static java.awt.Shape region(Floor.Area area, ViewTransform t) {
+        if (area instanceof Floor.Rectangle r) {
+            double x0 = t.toScreenX(r.xMm());
+            double y0 = t.toScreenY(r.yMm() + r.heightMm());
+            return new Rectangle2D.Double(x0, y0, t.toScreenX(r.xMm() + r.widthMm()) - x0,
+                    t.toScreenY(r.yMm()) - y0);
+        }
+        if (area instanceof Floor.Disc d) {
+            double rr = d.radiusMm() * t.scale();
+            return new Ellipse2D.Double(t.toScreenX(d.xMm()) - rr, t.toScreenY(d.yMm()) - rr, 2 * rr, 2 * rr);
+        }
+        return polygon(((Floor.Polygon) area).xyMm(), t);
+    }
+
+    /** Each object where the poses put it (its start pose before any), in its colour; a movable one dashed. */
+    private static void drawObjects(Graphics2D g, Scene s, ViewTransform t) {
+        List<WorldObject> objects = s.scenery().objects();
+        PoseUpdate p = s.poses();
+        boolean moved = p.objectCount() == objects.size();
+        double[] corners = new double[8];
+        for (int o = 0; o < objects.size(); o++) {
+            WorldObject w = objects.get(o);
+            double x = moved ? p.objectXMm(o) : w.xMm();
+            double y = moved ? p.objectYMm(o) : w.yMm();
+            java.awt.Shape shape;
+            if (w.shape() == WorldObject.Shape.CYLINDER) {
+                double r = w.radiusMm() * t.scale();
+                shape = new Ellipse2D.Double(t.toScreenX(x) - r, t.toScreenY(y) - r, 2 * r, 2 * r);
+            } else {
+                w.corners(x, y, moved ? p.objectHeadingDeg(o) : w.headingDeg(), corners, 0);
+                shape = polygon(corners, t);
+            }
+            g.setColor(new Color(w.rgb()));
+            g.fill(shape);
+            g.setColor(OUTLINE);
+            g.setStroke(w.movable() ? new BasicStroke(1.2f, BasicStroke.CAP_BUTT, BasicStroke.JOIN_MITER, 10f,
+                    new float[] {3f, 3f}, 0f) : new BasicStroke(1.2f));
+            g.draw(shape);
+        }
+        g.setStroke(new BasicStroke(1f));
+    }
+
+    /** Each light: a disc of its colour (at least 8 pixels across), hollow when it is off. */
+    private static void drawLights(Graphics2D g, List<Light> lights, ViewTransform t) {
+        for (Light l : lights) {
+            double r = Math.max(4, 60 * t.scale());
+            Ellipse2D disc = new Ellipse2D.Double(t.toScreenX(l.xMm()) - r, t.toScreenY(l.yMm()) - r, 2 * r, 2 * r);
+            if (l.shines()) {
+                Color c = new Color(l.rgb());
+                g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 70));
+                g.fill(new Ellipse2D.Double(disc.getX() - r, disc.getY() - r, 4 * r, 4 * r));
+                g.setColor(c);
+                g.fill(disc);
+            }
+            g.setColor(OUTLINE);
+            g.draw(disc);
+        }
+    }
+
+    private static Path2D polygon(double[] xy, ViewTransform t) {
+        Path2D.Double p = new Path2D.Double();
+        p.moveTo(t.toScreenX(xy[0]), t.toScreenY(xy[1]));
+        for (int v = 2; v < xy.length; v += 2) {
+            p.lineTo(t.toScreenX(xy[v]), t.toScreenY(xy[v + 1]));
+        }
+        p.closePath();
+        return p;
     }
 
     private static Path2D polygon(ObstacleShape o, ViewTransform t) {
@@ -178,6 +265,28 @@ public final class SceneRenderer {
         }
     }
 
+    /** A robot's lit LEDs, each a dot of its colour where it sits on the robot (above the body: drawn over it). */
+    private static void drawLeds(Graphics2D g, List<LedSpec> where, int[] colours, double cx, double cy, double h,
+            ViewTransform t) {
+        double dot = Math.max(2, 12 * t.scale());
+        double c = Math.cos(h);
+        double sn = Math.sin(h);
+        for (int k = 0; k < Math.min(where.size(), colours.length); k++) {
+            if (colours[k] == 0) {
+                continue;
+            }
+            LedSpec l = where.get(k);
+            double lx = cx + (l.xMm() * c - l.yMm() * sn) * t.scale();
+            double ly = cy - (l.xMm() * sn + l.yMm() * c) * t.scale();
+            Ellipse2D led = new Ellipse2D.Double(lx - dot, ly - dot, 2 * dot, 2 * dot);
+            g.setColor(new Color(colours[k]));
+            g.fill(led);
+            g.setColor(OUTLINE);
+            g.setStroke(new BasicStroke(0.8f));
+            g.draw(led);
+        }
+    }
+
     private static void drawRobot(Graphics2D g, Scene s, int i, ViewTransform t, boolean names, boolean tagged) {
         PoseUpdate p = s.poses();
         double r = s.robots().get(i).radiusMm() * t.scale();
@@ -197,6 +306,7 @@ public final class SceneRenderer {
         double h = Math.toRadians(p.headingDeg(i));
         g.setStroke(new BasicStroke(2f));
         g.draw(new Line2D.Double(cx, cy, cx + r * Math.cos(h), cy - r * Math.sin(h)));
+        drawLeds(g, s.robots().get(i).leds(), p.leds(i), cx, cy, h, t);
         if (names && r >= 3) {
             g.drawString(s.names().get(i), (float) (cx + r + 2), (float) (cy - r - 2));
         }

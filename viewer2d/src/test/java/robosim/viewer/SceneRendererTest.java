@@ -9,8 +9,14 @@ import java.awt.image.BufferedImage;
 import java.util.List;
 import org.junit.jupiter.api.Test;
 import robosim.protocol.Arena;
+import robosim.protocol.Floor;
+import robosim.protocol.LedSpec;
+import robosim.protocol.Light;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
+import robosim.protocol.RobotProperties;
+import robosim.protocol.Scenery;
+import robosim.protocol.WorldObject;
 
 /** The viewer's drawing, off-screen, from a known scene: pixels where robots and walls must be. */
 class SceneRendererTest {
@@ -62,10 +68,10 @@ class SceneRendererTest {
         assertEquals(rgb(SceneRenderer.OUTLINE), pixel(img, t, 2000 + 150, 2500));
         // inside the box, on the open floor, and outside the arena
         assertEquals(rgb(SceneRenderer.WALL), pixel(img, t, 5000, 1500));
-        assertEquals(rgb(SceneRenderer.FLOOR), pixel(img, t, 1500, 4500));
+        assertEquals(robosim.protocol.Floor.PLAIN.rgb(), pixel(img, t, 1500, 4500));
         assertEquals(rgb(SceneRenderer.OUTSIDE), img.getRGB(3, 3) & 0xFFFFFF);
         // where robot a is not: floor
-        assertEquals(rgb(SceneRenderer.FLOOR), pixel(img, t, 3500, 3500));
+        assertEquals(robosim.protocol.Floor.PLAIN.rgb(), pixel(img, t, 3500, 3500));
     }
 
     @Test
@@ -85,7 +91,36 @@ class SceneRendererTest {
         int ring = pixel(img, t, 8000 + ringMm, 4000);
         assertTrue(close(rgb(SceneRenderer.TAGGED), ring, 24), "the ring's colour (anti-aliased): "
                 + Integer.toHexString(ring));
-        assertEquals(rgb(SceneRenderer.FLOOR), pixel(img, t, 2000 - (250 + 4 / t.scale()), 2500));
+        assertEquals(robosim.protocol.Floor.PLAIN.rgb(), pixel(img, t, 2000 - (250 + 4 / t.scale()), 2500));
+    }
+
+    @Test
+    void theFloorObjectsLightsAndLitLedsAreDrawnWhereTheyStand() {
+        // a grey floor with a black disc painted at (1, 1) m, a red box pushed from (3, 1) to (3.5, 1) m, a yellow
+        // light at (9, 4) m, and robot a with a green LED at its front (its second LED off)
+        Floor floor = new Floor(0x808080, List.of(new Floor.Region(new Floor.Disc(1000, 1000, 400), 0)), null);
+        WorldObject box = new WorldObject("crate", WorldObject.Shape.BOX, 600, 600, 200, 1, 0.5, true, false, 0xFF0000,
+                3000, 1000, 0);
+        Light light = new Light("lamp", 9000, 4000, 1000, 0xFFFF00, 3, true);
+        RobotProperties withLeds = new RobotProperties("Led", 250, 250, 10, 1000, 300, List.of(), List.of(),
+                List.of(new LedSpec(200, 0, 100), new LedSpec(-200, 0, 100)), null);
+        PoseUpdate poses = new PoseUpdate(41, new double[] {2000}, new double[] {2500}, new double[] {0})
+                .withScene(new double[] {3500}, new double[] {1000}, new double[] {0}, new int[][] {{0x00FF00, 0}});
+        Scene s = new Scene(ARENA, List.of(), List.of("a"), List.of(withLeds), poses, new double[][] {{}}, 0,
+                ViewedRun.of(ViewedRun.Kind.RUNNING), new Scenery(floor, List.of(light), List.of(box)), null);
+        BufferedImage img = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);
+        ViewTransform t = new ViewTransform();
+        t.fit(ARENA, 1000, 500);
+        Graphics2D g = img.createGraphics();
+        SceneRenderer.render(g, s, t, SceneRenderer.Options.DEFAULT, 1000, 500);
+        g.dispose();
+        assertEquals(0x808080, pixel(img, t, 6500, 2500), "the floor's colour");
+        assertEquals(0, pixel(img, t, 1100, 1100), "the painted disc");
+        assertEquals(0xFF0000, pixel(img, t, 3700, 1000), "the box where it was pushed to");
+        assertEquals(0x808080, pixel(img, t, 2850, 1000), "not where it started");
+        assertEquals(0xFFFF00, pixel(img, t, 9000, 4000), "the light");
+        assertEquals(0x00FF00, pixel(img, t, 2200, 2500), "the lit LED");
+        assertEquals(rgb(SceneRenderer.robotColor(0)), pixel(img, t, 1800, 2500 + 60), "the unlit one: the body");
     }
 
     @Test

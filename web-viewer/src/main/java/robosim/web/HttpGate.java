@@ -61,7 +61,7 @@ final class HttpGate extends SimpleChannelInboundHandler<FullHttpRequest> {
                     r.headers().set(HttpHeaderNames.CONTENT_TYPE, f.contentType())
                             .set("X-Content-Type-Options", "nosniff")
                             .set("Content-Security-Policy", "default-src 'self'; connect-src 'self'; "
-                                    + "style-src 'self' 'unsafe-inline'; frame-ancestors 'none'")
+                                    + "img-src 'self' data:; style-src 'self' 'unsafe-inline'; frame-ancestors 'none'")
                             .set(HttpHeaderNames.CACHE_CONTROL, "no-cache");
                     HttpUtil.setContentLength(r, f.bytes().length);
                     boolean keepAlive = HttpUtil.isKeepAlive(request);

@@ -6,8 +6,8 @@ import java.io.UncheckedIOException;
 import java.util.Map;
 
 /**
- * The page's files, read from the jar once: {@code /} (index.html), {@code /viewer.js}, {@code /view3d.js}, {@code /robot.js}
- * and three.js (from its webjar). Nothing else is served: no path from a request ever reaches a file name.
+ * The page's files, read from the jar once: {@code /} (index.html), {@code /viewer.js}, {@code /view3d.js},
+ * {@code /robot.js}, {@code /scenery.js} and three.js (from its webjar). Nothing else is served: no path from a request ever reaches a file name.
  */
 final class StaticFiles {
     private static final String THREE = "META-INF/resources/webjars/three/0.181.1/build/";
@@ -23,6 +23,7 @@ final class StaticFiles {
                 "/viewer.js", load("robosim/web/viewer.js", "text/javascript; charset=utf-8"),
                 "/view3d.js", load("robosim/web/view3d.js", "text/javascript; charset=utf-8"),
                 "/robot.js", load("robosim/web/robot.js", "text/javascript; charset=utf-8"),
+                "/scenery.js", load("robosim/web/scenery.js", "text/javascript; charset=utf-8"),
                 "/three/three.module.min.js", load(THREE + "three.module.min.js", "text/javascript; charset=utf-8"),
                 "/three/three.core.min.js", load(THREE + "three.core.min.js", "text/javascript; charset=utf-8"));
     }

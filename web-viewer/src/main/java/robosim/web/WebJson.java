@@ -4,6 +4,9 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.node.ArrayNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import robosim.protocol.Arena;
+import robosim.protocol.Floor;
+import robosim.protocol.LedSpec;
+import robosim.protocol.Light;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotProperties;
@@ -14,12 +17,15 @@ import robosim.devices.Sensors;
 import robosim.protocol.SensorReading;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.SonarSpec;
+import robosim.protocol.WorldObject;
 import robosim.protocol.WorldSnapshot;
 
 /**
  * The page's feed, one JSON object per WebSocket text frame, each with a {@code type}: {@code snapshot}
- * (the world: time step, arena, obstacles as polygons, every robot's name, type, radius and sonar layout,
- * and the poses), {@code update} (a step: poses, sonar ranges, tags, departed robots, robots held for their return), {@code state}
+ * (the world: time step, arena, obstacles as polygons, the floor (its colour, painted regions and image as a PNG data
+ * URL), the lights, the objects' shapes, every robot's name, type, radius, height, sonar layout and LEDs' places, and
+ * the poses), {@code update} (a step: poses, sonar ranges, the objects' poses and the LEDs' colours when the world has
+ * them, tags, departed robots, robots held for their return), {@code state}
  * (waiting, running, paused, at a step), {@code end}, and for a page that watches a robot {@code watchStarted},
  * {@code view} (its step as it saw it: command, contact, tag, readings, each with how its sensor shows it,
  * {@code RANGES}, {@code SIDES} or {@code VALUES} from {@code robosim.devices.Sensors#display}, messages sent and
@@ -48,6 +54,19 @@ final class WebJson {
                 xy.add(v);
             }
         }
+        floor(n.putObject("floor"), s.scenery().floor());
+        ArrayNode lights = n.putArray("lights");
+        for (Light l : s.scenery().lights()) {
+            lights.addObject().put("name", l.name()).put("x", l.xMm()).put("y", l.yMm()).put("height", l.heightMm())
+                    .put("colour", colour(l.rgb())).put("intensity", l.intensity()).put("on", l.on());
+        }
+        ArrayNode objects = n.putArray("objects");
+        for (WorldObject o : s.scenery().objects()) {
+            objects.addObject().put("name", o.name()).put("shape", o.shape().name().toLowerCase(java.util.Locale.ROOT))
+                    .put("width", o.widthMm()).put("depth", o.depthMm()).put("height", o.heightMm())
+                    .put("movable", o.movable()).put("colour", colour(o.rgb())).put("x", o.xMm()).put("y", o.yMm())
+                    .put("heading", o.headingDeg());
+        }
         ArrayNode robots = n.putArray("robots");
         for (int i = 0; i < s.robotNames().size(); i++) {
             RobotProperties p = s.robots().get(i);
@@ -55,6 +74,11 @@ final class WebJson {
             r.put("name", s.robotNames().get(i));
             r.put("type", p.type());
             r.put("radius", p.radiusMm());
+            r.put("height", p.heightMm());
+            ArrayNode leds = r.putArray("leds");
+            for (LedSpec l : p.leds()) {
+                leds.addArray().add(l.xMm()).add(l.yMm()).add(l.zMm());
+            }
             ArrayNode sonars = r.putArray("sonars");
             for (SonarSpec sonar : p.sonars()) {
                 sonars.addObject().put("x", sonar.xMm()).put("y", sonar.yMm()).put("angle", sonar.angleDeg())
@@ -63,6 +87,46 @@ final class WebJson {
         }
         n.set("poses", poses(s.poses()));
         return n.toString();
+    }
+
+    /** A colour as a page takes it: {@code #rrggbb}. */
+    private static String colour(int rgb) {
+        return String.format(java.util.Locale.ROOT, "#%06x", rgb & 0xFFFFFF);
+    }
+
+    /** The floor: its colour, its regions ({@code kind} rectangle, disc or polygon) and its image as a PNG. */
+    private static void floor(ObjectNode n, Floor f) {
+        n.put("colour", colour(f.rgb()));
+        ArrayNode regions = n.putArray("regions");
+        for (Floor.Region r : f.regions()) {
+            ObjectNode region = regions.addObject().put("colour", colour(r.rgb()));
+            if (r.area() instanceof Floor.Rectangle a) {
+                region.put("kind", "rectangle").put("x", a.xMm()).put("y", a.yMm()).put("width", a.widthMm())
+                        .put("height", a.heightMm());
+            } else if (r.area() instanceof Floor.Disc a) {
+                region.put("kind", "disc").put("x", a.xMm()).put("y", a.yMm()).put("radius", a.radiusMm());
+            } else {
+                ArrayNode xy = region.put("kind", "polygon").putArray("xy");
+                for (double v : ((Floor.Polygon) r.area()).xyMm()) {
+                    xy.add(v);
+                }
+            }
+        }
+        Floor.Image image = f.image();
+        if (image == null) {
+            n.putNull("image");
+            return;
+        }
+        java.awt.image.BufferedImage b = new java.awt.image.BufferedImage(image.width(), image.height(),
+                java.awt.image.BufferedImage.TYPE_INT_RGB);
+        b.setRGB(0, 0, image.width(), image.height(), image.rgb(), 0, image.width());
+        java.io.ByteArrayOutputStream png = new java.io.ByteArrayOutputStream();
+        try {
+            javax.imageio.ImageIO.write(b, "png", png);
+        } catch (java.io.IOException e) {
+            throw new java.io.UncheckedIOException(e); // (into memory: not expected)
+        }
+        n.put("image", "data:image/png;base64," + java.util.Base64.getEncoder().encodeToString(png.toByteArray()));
     }
 
     static String update(PoseUpdate u) {
@@ -84,6 +148,32 @@ final class WebJson {
             ArrayNode ranges = sonar.addArray();
             for (double r : u.sonarMm(i)) {
                 ranges.add(Math.round(r)); // (a millimetre is plenty on a screen)
+            }
+        }
+        if (u.objectCount() > 0) {
+            ObjectNode objects = n.putObject("objects");
+            ArrayNode ox = objects.putArray("x");
+            ArrayNode oy = objects.putArray("y");
+            ArrayNode oh = objects.putArray("heading");
+            for (int o = 0; o < u.objectCount(); o++) {
+                ox.add(u.objectXMm(o));
+                oy.add(u.objectYMm(o));
+                oh.add(u.objectHeadingDeg(o));
+            }
+        }
+        ArrayNode leds = null;
+        for (int i = 0; i < u.count(); i++) {
+            if (u.leds(i).length > 0 && leds == null) {
+                leds = n.putArray("leds");
+                for (int before = 0; before < i; before++) {
+                    leds.addArray();
+                }
+            }
+            if (leds != null) {
+                ArrayNode robot = leds.addArray();
+                for (int c : u.leds(i)) {
+                    robot.add(colour(c));
+                }
             }
         }
         ArrayNode tags = n.putArray("tags");

@@ -1,10 +1,13 @@
-// The 3D view (three.js, served from the jar): the arena as a floor with low walls round it, obstacles as
-// extruded polygons, robots as cylinders of their radius with a nose for their heading and their name above
-// them, and their trails on the floor. Metres; z up. Drag orbits, wheel zooms. Names are text laid over the
-// canvas (set as textContent), placed where each robot is drawn.
+// The 3D view (three.js, served from the jar): the arena as its floor (colour, image, painted regions) with low
+// walls round it, obstacles as extruded polygons, objects as boxes and cylinders of their size and colour where they
+// stand, lights as glowing spheres at their height, robots as cylinders of their radius and height with a nose for
+// their heading, their lit LEDs as small spheres where they sit, and their name above them, and their trails on the
+// floor. Metres; z up. Drag orbits, wheel zooms. Names are text laid over the canvas (set as textContent), placed
+// where each robot is drawn.
 import * as THREE from '/three/three.module.min.js';
+import { paintFloor, objectPose } from './scenery.js';
 
-const WALL_M = 0.4, ROBOT_M = 0.3, BOUNDS_M = 0.05, TRAIL_Z = 0.01, LABEL_Z = ROBOT_M + 0.15;
+const WALL_M = 0.4, BOUNDS_M = 0.05, TRAIL_Z = 0.01, LABEL_ABOVE_M = 0.15, FLOOR_PX = 1024, LED_M = 0.008;
 
 export class View3D {
   // trailPoints: the most points a trail the page keeps has
@@ -18,15 +21,17 @@ export class View3D {
     this.yaw = -Math.PI / 2; this.pitch = 0.9; this.distance = 10; this.center = new THREE.Vector3();
   }
 
-  // a world to show; keepCamera: it is the same arena (robots joined, a replay's seek): the camera stays
-  world(w, keepCamera) {
+  // a world to show; keepCamera: it is the same arena (robots joined, a replay's seek): the camera stays;
+  // picture: the floor's image, decoded (or null)
+  world(w, keepCamera, picture) {
     this.w = w;
     this.scene = new THREE.Scene();
     this.scene.background = new THREE.Color(0xf4f6fa);
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x777777, 2.2));
     const sun = new THREE.DirectionalLight(0xffffff, 1.5); sun.position.set(3, -4, 10); this.scene.add(sun);
     const a = w.arena, x0 = a.minX / 1000, y0 = a.minY / 1000, x1 = a.maxX / 1000, y1 = a.maxY / 1000;
-    const floor = new THREE.Mesh(new THREE.PlaneGeometry(x1 - x0, y1 - y0), new THREE.MeshLambertMaterial({ color: 0xdadada }));
+    const floor = new THREE.Mesh(new THREE.PlaneGeometry(x1 - x0, y1 - y0),
+      new THREE.MeshLambertMaterial({ map: this.floorTexture(w, picture) }));
     floor.position.set((x0 + x1) / 2, (y0 + y1) / 2, 0);
     this.scene.add(floor);
     const wall = new THREE.MeshLambertMaterial({ color: 0x8a8a8a });
@@ -46,16 +51,45 @@ export class View3D {
       }
       this.scene.add(new THREE.Mesh(new THREE.ExtrudeGeometry(shape, { depth: WALL_M, bevelEnabled: false }), wall));
     }
+    this.objects = w.objects.map((o) => {
+      const hm = o.height / 1000;
+      const geometry = o.shape === 'cylinder' ? new THREE.CylinderGeometry(o.width / 2000, o.width / 2000, hm, 24)
+        : new THREE.BoxGeometry(o.width / 1000, o.depth / 1000, hm);
+      const mesh = new THREE.Mesh(geometry, new THREE.MeshLambertMaterial({ color: o.colour }));
+      if (o.shape === 'cylinder') mesh.rotation.x = Math.PI / 2;
+      const g = new THREE.Group();
+      mesh.position.z = hm / 2;
+      g.add(mesh);
+      this.scene.add(g);
+      return g;
+    });
+    for (const l of w.lights) {
+      const lit = l.on && l.intensity > 0;
+      const bulb = new THREE.Mesh(new THREE.SphereGeometry(0.05, 16, 12), lit
+        ? new THREE.MeshBasicMaterial({ color: l.colour }) : new THREE.MeshLambertMaterial({ color: 0x999999 }));
+      bulb.position.set(l.x / 1000, l.y / 1000, l.height / 1000);
+      const pole = new THREE.Mesh(new THREE.CylinderGeometry(0.005, 0.005, l.height / 1000, 6),
+        new THREE.MeshLambertMaterial({ color: 0x666666 }));
+      pole.rotation.x = Math.PI / 2; pole.position.set(l.x / 1000, l.y / 1000, l.height / 2000);
+      this.scene.add(bulb, pole);
+    }
     const trailLine = new THREE.LineBasicMaterial({ color: 0x285ac8, transparent: true, opacity: 0.35 }); // (the 2D view's)
     this.robots = w.robots.map((r) => {
       const g = new THREE.Group();
-      const rm = r.radius / 1000;
-      const body = new THREE.Mesh(new THREE.CylinderGeometry(rm, rm, ROBOT_M, 24),
+      const rm = r.radius / 1000, hm = r.height / 1000;
+      const body = new THREE.Mesh(new THREE.CylinderGeometry(rm, rm, hm, 24),
         new THREE.MeshLambertMaterial({ color: 0x2a62c9 }));
-      body.rotation.x = Math.PI / 2; body.position.z = ROBOT_M / 2;
+      body.rotation.x = Math.PI / 2; body.position.z = hm / 2;
       const nose = new THREE.Mesh(new THREE.BoxGeometry(rm, rm / 4, rm / 4), new THREE.MeshLambertMaterial({ color: 0x111111 }));
-      nose.position.set(rm / 2, 0, ROBOT_M + rm / 8);
+      nose.position.set(rm / 2, 0, hm + rm / 8);
       g.add(body, nose);
+      const leds = r.leds.map(([lx, ly, lz]) => {
+        const led = new THREE.Mesh(new THREE.SphereGeometry(LED_M, 8, 6), new THREE.MeshBasicMaterial({ color: 0 }));
+        led.position.set(lx / 1000, ly / 1000, lz / 1000 + LED_M);
+        led.visible = false;
+        g.add(led);
+        return led;
+      });
       this.scene.add(g);
       const points = new THREE.BufferGeometry();
       points.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * this.trailPoints), 3));
@@ -64,10 +98,21 @@ export class View3D {
       this.scene.add(trail);
       const label = document.createElement('span');
       label.className = 'label';
-      return { group: g, body, trail, label, text: '' };
+      return { group: g, body, trail, label, text: '', leds, heightM: hm };
     });
     this.labels.replaceChildren(...this.robots.map((r) => r.label));
     if (!keepCamera) this.fit();
+  }
+
+  // the floor as a texture: painted as the 2D view paints it, FLOOR_PX on its longer side
+  floorTexture(w, picture) {
+    const a = w.arena, scale = FLOOR_PX / Math.max(a.maxX - a.minX, a.maxY - a.minY);
+    const c = document.createElement('canvas');
+    c.width = Math.max(1, Math.round((a.maxX - a.minX) * scale)); c.height = Math.max(1, Math.round((a.maxY - a.minY) * scale));
+    paintFloor(c.getContext('2d'), w.floor, a, picture, (x) => (x - a.minX) * scale, (y) => (a.maxY - y) * scale, scale);
+    const t = new THREE.CanvasTexture(c);
+    t.colorSpace = THREE.SRGBColorSpace;
+    return t;
   }
 
   fit() {
@@ -111,7 +156,17 @@ export class View3D {
       r.group.position.set(poses.x[i] / 1000, poses.y[i] / 1000, 0);
       r.group.rotation.z = poses.heading[i] * Math.PI / 180;
       r.body.material.color.set(out ? 0xcccccc : i === follow ? 0xe8a200 : 0x2a62c9);
+      const lit = poses.leds ? poses.leds[i] || [] : [];
+      r.leds.forEach((led, k) => {
+        led.visible = !!lit[k] && lit[k] !== '#000000';
+        if (led.visible) led.material.color.set(lit[k]);
+      });
       this.trail(r.trail, trails && trails[i]);
+    });
+    this.objects.forEach((g, i) => {
+      const [x, y, h] = objectPose(this.w, poses, i);
+      g.position.set(x / 1000, y / 1000, 0);
+      g.rotation.z = h * Math.PI / 180;
     });
     const c = follow >= 0 ? new THREE.Vector3(poses.x[follow] / 1000, poses.y[follow] / 1000, 0) : this.center;
     this.camera.position.set(c.x + this.distance * Math.cos(this.pitch) * Math.cos(this.yaw),
@@ -121,7 +176,7 @@ export class View3D {
     this.robots.forEach((r, i) => {
       const name = this.w.robots[i].name;
       this.label(r, name + (held.has(name) ? ' (held)' : gone.has(name) ? ' (left)' : ''),
-        new THREE.Vector3(poses.x[i] / 1000, poses.y[i] / 1000, LABEL_Z).project(this.camera), w, h);
+        new THREE.Vector3(poses.x[i] / 1000, poses.y[i] / 1000, r.heightM + LABEL_ABOVE_M).project(this.camera), w, h);
     });
   }
 

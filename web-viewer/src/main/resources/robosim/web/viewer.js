@@ -2,10 +2,11 @@
 // is only ever set as textContent, never as markup.
 import { View3D } from './view3d.js';
 import { RobotPanel } from './robot.js';
+import { floorPicture, paintFloor, objectPose, corners } from './scenery.js';
 
 const $ = (id) => document.getElementById(id);
 const TRAIL = 600; // points kept per robot
-let world = null, poses = null, trails = [], gone = new Set(), held = new Set(), follow = -1;
+let world = null, poses = null, trails = [], gone = new Set(), held = new Set(), follow = -1, picture = null;
 let scale = 0.1, offX = 0, offY = 0, fitted = false;
 let lastStep = -1, rateSteps = 0, rateSince = performance.now(), rate = 0;
 let ws = null;
@@ -49,8 +50,9 @@ function handle(m) {
       const arenaKept = world !== null && sameArena(world.arena, m.arena);
       if (!arenaKept) fitted = false;
       world = m; poses = m.poses;
+      picture = floorPicture(m.floor, () => { view3d.world(world, true); redraw(); });
       $('ended').textContent = '';
-      buildTable(); view3d.world(m, arenaKept); panel.world(m); dirty = tableDirty = true; wake();
+      buildTable(); view3d.world(m, arenaKept, picture); panel.world(m); dirty = tableDirty = true; wake();
       if (followName) follow = m.robots.findIndex((r) => r.name === followName);
       if (!watched && watchName && m.robots.some((r) => r.name === watchName)) watch(watchName);
       break;
@@ -144,6 +146,7 @@ function draw2d() {
   if (!fitted) fit();
   if (follow >= 0) { offX = canvas.width / 2 - poses.x[follow] * scale; offY = canvas.height / 2 - poses.y[follow] * scale; }
   const a = world.arena;
+  paintFloor(g, world.floor, a, picture, toX, toY, scale);
   g.strokeStyle = '#444'; g.lineWidth = 2;
   g.strokeRect(toX(a.minX), toY(a.maxY), (a.maxX - a.minX) * scale, (a.maxY - a.minY) * scale);
   g.fillStyle = '#8a8a8a';
@@ -151,6 +154,23 @@ function draw2d() {
     g.beginPath();
     for (let k = 0; k < o.xy.length; k += 2) g.lineTo(toX(o.xy[k]), toY(o.xy[k + 1]));
     g.closePath(); g.fill();
+  }
+  world.objects.forEach((o, i) => { // (in their colours; a movable one outlined dashed)
+    const [x, y, h] = objectPose(world, poses, i);
+    g.beginPath();
+    if (o.shape === 'cylinder') g.arc(toX(x), toY(y), o.width / 2 * scale, 0, 2 * Math.PI);
+    else { const c = corners(o, x, y, h); for (let k = 0; k < 8; k += 2) g.lineTo(toX(c[k]), toY(c[k + 1])); }
+    g.closePath(); g.fillStyle = o.colour; g.fill();
+    g.setLineDash(o.movable ? [3, 3] : []); g.strokeStyle = '#222'; g.lineWidth = 1; g.stroke(); g.setLineDash([]);
+  });
+  for (const l of world.lights) { // (a disc of its colour with a glow; hollow when off)
+    const r = Math.max(4, 60 * scale);
+    if (l.on && l.intensity > 0) {
+      g.fillStyle = l.colour; g.globalAlpha = 0.3;
+      g.beginPath(); g.arc(toX(l.x), toY(l.y), 2 * r, 0, 2 * Math.PI); g.fill(); g.globalAlpha = 1;
+      g.beginPath(); g.arc(toX(l.x), toY(l.y), r, 0, 2 * Math.PI); g.fill();
+    }
+    g.strokeStyle = '#222'; g.lineWidth = 1; g.beginPath(); g.arc(toX(l.x), toY(l.y), r, 0, 2 * Math.PI); g.stroke();
   }
   if ($('trails').checked) {
     g.strokeStyle = 'rgba(40,90,200,0.35)'; g.lineWidth = 1;
@@ -179,6 +199,12 @@ function draw2d() {
     g.beginPath(); g.arc(toX(x), toY(y), rad, 0, 2 * Math.PI); g.fill();
     g.strokeStyle = '#000'; g.lineWidth = 1.5;
     g.beginPath(); g.moveTo(toX(x), toY(y)); g.lineTo(toX(x + r.radius * Math.cos(h)), toY(y + r.radius * Math.sin(h))); g.stroke();
+    const lit = poses.leds ? poses.leds[i] || [] : [];
+    r.leds.forEach(([lx, ly], k) => { // (each lit LED a dot of its colour where it sits on the robot)
+      if (!lit[k] || lit[k] === '#000000') return;
+      const px = x + lx * Math.cos(h) - ly * Math.sin(h), py = y + lx * Math.sin(h) + ly * Math.cos(h);
+      g.fillStyle = lit[k]; g.beginPath(); g.arc(toX(px), toY(py), Math.max(2, 12 * scale), 0, 2 * Math.PI); g.fill();
+    });
     g.fillStyle = '#222';
     g.fillText(r.name + (held.has(r.name) ? ' (held)' : out ? ' (left)' : ''), toX(x) + rad + 2, toY(y) - rad);
   });

@@ -33,9 +33,18 @@ public final class EnvironmentFile extends FileElement {
     @JacksonXmlElementWrapper(localName = "heatSources")
     @JacksonXmlProperty(localName = "heat")
     public List<HeatXml> heatSources = new ArrayList<>();
+    public FloorXml floor;
+    @JacksonXmlElementWrapper(localName = "lights")
+    @JacksonXmlProperty(localName = "light")
+    public List<LightXml> lights = new ArrayList<>();
+    public ObjectsXml objects = new ObjectsXml();
     @JacksonXmlElementWrapper(localName = "robots")
     @JacksonXmlProperty(localName = "robot")
     public List<RobotXml> robots = new ArrayList<>();
+    /** Robots or objects placed at random or on a grid ({@code <distribute>}), after those the file places. */
+    @JacksonXmlElementWrapper(useWrapping = false)
+    @JacksonXmlProperty(localName = "distribute")
+    public List<DistributeXml> distribute = new ArrayList<>();
     @JacksonXmlElementWrapper(useWrapping = false)
     @JacksonXmlProperty(localName = "join")
     public List<JoinXml> joins = new ArrayList<>();
@@ -122,10 +131,15 @@ public final class EnvironmentFile extends FileElement {
         }
     }
 
-    /** {@code <rectangle name="wall" x="1" y="2" width="3" height="0.2"/>}: lower-left corner, metres. */
+    /**
+     * {@code <rectangle name="wall" x="1" y="2" width="3" height="0.2"/>}: lower-left corner, metres; on the floor, a
+     * painted region of its {@code colour}.
+     */
     public static final class RectangleXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public String colour;
         /** A robot's tag can hit it. */
         @JacksonXmlProperty(isAttribute = true)
         public Boolean taggable;
@@ -139,10 +153,12 @@ public final class EnvironmentFile extends FileElement {
         public Double height;
     }
 
-    /** {@code <polygon name="rock" points="1,1 2,1 1.5,2"/>}: vertices in metres. */
+    /** {@code <polygon name="rock" points="1,1 2,1 1.5,2"/>}: vertices in metres; on the floor, of its {@code colour}. */
     public static final class PolygonXml extends FileElement {
         @JacksonXmlProperty(isAttribute = true)
         public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public String colour;
         @JacksonXmlProperty(isAttribute = true)
         public Boolean taggable;
         @JacksonXmlProperty(isAttribute = true)
@@ -199,6 +215,167 @@ public final class EnvironmentFile extends FileElement {
         public void attribute(String key, String value) {
             attributes.put(key, value);
         }
+    }
+
+    /**
+     * {@code <floor colour="white" image="floor.png">} holding painted regions, {@code <rectangle>}, {@code <circle>}
+     * and {@code <polygon>} with a {@code colour} each, in any order (a later one over an earlier one); the image, a
+     * PNG beside the file, is stretched over the whole arena under them.
+     */
+    public static final class FloorXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true)
+        public String colour;
+        @JacksonXmlProperty(isAttribute = true)
+        public String image;
+        public final List<FileElement> regions = new ArrayList<>();
+
+        @JacksonXmlProperty(localName = "rectangle")
+        public void setRectangle(RectangleXml r) {
+            regions.add(r);
+        }
+
+        @JacksonXmlProperty(localName = "circle")
+        public void setCircle(CircleXml c) {
+            regions.add(c);
+        }
+
+        @JacksonXmlProperty(localName = "polygon")
+        public void setPolygon(PolygonXml p) {
+            regions.add(p);
+        }
+    }
+
+    /** {@code <circle x="1" y="2" radius="0.3" colour="black"/>}: a painted disc of the floor, metres. */
+    public static final class CircleXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true)
+        public Double x;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double y;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double radius;
+        @JacksonXmlProperty(isAttribute = true)
+        public String colour;
+    }
+
+    /** {@code <light name="lamp" x="1" y="2" height="1" colour="yellow" intensity="3" on="true"/>}: metres. */
+    public static final class LightXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true)
+        public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double x;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double y;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double height;
+        @JacksonXmlProperty(isAttribute = true)
+        public String colour;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double intensity;
+        @JacksonXmlProperty(isAttribute = true)
+        public Boolean on;
+    }
+
+    /** {@code <objects>} holding {@code <box>} and {@code <cylinder>} elements in any order, kept in file order. */
+    public static final class ObjectsXml {
+        public final List<ObjectXml> all = new ArrayList<>();
+
+        @JacksonXmlProperty(localName = "box")
+        public void setBox(BoxXml b) {
+            all.add(b);
+        }
+
+        @JacksonXmlProperty(localName = "cylinder")
+        public void setCylinder(CylinderXml c) {
+            all.add(c);
+        }
+    }
+
+    /** What a box and a cylinder both have: a name, a centre and heading, metres and degrees, and their physics. */
+    public abstract static class ObjectXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true)
+        public String name;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double x;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double y;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double heading;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double height;
+        /** kg; absent = 1. */
+        @JacksonXmlProperty(isAttribute = true)
+        public Double mass;
+        /** Coefficient of friction with the floor; absent = 0.5. */
+        @JacksonXmlProperty(isAttribute = true)
+        public Double friction;
+        @JacksonXmlProperty(isAttribute = true)
+        public Boolean movable;
+        @JacksonXmlProperty(isAttribute = true)
+        public Boolean gripable;
+        @JacksonXmlProperty(isAttribute = true)
+        public String colour;
+    }
+
+    /** {@code <box name="b1" x="1" y="2" width="0.3" depth="0.2" height="0.1" heading="30" movable="true"/>}. */
+    public static final class BoxXml extends ObjectXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public Double width;
+        @JacksonXmlProperty(isAttribute = true)
+        public Double depth;
+    }
+
+    /** {@code <cylinder name="c1" x="1" y="2" radius="0.1" height="0.2" movable="true" gripable="true"/>}. */
+    public static final class CylinderXml extends ObjectXml {
+        @JacksonXmlProperty(isAttribute = true)
+        public Double radius;
+    }
+
+    /**
+     * {@code <distribute>}: {@code <position method="uniform" min="x,y" max="x,y"/>} (or {@code gaussian mean= stdDev=},
+     * {@code grid center= distances= layout=}, {@code constant values=}), {@code <orientation method="uniform" min="0"
+     * max="360"/>} (or {@code gaussian mean= stdDev=}, {@code constant values=}) and {@code <entity quantity="10"
+     * maxTrials="100" baseNum="0">} holding one {@code <robot>}, {@code <box>} or {@code <cylinder>} whose name is the
+     * base of each one's ({@code fb} makes {@code fb0}, {@code fb1}, ...).
+     */
+    public static final class DistributeXml extends FileElement {
+        public MethodXml position;
+        public MethodXml orientation;
+        public EntityXml entity;
+    }
+
+    /** One way of drawing a distribution's positions or headings; the attributes its method reads. */
+    public static final class MethodXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true)
+        public String method;
+        @JacksonXmlProperty(isAttribute = true)
+        public String min;
+        @JacksonXmlProperty(isAttribute = true)
+        public String max;
+        @JacksonXmlProperty(isAttribute = true)
+        public String mean;
+        @JacksonXmlProperty(isAttribute = true)
+        public String stdDev;
+        @JacksonXmlProperty(isAttribute = true)
+        public String values;
+        @JacksonXmlProperty(isAttribute = true)
+        public String center;
+        @JacksonXmlProperty(isAttribute = true)
+        public String distances;
+        @JacksonXmlProperty(isAttribute = true)
+        public String layout;
+    }
+
+    /** A distribution's entities: how many, the tries each may take, and the one template they are made from. */
+    public static final class EntityXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true)
+        public Integer quantity;
+        @JacksonXmlProperty(isAttribute = true)
+        public Integer maxTrials;
+        @JacksonXmlProperty(isAttribute = true)
+        public Integer baseNum;
+        public RobotXml robot;
+        public BoxXml box;
+        public CylinderXml cylinder;
     }
 
     /** {@code <heat name="fire" x="5" y="3" intensity="10"/>}: metres; intensity is the reading at the source. */

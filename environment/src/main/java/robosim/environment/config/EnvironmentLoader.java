@@ -17,9 +17,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
-import org.locationtech.jts.geom.Coordinate;
-import org.locationtech.jts.geom.Geometry;
-import org.locationtech.jts.geom.GeometryFactory;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.Parameters;
 import robosim.environment.core.WorldSpec;
@@ -27,6 +24,8 @@ import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.Arena;
 import robosim.protocol.ControlScripts;
 import robosim.protocol.Limits;
+import robosim.protocol.Scenery;
+import robosim.protocol.WorldObject;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.Printable;
 
@@ -49,7 +48,6 @@ public final class EnvironmentLoader {
     /** The largest environment file, bytes (a 1000-robot world is about 100 KB). */
     public static final int MAX_FILE_BYTES = 16 * 1024 * 1024;
 
-    private final GeometryFactory jts = new GeometryFactory();
     /** {@code <robot join="any-time">}: not waited for at the start; it may join the running world. */
     static final String ANY_TIME = "any-time";
 
@@ -92,7 +90,7 @@ public final class EnvironmentLoader {
         EnvironmentFile xml = bind(faults, replaced.text());
         scriptsFrom(xml, file.toAbsolutePath().getParent());
         Parameters parameters = parameters(faults, xml, replaced.names(), given);
-        return check(where, faults, xml, parameters); // (which throws every fault recorded, the parameters' too)
+        return check(where, faults, xml, parameters, file.toAbsolutePath().getParent()); // (throws every fault)
     }
 
     /** Each robot's and join rule's control script ({@code python:PATH}) made absolute: a relative path is the file's folder's. */
@@ -206,7 +204,7 @@ public final class EnvironmentLoader {
     }
 
     /** The world the file describes; or, when a fault has been recorded (here or before), every fault thrown. */
-    private WorldSpec check(String where, FileFaults faults, EnvironmentFile xml, Parameters parameters)
+    private WorldSpec check(String where, FileFaults faults, EnvironmentFile xml, Parameters parameters, Path folder)
             throws EnvironmentFileException {
         String env = "<environment>";
         if (xml.timeStepMs == null) {
@@ -222,7 +220,10 @@ public final class EnvironmentLoader {
         if (!(tagRange > 0) || Double.isInfinite(tagRange)) {
             faults.add(xml.at, env + " tagRangeM must be > 0 m, got " + tagRange);
         }
-        Robots robots = robots(faults, xml, arena, obstacles.shapes());
+        Placement placed = new Placement(arena, obstacles.shapes());
+        Set<String> thingNames = new HashSet<>(obstacles.names());
+        List<WorldObject> objects = SceneryReader.objects(faults, xml, placed, thingNames);
+        Robots robots = robots(faults, xml, placed);
         if (!xml.robots.isEmpty() && xml.robots.stream().allMatch(r -> ANY_TIME.equals(r.join))) {
             faults.add(xml.at, "<robots> must name at least one <robot> there from the start (without "
                     + "join=\"any-time\")");
@@ -242,9 +243,11 @@ public final class EnvironmentLoader {
             faults.add(xml.at, env + " maxMessageBytes must be in 1.." + Limits.MAX_UTF_BYTES + ", got " + maxBytes);
         }
         List<robosim.devices.HeatSource> heat = heatSources(faults, xml);
+        Scenery scenery = new Scenery(SceneryReader.floor(faults, xml, folder), SceneryReader.lights(faults, xml),
+                objects);
         faults.throwIfAny();
         return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles.shapes(), robots.fromStart(), range,
-                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters);
+                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters, scenery);
     }
 
     /** The arena, mm; null, its fault recorded, when it is missing or at fault. */
@@ -292,18 +295,14 @@ public final class EnvironmentLoader {
     }
 
     /**
-     * Every robot whose radius and pose could be read, each checked where it stands (inside the arena unless that is at
-     * fault, clear of the obstacles and of the robots before it); the others' faults recorded.
+     * Every robot whose radius and pose could be read, each checked where it stands against what was placed before it
+     * (inside the arena unless that is at fault, clear of the obstacles, the objects and the robots before it); the
+     * others' faults recorded.
      */
-    private Robots robots(FileFaults faults, EnvironmentFile xml, Arena arena, List<ObstacleShape> obstacles) {
+    private Robots robots(FileFaults faults, EnvironmentFile xml, Placement placed) {
         if (xml.robots.isEmpty()) {
             faults.add(xml.at, "<robots> must name at least one <robot>");
         }
-        List<Geometry> walls = new ArrayList<>();
-        for (ObstacleShape o : obstacles) {
-            walls.add(robosim.environment.core.Obstacles.polygon(o));
-        }
-        List<RobotSpec> placed = new ArrayList<>();
         Robots out = new Robots(new ArrayList<>(), new ArrayList<>());
         Set<String> names = new HashSet<>();
         for (int i = 0; i < xml.robots.size(); i++) {
@@ -338,42 +337,23 @@ public final class EnvironmentLoader {
                 continue; // (where it stands cannot be checked)
             }
             robot = robot.at(x * MM_PER_M, y * MM_PER_M, robosim.geometry.Kinematics.turn(heading, 0));
-            place(faults, r, el, robot, arena, walls, obstacles, placed);
+            String over = placed.overlapOfDisc(robot.xMm(), robot.yMm(), robot.radiusMm());
+            if (over != null) {
+                faults.add(r.at, el + placeFault(over, r.x, r.y, robot.radiusMm()));
+            }
             if (named) {
-                placed.add(robot);
+                placed.addRobot(robot.name(), robot.xMm(), robot.yMm(), robot.radiusMm());
             }
             (anyTime ? out.anyTime() : out.fromStart()).add(robot);
         }
         return out;
     }
 
-    /**
-     * Records where {@code robot} stands at fault: outside the arena (unless that is at fault), over an obstacle, over
-     * a robot placed before it (the first of each).
-     */
-    private void place(FileFaults faults, EnvironmentFile.RobotXml r, String el, RobotSpec robot, Arena arena,
-            List<Geometry> walls, List<ObstacleShape> obstacles, List<RobotSpec> placed) {
-        double x = robot.xMm();
-        double y = robot.yMm();
-        double rad = robot.radiusMm();
-        if (arena != null && (x - rad < arena.minXMm() || x + rad > arena.maxXMm() || y - rad < arena.minYMm()
-                || y + rad > arena.maxYMm())) {
-            faults.add(r.at, el + " at (" + r.x + ", " + r.y + ") m does not fit inside the arena (radius "
-                    + rad / MM_PER_M + " m)");
+    /** What a fault says after the element of a robot that does not fit where it stands ({@link Placement}). */
+    static String placeFault(String over, Double x, Double y, double radiusMm) {
+        if (over.equals("the arena's edge")) {
+            return " at (" + x + ", " + y + ") m does not fit inside the arena (radius " + radiusMm / MM_PER_M + " m)";
         }
-        Geometry body = jts.createPoint(new Coordinate(x, y));
-        for (int o = 0; o < walls.size(); o++) {
-            if (walls.get(o).distance(body) < rad) {
-                faults.add(r.at, el + " at (" + r.x + ", " + r.y + ") m overlaps obstacle \"" + obstacles.get(o).name()
-                        + "\"");
-                break;
-            }
-        }
-        for (RobotSpec other : placed) {
-            if (Math.hypot(other.xMm() - x, other.yMm() - y) < rad + other.radiusMm()) {
-                faults.add(r.at, el + " overlaps robot \"" + FileFaults.cut(other.name()) + "\"");
-                break;
-            }
-        }
+        return over.startsWith("robot") ? " overlaps " + over : " at (" + x + ", " + y + ") m overlaps " + over;
     }
 }

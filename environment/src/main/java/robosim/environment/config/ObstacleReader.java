@@ -14,8 +14,11 @@ import robosim.protocol.ObstacleShape;
 final class ObstacleReader {
     private static final double MM_PER_M = 1000.0;
 
-    /** The obstacles that could be read, in file order, and the names of those a robot's tag can hit. */
-    record Obstacles(List<ObstacleShape> shapes, Set<String> taggable) {
+    /**
+     * The obstacles that could be read, in file order, the names of those a robot's tag can hit, and every name the
+     * obstacles take (objects may not take them too).
+     */
+    record Obstacles(List<ObstacleShape> shapes, Set<String> taggable, Set<String> names) {
     }
 
     private ObstacleReader() {
@@ -52,15 +55,22 @@ final class ObstacleReader {
             String name;
             ObstacleShape shape;
             Boolean tag;
+            String colour;
             if (o instanceof EnvironmentFile.RectangleXml r) {
                 name = nameOr(r.name, i);
                 shape = rectangle(faults, r, name);
                 tag = r.taggable;
+                colour = r.colour;
             } else {
                 EnvironmentFile.PolygonXml p = (EnvironmentFile.PolygonXml) o;
                 name = nameOr(p.name, i);
                 shape = polygon(faults, p, name);
                 tag = p.taggable;
+                colour = p.colour;
+            }
+            if (colour != null) {
+                faults.add(o.at, "obstacle \"" + FileFaults.cut(name) + "\" takes no colour (a region of the <floor> "
+                        + "does)");
             }
             if (!names.add(name)) {
                 faults.add(o.at, "obstacle name \"" + FileFaults.cut(name) + "\" is used twice");
@@ -72,7 +82,7 @@ final class ObstacleReader {
                 }
             }
         }
-        return new Obstacles(out, taggable);
+        return new Obstacles(out, taggable, names);
     }
 
     private static ObstacleShape rectangle(FileFaults faults, EnvironmentFile.RectangleXml r, String name) {
@@ -108,7 +118,7 @@ final class ObstacleReader {
     }
 
     /** The polygon's points, mm; null, its fault recorded, when they are not 3 or more pairs x,y of finite numbers. */
-    private static double[] points(FileFaults faults, EnvironmentFile.PolygonXml p, String el) {
+    static double[] points(FileFaults faults, EnvironmentFile.PolygonXml p, String el) {
         if (p.points == null || p.points.isBlank()) {
             faults.add(p.at, el + " needs points=\"x1,y1 x2,y2 x3,y3 ...\" (metres)");
             return null;

@@ -5,12 +5,13 @@ import java.util.List;
 import robosim.protocol.GeometryWorld;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RobotProperties;
+import robosim.protocol.WorldObject;
 import robosim.protocol.WorldSnapshot;
 
 /**
  * The world as it stands: the static map from the file, every robot's properties (from its
- * handshake) and its current pose (world mm, degrees). Answers snapshots for viewers and the world
- * description for Geometry. Owned by {@link SimulationCore}.
+ * handshake) and its current pose (world mm, degrees), every object's pose and the robot carrying it, if one does.
+ * Answers snapshots for viewers and the world description for Geometry. Owned by {@link SimulationCore}.
  */
 public final class EnvironmentMap {
     private WorldSpec spec;
@@ -18,6 +19,11 @@ public final class EnvironmentMap {
     private double[] x;
     private double[] y;
     private double[] heading;
+    private final double[] objectX;
+    private final double[] objectY;
+    private final double[] objectHeading;
+    /** The robot carrying each object, or -1. */
+    private final int[] carrier;
 
     EnvironmentMap(WorldSpec spec, List<RobotProperties> properties) {
         if (properties.size() != spec.robots().size()) {
@@ -35,6 +41,18 @@ public final class EnvironmentMap {
             x[i] = r.xMm();
             y[i] = r.yMm();
             heading[i] = r.headingDeg();
+        }
+        List<WorldObject> objects = spec.scenery().objects();
+        int m = objects.size();
+        objectX = new double[m];
+        objectY = new double[m];
+        objectHeading = new double[m];
+        carrier = new int[m];
+        for (int o = 0; o < m; o++) {
+            objectX[o] = objects.get(o).xMm();
+            objectY[o] = objects.get(o).yMm();
+            objectHeading[o] = objects.get(o).headingDeg();
+            carrier[o] = -1;
         }
     }
 
@@ -109,14 +127,64 @@ public final class EnvironmentMap {
         heading[robot] = headingDeg;
     }
 
-    /** The robots' poses as a new immutable update, labelled with {@code step}. */
-    public PoseUpdate poses(long step) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), null, List.of(), departed, held);
+    public int objectCount() {
+        return objectX.length;
     }
 
-    /** As {@link #poses}, with each robot's sonar ranges of that step (taken as they are). */
-    PoseUpdate poses(long step, double[][] sonarMm, List<String> tags) {
-        return new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags, departed, held);
+    public double objectXMm(int object) {
+        return objectX[object];
+    }
+
+    public double objectYMm(int object) {
+        return objectY[object];
+    }
+
+    public double objectHeadingDeg(int object) {
+        return objectHeading[object];
+    }
+
+    /** The robot carrying object {@code object}, or -1. */
+    public int carrier(int object) {
+        return carrier[object];
+    }
+
+    /** The object robot {@code robot} carries, or -1. */
+    public int carried(int robot) {
+        for (int o = 0; o < carrier.length; o++) {
+            if (carrier[o] == robot) {
+                return o;
+            }
+        }
+        return -1;
+    }
+
+    void setObjectPose(int object, double xMm, double yMm, double headingDeg) {
+        objectX[object] = xMm;
+        objectY[object] = yMm;
+        objectHeading[object] = headingDeg;
+    }
+
+    /** Object {@code object} is now carried by robot {@code robot} (-1: by none). */
+    void carry(int object, int robot) {
+        carrier[object] = robot;
+    }
+
+    /** The robots' poses (and the objects') as a new immutable update, labelled with {@code step}. */
+    public PoseUpdate poses(long step) {
+        return scene(new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), null, List.of(), departed, held),
+                null);
+    }
+
+    /** As {@link #poses}, with each robot's sonar ranges of that step and its LEDs (each taken as it is). */
+    PoseUpdate poses(long step, double[][] sonarMm, List<String> tags, int[][] leds) {
+        return scene(new PoseUpdate(step, x.clone(), y.clone(), heading.clone(), sonarMm, tags, departed, held), leds);
+    }
+
+    private PoseUpdate scene(PoseUpdate robots, int[][] leds) {
+        if (objectX.length == 0 && leds == null) {
+            return robots;
+        }
+        return robots.withScene(objectX.clone(), objectY.clone(), objectHeading.clone(), leds);
     }
 
     private List<String> departed = List.of();
@@ -167,7 +235,7 @@ public final class EnvironmentMap {
         for (WorldSpec.RobotSpec r : spec.robots()) {
             names.add(r.name());
         }
-        return new GeometryWorld(spec.arena(), spec.obstacles(), names, properties);
+        return new GeometryWorld(spec.arena(), spec.obstacles(), names, properties, spec.scenery().objects());
     }
 
     public WorldSnapshot snapshot(long step) {
@@ -180,6 +248,7 @@ public final class EnvironmentMap {
         for (int i = 0; i < properties.size(); i++) {
             names.add(spec.robots().get(i).name());
         }
-        return new WorldSnapshot(spec.timeStepMs(), spec.arena(), spec.obstacles(), names, properties, poses);
+        return new WorldSnapshot(spec.timeStepMs(), spec.arena(), spec.obstacles(), names, properties, poses,
+                spec.scenery());
     }
 }

@@ -1,5 +1,6 @@
 package robosim.environment.core;
 
+import robosim.protocol.Arena;
 import robosim.protocol.GeometryStepRequest;
 import robosim.protocol.GeometryStepResponse;
 import robosim.protocol.ProtocolException;
@@ -7,8 +8,9 @@ import robosim.protocol.ProtocolException;
 /**
  * Checks Geometry's answer to one step before any of it is used: the step and robot count asked,
  * finite distances no longer than asked (Geometry only ever shortens a motion), contacts that name a
- * robot, obstacle or the arena that exists, and exactly the sonar ranges asked for, each finite and
- * not negative. An answer from another process is hostile until proven otherwise.
+ * robot, obstacle, object or the arena that exists, exactly the sonar ranges and proximity rays asked for, each finite
+ * and not negative, every object's pose finite and inside the arena, and a catch only for a robot that asked to grip,
+ * of an object that exists. An answer from another process is hostile until proven otherwise.
  */
 final class GeometryAnswerCheck {
     private static final double SLACK = 1e-6;
@@ -18,16 +20,20 @@ final class GeometryAnswerCheck {
 
     /**
      * @param sonars robot i's sonar count
+     * @param rays robot i's proximity ray count
      * @throws ProtocolException naming what is wrong
      */
-    static void check(GeometryStepRequest asked, GeometryStepResponse answer, int[] sonars, int obstacles)
-            throws ProtocolException {
+    static void check(GeometryStepRequest asked, GeometryStepResponse answer, int[] sonars, int[] rays, int obstacles,
+            Arena arena) throws ProtocolException {
         int robots = sonars.length;
-        if (answer.step() != asked.step() || answer.count() != robots) {
+        int objects = asked.objectCount();
+        if (answer.step() != asked.step() || answer.count() != robots || answer.objectCount() != objects) {
             throw new ProtocolException("geometry answered step " + answer.step() + " for " + answer.count()
-                    + " robots, expected step " + asked.step() + " for " + robots);
+                    + " robots and " + answer.objectCount() + " objects, expected step " + asked.step() + " for "
+                    + robots + " and " + objects);
         }
         int ranges = 0;
+        int rayTotal = 0;
         for (int i = 0; i < robots; i++) {
             double moved = answer.movedMm(i);
             double turned = answer.turnedDeg(i);
@@ -41,6 +47,7 @@ final class GeometryAnswerCheck {
                 case GeometryStepResponse.CONTACT_NONE, GeometryStepResponse.CONTACT_ARENA -> true;
                 case GeometryStepResponse.CONTACT_ROBOT -> index >= 0 && index < robots && index != i;
                 case GeometryStepResponse.CONTACT_OBSTACLE -> index >= 0 && index < obstacles;
+                case GeometryStepResponse.CONTACT_OBJECT -> index >= 0 && index < objects;
                 default -> false;
             };
             if (!contactOk) {
@@ -50,16 +57,45 @@ final class GeometryAnswerCheck {
             if (asked.wantsSonar(i)) {
                 ranges += sonars[i];
             }
+            if (asked.wantsRays(i)) {
+                rayTotal += rays[i];
+            }
         }
-        if (answer.rangeCount() != ranges) {
-            throw new ProtocolException("geometry returned " + answer.rangeCount() + " sonar ranges, expected "
-                    + ranges);
+        if (answer.rangeCount() != ranges || answer.rayCount() != rayTotal) {
+            throw new ProtocolException("geometry returned " + answer.rangeCount() + " sonar ranges and "
+                    + answer.rayCount() + " rays, expected " + ranges + " and " + rayTotal);
         }
         for (int r = 0; r < ranges; r++) {
             double mm = answer.rangeMm(r);
             if (!(mm >= 0) || Double.isInfinite(mm)) {
                 throw new ProtocolException("geometry returned sonar range " + mm + " mm");
             }
+        }
+        for (int r = 0; r < rayTotal; r++) {
+            double mm = answer.rayMm(r);
+            if (!(mm >= 0) || Double.isInfinite(mm)) {
+                throw new ProtocolException("geometry returned ray range " + mm + " mm");
+            }
+        }
+        for (int o = 0; o < objects; o++) {
+            double x = answer.objectXMm(o);
+            double y = answer.objectYMm(o);
+            if (!(x >= arena.minXMm() && x <= arena.maxXMm() && y >= arena.minYMm() && y <= arena.maxYMm())
+                    || !Double.isFinite(answer.objectHeadingDeg(o))) {
+                throw new ProtocolException("geometry put object " + o + " at (" + x + ", " + y + ") heading "
+                        + answer.objectHeadingDeg(o) + ", outside the arena or not a pose");
+            }
+        }
+        int last = -1;
+        for (int k = 0; k < answer.gripCount(); k++) {
+            int robot = answer.gripRobot(k);
+            int object = answer.gripObject(k);
+            if (robot <= last || robot >= robots || !asked.wantsGrip(robot) || object < -1 || object >= objects
+                    || (object >= 0 && asked.carrier(object) >= 0)) {
+                throw new ProtocolException("geometry gave robot " + robot + " object " + object
+                        + " to grip, which it did not ask for or cannot have");
+            }
+            last = robot;
         }
     }
 }

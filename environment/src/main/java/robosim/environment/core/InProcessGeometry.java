@@ -13,7 +13,8 @@ public final class InProcessGeometry implements SimulationCore.Geometry {
     private final GeometryStepResponse response;
 
     public InProcessGeometry(GeometryWorld world) {
-        this.engine = new GeometryEngine(new StaticWorld(world.arena(), world.obstacles()), List.copyOf(world.robots()));
+        this.engine = new GeometryEngine(world, Runtime.getRuntime().availableProcessors() > 1
+                ? GeometryEngine.DEFAULT_PARALLEL_FROM : 0);
         this.response = engine.newResponse();
     }
 

@@ -48,6 +48,7 @@ public final class SimulationCore {
     private double[] maxMoveMm;
     private double[] maxTurnDeg;
     private int[] sonarCount;
+    private int[] rayCount;
     private GeometryStepRequest geometryRequest;
     private StepResponse[] responses;
     /** The requests of the step gathered and not yet completed. */
@@ -87,10 +88,11 @@ public final class SimulationCore {
         this.maxMoveMm = new double[robots];
         this.maxTurnDeg = new double[robots];
         this.sonarCount = new int[robots];
+        this.rayCount = new int[robots];
         for (int i = 0; i < robots; i++) {
             limits(i, properties.get(i));
         }
-        this.geometryRequest = new GeometryStepRequest(robots);
+        this.geometryRequest = new GeometryStepRequest(robots, map.objectCount());
         this.responses = new StepResponse[robots];
         this.tally = Double.isNaN(areaCellM) ? null : new MetricTally(new RunStart(spec.arena(), areaCellM, released));
     }
@@ -100,6 +102,7 @@ public final class SimulationCore {
         maxMoveMm[i] = Drive.perStep(p.maxSpeedMmPerS(), seconds);
         maxTurnDeg[i] = Drive.perStep(p.maxTurnDegPerS(), seconds);
         sonarCount[i] = p.sonars().size();
+        rayCount[i] = p.rays().size();
     }
 
     /**
@@ -117,8 +120,9 @@ public final class SimulationCore {
         maxMoveMm = java.util.Arrays.copyOf(maxMoveMm, robots);
         maxTurnDeg = java.util.Arrays.copyOf(maxTurnDeg, robots);
         sonarCount = java.util.Arrays.copyOf(sonarCount, robots);
+        rayCount = java.util.Arrays.copyOf(rayCount, robots);
         limits(i, p);
-        geometryRequest = new GeometryStepRequest(robots);
+        geometryRequest = new GeometryStepRequest(robots, map.objectCount());
         StepResponse[] more = java.util.Arrays.copyOf(responses, robots);
         more[i] = new StepResponse(lastStep, 0, 0, "", robot.xMm(), robot.yMm(), robot.headingDeg(),
                 StepSensing.none(), List.of(), List.of());
@@ -201,12 +205,14 @@ public final class SimulationCore {
         if (pending == null) {
             throw new IllegalStateException("no step waits for an answer");
         }
-        GeometryAnswerCheck.check(geometryRequest, g, sonarCount, map.spec().obstacles().size());
+        GeometryAnswerCheck.check(geometryRequest, g, sonarCount, rayCount, map.spec().obstacles().size(),
+                map.spec().arena());
         StepRequest[] requests = pending;
         pending = null;
         lastRequests = requests;
         long k = geometryRequest.step();
         apply(g);
+        sensing.objectsMoved();
         String[] tagged = tag(requests);
         senseAndRespond(k, g, requests, tagged);
         lastStep = k;
@@ -237,16 +243,30 @@ public final class SimulationCore {
                 geometryRequest.setAbsent(i);
             }
         }
+        for (int o = 0; o < map.objectCount(); o++) {
+            geometryRequest.setObject(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o), map.carrier(o));
+        }
         pending = requests;
         return geometryRequest;
     }
 
-    /** Apply: each robot's pose from the distance moved and the angle turned that Geometry returns. */
+    /**
+     * Apply: each robot's pose from the distance moved and the angle turned that Geometry returns, each object's pose
+     * as Geometry returns it, and what each gripper took.
+     */
     private void apply(GeometryStepResponse g) {
         for (int i = 0; i < robots; i++) {
             double h = Kinematics.turn(map.headingDeg(i), g.turnedDeg(i));
             double moved = g.movedMm(i);
             map.setPose(i, map.xMm(i) + Kinematics.dx(h, moved), map.yMm(i) + Kinematics.dy(h, moved), h);
+        }
+        for (int o = 0; o < map.objectCount(); o++) {
+            map.setObjectPose(o, g.objectXMm(o), g.objectYMm(o), g.objectHeadingDeg(o));
+        }
+        for (int k = 0; k < g.gripCount(); k++) {
+            if (g.gripObject(k) >= 0) {
+                map.carry(g.gripObject(k), g.gripRobot(k));
+            }
         }
     }
 
@@ -308,6 +328,7 @@ public final class SimulationCore {
             case GeometryStepResponse.CONTACT_ROBOT -> map.name(index);
             case GeometryStepResponse.CONTACT_OBSTACLE -> map.spec().obstacles().get(index).name();
             case GeometryStepResponse.CONTACT_ARENA -> "arena";
+            case GeometryStepResponse.CONTACT_OBJECT -> map.spec().scenery().objects().get(index).name();
             default -> "";
         };
     }
@@ -321,7 +342,7 @@ public final class SimulationCore {
         for (int i = 0; i < robots; i++) {
             sonar[i] = responses[i].sonarMm();
         }
-        return map.poses(lastStep, sonar, tags);
+        return map.poses(lastStep, sonar, tags, null);
     }
 
     /** Every tag so far, "tagger>target", oldest first. */

@@ -5,6 +5,7 @@ import java.util.List;
 import robosim.devices.RobotSensor;
 import robosim.devices.Sensors;
 import robosim.devices.SonarSensor;
+import robosim.geometry.ObjectLayer;
 import robosim.geometry.StaticWorld;
 import robosim.geometry.WorldQueries;
 import robosim.protocol.GeometryStepResponse;
@@ -23,6 +24,8 @@ final class StepSensing {
 
     private final EnvironmentMap map;
     private final WorldQueries queries;
+    /** The objects where the map has them, for the queries (kept there by {@link #objectsMoved}). */
+    private final ObjectLayer things;
     private final SensedWorld world;
     private SonarSensor[] sonars;
     private RobotSensor[][] sensors;
@@ -39,7 +42,8 @@ final class StepSensing {
         for (int i = 0; i < robots; i++) {
             equip(i, spec.robots().get(i), properties.get(i));
         }
-        this.queries = new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles()));
+        this.things = new ObjectLayer(spec.scenery().objects());
+        this.queries = new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles()), things);
         this.world = new SensedWorld(queries, spec.heatSources(), map, sensorRadius, spec.seed());
     }
 
@@ -63,6 +67,13 @@ final class StepSensing {
         sensorRadius = java.util.Arrays.copyOf(sensorRadius, i + 1);
         equip(i, robot, p);
         world.radii(sensorRadius);
+    }
+
+    /** The step's objects stand where the map has them now. */
+    void objectsMoved() {
+        for (int o = 0; o < things.count(); o++) {
+            things.place(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o));
+        }
     }
 
     /** A robot that has left can no longer be sensed: its disc never meets a query. */

@@ -5,6 +5,7 @@ import java.util.Map;
 import robosim.devices.HeatSource;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
+import robosim.protocol.Scenery;
 
 /**
  * An environment as loaded from its file, in world millimetres and degrees: immutable.
@@ -13,11 +14,12 @@ import robosim.protocol.ObstacleShape;
  * @param commRangeMm how far a COMMEVENT carries, centre to centre; 0 = everywhere
  * @param maxMessageBytes the largest payload a robot may send (modified UTF-8 bytes)
  * @param parameters what the file gives the control code ({@code <param>})
+ * @param scenery its floor, lights and objects
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
         List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
         List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
-        Parameters parameters) {
+        Parameters parameters, Scenery scenery) {
     /** How far a tag reaches from the robot's rim by default, mm. */
     public static final double DEFAULT_TAG_RANGE_MM = 1000;
     /** A tag hits only what lies within this many degrees of the heading. */
@@ -46,6 +48,16 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         taggable = java.util.Set.copyOf(taggable);
         joins = List.copyOf(joins);
         java.util.Objects.requireNonNull(parameters, "parameters");
+        java.util.Objects.requireNonNull(scenery, "scenery");
+    }
+
+    /** Without floor, lights and objects. */
+    public WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
+            List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
+            List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
+            Parameters parameters) {
+        this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, heatSources,
+                tagRangeMm, taggable, joins, parameters, Scenery.NONE);
     }
 
     /** Without parameters. */
@@ -69,25 +81,25 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         List<RobotSpec> more = new java.util.ArrayList<>(robots);
         more.add(robot);
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, more, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery);
     }
 
     /** This world with {@code others} for its robots (the same robots elsewhere: a learning episode's start). */
     public WorldSpec withRobots(List<RobotSpec> others) {
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, others, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery);
     }
 
     /** This world with another seed (a sweep's, or {@code --seed}'s). */
     public WorldSpec withSeed(long newSeed) {
         return new WorldSpec(source, name, timeStepMs, newSeed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery);
     }
 
     /** This world with other parameters for its control code (a test's, in code). */
     public WorldSpec withParameters(Parameters newParameters) {
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, newParameters);
+                heatSources, tagRangeMm, taggable, joins, newParameters, scenery);
     }
 
     /** Robots the join rules let take part at once, counted up to {@link #JOINABLE_CAP} (for connection and queue caps). */

@@ -71,7 +71,8 @@ class GeometryAnswerCheckTest {
     @Test
     void theWrongStepOrTooFewSonarRangesOrANegativeRangeAreRefused() throws Exception {
         refused(g -> g.begin(7), "step 7");
-        refused(g -> g.begin(0), "0 sonar ranges, expected " + robosim.devices.RobotTypes.properties("ArRobot").sonars().size());
+        refused(g -> g.begin(0), "0 sonar ranges and 0 rays, expected "
+                + robosim.devices.RobotTypes.properties("ArRobot").sonars().size() + " and 0");
         refused(g -> {
             g.begin(0);
             for (int s = 0; s < robosim.devices.RobotTypes.properties("ArRobot").sonars().size(); s++) {
