@@ -153,6 +153,52 @@ class Robot:
         """What it last touched, or ""."""
         return str(self.call("last_contact"))
 
+    # ---- wheels, LEDs, the gripper, range and bearing, actuators ---------------------------------------------
+
+    def set_wheel_speeds(self, left_mm_per_s: float, right_mm_per_s: float) -> None:
+        """Drives on its wheels (mm/s, positive forward), held until set again: time passes with them in ``step``,
+        ``sleep`` and ``wait_for_message``; ``move`` and ``turn`` drive by their own velocities."""
+        self.call("set_wheel_speeds", left_mm_per_s, right_mm_per_s)
+
+    def step(self) -> None:
+        """One time step passes, the robot driving on its wheels as set (standing still at 0 and 0)."""
+        self.call("step")
+
+    def actuator_names(self) -> list[str]:
+        return [str(a) for a in self.call("actuator_names")]
+
+    def actuate(self, name: str, values: Sequence[float]) -> None:
+        """Sets actuator ``name`` to ``values`` from the next step on (values it cannot take: RobotValueError)."""
+        self.call("actuate", name, [float(v) for v in values])
+
+    def led_count(self) -> int:
+        return int(self.call("led_count"))
+
+    def set_leds(self, colour: int | str) -> None:
+        """Every LED to ``colour``: ``0xRRGGBB``, or a text: a name (``"red"``, ``"gray50"``), ``"#rrggbb"``,
+        ``"r,g,b"``; black is off."""
+        self.call("set_leds", colour)
+
+    def set_led(self, index: int, colour: int | str) -> None:
+        """LED ``index`` to ``colour``, the others as they are."""
+        self.call("set_led", int(index), colour)
+
+    def set_rab_data(self, data: Sequence[int]) -> None:
+        """The bytes its range-and-bearing device sends every step from the next on (each 0 to 255)."""
+        self.call("set_rab_data", [int(b) for b in data])
+
+    def grip(self) -> str:
+        """Takes the nearest gripable object touching its front (one step): its name, or "" if none was in reach."""
+        return str(self.call("grip"))
+
+    def release(self) -> None:
+        """Lets go of what it holds (one step)."""
+        self.call("release")
+
+    def gripped(self) -> str:
+        """The object it holds, or ""."""
+        return str(self.call("gripped"))
+
     # ---- messages ------------------------------------------------------------------------------------------
 
     def send(self, to: str, text: str) -> None:

@@ -26,4 +26,14 @@ public final class Drive {
     public static double piece(double remaining, double ratePerS, double stepSeconds) {
         return Math.copySign(Math.min(Math.abs(remaining), perStep(ratePerS, stepSeconds)), remaining);
     }
+
+    /**
+     * One step of a differential drive with its wheels at {@code leftMmPerS} and {@code rightMmPerS}, {@code wheelBaseMm}
+     * apart: the turn, degrees (it turns at {@code (right - left) / wheelBase} radians a second), and the move after
+     * it, mm ({@code (left + right) / 2} a second), as a step turns and then moves.
+     */
+    public static double[] wheels(double leftMmPerS, double rightMmPerS, double wheelBaseMm, double stepSeconds) {
+        return new double[] {Math.toDegrees((rightMmPerS - leftMmPerS) / wheelBaseMm) * stepSeconds,
+            (leftMmPerS + rightMmPerS) / 2 * stepSeconds};
+    }
 }

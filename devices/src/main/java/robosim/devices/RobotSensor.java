@@ -1,5 +1,7 @@
 package robosim.devices;
 
+import robosim.protocol.RobotProperties;
+
 /**
  * A kind of sensor: one class, which declares what it is ({@link SensorInfo}: its name, its file attributes, its
  * values, whether the Geometry process computes it), reads its attributes ({@link #configure}), says the shape of its
@@ -31,6 +33,14 @@ public abstract class RobotSensor {
      * none.
      */
     protected void configure(Attributes attributes) {
+    }
+
+    /**
+     * Takes the body it is mounted on ({@code robot}: its radius, height, rays), after {@link #configure}; null when
+     * it is not known (a robot type of one's own, named by its class, before it says hello): then the sensor assumes
+     * a body as its attributes or its defaults say. The default ignores it.
+     */
+    protected void mount(RobotProperties robot) {
     }
 
     /** The values it gives each step, as configured: how many, their range, their unit. */

@@ -1,6 +1,7 @@
 package robosim.devices;
 
 import java.util.List;
+import robosim.protocol.Light;
 
 /**
  * What a sensor may ask about the world, aimed at one robot at a time, on the world after every move of the step:
@@ -34,6 +35,40 @@ public interface SensorContext {
 
     /** The range the Geometry process measured along the robot's sonar {@code sonar} this step, mm. */
     double sonarRange(int sonar);
+
+    /** The range the Geometry process measured along the robot's proximity ray {@code ray} this step, mm. */
+    double rayRange(int ray);
+
+    /** The floor's colour at world point (x, y), {@code 0xRRGGBB}. */
+    int floorColour(double xMm, double yMm);
+
+    /** The world's lights. */
+    List<Light> lights();
+
+    /**
+     * True when the straight line from the robot's centre, {@code fromZMm} over the floor, to the point (x, y)
+     * {@code zMm} over the floor passes nothing as tall as the line where it passes: no obstacle, no object or robot
+     * taller there (the robot itself and robot {@code other}, -1 for none, aside).
+     */
+    boolean sight(double fromZMm, double xMm, double yMm, double zMm, int other);
+
+    /**
+     * Every lit LED of the other robots whose centre lies within {@code rangeMm} of this robot's, to {@code visitor}
+     * (which robot, where the LED is in the world, its colour), the robots in world order. Found through an index of
+     * the step's LEDs made once a step, whichever robot asks first.
+     */
+    void leds(double rangeMm, LedVisitor visitor);
+
+    /** What {@link #leds} tells of each lit LED. */
+    interface LedVisitor {
+        void led(int robot, double xMm, double yMm, double zMm, int rgb);
+    }
+
+    /**
+     * The range-and-bearing messages the robot received this step (the medium worked out once a step, whichever robot
+     * asks first), nearest first.
+     */
+    List<RabMessage> rabReceived();
 
     /**
      * The next Gaussian (mean 0, deviation 1) of the world's one seeded generator: the only source of a sensor's

@@ -1,5 +1,7 @@
 package robosim.devices;
 
+import robosim.protocol.RobotProperties;
+
 import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
@@ -86,19 +88,24 @@ public final class Sensors {
     }
 
     /**
-     * A configured sensor of {@code type}: a registered sensor's name, or a RobotSensor class name. Anything wrong
-     * (an unknown type, a sensor the Geometry process computes, a class that is not a RobotSensor, a bad or unknown
-     * attribute) is an IllegalArgumentException whose message says what. A class named in a file is checked to be a
-     * {@link RobotSensor} before it is initialised: a class that is not one never runs its static initialiser.
+     * A configured sensor of {@code type}: a registered sensor's name, or a RobotSensor class name, mounted on
+     * {@code robot} (null: not known). Anything wrong (an unknown type, a class that is not a RobotSensor, a bad or
+     * unknown attribute) is an IllegalArgumentException whose message says what. A class named in a file is checked to
+     * be a {@link RobotSensor} before it is initialised: a class that is not one never runs its static initialiser.
      */
+    public static RobotSensor create(String type, Map<String, String> attributes, RobotProperties robot) {
+        return created(type, attributes, robot);
+    }
+
+    /** As {@link #create(String, Map, RobotProperties)} on a body not known. */
     public static RobotSensor create(String type, Map<String, String> attributes) {
+        return created(type, attributes, null);
+    }
+
+    private static RobotSensor created(String type, Map<String, String> attributes, RobotProperties robot) {
         RobotSensor sensor = registered(type);
         if (sensor == null) {
             sensor = ofClass(type);
-        }
-        if (sensor.info().geometry()) {
-            throw new IllegalArgumentException("type \"" + type + "\" is computed by the Geometry process and comes "
-                    + "with the robot's type, not a <sensor>");
         }
         Attributes a = new Attributes(attributes);
         sensor.configure(a);
@@ -107,6 +114,7 @@ public final class Sensors {
                     + "(it takes: " + String.join(", ", sensor.info().attributes().stream().map(Attribute::name)
                     .toList()) + ")");
         }
+        sensor.mount(robot);
         return sensor;
     }
 

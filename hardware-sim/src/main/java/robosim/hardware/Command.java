@@ -1,6 +1,7 @@
 package robosim.hardware;
 
 import robosim.devices.Drive;
+import robosim.protocol.StepRequest;
 import robosim.protocol.StepResponse;
 
 /**
@@ -14,6 +15,7 @@ abstract class Command {
     double plannedMoveMm;
     double plannedTurnDeg;
     boolean plannedTag;
+    StepRequest.Gripper plannedGripper = StepRequest.Gripper.STAY;
     boolean done;
     double result;
     /** What a tag hit ("" for nothing). */
@@ -64,6 +66,24 @@ abstract class Command {
         }
     }
 
+    /** One step in which the gripper takes what is in reach ({@code GRIP}) or lets go ({@code RELEASE}). */
+    static Command gripper(StepRequest.Gripper what) {
+        return new Command() {
+            @Override
+            void plan(double stepSeconds) {
+                plannedMoveMm = 0;
+                plannedTurnDeg = 0;
+                plannedGripper = what;
+            }
+
+            @Override
+            boolean apply(StepResponse r, boolean messageArrived) {
+                text = r.gripped();
+                return true;
+            }
+        };
+    }
+
     /** One step that tags what is in front. */
     static Command tag() {
         return new Command() {
@@ -82,15 +102,24 @@ abstract class Command {
         };
     }
 
-    /** Stand still for {@code steps} steps, or fewer if {@code untilMessage} and a message arrives. */
-    static Command idle(long steps, boolean untilMessage) {
+    /**
+     * Let {@code steps} steps pass (or fewer if {@code untilMessage} and a message arrives), driving on the wheels at
+     * {@code wheels} (left and right, mm/s, {@code wheelBaseMm} apart: {@link Drive#wheels}; 0 and 0 stand still).
+     */
+    static Command idle(long steps, boolean untilMessage, double[] wheels, double wheelBaseMm) {
         return new Command() {
             private long left = Math.max(1, steps);
 
             @Override
             void plan(double stepSeconds) {
-                plannedMoveMm = 0;
-                plannedTurnDeg = 0;
+                if (wheels[0] == 0 && wheels[1] == 0) {
+                    plannedMoveMm = 0;
+                    plannedTurnDeg = 0;
+                    return;
+                }
+                double[] piece = Drive.wheels(wheels[0], wheels[1], wheelBaseMm, stepSeconds);
+                plannedTurnDeg = piece[0];
+                plannedMoveMm = piece[1];
             }
 
             @Override

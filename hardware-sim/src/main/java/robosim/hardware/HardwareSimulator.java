@@ -192,7 +192,7 @@ public final class HardwareSimulator {
             throw new IllegalStateException("connect first");
         }
         SimulatedRobot api = new SimulatedRobot(state, link, welcome.robotNames(), welcome.timeStepMs(),
-                welcome.sensors(), welcome.seed(), welcome.parameters());
+                welcome.sensors(), welcome.actuators(), welcome.seed(), welcome.parameters());
         stepSeconds = robosim.devices.Drive.seconds(welcome.timeStepMs());
         sonarWanted = !type.properties().sonars().isEmpty();
         sensorsWanted = welcome.sensors();
@@ -228,15 +228,19 @@ public final class HardwareSimulator {
         double move = 0;
         double turn = 0;
         boolean tag = false;
+        StepRequest.Gripper gripper = StepRequest.Gripper.STAY;
         if (command != null) {
             command.plan(stepSeconds);
             move = command.plannedMoveMm;
             turn = command.plannedTurnDeg;
             tag = command.plannedTag;
+            gripper = command.plannedGripper;
         }
         current = command;
         List<CommEvent> messages = state.takeOutbox();
-        return new StepRequest(k, move, turn, sonarWanted, messages, sensorsWanted, tag, state.takeReports());
+        StepRequest q = new StepRequest(k, move, turn, sonarWanted, messages, sensorsWanted, tag, state.takeReports());
+        List<robosim.protocol.Actuation> actuations = state.takeActuations();
+        return actuations.isEmpty() && gripper == StepRequest.Gripper.STAY ? q : q.with(actuations, gripper);
     }
 
     /**

@@ -18,7 +18,8 @@ import robosim.protocol.StepResponse;
 
 /**
  * What one robot knows about itself between steps: its pose, its newest sonar and plug-in sensor
- * readings, its last contact, its velocities, the messages it has received and those it is sending.
+ * readings, its last contact, its velocities and wheel speeds, what its gripper holds, the messages it has received
+ * and those it is sending, and the actuators it has set since its last request.
  * Written by the exchange thread when a response arrives ({@link #apply}) and read or changed by the
  * control thread while that one holds the {@link ControlLink}: one thread at a time, handed over by
  * the link, which is what makes the plain fields safe.
@@ -38,6 +39,11 @@ final class RobotKnowledge {
     private double velocityMmPerS;
     private double rotVelocityDegPerS;
     private final ArrayDeque<Message> inbox = new ArrayDeque<>();
+    /** Its wheels' speeds, left and right, mm/s. */
+    private double[] wheels = {0, 0};
+    private String gripped = "";
+    /** The actuators set since the last request: the newest values of each, in first-set order. */
+    private final java.util.LinkedHashMap<String, double[]> actuations = new java.util.LinkedHashMap<>();
     /** Newest plug-in sensor readings by name. */
     private final Map<String, double[]> readings = new HashMap<>();
     private final List<CommEvent> outbox = new ArrayList<>();
@@ -83,6 +89,7 @@ final class RobotKnowledge {
         if (r.movedMm() != 0 || r.turnedDeg() != 0 || !r.contact().isEmpty()) {
             lastContact = r.contact();
         }
+        gripped = r.gripped();
         for (SensorReading reading : r.readings()) {
             readings.put(reading.name(), reading.values());
         }
@@ -108,6 +115,40 @@ final class RobotKnowledge {
         List<CommEvent> out = List.copyOf(outbox);
         outbox.clear();
         return out;
+    }
+
+    /** The actuators to set with this step's request; none are kept afterwards. */
+    List<robosim.protocol.Actuation> takeActuations() {
+        if (actuations.isEmpty()) {
+            return List.of();
+        }
+        List<robosim.protocol.Actuation> out = new ArrayList<>(actuations.size());
+        actuations.forEach((device, values) -> out.add(new robosim.protocol.Actuation(device, values)));
+        actuations.clear();
+        return out;
+    }
+
+    /** Keeps {@code values} as the newest setting of actuator {@code device}, sent with the next request. */
+    void actuate(String device, double[] values) {
+        if (!actuations.containsKey(device) && actuations.size() == robosim.protocol.Actuation.MAX_PER_STEP) {
+            throw new IllegalArgumentException("more than " + robosim.protocol.Actuation.MAX_PER_STEP
+                    + " actuators set in one step");
+        }
+        actuations.put(device, values.clone());
+    }
+
+    /** Its wheels' speeds, left and right, mm/s (a copy). */
+    double[] wheels() {
+        return wheels.clone();
+    }
+
+    void wheels(double left, double right) {
+        wheels = new double[] {left, right};
+    }
+
+    /** The object its gripper holds as of the last step, or "". */
+    String gripped() {
+        return gripped;
     }
 
     /** The reports to send with this step's request; none are kept afterwards. */

@@ -4,10 +4,15 @@ import java.util.List;
 import java.util.Map;
 import robosim.api.Message;
 import robosim.api.Robot;
+import robosim.devices.Actuators;
+import robosim.devices.Attribute;
+import robosim.devices.DeviceSpec;
+import robosim.devices.RobotActuator;
 import robosim.protocol.CommEvent;
 import robosim.protocol.Limits;
 import robosim.protocol.Report;
 import robosim.protocol.SonarSpec;
+import robosim.protocol.StepRequest;
 
 /** The {@link Robot} the control code gets: blocking calls become {@link Command}s on the link. */
 final class SimulatedRobot implements Robot {
@@ -18,6 +23,11 @@ final class SimulatedRobot implements Robot {
     private final double[] sonarAngles;
 
     private final List<String> sensorNames;
+    private final List<String> actuatorNames;
+    /** Its actuators as its type declares them, for checking values at once; by name (a type's of one's own: none). */
+    private final Map<String, RobotActuator> actuators = new java.util.LinkedHashMap<>();
+    /** Its LEDs' colours as the control code last set them. */
+    private final double[] leds;
     private final long seed;
     private final Map<String, String> parameters;
 
@@ -26,12 +36,20 @@ final class SimulatedRobot implements Robot {
      * from its welcome.
      */
     SimulatedRobot(RobotKnowledge state, ControlLink link, List<String> robotNames, long stepMs, List<String> sensorNames,
-            long worldSeed, Map<String, String> parameters) {
+            List<String> actuatorNames, long worldSeed, Map<String, String> parameters) {
         this.state = state;
         this.seed = seed(worldSeed, state.name());
         this.parameters = Map.copyOf(parameters);
         this.link = link;
         this.sensorNames = List.copyOf(sensorNames);
+        this.actuatorNames = List.copyOf(actuatorNames);
+        for (DeviceSpec d : state.type().devices()) {
+            if (d.actuator() && actuatorNames.contains(d.name())) {
+                actuators.put(d.name(), Actuators.create(d.kind(), d.attributes(), state.type().properties()));
+            }
+        }
+        RobotActuator l = actuators.get("leds");
+        this.leds = new double[l == null ? 0 : l.values().count()];
         this.robotNames = List.copyOf(robotNames);
         this.stepMs = stepMs;
         List<SonarSpec> sonars = state.type().properties().sonars();
@@ -119,7 +137,79 @@ final class SimulatedRobot implements Robot {
 
     @Override
     public void sleep(long ms) throws InterruptedException {
-        link.execute(Command.idle(stepsFor(ms), false));
+        link.execute(Command.idle(stepsFor(ms), false, state.wheels(), state.type().body().wheelBaseMm()));
+    }
+
+    @Override
+    public void setWheelSpeeds(double leftMmPerS, double rightMmPerS) {
+        double top = state.type().properties().maxSpeedMmPerS();
+        for (double v : new double[] {leftMmPerS, rightMmPerS}) {
+            if (!(Math.abs(v) <= top)) {
+                throw new IllegalArgumentException("a wheel speed must be a number from -" + Attribute.plain(top)
+                        + " to " + Attribute.plain(top) + " mm/s (" + state.name() + "'s top speed), got " + v);
+            }
+        }
+        state.wheels(leftMmPerS, rightMmPerS);
+    }
+
+    @Override
+    public List<String> actuatorNames() {
+        return actuatorNames;
+    }
+
+    @Override
+    public void actuate(String name, double... values) {
+        if (!actuatorNames.contains(name)) {
+            throw new IllegalArgumentException("no actuator named " + name + " on " + state.name() + " (it has "
+                    + actuatorNames + ")");
+        }
+        RobotActuator a = actuators.get(name);
+        if (a != null) {
+            a.set(values); // (its values checked: a bad one refused here, at once)
+        }
+        if (name.equals("leds") && values.length == leds.length) {
+            System.arraycopy(values, 0, leds, 0, leds.length);
+        }
+        state.actuate(name, values);
+    }
+
+    @Override
+    public int ledCount() {
+        return leds.length;
+    }
+
+    @Override
+    public void setLed(int index, int rgb) {
+        if (index < 0 || index >= leds.length) {
+            throw new IllegalArgumentException(state.name() + " has LEDs 0 to " + (leds.length - 1) + ", not " + index);
+        }
+        double[] now = leds.clone();
+        now[index] = rgb;
+        actuate("leds", now);
+    }
+
+    @Override
+    public String grip() throws InterruptedException {
+        return gripper(StepRequest.Gripper.GRIP);
+    }
+
+    @Override
+    public void release() throws InterruptedException {
+        gripper(StepRequest.Gripper.RELEASE);
+    }
+
+    private String gripper(StepRequest.Gripper what) throws InterruptedException {
+        if (state.type().properties().gripper() == null) {
+            throw new UnsupportedOperationException(state.name() + " (a " + state.type().name() + ") has no gripper");
+        }
+        Command c = Command.gripper(what);
+        link.execute(c);
+        return c.text;
+    }
+
+    @Override
+    public String gripped() {
+        return state.gripped();
     }
 
     private long stepsFor(long ms) {
@@ -201,7 +291,7 @@ final class SimulatedRobot implements Robot {
     @Override
     public Message waitForMessage(long timeoutMs) throws InterruptedException {
         if (!state.hasMessage()) {
-            link.execute(Command.idle(stepsFor(timeoutMs), true));
+            link.execute(Command.idle(stepsFor(timeoutMs), true, state.wheels(), state.type().body().wheelBaseMm()));
         }
         return state.nextMessage();
     }

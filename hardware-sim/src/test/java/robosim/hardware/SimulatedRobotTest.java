@@ -23,14 +23,14 @@ class SimulatedRobotTest {
         ScriptedEnvironment.run(control, 125, 3);
         assertArrayEquals(new long[] {125, 125}, seen, "before the first step and after it");
         RobotKnowledge state = new RobotKnowledge("r1", new robosim.devices.Scout());
-        assertEquals(40, new SimulatedRobot(state, new ControlLink(), List.of("r1"), 40, List.of(), 1,
+        assertEquals(40, new SimulatedRobot(state, new ControlLink(), List.of("r1"), 40, List.of(), List.of(), 1,
                 java.util.Map.of()).stepMs());
     }
 
     @Test
     void sendQueuesBroadcastAddressesEveryoneAndOversizedTextIsRefusedAtOnce() {
         RobotKnowledge state = new RobotKnowledge("r1", new robosim.devices.ArRobot());
-        SimulatedRobot robot = new SimulatedRobot(state, new ControlLink(), List.of("r1", "r2"), 500, List.of(), 1,
+        SimulatedRobot robot = new SimulatedRobot(state, new ControlLink(), List.of("r1", "r2"), 500, List.of(), List.of(), 1,
                 java.util.Map.of());
         robot.send("r2", "hi");
         robot.broadcast("all");
@@ -46,7 +46,7 @@ class SimulatedRobotTest {
     @Test
     void parametersSeedAndReportsComeFromTheWelcomeAndGoOutWithTheNextStep() {
         RobotKnowledge state = new RobotKnowledge("r1", new robosim.devices.ArRobot());
-        SimulatedRobot robot = new SimulatedRobot(state, new ControlLink(), List.of("r1"), 500, List.of(), 7,
+        SimulatedRobot robot = new SimulatedRobot(state, new ControlLink(), List.of("r1"), 500, List.of(), List.of(), 7,
                 java.util.Map.of("speed", "300", "mode", "calm"));
         assertEquals(300, robot.parameter("speed", 500), 0);
         assertEquals(500, robot.parameter("missing", 500), 0);

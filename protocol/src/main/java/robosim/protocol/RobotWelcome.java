@@ -11,11 +11,12 @@ import java.util.Map;
  * Environment -> robot, once, in answer to {@link RobotHello}: either a refusal with a reason
  * (the connection is then closed), or the time step (ms), the robot's start pose (world mm, degrees
  * counter-clockwise from +x), the names of every robot in the world, in world order, and the names
- * of this robot's plug-in sensors (from the environment file), which it may ask for each step; and
+ * of this robot's sensors (its type's and the environment file's), which it may ask for each step; and
  * whether the Environment sends the next step number after each response ({@link #stepMessages()},
  * the default) or only the first one (the report's untested idea: the robot counts the steps itself,
  * and the end of the simulation arrives as a {@link SimulationEnd} where a response would be); and the run's
- * seed and this robot's parameters from the environment file ({@link #seed()}, {@link #parameters()}).
+ * seed and this robot's parameters from the environment file ({@link #seed()}, {@link #parameters()}); and the names
+ * of its actuators ({@link #actuators()}).
  */
 public final class RobotWelcome implements java.io.Externalizable {
     private boolean accepted;
@@ -30,6 +31,7 @@ public final class RobotWelcome implements java.io.Externalizable {
     private long seed;
     private Map<String, String> parameters = Map.of();
     private String type = "";
+    private List<String> actuators = List.of();
 
     public RobotWelcome() {
     }
@@ -81,6 +83,17 @@ public final class RobotWelcome implements java.io.Externalizable {
     public RobotWelcome withType(String robotType) {
         this.type = robotType;
         return this;
+    }
+
+    /** This welcome naming the robot's actuators (its LEDs, range-and-bearing), which it may set each step. */
+    public RobotWelcome withActuators(List<String> names) {
+        this.actuators = List.copyOf(names);
+        return this;
+    }
+
+    /** This robot's actuators, by name. */
+    public List<String> actuators() {
+        return actuators;
     }
 
     /** The robot's type in the environment file ("" in a refusal). */
@@ -166,6 +179,7 @@ public final class RobotWelcome implements java.io.Externalizable {
             out.writeUTF(p.getValue());
         }
         out.writeUTF(type);
+        Wire.writeStrings(out, actuators);
     }
 
     /** Reads a welcome; {@code names}: the robot names it was written without, or null when they are on the wire. */
@@ -194,5 +208,6 @@ public final class RobotWelcome implements java.io.Externalizable {
         }
         parameters = java.util.Collections.unmodifiableMap(read);
         type = in.readUTF();
+        actuators = Wire.readStrings(in, "actuator count", Limits.MAX_SENSORS);
     }
 }

@@ -12,9 +12,21 @@ import java.util.List;
  * {@code sensors} names the plug-in sensors (laser, heat, bump, ...) to read at the end of the step.
  * {@code tag} (ACTION) tags the nearest robot or taggable object in front, after the move.
  * {@code reports}: the values the control code reported since the last request ({@link Report}), the newest
- * of each name.
+ * of each name. {@code actuations}: the actuators set since the last request ({@link Actuation}; LEDs,
+ * range-and-bearing). {@code gripper}: take what is in reach of the gripper after the move, or let go of what it
+ * holds ({@link Gripper}).
  */
 public final class StepRequest implements java.io.Externalizable {
+    /** What a robot's gripper does this step. */
+    public enum Gripper {
+        /** Nothing: it holds what it held. */
+        STAY,
+        /** Take the object in reach after the step's move, if any. */
+        GRIP,
+        /** Let go of what it holds. */
+        RELEASE
+    }
+
     private long step;
     private double moveMm;
     private double turnDeg;
@@ -23,6 +35,8 @@ public final class StepRequest implements java.io.Externalizable {
     private List<String> sensors = List.of();
     private boolean tag;
     private List<Report> reports = List.of();
+    private List<Actuation> actuations = List.of();
+    private Gripper gripper = Gripper.STAY;
 
     public StepRequest() {
     }
@@ -54,6 +68,27 @@ public final class StepRequest implements java.io.Externalizable {
         this.sonar = sonar;
         this.messages = List.copyOf(messages);
         this.sensors = List.copyOf(sensors);
+    }
+
+    /** This request with {@code devices} set and the gripper doing {@code grip} (the rest as it is). */
+    public StepRequest with(List<Actuation> devices, Gripper grip) {
+        if (devices.size() > Actuation.MAX_PER_STEP) {
+            throw new IllegalArgumentException(devices.size() + " actuations in one step, at most "
+                    + Actuation.MAX_PER_STEP);
+        }
+        StepRequest r = new StepRequest(step, moveMm, turnDeg, sonar, messages, sensors, tag, reports);
+        r.actuations = List.copyOf(devices);
+        r.gripper = java.util.Objects.requireNonNull(grip);
+        return r;
+    }
+
+    /** The actuators set since the last request, in the order set. */
+    public List<Actuation> actuations() {
+        return actuations;
+    }
+
+    public Gripper gripper() {
+        return gripper;
     }
 
     /** ACTION tag: tag what is nearest in front after this step's move. */
@@ -101,6 +136,8 @@ public final class StepRequest implements java.io.Externalizable {
         Wire.writeStrings(out, sensors);
         out.writeBoolean(tag);
         Report.write(out, reports);
+        Actuation.write(out, actuations);
+        out.writeByte(gripper.ordinal());
     }
 
     @Override
@@ -113,5 +150,12 @@ public final class StepRequest implements java.io.Externalizable {
         sensors = Wire.readStrings(in, "sensor count", Limits.MAX_SENSORS);
         tag = in.readBoolean();
         reports = Report.read(in, Report.MAX_PER_STEP);
+        actuations = Actuation.read(in);
+        int g = in.readUnsignedByte();
+        if (g >= Gripper.values().length) {
+            throw new ProtocolException("a gripper doing " + g + ", not one of " + java.util.Arrays.toString(
+                    Gripper.values()));
+        }
+        gripper = Gripper.values()[g];
     }
 }

@@ -27,6 +27,8 @@ public final class StepResponse implements java.io.Externalizable {
     private List<String> notices = List.of();
     private List<SensorReading> readings = List.of();
     private String tagged = "";
+    /** The object its gripper holds after the step, "" for none. */
+    private String gripped = "";
 
     public StepResponse() {
     }
@@ -103,6 +105,19 @@ public final class StepResponse implements java.io.Externalizable {
     }
 
     /** The name of what this step's tag hit, or "" when nothing was tagged. */
+    /** The object the robot's gripper holds after the step, "" for none. */
+    public String gripped() {
+        return gripped;
+    }
+
+    /** This response with its gripper holding {@code object} ("" for none). */
+    public StepResponse withGripped(String object) {
+        StepResponse r = new StepResponse(step, movedMm, turnedDeg, contact, xMm, yMm, headingDeg, sonarMm, inbox,
+                notices, readings, tagged);
+        r.gripped = object;
+        return r;
+    }
+
     public String tagged() {
         return tagged;
     }
@@ -127,6 +142,7 @@ public final class StepResponse implements java.io.Externalizable {
         Wire.writeStrings(out, notices);
         Wire.writeReadings(out, readings);
         out.writeUTF(tagged);
+        out.writeUTF(gripped);
     }
 
     @Override
@@ -143,5 +159,6 @@ public final class StepResponse implements java.io.Externalizable {
         notices = Wire.readStrings(in, "notice count", Limits.MAX_MESSAGES_PER_STEP);
         readings = Wire.readReadings(in);
         tagged = in.readUTF();
+        gripped = in.readUTF();
     }
 }

@@ -89,7 +89,7 @@ class MessageRoundTripTest {
         assertTrue(m.stepMessages());
         assertFalse(roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of()).withStepMessages(false)).stepMessages());
         assertEquals(OVERHEAD + 1 + utf("") + 8 + 3 * 8 + 4 + utf("a") + utf("b") + 4 + utf("laser") + 1 + 8 + 4
-                + utf("Scout"), repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"),
+                + utf("Scout") + 4, repeatedSize(RobotWelcome.accepted(500, 1000, 2000, 90, List.of("a", "b"),
                         List.of("laser")).withType("Scout")));
         assertEquals("Scout", roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of()).withType("Scout")).type());
         RobotWelcome run = roundTrip(RobotWelcome.accepted(500, 0, 0, 0, List.of())
@@ -129,7 +129,9 @@ class MessageRoundTripTest {
         assertEquals(-45, m.turnDeg());
         assertTrue(m.wantsSonar());
         assertEquals(List.of(new CommEvent("", "robot2", "7")), m.messages());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4 + 1 + 2, repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
+        // (no actuations, the gripper staying: a count and a byte)
+        assertEquals(OVERHEAD + 8 + 8 + 8 + 1 + 4 + 4 + 1 + 2 + 1 + 1,
+                repeatedSize(new StepRequest(7, 250, 0, false, List.of())));
         StepRequest reported = roundTrip(new StepRequest(1, 0, 0, false, List.of(), List.of(), false,
                 List.of(new Report("found", 3), new Report("t.goal-1", 0.5))));
         assertEquals(List.of(new Report("found", 3), new Report("t.goal-1", 0.5)), reported.reports());
@@ -153,13 +155,13 @@ class MessageRoundTripTest {
         assertEquals(List.of(new CommEvent("robot2", "robot1", "hi")), m.inbox());
         assertEquals(List.of("note"), m.notices());
         StepResponse empty = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf(""), repeatedSize(empty));
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf("") + utf(""), repeatedSize(empty));
         assertEquals("robot2", roundTrip(new StepResponse(3, 0, 0, "", 1, 2, 3, new double[0], List.of(), List.of(),
                 List.of(), "robot2")).tagged());
         StepResponse withReading = new StepResponse(3, 250, 0, "", 1, 2, 3, new double[0], List.of(), List.of(),
                 List.of(new SensorReading("heat", new double[] {0.5})));
         assertEquals(List.of(new SensorReading("heat", new double[] {0.5})), roundTrip(withReading).readings());
-        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf("heat") + 4 + 8 + utf(""),
+        assertEquals(OVERHEAD + 8 + 8 + 8 + utf("") + 3 * 8 + 4 + 4 + 4 + 4 + utf("heat") + 4 + 8 + utf("") + utf(""),
                 repeatedSize(withReading));
     }
 

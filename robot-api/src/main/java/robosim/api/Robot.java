@@ -158,4 +158,86 @@ public interface Robot {
      */
     default void report(String name, double value) {
     }
+
+    // ---- what a robot type may carry besides: wheels, LEDs, a gripper, range and bearing, other actuators -------
+    // (each a default method: a robot without the device says so, so a real robot's driver written before compiles)
+
+    /**
+     * Drives on its wheels: sets the left and the right wheel's speed, mm/s (positive: forward), held until set again.
+     * Time passes with the wheels at these speeds in {@link #step}, {@link #sleep} and {@link #waitForMessage} (standing
+     * still at 0 and 0, as a robot starts); {@link #move} and {@link #turn} drive by their own velocities while they
+     * run. A differential drive: each step turns by {@code (right - left) / wheel base} radians a second, then moves
+     * {@code (left + right) / 2}, times the step. A speed beyond the robot's top speed, or not a number, is an
+     * IllegalArgumentException naming it.
+     */
+    default void setWheelSpeeds(double leftMmPerS, double rightMmPerS) {
+        throw new UnsupportedOperationException(name() + " cannot set its wheels' speeds");
+    }
+
+    /** One time step passes, the robot driving on its wheels as set ({@link #setWheelSpeeds}; standing still at 0). */
+    default void step() throws InterruptedException {
+        sleep(stepMs());
+    }
+
+    /** The names of this robot's actuators ({@code leds}, {@code rab}, ...: its type's). */
+    default List<String> actuatorNames() {
+        return List.of();
+    }
+
+    /**
+     * Sets the actuator named {@code name} to {@code values} from the next step on, until set again (each actuator's
+     * values: {@code describe.sh NAME}). An unknown name, or values it cannot take (their count, their range), is an
+     * IllegalArgumentException naming them.
+     */
+    default void actuate(String name, double... values) {
+        throw new IllegalArgumentException("no actuator named " + name + " on " + name());
+    }
+
+    /** How many LEDs it has (0: none). */
+    default int ledCount() {
+        return 0;
+    }
+
+    /** Sets every LED to colour {@code rgb} ({@code 0xRRGGBB}, {@link Colours}; {@code Colours.BLACK} is off). */
+    default void setLeds(int rgb) {
+        double[] all = new double[ledCount()];
+        java.util.Arrays.fill(all, rgb);
+        actuate("leds", all);
+    }
+
+    /** Sets LED {@code index} to colour {@code rgb}, the others as they are. */
+    default void setLed(int index, int rgb) {
+        throw new IllegalArgumentException(name() + " has no LED " + index);
+    }
+
+    /**
+     * Takes the nearest gripable object touching its front (within its gripper's reach and angle: hardware-sim/README.md);
+     * takes one step. Returns the object's name, or "" when nothing was in reach (it then holds nothing). An object
+     * held moves and turns with the robot until {@link #release}.
+     */
+    default String grip() throws InterruptedException {
+        throw new UnsupportedOperationException(name() + " has no gripper");
+    }
+
+    /** Lets go of what it holds (nothing: nothing happens); takes one step. */
+    default void release() throws InterruptedException {
+        throw new UnsupportedOperationException(name() + " has no gripper");
+    }
+
+    /** The object it holds, or "" for none. */
+    default String gripped() {
+        return "";
+    }
+
+    /**
+     * Sets the bytes its range-and-bearing device sends every step from the next on, until set again (each 0 to 255,
+     * as many as its messages hold); what it hears is its sensor {@code rab}.
+     */
+    default void setRabData(int... bytes) {
+        double[] values = new double[bytes.length];
+        for (int k = 0; k < bytes.length; k++) {
+            values[k] = bytes[k];
+        }
+        actuate("rab", values);
+    }
 }

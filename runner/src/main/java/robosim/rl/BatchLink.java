@@ -145,11 +145,11 @@ public final class BatchLink {
             p.packArrayHeader(own.size());
             for (int k = 0; k < own.size(); k++) {
                 SensorColumns.Column c = own.get(k);
-                WorldSpec.SensorSpec spec = batch.spec().robots().get(i).sensors().get(k);
+                robosim.devices.DeviceSpec spec = batch.spec().robots().get(i).sensors().get(k);
                 p.packMapHeader(7);
                 p.packString("name").packString(c.name());
                 p.packString("offset").packInt(c.offset());
-                p.packString("type").packString(spec.type());
+                p.packString("type").packString(spec.kind());
                 p.packString("count").packInt(c.values().count());
                 p.packString("low").packDouble(c.values().low());
                 p.packString("high").packDouble(c.values().high());

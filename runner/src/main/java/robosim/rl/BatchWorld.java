@@ -93,8 +93,7 @@ final class BatchWorld {
             SplittableRandom random = new SplittableRandom(seed);
             List<WorldSpec.RobotSpec> turned = new ArrayList<>();
             for (WorldSpec.RobotSpec r : spec.robots()) {
-                turned.add(new WorldSpec.RobotSpec(r.name(), r.type(), r.control(), r.xMm(), r.yMm(),
-                        random.nextDouble(360), r.sensors(), r.sonarNoiseMm(), r.radiusMm(), r.sonarCount()));
+                turned.add(r.at(r.xMm(), r.yMm(), random.nextDouble(360)));
             }
             spec = spec.withRobots(turned);
         }

@@ -27,12 +27,12 @@ final class SensorColumns {
     /** The columns of {@code spec}'s robots' sensors, or none if the batch does not read them ({@code read} false). */
     SensorColumns(WorldSpec spec, boolean read) {
         Map<String, Integer> widths = new LinkedHashMap<>();
-        List<List<WorldSpec.SensorSpec>> specs = new ArrayList<>();
+        List<List<robosim.devices.DeviceSpec>> specs = new ArrayList<>();
         List<List<SensorValues>> values = new ArrayList<>();
         for (WorldSpec.RobotSpec r : spec.robots()) {
             List<SensorValues> each = new ArrayList<>();
-            for (WorldSpec.SensorSpec s : read ? r.sensors() : List.<WorldSpec.SensorSpec>of()) {
-                SensorValues v = Sensors.create(s.type(), s.attributes()).values();
+            for (robosim.devices.DeviceSpec s : read ? r.sensors() : List.<robosim.devices.DeviceSpec>of()) {
+                SensorValues v = Sensors.create(s.kind(), s.attributes()).values();
                 each.add(v);
                 widths.merge(s.name(), v.count(), Math::max);
             }

@@ -7,6 +7,8 @@ import java.util.concurrent.Callable;
 import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import picocli.CommandLine.Parameters;
+import robosim.devices.ActuatorInfo;
+import robosim.devices.Actuators;
 import robosim.devices.Attribute;
 import robosim.devices.RobotType;
 import robosim.devices.RobotTypes;
@@ -19,19 +21,21 @@ import robosim.protocol.SonarSpec;
 
 /**
  * {@code scripts/describe.sh [WHAT]}: what RoboSim knows, read from its registries, as {@code argos3 -q} does from
- * ARGoS's: the sensors ({@link Sensors}), the robot types ({@link RobotTypes}) and the built-in metrics
- * ({@link Metrics}), a line each, or one of them in full by its name; with {@code --markdown}, a list as the READMEs'
+ * ARGoS's: the sensors ({@link Sensors}), the actuators ({@link Actuators}), the robot types ({@link RobotTypes}) and
+ * the built-in metrics ({@link Metrics}), a line each, or one of them in full by its name; with {@code --markdown}, a list as the READMEs'
  * tables (a test holds each README's table to it). Exit codes: 0, 2 for a name nothing has.
  */
 @Command(name = "describe.sh", mixinStandardHelpOptions = true,
-        description = "Says what RoboSim knows, from its registries: the sensors, the robot types and the built-in "
-                + "metrics, a line each, or one of them in full (its attributes, values, devices or unit).")
+        description = "Says what RoboSim knows, from its registries: the sensors, the actuators, the robot types and "
+                + "the built-in metrics, a line each, or one of them in full (its attributes, values, devices or "
+                + "unit).")
 public final class DescribeMain implements Callable<Integer> {
     /** What may be listed. */
-    static final List<String> LISTS = List.of("sensors", "robots", "metrics");
+    static final List<String> LISTS = List.of("sensors", "actuators", "robots", "metrics");
 
-    @Parameters(index = "0", arity = "0..1", paramLabel = "WHAT", description = "sensors, robots or metrics (a line "
-            + "each), or the name of a sensor, a robot type or a metric (in full); default: all three lists.")
+    @Parameters(index = "0", arity = "0..1", paramLabel = "WHAT", description = "sensors, actuators, robots or metrics "
+            + "(a line each), or the name of a sensor, an actuator, a robot type or a metric (in full); default: all "
+            + "four lists.")
     String what;
 
     @Option(names = "--markdown", description = "A list as a Markdown table (as the READMEs hold it).")
@@ -54,6 +58,7 @@ public final class DescribeMain implements Callable<Integer> {
         if (one == null) {
             System.err.println("describe: nothing is named '" + robosim.protocol.Printable.of(what, 64)
                     + "' (sensors: " + String.join(", ", Sensors.all().stream().map(SensorInfo::name).toList())
+                    + "; actuators: " + String.join(", ", Actuators.all().stream().map(ActuatorInfo::name).toList())
                     + "; robot types: " + String.join(", ", RobotTypes.names()) + "; metrics: "
                     + String.join(", ", Metrics.names()) + ")");
             return 2;
@@ -68,6 +73,8 @@ public final class DescribeMain implements Callable<Integer> {
         switch (list) {
             case "sensors" -> Sensors.all().forEach(s -> out.add(String.format(Locale.ROOT, "%-10s %s%s", s.name(),
                     s.summary(), s.geometry() ? " (the Geometry process's)" : "")));
+            case "actuators" -> Actuators.all().forEach(a -> out.add(String.format(Locale.ROOT, "%-10s %s", a.name(),
+                    a.summary())));
             case "robots" -> RobotTypes.all().forEach(t -> out.add(String.format(Locale.ROOT, "%-10s %s", t.name(),
                     t.summary())));
             default -> Metrics.builtIn().forEach(m -> out.add(String.format(Locale.ROOT, "%-20s %s (%s)", m.name(),
@@ -84,19 +91,27 @@ public final class DescribeMain implements Callable<Integer> {
                 out.add("| sensor | what it senses | attributes: default, range | values | computed by |");
                 out.add("|---|---|---|---|---|");
                 for (SensorInfo s : Sensors.all()) {
-                    out.add("| `" + s.name() + "` | " + s.summary() + " | " + String.join("; ", s.attributes().stream()
-                            .map(a -> "`" + a.name() + "` " + Attribute.plain(a.otherwise()) + unit(a.unit()) + ", "
-                                    + a.range()).toList()) + " | " + s.values() + " | "
-                            + (s.geometry() ? "the Geometry process" : "the Environment") + " |");
+                    out.add("| `" + s.name() + "` | " + s.summary() + " | " + attributes(s.attributes()) + " | "
+                            + s.values() + " | " + (s.geometry() ? "the Geometry process" : "the Environment") + " |");
+                }
+            }
+            case "actuators" -> {
+                out.add("| actuator | what it does | attributes: default, range | values |");
+                out.add("|---|---|---|---|");
+                for (ActuatorInfo a : Actuators.all()) {
+                    out.add("| `" + a.name() + "` | " + a.summary() + " | " + attributes(a.attributes()) + " | "
+                            + a.values() + " |");
                 }
             }
             case "robots" -> {
-                out.add("| type | what it is | radius | speed limits | sonars: angles (deg), cone, range |");
-                out.add("|---|---|---|---|---|");
+                out.add("| type | what it is | radius, height, mass, wheel base | speed limits | sonars: angles (deg), "
+                        + "cone, range | devices |");
+                out.add("|---|---|---|---|---|---|");
                 for (RobotType t : RobotTypes.all()) {
-                    out.add("| `" + t.name() + "` | " + t.summary() + " | " + Attribute.plain(t.body().radiusMm())
-                            + " mm | " + Attribute.plain(t.body().maxSpeedMmPerS()) + " mm/s, "
-                            + Attribute.plain(t.body().maxTurnDegPerS()) + " deg/s | " + sonars(t) + " |");
+                    out.add("| `" + t.name() + "` | " + t.summary() + " | " + body(t) + " | "
+                            + Attribute.plain(round(t.body().maxSpeedMmPerS())) + " mm/s, "
+                            + Attribute.plain(round(t.body().maxTurnDegPerS())) + " deg/s | " + sonars(t) + " | "
+                            + devices(t) + " |");
                 }
             }
             default -> {
@@ -111,9 +126,42 @@ public final class DescribeMain implements Callable<Integer> {
         return out;
     }
 
-    /** " UNIT", or nothing for a number without one. */
-    private static String unit(String unit) {
-        return unit.isEmpty() ? "" : " " + unit;
+    /** Attributes as a table's cell says them: name, default, range; "none". */
+    private static String attributes(List<Attribute> attributes) {
+        return attributes.isEmpty() ? "none" : String.join("; ", attributes.stream()
+                .map(a -> "`" + a.name() + "` " + a.shownDefault() + ", " + a.range()).toList());
+    }
+
+    /** A number to the tenth, as a line shows a measure. */
+    private static double round(double v) {
+        return Math.round(v * 10) / 10.0;
+    }
+
+    private static String body(RobotType t) {
+        return Attribute.plain(round(t.body().radiusMm())) + " mm, " + Attribute.plain(round(t.body().heightMm()))
+                + " mm, " + Attribute.plain(t.body().massKg()) + " kg, " + Attribute.plain(round(t.body().wheelBaseMm()))
+                + " mm";
+    }
+
+    /** A type's devices besides its sonar: each name and kind, its LEDs, its proximity rays, its gripper. */
+    private static String devices(RobotType t) {
+        List<String> d = new ArrayList<>();
+        for (robosim.devices.DeviceSpec s : t.devices()) {
+            d.add("`" + s.name() + "` (" + (s.actuator() ? "actuator" : "sensor")
+                    + (s.attributes().containsKey("model") ? ", " + s.attributes().get("model") : "") + ")");
+        }
+        robosim.protocol.RobotProperties p = t.properties();
+        if (!p.rays().isEmpty()) {
+            d.add(p.rays().size() + " proximity rays of " + Attribute.plain(p.rays().get(0).rangeMm()) + " mm");
+        }
+        if (!p.leds().isEmpty()) {
+            d.add(p.leds().size() == 1 ? "1 LED" : p.leds().size() + " LEDs");
+        }
+        if (p.gripper() != null) {
+            d.add("a gripper (" + Attribute.plain(p.gripper().reachMm()) + " mm, "
+                    + Attribute.plain(p.gripper().halfAngleDeg()) + " deg either side)");
+        }
+        return d.isEmpty() ? "none" : String.join(", ", d);
     }
 
     private static String sonars(RobotType t) {
@@ -138,20 +186,31 @@ public final class DescribeMain implements Callable<Integer> {
                 out.add("  none");
             }
             for (Attribute a : s.attributes()) {
-                out.add("  " + a.name() + " (default " + Attribute.plain(a.otherwise()) + unit(a.unit()) + ", "
-                        + a.range() + "): " + a.description());
+                out.add("  " + a.name() + " (default " + a.shownDefault() + ", " + a.range() + "): " + a.description());
+            }
+            return out;
+        }
+        ActuatorInfo act = Actuators.info(name);
+        if (act != null) {
+            List<String> out = new ArrayList<>(List.of("actuator " + act.name() + ": " + act.summary(),
+                    "values: " + act.values(), "attributes:"));
+            if (act.attributes().isEmpty()) {
+                out.add("  none");
+            }
+            for (Attribute a : act.attributes()) {
+                out.add("  " + a.name() + " (default " + a.shownDefault() + ", " + a.range() + "): " + a.description());
             }
             return out;
         }
         RobotType t = RobotTypes.known(name);
         if (t != null) {
             return List.of("robot type " + t.name() + ": " + t.summary(),
-                    "body: radius " + Attribute.plain(t.body().radiusMm()) + " mm, at most "
-                            + Attribute.plain(t.body().maxSpeedMmPerS()) + " mm/s and "
-                            + Attribute.plain(t.body().maxTurnDegPerS()) + " deg/s; move starts at "
+                    "body: radius, height, mass, wheel base " + body(t) + "; at most "
+                            + Attribute.plain(round(t.body().maxSpeedMmPerS())) + " mm/s and "
+                            + Attribute.plain(round(t.body().maxTurnDegPerS())) + " deg/s; move starts at "
                             + Attribute.plain(t.body().velocityMmPerS()) + " mm/s, turn at "
                             + Attribute.plain(t.body().rotVelocityDegPerS()) + " deg/s",
-                    "sonars: " + sonars(t));
+                    "sonars: " + sonars(t), "devices: " + devices(t));
         }
         MetricInfo m = Metrics.info(name);
         if (m != null) {

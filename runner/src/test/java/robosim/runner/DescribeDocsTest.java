@@ -15,7 +15,8 @@ import org.junit.jupiter.params.provider.CsvSource;
  */
 class DescribeDocsTest {
     @ParameterizedTest
-    @CsvSource({"environment/README.md, sensors", "hardware-sim/README.md, robots", "docs/EXPERIMENTS.md, metrics"})
+    @CsvSource({"environment/README.md, sensors", "hardware-sim/README.md, robots", "hardware-sim/README.md, actuators",
+        "docs/EXPERIMENTS.md, metrics"})
     void aReadmesTableIsTheRegistrys(String file, String list) throws Exception {
         List<String> lines = Files.readAllLines(Path.of("..").resolve(file));
         int start = lines.indexOf("<!-- describe.sh " + list + " --markdown -->");

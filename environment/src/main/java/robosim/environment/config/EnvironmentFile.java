@@ -83,6 +83,9 @@ public final class EnvironmentFile extends FileElement {
         public Integer sonars;
         @JacksonXmlProperty(isAttribute = true)
         public Double sonarNoiseMm;
+        /** The robot type's devices the joining robots have on, by name; absent = all. */
+        @JacksonXmlProperty(isAttribute = true)
+        public String devices;
         public SpawnXml spawn;
         @JacksonXmlElementWrapper(useWrapping = false)
         @JacksonXmlProperty(localName = "sensor")
@@ -191,6 +194,9 @@ public final class EnvironmentFile extends FileElement {
         /** {@code any-time}: not waited for at the start; it may join the running world at its start pose. */
         @JacksonXmlProperty(isAttribute = true)
         public String join;
+        /** Its type's devices it has on, by name ({@code "proximity light"}); absent = all. */
+        @JacksonXmlProperty(isAttribute = true)
+        public String devices;
         @JacksonXmlElementWrapper(useWrapping = false)
         @JacksonXmlProperty(localName = "sensor")
         public List<SensorXml> sensors = new ArrayList<>();

@@ -58,7 +58,7 @@ final class JoinReader {
                 faults.add(j.at, el + " heading must be a finite number");
             }
             RobotSpec template = RobotReader.robot(faults, j, el, j.allow, j.type, j.radius, j.sonars, j.sonarNoiseMm,
-                    j.control, j.sensors);
+                    j.control, j.devices, j.sensors);
             JoinRule.Spawn spawn = spawn(faults, j, el, arena, template);
             if (usable && template != null && spawn != null && Double.isFinite(heading)) {
                 out.add(new JoinRule(j.allow, template.at(spawn.xMm() + spawn.widthMm() / 2,

@@ -50,6 +50,6 @@ public record JoinRule(String allow, WorldSpec.RobotSpec template, Spawn spawn, 
     public WorldSpec.RobotSpec robot(String name, double xMm, double yMm) {
         WorldSpec.RobotSpec t = template;
         return new WorldSpec.RobotSpec(name, t.type(), t.control(), xMm, yMm, t.headingDeg(), t.sensors(),
-                t.sonarNoiseMm(), t.radiusMm(), t.sonarCount());
+                t.sonarNoiseMm(), t.radiusMm(), t.sonarCount(), t.actuators());
     }
 }

@@ -44,6 +44,7 @@ public final class SimulationCore {
     private final EnvironmentMap map;
     private final MessageRouter router;
     private final StepSensing sensing;
+    private final RobotActuators actuators;
     private int robots;
     private double[] maxMoveMm;
     private double[] maxTurnDeg;
@@ -84,7 +85,8 @@ public final class SimulationCore {
             index.put(map.name(i), i);
         }
         this.router = new MessageRouter(index, robots, spec.commRangeMm(), spec.maxMessageBytes());
-        this.sensing = new StepSensing(spec, properties, map);
+        this.actuators = new RobotActuators(spec, properties);
+        this.sensing = new StepSensing(spec, properties, map, actuators);
         this.maxMoveMm = new double[robots];
         this.maxTurnDeg = new double[robots];
         this.sonarCount = new int[robots];
@@ -114,6 +116,7 @@ public final class SimulationCore {
             throw new IllegalStateException("a robot joins between steps only");
         }
         int i = map.add(robot, p);
+        actuators.add(i, robot, p);
         sensing.add(i, robot, p);
         router.add(i, robot.name());
         robots = i + 1;
@@ -142,6 +145,10 @@ public final class SimulationCore {
     public void depart(int robot) {
         map.depart(robot);
         sensing.depart(robot);
+        int held = map.carried(robot);
+        if (held >= 0) {
+            map.carry(held, -1); // (it stays where it was let go)
+        }
     }
 
     /**
@@ -163,7 +170,7 @@ public final class SimulationCore {
         StepResponse r = responses[robot];
         router.putBack(robot, r.inbox());
         responses[robot] = new StepResponse(r.step(), r.movedMm(), r.turnedDeg(), r.contact(), r.xMm(), r.yMm(),
-                r.headingDeg(), r.sonarMm(), List.of(), List.of(), r.readings(), r.tagged());
+                r.headingDeg(), r.sonarMm(), List.of(), List.of(), r.readings(), r.tagged()).withGripped(r.gripped());
     }
 
     /** Robot {@code robot} has joined and takes part from the next step: messages to it wait for it. */
@@ -212,7 +219,7 @@ public final class SimulationCore {
         lastRequests = requests;
         long k = geometryRequest.step();
         apply(g);
-        sensing.objectsMoved();
+        sensing.stepped();
         String[] tagged = tag(requests);
         senseAndRespond(k, g, requests, tagged);
         lastStep = k;
@@ -228,17 +235,20 @@ public final class SimulationCore {
             StepRequest q = requests[i];
             double move = 0;
             double turn = 0;
-            boolean sonar = false;
+            int flags = 0;
             if (q != null) {
                 if (q.step() != k) {
                     throw new ProtocolException(map.name(i) + " sent a request for step " + q.step() + " in step " + k);
                 }
                 move = bounded(i, "move", q.moveMm(), maxMoveMm[i], "mm");
                 turn = bounded(i, "turn", q.turnDeg(), maxTurnDeg[i], "deg");
-                sonar = q.wantsSonar();
+                flags |= q.wantsSonar() ? GeometryStepRequest.SONAR : 0;
+                flags |= sensing.wantsRays(i, q.sensors()) ? GeometryStepRequest.RAYS : 0;
+                flags |= gripper(i, q.gripper()) ? GeometryStepRequest.GRIP : 0;
                 router.route(i, map.name(i), q.messages(), map);
+                actuators.set(i, q.actuations(), router, map.name(i));
             }
-            geometryRequest.set(i, map.xMm(i), map.yMm(i), map.headingDeg(i), turn, move, sonar);
+            geometryRequest.set(i, map.xMm(i), map.yMm(i), map.headingDeg(i), turn, move, (byte) flags);
             if (map.isGone(i)) {
                 geometryRequest.setAbsent(i);
             }
@@ -248,6 +258,29 @@ public final class SimulationCore {
         }
         pending = requests;
         return geometryRequest;
+    }
+
+    /**
+     * What robot i's gripper does this step: let go of what it holds at once ({@code RELEASE}); true when it is to
+     * take what is in reach after the step's move ({@code GRIP}, and it has a gripper and holds nothing; else a
+     * notice).
+     */
+    private boolean gripper(int i, StepRequest.Gripper asked) {
+        if (asked == StepRequest.Gripper.STAY) {
+            return false;
+        }
+        if (map.properties(i).gripper() == null) {
+            router.notice(i, map.name(i) + " has no gripper");
+            return false;
+        }
+        int held = map.carried(i);
+        if (asked == StepRequest.Gripper.RELEASE) {
+            if (held >= 0) {
+                map.carry(held, -1);
+            }
+            return false;
+        }
+        return held < 0;
     }
 
     /**
@@ -276,6 +309,7 @@ public final class SimulationCore {
      */
     private void senseAndRespond(long k, GeometryStepResponse g, StepRequest[] requests, String[] tagged) {
         int range = 0;
+        int ray = 0;
         for (int i = 0; i < robots; i++) {
             double[] sonar = StepSensing.none();
             if (geometryRequest.wantsSonar(i)) {
@@ -283,10 +317,15 @@ public final class SimulationCore {
                 range += sonarCount[i];
             }
             StepRequest q = requests[i];
-            List<SensorReading> readings = q == null ? List.of() : sensing.read(i, q.sensors(), router);
-            responses[i] = new StepResponse(k, g.movedMm(i), g.turnedDeg(i), contactName(g, i), map.xMm(i),
+            List<SensorReading> readings = q == null ? List.of() : sensing.read(i, q.sensors(), router, g, ray);
+            if (geometryRequest.wantsRays(i)) {
+                ray += rayCount[i];
+            }
+            StepResponse r = new StepResponse(k, g.movedMm(i), g.turnedDeg(i), contactName(g, i), map.xMm(i),
                     map.yMm(i), map.headingDeg(i), sonar, router.takeInbox(i), router.takeNotices(i), readings,
                     tagged == null || tagged[i] == null ? "" : tagged[i]);
+            int held = map.carried(i);
+            responses[i] = held < 0 ? r : r.withGripped(map.spec().scenery().objects().get(held).name());
         }
     }
 
@@ -342,7 +381,7 @@ public final class SimulationCore {
         for (int i = 0; i < robots; i++) {
             sonar[i] = responses[i].sonarMm();
         }
-        return map.poses(lastStep, sonar, tags, null);
+        return map.poses(lastStep, sonar, tags, actuators.leds());
     }
 
     /** Every tag so far, "tagger>target", oldest first. */

@@ -2,6 +2,7 @@ package robosim.environment.core;
 
 import java.util.ArrayList;
 import java.util.List;
+import robosim.devices.RabSensor;
 import robosim.devices.RobotSensor;
 import robosim.devices.Sensors;
 import robosim.devices.SonarSensor;
@@ -15,47 +16,58 @@ import robosim.protocol.SensorReading;
 
 /**
  * The sense phase of a step, on the world after every move: each robot's sonar (its {@link SonarSensor}, from
- * Geometry's answer) and the sensors a request names (the {@link RobotSensor}s of its file entry, made by
- * {@link Sensors}), each computing its values and its noise itself through one {@link SensedWorld}, whose one seeded
- * generator they draw from in robot order, so a run is reproducible bit for bit.
+ * Geometry's answer) and the sensors a request names (the {@link RobotSensor}s of its type and its file entry,
+ * {@link Equipment}, made by {@link Sensors}; a proximity ring from Geometry's answer too), each computing its values
+ * and its noise itself through one {@link SensedWorld}, whose one seeded generator they draw from in robot order, so a
+ * run is reproducible bit for bit. What robots sense of each other (LEDs, range-and-bearing) is worked out once a step
+ * ({@link StepMedia}).
  */
 final class StepSensing {
     private static final double[] NO_RANGES = new double[0];
 
     private final EnvironmentMap map;
     private final WorldQueries queries;
-    /** The objects where the map has them, for the queries (kept there by {@link #objectsMoved}). */
+    /** The objects where the map has them, for the queries (kept there by {@link #stepped}). */
     private final ObjectLayer things;
     private final SensedWorld world;
+    private final StepMedia media;
     private SonarSensor[] sonars;
     private RobotSensor[][] sensors;
     private String[][] sensorNames;
     private double[] sensorRadius;
+    private double[] height;
 
-    StepSensing(WorldSpec spec, List<RobotProperties> properties, EnvironmentMap map) {
+    StepSensing(WorldSpec spec, List<RobotProperties> properties, EnvironmentMap map, RobotActuators actuators) {
         this.map = map;
         int robots = map.robotCount();
         this.sonars = new SonarSensor[robots];
         this.sensors = new RobotSensor[robots][];
         this.sensorNames = new String[robots][];
         this.sensorRadius = new double[robots];
+        this.height = new double[robots];
+        this.things = new ObjectLayer(spec.scenery().objects());
+        this.queries = new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles()), things);
+        this.media = new StepMedia(map, actuators, queries, sensorRadius, height);
         for (int i = 0; i < robots; i++) {
             equip(i, spec.robots().get(i), properties.get(i));
         }
-        this.things = new ObjectLayer(spec.scenery().objects());
-        this.queries = new WorldQueries(new StaticWorld(spec.arena(), spec.obstacles()), things);
-        this.world = new SensedWorld(queries, spec.heatSources(), map, sensorRadius, spec.seed());
+        this.world = new SensedWorld(queries, spec, map, media, sensorRadius, height);
     }
 
     private void equip(int i, WorldSpec.RobotSpec robot, RobotProperties p) {
         sensorRadius[i] = p.radiusMm();
+        height[i] = p.heightMm();
         sonars[i] = SonarSensor.of(p.sonars(), robot.sonarNoiseMm());
-        List<WorldSpec.SensorSpec> specs = robot.sensors();
+        List<robosim.devices.DeviceSpec> specs = robot.sensors();
         sensorNames[i] = new String[specs.size()];
         sensors[i] = new RobotSensor[specs.size()];
+        media.receiver(i, null);
         for (int k = 0; k < specs.size(); k++) {
             sensorNames[i][k] = specs.get(k).name();
-            sensors[i][k] = Sensors.create(specs.get(k).type(), specs.get(k).attributes());
+            sensors[i][k] = Sensors.create(specs.get(k).kind(), specs.get(k).attributes(), p);
+            if (sensors[i][k] instanceof RabSensor rab) {
+                media.receiver(i, rab.model());
+            }
         }
     }
 
@@ -65,20 +77,33 @@ final class StepSensing {
         sensors = java.util.Arrays.copyOf(sensors, i + 1);
         sensorNames = java.util.Arrays.copyOf(sensorNames, i + 1);
         sensorRadius = java.util.Arrays.copyOf(sensorRadius, i + 1);
+        height = java.util.Arrays.copyOf(height, i + 1);
+        media.bodies(sensorRadius, height);
         equip(i, robot, p);
-        world.radii(sensorRadius);
+        world.bodies(sensorRadius, height);
     }
 
-    /** The step's objects stand where the map has them now. */
-    void objectsMoved() {
+    /** A step's moves are done: its objects stand where the map has them now, and the media are worked out anew. */
+    void stepped() {
         for (int o = 0; o < things.count(); o++) {
             things.place(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o));
         }
+        media.stepped();
     }
 
     /** A robot that has left can no longer be sensed: its disc never meets a query. */
     void depart(int robot) {
         sensorRadius[robot] = Double.NEGATIVE_INFINITY;
+    }
+
+    /** True when robot {@code i}'s sensors named {@code names} include one the Geometry process casts rays for. */
+    boolean wantsRays(int i, List<String> names) {
+        for (int s = 0; s < sensorNames[i].length; s++) {
+            if (sensors[i][s].info().geometry() && names.contains(sensorNames[i][s])) {
+                return true;
+            }
+        }
+        return false;
     }
 
     /**
@@ -89,15 +114,19 @@ final class StepSensing {
         if (map.properties(i).sonars().isEmpty()) {
             return NO_RANGES;
         }
-        return sonars[i].generateSensorResponse(world.aim(i, answer, first));
+        return sonars[i].generateSensorResponse(world.aim(i, answer, first, 0));
     }
 
     static double[] none() {
         return NO_RANGES;
     }
 
-    /** Robot i's sensors, in the order asked; a name it lacks or a failing sensor gets a notice. */
-    List<SensorReading> read(int i, List<String> names, MessageRouter notices) {
+    /**
+     * Robot i's sensors, in the order asked, its proximity rays in {@code answer} from ray {@code firstRay}; a name it
+     * lacks or a failing sensor gets a notice.
+     */
+    List<SensorReading> read(int i, List<String> names, MessageRouter notices, GeometryStepResponse answer,
+            int firstRay) {
         if (names.isEmpty()) {
             return List.of();
         }
@@ -113,7 +142,7 @@ final class StepSensing {
             }
             double[] values;
             try {
-                values = sensors[i][s].generateSensorResponse(world.aim(i, null, 0));
+                values = sensors[i][s].generateSensorResponse(world.aim(i, answer, 0, firstRay));
             } catch (RuntimeException e) {
                 notices.notice(i, "sensor " + name + " failed: " + e);
                 continue;

@@ -1,7 +1,7 @@
 package robosim.environment.core;
 
 import java.util.List;
-import java.util.Map;
+import robosim.devices.DeviceSpec;
 import robosim.devices.HeatSource;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
@@ -140,19 +140,6 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, List.of());
     }
 
-    /**
-     * One sensor on a robot, as the file names it.
-     *
-     * @param name what the robot asks for it by
-     * @param type a registered sensor's name ({@code robosim.devices.Sensors}) or a RobotSensor class name
-     * @param attributes its attributes, for its {@code RobotSensor.configure} (its noise among them)
-     */
-    public record SensorSpec(String name, String type, Map<String, String> attributes) {
-        public SensorSpec {
-            attributes = Map.copyOf(attributes);
-        }
-    }
-
     /** Index of the robot with this name, or -1. */
     public int indexOf(String robotName) {
         for (int i = 0; i < robots.size(); i++) {
@@ -167,27 +154,41 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
      * One robot named in the file.
      *
      * @param control the control class the headless runner starts for it (may be empty)
-     * @param sensors its plug-in sensors
+     * @param sensors its sensors, its type's (those the file leaves on, as it configures them) then the file's own
+     *     ({@link Equipment})
      * @param sonarNoiseMm standard deviation of Gaussian noise on its sonar ranges
      * @param radiusMm the radius the robot must report: its model's, or the file's for a robot type class
      * @param sonarCount the number of sonars the robot must report, or -1 when the file does not say
+     * @param actuators its actuators (its type's LEDs, range-and-bearing, ...)
      */
     public record RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
-            List<SensorSpec> sensors, double sonarNoiseMm, double radiusMm, int sonarCount) {
+            List<DeviceSpec> sensors, double sonarNoiseMm, double radiusMm, int sonarCount,
+            List<DeviceSpec> actuators) {
         public RobotSpec {
             sensors = List.copyOf(sensors);
+            actuators = List.copyOf(actuators);
         }
 
-        /** A robot of a registered type ({@code robosim.devices.RobotTypes}), its radius the type's. */
+        /**
+         * A robot of a registered type ({@code robosim.devices.RobotTypes}), its radius the type's, its devices the
+         * type's with {@code sensors} added ({@link Equipment}).
+         */
         public RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
-                List<SensorSpec> sensors, double sonarNoiseMm) {
-            this(name, type, control, xMm, yMm, headingDeg, sensors, sonarNoiseMm,
+                List<DeviceSpec> sensors, double sonarNoiseMm) {
+            this(name, type, control, xMm, yMm, headingDeg, Equipment.of(type, sensors, null), sonarNoiseMm,
                     robosim.devices.RobotTypes.properties(type).radiusMm(), -1);
+        }
+
+        private RobotSpec(String name, String type, String control, double xMm, double yMm, double headingDeg,
+                Equipment equipment, double sonarNoiseMm, double radiusMm, int sonarCount) {
+            this(name, type, control, xMm, yMm, headingDeg, equipment.sensors(), sonarNoiseMm, radiusMm, sonarCount,
+                    equipment.actuators());
         }
 
         /** This robot standing at another pose (mm, degrees). */
         public RobotSpec at(double x, double y, double heading) {
-            return new RobotSpec(name, type, control, x, y, heading, sensors, sonarNoiseMm, radiusMm, sonarCount);
+            return new RobotSpec(name, type, control, x, y, heading, sensors, sonarNoiseMm, radiusMm, sonarCount,
+                    actuators);
         }
 
         /** A robot of a known model with sonar only and no noise. */
@@ -222,7 +223,11 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         }
 
         public List<String> sensorNames() {
-            return sensors.stream().map(SensorSpec::name).toList();
+            return sensors.stream().map(DeviceSpec::name).toList();
+        }
+
+        public List<String> actuatorNames() {
+            return actuators.stream().map(DeviceSpec::name).toList();
         }
     }
 }

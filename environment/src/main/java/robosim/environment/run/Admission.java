@@ -264,7 +264,8 @@ final class Admission {
     private RobotWelcome welcome(WorldSpec.RobotSpec robot, List<String> robotNames) {
         return RobotWelcome.accepted(spec.timeStepMs(), robot.xMm(), robot.yMm(), robot.headingDeg(), robotNames,
                 robot.sensorNames()).withStepMessages(settings.stepMessages())
-                .withRun(spec.seed(), spec.parameters().of(robot.name())).withType(robot.type());
+                .withRun(spec.seed(), spec.parameters().of(robot.name())).withType(robot.type())
+                .withActuators(robot.actuatorNames());
     }
 
     /** How the properties a returning robot says it has differ from those it had (the file's checks passed). */

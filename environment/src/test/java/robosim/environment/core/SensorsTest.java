@@ -14,7 +14,7 @@ import org.junit.jupiter.api.Test;
 import robosim.devices.RobotSensor;
 import robosim.devices.Sensors;
 import robosim.environment.core.WorldSpec.RobotSpec;
-import robosim.environment.core.WorldSpec.SensorSpec;
+import robosim.devices.DeviceSpec;
 import robosim.protocol.Arena;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.RobotProperties;
@@ -25,8 +25,8 @@ class SensorsTest {
     private static final Arena ARENA = new Arena(0, 0, 10_000, 10_000);
     /** A wall whose face is at x = 4 m, floor to ceiling. */
     private static final ObstacleShape WALL = ObstacleShape.rectangle("wall", 4000, 0, 100, 10_000);
-    private static final List<SensorSpec> ALL = List.of(new SensorSpec("laser", "laser", Map.of()),
-            new SensorSpec("heat", "heat", Map.of()), new SensorSpec("bump", "bump", Map.of()));
+    private static final List<DeviceSpec> ALL = List.of(new DeviceSpec("laser", "laser", Map.of()),
+            new DeviceSpec("heat", "heat", Map.of()), new DeviceSpec("bump", "bump", Map.of()));
 
     private static InProcessSteps core(List<RobotSpec> robots, List<robosim.devices.HeatSource> heat, long seed) {
         WorldSpec spec = new WorldSpec("mem", "t", 500, seed, ARENA, List.of(WALL), robots, 0, 8192, heat);
@@ -82,8 +82,8 @@ class SensorsTest {
 
     @Test
     void aFailingSensorIsANoticeNotTheEndOfTheRun() throws Exception {
-        List<SensorSpec> failing = List.of(new SensorSpec("broken", FailingTestSensor.class.getName(), Map.of()),
-                new SensorSpec("bump", "bump", Map.of()));
+        List<DeviceSpec> failing = List.of(new DeviceSpec("broken", FailingTestSensor.class.getName(), Map.of()),
+                new DeviceSpec("bump", "bump", Map.of()));
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, failing, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "broken", "bump")});
         assertEquals(List.of("sensor broken failed: java.lang.IllegalStateException: out of order"),
@@ -106,7 +106,7 @@ class SensorsTest {
 
     @Test
     void noiseComesFromTheWorldsSeedSoTheSameSeedGivesTheSameReadings() throws Exception {
-        List<SensorSpec> noisy = List.of(new SensorSpec("laser", "laser", Map.of("fovDeg", "10", "noise", "20")));
+        List<DeviceSpec> noisy = List.of(new DeviceSpec("laser", "laser", Map.of("fovDeg", "10", "noise", "20")));
         double[] first = noisyLaser(noisy, 7);
         assertArrayEquals(first, noisyLaser(noisy, 7), 0);
         assertNotEquals(first[0], noisyLaser(noisy, 8)[0]);
@@ -119,7 +119,7 @@ class SensorsTest {
         assertTrue(spread > 0 && spread < 200, "noise of sigma 20 mm, largest deviation " + spread);
     }
 
-    private static double[] noisyLaser(List<SensorSpec> sensors, long seed) throws Exception {
+    private static double[] noisyLaser(List<DeviceSpec> sensors, long seed) throws Exception {
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 0, sensors, 0)), List.of(),
                 seed);
         core.step(0, new StepRequest[] {ask(0, 0, "laser")});
@@ -129,7 +129,7 @@ class SensorsTest {
 
     @Test
     void aPlugInSensorIsOneClassNamedInTheWorld() throws Exception {
-        List<SensorSpec> compass = List.of(new SensorSpec("compass", CompassTestSensor.class.getName(),
+        List<DeviceSpec> compass = List.of(new DeviceSpec("compass", CompassTestSensor.class.getName(),
                 Map.of("offsetDeg", "10")));
         InProcessSteps core = core(List.of(new RobotSpec("a", "ArRobot", "", 1000, 1000, 30, compass, 0)), List.of(), 1);
         core.step(0, new StepRequest[] {ask(0, 0, "compass", "nonsense")});

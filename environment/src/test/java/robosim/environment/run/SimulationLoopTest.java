@@ -15,7 +15,7 @@ import org.junit.jupiter.api.Test;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.WorldSpec;
 import robosim.environment.core.WorldSpec.RobotSpec;
-import robosim.environment.core.WorldSpec.SensorSpec;
+import robosim.devices.DeviceSpec;
 import robosim.environment.core.ThreadRecordingSensor;
 import robosim.protocol.Arena;
 import robosim.protocol.RobotHello;
@@ -28,7 +28,7 @@ import robosim.protocol.RobotHello;
  */
 class SimulationLoopTest {
     private static final long LONG_S = 60;
-    private static final List<SensorSpec> THREAD = List.of(new SensorSpec("thread",
+    private static final List<DeviceSpec> THREAD = List.of(new DeviceSpec("thread",
             ThreadRecordingSensor.class.getName(), Map.of()));
     private static final WorldSpec THREE = new WorldSpec("mem", "three", 500, 1, new Arena(0, 0, 20_000, 20_000),
             List.of(), List.of(new RobotSpec("a", "ArRobot", "", 2000, 2000, 0, THREAD, 0),

@@ -143,6 +143,68 @@ final class RobotCalls {
                 robot.report(name, value);
                 reply.packNil();
             }
+            case "set_wheel_speeds" -> {
+                double left = args.number();
+                double right = args.number();
+                args.none();
+                robot.setWheelSpeeds(left, right);
+                reply.packNil();
+            }
+            case "step" -> {
+                args.none();
+                robot.step();
+                reply.packNil();
+            }
+            case "actuator_names" -> {
+                args.none();
+                RobotLink.strings(reply, robot.actuatorNames());
+            }
+            case "actuate" -> {
+                String name = args.text();
+                double[] values = args.numbers();
+                args.none();
+                robot.actuate(name, values);
+                reply.packNil();
+            }
+            case "led_count" -> {
+                args.none();
+                reply.packInt(robot.ledCount());
+            }
+            case "set_leds" -> {
+                int rgb = args.colour();
+                args.none();
+                robot.setLeds(rgb);
+                reply.packNil();
+            }
+            case "set_led" -> {
+                long index = args.whole();
+                int rgb = args.colour();
+                args.none();
+                if (index < 0 || index > Integer.MAX_VALUE) {
+                    throw new IllegalArgumentException("no LED " + index);
+                }
+                robot.setLed((int) index, rgb);
+                reply.packNil();
+            }
+            case "set_rab_data" -> {
+                double[] bytes = args.numbers();
+                args.none();
+                robot.actuate("rab", bytes); // (as Robot.setRabData does)
+                reply.packNil();
+            }
+            case "grip" -> {
+                args.none();
+                text(reply, robot.grip());
+            }
+            case "release" -> {
+                args.none();
+                robot.release();
+                reply.packNil();
+            }
+            case "gripped" -> {
+                args.none();
+                text(reply, robot.gripped());
+            }
             default -> throw args.bad("no call \"" + robosim.protocol.Printable.of(call, 40) + "\" (hardware-sim/README.md, "
                     + "\"The robot link\", lists them)");
         }

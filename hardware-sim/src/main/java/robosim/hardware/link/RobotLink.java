@@ -202,7 +202,7 @@ public final class RobotLink {
                 }
             } catch (MessagePackException e) {
                 throw badCall("a call that is not MessagePack: " + LinkFrames.oneLine(e.getMessage()));
-            } catch (IllegalArgumentException e) {
+            } catch (IllegalArgumentException | UnsupportedOperationException e) { // (a value or a device it has not)
                 reply.clear();
                 reply.packArrayHeader(3).packString("error").packString("value").packString(LinkFrames.oneLine(e.getMessage()));
             } catch (InterruptedException e) {
@@ -301,6 +301,47 @@ public final class RobotLink {
                         + MAX_TEXT);
             }
             return s;
+        }
+
+        /** A list of numbers, at most {@link robosim.protocol.Limits#MAX_SENSOR_VALUES}. */
+        double[] numbers() throws IOException {
+            next("a list of numbers");
+            if (u.getNextFormat().getValueType() != ValueType.ARRAY) {
+                throw badCall(call + ": argument " + read + " is not a list of numbers");
+            }
+            int n = u.unpackArrayHeader();
+            if (n > robosim.protocol.Limits.MAX_SENSOR_VALUES) {
+                throw badCall(call + ": argument " + read + " is a list of " + n + " values, at most "
+                        + robosim.protocol.Limits.MAX_SENSOR_VALUES);
+            }
+            double[] out = new double[n];
+            for (int k = 0; k < n; k++) {
+                MessageFormat f = u.getNextFormat();
+                if (f.getValueType() == ValueType.FLOAT) {
+                    out[k] = u.unpackDouble();
+                } else if (f.getValueType() == ValueType.INTEGER) {
+                    out[k] = u.unpackBigInteger().doubleValue();
+                } else {
+                    throw badCall(call + ": argument " + read + " holds a " + f.getValueType().name().toLowerCase()
+                            + ", not a number");
+                }
+            }
+            return out;
+        }
+
+        /**
+         * A colour: a whole number {@code 0xRRGGBB}, or a text {@link robosim.api.Colours#parse} reads (a name,
+         * {@code #rrggbb}, {@code r,g,b}); a text that is none is the robot's to refuse (IllegalArgumentException).
+         */
+        int colour() throws IOException {
+            if (peek() == ValueType.STRING) {
+                return robosim.api.Colours.parse(text());
+            }
+            long c = whole();
+            if (c < 0 || c > 0xFFFFFF) {
+                throw new IllegalArgumentException("a colour is 0 to 0xFFFFFF, got " + c);
+            }
+            return (int) c;
         }
 
         /** A bad call of this call's: answered, and the link's end. */
