@@ -224,12 +224,22 @@ public final class EnvironmentLoader {
         Set<String> thingNames = new HashSet<>(obstacles.names());
         List<WorldObject> objects = SceneryReader.objects(faults, xml, placed, thingNames);
         Robots robots = robots(faults, xml, placed);
-        if (!xml.robots.isEmpty() && xml.robots.stream().allMatch(r -> ANY_TIME.equals(r.join))) {
+        long seed = xml.seed == null ? 1L : xml.seed;
+        Set<String> robotNames = new HashSet<>();
+        robots.fromStart().forEach(r -> robotNames.add(r.name()));
+        robots.anyTime().forEach(r -> robotNames.add(r.name()));
+        DistributeReader.Placed distributed = DistributeReader.read(faults, xml, placed, robotNames, thingNames, seed);
+        objects.addAll(distributed.objects());
+        robots.fromStart().addAll(distributed.robots());
+        boolean distributes = xml.distribute.stream().anyMatch(d -> d.entity != null && d.entity.robot != null);
+        if (xml.robots.isEmpty() && !distributes) {
+            faults.add(xml.at, "<environment> needs at least one robot: a <robot> in <robots>, or a <distribute> of "
+                    + "robots");
+        } else if (!distributes && xml.robots.stream().allMatch(r -> ANY_TIME.equals(r.join))) {
             faults.add(xml.at, "<robots> must name at least one <robot> there from the start (without "
                     + "join=\"any-time\")");
         }
         List<JoinRule> joins = JoinReader.rules(faults, xml, arena, robots.anyTime());
-        long seed = xml.seed == null ? 1L : xml.seed;
         String name = xml.name == null ? Path.of(where).getFileName().toString() : xml.name;
         double range = 0;
         if (xml.commRangeM != null) {
@@ -300,9 +310,6 @@ public final class EnvironmentLoader {
      * others' faults recorded.
      */
     private Robots robots(FileFaults faults, EnvironmentFile xml, Placement placed) {
-        if (xml.robots.isEmpty()) {
-            faults.add(xml.at, "<robots> must name at least one <robot>");
-        }
         Robots out = new Robots(new ArrayList<>(), new ArrayList<>());
         Set<String> names = new HashSet<>();
         for (int i = 0; i < xml.robots.size(); i++) {

@@ -33,7 +33,7 @@ public record Equipment(List<DeviceSpec> sensors, List<DeviceSpec> actuators) {
         RobotType t = RobotTypes.known(type);
         List<DeviceSpec> devices = t == null ? List.of() : t.devices();
         if (on != null) {
-            List<String> names = devices.stream().map(DeviceSpec::name).toList();
+            List<String> names = devices.stream().map(DeviceSpec::name).distinct().toList();
             for (String n : on) {
                 if (!names.contains(n)) {
                     throw new IllegalArgumentException("devices: a " + type + " has no device \""

@@ -240,7 +240,7 @@ class EnvironmentLoaderTest {
     @Test
     void missingArenaAndNoRobots() throws Exception {
         assertTrue(failure("<environment timeStepMs=\"500\">" + ROBOT + "</environment>").contains("needs an <arena"));
-        assertTrue(failure(env("timeStepMs=\"500\"", "")).contains("must name at least one <robot>"));
+        assertTrue(failure(env("timeStepMs=\"500\"", "")).contains("needs at least one robot"));
     }
 
     @Test
