@@ -54,7 +54,8 @@ class Welcome:
     seed: int
     episode_metric: str | None
     #: Each robot's sensors (its environment file's, with ``sensors=True``), in its file's order: name, offset (its
-    #: first column of ``Batch.readings``), type, count, low, high, unit.
+    #: first column of ``Batch.readings``), type, count, low and high (a list of count bounds: a group's fields, such
+    #: as a message's range, bearing and bytes, each have their own), unit.
     sensors: list[list[dict[str, Any]]]
     #: Columns of a robot's row of ``Batch.readings`` (0: no robot has a sensor, no readings array).
     readings: int

@@ -51,7 +51,8 @@ class Layout:
         if w.message_size:
             parts["messages"] = spaces.Box(-np.inf, np.inf, (len(w.robots), w.message_size), np.float32)
         for s in w.sensors[robot]:
-            parts[s["name"]] = spaces.Box(np.float32(s["low"]), np.float32(s["high"]), (int(s["count"]),), np.float32)
+            parts[s["name"]] = spaces.Box(np.asarray(s["low"], np.float32), np.asarray(s["high"], np.float32),
+                                          (int(s["count"]),), np.float32)
         return spaces.Dict(parts)
 
     def action_space(self, robot: int) -> spaces.Box:

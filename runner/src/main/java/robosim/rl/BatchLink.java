@@ -151,8 +151,14 @@ public final class BatchLink {
                 p.packString("offset").packInt(c.offset());
                 p.packString("type").packString(spec.kind());
                 p.packString("count").packInt(c.values().count());
-                p.packString("low").packDouble(c.values().low());
-                p.packString("high").packDouble(c.values().high());
+                p.packString("low").packArrayHeader(c.values().count()); // (each value's own: grouped fields differ)
+                for (int v = 0; v < c.values().count(); v++) {
+                    p.packDouble(c.values().low(v));
+                }
+                p.packString("high").packArrayHeader(c.values().count());
+                for (int v = 0; v < c.values().count(); v++) {
+                    p.packDouble(c.values().high(v));
+                }
                 p.packString("unit").packString(c.values().unit());
             }
         }

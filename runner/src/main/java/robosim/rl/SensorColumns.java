@@ -32,7 +32,9 @@ final class SensorColumns {
         for (WorldSpec.RobotSpec r : spec.robots()) {
             List<SensorValues> each = new ArrayList<>();
             for (robosim.devices.DeviceSpec s : read ? r.sensors() : List.<robosim.devices.DeviceSpec>of()) {
-                SensorValues v = Sensors.create(s.kind(), s.attributes()).values();
+                robosim.devices.RobotType type = robosim.devices.RobotTypes.known(r.type());
+                SensorValues v = Sensors.create(s.kind(), s.attributes(), type == null ? null : type.properties())
+                        .values(); // (mounted on its body: a proximity ring's count is its type's rays)
                 each.add(v);
                 widths.merge(s.name(), v.count(), Math::max);
             }

@@ -47,6 +47,26 @@ class PythonControlIT {
     }
 
     @Test
+    void theForagingFootBotInJavaAndInPythonGivesAByteIdenticalPoseLogAndCarriesCans() throws Exception {
+        // the proximity, light and ground readings, the wheels, the LEDs and the gripper through both languages
+        String steps = "900";
+        Path python = dir.resolve("python.csv");
+        Path java = dir.resolve("java.csv");
+        Path record = dir.resolve("java.rec");
+        ScriptRun py = headless("--one-jvm", "--env", "test-envs/foraging.xml", "--steps", steps, "--param",
+                "control=python:../examples/python/forage.py", "--pose-log", python.toString());
+        ScriptRun jv = headless("--one-jvm", "--env", "test-envs/foraging.xml", "--steps", steps, "--pose-log",
+                java.toString(), "--record", record.toString());
+        assertEquals(0, py.exit(), py.stdout() + py.stderr());
+        assertEquals(0, jv.exit(), jv.stdout() + jv.stderr());
+        assertTrue(py.stdout().contains(" control_failed=0 "), py.stdout());
+        assertEquals(Files.readString(java), Files.readString(python), "the Python foot-bots moved otherwise");
+        ScriptRun reports = ScriptRun.of(REPO, Map.of(), dir, "bash", "scripts/record-tool.sh", "reports",
+                record.toString());
+        assertTrue(reports.stdout().contains(",delivered,"), "a can was carried to the nest: " + reports.stdout());
+    }
+
+    @Test
     void aPythonControllerThatRaisesOrExitsIsAFailedControlCodeAndTheWorldGoesOn() throws Exception {
         Files.writeString(dir.resolve("raises.py"), """
                 def control(robot):

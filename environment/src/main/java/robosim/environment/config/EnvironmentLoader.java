@@ -93,13 +93,22 @@ public final class EnvironmentLoader {
         return check(where, faults, xml, parameters, file.toAbsolutePath().getParent()); // (throws every fault)
     }
 
-    /** Each robot's and join rule's control script ({@code python:PATH}) made absolute: a relative path is the file's folder's. */
+    /**
+     * Each robot's, distributed robot's and join rule's control script ({@code python:PATH}) made absolute: a
+     * relative path is the file's folder's.
+     */
     private static void scriptsFrom(EnvironmentFile xml, Path folder) {
         for (EnvironmentFile.RobotXml r : xml.robots) {
             r.control = r.control == null ? null : ControlScripts.resolved(r.control, folder);
         }
         for (EnvironmentFile.JoinXml j : xml.joins) {
             j.control = j.control == null ? null : ControlScripts.resolved(j.control, folder);
+        }
+        for (EnvironmentFile.DistributeXml d : xml.distribute) {
+            EnvironmentFile.RobotXml r = d.entity == null ? null : d.entity.robot;
+            if (r != null && r.control != null) {
+                r.control = ControlScripts.resolved(r.control, folder);
+            }
         }
     }
 
