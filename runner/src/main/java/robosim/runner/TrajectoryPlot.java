@@ -7,7 +7,6 @@ import java.awt.Graphics2D;
 import java.awt.RenderingHints;
 import java.awt.geom.Ellipse2D;
 import java.awt.geom.Path2D;
-import java.awt.geom.Rectangle2D;
 import java.awt.image.BufferedImage;
 import java.io.IOException;
 import java.nio.file.Files;
@@ -16,14 +15,13 @@ import java.util.ArrayList;
 import java.util.List;
 import javax.imageio.ImageIO;
 import robosim.protocol.Arena;
-import robosim.protocol.ObstacleShape;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RecordingReader;
 import robosim.protocol.WorldSnapshot;
 
 /**
- * A recording's trajectories as a PNG ({@code record-tool.sh plot FILE --out FILE.png}): the arena, its obstacles
- * (grey), and each robot's path over the whole run in a colour of its own, a hollow circle where it stood before the
+ * A recording's trajectories as a PNG ({@code record-tool.sh plot FILE --out FILE.png}): the world as the viewers draw
+ * it (its floor, its obstacles in grey, its objects where the run left them, its lights), and each robot's path over the whole run in a colour of its own, a hollow circle where it stood before the
  * first step and a filled one where it stood after the last, its name beside that; north (+y) up, metres on the
  * edges, drawn to scale. Headless (Java 2D into an image).
  */
@@ -75,26 +73,16 @@ final class TrajectoryPlot {
             g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
             g.setColor(Color.WHITE);
             g.fillRect(0, 0, w, h);
-            // world (mm, +y north) to image (px, +y down)
-            java.awt.geom.AffineTransform toImage = new java.awt.geom.AffineTransform(scale, 0, 0, -scale,
-                    MARGIN - arena.minXMm() * scale, MARGIN + arena.maxYMm() * scale);
-            g.setColor(Color.BLACK);
-            g.setStroke(new BasicStroke(2f));
-            g.draw(toImage.createTransformedShape(new Rectangle2D.Double(arena.minXMm(), arena.minYMm(), widthMm,
-                    heightMm)));
-            g.setColor(new Color(0x999999));
-            for (ObstacleShape o : world.obstacles()) {
-                Path2D.Double shape = new Path2D.Double();
-                for (int v = 0; v < o.vertexCount(); v++) {
-                    if (v == 0) {
-                        shape.moveTo(o.x(v), o.y(v));
-                    } else {
-                        shape.lineTo(o.x(v), o.y(v));
-                    }
-                }
-                shape.closePath();
-                g.fill(toImage.createTransformedShape(shape));
-            }
+            // world (mm, +y north) to image (px, +y down); the world as it ended: floor, obstacles, objects, lights
+            robosim.viewer.ViewTransform view = new robosim.viewer.ViewTransform();
+            view.fit(arena, w, h, MARGIN);
+            java.awt.geom.AffineTransform toImage = new java.awt.geom.AffineTransform(view.scale(), 0, 0,
+                    -view.scale(), view.toScreenX(0), view.toScreenY(0));
+            PoseUpdate end = recording.steps() > 0 ? recording.step(recording.steps() - 1).update() : start;
+            robosim.viewer.SceneRenderer.drawWorld(g, new robosim.viewer.Scene(arena, world.obstacles(), names,
+                    world.robots(), end.count() == 0 ? start : end, new double[0][], Double.NaN,
+                    robosim.viewer.ViewedRun.of(robosim.viewer.ViewedRun.Kind.STOPPED), world.scenery(),
+                    robosim.viewer.Scene.picture(world.scenery().floor().image())), view);
             g.setFont(new Font(Font.SANS_SERIF, Font.PLAIN, 12));
             g.setStroke(new BasicStroke(1.5f, BasicStroke.CAP_ROUND, BasicStroke.JOIN_ROUND));
             for (int r = 0; r < paths.size(); r++) {

@@ -44,7 +44,7 @@ public record Scene(Arena arena, List<ObstacleShape> obstacles, List<String> nam
     }
 
     /** {@code image} as a picture to draw (its top row first), or null for none. */
-    static BufferedImage picture(Floor.Image image) {
+    public static BufferedImage picture(Floor.Image image) {
         if (image == null) {
             return null;
         }

@@ -55,25 +55,12 @@ public final class SceneRenderer {
         g.setRenderingHint(RenderingHints.KEY_ANTIALIASING, RenderingHints.VALUE_ANTIALIAS_ON);
         g.setColor(OUTSIDE);
         g.fillRect(0, 0, width, height);
-        drawArena(g, s, t);
-        g.setStroke(new BasicStroke(1f));
+        drawWorld(g, s, t);
+        PoseUpdate poses = s.poses();
         java.util.Set<String> tagged = new java.util.HashSet<>();
-        for (String tag : s.poses().tags()) {
+        for (String tag : poses.tags()) {
             tagged.add(tag.substring(tag.indexOf('>') + 1));
         }
-        for (ObstacleShape obstacle : s.obstacles()) {
-            Path2D p = polygon(obstacle, t);
-            g.setColor(WALL);
-            g.fill(p);
-            boolean hit = tagged.contains(obstacle.name());
-            g.setColor(hit ? TAGGED : OUTLINE);
-            g.setStroke(new BasicStroke(hit ? 3f : 1f));
-            g.draw(p);
-        }
-        g.setStroke(new BasicStroke(1f));
-        PoseUpdate poses = s.poses();
-        drawObjects(g, s, t);
-        drawLights(g, s.scenery().lights(), t);
         if (o.trails()) {
             for (int i = 0; i < s.robotCount(); i++) {
                 drawTrail(g, s.trails()[i], t, robotColor(i));
@@ -96,6 +83,31 @@ public final class SceneRenderer {
                 drawRobot(g, s, i, t, o.names(), tagged.contains(s.names().get(i)));
             }
         }
+    }
+
+    /**
+     * The world without its robots: the arena's floor and grid, the obstacles (outlined in red where a tag hit them),
+     * the objects where the poses put them and the lights (the trajectory plot draws its paths over it).
+     */
+    public static void drawWorld(Graphics2D g, Scene s, ViewTransform t) {
+        drawArena(g, s, t);
+        g.setStroke(new BasicStroke(1f));
+        java.util.Set<String> tagged = new java.util.HashSet<>();
+        for (String tag : s.poses().tags()) {
+            tagged.add(tag.substring(tag.indexOf('>') + 1));
+        }
+        for (ObstacleShape obstacle : s.obstacles()) {
+            Path2D p = polygon(obstacle, t);
+            g.setColor(WALL);
+            g.fill(p);
+            boolean hit = tagged.contains(obstacle.name());
+            g.setColor(hit ? TAGGED : OUTLINE);
+            g.setStroke(new BasicStroke(hit ? 3f : 1f));
+            g.draw(p);
+        }
+        g.setStroke(new BasicStroke(1f));
+        drawObjects(g, s, t);
+        drawLights(g, s.scenery().lights(), t);
     }
 
     private static void drawArena(Graphics2D g, Scene s, ViewTransform t) {

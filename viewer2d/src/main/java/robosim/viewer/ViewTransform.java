@@ -37,9 +37,13 @@ public final class ViewTransform {
 
     /** Fits the arena into a width x height pixel area with a small margin, centred. */
     public void fit(Arena arena, int width, int height) {
+        fit(arena, width, height, 12);
+    }
+
+    /** Fits the arena into a width x height pixel area, {@code margin} pixels clear all round at least, centred. */
+    public void fit(Arena arena, int width, int height, double margin) {
         double w = arena.maxXMm() - arena.minXMm();
         double h = arena.maxYMm() - arena.minYMm();
-        double margin = 12;
         scale = clamp(Math.min((width - 2 * margin) / w, (height - 2 * margin) / h));
         offsetX = (width - scale * w) / 2 - scale * arena.minXMm();
         offsetY = (height + scale * h) / 2 + scale * arena.minYMm();
