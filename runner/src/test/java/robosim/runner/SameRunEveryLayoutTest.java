@@ -39,7 +39,8 @@ class SameRunEveryLayoutTest {
     Path dir;
 
     /** What one layout's run wrote, and what it printed. */
-    private record Written(byte[] poseLog, String poses, String messages, String output) {
+    private record Written(byte[] poseLog, String poses, String messages, String readings, String scene,
+            String output) {
     }
 
     @Test
@@ -87,13 +88,30 @@ class SameRunEveryLayoutTest {
         assertSame("one JVM's", shared, oneJvm);
     }
 
-    /** The pose logs are the same bytes, and the recordings' poses and messages the same lines. */
+    @Test
+    void worldsOfObjectsLightsLedsCamerasAndMessagesAreTheSameRunOverTheGeometryProcessAsInOneJvm() throws Exception {
+        // foraging: proximity, light and ground sensors, cans pushed and carried (through the Geometry process's
+        // objects); fireflies: LEDs and cameras; aggregation: range-and-bearing messages
+        for (String world : List.of("foraging.xml", "synchronization.xml", "aggregation.xml")) {
+            Written shared = inThisJvm(world, world + "-shared", "robots_in=one-process", "--robots-in-one-process");
+            assertTrue(shared.output().contains("geometry=process"), shared.output());
+            Written oneJvm = inThisJvm(world, world + "-one-jvm", "robots_in=one-jvm", "--one-jvm");
+            assertTrue(shared.readings().lines().count() > STEPS, world + ": readings recorded");
+            assertSame(world + ", one JVM's", shared, oneJvm);
+        }
+    }
+
+    /** The pose logs are the same bytes, and the recordings' poses, messages, readings and scenes the same lines. */
     private static void assertSame(String which, Written first, Written other) {
         assertSameLines(which + " pose log", lines(first.poseLog()), lines(other.poseLog()));
         assertTrue(Arrays.equals(first.poseLog(), other.poseLog()), which + " pose log differs in its bytes");
         assertSameLines(which + " recording's poses", first.poses().lines().toList(), other.poses().lines().toList());
         assertSameLines(which + " recording's messages", first.messages().lines().toList(),
                 other.messages().lines().toList());
+        assertSameLines(which + " recording's readings", first.readings().lines().toList(),
+                other.readings().lines().toList());
+        assertSameLines(which + " recording's objects and LEDs", first.scene().lines().toList(),
+                other.scene().lines().toList());
     }
 
     /** The arguments of a run of {@code world} for {@link #STEPS} steps with a pose log and a recording. */
@@ -143,8 +161,25 @@ class SameRunEveryLayoutTest {
             try (BufferedWriter out = new BufferedWriter(messages)) {
                 RecordToolMain.messages(reader, out);
             }
+            StringWriter readings = new StringWriter();
+            try (BufferedWriter out = new BufferedWriter(readings)) {
+                RecordToolMain.readings(reader, out);
+            }
+            StringBuilder scene = new StringBuilder(); // (each step's object poses and robots' LED colours)
+            for (int k = 0; k < reader.steps(); k++) {
+                robosim.protocol.PoseUpdate u = reader.step(k).update();
+                scene.append(u.step());
+                for (int o = 0; o < u.objectCount(); o++) {
+                    scene.append(' ').append(u.objectXMm(o)).append(',').append(u.objectYMm(o)).append(',')
+                            .append(u.objectHeadingDeg(o));
+                }
+                for (int r = 0; r < u.count(); r++) {
+                    scene.append(' ').append(Arrays.toString(u.leds(r)));
+                }
+                scene.append('\n');
+            }
             return new Written(Files.readAllBytes(dir.resolve(layout + ".csv")), poses.toString(), messages.toString(),
-                    output);
+                    readings.toString(), scene.toString(), output);
         }
     }
 
