@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Makes web-2d.png and web-3d.png: the browser viewer (--web-port) in Debian's headless chromium, watching
 # test-envs/maze.xml (sonar rays on in 2D), replay.png: the page on a replay of that run, paused at a
-# step with its timeline, and web-robot.png: the page's robot panel watching f1 on test-envs/sensors.xml.
+# step with its timeline, web-robot.png: the page's robot panel watching f1 on test-envs/sensors.xml, and
+# web-3d-foraging.png: the 3D view of test-envs/foraging.xml (its floor, lamp, cans and the foot-bots' LEDs).
 # Needs chromium (installed here if missing and we are root).
 #   scripts/screenshot-web.sh [--write-docs | --out DIR] [--classpath PATH[:PATH...]] [--help]
 # Writes into a fresh temporary directory (its path is printed), into DIR with --out DIR, or into docs/
@@ -55,3 +56,10 @@ run=$!
 sleep 12   # the followers have found their leader
 alive "$run" "the sensors run" sensors.log
 shot "$out/web-robot.png" "http://localhost:$web/?watch=f1&follow=f1"
+kill "$run" 2>/dev/null || true; wait "$run" 2>/dev/null || true; run=""
+web=$(free_port)
+scripts/headless.sh --env test-envs/foraging.xml --steps 30000 --speed 4 --web-port "$web" >"$tmp/foraging.log" 2>&1 &
+run=$!
+sleep 15   # the foot-bots have found cans and carry some
+alive "$run" "the foraging run" foraging.log
+shot "$out/web-3d-foraging.png" "http://localhost:$web/?view=3d"

@@ -84,7 +84,7 @@ public final class Forage implements RobotControl {
     }
 
     /** True when every ground sensor reads the nest's grey. */
-    static boolean nest(double[] ground) {
+    public static boolean nest(double[] ground) {
         for (double g : ground) {
             if (!(g < NEST)) {
                 return false;
