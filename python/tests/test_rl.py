@@ -31,6 +31,8 @@ MIXED = REPO / "test-envs/test.xml"
 DISPERSION = REPO / "examples/python/learning/dispersion.xml"
 #: Three robots each with a laser, a heat and a bump sensor, near a heat source.
 SENSORS = REPO / "test-envs/sensors.xml"
+#: Two foot-bots: "carrier" faces a gripable can 5 mm ahead, "watcher" stands 0.5 m to its left.
+GRIPPING = REPO / "test-envs/gripping.xml"
 #: A generous bound on anything a test waits for (a loaded machine).
 WAIT_S = 120.0
 
@@ -60,6 +62,43 @@ def test_a_robots_sensors_are_observed_each_a_box_its_description_gives() -> Non
         assert all(space[part].contains(f1[part]) for part in space), "every part within its box"
         assert f1["laser"].min() < 8000, "a wall in sight"
         assert f1["heat"][0] > 0, "the stove in sight"
+        parallel_api_test(env, num_cycles=20)
+    finally:
+        env.close()
+
+
+def test_foot_bots_observe_their_devices_and_act_through_the_gripper_and_leds() -> None:
+    env = ParallelEnv(GRIPPING, sensors=True, actuators=True, max_steps=50)
+    try:
+        space = env.observation_space("carrier")
+        assert space["proximity"].shape == (24,) and space["light"].shape == (24,) and space["ground"].shape == (4,)
+        rab = space["rab"]
+        assert rab.shape == (16 * 12,), "16 messages of range, bearing and 10 bytes"
+        assert (rab.low[1], rab.high[1], rab.high[0], rab.high[2]) == (-180, 180, 3000, 255), "each field its own"
+        act = env.action_space("carrier")
+        w = env._vector.welcome
+        devices = {d["name"]: d for d in w.actuators[0]}
+        assert list(devices) == ["gripper", "rab", "leds"] and act.shape == (w.action_fields,)
+        assert (act.low[devices["gripper"]["offset"]], act.high[devices["leds"]["offset"]]) == (-1, 0xFFFFFF)
+        observations, _ = env.reset(seed=1)
+        assert all(space[part].contains(observations["carrier"][part]) for part in space)
+        grip = np.zeros(act.shape, np.float32)
+        grip[devices["gripper"]["offset"]] = 1.0  # take the can
+        leds = devices["leds"]
+        grip[leds["offset"]:leds["offset"] + leds["count"]] = 0xFF0000  # every LED red
+        still = np.zeros(act.shape, np.float32)
+        observations, *_ = env.step({"carrier": grip, "watcher": still})
+        blobs = observations["watcher"]["camera"]
+        assert blobs[0] == 0xFF0000 and abs(blobs[1] - 500) < 100, f"the watcher sees red LEDs: {blobs[:3]}"
+        back = np.zeros(act.shape, np.float32)
+        back[0] = -100.0  # reverse at 100 mm/s: the can comes along, filling the front rays
+        for _ in range(10):
+            observations, *_ = env.step({"carrier": back, "watcher": still})
+        assert observations["carrier"]["proximity"][0] > 0.9, "the can held at the gripper"
+        back[devices["gripper"]["offset"]] = -1.0  # let go, and keep reversing
+        for _ in range(10):
+            observations, *_ = env.step({"carrier": back, "watcher": still})
+        assert observations["carrier"]["proximity"][0] == 0, "the can left behind, out of the rays' 100 mm"
         parallel_api_test(env, num_cycles=20)
     finally:
         env.close()

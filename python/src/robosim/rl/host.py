@@ -59,6 +59,13 @@ class Welcome:
     sensors: list[list[dict[str, Any]]]
     #: Columns of a robot's row of ``Batch.readings`` (0: no robot has a sensor, no readings array).
     readings: int
+    #: Fields of a robot's action: 2 velocities, the message's numbers, then its devices' (``actuators=True``).
+    action_fields: int
+    #: Each robot's devices it acts through (``actuators=True``): name (``gripper``: above 0.5 grips, below -0.5
+    #: lets go; ``leds``: a colour 0xRRGGBB an LED; ``rab``: a message's bytes), offset (its first field in the
+    #: robot's action), count, low, high; a value beyond them is held to them, rounded where the device takes whole
+    #: numbers.
+    actuators: list[list[dict[str, Any]]]
 
 
 @dataclass(frozen=True)
@@ -97,7 +104,8 @@ class LearningHost:
     """A started learning host and the link to it. ``close()`` (or ``with``) says bye and waits for it to end."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 1, repeat: int = 1, message_size: int = 0,
-                 sensors: bool = False, random_headings: bool = False, area_cell_m: float | None = None,
+                 sensors: bool = False, actuators: bool = False, random_headings: bool = False,
+                 area_cell_m: float | None = None,
                  threads: int | None = None,
                  episode_metric: str | None = None, web_port: int | None = None, viewer_port: int | None = None,
                  params: dict[str, str] | None = None, robosim_home: str | os.PathLike[str] | None = None) -> None:
@@ -109,6 +117,8 @@ class LearningHost:
                    "--worlds", str(worlds), "--repeat", str(repeat), "--message-size", str(message_size)]
         if sensors:
             command.append("--sensors")
+        if actuators:
+            command.append("--actuators")
         if random_headings:
             command.append("--random-headings")
         if area_cell_m is not None:
@@ -167,7 +177,7 @@ class LearningHost:
         #: Each array of a reply: its name, type, shape and size in bytes (Batch's fields, in order).
         self._arrays = [(name, dtype, shape, int(np.prod(shape)) * np.dtype(dtype).itemsize)
                         for name, dtype, shape in shapes]
-        self._action_shape = (w.worlds, n, 2 + w.message_size)
+        self._action_shape = (w.worlds, n, w.action_fields)
 
     def _listening(self) -> re.Match[str]:
         assert self._process.stdout is not None
@@ -238,8 +248,8 @@ class LearningHost:
         return self._call(["reset", [None if s is None else int(s) for s in seeds]])
 
     def step(self, actions: np.ndarray, resets: dict[int, int] | None = None) -> Batch:
-        """Every robot of every world acts (``actions``: float32 (K, N, 2 + message size): mm/s, deg/s, message);
-        the worlds in ``resets`` begin a new episode with the seed given instead."""
+        """Every robot of every world acts (``actions``: float32 (K, N, Welcome.action_fields): mm/s, deg/s, message,
+        devices); the worlds in ``resets`` begin a new episode with the seed given instead."""
         if actions.shape != self._action_shape:
             raise ValueError(f"actions of shape {actions.shape}; this batch takes {self._action_shape}")
         data = actions.astype("<f4", copy=False).tobytes()

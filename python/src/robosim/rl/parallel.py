@@ -21,12 +21,13 @@ class ParallelEnv(pettingzoo.ParallelEnv):
     metadata = {"name": "robosim_parallel_v0", "render_modes": []}
 
     def __init__(self, path: str | os.PathLike[str], *, repeat: int = 1, pose: bool = False, sensors: bool = False,
+                 actuators: bool = False,
                  message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
                  terminate: Terminate = None,
                  episode_metric: str | None = None, random_headings: bool = False, area_cell_m: float | None = None,
                  web_port: int | None = None, viewer_port: int | None = None, params: dict[str, str] | None = None,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
-        self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors,
+        self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors, actuators=actuators,
                                  message_size=message_size, max_steps=max_steps, reward=reward, terminate=terminate,
                                  episode_metric=episode_metric, random_headings=random_headings,
                                  area_cell_m=area_cell_m, threads=1, web_port=web_port, viewer_port=viewer_port,
@@ -34,7 +35,7 @@ class ParallelEnv(pettingzoo.ParallelEnv):
         self.possible_agents = list(self._vector.agents)
         self.agents: list[str] = []
         self._index = {a: i for i, a in enumerate(self.possible_agents)}
-        self._actions = np.zeros((1, len(self.possible_agents), 2 + message_size), np.float32)
+        self._actions = np.zeros((1, len(self.possible_agents), self._vector.welcome.action_fields), np.float32)
         self.web_port = self._vector.host.web_port
         self.viewer_port = self._vector.host.viewer_port
 

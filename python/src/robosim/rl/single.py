@@ -23,13 +23,14 @@ class SingleRobotEnv(gymnasium.Env):
     metadata = {"render_modes": []}
 
     def __init__(self, path: str | os.PathLike[str], *, robot: str | None = None, others: Others | None = None,
-                 repeat: int = 1, pose: bool = False, sensors: bool = False, message_size: int = 0,
+                 repeat: int = 1, pose: bool = False, sensors: bool = False, actuators: bool = False,
+                 message_size: int = 0,
                  max_steps: int = DEFAULT_MAX_STEPS,
                  reward: Reward = None, terminate: Terminate = None, episode_metric: str | None = None,
                  random_headings: bool = False, area_cell_m: float | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
-        self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors,
+        self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors, actuators=actuators,
                                  message_size=message_size, max_steps=max_steps, reward=reward, terminate=terminate,
                                  episode_metric=episode_metric, random_headings=random_headings,
                                  area_cell_m=area_cell_m, threads=1, web_port=web_port, viewer_port=viewer_port,
@@ -44,7 +45,7 @@ class SingleRobotEnv(gymnasium.Env):
         self.observation_space = self._vector.observation_space(self.robot)
         self.action_space = self._vector.action_space(self.robot)
         self._parts: dict[str, np.ndarray] = {}
-        self._actions = np.zeros((1, len(agents), 2 + message_size), np.float32)
+        self._actions = np.zeros((1, len(agents), self._vector.welcome.action_fields), np.float32)
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None
               ) -> tuple[dict[str, np.ndarray], dict[str, Any]]:

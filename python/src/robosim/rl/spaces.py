@@ -22,7 +22,7 @@ class Layout:
     degrees), the last message heard from each robot (zeros if none), each of its sensors (a box of its count of
     values within its range, as the sensor's description in RoboSim's registry says: ``scripts/describe.sh
     SENSOR``); its action: linear velocity (mm/s) and rotational velocity (deg/s) within its type's limits, then its
-    message's numbers (-1 to 1)."""
+    message's numbers (-1 to 1), then, with ``actuators=True``, its devices' fields (``Welcome.actuators``)."""
 
     welcome: Welcome
     pose: bool
@@ -56,10 +56,17 @@ class Layout:
         return spaces.Dict(parts)
 
     def action_space(self, robot: int) -> spaces.Box:
+        """Its velocities within its type's limits, its message's numbers, then (``actuators=True``) its devices'
+        fields, each within its device's bounds (0 to 0 where another robot's device lies)."""
         w = self.welcome
-        high = np.array([w.max_speed_mm_s[robot], w.max_turn_deg_s[robot]] + [MESSAGE_BOUND] * w.message_size,
-                        np.float32)
-        return spaces.Box(-high, high, dtype=np.float32)
+        high = np.array([w.max_speed_mm_s[robot], w.max_turn_deg_s[robot]] + [MESSAGE_BOUND] * w.message_size
+                        + [0.0] * (w.action_fields - 2 - w.message_size), np.float32)
+        low = -high
+        for d in w.actuators[robot]:
+            start, count = int(d["offset"]), int(d["count"])
+            low[start:start + count] = d["low"]
+            high[start:start + count] = d["high"]
+        return spaces.Box(low, high, dtype=np.float32)
 
     def observations(self, batch: Batch) -> dict[str, np.ndarray]:
         """The batch's observations, part by part, each (K, N, ...): views where they can be, one copy for contact

@@ -39,7 +39,7 @@ class Transition:
     """What a reward or termination function sees of one step of K worlds (arrays of the batch, read-only):
     ``observations`` part by part (K, N, ...), the robots' ``pose`` (K, N, 3) and ``contact`` (K, N) whether observed
     or not, the built-in ``metrics`` of each world's episode so far and before this step, by name (K,), ``actions``
-    (K, N, 2 + message size) and ``steps``: actions since each episode began (K,)."""
+    (K, N, Welcome.action_fields) and ``steps``: actions since each episode began (K,)."""
 
     observations: dict[str, np.ndarray]
     pose: np.ndarray
@@ -61,8 +61,8 @@ Terminate = Callable[[Transition], np.ndarray] | None
 class VectorEnv:
     """K copies of the world of an environment file, each with its own seed, stepped together in one JVM (the worlds
     shared out over its cores): ``reset(seed)`` gives observations (K, N, ...); ``step(actions)`` with actions (K, N,
-    2 + message size) gives observations, rewards (K, N), terminations (K, N), truncations (K, N) and infos. A world
-    whose episode has ended (every robot terminated, or ``max_steps`` actions) begins its next at the following
+    Welcome.action_fields) gives observations, rewards (K, N), terminations (K, N), truncations (K, N) and infos. A
+    world whose episode has ended (every robot terminated, or ``max_steps`` actions) begins its next at the following
     ``step`` (Gymnasium's next-step autoreset: that step's actions for it are not used, its rewards are 0 and
     ``infos["reset"]`` says which worlds began again). A terminated robot stands still until its world begins again;
     ``infos["active"]`` (K, N) is True where a robot's step is one of its episode's (False for robots done before the
@@ -74,8 +74,8 @@ class VectorEnv:
     World w of ``reset(seed=s)`` runs with seed s + w; its later episodes with seeds drawn from (s, w)."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
-                 sensors: bool = False, message_size: int = 0, max_steps: int = DEFAULT_MAX_STEPS,
-                 reward: Reward = None,
+                 sensors: bool = False, actuators: bool = False, message_size: int = 0,
+                 max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
                  terminate: Terminate = None, episode_metric: str | None = None, random_headings: bool = False,
                  area_cell_m: float | None = None, threads: int | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
@@ -83,7 +83,8 @@ class VectorEnv:
         if max_steps < 1:
             raise ValueError(f"max_steps must be >= 1, got {max_steps}")
         self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size, sensors=sensors,
-                                 random_headings=random_headings, area_cell_m=area_cell_m, threads=threads,
+                                 actuators=actuators, random_headings=random_headings, area_cell_m=area_cell_m,
+                                 threads=threads,
                                  episode_metric=episode_metric, web_port=web_port, viewer_port=viewer_port,
                                  params=params, robosim_home=robosim_home)
         self.welcome = self.host.welcome
@@ -99,7 +100,7 @@ class VectorEnv:
         self._observation_spaces = [self.layout.observation_space(i) for i in range(len(self.agents))]
         self._action_spaces = [self.layout.action_space(i) for i in range(len(self.agents))]
         n = len(self.agents)
-        self._actions = np.zeros((worlds, n, 2 + message_size), np.float32)
+        self._actions = np.zeros((worlds, n, self.welcome.action_fields), np.float32)
         self._done = np.zeros((worlds, n), bool)
         self._any_done = False
         #: The worlds whose episode has ended, and the seed each begins its next with at the next step.
@@ -136,7 +137,7 @@ class VectorEnv:
 
     def step(self, actions: np.ndarray) -> tuple[dict[str, np.ndarray], np.ndarray, np.ndarray, np.ndarray,
                                                  dict[str, Any]]:
-        """One action of every robot of every world (float32 (K, N, 2 + message size); velocities beyond a robot's
+        """One action of every robot of every world (float32 (K, N, Welcome.action_fields); velocities beyond a robot's
         limits are held to them)."""
         if self._metrics is None:
             raise RuntimeError("reset() before step()")

@@ -42,7 +42,7 @@ import robosim.protocol.SonarSpec;
  * {@code pose} (float32), {@code contact} (uint8), {@code metrics} (float64), {@code messages} (float32, when
  * messages have numbers), {@code readings} (float32, with {@code --sensors}, when the robots have sensors). A request that is not one, or actions not finite or not of the batch's size, is answered
  * {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}) and the link goes on; velocities beyond a
- * robot's limits are held to them. A world that cannot go on (an internal failure) is answered
+ * robot's limits are held to them, and device values ({@code --actuators}: {@link ActuatorColumns}) to theirs. A world that cannot go on (an internal failure) is answered
  * {@code ["error", "failed", WHY]} and the link ends.
  */
 public final class BatchLink {
@@ -100,7 +100,7 @@ public final class BatchLink {
     private byte[] welcomeFrame() throws IOException {
         MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
         List<RobotProperties> properties = batch.properties();
-        p.packMapHeader(20);
+        p.packMapHeader(22);
         p.packString("link").packString(NAME);
         p.packString("version").packInt(VERSION);
         p.packString("world").packString(batch.spec().name());
@@ -160,6 +160,20 @@ public final class BatchLink {
                     p.packDouble(c.values().high(v));
                 }
                 p.packString("unit").packString(c.values().unit());
+            }
+        }
+        p.packString("action_fields").packInt(batch.actionFields());
+        p.packString("actuators").packArrayHeader(batch.robots());
+        for (int i = 0; i < batch.robots(); i++) { // (each robot's devices: their fields in its action row)
+            List<ActuatorColumns.Column> own = batch.actuatorColumns().of(i);
+            p.packArrayHeader(own.size());
+            for (ActuatorColumns.Column c : own) {
+                p.packMapHeader(5);
+                p.packString("name").packString(c.name());
+                p.packString("offset").packInt(c.offset());
+                p.packString("count").packInt(c.values().count());
+                p.packString("low").packDouble(c.values().low());
+                p.packString("high").packDouble(c.values().high());
             }
         }
         if (batch.episodeMetric() == null) {
@@ -276,6 +290,8 @@ public final class BatchLink {
             if (field < BatchWorlds.VELOCITIES) {
                 double max = limits[(i / fields) % batch.robots()][field];
                 v = (float) Math.max(-max, Math.min(max, v));
+            } else if (field >= BatchWorlds.VELOCITIES + batch.messageSize()) {
+                v = batch.actuatorColumns().held((i / fields) % batch.robots(), field, v);
             }
             actions[i] = v;
         }

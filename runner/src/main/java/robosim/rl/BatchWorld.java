@@ -116,7 +116,8 @@ final class BatchWorld {
 
     /**
      * Applies each robot's action, {@code actions[offset + robot * fields ...]}: velocities (mm/s, deg/s; finite,
-     * bounded by the robot type's limits before they come here), then the message's numbers, for the batch's
+     * bounded by the robot type's limits before they come here), then the message's numbers, then its devices'
+     * values ({@link ActuatorColumns}, set in the first time step), for the batch's
      * repeat of time steps (the message goes out in the first, the sonars are read in the last), and writes what
      * the robots sensed.
      */
@@ -135,6 +136,9 @@ final class BatchWorld {
                 boolean last = r == repeat - 1;
                 requests[i] = new StepRequest(step, Drive.perStep(actions[a], seconds),
                         Drive.perStep(actions[a + 1], seconds), last, sent, last ? sensors[i] : List.of());
+                if (r == 0) { // (the devices are set once; LEDs and messages hold, the gripper waits)
+                    requests[i] = batch.actuatorColumns().apply(requests[i], i, actions, a);
+                }
             }
             advance();
         }

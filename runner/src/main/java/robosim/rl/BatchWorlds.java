@@ -41,6 +41,7 @@ public final class BatchWorlds implements AutoCloseable {
     private final byte[] contact;
     private final byte[] messages;
     private final SensorColumns sensorColumns;
+    private final ActuatorColumns actuatorColumns;
     private final byte[] readings;
     private final byte[] metrics;
     private final byte[] steps;
@@ -58,22 +59,28 @@ public final class BatchWorlds implements AutoCloseable {
      *     {@link #readings()}; without, they are not read (no ray cast, no noise drawn)
      */
     public record Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
-            MetricChoice episodeMetric, boolean sensors) {
+            MetricChoice episodeMetric, boolean sensors, boolean actuators) {
         public Settings {
             if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
                 throw new IllegalArgumentException("the area cell must be a side > 0 m, got " + areaCellM);
             }
         }
 
-        /** Without the robots' sensors. */
+        /** Without acting through the robots' devices. */
+        public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
+                MetricChoice episodeMetric, boolean sensors) {
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, episodeMetric, sensors, false);
+        }
+
+        /** Without the robots' sensors and devices. */
         public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
                 MetricChoice episodeMetric) {
-            this(repeat, messageSize, randomHeadings, areaCellM, threads, episodeMetric, false);
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, episodeMetric, false, false);
         }
 
         /** Without an episode metric or the robots' sensors. */
         public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads) {
-            this(repeat, messageSize, randomHeadings, areaCellM, threads, null, false);
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, null, false, false);
         }
     }
 
@@ -100,6 +107,7 @@ public final class BatchWorlds implements AutoCloseable {
         this.contact = new byte[count * robots];
         this.messages = new byte[count * robots * robots * messageSize * 4];
         this.sensorColumns = new SensorColumns(spec, settings.sensors());
+        this.actuatorColumns = new ActuatorColumns(spec, settings.actuators(), VELOCITIES + messageSize);
         this.readings = new byte[count * robots * sensorColumns.width() * 4];
         this.metrics = new byte[count * METRICS.size() * 8];
         this.steps = new byte[count * 8];
@@ -203,7 +211,12 @@ public final class BatchWorlds implements AutoCloseable {
     }
 
     public int actionFields() {
-        return VELOCITIES + settings.messageSize();
+        return VELOCITIES + settings.messageSize() + actuatorColumns.width();
+    }
+
+    /** Where each robot's devices lie in its action row (none unless the settings ask for them). */
+    ActuatorColumns actuatorColumns() {
+        return actuatorColumns;
     }
 
     public WorldSpec spec() {

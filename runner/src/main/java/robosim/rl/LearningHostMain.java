@@ -77,6 +77,11 @@ public final class LearningHostMain implements Callable<Integer> {
             + "each action's last time step, for the learner to observe (default: not: no ray cast, no noise drawn).")
     boolean sensors;
 
+    @Option(names = "--actuators", description = "Act through each robot's devices too: its gripper and its type's "
+            + "actuators (LEDs, range-and-bearing), fields after the velocities and the message in its action "
+            + "(default: not: velocities and message only).")
+    boolean actuators;
+
     @Option(names = "--random-headings", description = "Draw each robot's start heading from the episode's seed "
             + "(default: the file's headings).")
     boolean randomHeadings;
@@ -127,7 +132,7 @@ public final class LearningHostMain implements Callable<Integer> {
         InetAddress loopback = InetAddress.getLoopbackAddress();
         MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
-                randomHeadings, areaCell.metres(), shares, metric, sensors));
+                randomHeadings, areaCell.metres(), shares, metric, sensors, actuators));
                 ServerSocket server = new ServerSocket()) {
             server.bind(new InetSocketAddress(loopback, port), 1);
             WatchedWorld watch = viewerPort >= 0 || web.port() >= 0 ? new WatchedWorld(batch) : null;
