@@ -37,6 +37,11 @@ public final class RabSensor extends RobotSensor {
         }
     }
 
+    /** The most messages it reads a step (the nearest): the medium works out no more for it. */
+    public int maxMessages() {
+        return most;
+    }
+
     /** Its model (the medium's concern: where it sits, whether it senses bearing, the message size it takes). */
     public RabModel model() {
         return model;

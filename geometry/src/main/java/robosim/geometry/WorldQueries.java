@@ -70,26 +70,29 @@ public final class WorldQueries {
      */
     public boolean sight(double ax, double ay, double az, double bx, double by, double bz, double[] x, double[] y,
             double[] r, double[] height, int excludeA, int excludeB) {
-        if (!clear(ax, ay, bx, by)) {
-            return false;
-        }
-        area.init(Math.min(ax, bx), Math.max(ax, bx), Math.min(ay, by), Math.max(ay, by));
-        for (int o = 0; o < things.count(); o++) {
-            if (!things.outside(o, area) && things.crossing(o, ax, ay, bx, by, scratch)
-                    && below(az, bz, scratch[0], scratch[1], things.object(o).heightMm())) {
-                return false;
-            }
-        }
+        return sight(ax, ay, az, bx, by, bz, x, y, r, height, excludeA, excludeB, null, x.length);
+    }
+
+    /**
+     * As {@link #sight(double, double, double, double, double, double, double[], double[], double[], double[], int,
+     * int)}, looking only at the robots {@code among[0 .. count)} (null: every robot, {@code count} of them): the
+     * caller's index has left out those whose bodies cannot reach the line's box.
+     */
+    public boolean sight(double ax, double ay, double az, double bx, double by, double bz, double[] x, double[] y,
+            double[] r, double[] height, int excludeA, int excludeB, int[] among, int count) {
+        // (the robots first: in a crowd they block most often, and they cost least to look at)
+        double minX = Math.min(ax, bx);
+        double maxX = Math.max(ax, bx);
+        double minY = Math.min(ay, by);
+        double maxY = Math.max(ay, by);
         double dx = bx - ax;
         double dy = by - ay;
         double len2 = dx * dx + dy * dy;
-        for (int j = 0; j < x.length; j++) {
-            if (j == excludeA || j == excludeB || len2 == 0) {
-                continue;
-            }
+        for (int k = 0; k < count && len2 > 0; k++) {
+            int j = among == null ? k : among[k];
             double rj = r[j];
-            if (x[j] + rj < area.getMinX() || x[j] - rj > area.getMaxX() || y[j] + rj < area.getMinY()
-                    || y[j] - rj > area.getMaxY()) {
+            if (j == excludeA || j == excludeB || x[j] + rj < minX || x[j] - rj > maxX || y[j] + rj < minY
+                    || y[j] - rj > maxY) {
                 continue;
             }
             double fx = ax - x[j];
@@ -104,6 +107,16 @@ public final class WorldQueries {
             double t0 = Math.max(0, (-b - root) / (2 * len2));
             double t1 = Math.min(1, (-b + root) / (2 * len2));
             if (t0 < t1 && below(az, bz, t0, t1, height[j])) {
+                return false;
+            }
+        }
+        if (!clear(ax, ay, bx, by)) {
+            return false;
+        }
+        area.init(minX, maxX, minY, maxY);
+        for (int o = 0; o < things.count(); o++) {
+            if (!things.outside(o, area) && things.crossing(o, ax, ay, bx, by, scratch)
+                    && below(az, bz, scratch[0], scratch[1], things.object(o).heightMm())) {
                 return false;
             }
         }

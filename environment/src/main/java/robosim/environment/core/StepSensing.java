@@ -61,12 +61,12 @@ final class StepSensing {
         List<robosim.devices.DeviceSpec> specs = robot.sensors();
         sensorNames[i] = new String[specs.size()];
         sensors[i] = new RobotSensor[specs.size()];
-        media.receiver(i, null);
+        media.receiver(i, null, 0);
         for (int k = 0; k < specs.size(); k++) {
             sensorNames[i][k] = specs.get(k).name();
             sensors[i][k] = Sensors.create(specs.get(k).kind(), specs.get(k).attributes(), p);
             if (sensors[i][k] instanceof RabSensor rab) {
-                media.receiver(i, rab.model());
+                media.receiver(i, rab.model(), rab.maxMessages());
             }
         }
     }
