@@ -24,7 +24,7 @@ public record ActuatorValues(int count, double low, double high, boolean whole) 
             double v = values[k];
             if (!(v >= low && v <= high) || (whole && v != Math.rint(v))) {
                 return device + " value " + k + " must be " + (whole ? "a whole number " : "") + "from "
-                        + Attribute.plain(low) + " to " + Attribute.plain(high) + ", got " + v;
+                        + Attribute.plain(low) + " to " + Attribute.plain(high) + ", got " + Attribute.plain(v);
             }
         }
         return null;
