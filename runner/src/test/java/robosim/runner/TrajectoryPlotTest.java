@@ -39,7 +39,8 @@ class TrajectoryPlotTest {
         for (int robot : new int[] {0x1f77b4, 0xd62728, 0x2ca02c, 0xff7f0e, 0x9467bd, 0x8c564b}) {
             assertTrue(colours.contains(robot), "robot colour " + Integer.toHexString(robot) + " drawn");
         }
-        assertTrue(colours.contains(0x999999), "the obstacles drawn");
+        assertTrue(colours.contains(robosim.viewer.SceneRenderer.WALL.getRGB() & 0xffffff), "the obstacles drawn, as the "
+                + "viewers draw them");
         assertEquals(2, new picocli.CommandLine(new RecordToolMain()).execute("plot", recording.toString(), "--out",
                 png.toString()), "an existing file is not overwritten");
         assertTrue(Files.size(png) > 2000);
