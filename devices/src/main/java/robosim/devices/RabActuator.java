@@ -9,8 +9,8 @@ import java.util.List;
  */
 @AutoService(RobotActuator.class)
 public final class RabActuator extends RobotActuator {
-    private static final Attribute RANGE = Attribute.number("rangeMm", 0, "mm", "how far its messages carry (0: its "
-            + "model's)").atLeast(0);
+    private static final Attribute RANGE = Attribute.number("rangeMm", 0, "mm", "how far its messages carry, up to "
+            + "its model's (0: its model's)").atLeast(0);
 
     private RabModel model = RabModel.FOOT_BOT;
     private double rangeMm;
@@ -26,6 +26,10 @@ public final class RabActuator extends RobotActuator {
     protected void configure(Attributes a) {
         model = RabModel.of(RabModel.ATTRIBUTE.choose(a));
         double r = RANGE.read(a);
+        if (r > model.rangeMm()) { // (its receivers' readings and bounds stop at the model's range)
+            throw new IllegalArgumentException("rangeMm " + Attribute.plain(r) + " is beyond a " + model.word()
+                    + "'s range, " + Attribute.plain(model.rangeMm()) + " mm");
+        }
         rangeMm = r > 0 ? r : model.rangeMm();
     }
 

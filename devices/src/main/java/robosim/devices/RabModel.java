@@ -44,6 +44,11 @@ public enum RabModel {
     static final Attribute ATTRIBUTE = Attribute.choice("model", "whose device: range, message size, height, "
             + "occlusion, bearing", "foot-bot", "e-puck", "kilobot");
 
+    /** Its name in a file's {@code model} attribute. */
+    public String word() {
+        return word;
+    }
+
     public double rangeMm() {
         return rangeMm;
     }

@@ -65,8 +65,8 @@ public interface SensorContext {
     }
 
     /**
-     * The range-and-bearing messages the robot received this step (the medium worked out once a step, whichever robot
-     * asks first), nearest first.
+     * The range-and-bearing messages the robot received this step, nearest first, as many as its sensor reads (worked
+     * out for it when it first asks in a step).
      */
     List<RabMessage> rabReceived();
 

@@ -9,7 +9,8 @@ import robosim.protocol.WorldObject;
  * questions moves and sensors ask of them. A box is its four corners and edges ({@link WorldObject#corners}), a cylinder its
  * disc. Sweeps follow {@link Sweep}: the distance something may travel in a straight line before it touches, only
  * approach counting ({@link Sweep#NEVER} when it never does). Objects are few next to walls and robots, so a query
- * looks at each one, its bounding box first. Not thread-safe: one per thread that moves or senses.
+ * looks at each one, its bounding box first. Not thread-safe to change: the engine moves objects on one thread; the
+ * sonar passes only read it.
  */
 public final class ObjectLayer {
     private static final double EPS = 1e-9;

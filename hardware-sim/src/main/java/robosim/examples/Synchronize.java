@@ -8,8 +8,9 @@ import robosim.api.RobotControl;
  * Fireflies (ARGoS's synchronization example, test-envs/synchronization.xml): each foot-bot counts the steps of a
  * period ({@code period}, 30 by default) from a start of its own (its name's), flashes its LEDs yellow for the step its
  * count is 0, and, seeing another's flash in its camera in the second half of its count, takes that flash for its own
- * (its count goes on from it). The flashes fall into step within a few periods. It drives about as it does, turning away from what its proximity ring
- * sees; each step it reports {@code flashing} (1 or 0), so a recording's reports show the flashes come together.
+ * (its count goes on from it). The flashes fall into step within a few periods. Meanwhile it drives straight on,
+ * turning away from what its proximity ring sees; each step it reports {@code flashing} (1 or 0), so a recording's
+ * reports show the flashes come together.
  */
 public final class Synchronize implements RobotControl {
     /** Cruising speed, mm/s. */

@@ -149,6 +149,13 @@ final class SimulatedRobot implements Robot {
                         + " to " + Attribute.plain(top) + " mm/s (" + state.name() + "'s top speed), got " + v);
             }
         }
+        double turn = Math.toDegrees(Math.abs(rightMmPerS - leftMmPerS) / state.type().body().wheelBaseMm());
+        double most = state.type().properties().maxTurnDegPerS();
+        if (turn > most * (1 + 1e-9)) {
+            throw new IllegalArgumentException("wheels at " + Attribute.plain(leftMmPerS) + " and "
+                    + Attribute.plain(rightMmPerS) + " mm/s turn at " + Attribute.plain(Math.round(turn * 10) / 10.0)
+                    + " deg/s, beyond " + state.name() + "'s " + Attribute.plain(most) + " deg/s");
+        }
         state.wheels(leftMmPerS, rightMmPerS);
     }
 

@@ -104,7 +104,6 @@ public final class StepResponse implements java.io.Externalizable {
         return notices;
     }
 
-    /** The name of what this step's tag hit, or "" when nothing was tagged. */
     /** The object the robot's gripper holds after the step, "" for none. */
     public String gripped() {
         return gripped;
@@ -118,6 +117,7 @@ public final class StepResponse implements java.io.Externalizable {
         return r;
     }
 
+    /** The name of what this step's tag hit, or "" when nothing was tagged. */
     public String tagged() {
         return tagged;
     }

@@ -167,8 +167,8 @@ public interface Robot {
      * Time passes with the wheels at these speeds in {@link #step}, {@link #sleep} and {@link #waitForMessage} (standing
      * still at 0 and 0, as a robot starts); {@link #move} and {@link #turn} drive by their own velocities while they
      * run. A differential drive: each step turns by {@code (right - left) / wheel base} radians a second, then moves
-     * {@code (left + right) / 2}, times the step. A speed beyond the robot's top speed, or not a number, is an
-     * IllegalArgumentException naming it.
+     * {@code (left + right) / 2}, times the step. A speed beyond the robot's top speed, or not a number, or a pair
+     * that turns faster than its top turn rate, is an IllegalArgumentException naming them.
      */
     default void setWheelSpeeds(double leftMmPerS, double rightMmPerS) {
         throw new UnsupportedOperationException(name() + " cannot set its wheels' speeds");

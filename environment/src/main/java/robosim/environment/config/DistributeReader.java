@@ -40,8 +40,9 @@ final class DistributeReader {
 
     /**
      * Every {@code <distribute>}'s robots and objects, each checked against {@code placed} and added to it;
-     * {@code robotNames} and {@code thingNames} (objects', obstacles') are the names taken. An element at fault, or
-     * one whose entity found no place in its tries, places nothing and records one fault.
+     * {@code robotNames} and {@code thingNames} (objects', obstacles') are the names taken. An element at fault
+     * places nothing and records its faults; one whose entity finds no place records one fault, naming the entity,
+     * and places no more (the file is refused either way).
      */
     static Placed read(FileFaults faults, EnvironmentFile xml, Placement placed, Set<String> robotNames,
             Set<String> thingNames, long seed) {
@@ -68,10 +69,11 @@ final class DistributeReader {
                 }
                 String why = null;
                 boolean done = false;
+                boolean gridFull = false;
                 for (int t = 0; t < template.tries && !done; t++) {
                     double[] p = position.next(random);
                     if (p == null) {
-                        why = "its grid has no point left";
+                        gridFull = true;
                         break;
                     }
                     double x = p[0] * MM_PER_M;
@@ -101,8 +103,9 @@ final class DistributeReader {
                 }
                 if (!done) {
                     faults.add(e.entity.at, el + " could not place " + FileFaults.cut(name) + " (entity " + (i + 1)
-                            + " of " + template.quantity + ") in " + template.tries + " tries: the last "
-                            + (why == null ? "" : why.startsWith("its grid") ? why : "overlapped " + why));
+                            + " of " + template.quantity + ")" + (gridFull ? ": its grid has no point left"
+                            + (why == null ? "" : " (the last overlapped " + why + ")")
+                            : " in " + template.tries + " tries: the last overlapped " + why));
                     break;
                 }
                 names.add(name);

@@ -240,6 +240,13 @@ public final class EnvironmentLoader {
         DistributeReader.Placed distributed = DistributeReader.read(faults, xml, placed, robotNames, thingNames, seed);
         objects.addAll(distributed.objects());
         robots.fromStart().addAll(distributed.robots());
+        if (objects.size() > Limits.MAX_OBJECTS) {
+            faults.add(xml.at, env + " places " + objects.size() + " objects in all, at most " + Limits.MAX_OBJECTS);
+        }
+        if (robots.fromStart().size() + robots.anyTime().size() > Limits.MAX_ROBOTS) {
+            faults.add(xml.at, env + " places " + (robots.fromStart().size() + robots.anyTime().size())
+                    + " robots in all, at most " + Limits.MAX_ROBOTS);
+        }
         boolean distributes = xml.distribute.stream().anyMatch(d -> d.entity != null && d.entity.robot != null);
         if (xml.robots.isEmpty() && !distributes) {
             faults.add(xml.at, "<environment> needs at least one robot: a <robot> in <robots>, or a <distribute> of "

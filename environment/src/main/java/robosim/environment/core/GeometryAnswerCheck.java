@@ -9,8 +9,9 @@ import robosim.protocol.ProtocolException;
  * Checks Geometry's answer to one step before any of it is used: the step and robot count asked,
  * finite distances no longer than asked (Geometry only ever shortens a motion), contacts that name a
  * robot, obstacle, object or the arena that exists, exactly the sonar ranges and proximity rays asked for, each finite
- * and not negative, every object's pose finite and inside the arena, and a catch only for a robot that asked to grip,
- * of an object that exists. An answer from another process is hostile until proven otherwise.
+ * and not negative, every object's pose finite and inside the arena (a fixed one's unchanged), and a catch only for a
+ * robot that asked to grip, of a gripable object that exists and that no one holds or took this step. An answer from
+ * another process is hostile until proven otherwise.
  */
 final class GeometryAnswerCheck {
     private static final double SLACK = 1e-6;
@@ -24,7 +25,7 @@ final class GeometryAnswerCheck {
      * @throws ProtocolException naming what is wrong
      */
     static void check(GeometryStepRequest asked, GeometryStepResponse answer, int[] sonars, int[] rays, int obstacles,
-            Arena arena) throws ProtocolException {
+            Arena arena, java.util.List<robosim.protocol.WorldObject> things) throws ProtocolException {
         int robots = sonars.length;
         int objects = asked.objectCount();
         if (answer.step() != asked.step() || answer.count() != robots || answer.objectCount() != objects) {
@@ -85,17 +86,25 @@ final class GeometryAnswerCheck {
                 throw new ProtocolException("geometry put object " + o + " at (" + x + ", " + y + ") heading "
                         + answer.objectHeadingDeg(o) + ", outside the arena or not a pose");
             }
+            if (!things.get(o).movable() && (x != asked.objectXMm(o) || y != asked.objectYMm(o)
+                    || answer.objectHeadingDeg(o) != asked.objectHeadingDeg(o))) {
+                throw new ProtocolException("geometry moved object " + o + ", which is fixed");
+            }
         }
+        boolean[] taken = new boolean[objects];
         int last = -1;
         for (int k = 0; k < answer.gripCount(); k++) {
             int robot = answer.gripRobot(k);
             int object = answer.gripObject(k);
             if (robot <= last || robot >= robots || !asked.wantsGrip(robot) || object < -1 || object >= objects
-                    || (object >= 0 && asked.carrier(object) >= 0)) {
+                    || (object >= 0 && (asked.carrier(object) >= 0 || !things.get(object).gripable() || taken[object]))) {
                 throw new ProtocolException("geometry gave robot " + robot + " object " + object
                         + " to grip, which it did not ask for or cannot have");
             }
             last = robot;
+            if (object >= 0) {
+                taken[object] = true;
+            }
         }
     }
 }

@@ -213,7 +213,7 @@ public final class SimulationCore {
             throw new IllegalStateException("no step waits for an answer");
         }
         GeometryAnswerCheck.check(geometryRequest, g, sonarCount, rayCount, map.spec().obstacles().size(),
-                map.spec().arena());
+                map.spec().arena(), map.spec().scenery().objects());
         StepRequest[] requests = pending;
         pending = null;
         lastRequests = requests;

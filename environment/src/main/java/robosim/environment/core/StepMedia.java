@@ -107,7 +107,7 @@ final class StepMedia {
             crowd = new int[radius.length];
         }
         crowdCount = 0;
-        if ((x1 - x0 + 1) * (y1 - y0 + 1) > cells.size()) {
+        if ((double) (x1 - x0 + 1) * (y1 - y0 + 1) > cells.size()) { // (double: a range of any size)
             for (int[] in : cells.values()) {
                 for (int j : in) {
                     crowd[crowdCount++] = j;
@@ -141,8 +141,10 @@ final class StepMedia {
                 return (clear[(int) (pair >>> 6)] & (1L << pair)) != 0;
             }
         }
+        int lo = Math.min(a, b); // (the line from the lower-numbered end, whoever asks: one answer both ways)
+        int hi = Math.max(a, b);
         crowd(Math.min(x[a], x[b]), Math.max(x[a], x[b]), Math.min(y[a], y[b]), Math.max(y[a], y[b]));
-        boolean seen = queries.sight(x[a], y[a], z, x[b], y[b], z, x, y, radius, height, a, b, crowd, crowdCount);
+        boolean seen = queries.sight(x[lo], y[lo], z, x[hi], y[hi], z, x, y, radius, height, lo, hi, crowd, crowdCount);
         if (cached) {
             known[(int) (pair >>> 6)] |= 1L << pair;
             if (seen) {
@@ -225,10 +227,10 @@ final class StepMedia {
     }
 
     /**
-     * The messages robot {@code i} received this step, nearest first (the nearer sender first at one distance), at
-     * most its receiver's cap: worked out for it alone the first time it asks in a step. The senders in range are
-     * taken by distance and the line of sight looked at only until the cap is reached, so a crowd in range costs
-     * a sort, not a sight line to everyone.
+     * The messages robot {@code i} received this step, nearest first (the lower-numbered sender first at one
+     * distance), at most its receiver's cap: worked out for it alone the first time it asks in a step. The senders in
+     * range are taken by distance and the line of sight looked at only until the cap is reached, so a crowd in range
+     * costs a heap, not a sight line to everyone.
      */
     List<RabMessage> received(int i) {
         if (received == null) {
@@ -275,7 +277,7 @@ final class StepMedia {
         for (int s : near) {
             RabActuator sender = s < actuators.robots() ? actuators.rab(s) : null;
             if (sender == null || sender.data() == null || r[s] == Double.NEGATIVE_INFINITY
-                    || receiver.bytes() != sender.model().bytes()) {
+                    || receiver != sender.model()) { // (a device hears its own model's messages)
                 continue;
             }
             double dx = x[s] - x[j];

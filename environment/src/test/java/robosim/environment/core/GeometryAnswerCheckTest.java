@@ -80,4 +80,49 @@ class GeometryAnswerCheckTest {
             }
         }, "sonar range -1.0 mm");
     }
+
+    @Test
+    void aFixedObjectMovedOrAGripOfWhatCannotBeTakenIsRefused(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        // a fixed crate (0), a gripable can (1) 5 mm ahead of a's gripper, a movable rock (2) 5 mm ahead of b's
+        java.nio.file.Path file = dir.resolve("w.xml");
+        java.nio.file.Files.writeString(file, "<environment timeStepMs=\"100\"><arena width=\"4\" height=\"4\"/>"
+                + "<objects><box name=\"crate\" x=\"3\" y=\"3\" width=\"0.2\" depth=\"0.2\"/><cylinder name=\"can\" "
+                + "x=\"1.14\" y=\"1\" radius=\"0.05\" movable=\"true\" gripable=\"true\"/><cylinder name=\"rock\" "
+                + "x=\"1.14\" y=\"2\" radius=\"0.05\" movable=\"true\"/></objects><robots><robot name=\"a\" "
+                + "type=\"foot-bot\" x=\"1\" y=\"1\"/><robot name=\"b\" type=\"foot-bot\" x=\"1\" y=\"2\"/></robots>"
+                + "</environment>");
+        WorldSpec spec = new robosim.environment.config.EnvironmentLoader().load(file);
+        for (Consumer<GeometryStepResponse> tamper : List.<Consumer<GeometryStepResponse>>of(
+                g -> g.setObject(0, 3001, 3000, 0),
+                g -> g.addGrip(1, 2),
+                g -> {
+                    g.addGrip(0, 1);
+                    g.addGrip(1, 1);
+                })) {
+            SimulationCore core = new SimulationCore(spec, List.of(robosim.devices.RobotTypes.properties("foot-bot"),
+                    robosim.devices.RobotTypes.properties("foot-bot")));
+            GeometryStepRequest[] asked = new GeometryStepRequest[1];
+            StepRequest grip = new StepRequest(0, 0, 0, false, List.of()).with(List.of(), StepRequest.Gripper.GRIP);
+            assertFalse(core.step(0, new StepRequest[] {grip, grip}, request -> {
+                asked[0] = request;
+                return null;
+            }));
+            GeometryStepResponse good = new InProcessGeometry(core.map().geometryWorld()).resolve(asked[0]);
+            GeometryStepResponse bad = new GeometryStepResponse(2, 16, 64, 3);
+            bad.begin(good.step());
+            for (int i = 0; i < 2; i++) {
+                bad.setMotion(i, good.movedMm(i), good.turnedDeg(i), good.contactKind(i), good.contactIndex(i));
+            }
+            for (int o = 0; o < 3; o++) {
+                bad.setObject(o, good.objectXMm(o), good.objectYMm(o), good.objectHeadingDeg(o));
+            }
+            tamper.accept(bad);
+            ProtocolException e = assertThrows(ProtocolException.class, () -> core.answer(bad));
+            assertTrue(e.getMessage().contains("fixed") || e.getMessage().contains("cannot have"), e.getMessage());
+            core.answer(good);
+            assertEquals("can", core.response(0).gripped(), "the good answer: a takes the can");
+            assertEquals("", core.response(1).gripped(), "the rock is not gripable");
+        }
+    }
 }

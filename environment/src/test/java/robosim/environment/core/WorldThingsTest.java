@@ -119,7 +119,8 @@ class WorldThingsTest {
         assertArrayEquals(new double[] {0xFF0000, 500, 90}, reading(core, 0, "camera"), 1e-9);
         PoseUpdate seen = core.viewerUpdate();
         assertEquals(0xFF0000, seen.leds(1)[12]);
-        assertEquals(0, seen.leds(0).length == 0 ? 0 : seen.leds(0)[12]);
+        assertEquals(13, seen.leds(0).length, "a's 13 LEDs, all off");
+        assertEquals(0, java.util.Arrays.stream(seen.leds(0)).max().orElseThrow());
     }
 
     @Test
