@@ -221,7 +221,7 @@ public final class PoseUpdate implements java.io.Externalizable {
         tags = Wire.readStrings(in, "tag count", Limits.MAX_TAGS);
         departed = Wire.readStrings(in, "departed robot count", Limits.MAX_ROBOTS);
         held = Wire.readStrings(in, "held robot count", Limits.MAX_ROBOTS);
-        if (!Wire.withScene(in)) {
+        if (!RecordingVersion.withScene(in)) {
             return; // (a recording made before objects and LEDs)
         }
         int objects = Limits.checkCount("object count", in.readInt(), Limits.MAX_OBJECTS);

@@ -13,7 +13,7 @@ import java.io.ObjectStreamClass;
  * Error, not an exception a reader handles (found by fuzzing: a proxy of an interface built for a newer
  * JDK); so only the message classes and primitive arrays are ever loaded, and no proxy class at all.
  */
-final class ProtocolInputStream extends ObjectInputStream {
+final class ProtocolInputStream extends ObjectInputStream implements RecordingVersion {
     private static final String PRIMITIVE_ARRAYS = "ZBCSIJFD";
     /** The most of a refused class's name a refusal repeats. */
     private static final int MAX_NAME = 100;
@@ -32,7 +32,8 @@ final class ProtocolInputStream extends ObjectInputStream {
         this.recordingVersion = recordingVersion;
     }
 
-    int recordingVersion() {
+    @Override
+    public int recordingVersion() {
         return recordingVersion;
     }
 

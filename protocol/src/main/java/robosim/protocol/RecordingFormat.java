@@ -21,7 +21,7 @@ public final class RecordingFormat {
     static final byte[] MAGIC = "ROBOSIMREC".getBytes(StandardCharsets.US_ASCII);
     public static final byte VERSION = 5;
     /** The version before: the same but for the scenery, the objects' poses and the LEDs; read as without them. */
-    static final byte VERSION_WITHOUT_SCENE = 4;
+    static final byte VERSION_WITHOUT_SCENE = RecordingVersion.WITHOUT_SCENE;
     /** The version before that: also without the reports in each robot's view; read as views without reports. */
     static final byte VERSION_WITHOUT_REPORTS = 3;
     static final byte SNAPSHOT = 1;

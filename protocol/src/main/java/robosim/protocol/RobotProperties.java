@@ -94,7 +94,7 @@ public record RobotProperties(String type, double radiusMm, double heightMm, dou
     static RobotProperties read(ObjectInput in) throws IOException {
         String type = in.readUTF();
         double radius = in.readDouble();
-        boolean scene = Wire.withScene(in);
+        boolean scene = RecordingVersion.withScene(in);
         double height = scene ? in.readDouble() : radius;
         double mass = scene ? in.readDouble() : 10;
         double speed = in.readDouble();

@@ -98,14 +98,6 @@ final class Wire {
         return List.copyOf(obstacles);
     }
 
-    /**
-     * True unless {@code in} reads a recording made before worlds had scenery, objects and LEDs (version
-     * {@link RecordingFormat#VERSION_WITHOUT_SCENE} or older), whose snapshots and steps end where that version's did.
-     */
-    static boolean withScene(ObjectInput in) {
-        return !(in instanceof ProtocolInputStream p) || p.recordingVersion() > RecordingFormat.VERSION_WITHOUT_SCENE;
-    }
-
     static void checkVersion(int version) throws ProtocolException {
         if (version != Protocol.VERSION) {
             throw new ProtocolException("protocol version " + version + " is not supported (this side speaks "

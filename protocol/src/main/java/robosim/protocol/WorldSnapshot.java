@@ -134,7 +134,7 @@ public final class WorldSnapshot implements java.io.Externalizable {
         if (poses.count() != n) {
             throw new ProtocolException("snapshot has " + n + " robots but " + poses.count() + " poses");
         }
-        scenery = Wire.withScene(in) ? Scenery.read(in) : Scenery.NONE;
+        scenery = RecordingVersion.withScene(in) ? Scenery.read(in) : Scenery.NONE;
         if (poses.objectCount() != 0 && poses.objectCount() != scenery.objects().size()) {
             throw new ProtocolException("snapshot has " + scenery.objects().size() + " objects but "
                     + poses.objectCount() + " object poses");
