@@ -13,28 +13,33 @@ import robosim.api.Colours;
 @AutoService(RobotSensor.class)
 public final class GroundSensor extends RobotSensor {
     private static final Attribute MODEL = Attribute.choice("model", "whose points", "foot-bot", "e-puck");
+    private static final Attribute READ = Attribute.choice("read", "what a point reads: its grey level, or its colour",
+            "grey", "colour");
     private static final Attribute NOISE = Attribute.noise("");
     private static final double[] FOOT_BOT = {63, 11.6, -63, 11.6, -63, -11.6, 63, -11.6};
     private static final double[] E_PUCK = {30, -9, 30, 0, 30, 9};
 
     private double[] points = FOOT_BOT;
     private double noise;
+    private boolean colour;
 
     public GroundSensor() {
-        super(new SensorInfo("ground", "the floor's grey level at points under the robot", List.of(MODEL, NOISE),
-                "one grey level a point, 0 (black) to 1 (white); foot-bot: front-left, back-left, back-right, "
-                        + "front-right; e-puck: right, middle, left", "", false, SensorInfo.Display.VALUES));
+        super(new SensorInfo("ground", "the floor's grey level at points under the robot", List.of(MODEL, READ, NOISE),
+                "one grey level a point, 0 (black) to 1 (white), or with read=\"colour\" its colour (0xRRGGBB, no "
+                        + "noise); foot-bot: front-left, back-left, back-right, front-right; e-puck: right, middle, left",
+                "", false, SensorInfo.Display.VALUES));
     }
 
     @Override
     protected void configure(Attributes a) {
         points = MODEL.choose(a).equals("foot-bot") ? FOOT_BOT : E_PUCK;
+        colour = READ.choose(a).equals("colour");
         noise = NOISE.read(a);
     }
 
     @Override
     public SensorValues values() {
-        return new SensorValues(points.length / 2, 0, 1, "");
+        return new SensorValues(points.length / 2, 0, colour ? 0xFFFFFF : 1, "");
     }
 
     @Override
@@ -47,7 +52,7 @@ public final class GroundSensor extends RobotSensor {
             double px = points[2 * k];
             double py = points[2 * k + 1];
             int rgb = c.floorColour(c.xMm() + px * cos - py * sin, c.yMm() + px * sin + py * cos);
-            out[k] = noisy(Colours.grey(rgb), noise, c, 0, 1);
+            out[k] = colour ? rgb : noisy(Colours.grey(rgb), noise, c, 0, 1);
         }
         return out;
     }

@@ -55,11 +55,14 @@ class WorldThingsTest {
         // front-right (63, -11.6) turns to (11.6, 63), at (2.0116, 1.063): on it; front-left turns to (-11.6, 63): off.
         InProcessSteps core = world("<floor colour=\"white\"><rectangle x=\"1\" y=\"1\" width=\"0.5\" height=\"0.5\" "
                 + "colour=\"black\"/><rectangle x=\"2\" y=\"1\" width=\"0.5\" height=\"0.5\" colour=\"black\"/></floor>"
-                + "<robots><robot name=\"a\" type=\"foot-bot\" x=\"1\" y=\"1\" heading=\"0\"/>"
+                + "<robots><robot name=\"a\" type=\"foot-bot\" x=\"1\" y=\"1\" heading=\"0\">"
+                + "<sensor name=\"paint\" type=\"ground\" read=\"colour\"/></robot>"
                 + "<robot name=\"b\" type=\"foot-bot\" x=\"2\" y=\"1\" heading=\"90\"/></robots>");
-        core.step(0, new StepRequest[] {ask(0, 0, 0, "ground"), ask(0, 0, 0, "ground")});
+        core.step(0, new StepRequest[] {ask(0, 0, 0, "ground", "paint"), ask(0, 0, 0, "ground")});
         assertArrayEquals(new double[] {0, 1, 1, 1}, reading(core, 0, "ground"), 1e-12);
         assertArrayEquals(new double[] {1, 1, 1, 0}, reading(core, 1, "ground"), 1e-12);
+        assertArrayEquals(new double[] {0x000000, 0xFFFFFF, 0xFFFFFF, 0xFFFFFF}, reading(core, 0, "paint"), 0,
+                "the colours on request");
     }
 
     @Test
