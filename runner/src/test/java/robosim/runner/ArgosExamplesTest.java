@@ -1,0 +1,64 @@
+package robosim.runner;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import robosim.protocol.PoseUpdate;
+import robosim.protocol.RecordingReader;
+import robosim.protocol.RobotView;
+
+/**
+ * ARGoS's example experiments as examples/argos/ ports them do what they are for, each run in this JVM and read back
+ * from its recording: the synchronizing foot-bots end flashing together, and the gripper drags the cylinder back.
+ * (The diffusion and e-puck ports: examples/argos/README.md says what is missing.)
+ */
+class ArgosExamplesTest {
+    @TempDir
+    Path dir;
+
+    private RecordingReader run(String world, int steps) throws Exception {
+        Path record = dir.resolve(world + ".rec");
+        HeadlessRun r = HeadlessRun.of("--env", Path.of("..", "examples", "argos", world).toString(), "--steps",
+                Integer.toString(steps), "--one-jvm", "--record", record.toString(), "--timeout-s", "120");
+        assertEquals(0, r.code(), r.all());
+        assertTrue(r.summary().contains(" control_failed=0 "), r.all());
+        return new RecordingReader(record);
+    }
+
+    @Test
+    void theSynchronizingFootBotsEndFlashingTogether() throws Exception {
+        try (RecordingReader reader = run("synchronization.xml", 3000)) {
+            int lastFlash = -1;
+            int together = 0;
+            for (int k = 0; k < reader.steps(); k++) {
+                int flashing = 0;
+                for (RobotView v : reader.step(k).views()) {
+                    flashing += v.reports().stream().anyMatch(r -> r.name().equals("flashing") && r.value() == 1) ? 1
+                            : 0;
+                }
+                if (flashing > 0) {
+                    lastFlash = flashing;
+                    together += flashing == 16 ? 1 : 0;
+                }
+            }
+            assertEquals(16, lastFlash, "all sixteen flash in the last flash's step");
+            assertTrue(together >= 5, "five periods or more of all sixteen together: " + together);
+        }
+    }
+
+    @Test
+    void theGripperDragsTheCylinderBackAndLetsItGo() throws Exception {
+        try (RecordingReader reader = run("gripping.xml", 200)) {
+            PoseUpdate gripped = reader.step(69).update(); // (step 70: it stops and grips)
+            PoseUpdate released = reader.step(119).update(); // (step 120: it lets go, then goes on back alone)
+            PoseUpdate end = reader.step(199).update();
+            double dragged = gripped.objectXMm(0) - released.objectXMm(0);
+            assertEquals(49 * 5, dragged, 1e-6, "49 steps back at 5 cm/s with the cylinder held");
+            assertEquals(released.objectXMm(0), end.objectXMm(0), 1e-9, "let go, it stays");
+            assertTrue(end.xMm(0) < released.xMm(0) - 200, "the robot went on backwards without it");
+        }
+    }
+}
