@@ -77,7 +77,11 @@ public final class RunOptions {
     /** The world of {@code file} with these options' parameters and seed. */
     public WorldSpec world(Path file) throws EnvironmentFileException {
         WorldSpec world = new EnvironmentLoader().load(file, params.values());
-        return seed == null ? world : world.withSeed(seed);
+        try {
+            return seed == null ? world : world.withSeed(seed);
+        } catch (IllegalArgumentException e) { // (that seed's draws place an entity nowhere)
+            throw new EnvironmentFileException(e.getMessage());
+        }
     }
 
     /** The parameters given. */

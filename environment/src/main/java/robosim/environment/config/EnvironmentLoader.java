@@ -88,9 +88,23 @@ public final class EnvironmentLoader {
         faults.throwIfAny();
         faults.placedBy(replaced.columns()); // (from here on, places in the replaced text)
         EnvironmentFile xml = bind(faults, replaced.text());
-        scriptsFrom(xml, file.toAbsolutePath().getParent());
+        Path folder = file.toAbsolutePath().getParent();
+        scriptsFrom(xml, folder);
         Parameters parameters = parameters(faults, xml, replaced.names(), given);
-        return check(where, faults, xml, parameters, file.toAbsolutePath().getParent()); // (throws every fault)
+        WorldSpec.Redraw redraw = xml.distribute.isEmpty() ? null : new WorldSpec.Redraw() {
+            @Override
+            public WorldSpec at(long seed) { // (the file read and checked again, its draws from this seed)
+                FileFaults again = new FileFaults(where);
+                again.placedBy(replaced.columns());
+                try {
+                    return check(where, again, xml, parameters, folder, seed, this);
+                } catch (EnvironmentFileException e) {
+                    throw new IllegalArgumentException(e.getMessage() + " (with seed " + seed + ")", e);
+                }
+            }
+        };
+        long seed = xml.seed == null ? 1L : xml.seed;
+        return check(where, faults, xml, parameters, folder, seed, redraw); // (throws every fault)
     }
 
     /**
@@ -213,8 +227,8 @@ public final class EnvironmentLoader {
     }
 
     /** The world the file describes; or, when a fault has been recorded (here or before), every fault thrown. */
-    private WorldSpec check(String where, FileFaults faults, EnvironmentFile xml, Parameters parameters, Path folder)
-            throws EnvironmentFileException {
+    private WorldSpec check(String where, FileFaults faults, EnvironmentFile xml, Parameters parameters, Path folder,
+            long seed, WorldSpec.Redraw redraw) throws EnvironmentFileException {
         String env = "<environment>";
         if (xml.timeStepMs == null) {
             if (!xml.hadBadValue("timeStepMs")) {
@@ -233,7 +247,6 @@ public final class EnvironmentLoader {
         Set<String> thingNames = new HashSet<>(obstacles.names());
         List<WorldObject> objects = SceneryReader.objects(faults, xml, placed, thingNames);
         Robots robots = robots(faults, xml, placed);
-        long seed = xml.seed == null ? 1L : xml.seed;
         Set<String> robotNames = new HashSet<>();
         robots.fromStart().forEach(r -> robotNames.add(r.name()));
         robots.anyTime().forEach(r -> robotNames.add(r.name()));
@@ -273,7 +286,7 @@ public final class EnvironmentLoader {
                 objects);
         faults.throwIfAny();
         return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles.shapes(), robots.fromStart(), range,
-                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters, scenery);
+                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters, scenery, redraw);
     }
 
     /** The arena, mm; null, its fault recorded, when it is missing or at fault. */

@@ -15,11 +15,24 @@ import robosim.protocol.Scenery;
  * @param maxMessageBytes the largest payload a robot may send (modified UTF-8 bytes)
  * @param parameters what the file gives the control code ({@code <param>})
  * @param scenery its floor, lights and objects
+ * @param redraw the same file's world drawn from another seed, where the file places things by chance
+ *     ({@code <distribute>}); null where it does not
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
         List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
         List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
-        Parameters parameters, Scenery scenery) {
+        Parameters parameters, Scenery scenery, Redraw redraw) {
+    /** A file's world drawn anew from a seed: its robots and objects placed as that seed's draws put them. */
+    @FunctionalInterface
+    public interface Redraw {
+        /**
+         * The world with {@code seed}, placed by its draws.
+         *
+         * @throws IllegalArgumentException in one line when that seed's draws cannot place an entity
+         */
+        WorldSpec at(long seed);
+    }
+
     /** How far a tag reaches from the robot's rim by default, mm. */
     public static final double DEFAULT_TAG_RANGE_MM = 1000;
     /** A tag hits only what lies within this many degrees of the heading. */
@@ -57,7 +70,7 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
             List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
             Parameters parameters) {
         this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, heatSources,
-                tagRangeMm, taggable, joins, parameters, Scenery.NONE);
+                tagRangeMm, taggable, joins, parameters, Scenery.NONE, null);
     }
 
     /** Without parameters. */
@@ -81,25 +94,33 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         List<RobotSpec> more = new java.util.ArrayList<>(robots);
         more.add(robot);
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, more, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters, scenery);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, null);
     }
 
     /** This world with {@code others} for its robots (the same robots elsewhere: a learning episode's start). */
     public WorldSpec withRobots(List<RobotSpec> others) {
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, others, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters, scenery);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, null);
     }
 
-    /** This world with another seed (a sweep's, or {@code --seed}'s). */
+    /**
+     * This world with another seed (a sweep's, {@code --seed}'s, an episode's): drawn anew where the file places
+     * things by chance ({@link #redraw}), else the same world.
+     *
+     * @throws IllegalArgumentException in one line when that seed's draws cannot place an entity
+     */
     public WorldSpec withSeed(long newSeed) {
+        if (redraw != null) {
+            return redraw.at(newSeed);
+        }
         return new WorldSpec(source, name, timeStepMs, newSeed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters, scenery);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, null);
     }
 
     /** This world with other parameters for its control code (a test's, in code). */
     public WorldSpec withParameters(Parameters newParameters) {
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, newParameters, scenery);
+                heatSources, tagRangeMm, taggable, joins, newParameters, scenery, null);
     }
 
     /** Robots the join rules let take part at once, counted up to {@link #JOINABLE_CAP} (for connection and queue caps). */

@@ -114,6 +114,39 @@ class SceneryAndDistributeTest {
         Path other = dir.resolve("other.xml");
         Files.writeString(other, Files.readString(dir.resolve("env.xml")).replace("seed=\"7\"", "seed=\"8\""));
         assertNotEquals(cans, new EnvironmentLoader().load(other).scenery().objects(), "another seed, another world");
+        assertEquals(new EnvironmentLoader().load(other).scenery().objects(), a.withSeed(8).scenery().objects(),
+                "a seed given later (--seed, a sweep's, an episode's) draws as the file's own would");
+        assertEquals(8, a.withSeed(8).seed());
+        assertEquals(cans, a.withSeed(8).withSeed(7).scenery().objects());
+    }
+
+    @Test
+    void aSeedWhoseDrawsPlaceAnEntityNowhereIsOneLine() throws Exception {
+        // two kilobots (33 mm across) drawn once each from a 60 mm square: some seeds place both, some cannot
+        String body = "<distribute><position method=\"uniform\" min=\"1,1\" max=\"1.06,1.06\"/><entity "
+                + "quantity=\"2\" maxTrials=\"1\"><robot name=\"k\" type=\"kilobot\"/></entity></distribute>";
+        WorldSpec w = null;
+        for (int seed = 1; w == null && seed < 500; seed++) {
+            Path f = write(body);
+            Files.writeString(f, Files.readString(f).replace("seed=\"7\"", "seed=\"" + seed + "\""));
+            try {
+                w = new EnvironmentLoader().load(f);
+            } catch (EnvironmentFileException e) {
+                assertTrue(e.getMessage().contains("could not place k1"), e.getMessage());
+            }
+        }
+        assertTrue(w != null, "a seed that places both");
+        String refused = null;
+        for (long seed = 0; seed < 500 && refused == null; seed++) {
+            try {
+                w.withSeed(seed);
+            } catch (IllegalArgumentException e) {
+                refused = e.getMessage();
+                assertTrue(refused.contains("could not place k1") && refused.endsWith("(with seed " + seed + ")"),
+                        refused);
+            }
+        }
+        assertTrue(refused != null && refused.lines().count() == 1, "a seed that cannot, in one line: " + refused);
     }
 
     @Test
