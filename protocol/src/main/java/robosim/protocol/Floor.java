@@ -24,6 +24,17 @@ public record Floor(int rgb, List<Region> regions, Image image) {
         regions = List.copyOf(regions);
     }
 
+    /** This floor with {@code paint} over its regions (what a world's loop functions painted); itself for none. */
+    public Floor withPaint(List<Region> paint) {
+        if (paint.isEmpty()) {
+            return this;
+        }
+        List<Region> all = new ArrayList<>(regions.size() + paint.size());
+        all.addAll(regions);
+        all.addAll(paint);
+        return new Floor(rgb, all, image);
+    }
+
     /** The colour at world point (x, y), mm, of a floor laid over {@code arena}. */
     public int colourAt(Arena arena, double x, double y) {
         for (int i = regions.size() - 1; i >= 0; i--) {
@@ -180,12 +191,48 @@ public record Floor(int rgb, List<Region> regions, Image image) {
         }
     }
 
+    /** Reads what {@link #writeRegions} wrote, each region checked. */
+    static List<Region> readRegions(ObjectInput in) throws IOException {
+        try {
+            int n = Limits.checkCount("floor region count", in.readInt(), Limits.MAX_FLOOR_REGIONS);
+            List<Region> regions = new ArrayList<>(n);
+            for (int i = 0; i < n; i++) {
+                int colour = in.readInt();
+                byte kind = in.readByte();
+                Area area = switch (kind) {
+                    case RECTANGLE -> new Rectangle(in.readDouble(), in.readDouble(), in.readDouble(), in.readDouble());
+                    case DISC -> new Disc(in.readDouble(), in.readDouble(), in.readDouble());
+                    case POLYGON -> new Polygon(Wire.readDoubles(in,
+                            2 * Limits.checkCount("vertex count", in.readInt(), Limits.MAX_VERTICES)));
+                    default -> throw new ProtocolException("a floor region of unknown kind " + kind);
+                };
+                regions.add(new Region(area, colour));
+            }
+            return regions;
+        } catch (IllegalArgumentException e) {
+            throw new ProtocolException(e.getMessage());
+        }
+    }
+
     private static final byte RECTANGLE = 1;
     private static final byte DISC = 2;
     private static final byte POLYGON = 3;
 
     void write(ObjectOutput out) throws IOException {
         out.writeInt(rgb);
+        writeRegions(out, regions);
+        out.writeBoolean(image != null);
+        if (image != null) {
+            out.writeInt(image.width());
+            out.writeInt(image.height());
+            for (int p : image.rgb) {
+                out.writeInt(p);
+            }
+        }
+    }
+
+    /** Writes a count and each region (a floor's, or what loop functions painted over it). */
+    static void writeRegions(ObjectOutput out, List<Region> regions) throws IOException {
         out.writeInt(regions.size());
         for (Region r : regions) {
             out.writeInt(r.rgb());
@@ -207,33 +254,12 @@ public record Floor(int rgb, List<Region> regions, Image image) {
                 Wire.writeDoubles(out, a.xyMm, a.xyMm.length);
             }
         }
-        out.writeBoolean(image != null);
-        if (image != null) {
-            out.writeInt(image.width());
-            out.writeInt(image.height());
-            for (int p : image.rgb) {
-                out.writeInt(p);
-            }
-        }
     }
 
     static Floor read(ObjectInput in) throws IOException {
         try {
             int base = in.readInt();
-            int n = Limits.checkCount("floor region count", in.readInt(), Limits.MAX_FLOOR_REGIONS);
-            List<Region> regions = new ArrayList<>(n);
-            for (int i = 0; i < n; i++) {
-                int colour = in.readInt();
-                byte kind = in.readByte();
-                Area area = switch (kind) {
-                    case RECTANGLE -> new Rectangle(in.readDouble(), in.readDouble(), in.readDouble(), in.readDouble());
-                    case DISC -> new Disc(in.readDouble(), in.readDouble(), in.readDouble());
-                    case POLYGON -> new Polygon(Wire.readDoubles(in,
-                            2 * Limits.checkCount("vertex count", in.readInt(), Limits.MAX_VERTICES)));
-                    default -> throw new ProtocolException("a floor region of unknown kind " + kind);
-                };
-                regions.add(new Region(area, colour));
-            }
+            List<Region> regions = readRegions(in);
             Image image = null;
             if (in.readBoolean()) {
                 int w = Limits.checkCount("floor image width", in.readInt(), Limits.MAX_FLOOR_PIXELS);

@@ -29,6 +29,11 @@ public final class PoseUpdate implements java.io.Externalizable {
     private double[] objectHeadingDeg = NONE;
     /** Each robot's LED colours ({@code 0xRRGGBB}, black is off), its LEDs' order; {@link #NO_LEDS} for none. */
     private int[][] leds;
+    /** What the world's loop functions painted over the floor, its lights as they switched them (null: as the
+     * file's), and the metrics they reported this step. */
+    private List<Floor.Region> paint = List.of();
+    private boolean[] lightsOn;
+    private List<Report> reports = List.of();
 
     private static final double[] NONE = new double[0];
     /** The LEDs of a robot that has none, or whose LEDs are all off and always were. */
@@ -98,7 +103,44 @@ public final class PoseUpdate implements java.io.Externalizable {
         u.objectYMm = objectY;
         u.objectHeadingDeg = objectHeading;
         u.leds = robotLeds;
+        u.paint = paint;
+        u.lightsOn = lightsOn;
+        u.reports = reports;
         return u;
+    }
+
+    /**
+     * This update with what the world's loop functions left of its step: {@code painted} over the floor (oldest
+     * first), {@code lights} as they stand (switched on or off), and the metrics they reported for the step.
+     */
+    public PoseUpdate withExperiment(List<Floor.Region> painted, List<Light> lights, List<Report> metrics) {
+        PoseUpdate u = withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
+        u.paint = List.copyOf(painted);
+        u.lightsOn = new boolean[lights.size()];
+        for (int i = 0; i < lights.size(); i++) {
+            u.lightsOn[i] = lights.get(i).on();
+        }
+        u.reports = List.copyOf(metrics);
+        return u;
+    }
+
+    /** What the world's loop functions have painted over the floor, oldest first (none: the file's floor). */
+    public List<Floor.Region> paint() {
+        return paint;
+    }
+
+    /** Light {@code light} of {@code file} (the world's lights) as it stands in this step: switched as loop functions left it. */
+    public Light light(List<Light> file, int light) {
+        Light l = file.get(light);
+        if (lightsOn == null || light >= lightsOn.length || lightsOn[light] == l.on()) {
+            return l;
+        }
+        return new Light(l.name(), l.xMm(), l.yMm(), l.heightMm(), l.rgb(), l.intensity(), lightsOn[light]);
+    }
+
+    /** The metrics the world's loop functions reported for this step. */
+    public List<Report> reports() {
+        return reports;
     }
 
     /**
@@ -201,6 +243,15 @@ public final class PoseUpdate implements java.io.Externalizable {
                 }
             }
         }
+        out.writeBoolean(lightsOn != null);
+        if (lightsOn != null) {
+            Floor.writeRegions(out, paint);
+            out.writeShort(lightsOn.length);
+            for (boolean on : lightsOn) {
+                out.writeBoolean(on);
+            }
+            Report.write(out, reports);
+        }
     }
 
     @Override
@@ -243,5 +294,14 @@ public final class PoseUpdate implements java.io.Externalizable {
                 }
             }
         }
+        if (!RecordingVersion.withExperiment(in) || !in.readBoolean()) {
+            return; // (no loop functions, or a recording made before them)
+        }
+        paint = List.copyOf(Floor.readRegions(in));
+        lightsOn = new boolean[Limits.checkCount("light count", in.readUnsignedShort(), Limits.MAX_LIGHTS)];
+        for (int i = 0; i < lightsOn.length; i++) {
+            lightsOn[i] = in.readBoolean();
+        }
+        reports = Report.read(in, Report.MAX_PER_STEP);
     }
 }

@@ -11,11 +11,19 @@ interface RecordingVersion {
     /** The recording version before worlds had scenery, objects and LEDs: its snapshots and steps end without them. */
     byte WITHOUT_SCENE = 4;
 
+    /** The recording version before worlds had loop functions: its steps end without what they painted and reported. */
+    byte WITHOUT_EXPERIMENT = 5;
+
     /** The recording version this stream reads a frame of. */
     int recordingVersion();
 
     /** True unless {@code in} reads a recording of version {@link #WITHOUT_SCENE} or older. */
     static boolean withScene(ObjectInput in) {
         return !(in instanceof RecordingVersion v) || v.recordingVersion() > WITHOUT_SCENE;
+    }
+
+    /** True unless {@code in} reads a recording of version {@link #WITHOUT_EXPERIMENT} or older. */
+    static boolean withExperiment(ObjectInput in) {
+        return !(in instanceof RecordingVersion v) || v.recordingVersion() > WITHOUT_EXPERIMENT;
     }
 }

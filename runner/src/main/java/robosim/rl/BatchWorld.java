@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.SplittableRandom;
 import robosim.devices.Drive;
+import robosim.environment.core.ExperimentFailure;
 import robosim.environment.core.InProcessGeometry;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
@@ -98,7 +99,13 @@ final class BatchWorld {
             spec = spec.withRobots(turned);
         }
         List<RobotProperties> properties = batch.properties();
+        robosim.loop.LoopFunctions kept = core == null ? null : core.loopFunctions();
         core = new SimulationCore(spec, properties, batch.areaCellM());
+        try {
+            core.startExperiment(java.nio.file.Path.of(""), kept); // (the world's loop functions: one instance, reset)
+        } catch (ExperimentFailure e) {
+            throw new IOException(e.getMessage(), e);
+        }
         geometry = new InProcessGeometry(core.map().geometryWorld());
         step = 0;
         newWorld = true;
@@ -147,7 +154,11 @@ final class BatchWorld {
 
     /** One time step of the requests in hand (the world's step, its metrics counted), then the messages heard. */
     private void advance() throws IOException {
-        core.step(step, requests, geometry);
+        try {
+            core.step(step, requests, geometry);
+        } catch (ExperimentFailure e) {
+            throw new IOException(e.getMessage(), e);
+        }
         core.tally();
         System.arraycopy(requests, 0, lastRequests, 0, robots);
         if (recording != null) {
@@ -273,8 +284,16 @@ final class BatchWorld {
     }
 
     void close() throws IOException {
-        if (recording != null) {
-            recording.close();
+        try {
+            if (core != null) {
+                core.endExperiment();
+            }
+        } catch (ExperimentFailure e) {
+            throw new IOException(e.getMessage(), e);
+        } finally {
+            if (recording != null) {
+                recording.close();
+            }
         }
     }
 

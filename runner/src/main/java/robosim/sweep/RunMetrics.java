@@ -25,8 +25,9 @@ import robosim.protocol.WorldSnapshot;
  * <ul>
  * <li>every built-in metric ({@link Metrics}), counted by the same code that counts it live, each step of the
  * recording read back as the step's {@link StepView};
- * <li>each name the control code reported ({@code Robot.report}): each robot's newest value, summed over the
- * robots that reported it (a name that is also a built-in's or a row's own column, {@code seed} say, is
+ * <li>each name the control code reported ({@code Robot.report}) or the world's loop functions did
+ * ({@code Experiment.report}, as one more reporter named {@code loop}): each reporter's newest value, summed over
+ * the reporters (a name that is also a built-in's or a row's own column, {@code seed} say, is
  * {@code report.NAME}), or as a sweep file's {@code over} says ({@link MetricChoice#column});
  * <li>each {@link Metric} class asked for, by its {@link Metric#name()}.
  * </ul>
@@ -152,10 +153,14 @@ public final class RunMetrics {
         step.read(world.poses(), List.of()); // (where the robots stood before step 0: its moves count too)
         MetricTally tally = new MetricTally(new RunStart(world.arena(), areaCellM, step));
         Map<Integer, Map<String, Double>> byIndex = new TreeMap<>();
+        Map<String, Double> experiment = new LinkedHashMap<>(); // (the loop functions': each name's newest value)
         for (int i = 0; i < recording.steps(); i++) {
             RecordingReader.Step recorded = recording.step(i);
             step.read(recorded.update(), recorded.views());
             tally.step(step);
+            for (Report report : recorded.update().reports()) {
+                experiment.put(report.name(), report.value());
+            }
             for (RobotView v : recorded.views()) {
                 for (Report report : v.reports()) {
                     byIndex.computeIfAbsent(v.robot(), k -> new HashMap<>()).put(report.name(), report.value());
@@ -174,9 +179,16 @@ public final class RunMetrics {
             reports.computeIfAbsent(name, k -> new LinkedHashMap<>()).put(r < names.size() ? names.get(r) : "robot" + r,
                     value);
         }));
+        experiment.forEach((name, value) -> {
+            summed.merge(reportColumn(name), value, Double::sum);
+            reports.computeIfAbsent(name, k -> new LinkedHashMap<>()).put(LOOP, value);
+        });
         out.putAll(summed);
         return out;
     }
+
+    /** Whose a loop functions' metric is, among the robots' reports of the same name. */
+    private static final String LOOP = "loop";
 
     /** A recorded step as the metrics see it: the update's poses, tags and departures, and each view's robot. */
     private static final class RecordedStep implements StepView {

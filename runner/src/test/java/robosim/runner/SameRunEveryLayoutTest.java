@@ -91,11 +91,13 @@ class SameRunEveryLayoutTest {
     @Test
     void worldsOfObjectsLightsLedsCamerasAndMessagesAreTheSameRunOverTheGeometryProcessAsInOneJvm() throws Exception {
         // foraging: proximity, light and ground sensors, cans pushed and carried (through the Geometry process's
-        // objects); fireflies: LEDs and cameras; aggregation: range-and-bearing messages
-        for (String world : List.of("foraging.xml", "synchronization.xml", "aggregation.xml")) {
-            Written shared = inThisJvm(world, world + "-shared", "robots_in=one-process", "--robots-in-one-process");
+        // objects); fireflies: LEDs and cameras; aggregation: range-and-bearing messages; ARGoS's foraging: loop
+        // functions that paint the floor, tell robots and report metrics
+        for (String world : List.of("foraging.xml", "synchronization.xml", "aggregation.xml", "argos/foraging.xml")) {
+            String layout = world.replace('/', '-');
+            Written shared = inThisJvm(world, layout + "-shared", "robots_in=one-process", "--robots-in-one-process");
             assertTrue(shared.output().contains("geometry=process"), shared.output());
-            Written oneJvm = inThisJvm(world, world + "-one-jvm", "robots_in=one-jvm", "--one-jvm");
+            Written oneJvm = inThisJvm(world, layout + "-one-jvm", "robots_in=one-jvm", "--one-jvm");
             assertTrue(shared.readings().lines().count() > STEPS, world + ": readings recorded");
             assertSame(world + ", one JVM's", shared, oneJvm);
         }
@@ -116,7 +118,8 @@ class SameRunEveryLayoutTest {
 
     /** The arguments of a run of {@code world} for {@link #STEPS} steps with a pose log and a recording. */
     private List<String> args(String world, String layout, String... more) throws IOException {
-        List<String> args = new ArrayList<>(List.of("--env", InJvmSimulation.env(world).toString(), "--steps",
+        Path env = world.startsWith("argos/") ? Path.of("..", "examples", world) : InJvmSimulation.env(world);
+        List<String> args = new ArrayList<>(List.of("--env", env.toString(), "--steps",
                 Integer.toString(STEPS), "--pose-log", dir.resolve(layout + ".csv").toString(), "--record",
                 dir.resolve(layout + ".rec").toString(), "--timeout-s", "120"));
         args.addAll(List.of(more));
@@ -176,6 +179,7 @@ class SameRunEveryLayoutTest {
                 for (int r = 0; r < u.count(); r++) {
                     scene.append(' ').append(Arrays.toString(u.leds(r)));
                 }
+                scene.append(' ').append(u.paint()).append(' ').append(u.reports()); // (the loop functions')
                 scene.append('\n');
             }
             return new Written(Files.readAllBytes(dir.resolve(layout + ".csv")), poses.toString(), messages.toString(),

@@ -105,6 +105,7 @@ public final class Simulation implements AutoCloseable {
         private final Map<String, String> params = new LinkedHashMap<>();
         private final Set<String> expected = new HashSet<>();
         private Long seed;
+        private robosim.loop.LoopFunctions loopFunctions;
         private Duration stepTimeout = Duration.ofSeconds(10);
         private Duration wait = Duration.ofMinutes(10);
 
@@ -146,6 +147,16 @@ public final class Simulation implements AutoCloseable {
         /** As {@link #param(String, String)}, a number. */
         public Builder param(String name, double value) {
             return param(name, Double.toString(value));
+        }
+
+        /**
+         * The world's loop functions are {@code code} (this object, not a new instance of the file's class; with the
+         * file's {@code <loopFunctions>} parameters, if it names any), so the test can ask it what it saw. A loop
+         * function that throws ends the run: the next {@link Simulation#run} throws, naming it and the step.
+         */
+        public Builder loopFunctions(robosim.loop.LoopFunctions code) {
+            this.loopFunctions = java.util.Objects.requireNonNull(code, "code");
+            return this;
         }
 
         /** The run's seed (over the file's or the world's), as a sweep's or {@code --seed} gives it. */
@@ -198,6 +209,10 @@ public final class Simulation implements AutoCloseable {
             }
             if (seed != null) {
                 spec = spec.withSeed(seed);
+            }
+            if (loopFunctions != null) {
+                spec = spec.withLoopFunctions(new robosim.environment.core.LoopSpec(loopFunctions.getClass().getName(),
+                        spec.loopFunctions() == null ? Map.of() : spec.loopFunctions().parameters(), loopFunctions));
             }
             for (WorldSpec.RobotSpec r : spec.robots()) {
                 if (!controls.containsKey(r.name()) && r.control().isBlank()) {

@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Set;
 import java.util.SplittableRandom;
+import robosim.environment.core.Placement;
 import robosim.environment.core.WorldSpec.RobotSpec;
 import robosim.protocol.WorldObject;
 

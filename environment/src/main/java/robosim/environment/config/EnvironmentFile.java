@@ -48,10 +48,24 @@ public final class EnvironmentFile extends FileElement {
     @JacksonXmlElementWrapper(useWrapping = false)
     @JacksonXmlProperty(localName = "join")
     public List<JoinXml> joins = new ArrayList<>();
+    /** The experiment's own code, run inside the world while it steps. */
+    public LoopFunctionsXml loopFunctions;
     /** Parameters for every robot's control code. */
     @JacksonXmlElementWrapper(useWrapping = false)
     @JacksonXmlProperty(localName = "param")
     public List<ParamXml> params = new ArrayList<>();
+
+    /**
+     * {@code <loopFunctions class="robosim.examples.ForagingLoopFunctions"><param name="items" value="15"/>
+     * </loopFunctions>}: the experiment's {@code robosim.loop.LoopFunctions} and their parameters.
+     */
+    public static final class LoopFunctionsXml extends FileElement {
+        @JacksonXmlProperty(isAttribute = true, localName = "class")
+        public String className;
+        @JacksonXmlElementWrapper(useWrapping = false)
+        @JacksonXmlProperty(localName = "param")
+        public List<ParamXml> params = new ArrayList<>();
+    }
 
     /** {@code <param name="speed" value="300"/>}: a value the control code reads with {@code Robot.parameter}. */
     public static final class ParamXml extends FileElement {

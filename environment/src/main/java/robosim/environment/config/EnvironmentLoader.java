@@ -18,16 +18,18 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
 import robosim.environment.core.JoinRule;
+import robosim.environment.core.LoopSpec;
 import robosim.environment.core.Parameters;
-import robosim.environment.core.WorldSpec;
+import robosim.environment.core.Placement;
 import robosim.environment.core.WorldSpec.RobotSpec;
+import robosim.environment.core.WorldSpec;
 import robosim.protocol.Arena;
 import robosim.protocol.ControlScripts;
 import robosim.protocol.Limits;
-import robosim.protocol.Scenery;
-import robosim.protocol.WorldObject;
 import robosim.protocol.ObstacleShape;
 import robosim.protocol.Printable;
+import robosim.protocol.Scenery;
+import robosim.protocol.WorldObject;
 
 /**
  * Reads an environment file and checks it: metres become millimetres. A file with faults is refused with one
@@ -182,6 +184,28 @@ public final class EnvironmentLoader {
         return new Parameters(world, robots);
     }
 
+    /**
+     * The experiment's code ({@code <loopFunctions>}), or null for none: a Java class name (looked up when the run
+     * starts, where control classes are) and its {@code <param>}s.
+     */
+    private static LoopSpec loopFunctions(FileFaults faults, EnvironmentFile.LoopFunctionsXml xml) {
+        if (xml == null) {
+            return null;
+        }
+        String el = "<loopFunctions>";
+        Map<String, String> params = params(faults, xml, el, xml.params);
+        if (xml.className == null || !JAVA_CLASS.matcher(xml.className).matches()) {
+            faults.add(xml.at, el + " needs class=\"...\", a Java class name (implementing robosim.loop.LoopFunctions), "
+                    + "got \"" + FileFaults.cut(xml.className) + "\"");
+            return null;
+        }
+        return new LoopSpec(xml.className, params);
+    }
+
+    /** A Java class's binary name. */
+    private static final java.util.regex.Pattern JAVA_CLASS = java.util.regex.Pattern.compile(
+            "[\\p{javaJavaIdentifierStart}][\\p{javaJavaIdentifierPart}]*(\\.[\\p{javaJavaIdentifierStart}][\\p{javaJavaIdentifierPart}]*){0,50}");
+
     /** The {@code <param>}s of {@code owner} ({@code el} in a fault) that have no fault. */
     private static Map<String, String> params(FileFaults faults, FileElement owner, String el,
             List<EnvironmentFile.ParamXml> xml) {
@@ -284,9 +308,10 @@ public final class EnvironmentLoader {
         List<robosim.devices.HeatSource> heat = heatSources(faults, xml);
         Scenery scenery = new Scenery(SceneryReader.floor(faults, xml, folder), SceneryReader.lights(faults, xml),
                 objects);
+        LoopSpec loop = loopFunctions(faults, xml.loopFunctions);
         faults.throwIfAny();
         return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles.shapes(), robots.fromStart(), range,
-                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters, scenery, redraw);
+                maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters, scenery, loop, redraw);
     }
 
     /** The arena, mm; null, its fault recorded, when it is missing or at fault. */

@@ -8,6 +8,7 @@ import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 import robosim.api.Colours;
+import robosim.environment.core.Placement;
 import robosim.protocol.Floor;
 import robosim.protocol.Light;
 import robosim.protocol.Limits;

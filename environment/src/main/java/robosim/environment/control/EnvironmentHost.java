@@ -180,9 +180,13 @@ public final class EnvironmentHost {
 
     /**
      * The exit code of a run that ends the Environment: 0 when it completed with every robot, 1 when it
-     * did not complete, {@link #EXIT_ROBOTS_REMOVED} when it completed without one robot or more.
+     * did not complete, {@link #EXIT_ROBOTS_REMOVED} when it completed without one robot or more,
+     * {@link #EXIT_CONTROL_FAILED} when the world's loop functions threw.
      */
     static int exitCode(RunSummary summary) {
+        if (summary.experimentFailed()) {
+            return EXIT_CONTROL_FAILED;
+        }
         if (!summary.completed()) {
             return 1;
         }
@@ -194,7 +198,8 @@ public final class EnvironmentHost {
 
     /**
      * The exit code of a run (in this JVM, {@code --one-jvm}) that went on while a robot's control code threw out
-     * of {@code run}: the robot process's own code for it ({@code HardwareSimulator.EXIT_CONTROL_FAILED}).
+     * of {@code run}: the robot process's own code for it ({@code HardwareSimulator.EXIT_CONTROL_FAILED}); and of a
+     * run whose loop functions threw.
      */
     public static final int EXIT_CONTROL_FAILED = 4;
 

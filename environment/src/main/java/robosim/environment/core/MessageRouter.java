@@ -98,6 +98,22 @@ final class MessageRouter {
         delivered++;
     }
 
+    /**
+     * A message from the world's loop functions ({@code from}) to robot {@code to}, in its inbox as another robot's
+     * (none to a robot that has left); a text over the world's limit is an IllegalArgumentException.
+     */
+    void fromLoop(int to, EnvironmentMap map, String from, String text) {
+        int bytes = robosim.protocol.Limits.utfLength(text);
+        if (bytes > maxBytes) {
+            throw new IllegalArgumentException("a message of " + bytes + " bytes is more than the world's limit of "
+                    + maxBytes);
+        }
+        if (!map.isGone(to)) {
+            inbox.get(to).add(new CommEvent(from, map.name(to), text));
+            delivered++;
+        }
+    }
+
     void notice(int robot, String text) {
         notices.get(robot).add(text);
     }

@@ -98,6 +98,11 @@ final class RobotActuators {
         return out;
     }
 
+    /** Robot {@code i}'s LEDs' colours as it last set them (a copy; empty: it has none). */
+    int[] ledsOf(int i) {
+        return leds[i] == null ? PoseUpdate.NO_LEDS : leds[i].colours().clone();
+    }
+
     /** Robot {@code i}'s range-and-bearing device, or null. */
     RabActuator rab(int i) {
         return rab[i];

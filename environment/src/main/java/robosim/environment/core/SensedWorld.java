@@ -20,9 +20,9 @@ import robosim.protocol.Light;
 final class SensedWorld implements SensorContext {
     private final WorldQueries queries;
     private final List<HeatSource> heatSources;
-    private final Floor floor;
+    private Floor floor;
     private final Arena arena;
-    private final List<Light> lights;
+    private List<Light> lights;
     private final EnvironmentMap map;
     private final StepMedia media;
     private final Random random;
@@ -45,6 +45,12 @@ final class SensedWorld implements SensorContext {
         this.radius = radius;
         this.height = height;
         this.random = new Random(spec.seed());
+    }
+
+    /** The floor and lights as the world's loop functions left them (the file's until they change them). */
+    void scenery(Floor now, List<Light> lightsNow) {
+        this.floor = now;
+        this.lights = lightsNow;
     }
 
     /** The sensing radii and heights, after robots joined (a robot that left: radius -infinity, it meets no query). */

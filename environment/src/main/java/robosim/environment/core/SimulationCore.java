@@ -27,7 +27,7 @@ import robosim.protocol.StepResponse;
  * returns), tag, sense (sonar from the answer, the other SENSOR requests from each robot's {@code RobotSensor}s, on
  * the world after every move; noise from the world's one seeded generator, in robot order), respond; and, once the
  * step's responses have gone out, tally ({@link #tally}: the built-in metrics, {@link MetricTally}, count the step as
- * it went out). Deterministic: the same world and the same requests give the same
+ * it went out). A world's loop functions ({@link ExperimentCode}) run before gather and after respond. Deterministic: the same world and the same requests give the same
  * responses, bit for bit. Not thread-safe; one caller.
  */
 public final class SimulationCore {
@@ -65,6 +65,8 @@ public final class SimulationCore {
     /** The built-in metrics, counted step by step, and what they see of the last step. */
     private final MetricTally tally;
     private final StepView released = new Released();
+    /** The world's loop functions ({@link LoopSpec}), or null for a world without. */
+    private final ExperimentCode experiment;
     /** The robots the last step went out to, as its tally was told. */
     private java.util.function.IntPredicate wentOut = robot -> false;
 
@@ -97,6 +99,43 @@ public final class SimulationCore {
         this.geometryRequest = new GeometryStepRequest(robots, map.objectCount());
         this.responses = new StepResponse[robots];
         this.tally = Double.isNaN(areaCellM) ? null : new MetricTally(new RunStart(spec.arena(), areaCellM, released));
+        this.experiment = spec.loopFunctions() == null ? null
+                : new ExperimentCode(spec.loopFunctions(), map, actuators, router, sensing);
+    }
+
+    /**
+     * The world's loop functions begin (their init, before step 0), their own files going to {@code directory}: a new
+     * instance of their class, or {@code kept} (the instance of an earlier run of the same world, null for none),
+     * reset. A stepper that does not call this starts them in the working directory at step 0. Nothing for a world
+     * without loop functions.
+     *
+     * @throws ExperimentFailure if they cannot be made, or throw
+     */
+    public void startExperiment(java.nio.file.Path directory, robosim.loop.LoopFunctions kept) {
+        if (experiment != null) {
+            experiment.start(directory, kept);
+        }
+    }
+
+    /** The loop functions' instance (for a later run of the world to reset), or null. */
+    public robosim.loop.LoopFunctions loopFunctions() {
+        return experiment == null ? null : experiment.code();
+    }
+
+    /** Why the loop functions ended the run, after the last step completed; null while it goes on (or it has none). */
+    public String experimentEnd() {
+        return experiment == null ? null : experiment.endReason();
+    }
+
+    /**
+     * The run is over: the loop functions' destroy, once.
+     *
+     * @throws ExperimentFailure if it throws
+     */
+    public void endExperiment() {
+        if (experiment != null) {
+            experiment.destroy();
+        }
     }
 
     private void limits(int i, RobotProperties p) {
@@ -191,6 +230,7 @@ public final class SimulationCore {
      *
      * @throws ProtocolException if a request is not for step k or holds a non-finite number, or an answer at once
      *     is not a valid answer to the step's request
+     * @throws ExperimentFailure if the world's loop functions throw
      */
     public boolean step(long k, StepRequest[] requests, Geometry geometry) throws ProtocolException {
         GeometryStepRequest request = gather(k, requests);
@@ -207,6 +247,7 @@ public final class SimulationCore {
      * caller's, once the responses have gone out: {@link #tally}).
      *
      * @throws ProtocolException if {@code g} is not a valid answer to the step's Geometry request
+     * @throws ExperimentFailure if the world's loop functions throw
      */
     public void answer(GeometryStepResponse g) throws ProtocolException {
         if (pending == null) {
@@ -223,6 +264,9 @@ public final class SimulationCore {
         String[] tagged = tag(requests);
         senseAndRespond(k, g, requests, tagged);
         lastStep = k;
+        if (experiment != null) {
+            experiment.postStep(k);
+        }
     }
 
     /**
@@ -230,6 +274,10 @@ public final class SimulationCore {
      * bounded by its speed limits; the step's Geometry request, valid until the next step.
      */
     private GeometryStepRequest gather(long k, StepRequest[] requests) throws ProtocolException {
+        if (experiment != null) {
+            experiment.start(java.nio.file.Path.of(""), null); // (once; a stepper that did not start it)
+            experiment.preStep(k);
+        }
         geometryRequest.setStep(k);
         for (int i = 0; i < robots; i++) {
             StepRequest q = requests[i];
@@ -381,7 +429,9 @@ public final class SimulationCore {
         for (int i = 0; i < robots; i++) {
             sonar[i] = responses[i].sonarMm();
         }
-        return map.poses(lastStep, sonar, tags, actuators.leds());
+        PoseUpdate u = map.poses(lastStep, sonar, tags, actuators.leds());
+        return experiment == null ? u : u.withExperiment(experiment.paint(), experiment.lightsNow(),
+                experiment.reports());
     }
 
     /** Every tag so far, "tagger>target", oldest first. */

@@ -84,6 +84,11 @@ final class StepSensing {
     }
 
     /** A step's moves are done: its objects stand where the map has them now, and the media are worked out anew. */
+    /** The floor and lights from now on, as the world's loop functions left them. */
+    void scenery(robosim.protocol.Floor floor, List<robosim.protocol.Light> lights) {
+        world.scenery(floor, lights);
+    }
+
     void stepped() {
         for (int o = 0; o < things.count(); o++) {
             things.place(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o));

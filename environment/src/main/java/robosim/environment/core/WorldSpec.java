@@ -15,13 +15,14 @@ import robosim.protocol.Scenery;
  * @param maxMessageBytes the largest payload a robot may send (modified UTF-8 bytes)
  * @param parameters what the file gives the control code ({@code <param>})
  * @param scenery its floor, lights and objects
+ * @param loopFunctions the experiment's own code ({@code <loopFunctions>}), or null for none
  * @param redraw the same file's world drawn from another seed, where the file places things by chance
  *     ({@code <distribute>}); null where it does not
  */
 public record WorldSpec(String source, String name, long timeStepMs, long seed, Arena arena,
         List<ObstacleShape> obstacles, List<RobotSpec> robots, double commRangeMm, int maxMessageBytes,
         List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
-        Parameters parameters, Scenery scenery, Redraw redraw) {
+        Parameters parameters, Scenery scenery, LoopSpec loopFunctions, Redraw redraw) {
     /** A file's world drawn anew from a seed: its robots and objects placed as that seed's draws put them. */
     @FunctionalInterface
     public interface Redraw {
@@ -70,7 +71,7 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
             List<HeatSource> heatSources, double tagRangeMm, java.util.Set<String> taggable, List<JoinRule> joins,
             Parameters parameters) {
         this(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes, heatSources,
-                tagRangeMm, taggable, joins, parameters, Scenery.NONE, null);
+                tagRangeMm, taggable, joins, parameters, Scenery.NONE, null, null);
     }
 
     /** Without parameters. */
@@ -94,13 +95,13 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
         List<RobotSpec> more = new java.util.ArrayList<>(robots);
         more.add(robot);
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, more, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters, scenery, null);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, loopFunctions, null);
     }
 
     /** This world with {@code others} for its robots (the same robots elsewhere: a learning episode's start). */
     public WorldSpec withRobots(List<RobotSpec> others) {
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, others, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters, scenery, null);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, loopFunctions, null);
     }
 
     /**
@@ -114,13 +115,19 @@ public record WorldSpec(String source, String name, long timeStepMs, long seed, 
             return redraw.at(newSeed);
         }
         return new WorldSpec(source, name, timeStepMs, newSeed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, parameters, scenery, null);
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, loopFunctions, null);
+    }
+
+    /** This world with other loop functions ({@code null}: none). */
+    public WorldSpec withLoopFunctions(LoopSpec other) {
+        return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
+                heatSources, tagRangeMm, taggable, joins, parameters, scenery, other, redraw);
     }
 
     /** This world with other parameters for its control code (a test's, in code). */
     public WorldSpec withParameters(Parameters newParameters) {
         return new WorldSpec(source, name, timeStepMs, seed, arena, obstacles, robots, commRangeMm, maxMessageBytes,
-                heatSources, tagRangeMm, taggable, joins, newParameters, scenery, null);
+                heatSources, tagRangeMm, taggable, joins, newParameters, scenery, loopFunctions, null);
     }
 
     /** Robots the join rules let take part at once, counted up to {@link #JOINABLE_CAP} (for connection and queue caps). */

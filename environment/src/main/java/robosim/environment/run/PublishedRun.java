@@ -37,6 +37,7 @@ public final class PublishedRun {
     private volatile long endNanos;
     private volatile String endReason = "";
     private volatile boolean completed;
+    private volatile boolean experimentFailed;
     private volatile long messagesDelivered;
     private volatile long messagesOutOfRange;
     private volatile long messagesRefused;
@@ -113,6 +114,11 @@ public final class PublishedRun {
         completed = completedSteps;
     }
 
+    /** The world's loop functions failed: the run ends with their line as its reason. */
+    void experimentFailed() {
+        experimentFailed = true;
+    }
+
     /** The run ended at {@code nanos}: {@code reason}, and whether it {@code completed} its steps. */
     void ended(String reason, boolean completedSteps, long nanos) {
         outcome(reason, completedSteps);
@@ -170,7 +176,8 @@ public final class PublishedRun {
         double wall = start == 0 ? 0 : ((end == 0 ? clock.getAsLong() : end) - start) / 1e9;
         List<Departure> left = departures;
         return new RunSummary(stepsReleased(), robots, wall, endReason, completed, messagesDelivered,
-                messagesOutOfRange, messagesRefused, left.size(), geometryLosses, geometryAttaches, left);
+                messagesOutOfRange, messagesRefused, left.size(), geometryLosses, geometryAttaches, left,
+                experimentFailed);
     }
 
     /** What the control port reports now; {@code fileNames}: the file's robots, until the loop has published its own. */

@@ -7,6 +7,7 @@ import java.util.concurrent.CompletableFuture;
 import java.util.function.LongSupplier;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
+import robosim.environment.core.ExperimentFailure;
 import robosim.environment.core.JoinRule;
 import robosim.environment.core.SimulationCore;
 import robosim.environment.core.WorldSpec;
@@ -156,6 +157,13 @@ public final class Run {
         }
         core = settings.liveMetrics() ? new SimulationCore(spec, properties, AreaCoveredMetric.DEFAULT_CELL_M)
                 : new SimulationCore(spec, properties);
+        try {
+            core.startExperiment(settings.record() == null || settings.record().toAbsolutePath().getParent() == null
+                    ? java.nio.file.Path.of("") : settings.record().toAbsolutePath().getParent(), null);
+        } catch (ExperimentFailure e) {
+            experimentFailed(e);
+            return false;
+        }
         roster.start(core);
         admission.start(core);
         geometry.start(core.map().geometryWorld());
@@ -236,13 +244,26 @@ public final class Run {
         } catch (ProtocolException e) {
             finish("step " + StepNumbers.shown(progress.step()) + " failed: " + e.getMessage(), false);
             return false;
+        } catch (ExperimentFailure e) {
+            experimentFailed(e);
+            return false;
         }
+    }
+
+    /** The world's loop functions threw: the run ends with their line (exit code 4). */
+    private void experimentFailed(ExperimentFailure e) {
+        LOG.debug("the loop functions' failure", e);
+        published.experimentFailed();
+        finish(e.getMessage(), false);
     }
 
     /** Completes the step from an answer that came later; {@code from}: the Geometry process that gave it, or null (in-process). */
     private boolean complete(GeometryStepResponse answer, GeometryPeer from) {
         try {
             core.answer(answer);
+        } catch (ExperimentFailure e) {
+            experimentFailed(e);
+            return false;
         } catch (ProtocolException e) {
             if (from == null) {
                 finish("step " + StepNumbers.shown(progress.step()) + " failed: " + e.getMessage(), false);
@@ -309,8 +330,10 @@ public final class Run {
             return false;
         }
         control.releasing();
-        boolean last = settings.maxSteps() > 0 && step >= settings.maxSteps();
-        SimulationEnd end = last ? new SimulationEnd(step - 1, "completed " + step + " steps") : null;
+        String experimentEnd = core.experimentEnd();
+        boolean last = settings.maxSteps() > 0 && step >= settings.maxSteps() || experimentEnd != null;
+        SimulationEnd end = !last ? null : new SimulationEnd(step - 1, experimentEnd != null
+                ? experimentEnd + " after " + step + " steps" : "completed " + step + " steps");
         if (last) {
             // the outcome is on record before any robot hears of it
             published.outcome(end.reason(), true);
@@ -464,6 +487,13 @@ public final class Run {
             outputs.get(i).ended(end);
         }
         geometry.end(end);
+        if (core != null) {
+            try {
+                core.endExperiment();
+            } catch (ExperimentFailure e) {
+                LOG.warn("{}", e.getMessage());
+            }
+        }
         publish();
         LOG.info("simulation over after {} steps: {}", progress.released(), Printable.of(reason));
         listener.ended(published.summary(roster.size()));

@@ -2,10 +2,14 @@ package robosim.environment.run;
 
 import java.util.List;
 
-/** How a run went; {@code steps}: steps completed (responses out, as the control port's); {@code departures} says, for each robot that left mid-run, when and why. */
+/**
+ * How a run went; {@code steps}: steps completed (responses out, as the control port's); {@code departures} says, for
+ * each robot that left mid-run, when and why; {@code experimentFailed}: the world's loop functions threw (the reason
+ * says where).
+ */
 public record RunSummary(long steps, int robots, double wallSeconds, String reason, boolean completed,
         long messagesDelivered, long messagesOutOfRange, long messagesRefused, int robotsLeft,
-        int geometryLosses, int geometryAttaches, List<Departure> departures) {
+        int geometryLosses, int geometryAttaches, List<Departure> departures, boolean experimentFailed) {
     /** The Environment's last line: {@code summary steps=... robots=... wall_s=... steps_per_s=...}. */
     public String line() {
         double wall = Math.max(wallSeconds, 1e-9);

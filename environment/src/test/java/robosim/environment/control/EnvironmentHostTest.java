@@ -11,7 +11,14 @@ import robosim.environment.run.RunSummary;
 class EnvironmentHostTest {
     private static RunSummary run(boolean completed, List<Departure> departures) {
         return new RunSummary(100, 3, 1.0, completed ? "completed 100 steps" : "the Geometry process was lost",
-                completed, 0, 0, 0, departures.size(), 0, 0, departures);
+                completed, 0, 0, 0, departures.size(), 0, 0, departures, false);
+    }
+
+    @Test
+    void aRunWhoseLoopFunctionsThrewExits4() {
+        RunSummary failed = new RunSummary(7, 3, 1.0, "loop functions X failed in postStep at step 7: boom", false,
+                0, 0, 0, 0, 0, 0, List.of(), true);
+        assertEquals(EnvironmentHost.EXIT_CONTROL_FAILED, EnvironmentHost.exitCode(failed));
     }
 
     @Test

@@ -1,4 +1,4 @@
-package robosim.environment.config;
+package robosim.environment.core;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -10,11 +10,12 @@ import robosim.protocol.ObstacleShape;
 import robosim.protocol.WorldObject;
 
 /**
- * What an environment file has placed so far, for the check of the next robot or object it places: the arena, the
- * obstacles, and the objects and robots placed before (the file's in file order, then each {@code <distribute>}'s).
- * Says what a new one would overlap (interiors, touching allowed), the first found, or null where it fits.
+ * What has been placed so far, for the check of the next robot or object placed: the arena, the obstacles, and the
+ * objects and robots placed before (an environment file's, in file order, then each {@code <distribute>}'s; or the
+ * world as it stands, where loop functions move one). Says what a new one would overlap (interiors, touching allowed),
+ * the first found, or null where it fits.
  */
-final class Placement {
+public final class Placement {
     private final GeometryFactory jts = new GeometryFactory();
     private final Arena arena;
     private final List<ObstacleShape> obstacles;
@@ -26,11 +27,11 @@ final class Placement {
     private final List<double[]> robots = new ArrayList<>();
 
     /** {@code arena} may be null (at fault: nothing is outside it). */
-    Placement(Arena arena, List<ObstacleShape> obstacles) {
+    public Placement(Arena arena, List<ObstacleShape> obstacles) {
         this.arena = arena;
         this.obstacles = List.copyOf(obstacles);
         for (ObstacleShape o : obstacles) {
-            walls.add(robosim.environment.core.Obstacles.polygon(o));
+            walls.add(Obstacles.polygon(o));
         }
     }
 
@@ -38,7 +39,7 @@ final class Placement {
      * What a round body at (x, y) of {@code radius} would overlap, the first of: outside the arena, an obstacle, an
      * object, a robot ({@code "obstacle \"wall\""}); null where it fits.
      */
-    String overlapOfDisc(double x, double y, double radius) {
+    public String overlapOfDisc(double x, double y, double radius) {
         if (arena != null && (x - radius < arena.minXMm() || x + radius > arena.maxXMm()
                 || y - radius < arena.minYMm() || y + radius > arena.maxYMm())) {
             return "the arena's edge";
@@ -46,27 +47,27 @@ final class Placement {
         Geometry centre = jts.createPoint(new Coordinate(x, y));
         for (int o = 0; o < walls.size(); o++) {
             if (walls.get(o).distance(centre) < radius) {
-                return "obstacle \"" + FileFaults.cut(obstacles.get(o).name()) + "\"";
+                return "obstacle \"" + cut(obstacles.get(o).name()) + "\"";
             }
         }
         for (int o = 0; o < objects.size(); o++) {
             WorldObject other = objects.get(o);
             double reach = other.shape() == WorldObject.Shape.CYLINDER ? radius + other.radiusMm() : radius;
             if (outlines.get(o).distance(centre) < reach) {
-                return "object \"" + FileFaults.cut(other.name()) + "\"";
+                return "object \"" + cut(other.name()) + "\"";
             }
         }
         for (int r = 0; r < robots.size(); r++) {
             double[] other = robots.get(r);
             if (Math.hypot(other[0] - x, other[1] - y) < radius + other[2]) {
-                return "robot \"" + FileFaults.cut(robotNames.get(r)) + "\"";
+                return "robot \"" + cut(robotNames.get(r)) + "\"";
             }
         }
         return null;
     }
 
     /** What {@code object} at its pose would overlap, as {@link #overlapOfDisc} says it; null where it fits. */
-    String overlapOf(WorldObject object) {
+    public String overlapOf(WorldObject object) {
         if (object.shape() == WorldObject.Shape.CYLINDER) {
             return overlapOfDisc(object.xMm(), object.yMm(), object.radiusMm());
         }
@@ -77,7 +78,7 @@ final class Placement {
         }
         for (int o = 0; o < walls.size(); o++) {
             if (overlap(walls.get(o), box)) {
-                return "obstacle \"" + FileFaults.cut(obstacles.get(o).name()) + "\"";
+                return "obstacle \"" + cut(obstacles.get(o).name()) + "\"";
             }
         }
         for (int o = 0; o < objects.size(); o++) {
@@ -85,16 +86,20 @@ final class Placement {
             boolean hit = other.shape() == WorldObject.Shape.CYLINDER
                     ? box.distance(outlines.get(o)) < other.radiusMm() : overlap(outlines.get(o), box);
             if (hit) {
-                return "object \"" + FileFaults.cut(other.name()) + "\"";
+                return "object \"" + cut(other.name()) + "\"";
             }
         }
         for (int r = 0; r < robots.size(); r++) {
             double[] other = robots.get(r);
             if (box.distance(jts.createPoint(new Coordinate(other[0], other[1]))) < other[2]) {
-                return "robot \"" + FileFaults.cut(robotNames.get(r)) + "\"";
+                return "robot \"" + cut(robotNames.get(r)) + "\"";
             }
         }
         return null;
+    }
+
+    private static String cut(String name) {
+        return robosim.protocol.Printable.of(name, 64);
     }
 
     private static boolean overlap(Geometry a, Geometry b) {
@@ -110,12 +115,12 @@ final class Placement {
             new Coordinate(c[4], c[5]), new Coordinate(c[6], c[7]), new Coordinate(c[0], c[1])});
     }
 
-    void addRobot(String name, double x, double y, double radius) {
+    public void addRobot(String name, double x, double y, double radius) {
         robotNames.add(name);
         robots.add(new double[] {x, y, radius});
     }
 
-    void addObject(WorldObject object) {
+    public void addObject(WorldObject object) {
         objects.add(object);
         outlines.add(outline(object));
     }

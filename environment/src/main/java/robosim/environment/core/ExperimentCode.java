@@ -1,0 +1,440 @@
+package robosim.environment.core;
+
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.SplittableRandom;
+import java.util.random.RandomGenerator;
+import robosim.loop.Experiment;
+import robosim.loop.LoopFunctions;
+import robosim.protocol.Floor;
+import robosim.protocol.Light;
+import robosim.protocol.Printable;
+import robosim.protocol.Report;
+import robosim.protocol.WorldObject;
+
+/**
+ * A world's loop functions at work ({@link LoopSpec}), and the {@link Experiment} they see: owned by the
+ * {@link SimulationCore}, which calls them between its phases ({@link #start}, {@link #preStep}, {@link #postStep},
+ * {@link #destroy}), so they run on the one thread that steps the world, in every layout. Keeps what they change that
+ * the file did not say: the paint over the floor, the lights switched, the metrics of this step, the end asked for.
+ * Whatever the code throws is an {@link ExperimentFailure}, after which it is called no more.
+ */
+final class ExperimentCode implements Experiment {
+    /** The sender of what the loop functions {@link #tell} a robot. */
+    static final String SENDER = "loop";
+    /** Mixed into the run's seed for the experiment's own generator, so it draws what no sensor draws. */
+    private static final long SEED_MIX = 0x6c6f6f7066756e63L; // "loopfunc"
+
+    private final LoopSpec spec;
+    private final EnvironmentMap map;
+    private final RobotActuators actuators;
+    private final MessageRouter router;
+    private final StepSensing sensing;
+    private final SplittableRandom random;
+    private LoopFunctions code;
+    private final Floor fileFloor;
+    private List<Floor.Region> paint = List.of();
+    private Floor floor;
+    private final List<Light> fileLights;
+    private List<Light> lights;
+    private final Map<String, Double> reports = new LinkedHashMap<>();
+    /** The metrics reported for the last step completed (from its pre-step, or init, to its post-step). */
+    private List<Report> stepReports = List.of();
+    private String endReason;
+    private long step;
+    private Path outputDirectory = Path.of("");
+    private boolean started;
+    private boolean destroyed;
+
+    ExperimentCode(LoopSpec spec, EnvironmentMap map, RobotActuators actuators, MessageRouter router,
+            StepSensing sensing) {
+        this.spec = spec;
+        this.map = map;
+        this.actuators = actuators;
+        this.router = router;
+        this.sensing = sensing;
+        this.random = new SplittableRandom(map.spec().seed() ^ SEED_MIX);
+        this.fileFloor = map.spec().scenery().floor();
+        this.floor = fileFloor;
+        this.fileLights = map.spec().scenery().lights();
+        this.lights = fileLights;
+    }
+
+    /**
+     * Makes the code and starts it, before step 0: {@code kept}, the instance of an earlier run of the same world,
+     * {@link LoopFunctions#reset}; else the spec's given instance, or a new instance of its class, initialised. Its
+     * files go to {@code directory}.
+     */
+    void start(Path directory, LoopFunctions kept) {
+        if (started) {
+            return;
+        }
+        started = true;
+        outputDirectory = directory;
+        if (kept != null) {
+            code = kept;
+            call("reset", () -> code.reset(this));
+            return;
+        }
+        if (spec.given() != null) {
+            code = spec.given();
+            call("init", () -> code.init(this));
+            return;
+        }
+        try {
+            code = Class.forName(spec.className(), true, robosim.protocol.ControlClasses.loader())
+                    .asSubclass(LoopFunctions.class).getDeclaredConstructor().newInstance();
+        } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
+            Throwable why = e instanceof java.lang.reflect.InvocationTargetException t ? t.getCause() : e;
+            throw new ExperimentFailure("loop functions " + spec.className() + " could not be made: " + why, why);
+        }
+        call("init", () -> code.init(this));
+    }
+
+    /** The code's instance, for a later run of the same world to reset (null before {@link #start}). */
+    LoopFunctions code() {
+        return code;
+    }
+
+    /** Before step {@code k}'s moves. */
+    void preStep(long k) {
+        step = k;
+        call("preStep", () -> code.preStep(this));
+    }
+
+    /** After step {@code k}'s moves and sensing: its post-step, then whether the experiment is finished. */
+    void postStep(long k) {
+        step = k + 1;
+        call("postStep", () -> code.postStep(this));
+        if (endReason == null && code != null) {
+            boolean[] done = new boolean[1];
+            call("finished", () -> done[0] = code.finished(this));
+            if (done[0]) {
+                endReason = "the experiment is finished (" + spec.className() + ")";
+            }
+        }
+        stepReports = takeReports();
+    }
+
+    /** Once the run is over: the code's destroy (what it throws is only logged by the caller). */
+    void destroy() {
+        if (code != null && !destroyed) {
+            destroyed = true;
+            call("destroy", () -> code.destroy(this));
+        }
+    }
+
+    /** Why the experiment asked to end, or null while it goes on. */
+    String endReason() {
+        return endReason;
+    }
+
+    /** The metrics reported for the last step completed, each name's newest value, in the order first reported. */
+    List<Report> reports() {
+        return stepReports;
+    }
+
+    private List<Report> takeReports() {
+        if (reports.isEmpty()) {
+            return List.of();
+        }
+        List<Report> out = new ArrayList<>(reports.size());
+        reports.forEach((name, value) -> out.add(new Report(name, value)));
+        reports.clear();
+        return out;
+    }
+
+    /** What the code painted over the floor, oldest first (the same list until it paints again). */
+    List<Floor.Region> paint() {
+        return paint;
+    }
+
+    /** The lights as the code left them switched (the file's own list until it switches one). */
+    List<Light> lightsNow() {
+        return lights;
+    }
+
+    private interface Call {
+        void run() throws Exception;
+    }
+
+    private void call(String what, Call c) {
+        if (code == null) {
+            return;
+        }
+        try {
+            c.run();
+        } catch (Exception | LinkageError | StackOverflowError e) {
+            LoopFunctions failed = code;
+            code = null; // (called no more)
+            throw new ExperimentFailure("loop functions " + failed.getClass().getName() + " failed in " + what
+                    + " at step " + step + ": " + Printable.of(String.valueOf(e), 300), e);
+        }
+    }
+
+    // ---- the Experiment it sees -----------------------------------------------------------------------------
+
+    @Override
+    public long step() {
+        return step;
+    }
+
+    @Override
+    public long stepMs() {
+        return map.spec().timeStepMs();
+    }
+
+    @Override
+    public long seed() {
+        return map.spec().seed();
+    }
+
+    @Override
+    public RandomGenerator random() {
+        return random;
+    }
+
+    @Override
+    public Map<String, String> parameters() {
+        return spec.parameters();
+    }
+
+    @Override
+    public double arenaWidthMm() {
+        return map.spec().arena().maxXMm() - map.spec().arena().minXMm();
+    }
+
+    @Override
+    public double arenaHeightMm() {
+        return map.spec().arena().maxYMm() - map.spec().arena().minYMm();
+    }
+
+    @Override
+    public int robots() {
+        return map.robotCount();
+    }
+
+    @Override
+    public String robotName(int robot) {
+        return map.name(robot);
+    }
+
+    @Override
+    public String robotType(int robot) {
+        return map.properties(robot).type();
+    }
+
+    @Override
+    public double robotXMm(int robot) {
+        return map.xMm(robot);
+    }
+
+    @Override
+    public double robotYMm(int robot) {
+        return map.yMm(robot);
+    }
+
+    @Override
+    public double robotHeadingDeg(int robot) {
+        return map.headingDeg(robot);
+    }
+
+    @Override
+    public boolean present(int robot) {
+        return !map.isGone(robot);
+    }
+
+    @Override
+    public int[] leds(int robot) {
+        return actuators.ledsOf(robot);
+    }
+
+    @Override
+    public int carrying(int robot) {
+        return map.carried(robot);
+    }
+
+    @Override
+    public boolean moveRobot(int robot, double xMm, double yMm, double headingDeg) {
+        finite("moveRobot", xMm, yMm, headingDeg);
+        if (map.isGone(robot)) {
+            return false;
+        }
+        Placement around = placement(robot, -1);
+        if (around.overlapOfDisc(xMm, yMm, map.radiusMm(robot)) != null) {
+            return false;
+        }
+        map.setPose(robot, xMm, yMm, robosim.geometry.Kinematics.turn(0, headingDeg));
+        return true;
+    }
+
+    @Override
+    public void tell(int robot, String text) {
+        java.util.Objects.checkIndex(robot, map.robotCount());
+        router.fromLoop(robot, map, SENDER, text);
+    }
+
+    @Override
+    public int objects() {
+        return map.objectCount();
+    }
+
+    @Override
+    public String objectName(int object) {
+        return map.spec().scenery().objects().get(object).name();
+    }
+
+    @Override
+    public double objectXMm(int object) {
+        return map.objectXMm(object);
+    }
+
+    @Override
+    public double objectYMm(int object) {
+        return map.objectYMm(object);
+    }
+
+    @Override
+    public double objectHeadingDeg(int object) {
+        return map.objectHeadingDeg(object);
+    }
+
+    @Override
+    public int carrier(int object) {
+        return map.carrier(object);
+    }
+
+    @Override
+    public boolean moveObject(int object, double xMm, double yMm, double headingDeg) {
+        finite("moveObject", xMm, yMm, headingDeg);
+        WorldObject moved = map.spec().scenery().objects().get(object).at(xMm, yMm,
+                robosim.geometry.Kinematics.turn(0, headingDeg));
+        if (placement(-1, object).overlapOf(moved) != null) {
+            return false;
+        }
+        map.carry(object, -1);
+        map.setObjectPose(object, moved.xMm(), moved.yMm(), moved.headingDeg());
+        return true;
+    }
+
+    /** The world as it stands, but robot {@code robot} and object {@code object} (-1: none left out). */
+    private Placement placement(int robot, int object) {
+        Placement p = new Placement(map.spec().arena(), map.spec().obstacles());
+        for (int i = 0; i < map.robotCount(); i++) {
+            if (i != robot && !map.isGone(i)) {
+                p.addRobot(map.name(i), map.xMm(i), map.yMm(i), map.radiusMm(i));
+            }
+        }
+        List<WorldObject> objects = map.spec().scenery().objects();
+        for (int o = 0; o < objects.size(); o++) {
+            if (o != object) {
+                p.addObject(objects.get(o).at(map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o)));
+            }
+        }
+        return p;
+    }
+
+    @Override
+    public int floorColour(double xMm, double yMm) {
+        return floor.colourAt(map.spec().arena(), xMm, yMm);
+    }
+
+    @Override
+    public void paintDisc(double xMm, double yMm, double radiusMm, int rgb) {
+        paint(new Floor.Region(new Floor.Disc(xMm, yMm, radiusMm), rgb));
+    }
+
+    @Override
+    public void paintRectangle(double xMm, double yMm, double widthMm, double heightMm, int rgb) {
+        paint(new Floor.Region(new Floor.Rectangle(xMm, yMm, widthMm, heightMm), rgb));
+    }
+
+    private void paint(Floor.Region region) {
+        if (fileFloor.regions().size() + paint.size() >= robosim.protocol.Limits.MAX_FLOOR_REGIONS) {
+            throw new IllegalStateException("the floor holds at most " + robosim.protocol.Limits.MAX_FLOOR_REGIONS
+                    + " painted regions: erase before painting more");
+        }
+        List<Floor.Region> more = new ArrayList<>(paint.size() + 1);
+        more.addAll(paint);
+        more.add(region);
+        paint = List.copyOf(more);
+        floorChanged();
+    }
+
+    @Override
+    public void erasePaint() {
+        if (!paint.isEmpty()) {
+            paint = List.of();
+            floorChanged();
+        }
+    }
+
+    private void floorChanged() {
+        List<Floor.Region> all = new ArrayList<>(fileFloor.regions());
+        all.addAll(paint);
+        floor = new Floor(fileFloor.rgb(), all, fileFloor.image());
+        sensing.scenery(floor, lights);
+    }
+
+    @Override
+    public int lights() {
+        return lights.size();
+    }
+
+    @Override
+    public String lightName(int light) {
+        return lights.get(light).name();
+    }
+
+    @Override
+    public boolean lightOn(int light) {
+        return lights.get(light).on();
+    }
+
+    @Override
+    public void switchLight(int light, boolean on) {
+        Light l = lights.get(light);
+        if (l.on() == on) {
+            return;
+        }
+        List<Light> now = new ArrayList<>(lights);
+        now.set(light, new Light(l.name(), l.xMm(), l.yMm(), l.heightMm(), l.rgb(), l.intensity(), on));
+        lights = List.copyOf(now);
+        sensing.scenery(floor, lights);
+    }
+
+    @Override
+    public void report(String name, double value) {
+        String bad = Report.problem(name, value);
+        if (bad != null) {
+            throw new IllegalArgumentException(bad);
+        }
+        if (!reports.containsKey(name) && reports.size() >= Report.MAX_PER_STEP) {
+            throw new IllegalStateException("at most " + Report.MAX_PER_STEP + " metrics a step");
+        }
+        reports.put(name, value);
+    }
+
+    @Override
+    public void end(String reason) {
+        if (endReason == null) {
+            endReason = reason == null || reason.isBlank() ? "the experiment ended (" + spec.className() + ")"
+                    : Printable.of(reason, 200);
+        }
+    }
+
+    @Override
+    public Path outputDirectory() {
+        return outputDirectory;
+    }
+
+    private static void finite(String what, double x, double y, double h) {
+        if (!Double.isFinite(x) || !Double.isFinite(y) || !Double.isFinite(h)) {
+            throw new IllegalArgumentException(what + ": a pose of finite numbers, got (" + x + ", " + y + ", " + h
+                    + ")");
+        }
+    }
+}

@@ -1,0 +1,143 @@
+package robosim.loop;
+
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.random.RandomGenerator;
+
+/**
+ * The world as an experiment's {@link LoopFunctions} see and change it. Units as the robot API's: millimetres (the
+ * arena's lower-left corner at the origin), degrees counter-clockwise from +x, colours {@code 0xRRGGBB}. Robots,
+ * objects and lights are numbered in world order, from 0. What it changes takes effect at once for what it reads
+ * next, and for the robots at the next step's sensing.
+ */
+public interface Experiment {
+    /** Steps completed: 0 in {@link LoopFunctions#init} and in the first {@link LoopFunctions#preStep}. */
+    long step();
+
+    /** The length of a step, ms. */
+    long stepMs();
+
+    /** The run's seed. */
+    long seed();
+
+    /** The experiment's own random numbers: seeded by the run's seed, used by nothing else. */
+    RandomGenerator random();
+
+    /** The {@code <param>}s of {@code <loopFunctions>}, in file order. */
+    Map<String, String> parameters();
+
+    /** Parameter {@code name}, or {@code fallback} when the file gives none. */
+    default String parameter(String name, String fallback) {
+        return parameters().getOrDefault(name, fallback);
+    }
+
+    /** Parameter {@code name} as a number; a value that is not one is an IllegalArgumentException naming it. */
+    default double parameter(String name, double fallback) {
+        String value = parameters().get(name);
+        if (value == null) {
+            return fallback;
+        }
+        try {
+            return Double.parseDouble(value.trim());
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("loop functions parameter " + name + " is '" + value
+                    + "', not a number");
+        }
+    }
+
+    /** The arena's width and height, mm. */
+    double arenaWidthMm();
+
+    double arenaHeightMm();
+
+    // ---- robots --------------------------------------------------------------------------------------------
+
+    int robots();
+
+    String robotName(int robot);
+
+    /** Its type's name ({@code foot-bot}, {@code e-puck}, ...). */
+    String robotType(int robot);
+
+    double robotXMm(int robot);
+
+    double robotYMm(int robot);
+
+    double robotHeadingDeg(int robot);
+
+    /** False once it has left the run. */
+    boolean present(int robot);
+
+    /** Its LEDs' colours as it last set them (empty: it has none). */
+    int[] leds(int robot);
+
+    /** The object it holds in its gripper, or -1. */
+    int carrying(int robot);
+
+    /** Puts it at a pose (its next step starts there); false, and nothing moved, where it would overlap something. */
+    boolean moveRobot(int robot, double xMm, double yMm, double headingDeg);
+
+    /** A text message to it, from {@code loop}, in its next step's messages (as another robot's). */
+    void tell(int robot, String text);
+
+    // ---- objects -------------------------------------------------------------------------------------------
+
+    int objects();
+
+    String objectName(int object);
+
+    double objectXMm(int object);
+
+    double objectYMm(int object);
+
+    double objectHeadingDeg(int object);
+
+    /** The robot holding it, or -1. */
+    int carrier(int object);
+
+    /**
+     * Puts it at a pose, let go of by whoever held it; false, and nothing moved, where it would overlap a wall, an
+     * obstacle, a robot or another object.
+     */
+    boolean moveObject(int object, double xMm, double yMm, double headingDeg);
+
+    // ---- floor and lights ----------------------------------------------------------------------------------
+
+    /** The floor's colour at a point, as ground sensors read it (the file's floor with this code's paint over it). */
+    int floorColour(double xMm, double yMm);
+
+    /** Paints a disc over the floor (over everything painted before). */
+    void paintDisc(double xMm, double yMm, double radiusMm, int rgb);
+
+    /** Paints an axis-aligned rectangle over the floor, its lower-left corner at (x, y). */
+    void paintRectangle(double xMm, double yMm, double widthMm, double heightMm, int rgb);
+
+    /** Takes away everything this code painted: the file's floor again. */
+    void erasePaint();
+
+    int lights();
+
+    String lightName(int light);
+
+    boolean lightOn(int light);
+
+    /** Switches a light on or off. */
+    void switchLight(int light, boolean on);
+
+    // ---- the run -------------------------------------------------------------------------------------------
+
+    /**
+     * A number of the run, as a robot's {@code report}: recorded with the step, a column of a sweep's tables (its
+     * newest value), plotted like the built-in metrics; a name of 1 to 64 letters, digits, {@code _ . -}.
+     */
+    void report(String name, double value);
+
+    /** Ends the run after this step, as planned, with {@code reason} as its end's reason. */
+    void end(String reason);
+
+    /**
+     * Where this run's own output files go: beside the run's recording, else the working directory. A file the
+     * code writes there is its own (ARGoS's foraging writes {@code foraging.txt}).
+     */
+    Path outputDirectory();
+}
