@@ -28,7 +28,8 @@ import robosim.web.WebViewerServer;
  * plan has them), runs its host's simulations one after another, and hands on its lines: {@code listening
  * robots=P viewers=P geometry=P control=P [web=P] tls=on|off} once its ports are bound, {@code running robots=N}
  * once every client of the first simulation is there (thread {@code start-announcer}), {@code left robot=NAME
- * step=S reason=WHY} for each robot that left, and the summary {@code steps=... robots=... wall_s=...}; with robots
+ * step=S reason=WHY} for each robot that left, {@code experiment-failed WHY} when the world's loop functions threw,
+ * and the summary {@code steps=... robots=... wall_s=...}; with robots
  * in its JVM, a {@code control-failed NAME: ...} line for each robot whose control code threw and a
  * {@code control-running NAME} line for each whose control code was still running 2 s after the end.
  */
@@ -123,6 +124,9 @@ public final class EnvironmentServer {
                 for (Departure d : s.departures()) {
                     lines.accept("left robot=" + d.robot() + " step=" + StepNumbers.shown(d.step()) + " reason="
                             + d.why());
+                }
+                if (s.experimentFailed()) {
+                    lines.accept("experiment-failed " + s.reason());
                 }
                 lines.accept(s.line());
             });

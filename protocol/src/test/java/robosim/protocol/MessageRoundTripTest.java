@@ -231,8 +231,17 @@ class MessageRoundTripTest {
         assertEquals(6, p2.headingDeg(1));
         assertArrayEquals(new double[] {700, 800}, p2.sonarMm(0));
         assertEquals(0, p2.sonarMm(1).length);
-        // tags, departed and held robots: three empty string lists; no objects, no LEDs
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4 + 4 + 4 + 1, repeatedSize(p));
+        // tags, departed and held robots: three empty string lists; no objects, no LEDs, no loop functions
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4 + 4 + 4 + 1 + 1, repeatedSize(p));
+        PoseUpdate looped = roundTrip(p.withExperiment(List.of(new Floor.Region(new Floor.Disc(10, 20, 5), 0x000000)),
+                List.of(new Light("l1", 0, 0, 100, 0xFFFF00, 1, true), new Light("l2", 0, 0, 100, 0xFFFF00, 1, true)),
+                List.of(new Report("collected_food", 3))));
+        assertEquals(List.of(new Floor.Region(new Floor.Disc(10, 20, 5), 0x000000)), looped.paint());
+        assertEquals(List.of(new Report("collected_food", 3)), looped.reports());
+        Light off = new Light("l2", 0, 0, 100, 0xFFFF00, 1, false);
+        assertEquals(true, looped.light(List.of(off, off), 0).on(), "switched on by the loop functions");
+        assertEquals(List.of(), p2.paint());
+        assertEquals(off, p2.light(List.of(off), 0), "as the file's without loop functions");
         PoseUpdate tagged = new PoseUpdate(4, new double[] {1}, new double[] {3}, new double[] {5}, null,
                 List.of("a>b"));
         assertEquals(List.of("a>b"), roundTrip(tagged).tags());
@@ -258,7 +267,7 @@ class MessageRoundTripTest {
         int props = utf("ArRobot") + 5 * 8 + 4 + 5 * 8 + 4 + 4 + 1; // (no rays, no LEDs, no gripper)
         int robots = 2 * (utf("a") + props);
         int scenery = 4 + 4 + 1 + 4 + 4; // a plain floor (colour, no regions, no image), no lights, no objects
-        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4 + 4 + 4 + 1 + scenery),
+        assertEquals(wire(8 + 8 + 32 + 4 + 4 + robots + 8 + 4 + 2 * 25 + 4 + 4 + 4 + 4 + 1 + 1 + scenery),
                 repeatedSize(s));
 
         RunState r = roundTrip(new RunState(12, RunState.Phase.PAUSED));

@@ -69,7 +69,7 @@ class RecordingTest {
 
     /**
      * A version 4 recording (written by RoboSim before worlds had scenery: {@code v4.rec}, a snapshot of robots a and b
-     * and one step) reads without scenery, objects or LEDs; as version 3 (the same bytes: its views hold nothing
+     * and one step) reads without scenery, objects, LEDs or anything of loop functions (as version 5 does); as version 3 (the same bytes: its views hold nothing
      * more) without reports; version 2 is refused.
      */
     @Test
@@ -85,6 +85,8 @@ class RecordingTest {
             assertEquals(0, r.step(0).update().objectCount());
             assertEquals(0, r.step(0).update().leds(0).length);
             assertEquals(2, r.step(0).update().yMm(1));
+            assertEquals(List.of(), r.step(0).update().paint());
+            assertEquals(List.of(), r.step(0).update().reports());
         }
         bytes[RecordingFormat.MAGIC.length] = 3;
         Files.write(file, bytes);
@@ -95,7 +97,7 @@ class RecordingTest {
         bytes[RecordingFormat.MAGIC.length] = 2;
         Files.write(file, bytes);
         IOException e = assertThrows(IOException.class, () -> new RecordingReader(file));
-        assertEquals(file + ": recording version 2, this RoboSim reads 5", e.getMessage());
+        assertEquals(file + ": recording version 2, this RoboSim reads 6", e.getMessage());
     }
 
     @Test

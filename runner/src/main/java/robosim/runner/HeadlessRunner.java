@@ -143,9 +143,16 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     /**
      * Every robot of {@code spec} (of environment file {@code env}) needs a control class on the class path the robot
-     * processes get (ours), or a script there and an interpreter that can run it: what is wrong, or null.
+     * processes get (ours), or a script there and an interpreter that can run it, and the world's loop functions their
+     * class: what is wrong, or null.
      */
     public static String missingControl(java.nio.file.Path env, WorldSpec spec) throws InterruptedException {
+        if (spec.loopFunctions() != null && spec.loopFunctions().given() == null) {
+            String problem = robosim.environment.core.LoopSpec.problem(spec.loopFunctions().className());
+            if (problem != null) {
+                return env + ": <loopFunctions>: " + problem;
+            }
+        }
         boolean scripts = false;
         for (WorldSpec.RobotSpec r : spec.robots()) {
             String where = env + ": <robot name=\"" + r.name() + "\">";
@@ -209,6 +216,8 @@ public final class HeadlessRunner implements Callable<Integer> {
                 String name = line.substring("control-running ".length());
                 controlStillRunning.add(name);
                 System.out.println("robot " + name + ": its control code was still running after the run's end");
+            } else if (line.startsWith("experiment-failed ")) { // (the loop functions' line)
+                System.err.println(line.substring("experiment-failed ".length()));
             } else if (line.startsWith("summary ")) {
                 summary.complete(fields(line));
             } else {

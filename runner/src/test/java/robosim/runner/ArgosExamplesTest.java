@@ -12,7 +12,8 @@ import robosim.protocol.RobotView;
 
 /**
  * ARGoS's example experiments as examples/argos/ ports them do what they are for, each run in this JVM and read back
- * from its recording: the synchronizing foot-bots end flashing together, and the gripper drags the cylinder back.
+ * from its recording: the synchronizing foot-bots end flashing together, the gripper drags the cylinder back, and the
+ * foragers bring food to the nest (their loop functions' count, in the recording and their own file).
  * (The diffusion and e-puck ports: examples/argos/README.md says what is missing.)
  */
 class ArgosExamplesTest {
@@ -59,6 +60,30 @@ class ArgosExamplesTest {
             assertEquals(49 * 5, dragged, 1e-6, "49 steps back at 5 cm/s with the cylinder held");
             assertEquals(released.objectXMm(0), end.objectXMm(0), 1e-9, "let go, it stays");
             assertTrue(end.xMm(0) < released.xMm(0) - 200, "the robot went on backwards without it");
+        }
+    }
+
+    @Test
+    void theForagersBringFoodToTheNestAndTheLoopFunctionsCountIt() throws Exception {
+        try (RecordingReader reader = run("foraging.xml", 5000)) {
+            java.util.Map<String, Double> metrics = robosim.sweep.RunMetrics.of(dir.resolve("foraging.xml.rec"),
+                    java.util.List.of(), robosim.sweep.RunMetrics.DEFAULT_AREA_CELL_M);
+            double collected = metrics.get("collected_food");
+            // a walk without the state machine brings nothing back: only a forager that turns home with its item
+            // and finds the nest's grey by its lights drops one
+            assertTrue(collected >= 20, "items brought to the nest in 5000 steps: " + metrics);
+            assertEquals(collected, metrics.get("food_items"), "each drop told to the robot that made it");
+            java.util.List<String> lines = java.nio.file.Files.readAllLines(dir.resolve("foraging.txt"));
+            assertEquals("# clock\twalking\tresting\tcollected_food\tenergy", lines.get(0));
+            assertEquals(1 + 5000, lines.size(), "a line a step, ARGoS's columns, beside the recording");
+            String[] last = lines.get(5000).split("\t");
+            assertEquals("4999", last[0]);
+            assertEquals(20, Integer.parseInt(last[1]) + Integer.parseInt(last[2]), "walking and resting");
+            assertEquals((long) collected, Long.parseLong(last[3]));
+            for (int k = 0; k < reader.steps(); k += 500) {
+                int painted = reader.step(k).update().paint().size();
+                assertTrue(painted >= 15 - 20 && painted <= 15, "the items on the floor, those carried not: " + painted);
+            }
         }
     }
 }

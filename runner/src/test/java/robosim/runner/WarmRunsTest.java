@@ -16,8 +16,8 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * A warm JVM's runs ({@link RunHost}, here this test JVM) against the same runs each in a fresh JVM: the same pose
- * logs, run after run, for control code with static state ({@link CountsItsRuns}: its n-th run in a JVM moves n
- * times as far) and for a seeded noisy world (the maze); a run of processes leaves nothing of its own running; each
+ * logs, run after run, for control code and loop functions with static state ({@link CountsItsRuns}: its n-th run in
+ * a JVM moves n times as far; {@link CountsItsExperiments} likewise) and for a seeded noisy world (the maze); a run of processes leaves nothing of its own running; each
  * run's class loader defines the user's classes and the examples again, RoboSim's own never.
  */
 class WarmRunsTest {
@@ -29,6 +29,7 @@ class WarmRunsTest {
         Path counter = dir.resolve("counter.xml");
         Files.writeString(counter, """
                 <environment name="counter" timeStepMs="100">
+                  <loopFunctions class="robosim.runner.CountsItsExperiments"/>
                   <arena width="6" height="2"/>
                   <robots>
                     <robot name="c1" type="ArRobot" control="robosim.runner.CountsItsRuns" x="1" y="1"/>
@@ -51,7 +52,8 @@ class WarmRunsTest {
             freshMaze = run(fresh, maze, "fresh-maze");
         }
         String moved = new String(freshCounter, java.nio.charset.StandardCharsets.UTF_8);
-        assertTrue(moved.lines().anyMatch(l -> l.startsWith("19,c1,1.1,")), "a fresh JVM's run moves 100 mm: " + moved);
+        assertTrue(moved.lines().anyMatch(l -> l.startsWith("19,c1,1.1,1.1,")),
+                "a fresh JVM's run moves 100 mm, its loop functions 100 mm up: " + moved);
         for (int k = 0; k < 2; k++) {
             assertArrayEquals(freshCounter, warm.get(2 * k), "warm run " + (2 * k + 1) + " (the counter's)");
             assertArrayEquals(freshMaze, warm.get(2 * k + 1), "warm run " + (2 * k + 2) + " (the maze's)");
