@@ -1,0 +1,109 @@
+#!/usr/bin/env bash
+# ARGoS's own example experiments side by side with RoboSim's ports of them (examples/argos/), in one sitting:
+#   scripts/bench-argos-examples.sh [SEEDS] --peers PREFIX [--write-docs | --out DIR] [--quick] [--help]
+# SEEDS defaults to 10 (--quick: 2). For each seed 1..SEEDS, in turn, RoboSim then ARGoS (PREFIX built by
+# ../shared/peers/build-peers.sh with ARGoS's examples; ARGoS's runs by ../shared/peers/run-argos-example.sh or, for
+# the scaled world, as it runs one), each 5000 steps of 100 ms, visualization off:
+#   foraging       examples/argos/foraging.xml (RoboSim, one JVM) and foraging.argos: the items collected (the
+#                  loop functions' foraging.txt, 4th column, last line) and the steps per second
+#   diffusion_10   examples/argos/diffusion_10.xml and diffusion_10.argos: the steps per second
+#   diffusion_100  bench/diffusion_100.xml and bench/diffusion_100.argos (ten times the robots and obstacles, an
+#                  arena sqrt(10) times as wide): the steps per second
+# RoboSim's steps per second are its summary's (the run, from step 0 to the end) and its whole process's (JVM start
+# to exit, as ARGoS's are: 5000 over its wall time). Then a sweep of foraging over 40 seeds: scripts/sweep.sh (warm
+# JVMs, as many workers as cores) against ARGoS's 40 runs with xargs -P (as many as cores), their wall times.
+# Prints every figure, then the means with 95% intervals, the medians and the ratios, and writes them to
+# argos-examples.txt (docs/perf/ with --write-docs, which docs/PERFORMANCE.md quotes).
+set -euo pipefail
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
+robosim_peer_bench_args 10 "$@"
+[ "$BENCH_QUICK" = 1 ] && BENCH_REPS=2
+seeds=$BENCH_REPS peers=$BENCH_PEERS
+[ -n "$peers" ] || robosim_fail "needs --peers PREFIX, where ../shared/peers/build-peers.sh built ARGoS and its examples"
+[ -f "$peers/build/argos3-examples/loop_functions/foraging_loop_functions/libforaging_loop_functions.so" ] \
+  || robosim_fail "--peers $peers: ARGoS's examples are not built there (build-peers.sh with argos3-examples: PEERS.md)"
+runner=$ROBOSIM_HOME/../shared/peers/run-argos-example.sh
+[ -x "$runner" ] || robosim_fail "no $runner (the peers' scripts)"
+out="$(robosim_out_dir)/argos-examples.txt"
+cd "$ROBOSIM_HOME"
+robosim_build_if_stale
+steps=5000
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+field() { sed -n "s/.* $1=\([0-9.]*\).*/\1/p" | tail -n 1; }
+median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2) : "NaN")}'; }
+# mean and 95% interval (Student's t) of the numbers given
+interval() { printf '%s\n' "$@" | awk '{s+=$1; q+=$1*$1; n++} END {m=s/n; sd=(n>1)?sqrt((q-n*m*m)/(n-1)):0;
+  split("12.706 4.303 3.182 2.776 2.571 2.447 2.365 2.306 2.262 2.228 2.201 2.179 2.160 2.145 2.131 2.120 2.110 2.101 2.093", t, " ");
+  tt=(n-1<=19)?t[n-1]:1.96; h=(n>1)?tt*sd/sqrt(n):0; printf "%.1f (%.1f to %.1f)", m, m-h, m+h}'; }
+elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }'; }
+{
+  echo "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u +%Y-%m-%dT%H:%MZ), $(nproc) cores"
+  echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE); ARGoS: $peers/argos3/bin/argos3"
+  echo "$seeds seeds, $steps steps of 100 ms each run"
+} | tee "$out"
+declare -A one whole argos
+declare -a items_rs items_ar
+# robosim NAME WORLD SEED: a run in one JVM in a folder of its own (the loop functions write there)
+robosim() {
+  local dir="$tmp/rs-$1-$3" t0=$EPOCHREALTIME
+  mkdir -p "$dir"
+  (cd "$dir" && "$ROBOSIM_HOME/scripts/headless.sh" --one-jvm --env "$ROBOSIM_HOME/$2" --steps "$steps" --seed "$3" \
+    >run.txt 2>&1) || { tail -5 "$dir/run.txt" >&2; robosim_fail "RoboSim's $1 (seed $3) failed"; }
+  whole[$1]+="$(awk -v s="$steps" -v w="$(elapsed "$t0")" 'BEGIN { printf "%.1f", s / w }') "
+  one[$1]+="$(field steps_per_s <"$dir/run.txt") "
+}
+# argos NAME SEED [ARGOS-FILE]: ARGoS's example NAME (or the file given, run as run-argos-example.sh runs one)
+argos() {
+  local dir="$tmp/ar-$1-$2"
+  if [ $# -lt 3 ]; then
+    "$runner" "$peers" "$1" "$steps" "$2" "$dir" >"$tmp/ar.txt" 2>&1 || { cat "$tmp/ar.txt" >&2; robosim_fail "ARGoS's $1 failed"; }
+  else
+    mkdir -p "$dir"; ln -sfn "$peers/build/argos3-examples" "$dir/build"
+    sed -e "s/length=\"[0-9]*\"/length=\"$((steps / 10))\"/" -e "s/random_seed=\"[0-9]*\"/random_seed=\"$2\"/" "$3" >"$dir/$1.argos"
+    (cd "$dir" && LD_LIBRARY_PATH="$peers/argos3/lib/argos3" /usr/bin/time -f "wall_s=%e peak_kib=%M" -o time.txt \
+      "$peers/argos3/bin/argos3" -z -c "$1.argos" >argos.log 2>&1) || { tail -3 "$dir/argos.log" >&2; robosim_fail "argos3 failed on $1"; }
+    cat "$dir/time.txt" >"$tmp/ar.txt"
+  fi
+  argos[$1]+="$(awk -v s="$steps" -v w="$(field wall_s <"$tmp/ar.txt")" 'BEGIN { printf "%.1f", s / w }') "
+}
+for seed in $(seq "$seeds"); do
+  robosim foraging examples/argos/foraging.xml "$seed"
+  items_rs+=("$(tail -n 1 "$tmp/rs-foraging-$seed/foraging.txt" | cut -f4)")
+  argos foraging "$seed"
+  items_ar+=("$(tail -n 1 "$tmp/ar-foraging-$seed/foraging.txt" | cut -f4)")
+  robosim diffusion_10 examples/argos/diffusion_10.xml "$seed"
+  argos diffusion_10 "$seed"
+  robosim diffusion_100 bench/diffusion_100.xml "$seed"
+  argos diffusion_100 "$seed" bench/diffusion_100.argos
+  echo "seed $seed: foraging items RoboSim ${items_rs[-1]} ARGoS ${items_ar[-1]};" \
+    "steps/s (RoboSim run, whole process; ARGoS whole process):" \
+    "foraging $(echo ${one[foraging]} | awk '{print $NF}'), $(echo ${whole[foraging]} | awk '{print $NF}'); $(echo ${argos[foraging]} | awk '{print $NF}')" \
+    "diffusion_10 $(echo ${one[diffusion_10]} | awk '{print $NF}'), $(echo ${whole[diffusion_10]} | awk '{print $NF}'); $(echo ${argos[diffusion_10]} | awk '{print $NF}')" \
+    "diffusion_100 $(echo ${one[diffusion_100]} | awk '{print $NF}'), $(echo ${whole[diffusion_100]} | awk '{print $NF}'); $(echo ${argos[diffusion_100]} | awk '{print $NF}')" \
+    | tee -a "$out"
+done
+echo "foraging items collected in $steps steps, mean (95% interval) over $seeds seeds: RoboSim $(interval "${items_rs[@]}")," \
+  "ARGoS $(interval "${items_ar[@]}")" | tee -a "$out"
+for w in foraging diffusion_10 diffusion_100; do
+  # shellcheck disable=SC2086
+  mo=$(median ${one[$w]}); mw=$(median ${whole[$w]}); ma=$(median ${argos[$w]})
+  awk -v w="$w" -v o="$mo" -v p="$mw" -v a="$ma" 'BEGIN { printf "median %s: RoboSim %s steps/s (whole process %s), ARGoS %s: RoboSim / ARGoS = %.2f (whole process %.2f)\n", w, o, p, a, o/a, p/a }' \
+    | tee -a "$out"
+done
+runs=$((seeds >= 10 ? 40 : 4 * seeds))
+cat >"$tmp/foraging.sweep.xml" <<XML
+<sweep world="$ROBOSIM_HOME/examples/argos/foraging.xml" steps="$steps">
+  <seeds from="1" to="$runs"/>
+  <metrics><metric report="collected_food"/></metrics>
+</sweep>
+XML
+t0=$EPOCHREALTIME
+scripts/sweep.sh "$tmp/foraging.sweep.xml" --out "$tmp/sweep" >"$tmp/sweep.txt" 2>&1 || { tail -5 "$tmp/sweep.txt" >&2; robosim_fail "the sweep failed"; }
+sweep_s=$(elapsed "$t0")
+t0=$EPOCHREALTIME
+seq "$runs" | xargs -P "$(nproc)" -I{} "$runner" "$peers" foraging "$steps" {} "$tmp/xargs-{}" >"$tmp/xargs.txt" 2>&1 \
+  || { tail -5 "$tmp/xargs.txt" >&2; robosim_fail "ARGoS's runs failed"; }
+xargs_s=$(elapsed "$t0")
+awk -v n="$runs" -v r="$sweep_s" -v a="$xargs_s" -v p="$(nproc)" 'BEGIN { printf "sweep of foraging over %d seeds: scripts/sweep.sh %.1f s, ARGoS with xargs -P %d %.1f s: ARGoS / RoboSim = %.2f\n", n, r, p, a, a/r }' \
+  | tee -a "$out"
