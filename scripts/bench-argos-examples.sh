@@ -30,7 +30,7 @@ robosim_build_if_stale
 steps=5000
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
-field() { sed -n "s/.* $1=\([0-9.]*\).*/\1/p" | tail -n 1; }
+field() { sed -n "s/\(.* \)\{0,1\}$1=\([0-9.]*\).*/\2/p" | tail -n 1; }
 median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2) : "NaN")}'; }
 # mean and 95% interval (Student's t) of the numbers given
 interval() { printf '%s\n' "$@" | awk '{s+=$1; q+=$1*$1; n++} END {m=s/n; sd=(n>1)?sqrt((q-n*m*m)/(n-1)):0;

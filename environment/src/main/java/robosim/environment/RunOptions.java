@@ -74,6 +74,14 @@ public final class RunOptions {
             + "simulation of the same Environment into FILE-2, FILE-3...): see scripts/record-tool.sh.")
     private Path record;
 
+    @Option(names = "--record-without-readings", description = "Record without the robots' sensor readings (what "
+            + "a sweep's metrics never read): a far smaller file where robots sense much.")
+    private boolean recordWithoutReadings;
+
+    @Option(names = "--output-dir", paramLabel = "DIR", description = "Where the world's loop functions write their "
+            + "own files (made when they start; default: the working directory).")
+    private Path outputDir;
+
     /** The world of {@code file} with these options' parameters and seed. */
     public WorldSpec world(Path file) throws EnvironmentFileException {
         WorldSpec world = new EnvironmentLoader().load(file, params.values());
@@ -123,12 +131,15 @@ public final class RunOptions {
             return "--record " + record + ": " + (Files.exists(record) ? "already exists (not overwritten)"
                     : "its directory does not exist");
         }
+        if (outputDir != null && Files.exists(outputDir) && !Files.isDirectory(outputDir)) {
+            return "--output-dir " + outputDir + ": not a directory";
+        }
         return null;
     }
 
     /** Sets these options on {@code settings}, for a run of {@code steps} (0: until stopped). */
     public Settings.Builder applyTo(Settings.Builder settings, long steps) {
-        return settings.record(record).stepTimeoutMs(stepTimeoutMs).design(design)
+        return settings.record(record).recordReadings(!recordWithoutReadings).outputDir(outputDir).stepTimeoutMs(stepTimeoutMs).design(design)
                 .inProcessGeometry(inProcessGeometry()).onRobotLoss(onRobotLoss).maxSteps(steps).speed(speed(steps))
                 .stepMessages(!noStepMessages);
     }

@@ -26,9 +26,21 @@ public final class RecordingWriter implements Closeable {
     private final CRC32 crc = new CRC32();
     private long steps;
     private List<String> names = List.of();
+    /** Whether each robot's view holds its sensor readings (a sweep's recording, which only metrics read, need not). */
+    private final boolean readings;
 
     /** Creates {@code file} (it must not exist) and writes the file header. */
     public RecordingWriter(Path file) throws IOException {
+        this(file, true);
+    }
+
+    /**
+     * Creates {@code file} (it must not exist) and writes the file header; {@code readings} false: the robots' views
+     * are written without their sensor readings (as of robots that read none), a tenth of the size where robots
+     * sense much.
+     */
+    public RecordingWriter(Path file, boolean readings) throws IOException {
+        this.readings = readings;
         this.out = new BufferedOutputStream(Files.newOutputStream(file, StandardOpenOption.CREATE_NEW,
                 StandardOpenOption.WRITE), 256 * 1024);
         out.write(RecordingFormat.MAGIC);
@@ -62,7 +74,7 @@ public final class RecordingWriter implements Closeable {
             o.writeInt(n);
             for (int i = 0; i < responses.length; i++) {
                 if (responses[i] != null) {
-                    RobotView.writeBody(o, i, names.get(i), requests[i], responses[i]);
+                    RobotView.writeBody(o, i, names.get(i), requests[i], responses[i], readings);
                 }
             }
         });

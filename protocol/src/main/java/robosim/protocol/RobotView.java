@@ -246,11 +246,11 @@ public final class RobotView implements java.io.Externalizable {
      * Writes what {@code of(step, robot, name, request, response).writeBody(out)} writes, allocating nothing
      * (the recorder, for every robot of every step).
      */
-    static void writeBody(ObjectOutput out, int robot, String name, StepRequest request, StepResponse response)
-            throws IOException {
+    static void writeBody(ObjectOutput out, int robot, String name, StepRequest request, StepResponse response,
+            boolean readings) throws IOException {
         write(out, robot, request == null ? 0 : request.moveMm(), request == null ? 0 : request.turnDeg(),
                 request == null ? 0 : (byte) ((request.wantsSonar() ? SONAR : 0) | (request.wantsTag() ? TAG : 0)),
-                response.contact(), response.tagged(), response.readings(),
+                response.contact(), response.tagged(), readings ? response.readings() : List.of(),
                 request == null ? List.of() : request.messages(), name, response.inbox(), response.notices(),
                 request == null ? List.of() : request.reports());
     }

@@ -90,7 +90,7 @@ class RobotViewTest {
             for (StepResponse response : List.of(r, quiet)) {
                 ByteArrayOutputStream direct = new ByteArrayOutputStream();
                 try (ObjectOutputStream o = new ObjectOutputStream(direct)) {
-                    RobotView.writeBody(o, 3, "a", request, response);
+                    RobotView.writeBody(o, 3, "a", request, response, true);
                 }
                 ByteArrayOutputStream viaView = new ByteArrayOutputStream();
                 try (ObjectOutputStream o = new ObjectOutputStream(viaView)) {
@@ -99,5 +99,22 @@ class RobotViewTest {
                 org.junit.jupiter.api.Assertions.assertArrayEquals(viaView.toByteArray(), direct.toByteArray());
             }
         }
+    }
+
+    @Test
+    void aBodyWithoutReadingsReadsAsTheViewWithNone() throws Exception {
+        StepResponse r = new StepResponse(7, 40, -5, "wall", 1, 2, 3, new double[0], List.of(), List.of(),
+                List.of(new SensorReading("heat", new double[] {21.5})), "");
+        ByteArrayOutputStream lean = new ByteArrayOutputStream();
+        try (ObjectOutputStream o = new ObjectOutputStream(lean)) {
+            RobotView.writeBody(o, 3, "a", null, r, false);
+        }
+        StepResponse without = new StepResponse(7, 40, -5, "wall", 1, 2, 3, new double[0], List.of(), List.of(),
+                List.of(), "");
+        ByteArrayOutputStream none = new ByteArrayOutputStream();
+        try (ObjectOutputStream o = new ObjectOutputStream(none)) {
+            RobotView.writeBody(o, 3, "a", null, without, true);
+        }
+        org.junit.jupiter.api.Assertions.assertArrayEquals(none.toByteArray(), lean.toByteArray());
     }
 }

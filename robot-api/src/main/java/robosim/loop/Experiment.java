@@ -136,8 +136,9 @@ public interface Experiment {
     void end(String reason);
 
     /**
-     * Where this run's own output files go: beside the run's recording, else the working directory. A file the
-     * code writes there is its own (ARGoS's foraging writes {@code foraging.txt}).
+     * Where this run's own output files go: the run's {@code --output-dir} (a sweep gives each run its own,
+     * {@code DIR/outputs/run-N/}), else the working directory. A file the code writes there is its own (ARGoS's
+     * foraging writes {@code foraging.txt}).
      */
     Path outputDirectory();
 }

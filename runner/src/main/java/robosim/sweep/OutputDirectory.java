@@ -47,6 +47,11 @@ final class OutputDirectory {
         return dir.resolve("recordings").resolve(String.format("run-%06d.rec", index));
     }
 
+    /** Where run {@code index}'s loop functions write their own files (made if the world has them). */
+    Path outputs(int index) {
+        return dir.resolve("outputs").resolve(String.format("run-%06d", index));
+    }
+
     Path slurm() {
         return dir.resolve("slurm");
     }

@@ -60,7 +60,11 @@ final class SweepRun {
         Path log = out.log(index);
         Files.deleteIfExists(recording); // (a run stopped before: the runner records only into a new file)
         List<String> args = new ArrayList<>(List.of("--env", sweep.world().toString(), "--steps",
-                Long.toString(sweep.steps()), "--seed", Long.toString(run.seed()), "--record", recording.toString()));
+                Long.toString(sweep.steps()), "--seed", Long.toString(run.seed()), "--record", recording.toString(),
+                "--output-dir", out.outputs(index).toString()));
+        if (sweep.metrics().stream().noneMatch(m -> m.kind() == MetricChoice.Kind.CLASS)) {
+            args.add("--record-without-readings"); // (only a metric class of the user's might read them)
+        }
         run.parameters().forEach((name, value) -> args.addAll(List.of("--param", name + "=" + value)));
         args.addAll(sweep.layout().options());
         if (sweep.runTimeoutS() > 0) {

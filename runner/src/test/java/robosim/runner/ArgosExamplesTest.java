@@ -23,7 +23,8 @@ class ArgosExamplesTest {
     private RecordingReader run(String world, int steps) throws Exception {
         Path record = dir.resolve(world + ".rec");
         HeadlessRun r = HeadlessRun.of("--env", Path.of("..", "examples", "argos", world).toString(), "--steps",
-                Integer.toString(steps), "--one-jvm", "--record", record.toString(), "--timeout-s", "120");
+                Integer.toString(steps), "--one-jvm", "--record", record.toString(), "--output-dir", dir.toString(),
+                "--timeout-s", "120");
         assertEquals(0, r.code(), r.all());
         assertTrue(r.summary().contains(" control_failed=0 "), r.all());
         return new RecordingReader(record);

@@ -121,7 +121,8 @@ class SameRunEveryLayoutTest {
         Path env = world.startsWith("argos/") ? Path.of("..", "examples", world) : InJvmSimulation.env(world);
         List<String> args = new ArrayList<>(List.of("--env", env.toString(), "--steps",
                 Integer.toString(STEPS), "--pose-log", dir.resolve(layout + ".csv").toString(), "--record",
-                dir.resolve(layout + ".rec").toString(), "--timeout-s", "120"));
+                dir.resolve(layout + ".rec").toString(), "--output-dir", dir.resolve(layout).toString(), "--timeout-s",
+                "120"));
         args.addAll(List.of(more));
         return args;
     }

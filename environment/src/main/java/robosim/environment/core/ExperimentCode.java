@@ -74,6 +74,12 @@ final class ExperimentCode implements Experiment {
         }
         started = true;
         outputDirectory = directory;
+        try {
+            java.nio.file.Files.createDirectories(directory.toAbsolutePath());
+        } catch (java.io.IOException | RuntimeException e) {
+            throw new ExperimentFailure("loop functions " + spec.className() + ": cannot make their output directory "
+                    + directory + ": " + e, e);
+        }
         if (kept != null) {
             code = kept;
             call("reset", () -> code.reset(this));

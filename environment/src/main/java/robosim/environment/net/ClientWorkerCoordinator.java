@@ -81,7 +81,7 @@ public final class ClientWorkerCoordinator implements Closeable {
         // each robot has at most a request and a departure outstanding; the rest is rare
         this.loop = new SimulationLoop(2 * (robotNames.size() + spec.joinable()) + 1024, settings, this::loopEnded);
         this.viewers = new RunViewers(loop::post, spec, this::status);
-        this.recorder = settings.record() == null ? null : new RunRecorder(settings.record());
+        this.recorder = settings.record() == null ? null : new RunRecorder(settings.record(), settings.recordReadings());
         List<ReleaseListener> outputs = new ArrayList<>(List.of(viewers));
         if (recorder != null) {
             outputs.add(recorder);

@@ -158,8 +158,7 @@ public final class Run {
         core = settings.liveMetrics() ? new SimulationCore(spec, properties, AreaCoveredMetric.DEFAULT_CELL_M)
                 : new SimulationCore(spec, properties);
         try {
-            core.startExperiment(settings.record() == null || settings.record().toAbsolutePath().getParent() == null
-                    ? java.nio.file.Path.of("") : settings.record().toAbsolutePath().getParent(), null);
+            core.startExperiment(settings.outputDir() == null ? java.nio.file.Path.of("") : settings.outputDir(), null);
         } catch (ExperimentFailure e) {
             experimentFailed(e);
             return false;

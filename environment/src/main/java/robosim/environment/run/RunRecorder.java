@@ -37,10 +37,15 @@ public final class RunRecorder implements ReleaseListener {
     private volatile Thread thread;
     private volatile boolean failed;
     private boolean toldFull;
+    private final boolean readings;
 
-    /** Records into {@code file}, which must not exist, once the run begins. */
-    public RunRecorder(Path file) {
+    /**
+     * Records into {@code file}, which must not exist, once the run begins; {@code readings} false: without the
+     * robots' sensor readings ({@link RecordingWriter}).
+     */
+    public RunRecorder(Path file, boolean readings) {
         this.file = file;
+        this.readings = readings;
     }
 
     /** Loop thread: creates the file (it must not exist) and starts the {@code recorder} thread. */
@@ -48,7 +53,7 @@ public final class RunRecorder implements ReleaseListener {
     public void begun(WorldSnapshot start) {
         RecordingWriter w;
         try {
-            w = new RecordingWriter(file);
+            w = new RecordingWriter(file, readings);
         } catch (IOException | RuntimeException e) {
             cannot(e);
             return;

@@ -12,12 +12,14 @@ import robosim.protocol.SimulationKeys;
  * ({@link Timeouts}) and the run's shape ({@link Shape}: design, geometry, steps, pace). Build one with
  * {@link #builder()}; every value has a default a user would expect: loopback, the paper's ports, the
  * paper's design ({@code THREADS}), a Geometry process, as fast as possible, until stopped, a lost robot
- * removed; the file the run is recorded into ({@code record}, null: none); and what starts the file's robots in
+ * removed; the file the run is recorded into ({@code record}, null: none) and whether with the robots' sensor readings
+ * ({@code recordReadings}); the directory the world's loop functions
+ * write their own files into ({@code outputDir}, made when they start; null: the working directory); and what starts the file's robots in
  * the Environment's own JVM ({@code robotsInThisJvm}, {@code --one-jvm}; null: every robot connects). Whether the
  * coordinator design allows these (the loss policy, robots in this JVM) is checked once, as one is built.
  */
 public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.file.Path record,
-        InMemoryLink.Starter robotsInThisJvm) {
+        boolean recordReadings, java.nio.file.Path outputDir, InMemoryLink.Starter robotsInThisJvm) {
     /** Default step and Geometry timeouts, ms (the server's own defaults: {@link ServerContext}). */
     public static final long DEFAULT_STEP_TIMEOUT_MS = 60_000;
     public static final long DEFAULT_GEOMETRY_TIMEOUT_MS = 10_000;
@@ -76,6 +78,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         b.onRobotLoss = shape.onRobotLoss();
         b.liveMetrics = shape.liveMetrics();
         b.record = record;
+        b.recordReadings = recordReadings;
+        b.outputDir = outputDir;
         b.robotsInThisJvm = robotsInThisJvm;
         return b;
     }
@@ -177,6 +181,8 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
         private boolean stepMessages = true;
         private int resetEvery = ObjectConnection.DEFAULT_RESET_EVERY;
         private java.nio.file.Path record;
+        private boolean recordReadings = true;
+        private java.nio.file.Path outputDir;
         private RobotLoss onRobotLoss = RobotLoss.REMOVE;
         private boolean liveMetrics;
         private InMemoryLink.Starter robotsInThisJvm;
@@ -276,6 +282,18 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
             return this;
         }
 
+        /** Whether the recording holds the robots' sensor readings ({@code --record-without-readings}: not). */
+        public Builder recordReadings(boolean readings) {
+            this.recordReadings = readings;
+            return this;
+        }
+
+        /** The world's loop functions write their own files here ({@code --output-dir}; null: the working directory). */
+        public Builder outputDir(java.nio.file.Path dir) {
+            this.outputDir = dir;
+            return this;
+        }
+
         /**
          * Runs every robot the file names in the Environment's JVM, started by {@code starter} with its type and
          * control class, through an in-memory link (no socket, no serialization); robots that join later still
@@ -299,7 +317,7 @@ public record Settings(Ports ports, Timeouts timeouts, Shape shape, java.nio.fil
                     new Timeouts(handshakeTimeoutMs, stepTimeoutMs, geometryTimeoutMs, writeTimeoutMs),
                     new Shape(design, inProcessGeometry, onGeometryLoss, maxSteps, speed, stepMessages, resetEvery,
                             onRobotLoss, liveMetrics),
-                    record, robotsInThisJvm);
+                    record, recordReadings, outputDir, robotsInThisJvm);
         }
     }
 }
