@@ -13,7 +13,8 @@ import robosim.protocol.RobotView;
 /**
  * ARGoS's example experiments as examples/argos/ ports them do what they are for, each run in this JVM and read back
  * from its recording: the synchronizing foot-bots end flashing together, the gripper drags the cylinder back, and the
- * foragers bring food to the nest (their loop functions' count, in the recording and their own file).
+ * foragers bring food to the nest (their loop functions' count, in the recording and their own file), and the flock
+ * aligns (its order parameter, the length of the mean heading, over 0.9) and heads for the light together.
  * (The diffusion and e-puck ports: examples/argos/README.md says what is missing.)
  */
 class ArgosExamplesTest {
@@ -89,5 +90,52 @@ class ArgosExamplesTest {
             }
             assertTrue(fewest < 15, "an item carried is off the floor");
         }
+    }
+
+    @Test
+    void theFlockAlignsAndHeadsForTheLightTogether() throws Exception {
+        try (RecordingReader reader = run("flocking.xml", 1500)) {
+            PoseUpdate first = reader.step(0).update();
+            PoseUpdate last = reader.step(1499).update();
+            assertTrue(order(first) < 0.9, "headings drawn at random: " + order(first));
+            int aligned = -1;
+            for (int k = 0; k < reader.steps() && aligned < 0; k++) {
+                aligned = order(reader.step(k).update()) > 0.9 ? k : -1;
+            }
+            assertTrue(aligned > 0 && aligned < 1000, "the order parameter passes 0.9 (at step " + aligned + ")");
+            for (int k = 1000; k < reader.steps(); k++) {
+                assertTrue(order(reader.step(k).update()) > 0.9, "and stays over it: step " + k);
+            }
+            double[] light = {23_900, 17_700};
+            double[] from = centre(first);
+            double[] to = centre(last);
+            double before = Math.hypot(light[0] - from[0], light[1] - from[1]);
+            double after = Math.hypot(light[0] - to[0], light[1] - to[1]);
+            assertTrue(before - after > 1500, "the flock went 1.5 m or more toward the light: " + before + " to " + after);
+            for (int r = 0; r < last.count(); r++) {
+                assertTrue(Math.hypot(last.xMm(r) - to[0], last.yMm(r) - to[1]) < 1500, "robot " + r + " kept up");
+            }
+        }
+    }
+
+    /** The length of the mean of the robots' unit heading vectors: 1 when all head the same way. */
+    private static double order(PoseUpdate u) {
+        double x = 0;
+        double y = 0;
+        for (int r = 0; r < u.count(); r++) {
+            x += Math.cos(Math.toRadians(u.headingDeg(r)));
+            y += Math.sin(Math.toRadians(u.headingDeg(r)));
+        }
+        return Math.hypot(x, y) / u.count();
+    }
+
+    private static double[] centre(PoseUpdate u) {
+        double x = 0;
+        double y = 0;
+        for (int r = 0; r < u.count(); r++) {
+            x += u.xMm(r);
+            y += u.yMm(r);
+        }
+        return new double[] {x / u.count(), y / u.count()};
     }
 }
