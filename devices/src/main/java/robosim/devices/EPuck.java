@@ -26,4 +26,10 @@ public final class EPuck extends RobotType {
                         DeviceSpec.sensor("ground", "model", "e-puck"), DeviceSpec.sensor("rab", "model", "e-puck"),
                         DeviceSpec.actuator("rab", "model", "e-puck"), DeviceSpec.actuator("leds")));
     }
+
+    /** Its wheels drive it along what blocks it, as ARGoS's dynamics2d does. */
+    @Override
+    public boolean slides() {
+        return true;
+    }
 }

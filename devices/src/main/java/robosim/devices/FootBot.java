@@ -36,4 +36,10 @@ public final class FootBot extends RobotType {
         all.add(new LedSpec(0, 0, 174.249733));
         return all;
     }
+
+    /** Its wheels drive it along what blocks it, as ARGoS's dynamics2d does. */
+    @Override
+    public boolean slides() {
+        return true;
+    }
 }

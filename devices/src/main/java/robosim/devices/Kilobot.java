@@ -19,4 +19,10 @@ public final class Kilobot extends RobotType {
                 List.of(DeviceSpec.sensor("light", "model", "kilobot"), DeviceSpec.sensor("rab", "model", "kilobot"),
                         DeviceSpec.actuator("rab", "model", "kilobot"), DeviceSpec.actuator("leds")));
     }
+
+    /** Its wheels drive it along what blocks it, as ARGoS's dynamics2d does. */
+    @Override
+    public boolean slides() {
+        return true;
+    }
 }

@@ -67,6 +67,14 @@ public abstract class RobotType {
         return devices;
     }
 
+    /**
+     * How it meets what blocks its move: false (the report's robots) it stops where it touches; true (the swarm
+     * robots, as ARGoS's dynamics2d moves them) it slides along it with what is left of the move.
+     */
+    public boolean slides() {
+        return false;
+    }
+
     /** What it is, as a handshake says it. */
     public final RobotProperties properties() {
         return properties;

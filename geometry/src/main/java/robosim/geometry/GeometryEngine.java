@@ -186,6 +186,13 @@ public final class GeometryEngine {
                 index = moveVisitor.index;
                 x[i] += Kinematics.dx(heading[i], moved);
                 y[i] += Kinematics.dy(heading[i], moved);
+                double left = Math.abs(move) - Math.abs(moved);
+                if (in.slides(i) && kind != GeometryStepResponse.CONTACT_NONE && pushedCount == 0 && left > 0
+                        && !carries(i) && slide(i, sign * Math.cos(h), sign * Math.sin(h), left, kind, index)) {
+                    x[i] += slideX;
+                    y[i] += slideY;
+                    out.addSlide(i, slideX, slideY);
+                }
                 grid.moved(i, x[i], y[i]);
             }
             out.setMotion(i, moved, turned, kind, index);
@@ -203,6 +210,62 @@ public final class GeometryEngine {
         for (int o = 0; o < things.count(); o++) {
             out.setObject(o, things.x(o), things.y(o), things.heading(o));
         }
+    }
+
+    // ---- sliding --------------------------------------------------------------------------------------------
+
+    /** The last slide worked out ({@link #slide}), world mm. */
+    private double slideX;
+    private double slideY;
+    private final double[] near = new double[2];
+
+    /**
+     * Robot i, at its point of contact with what blocked its move along unit u (a {@code kind} thing, {@code index}),
+     * slides along it: the rest of its move, {@code left}, projected on the blocker's tangent, as far as that is free
+     * ({@link #slideX}, {@link #slideY}). False when it does not slide (it met the blocker head on).
+     */
+    private boolean slide(int i, double ux, double uy, double left, byte kind, int index) {
+        double px = x[i];
+        double py = y[i];
+        Segment wall = moveVisitor.hit;
+        switch (kind) {
+            case GeometryStepResponse.CONTACT_ROBOT -> {
+                near[0] = x[index];
+                near[1] = y[index];
+            }
+            case GeometryStepResponse.CONTACT_OBJECT -> things.nearest(index, px, py, near);
+            default -> {
+                double ex = wall.bx - wall.ax;
+                double ey = wall.by - wall.ay;
+                double len2 = ex * ex + ey * ey;
+                double t = len2 == 0 ? 0 : Math.max(0, Math.min(1, ((px - wall.ax) * ex + (py - wall.ay) * ey) / len2));
+                near[0] = wall.ax + t * ex;
+                near[1] = wall.ay + t * ey;
+            }
+        }
+        double nx = px - near[0];
+        double ny = py - near[1];
+        double n = Math.hypot(nx, ny);
+        if (n == 0) {
+            return false;
+        }
+        nx /= n;
+        ny /= n;
+        double into = ux * nx + uy * ny;
+        double tx = ux - into * nx;
+        double ty = uy - into * ny;
+        double along = Math.hypot(tx, ty);
+        if (into >= 0 || along < 1e-9) {
+            return false;
+        }
+        tx /= along;
+        ty /= along;
+        double reach = left * along;
+        double free = firstContact(i, tx, ty, reach);
+        double s = free > reach ? reach : Math.max(0, free - CONTACT_GAP_MM);
+        slideX = tx * s;
+        slideY = ty * s;
+        return s > 0;
     }
 
     // ---- turning --------------------------------------------------------------------------------------------
@@ -647,6 +710,8 @@ public final class GeometryEngine {
         double best;
         byte kind;
         int index;
+        /** The wall or arena edge {@link #best} is of (when {@link #kind} is one's). */
+        Segment hit;
 
         void begin(double px, double py, double ux, double uy, double r) {
             this.px = px;
@@ -667,6 +732,7 @@ public final class GeometryEngine {
                 best = t;
                 kind = s.ownerKind;
                 index = s.ownerIndex;
+                hit = s;
             }
         }
     }

@@ -273,4 +273,37 @@ class GeometryEngineTest {
         assertEquals(10, Kinematics.turn(350, 20), 1e-12);
         assertEquals(-250, Kinematics.dx(180, 250));
     }
+
+    /**
+     * A robot that slides ({@link GeometryStepRequest#SLIDE}, a wheeled swarm robot) driven at 45 degrees into a wall
+     * stops where it touches, then slides along the wall with what is left of its move times cos 45; one that does not
+     * slide only stops; one driven head on does not slide.
+     */
+    @Test
+    void aSlidingRobotGoesOnAlongTheWallWithTheTangentialPartOfItsMove() {
+        GeometryEngine e = engine(List.of(WALL), 1);
+        // centre (4650, 0), heading 45: it touches the wall's face x = 5000 when x = 4750, after 100 sqrt(2) mm
+        for (boolean slides : new boolean[] {true, false}) {
+            GeometryStepRequest q = new GeometryStepRequest(1);
+            q.set(0, 4650, 0, 45, 0, 400, slides ? GeometryStepRequest.SLIDE : 0);
+            GeometryStepResponse r = e.newResponse();
+            e.step(q, r);
+            double touched = 100 * Math.sqrt(2) - GAP * Math.sqrt(2);
+            assertEquals(touched, r.movedMm(0), 1e-6);
+            assertEquals(GeometryStepResponse.CONTACT_OBSTACLE, r.contactKind(0));
+            if (slides) {
+                assertEquals(1, r.slideCount());
+                assertEquals(0, r.slideXMm(0), 1e-9, "along the wall's face");
+                assertEquals((400 - touched) * Math.cos(Math.toRadians(45)), r.slideYMm(0), 1e-6);
+            } else {
+                assertEquals(0, r.slideCount());
+            }
+        }
+        GeometryStepRequest q = new GeometryStepRequest(1);
+        q.set(0, 4650, 0, 0, 0, 400, GeometryStepRequest.SLIDE);
+        GeometryStepResponse r = e.newResponse();
+        e.step(q, r);
+        assertEquals(100 - GAP, r.movedMm(0), 1e-6);
+        assertEquals(0, r.slideCount(), "head on: nothing to slide along");
+    }
 }

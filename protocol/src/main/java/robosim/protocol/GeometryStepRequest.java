@@ -39,6 +39,11 @@ public final class GeometryStepRequest implements java.io.Externalizable {
     public static final byte GRIP = 4;
     /** Flag: this robot's proximity rays' ranges are wanted. */
     public static final byte RAYS = 8;
+    /**
+     * Flag: this robot slides along what blocks it (a wheeled swarm robot's contact, as ARGoS's dynamics2d has it), where
+     * a robot without it stops where it touches.
+     */
+    public static final byte SLIDE = 16;
 
     public GeometryStepRequest() {
     }
@@ -80,14 +85,14 @@ public final class GeometryStepRequest implements java.io.Externalizable {
         set(robot, x, y, heading, turn, move, wantsSonar ? SONAR : 0);
     }
 
-    /** Robot {@code robot}'s pose, turn, move and flags ({@link #SONAR}, {@link #RAYS}, {@link #GRIP}). */
+    /** Robot {@code robot}'s pose, turn, move and flags ({@link #SONAR}, {@link #RAYS}, {@link #GRIP}, {@link #SLIDE}). */
     public void set(int robot, double x, double y, double heading, double turn, double move, byte robotFlags) {
         xMm[robot] = x;
         yMm[robot] = y;
         headingDeg[robot] = heading;
         turnDeg[robot] = turn;
         moveMm[robot] = move;
-        flags[robot] = (byte) (robotFlags & (SONAR | RAYS | GRIP));
+        flags[robot] = (byte) (robotFlags & (SONAR | RAYS | GRIP | SLIDE));
     }
 
     /** Object {@code object}'s pose at the start of the step, and the robot carrying it (-1 for none). */
@@ -143,6 +148,11 @@ public final class GeometryStepRequest implements java.io.Externalizable {
 
     public boolean wantsRays(int i) {
         return (flags[i] & RAYS) != 0 && (flags[i] & ABSENT) == 0;
+    }
+
+    /** True when robot i slides along what blocks it ({@link #SLIDE}). */
+    public boolean slides(int i) {
+        return (flags[i] & SLIDE) != 0 && (flags[i] & ABSENT) == 0;
     }
 
     public boolean wantsGrip(int i) {

@@ -37,6 +37,11 @@ public final class GeometryStepResponse implements java.io.Externalizable {
     private int grips;
     private int[] gripRobot = new int[0];
     private int[] gripObject = new int[0];
+    /** Robots that slid along what blocked them, and how far, world mm (beyond their move along their heading). */
+    private int slides;
+    private int[] slideRobot = new int[0];
+    private double[] slideXMm = new double[0];
+    private double[] slideYMm = new double[0];
 
     public GeometryStepResponse() {
     }
@@ -64,6 +69,9 @@ public final class GeometryStepResponse implements java.io.Externalizable {
         objectHeadingDeg = new double[objectCount];
         gripRobot = new int[robots];
         gripObject = new int[robots];
+        slideRobot = new int[robots];
+        slideXMm = new double[robots];
+        slideYMm = new double[robots];
     }
 
     /**
@@ -75,6 +83,7 @@ public final class GeometryStepResponse implements java.io.Externalizable {
         this.rangeCount = 0;
         this.rayCount = 0;
         this.grips = 0;
+        this.slides = 0;
     }
 
     public void setMotion(int robot, double moved, double turned, byte kind, int index) {
@@ -103,6 +112,32 @@ public final class GeometryStepResponse implements java.io.Externalizable {
     public void addGrip(int robot, int object) {
         gripRobot[grips] = robot;
         gripObject[grips++] = object;
+    }
+
+    /**
+     * Robot {@code robot} slid ({@code dx}, {@code dy}) world mm along what blocked it, after its move along its
+     * heading; robots in order.
+     */
+    public void addSlide(int robot, double dx, double dy) {
+        slideRobot[slides] = robot;
+        slideXMm[slides] = dx;
+        slideYMm[slides++] = dy;
+    }
+
+    public int slideCount() {
+        return slides;
+    }
+
+    public int slideRobot(int k) {
+        return slideRobot[k];
+    }
+
+    public double slideXMm(int k) {
+        return slideXMm[k];
+    }
+
+    public double slideYMm(int k) {
+        return slideYMm[k];
     }
 
     public int rayCount() {
@@ -200,6 +235,12 @@ public final class GeometryStepResponse implements java.io.Externalizable {
             out.writeInt(gripRobot[k]);
             out.writeInt(gripObject[k]);
         }
+        out.writeInt(slides);
+        for (int k = 0; k < slides; k++) {
+            out.writeInt(slideRobot[k]);
+            out.writeDouble(slideXMm[k]);
+            out.writeDouble(slideYMm[k]);
+        }
     }
 
     @Override
@@ -236,6 +277,15 @@ public final class GeometryStepResponse implements java.io.Externalizable {
         for (int k = 0; k < grips; k++) {
             gripRobot[k] = in.readInt();
             gripObject[k] = in.readInt();
+        }
+        slides = Limits.checkCount("slide count", in.readInt(), robots);
+        slideRobot = new int[slides];
+        slideXMm = new double[slides];
+        slideYMm = new double[slides];
+        for (int k = 0; k < slides; k++) {
+            slideRobot[k] = in.readInt();
+            slideXMm[k] = in.readDouble();
+            slideYMm[k] = in.readDouble();
         }
     }
 }

@@ -209,8 +209,19 @@ class MessageRoundTripTest {
         assertEquals(3, r2.contactIndex(1));
         assertEquals(1, r2.rangeCount());
         assertEquals(1500, r2.rangeMm(0));
-        assertEquals(OVERHEAD + 8 + 4 + 2 * (8 + 8 + 1 + 4) + 4 + 8 + 4 + 4 + 4, repeatedSize(r)); // (no rays,
-        // objects or grips)
+        assertEquals(OVERHEAD + 8 + 4 + 2 * (8 + 8 + 1 + 4) + 4 + 8 + 4 + 4 + 4 + 4, repeatedSize(r)); // (no rays,
+        // objects, grips or slides)
+        r.addSlide(1, 3.5, -2);
+        GeometryStepResponse slid = roundTrip(r);
+        assertEquals(1, slid.slideCount());
+        assertEquals(1, slid.slideRobot(0));
+        assertEquals(3.5, slid.slideXMm(0));
+        assertEquals(-2, slid.slideYMm(0));
+        GeometryStepRequest sliding = new GeometryStepRequest(1);
+        sliding.set(0, 1, 2, 3, 4, 5, GeometryStepRequest.SLIDE);
+        assertTrue(roundTrip(sliding).slides(0));
+        sliding.setAbsent(0);
+        assertFalse(roundTrip(sliding).slides(0), "an absent robot does not slide");
     }
 
     @Test

@@ -10,7 +10,8 @@ import robosim.protocol.ProtocolException;
  * finite distances no longer than asked (Geometry only ever shortens a motion), contacts that name a
  * robot, obstacle, object or the arena that exists, exactly the sonar ranges and proximity rays asked for, each finite
  * and not negative, every object's pose finite and inside the arena (a fixed one's unchanged), and a catch only for a
- * robot that asked to grip, of a gripable object that exists and that no one holds or took this step. An answer from
+ * robot that asked to grip, of a gripable object that exists and that no one holds or took this step; a slide only of
+ * a robot that slides, finite, no longer than what was left of its move. An answer from
  * another process is hostile until proven otherwise.
  */
 final class GeometryAnswerCheck {
@@ -90,6 +91,19 @@ final class GeometryAnswerCheck {
                     || answer.objectHeadingDeg(o) != asked.objectHeadingDeg(o))) {
                 throw new ProtocolException("geometry moved object " + o + ", which is fixed");
             }
+        }
+        int before = -1;
+        for (int k = 0; k < answer.slideCount(); k++) {
+            int robot = answer.slideRobot(k);
+            if (robot <= before || robot >= robots || !asked.slides(robot)) {
+                throw new ProtocolException("geometry slid robot " + robot + ", which does not slide");
+            }
+            double slid = Math.hypot(answer.slideXMm(k), answer.slideYMm(k));
+            if (!(slid <= Math.abs(asked.moveMm(robot)) - Math.abs(answer.movedMm(robot)) + SLACK)) {
+                throw new ProtocolException("geometry slid robot " + robot + " by " + slid + " mm, more than the "
+                        + (Math.abs(asked.moveMm(robot)) - Math.abs(answer.movedMm(robot))) + " mm left of its move");
+            }
+            before = robot;
         }
         boolean[] taken = new boolean[objects];
         int last = -1;

@@ -50,6 +50,8 @@ public final class SimulationCore {
     private double[] maxTurnDeg;
     private int[] sonarCount;
     private int[] rayCount;
+    /** Whether each robot slides along what blocks it (its type's {@code slides}). */
+    private boolean[] slides;
     private GeometryStepRequest geometryRequest;
     private StepResponse[] responses;
     /** The requests of the step gathered and not yet completed. */
@@ -93,6 +95,7 @@ public final class SimulationCore {
         this.maxTurnDeg = new double[robots];
         this.sonarCount = new int[robots];
         this.rayCount = new int[robots];
+        this.slides = new boolean[robots];
         for (int i = 0; i < robots; i++) {
             limits(i, properties.get(i));
         }
@@ -144,6 +147,8 @@ public final class SimulationCore {
         maxTurnDeg[i] = Drive.perStep(p.maxTurnDegPerS(), seconds);
         sonarCount[i] = p.sonars().size();
         rayCount[i] = p.rays().size();
+        robosim.devices.RobotType type = robosim.devices.RobotTypes.known(p.type());
+        slides[i] = type != null && type.slides();
     }
 
     /**
@@ -163,6 +168,7 @@ public final class SimulationCore {
         maxTurnDeg = java.util.Arrays.copyOf(maxTurnDeg, robots);
         sonarCount = java.util.Arrays.copyOf(sonarCount, robots);
         rayCount = java.util.Arrays.copyOf(rayCount, robots);
+        slides = java.util.Arrays.copyOf(slides, robots);
         limits(i, p);
         geometryRequest = new GeometryStepRequest(robots, map.objectCount());
         StepResponse[] more = java.util.Arrays.copyOf(responses, robots);
@@ -293,6 +299,7 @@ public final class SimulationCore {
                 flags |= q.wantsSonar() ? GeometryStepRequest.SONAR : 0;
                 flags |= sensing.wantsRays(i, q.sensors()) ? GeometryStepRequest.RAYS : 0;
                 flags |= gripper(i, q.gripper()) ? GeometryStepRequest.GRIP : 0;
+                flags |= slides[i] ? GeometryStepRequest.SLIDE : 0;
                 router.route(i, map.name(i), q.messages(), map);
                 actuators.set(i, q.actuations(), router, map.name(i));
             }
@@ -340,6 +347,10 @@ public final class SimulationCore {
             double h = Kinematics.turn(map.headingDeg(i), g.turnedDeg(i));
             double moved = g.movedMm(i);
             map.setPose(i, map.xMm(i) + Kinematics.dx(h, moved), map.yMm(i) + Kinematics.dy(h, moved), h);
+        }
+        for (int k = 0; k < g.slideCount(); k++) { // (a wheeled swarm robot's slide along what blocked it)
+            int i = g.slideRobot(k);
+            map.setPose(i, map.xMm(i) + g.slideXMm(k), map.yMm(i) + g.slideYMm(k), map.headingDeg(i));
         }
         for (int o = 0; o < map.objectCount(); o++) {
             map.setObjectPose(o, g.objectXMm(o), g.objectYMm(o), g.objectHeadingDeg(o));
