@@ -14,7 +14,8 @@ import robosim.protocol.RobotView;
  * ARGoS's example experiments as examples/argos/ ports them do what they are for, each run in this JVM and read back
  * from its recording: the synchronizing foot-bots end flashing together, the gripper drags the cylinder back, and the
  * foragers bring food to the nest (their loop functions' count, in the recording and their own file), and the flock
- * aligns (its order parameter, the length of the mean heading, over 0.9) and heads for the light together.
+ * aligns (its order parameter, the length of the mean heading, over 0.9) and heads for the light together, and the
+ * diffusing foot-bots keep apart and keep moving (sliding along what they graze, as ARGoS's do).
  * (The diffusion and e-puck ports: examples/argos/README.md says what is missing.)
  */
 class ArgosExamplesTest {
@@ -137,5 +138,34 @@ class ArgosExamplesTest {
             y += u.yMm(r);
         }
         return new double[] {x / u.count(), y / u.count()};
+    }
+
+    @Test
+    void theDiffusingFootBotsKeepApartAndKeepMoving() throws Exception {
+        try (RecordingReader reader = run("diffusion_10.xml", 5000)) {
+            int robotSteps = 0;
+            int touchingRobots = 0;
+            int touching = 0;
+            double[] travelled = new double[10];
+            PoseUpdate before = reader.step(0).update();
+            for (int k = 1; k < reader.steps(); k++) {
+                PoseUpdate now = reader.step(k).update();
+                for (RobotView v : reader.step(k).views()) {
+                    robotSteps++;
+                    touching += v.contact().isEmpty() ? 0 : 1;
+                    touchingRobots += v.contact().startsWith("fb") ? 1 : 0;
+                    travelled[v.robot()] += Math.hypot(now.xMm(v.robot()) - before.xMm(v.robot()),
+                            now.yMm(v.robot()) - before.yMm(v.robot()));
+                }
+                before = now;
+            }
+            // (a turn on one wheel beside a wall or a robot grazes it: ARGoS's robots do so too, sliding past)
+            assertTrue(touchingRobots < robotSteps / 100, "robots touch each other in under 1% of their steps: "
+                    + touchingRobots + " of " + robotSteps);
+            assertTrue(touching < robotSteps * 3 / 100, "anything at all in under 3%: " + touching);
+            for (int r = 0; r < 10; r++) {
+                assertTrue(travelled[r] > 12_000, "robot " + r + " kept moving (25 m at most): " + travelled[r] + " mm");
+            }
+        }
     }
 }
