@@ -9,6 +9,11 @@
 #   diffusion_10   examples/argos/diffusion_10.xml and diffusion_10.argos: the steps per second
 #   diffusion_100  bench/diffusion_100.xml and bench/diffusion_100.argos (ten times the robots and obstacles, an
 #                  arena sqrt(10) times as wide): the steps per second
+#   flocking       examples/argos/flocking.xml and flocking.argos: the steps per second, and RoboSim's steps until
+#                  the order parameter (the length of the robots' mean heading) passes 0.9, from its pose log
+#                  (ARGoS's example writes nothing to measure it by)
+#   flocking_100   bench/flocking_100.xml and bench/flocking_100.argos (ten times the robots, placed in a square
+#                  sqrt(10) times as wide): the steps per second
 # RoboSim's steps per second are its summary's (the run, from step 0 to the end) and its whole process's (JVM start
 # to exit, as ARGoS's are: 5000 over its wall time). Then a sweep of foraging over 40 seeds: scripts/sweep.sh (warm
 # JVMs, as many workers as cores) against ARGoS's 40 runs with xargs -P (as many as cores), their wall times.
@@ -36,6 +41,9 @@ median() { printf '%s\n' "$@" | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2
 interval() { printf '%s\n' "$@" | awk '{s+=$1; q+=$1*$1; n++} END {m=s/n; sd=(n>1)?sqrt((q-n*m*m)/(n-1)):0;
   split("12.706 4.303 3.182 2.776 2.571 2.447 2.365 2.306 2.262 2.228 2.201 2.179 2.160 2.145 2.131 2.120 2.110 2.101 2.093", t, " ");
   tt=(n-1<=19)?t[n-1]:1.96; h=(n>1)?tt*sd/sqrt(n):0; printf "%.1f (%.1f to %.1f)", m, m-h, m+h}'; }
+# the first step whose robots' mean heading is longer than 0.9, from a pose log (step,robot,x_m,y_m,heading_deg,...)
+order() { awk -F, 'NR > 1 { c[$1] += cos($5 * 3.14159265358979 / 180); s[$1] += sin($5 * 3.14159265358979 / 180); n[$1]++ }
+  END { first = -1; for (k in n) if (sqrt(c[k]^2 + s[k]^2) / n[k] > 0.9 && (first < 0 || k + 0 < first)) first = k + 0; print first }' "$1"; }
 elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }'; }
 {
   echo "commit $(git rev-parse --short HEAD 2>/dev/null || echo unknown), $(date -u +%Y-%m-%dT%H:%MZ), $(nproc) cores"
@@ -43,13 +51,13 @@ elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }'
   echo "$seeds seeds, $steps steps of 100 ms each run"
 } | tee "$out"
 declare -A one whole argos
-declare -a items_rs items_ar
+declare -a items_rs items_ar order_rs
 # robosim NAME WORLD SEED: a run in one JVM in a folder of its own (the loop functions write there)
 robosim() {
   local dir="$tmp/rs-$1-$3" t0=$EPOCHREALTIME
   mkdir -p "$dir"
   (cd "$dir" && "$ROBOSIM_HOME/scripts/headless.sh" --one-jvm --env "$ROBOSIM_HOME/$2" --steps "$steps" --seed "$3" \
-    >run.txt 2>&1) || { tail -5 "$dir/run.txt" >&2; robosim_fail "RoboSim's $1 (seed $3) failed"; }
+    "${@:4}" >run.txt 2>&1) || { tail -5 "$dir/run.txt" >&2; robosim_fail "RoboSim's $1 (seed $3) failed"; }
   whole[$1]+="$(awk -v s="$steps" -v w="$(elapsed "$t0")" 'BEGIN { printf "%.1f", s / w }') "
   one[$1]+="$(field steps_per_s <"$dir/run.txt") "
 }
@@ -76,16 +84,26 @@ for seed in $(seq "$seeds"); do
   argos diffusion_10 "$seed"
   robosim diffusion_100 bench/diffusion_100.xml "$seed"
   argos diffusion_100 "$seed" bench/diffusion_100.argos
+  robosim flocking examples/argos/flocking.xml "$seed" --pose-log poses.csv
+  order_rs+=("$(order "$tmp/rs-flocking-$seed/poses.csv")")
+  argos flocking "$seed"
+  robosim flocking_100 bench/flocking_100.xml "$seed"
+  argos flocking_100 "$seed" bench/flocking_100.argos
   echo "seed $seed: foraging items RoboSim ${items_rs[-1]} ARGoS ${items_ar[-1]};" \
     "steps/s (RoboSim run, whole process; ARGoS whole process):" \
     "foraging $(echo ${one[foraging]} | awk '{print $NF}'), $(echo ${whole[foraging]} | awk '{print $NF}'); $(echo ${argos[foraging]} | awk '{print $NF}')" \
     "diffusion_10 $(echo ${one[diffusion_10]} | awk '{print $NF}'), $(echo ${whole[diffusion_10]} | awk '{print $NF}'); $(echo ${argos[diffusion_10]} | awk '{print $NF}')" \
     "diffusion_100 $(echo ${one[diffusion_100]} | awk '{print $NF}'), $(echo ${whole[diffusion_100]} | awk '{print $NF}'); $(echo ${argos[diffusion_100]} | awk '{print $NF}')" \
+    "flocking $(echo ${one[flocking]} | awk '{print $NF}'), $(echo ${whole[flocking]} | awk '{print $NF}'); $(echo ${argos[flocking]} | awk '{print $NF}')" \
+    "flocking_100 $(echo ${one[flocking_100]} | awk '{print $NF}'), $(echo ${whole[flocking_100]} | awk '{print $NF}'); $(echo ${argos[flocking_100]} | awk '{print $NF}');" \
+    "flocking's order parameter over 0.9 from step ${order_rs[-1]}" \
     | tee -a "$out"
 done
 echo "foraging items collected in $steps steps, mean (95% interval) over $seeds seeds: RoboSim $(interval "${items_rs[@]}")," \
   "ARGoS $(interval "${items_ar[@]}")" | tee -a "$out"
-for w in foraging diffusion_10 diffusion_100; do
+echo "flocking: steps until the order parameter passes 0.9, mean (95% interval) over $seeds seeds: RoboSim" \
+  "$(interval "${order_rs[@]}")" | tee -a "$out"
+for w in foraging diffusion_10 diffusion_100 flocking flocking_100; do
   # shellcheck disable=SC2086
   mo=$(median ${one[$w]}); mw=$(median ${whole[$w]}); ma=$(median ${argos[$w]})
   awk -v w="$w" -v o="$mo" -v p="$mw" -v a="$ma" 'BEGIN { printf "median %s: RoboSim %s steps/s (whole process %s), ARGoS %s: RoboSim / ARGoS = %.2f (whole process %.2f)\n", w, o, p, a, o/a, p/a }' \
