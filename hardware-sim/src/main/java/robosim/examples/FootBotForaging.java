@@ -15,7 +15,9 @@ import robosim.api.RobotControl;
  * when it brings one into the nest, where ARGoS's loop functions write the controller's food data directly. The
  * parameters are the ARGoS file's, by the same names ({@code <param>}); speeds in mm/s ({@code max_speed} 100, ARGoS's
  * 10 cm/s). Readings: proximity and light, 24 each from 7.5 degrees every 15; ground, ARGoS's order (its readings 2
- * and 3 tell the nest's grey).
+ * and 3 tell the nest's grey). Its angles and lengths are {@link PortableMath}'s and its chances a
+ * {@code SplittableRandom} of the robot's seed, so that its Python twin, {@code examples/python/argos_foraging.py},
+ * gives the same pose log.
  */
 public final class FootBotForaging implements RobotControl {
     /** What the robot tells the others of its last exploration (range-and-bearing byte 0). */
@@ -31,6 +33,17 @@ public final class FootBotForaging implements RobotControl {
     private enum State { RESTING, EXPLORING, RETURN_TO_NEST }
 
     private enum Turning { NO_TURN, SOFT_TURN, HARD_TURN }
+
+    /** The direction of each proximity and light reading, ARGoS's: from 7.5 degrees every 15. */
+    private static final double[] COS = new double[24];
+    private static final double[] SIN = new double[24];
+
+    static {
+        for (int k = 0; k < 24; k++) {
+            COS[k] = PortableMath.cos(PortableMath.RADIANS_PER_DEGREE * (ANGLE0_DEG + k * STEP_DEG));
+            SIN[k] = PortableMath.sin(PortableMath.RADIANS_PER_DEGREE * (ANGLE0_DEG + k * STEP_DEG));
+        }
+    }
 
     private Robot robot;
     private SplittableRandom random;
@@ -72,12 +85,12 @@ public final class FootBotForaging implements RobotControl {
             throw new IllegalArgumentException("go_straight_angle_range is MIN:MAX in degrees, got "
                     + String.join(":", range));
         }
-        goStraightMin = Math.toRadians(Double.parseDouble(range[0].trim()));
-        goStraightMax = Math.toRadians(Double.parseDouble(range[1].trim()));
+        goStraightMin = PortableMath.RADIANS_PER_DEGREE * Double.parseDouble(range[0].trim());
+        goStraightMax = PortableMath.RADIANS_PER_DEGREE * Double.parseDouble(range[1].trim());
         delta = r.parameter("delta", 0.1);
-        hardTurn = Math.toRadians(r.parameter("hard_turn_angle_threshold", 90.0));
-        softTurn = Math.toRadians(r.parameter("soft_turn_angle_threshold", 70.0));
-        noTurn = Math.toRadians(r.parameter("no_turn_angle_threshold", 10.0));
+        hardTurn = PortableMath.RADIANS_PER_DEGREE * r.parameter("hard_turn_angle_threshold", 90.0);
+        softTurn = PortableMath.RADIANS_PER_DEGREE * r.parameter("soft_turn_angle_threshold", 70.0);
+        noTurn = PortableMath.RADIANS_PER_DEGREE * r.parameter("no_turn_angle_threshold", 10.0);
         maxSpeed = r.parameter("max_speed", 100.0);
         restToExplore = r.parameter("initial_rest_to_explore_prob", 0.1);
         exploreToRest = r.parameter("initial_explore_to_rest_prob", 0.1);
@@ -230,12 +243,11 @@ public final class FootBotForaging implements RobotControl {
         double x = 0;
         double y = 0;
         for (int k = 0; k < near.length; k++) {
-            double a = Math.toRadians(ANGLE0_DEG + k * STEP_DEG);
-            x += near[k] * Math.cos(a);
-            y += near[k] * Math.sin(a);
+            x += near[k] * COS[k];
+            y += near[k] * SIN[k];
         }
-        double angle = Math.atan2(y, x);
-        double length = Math.hypot(x, y);
+        double angle = PortableMath.angle(y, x);
+        double length = PortableMath.length(x, y);
         if (angle >= goStraightMin && angle <= goStraightMax && length < delta) {
             out[0] = 1;
             out[1] = 0;
@@ -252,18 +264,17 @@ public final class FootBotForaging implements RobotControl {
         double x = 0;
         double y = 0;
         for (int k = 0; k < light.length; k++) {
-            double a = Math.toRadians(ANGLE0_DEG + k * STEP_DEG);
-            x += light[k] * Math.cos(a);
-            y += light[k] * Math.sin(a);
+            x += light[k] * COS[k];
+            y += light[k] * SIN[k];
         }
-        double length = Math.hypot(x, y);
+        double length = PortableMath.length(x, y);
         return length > 0 ? new double[] {x / length, y / length} : new double[] {0, 0};
     }
 
     /** ARGoS's SetWheelSpeedsFromVector: no turn, a soft turn or a hard turn toward (x, y), with hysteresis. */
     private void wheels(double x, double y) {
-        double angle = Math.atan2(y, x);
-        double base = Math.min(Math.hypot(x, y), maxSpeed);
+        double angle = PortableMath.angle(y, x);
+        double base = Math.min(PortableMath.length(x, y), maxSpeed);
         double a = Math.abs(angle);
         if (turning == Turning.HARD_TURN && a <= softTurn) {
             turning = Turning.SOFT_TURN;

@@ -67,6 +67,31 @@ class PythonControlIT {
     }
 
     @Test
+    void argosForagersAndFlockInJavaAndInPythonGiveByteIdenticalPoseLogs() throws Exception {
+        // ARGoS's footbot_foraging (its chances a SplittableRandom of the robot's seed; the loop functions' messages)
+        // and footbot_flocking (the camera's blobs; sines and cosines): robosim.portable in both languages
+        for (String world : new String[] {"foraging", "flocking"}) {
+            String steps = world.equals("foraging") ? "600" : "400";
+            Path python = dir.resolve(world + "-python.csv");
+            Path java = dir.resolve(world + "-java.csv");
+            ScriptRun py = headless("--one-jvm", "--env", "examples/argos/" + world + ".xml", "--steps", steps,
+                    "--param", "control=python:../python/argos_" + world + ".py", "--pose-log", python.toString(),
+                    "--output-dir", dir.resolve("python").toString());
+            ScriptRun jv = headless("--one-jvm", "--env", "examples/argos/" + world + ".xml", "--steps", steps,
+                    "--pose-log", java.toString(), "--output-dir", dir.resolve("java").toString());
+            assertEquals(0, py.exit(), py.stdout() + py.stderr());
+            assertEquals(0, jv.exit(), jv.stdout() + jv.stderr());
+            assertTrue(py.stdout().contains(" control_failed=0 "), py.stdout());
+            assertEquals(Files.readString(java), Files.readString(python), "the Python " + world + " moved otherwise");
+        }
+        java.util.List<String> food = Files.readAllLines(dir.resolve("python").resolve("foraging.txt"));
+        assertEquals(food.get(food.size() - 1), Files.readAllLines(dir.resolve("java").resolve("foraging.txt"))
+                .get(food.size() - 1), "the same food brought home, the same energy");
+        assertTrue(Integer.parseInt(food.get(food.size() - 1).split("\t")[3]) > 0, "food was brought home: "
+                + food.get(food.size() - 1));
+    }
+
+    @Test
     void aPythonControllerThatRaisesOrExitsIsAFailedControlCodeAndTheWorldGoesOn() throws Exception {
         Files.writeString(dir.resolve("raises.py"), """
                 def control(robot):
