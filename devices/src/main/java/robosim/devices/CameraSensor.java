@@ -57,7 +57,9 @@ public final class CameraSensor extends RobotSensor {
     public double[] generateSensorResponse(SensorContext c) {
         List<Blob> blobs = new ArrayList<>();
         c.leds(rangeMm, (robot, x, y, z, rgb) -> {
-            double d = Math.hypot(x - c.xMm(), y - c.yMm());
+            double dx = x - c.xMm();
+            double dy = y - c.yMm();
+            double d = Math.sqrt(dx * dx + dy * dy); // (Math.hypot's care of overflow costs a crowd's camera dearly)
             if (d <= rangeMm && c.sight(eyeMm, x, y, z, -1)) {
                 blobs.add(new Blob(rgb, d, angle(c, x, y), blobs.size()));
             }

@@ -9,8 +9,9 @@ import robosim.protocol.RaySpec;
 /**
  * Reads the rays of the robots' proximity sensors in the world as it stands after a step's moves: for each ray, the
  * distance from where it starts to the first wall, obstacle, object or other robot along it, or its range when
- * nothing is that near. Looks at the walls, robots and objects whose boxes meet the ray's (the wall index, the
- * {@link RobotGrid}, each object's bounding box) and tests only those exactly. One per thread.
+ * nothing is that near. Looks once per robot for the walls, robots and objects whose boxes meet the box its rays reach
+ * (the wall index, the {@link RobotGrid}, each object's bounding box), then tests each ray exactly against those
+ * alone. One per thread.
  */
 final class RayPass {
     private final StaticWorld world;
@@ -23,7 +24,6 @@ final class RayPass {
     private final RaySpec[][] rays;
     private final ObjectLayer things;
     private final Envelope area = new Envelope();
-    private final Nearest nearest = new Nearest();
 
     RayPass(StaticWorld world, RobotGrid grid, double[] x, double[] y, double[] heading, double[] radius,
             RaySpec[][] rays, ObjectLayer things) {
@@ -44,6 +44,7 @@ final class RayPass {
             if (!in.wantsRays(i)) {
                 continue;
             }
+            gather(i);
             double h = Math.toRadians(heading[i]);
             double c = Math.cos(h);
             double s = Math.sin(h);
@@ -51,55 +52,79 @@ final class RayPass {
                 double ox = x[i] + ray.xMm() * c - ray.yMm() * s;
                 double oy = y[i] + ray.xMm() * s + ray.yMm() * c;
                 double a = Math.toRadians(heading[i] + ray.angleDeg());
-                out.addRay(range(i, ox, oy, Math.cos(a), Math.sin(a), ray.rangeMm()));
+                out.addRay(range(ox, oy, Math.cos(a), Math.sin(a), ray.rangeMm()));
             }
         }
     }
 
-    /** Robot i's ray from O along unit u, no further than {@code max}. */
-    private double range(int i, double ox, double oy, double ux, double uy, double max) {
-        double ex = ox + ux * max;
-        double ey = oy + uy * max;
-        area.init(Math.min(ox, ex), Math.max(ox, ex), Math.min(oy, ey), Math.max(oy, ey));
-        Nearest v = nearest;
-        v.begin(ox, oy, ux, uy, max);
-        world.query(area, v);
+    /**
+     * What robot i's rays may meet, looked up once for all of them (a foot-bot has 24): the walls, robots and objects
+     * whose boxes meet the box its rays reach, into {@link #walls}, {@link #robots} and {@link #objects}.
+     */
+    private void gather(int i) {
+        double reach = 0;
+        for (RaySpec ray : rays[i]) {
+            reach = Math.max(reach, Math.sqrt(ray.xMm() * ray.xMm() + ray.yMm() * ray.yMm()) + ray.rangeMm());
+        }
+        area.init(x[i] - reach, x[i] + reach, y[i] - reach, y[i] + reach);
+        collected.count = 0;
+        world.query(area, collected);
+        robotCount = 0;
         cells.select(area);
         for (int g = cells.nextCell(); g >= 0; g = cells.nextCell()) {
             for (int j = grid.first(g); j >= 0; j = grid.next(j)) {
                 if (j != i && !SonarPass.outside(area, x[j], y[j], radius[j])) {
-                    v.best = Math.min(v.best, Sweep.toCircle(ox, oy, ux, uy, radius[j], x[j], y[j]));
+                    if (robotCount == robots.length) {
+                        robots = java.util.Arrays.copyOf(robots, 2 * robotCount);
+                    }
+                    robots[robotCount++] = j;
                 }
             }
         }
+        objectCount = 0;
         for (int o = 0; o < things.count(); o++) {
             if (!things.outside(o, area)) {
-                v.best = Math.min(v.best, things.ray(o, ox, oy, ux, uy));
+                if (objectCount == objects.length) {
+                    objects = java.util.Arrays.copyOf(objects, 2 * objectCount);
+                }
+                objects[objectCount++] = o;
             }
         }
-        return v.best;
     }
 
-    /** The nearest wall along the current ray; reused, so a query allocates nothing. */
-    private static final class Nearest implements ItemVisitor {
-        private double ox;
-        private double oy;
-        private double ux;
-        private double uy;
-        double best;
-
-        void begin(double px, double py, double dx, double dy, double max) {
-            ox = px;
-            oy = py;
-            ux = dx;
-            uy = dy;
-            best = max;
+    /** The ray from O along unit u, no further than {@code max}, against what {@link #gather} found. */
+    private double range(double ox, double oy, double ux, double uy, double max) {
+        double best = max;
+        for (int k = 0; k < collected.count; k++) {
+            best = Math.min(best, Sweep.toCapsule(ox, oy, ux, uy, 0, collected.walls[k]));
         }
+        for (int k = 0; k < robotCount; k++) {
+            int j = robots[k];
+            best = Math.min(best, Sweep.toCircle(ox, oy, ux, uy, radius[j], x[j], y[j]));
+        }
+        for (int k = 0; k < objectCount; k++) {
+            best = Math.min(best, things.ray(objects[k], ox, oy, ux, uy));
+        }
+        return best;
+    }
+
+    private int[] robots = new int[16];
+    private int robotCount;
+    private int[] objects = new int[16];
+    private int objectCount;
+    private final Walls collected = new Walls();
+
+    /** The walls a robot's rays may meet; reused, so a robot's look-up allocates nothing once it has grown. */
+    private static final class Walls implements ItemVisitor {
+        Segment[] walls = new Segment[16];
+        int count;
 
         @Override
         public void visitItem(Object item) {
-            Segment s = (Segment) item;
-            best = Math.min(best, Sweep.toCapsule(ox, oy, ux, uy, 0, s));
+            if (count == walls.length) {
+                walls = java.util.Arrays.copyOf(walls, 2 * count);
+            }
+            walls[count++] = (Segment) item;
         }
     }
 }

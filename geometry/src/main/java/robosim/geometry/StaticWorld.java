@@ -17,6 +17,12 @@ public final class StaticWorld {
     private final Arena arena;
     private final List<ObstacleShape> obstacles;
     private final STRtree index = new STRtree();
+    /**
+     * The obstacles' edges alone, and the box around them all (null without obstacles): what a line of sight asks of,
+     * the arena's edges never blocking one (a crowd's cameras ask thousands a step).
+     */
+    private final STRtree obstacleIndex = new STRtree();
+    private final Envelope obstacleBounds;
     private final int segmentCount;
 
     public StaticWorld(Arena arena, List<ObstacleShape> obstacles) {
@@ -41,10 +47,22 @@ public final class StaticWorld {
                         GeometryStepResponse.CONTACT_OBSTACLE, o));
             }
         }
+        Envelope bounds = null;
         for (Segment s : segments) {
-            index.insert(new Envelope(s.ax, s.bx, s.ay, s.by), s);
+            Envelope e = new Envelope(s.ax, s.bx, s.ay, s.by);
+            index.insert(e, s);
+            if (s.ownerKind == GeometryStepResponse.CONTACT_OBSTACLE) {
+                obstacleIndex.insert(e, s);
+                if (bounds == null) {
+                    bounds = new Envelope(e);
+                } else {
+                    bounds.expandToInclude(e);
+                }
+            }
         }
         index.build();
+        obstacleIndex.build();
+        obstacleBounds = bounds;
         segmentCount = segments.size();
     }
 
@@ -63,5 +81,12 @@ public final class StaticWorld {
     /** Visits every segment whose envelope meets the given envelope (a cheap pre-filter). */
     void query(Envelope area, ItemVisitor visitor) {
         index.query(area, visitor);
+    }
+
+    /** Visits every obstacle's segment (not the arena's) whose envelope meets the given envelope. */
+    void queryObstacles(Envelope area, ItemVisitor visitor) {
+        if (obstacleBounds != null && obstacleBounds.intersects(area)) {
+            obstacleIndex.query(area, visitor);
+        }
     }
 }

@@ -80,7 +80,11 @@ public final class WorldQueries {
      */
     public boolean sight(double ax, double ay, double az, double bx, double by, double bz, double[] x, double[] y,
             double[] r, double[] height, int excludeA, int excludeB, int[] among, int count) {
-        // (the robots first: in a crowd they block most often, and they cost least to look at)
+        // (the robots first: in a crowd they block most often, and they cost least to look at; none where the line
+        // runs over the tallest of them all the way, as a camera's over the others' beacons does)
+        if (Math.min(az, bz) >= tallest(height)) {
+            count = 0;
+        }
         double minX = Math.min(ax, bx);
         double maxX = Math.max(ax, bx);
         double minY = Math.min(ay, by);
@@ -123,6 +127,22 @@ public final class WorldQueries {
         return true;
     }
 
+    private double[] heightsSeen;
+    private double tallest;
+
+    /** The greatest of {@code height} (worked out again only when it is another array: robots joined). */
+    private double tallest(double[] height) {
+        if (height != heightsSeen) {
+            double most = 0;
+            for (double h : height) {
+                most = Math.max(most, h);
+            }
+            heightsSeen = height;
+            tallest = most;
+        }
+        return tallest;
+    }
+
     /** True when the line from height az to bz runs lower than {@code top} somewhere between fractions t0 and t1. */
     private static boolean below(double az, double bz, double t0, double t1, double top) {
         return Math.min(az + (bz - az) * t0, az + (bz - az) * t1) < top;
@@ -133,7 +153,7 @@ public final class WorldQueries {
         area.init(Math.min(ax, bx), Math.max(ax, bx), Math.min(ay, by), Math.max(ay, by));
         SightVisitor v = sightVisitor;
         v.begin(ax, ay, bx, by);
-        world.query(area, v);
+        world.queryObstacles(area, v);
         return !v.blocked;
     }
 

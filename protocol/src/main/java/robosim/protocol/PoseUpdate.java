@@ -138,6 +138,11 @@ public final class PoseUpdate implements java.io.Externalizable {
         return new Light(l.name(), l.xMm(), l.yMm(), l.heightMm(), l.rgb(), l.intensity(), lightsOn[light]);
     }
 
+    /** Whether each light is on, as the world's loop functions left it (a copy); null in a world without them. */
+    public boolean[] lightsOn() {
+        return lightsOn == null ? null : lightsOn.clone();
+    }
+
     /** The metrics the world's loop functions reported for this step. */
     public List<Report> reports() {
         return reports;

@@ -107,7 +107,12 @@ public final class SceneRenderer {
         }
         g.setStroke(new BasicStroke(1f));
         drawObjects(g, s, t);
-        drawLights(g, s.scenery().lights(), t);
+        List<robosim.protocol.Light> file = s.scenery().lights();
+        List<robosim.protocol.Light> now = new java.util.ArrayList<>(file.size());
+        for (int i = 0; i < file.size(); i++) {
+            now.add(s.poses().light(file, i)); // (as the world's loop functions switched it)
+        }
+        drawLights(g, now, t);
     }
 
     private static void drawArena(Graphics2D g, Scene s, ViewTransform t) {
@@ -124,6 +129,10 @@ public final class SceneRenderer {
                     (int) Math.round(y1 - y0), null);
         }
         for (Floor.Region r : floor.regions()) {
+            g.setColor(new Color(r.rgb()));
+            g.fill(region(r.area(), t));
+        }
+        for (Floor.Region r : s.poses().paint()) { // (what the world's loop functions painted, as of this step)
             g.setColor(new Color(r.rgb()));
             g.fill(region(r.area(), t));
         }

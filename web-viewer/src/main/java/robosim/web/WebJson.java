@@ -25,7 +25,8 @@ import robosim.protocol.WorldSnapshot;
  * (the world: time step, arena, obstacles as polygons, the floor (its colour, painted regions and image as a PNG data
  * URL), the lights, the objects' shapes, every robot's name, type, radius, height, sonar layout and LEDs' places, and
  * the poses), {@code update} (a step: poses, sonar ranges, the objects' poses and the LEDs' colours when the world has
- * them, tags, departed robots, robots held for their return), {@code state}
+ * them, what its loop functions painted and whether each light is on when it has them, tags, departed robots, robots
+ * held for their return), {@code state}
  * (waiting, running, paused, at a step), {@code end}, and for a page that watches a robot {@code watchStarted},
  * {@code view} (its step as it saw it: command, contact, tag, readings, each with how its sensor shows it,
  * {@code RANGES}, {@code SIDES} or {@code VALUES} from {@code robosim.devices.Sensors#display}, messages sent and
@@ -97,21 +98,7 @@ final class WebJson {
     /** The floor: its colour, its regions ({@code kind} rectangle, disc or polygon) and its image as a PNG. */
     private static void floor(ObjectNode n, Floor f) {
         n.put("colour", colour(f.rgb()));
-        ArrayNode regions = n.putArray("regions");
-        for (Floor.Region r : f.regions()) {
-            ObjectNode region = regions.addObject().put("colour", colour(r.rgb()));
-            if (r.area() instanceof Floor.Rectangle a) {
-                region.put("kind", "rectangle").put("x", a.xMm()).put("y", a.yMm()).put("width", a.widthMm())
-                        .put("height", a.heightMm());
-            } else if (r.area() instanceof Floor.Disc a) {
-                region.put("kind", "disc").put("x", a.xMm()).put("y", a.yMm()).put("radius", a.radiusMm());
-            } else {
-                ArrayNode xy = region.put("kind", "polygon").putArray("xy");
-                for (double v : ((Floor.Polygon) r.area()).xyMm()) {
-                    xy.add(v);
-                }
-            }
-        }
+        regions(n.putArray("regions"), f.regions());
         Floor.Image image = f.image();
         if (image == null) {
             n.putNull("image");
@@ -127,6 +114,24 @@ final class WebJson {
             throw new java.io.UncheckedIOException(e); // (into memory: not expected)
         }
         n.put("image", "data:image/png;base64," + java.util.Base64.getEncoder().encodeToString(png.toByteArray()));
+    }
+
+    /** Painted regions, each its colour and {@code kind} (rectangle, disc or polygon) with its place. */
+    private static void regions(ArrayNode regions, java.util.List<Floor.Region> all) {
+        for (Floor.Region r : all) {
+            ObjectNode region = regions.addObject().put("colour", colour(r.rgb()));
+            if (r.area() instanceof Floor.Rectangle a) {
+                region.put("kind", "rectangle").put("x", a.xMm()).put("y", a.yMm()).put("width", a.widthMm())
+                        .put("height", a.heightMm());
+            } else if (r.area() instanceof Floor.Disc a) {
+                region.put("kind", "disc").put("x", a.xMm()).put("y", a.yMm()).put("radius", a.radiusMm());
+            } else {
+                ArrayNode xy = region.put("kind", "polygon").putArray("xy");
+                for (double v : ((Floor.Polygon) r.area()).xyMm()) {
+                    xy.add(v);
+                }
+            }
+        }
     }
 
     static String update(PoseUpdate u) {
@@ -174,6 +179,14 @@ final class WebJson {
                 for (int c : u.leds(i)) {
                     robot.add(colour(c));
                 }
+            }
+        }
+        boolean[] on = u.lightsOn();
+        if (on != null) { // (a world with loop functions: what they painted, and the lights as they switched them)
+            regions(n.putArray("paint"), u.paint());
+            ArrayNode lights = n.putArray("lightsOn");
+            for (boolean b : on) {
+                lights.add(b);
             }
         }
         ArrayNode tags = n.putArray("tags");

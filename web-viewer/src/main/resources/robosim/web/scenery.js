@@ -11,8 +11,9 @@ export function floorPicture(floor, onLoad) {
   return img;
 }
 
-// paints floor onto 2D context g, world mm to px by toX, toY (y up) and scale (px per mm)
-export function paintFloor(g, floor, arena, picture, toX, toY, scale) {
+// paints floor onto 2D context g, world mm to px by toX, toY (y up) and scale (px per mm), and over it paint (the
+// regions the world's loop functions painted, an update's; absent: none)
+export function paintFloor(g, floor, arena, picture, toX, toY, scale, paint) {
   g.fillStyle = floor.colour;
   g.fillRect(toX(arena.minX), toY(arena.maxY), (arena.maxX - arena.minX) * scale, (arena.maxY - arena.minY) * scale);
   if (picture && picture.complete && picture.naturalWidth > 0) {
@@ -20,7 +21,7 @@ export function paintFloor(g, floor, arena, picture, toX, toY, scale) {
     g.drawImage(picture, toX(arena.minX), toY(arena.maxY), (arena.maxX - arena.minX) * scale,
       (arena.maxY - arena.minY) * scale);
   }
-  for (const r of floor.regions) {
+  for (const r of paint ? floor.regions.concat(paint) : floor.regions) {
     g.fillStyle = r.colour;
     g.beginPath();
     if (r.kind === 'rectangle') g.rect(toX(r.x), toY(r.y + r.height), r.width * scale, r.height * scale);

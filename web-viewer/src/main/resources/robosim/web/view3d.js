@@ -30,8 +30,10 @@ export class View3D {
     this.scene.add(new THREE.HemisphereLight(0xffffff, 0x777777, 2.2));
     const sun = new THREE.DirectionalLight(0xffffff, 1.5); sun.position.set(3, -4, 10); this.scene.add(sun);
     const a = w.arena, x0 = a.minX / 1000, y0 = a.minY / 1000, x1 = a.maxX / 1000, y1 = a.maxY / 1000;
+    this.picture = picture; this.paintSeen = '';
     const floor = new THREE.Mesh(new THREE.PlaneGeometry(x1 - x0, y1 - y0),
       new THREE.MeshLambertMaterial({ map: this.floorTexture(w, picture) }));
+    this.floor = floor;
     floor.position.set((x0 + x1) / 2, (y0 + y1) / 2, 0);
     this.scene.add(floor);
     const wall = new THREE.MeshLambertMaterial({ color: 0x8a8a8a });
@@ -105,11 +107,12 @@ export class View3D {
   }
 
   // the floor as a texture: painted as the 2D view paints it, FLOOR_PX on its longer side
-  floorTexture(w, picture) {
+  floorTexture(w, picture, paint) {
     const a = w.arena, scale = FLOOR_PX / Math.max(a.maxX - a.minX, a.maxY - a.minY);
     const c = document.createElement('canvas');
     c.width = Math.max(1, Math.round((a.maxX - a.minX) * scale)); c.height = Math.max(1, Math.round((a.maxY - a.minY) * scale));
-    paintFloor(c.getContext('2d'), w.floor, a, picture, (x) => (x - a.minX) * scale, (y) => (a.maxY - y) * scale, scale);
+    paintFloor(c.getContext('2d'), w.floor, a, picture, (x) => (x - a.minX) * scale, (y) => (a.maxY - y) * scale, scale,
+      paint);
     const t = new THREE.CanvasTexture(c);
     t.colorSpace = THREE.SRGBColorSpace;
     return t;
@@ -146,6 +149,13 @@ export class View3D {
   render(poses, gone, held, follow, trails) {
     if (!this.scene || !poses) return;
     if (!this.renderer) this.start();
+    const paint = JSON.stringify(poses.paint || []);
+    if (paint !== this.paintSeen) { // (the loop functions painted anew: the floor's texture again)
+      this.paintSeen = paint;
+      this.floor.material.map.dispose();
+      this.floor.material.map = this.floorTexture(this.w, this.picture, poses.paint);
+      this.floor.material.needsUpdate = true;
+    }
     const w = this.element.clientWidth, h = this.element.clientHeight;
     if (this.renderer.domElement.width !== w || this.renderer.domElement.height !== h) {
       this.renderer.setSize(w, h, false); this.camera.aspect = w / Math.max(1, h); this.camera.updateProjectionMatrix();

@@ -146,7 +146,7 @@ function draw2d() {
   if (!fitted) fit();
   if (follow >= 0) { offX = canvas.width / 2 - poses.x[follow] * scale; offY = canvas.height / 2 - poses.y[follow] * scale; }
   const a = world.arena;
-  paintFloor(g, world.floor, a, picture, toX, toY, scale);
+  paintFloor(g, world.floor, a, picture, toX, toY, scale, poses.paint);
   g.strokeStyle = '#444'; g.lineWidth = 2;
   g.strokeRect(toX(a.minX), toY(a.maxY), (a.maxX - a.minX) * scale, (a.maxY - a.minY) * scale);
   g.fillStyle = '#8a8a8a';
@@ -163,15 +163,16 @@ function draw2d() {
     g.closePath(); g.fillStyle = o.colour; g.fill();
     g.setLineDash(o.movable ? [3, 3] : []); g.strokeStyle = '#222'; g.lineWidth = 1; g.stroke(); g.setLineDash([]);
   });
-  for (const l of world.lights) { // (a disc of its colour with a glow; hollow when off)
+  world.lights.forEach((l, i) => { // (a disc of its colour with a glow; hollow when off, as loop functions switch it)
     const r = Math.max(4, 60 * scale);
-    if (l.on && l.intensity > 0) {
+    const on = poses.lightsOn ? poses.lightsOn[i] : l.on;
+    if (on && l.intensity > 0) {
       g.fillStyle = l.colour; g.globalAlpha = 0.3;
       g.beginPath(); g.arc(toX(l.x), toY(l.y), 2 * r, 0, 2 * Math.PI); g.fill(); g.globalAlpha = 1;
       g.beginPath(); g.arc(toX(l.x), toY(l.y), r, 0, 2 * Math.PI); g.fill();
     }
     g.strokeStyle = '#222'; g.lineWidth = 1; g.beginPath(); g.arc(toX(l.x), toY(l.y), r, 0, 2 * Math.PI); g.stroke();
-  }
+  });
   if ($('trails').checked) {
     g.strokeStyle = 'rgba(40,90,200,0.35)'; g.lineWidth = 1;
     for (const t of trails) {

@@ -210,7 +210,10 @@ final class StepMedia {
         double[] h = map.headings();
         for (int j : near(i, range + radius[i] + CELL_MM)) {
             int[] colours = actuators.leds(j);
-            if (colours.length == 0 || Math.hypot(x[j] - x[i], y[j] - y[i]) > range + 2 * Math.max(0, radius[j])) {
+            double dx = x[j] - x[i];
+            double dy = y[j] - y[i];
+            double reach = range + 2 * Math.max(0, radius[j]);
+            if (colours.length == 0 || dx * dx + dy * dy > reach * reach) {
                 continue;
             }
             List<LedSpec> where = map.properties(j).leds();
