@@ -14,6 +14,8 @@
 #                  (ARGoS's example writes nothing to measure it by)
 #   flocking_100   bench/flocking_100.xml and bench/flocking_100.argos (ten times the robots, placed in a square
 #                  sqrt(10) times as wide): the steps per second
+# The floor of a one-JVM run's thread shape, for the diffusion worlds (whose controller it can run inline):
+# bench/FootBotEngine.java, the core and the engine alone stepping the same world, Diffusion's decisions inline.
 # RoboSim's steps per second are its summary's (the run, from step 0 to the end) and its whole process's (JVM start
 # to exit, as ARGoS's are: 5000 over its wall time). Then a sweep of foraging over 40 seeds: scripts/sweep.sh (warm
 # JVMs, as many workers as cores) against ARGoS's 40 runs with xargs -P (as many as cores), their wall times.
@@ -50,7 +52,7 @@ elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }'
   echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE); ARGoS: $peers/argos3/bin/argos3"
   echo "$seeds seeds, $steps steps of 100 ms each run"
 } | tee "$out"
-declare -A one whole argos
+declare -A one whole argos floor
 declare -a items_rs items_ar order_rs
 # robosim NAME WORLD SEED: a run in one JVM in a folder of its own (the loop functions write there)
 robosim() {
@@ -60,6 +62,10 @@ robosim() {
     "${@:4}" >run.txt 2>&1) || { tail -5 "$dir/run.txt" >&2; robosim_fail "RoboSim's $1 (seed $3) failed"; }
   whole[$1]+="$(awk -v s="$steps" -v w="$(elapsed "$t0")" 'BEGIN { printf "%.1f", s / w }') "
   one[$1]+="$(field steps_per_s <"$dir/run.txt") "
+}
+# engine WORLD: the floor's steps per second on WORLD (the file's seed)
+engine() {
+  java -cp "$(robosim_classpath)" bench/FootBotEngine.java "$1" "$steps" 2>&1 | sed -n 's/.* steps\/s=\([0-9.]*\).*/\1/p'
 }
 # argos NAME SEED [ARGOS-FILE]: ARGoS's example NAME (or the file given, run as run-argos-example.sh runs one)
 argos() {
@@ -81,8 +87,10 @@ for seed in $(seq "$seeds"); do
   argos foraging "$seed"
   items_ar+=("$(tail -n 1 "$tmp/ar-foraging-$seed/foraging.txt" | cut -f4)")
   robosim diffusion_10 examples/argos/diffusion_10.xml "$seed"
+  floor[diffusion_10]+="$(engine examples/argos/diffusion_10.xml) "
   argos diffusion_10 "$seed"
   robosim diffusion_100 bench/diffusion_100.xml "$seed"
+  floor[diffusion_100]+="$(engine bench/diffusion_100.xml) "
   argos diffusion_100 "$seed" bench/diffusion_100.argos
   robosim flocking examples/argos/flocking.xml "$seed" --pose-log poses.csv
   order_rs+=("$(order "$tmp/rs-flocking-$seed/poses.csv")")
@@ -106,7 +114,9 @@ echo "flocking: steps until the order parameter passes 0.9, mean (95% interval) 
 for w in foraging diffusion_10 diffusion_100 flocking flocking_100; do
   # shellcheck disable=SC2086
   mo=$(median ${one[$w]}); mw=$(median ${whole[$w]}); ma=$(median ${argos[$w]})
-  awk -v w="$w" -v o="$mo" -v p="$mw" -v a="$ma" 'BEGIN { printf "median %s: RoboSim %s steps/s (whole process %s), ARGoS %s: RoboSim / ARGoS = %.2f (whole process %.2f)\n", w, o, p, a, o/a, p/a }' \
+  # shellcheck disable=SC2086
+  mf=$(median ${floor[$w]:-})
+  awk -v w="$w" -v o="$mo" -v p="$mw" -v a="$ma" -v f="$mf" 'BEGIN { printf "median %s: RoboSim %s steps/s (whole process %s), ARGoS %s: RoboSim / ARGoS = %.2f (whole process %.2f)%s\n", w, o, p, a, o/a, p/a, (f == "NaN" ? "" : sprintf("; the floor %s: RoboSim / floor = %.2f", f, o/f)) }' \
     | tee -a "$out"
 done
 runs=$((seeds >= 10 ? 40 : 4 * seeds))
