@@ -116,7 +116,7 @@ for w in foraging diffusion_10 diffusion_100 flocking flocking_100; do
   mo=$(median ${one[$w]}); mw=$(median ${whole[$w]}); ma=$(median ${argos[$w]})
   # shellcheck disable=SC2086
   mf=$(median ${floor[$w]:-})
-  awk -v w="$w" -v o="$mo" -v p="$mw" -v a="$ma" -v f="$mf" 'BEGIN { printf "median %s: RoboSim %s steps/s (whole process %s), ARGoS %s: RoboSim / ARGoS = %.2f (whole process %.2f)%s\n", w, o, p, a, o/a, p/a, (f == "NaN" ? "" : sprintf("; the floor %s: RoboSim / floor = %.2f", f, o/f)) }' \
+  awk -v w="$w" -v o="$mo" -v p="$mw" -v a="$ma" -v f="$mf" 'BEGIN { printf "median %s: RoboSim %s steps/s (whole process %s), ARGoS %s: RoboSim / ARGoS = %.2f (whole process %.2f)%s\n", w, o, p, a, o/a, p/a, (f == "" || f == "NaN" ? "" : sprintf("; the floor %s: RoboSim / floor = %.2f", f, o/f)) }' \
     | tee -a "$out"
 done
 runs=$((seeds >= 10 ? 40 : 4 * seeds))

@@ -66,6 +66,7 @@ final class RayPass {
         for (RaySpec ray : rays[i]) {
             reach = Math.max(reach, Math.sqrt(ray.xMm() * ray.xMm() + ray.yMm() * ray.yMm()) + ray.rangeMm());
         }
+        reach += 1; // (a ray's end may lie a rounding beyond it: what more comes in changes no range)
         area.init(x[i] - reach, x[i] + reach, y[i] - reach, y[i] + reach);
         collected.count = 0;
         world.query(area, collected);

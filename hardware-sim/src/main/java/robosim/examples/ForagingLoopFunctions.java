@@ -20,6 +20,8 @@ import robosim.loop.LoopFunctions;
  * {@code x < nest_x} (1.5 m), the food area {@code area} ("1.6,0.8,4.2,4.2": min x, min y, max x, max y, m).
  */
 public final class ForagingLoopFunctions implements LoopFunctions {
+    /** The most items a world may ask for (each a painted disc: the floor holds 10,000 regions). */
+    private static final int MAX_ITEMS = 5_000;
     /** Where an item that a robot carries is: nowhere on the floor. */
     private static final double AWAY = Double.NaN;
 
@@ -39,6 +41,9 @@ public final class ForagingLoopFunctions implements LoopFunctions {
     @Override
     public void init(Experiment world) throws IOException {
         int items = (int) world.parameter("items", 15);
+        if (items < 0 || items > MAX_ITEMS) {
+            throw new IllegalArgumentException("items is 0 to " + MAX_ITEMS + ", got " + items);
+        }
         radiusMm = world.parameter("radius", 0.1) * 1000;
         nestXMm = world.parameter("nest_x", 1.5) * 1000;
         area = Arrays.stream(world.parameter("area", "1.6,0.8,4.2,4.2").split(",")).mapToDouble(
@@ -62,7 +67,11 @@ public final class ForagingLoopFunctions implements LoopFunctions {
         if (output != null) {
             output.close();
         }
-        output = Files.newBufferedWriter(world.outputDirectory().resolve(world.parameter("output", "foraging.txt")));
+        String file = world.parameter("output", "foraging.txt");
+        if (!file.matches("[A-Za-z0-9_.-]{1,64}") || file.startsWith(".")) {
+            throw new IllegalArgumentException("output is a file name (letters, digits, _ . -), got " + file);
+        }
+        output = Files.newBufferedWriter(world.outputDirectory().resolve(file));
         output.write("# clock\twalking\tresting\tcollected_food\tenergy\n");
     }
 
@@ -86,6 +95,11 @@ public final class ForagingLoopFunctions implements LoopFunctions {
         int walking = 0;
         int resting = 0;
         boolean changed = false;
+        if (carried.length < world.robots()) { // (robots that joined)
+            int before = carried.length;
+            carried = Arrays.copyOf(carried, world.robots());
+            Arrays.fill(carried, before, carried.length, -1);
+        }
         for (int r = 0; r < world.robots(); r++) {
             if (!world.present(r)) {
                 continue;

@@ -153,8 +153,12 @@ public final class PoseUpdate implements java.io.Externalizable {
      * or tags (what a {@link WorldSnapshot} carries). Shares this update's arrays.
      */
     public PoseUpdate posesOnly() {
-        return new PoseUpdate(step, xMm, yMm, headingDeg, null, List.of(), departed, held)
+        PoseUpdate u = new PoseUpdate(step, xMm, yMm, headingDeg, null, List.of(), departed, held)
                 .withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
+        u.paint = paint; // (a viewer joining mid-run sees the loop functions' paint and lights at once)
+        u.lightsOn = lightsOn;
+        u.reports = reports;
+        return u;
     }
 
     /** Objects whose poses it holds: all the world's, or none. */

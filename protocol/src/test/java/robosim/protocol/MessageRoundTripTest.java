@@ -249,6 +249,8 @@ class MessageRoundTripTest {
                 List.of(new Report("collected_food", 3))));
         assertEquals(List.of(new Floor.Region(new Floor.Disc(10, 20, 5), 0x000000)), looped.paint());
         assertEquals(List.of(new Report("collected_food", 3)), looped.reports());
+        assertEquals(looped.paint(), looped.posesOnly().paint(), "a snapshot's poses keep the paint");
+        assertEquals(2, looped.posesOnly().lightsOn().length);
         Light off = new Light("l2", 0, 0, 100, 0xFFFF00, 1, false);
         assertEquals(true, looped.light(List.of(off, off), 0).on(), "switched on by the loop functions");
         assertEquals(List.of(), p2.paint());

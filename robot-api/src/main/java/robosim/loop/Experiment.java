@@ -74,10 +74,16 @@ public interface Experiment {
     /** The object it holds in its gripper, or -1. */
     int carrying(int robot);
 
-    /** Puts it at a pose (its next step starts there); false, and nothing moved, where it would overlap something. */
+    /**
+     * Puts it at a pose (its next step starts there), letting go of what it holds (that stays where it was); false,
+     * and nothing moved, where it would overlap something.
+     */
     boolean moveRobot(int robot, double xMm, double yMm, double headingDeg);
 
-    /** A text message to it, from {@code loop}, in its next step's messages (as another robot's). */
+    /**
+     * A text message to it, from {@code loop}, in its next step's messages (as another robot's; a world with loop
+     * functions may have no robot named {@code loop}). At most 10,000 wait for one robot (fewer for one away).
+     */
     void tell(int robot, String text);
 
     // ---- objects -------------------------------------------------------------------------------------------

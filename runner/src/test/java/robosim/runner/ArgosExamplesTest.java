@@ -168,4 +168,30 @@ class ArgosExamplesTest {
             }
         }
     }
+
+    @Test
+    void theLoopFunctionsPlaceACluster_AScaleFreeNetworkAndALine() throws Exception {
+        try (RecordingReader reader = run("custom_distributions.xml", 20)) {
+            PoseUpdate u = reader.step(0).update(); // (placed before step 0; a step moves a foot-bot 10 mm at most)
+            double half = Math.sqrt(Math.PI * 85.036758 * 85.036758 * 30 / 0.1) / 2 + 10;
+            for (int r = 0; r < 30; r++) {
+                assertTrue(Math.abs(u.xMm(r) - 20_000) <= half && Math.abs(u.yMm(r) - 15_000) <= half,
+                        "fb" + r + " in the cluster's square");
+            }
+            assertEquals(15_000, u.xMm(30), 10, "the network's first robot at its centre");
+            for (int r = 31; r < 60; r++) {
+                boolean near = false;
+                for (int p = 30; p < r && !near; p++) { // (its pivot: 0.75 to 1.5 m away on each axis)
+                    double dx = Math.abs(u.xMm(r) - u.xMm(p));
+                    double dy = Math.abs(u.yMm(r) - u.yMm(p));
+                    near = dx >= 750 - 20 && dx <= 1500 + 20 && dy >= 750 - 20 && dy <= 1500 + 20;
+                }
+                assertTrue(near, "fb" + r + " within range of a robot placed before it");
+            }
+            for (int r = 60; r < 70; r++) {
+                assertEquals(14_000 + (r - 60) * 1000, u.xMm(r), 10, "fb" + r + " on the line");
+                assertEquals(15_000 + (r - 60) * 1000, u.yMm(r), 10);
+            }
+        }
+    }
 }

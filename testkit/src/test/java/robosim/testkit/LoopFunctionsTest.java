@@ -52,6 +52,7 @@ class LoopFunctionsTest {
         final java.util.Map<Long, Consumer<Experiment>> plan = new java.util.HashMap<>();
         long finishAt = -1;
         String greeting;
+        int destroyed;
 
         @Override
         public void init(Experiment world) {
@@ -76,6 +77,11 @@ class LoopFunctionsTest {
         @Override
         public boolean finished(Experiment world) {
             return world.step() == finishAt;
+        }
+
+        @Override
+        public void destroy(Experiment world) {
+            destroyed++;
         }
     }
 
@@ -135,6 +141,7 @@ class LoopFunctionsTest {
             calls.add("post " + (k + 1));
         }
         assertEquals(calls, probe.calls);
+        assertEquals(1, probe.destroyed, "destroyed once, at the end");
         assertEquals("hi", probe.greeting, "the <loopFunctions> parameter");
         assertEquals(List.of(1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0), reads.ground.subList(0, 7),
                 "white, painted black under it in step 3, erased in step 6");
@@ -160,5 +167,15 @@ class LoopFunctionsTest {
                     + "robosim.testkit.LoopFunctionsTest$Probe failed in preStep at step 3: "
                     + "java.lang.IllegalStateException: no food left"), ended.getMessage());
         }
+        assertEquals(1, probe.destroyed, "destroyed once all the same: its files closed");
+    }
+
+    @Test
+    void aWorldWithLoopFunctionsHasNoRobotNamedLoop() throws Exception {
+        Path file = dir.resolve("named-loop.xml");
+        Files.writeString(file, WORLD.replace("name=\"fb\"", "name=\"loop\""));
+        IllegalArgumentException e = assertThrows(IllegalArgumentException.class,
+                () -> Simulation.of(file).control("loop", new Reads()).start());
+        assertTrue(e.getMessage().contains("<loopFunctions>: a robot is named \"loop\""), e.getMessage());
     }
 }

@@ -309,6 +309,10 @@ public final class EnvironmentLoader {
         Scenery scenery = new Scenery(SceneryReader.floor(faults, xml, folder), SceneryReader.lights(faults, xml),
                 objects);
         LoopSpec loop = loopFunctions(faults, xml.loopFunctions);
+        if (loop != null && robots.fromStart().stream().anyMatch(r -> r.name().equals(LoopSpec.SENDER))) {
+            faults.add(xml.loopFunctions.at, "<loopFunctions>: a robot is named \"" + LoopSpec.SENDER + "\", the name "
+                    + "the loop functions' messages come from; rename it");
+        }
         faults.throwIfAny();
         return new WorldSpec(where, name, xml.timeStepMs, seed, arena, obstacles.shapes(), robots.fromStart(), range,
                 maxBytes, heat, tagRange * MM_PER_M, obstacles.taggable(), joins, parameters, scenery, loop, redraw);

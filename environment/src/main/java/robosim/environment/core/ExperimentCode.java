@@ -23,8 +23,6 @@ import robosim.protocol.WorldObject;
  * Whatever the code throws is an {@link ExperimentFailure}, after which it is called no more.
  */
 final class ExperimentCode implements Experiment {
-    /** The sender of what the loop functions {@link #tell} a robot. */
-    static final String SENDER = "loop";
     /** Mixed into the run's seed for the experiment's own generator, so it draws what no sensor draws. */
     private static final long SEED_MIX = 0x6c6f6f7066756e63L; // "loopfunc"
 
@@ -34,7 +32,10 @@ final class ExperimentCode implements Experiment {
     private final MessageRouter router;
     private final StepSensing sensing;
     private final SplittableRandom random;
+    /** The code while it may be called; null once it threw (and before it was made). */
     private LoopFunctions code;
+    /** The code made, whatever happened since: its destroy is called once at the end, even after a throw. */
+    private LoopFunctions made;
     private final Floor fileFloor;
     private List<Floor.Region> paint = List.of();
     private Floor floor;
@@ -82,21 +83,24 @@ final class ExperimentCode implements Experiment {
         }
         if (kept != null) {
             code = kept;
+            made = kept;
             call("reset", () -> code.reset(this));
             return;
         }
         if (spec.given() != null) {
             code = spec.given();
+            made = code;
             call("init", () -> code.init(this));
             return;
         }
-        try {
-            code = Class.forName(spec.className(), true, robosim.protocol.ControlClasses.loader())
+        try { // (the class looked at before any of its code runs: a world file may name any class)
+            code = Class.forName(spec.className(), false, robosim.protocol.ControlClasses.loader())
                     .asSubclass(LoopFunctions.class).getDeclaredConstructor().newInstance();
         } catch (ReflectiveOperationException | LinkageError | RuntimeException e) {
             Throwable why = e instanceof java.lang.reflect.InvocationTargetException t ? t.getCause() : e;
             throw new ExperimentFailure("loop functions " + spec.className() + " could not be made: " + why, why);
         }
+        made = code;
         call("init", () -> code.init(this));
     }
 
@@ -125,10 +129,11 @@ final class ExperimentCode implements Experiment {
         stepReports = takeReports();
     }
 
-    /** Once the run is over: the code's destroy (what it throws is only logged by the caller). */
+    /** Once the run is over, however it ended (a throw of the code's too): the code's destroy, once. */
     void destroy() {
-        if (code != null && !destroyed) {
+        if (made != null && !destroyed) {
             destroyed = true;
+            code = made; // (called once more after a throw: its files are closed)
             call("destroy", () -> code.destroy(this));
         }
     }
@@ -273,6 +278,10 @@ final class ExperimentCode implements Experiment {
         if (around.overlapOfDisc(xMm, yMm, map.radiusMm(robot)) != null) {
             return false;
         }
+        int held = map.carried(robot);
+        if (held >= 0) {
+            map.carry(held, -1); // (it lets go: what it held stays where it was)
+        }
         map.setPose(robot, xMm, yMm, robosim.geometry.Kinematics.turn(0, headingDeg));
         return true;
     }
@@ -280,7 +289,7 @@ final class ExperimentCode implements Experiment {
     @Override
     public void tell(int robot, String text) {
         java.util.Objects.checkIndex(robot, map.robotCount());
-        router.fromLoop(robot, map, SENDER, text);
+        router.fromLoop(robot, map, LoopSpec.SENDER, text);
     }
 
     @Override

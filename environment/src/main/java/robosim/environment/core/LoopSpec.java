@@ -13,6 +13,9 @@ import java.util.Map;
  * @param given the instance to run, or null: a new instance of the class for each run
  */
 public record LoopSpec(String className, Map<String, String> parameters, robosim.loop.LoopFunctions given) {
+    /** The name the loop functions' messages to robots come from, which no robot of their world may have. */
+    public static final String SENDER = "loop";
+
     public LoopSpec {
         java.util.Objects.requireNonNull(className, "className");
         parameters = Collections.unmodifiableMap(new LinkedHashMap<>(parameters));

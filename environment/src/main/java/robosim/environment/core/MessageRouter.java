@@ -108,10 +108,15 @@ final class MessageRouter {
             throw new IllegalArgumentException("a message of " + bytes + " bytes is more than the world's limit of "
                     + maxBytes);
         }
-        if (!map.isGone(to)) {
-            inbox.get(to).add(new CommEvent(from, map.name(to), text));
-            delivered++;
+        if (map.isGone(to)) {
+            return;
         }
+        int most = away[to] ? AWAY_INBOX : robosim.protocol.Limits.MAX_MESSAGES_PER_STEP;
+        if (inbox.get(to).size() >= most) {
+            throw new IllegalStateException(most + " messages wait for " + map.name(to) + " already"
+                    + (away[to] ? " (it is away)" : ""));
+        }
+        inbox.get(to).add(new CommEvent(from, map.name(to), text)); // (not counted as a robot's message delivered)
     }
 
     void notice(int robot, String text) {

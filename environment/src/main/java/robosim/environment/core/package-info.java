@@ -1,5 +1,7 @@
 /**
- * The simulation core: plain objects, no sockets, no threads, and it never calls out.
+ * The simulation core: plain objects, no sockets, no threads, and it calls out only to a world's loop functions
+ * ({@link robosim.environment.core.ExperimentCode}: the experiment's own code, between a step's phases, on the calling
+ * thread).
  * {@link robosim.environment.core.WorldSpec} is the loaded file;
  * {@link robosim.environment.core.SimulationCore} owns the world state
  * ({@link robosim.environment.core.EnvironmentMap}) and turns one step's requests into that step's

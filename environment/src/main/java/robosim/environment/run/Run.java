@@ -479,22 +479,30 @@ public final class Run {
             roster.applyLeaving(); // (the departures held back are on record)
         }
         progress.end();
-        published.ended(reason, asPlanned, clock.getAsLong());
+        String why = reason;
+        boolean planned = asPlanned;
+        if (core != null) {
+            try {
+                core.endExperiment(); // (first: a throw of its destroy is the run's end, on record everywhere)
+            } catch (ExperimentFailure e) {
+                published.experimentFailed();
+                if (planned) {
+                    why = e.getMessage();
+                    planned = false;
+                } else {
+                    LOG.warn("{}", e.getMessage()); // (the run failed already: its first reason stays)
+                }
+            }
+        }
+        published.ended(why, planned, clock.getAsLong());
         SimulationEnd end = endMessage();
         roster.end(end, robotsTold);
         for (int i = 0; i < outputs.size(); i++) {
             outputs.get(i).ended(end);
         }
         geometry.end(end);
-        if (core != null) {
-            try {
-                core.endExperiment();
-            } catch (ExperimentFailure e) {
-                LOG.warn("{}", e.getMessage());
-            }
-        }
         publish();
-        LOG.info("simulation over after {} steps: {}", progress.released(), Printable.of(reason));
+        LOG.info("simulation over after {} steps: {}", progress.released(), Printable.of(why));
         listener.ended(published.summary(roster.size()));
         closeOut();
     }
