@@ -68,13 +68,13 @@ final class Plots {
         if (unit == null) {
             MetricChoice owner = sweep.owner(metric);
             if (owner != null) {
-                unit = owner.over() == null || owner.over() == MetricChoice.Over.SUM ? "reported, summed over the robots"
+                unit = owner.over() == null || owner.over() == MetricChoice.Over.SUM ? "reported, summed over the reporters"
                         : owner.over() == MetricChoice.Over.EACH ? "reported by robot "
                         + metric.substring(owner.name().length() + 1)
                         : "reported, " + owner.over().written() + " over the robots";
             }
             if (unit == null && sweep.metrics().isEmpty() && builtIn == null) {
-                unit = "reported, summed over the robots";
+                unit = "reported, summed over the reporters";
             }
         }
         return unit == null ? metric : metric + " (" + unit + ")";
