@@ -8,6 +8,8 @@ PythonControlIT)."""
 
 from __future__ import annotations
 
+from argos_wheels import WheelTurning
+
 from robosim import Robot
 from robosim.portable import RADIANS_PER_DEGREE, SplittableRandom, angle, cos, length, sin
 
@@ -16,7 +18,6 @@ RAB_RECORD = 12  # a foot-bot's range-and-bearing record: distance, bearing, its
 COS = [cos(RADIANS_PER_DEGREE * (7.5 + k * 15)) for k in range(24)]  # each proximity and light reading's direction
 SIN = [sin(RADIANS_PER_DEGREE * (7.5 + k * 15)) for k in range(24)]
 RESTING, EXPLORING, RETURN_TO_NEST = "resting", "exploring", "return_to_nest"
-NO_TURN, SOFT_TURN, HARD_TURN = "no_turn", "soft_turn", "hard_turn"
 
 
 def clamp(p: float) -> float:
@@ -31,10 +32,8 @@ class Forager:
         self.go_straight_min = RADIANS_PER_DEGREE * float(low.strip())
         self.go_straight_max = RADIANS_PER_DEGREE * float(high.strip())
         self.delta = float(robot.parameter("delta", 0.1))
-        self.hard_turn = RADIANS_PER_DEGREE * float(robot.parameter("hard_turn_angle_threshold", 90.0))
-        self.soft_turn = RADIANS_PER_DEGREE * float(robot.parameter("soft_turn_angle_threshold", 70.0))
-        self.no_turn = RADIANS_PER_DEGREE * float(robot.parameter("no_turn_angle_threshold", 10.0))
-        self.max_speed = float(robot.parameter("max_speed", 100.0))
+        self.steer = WheelTurning(robot, 100.0, 1.0)
+        self.max_speed = self.steer.max_speed
         self.rest_to_explore = float(robot.parameter("initial_rest_to_explore_prob", 0.1))
         self.explore_to_rest = float(robot.parameter("initial_explore_to_rest_prob", 0.1))
         self.food_explore_to_rest = float(robot.parameter("food_rule_explore_to_rest_delta_prob", 0.01))
@@ -46,7 +45,6 @@ class Forager:
         self.minimum_unsuccessful_explore_time = int(float(robot.parameter("minimum_unsuccessful_explore_time", 600.0)))
         self.minimum_search_time = int(float(robot.parameter("minimum_search_for_place_in_nest_time", 50.0)))
         self.state = RESTING
-        self.turning = NO_TURN
         self.in_nest = True
         self.time_exploring_unsuccessfully = 0
         self.time_rested = self.minimum_resting_time  # ARGoS's: a decision at the start, not after a wait
@@ -130,10 +128,10 @@ class Forager:
             self.rest_to_explore = clamp(self.rest_to_explore - self.collision_explore_to_rest)
         if self.in_nest:
             lx, ly = self.to_light()
-            self.wheels(self.max_speed * dx - self.max_speed * 0.25 * lx,
+            self.steer.drive(self.robot, self.max_speed * dx - self.max_speed * 0.25 * lx,
                         self.max_speed * dy - self.max_speed * 0.25 * ly)
         else:
-            self.wheels(self.max_speed * dx, self.max_speed * dy)
+            self.steer.drive(self.robot, self.max_speed * dx, self.max_speed * dy)
 
     def return_to_nest(self) -> None:
         self.update_in_nest()
@@ -151,7 +149,8 @@ class Forager:
             self.time_searching = 0
         dx, dy, _ = self.diffusion()
         lx, ly = self.to_light()
-        self.wheels(self.max_speed * dx + self.max_speed * lx, self.max_speed * dy + self.max_speed * ly)
+        self.steer.drive(self.robot, self.max_speed * dx + self.max_speed * lx,
+                         self.max_speed * dy + self.max_speed * ly)
 
     def update_in_nest(self) -> None:
         g = self.robot.sensor("ground")
@@ -179,37 +178,6 @@ class Forager:
             y += light[k] * SIN[k]
         n = length(x, y)
         return (x / n, y / n) if n > 0 else (0.0, 0.0)
-
-    def wheels(self, x: float, y: float) -> None:
-        a = angle(y, x)
-        base = min(length(x, y), self.max_speed)
-        turn = abs(a)
-        if self.turning == HARD_TURN and turn <= self.soft_turn:
-            self.turning = SOFT_TURN
-        if self.turning == SOFT_TURN:
-            if turn > self.hard_turn:
-                self.turning = HARD_TURN
-            elif turn <= self.no_turn:
-                self.turning = NO_TURN
-        if self.turning == NO_TURN:
-            if turn > self.hard_turn:
-                self.turning = HARD_TURN
-            elif turn > self.no_turn:
-                self.turning = SOFT_TURN
-        if self.turning == NO_TURN:
-            speed1 = base
-            speed2 = base
-        elif self.turning == SOFT_TURN:
-            factor = (self.hard_turn - turn) / self.hard_turn
-            speed1 = base - base * (1 - factor)
-            speed2 = base + base * (1 - factor)
-        else:
-            speed1 = -self.max_speed
-            speed2 = self.max_speed
-        if a > 0:
-            self.robot.set_wheel_speeds(speed1, speed2)
-        else:
-            self.robot.set_wheel_speeds(speed2, speed1)
 
 
 def control(robot: Robot) -> None:

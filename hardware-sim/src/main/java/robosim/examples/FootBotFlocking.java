@@ -22,8 +22,6 @@ public final class FootBotFlocking implements RobotControl {
     private static final int BEACON = 12;
     private static final double MM_PER_CM = 10;
 
-    private enum Turning { NO_TURN, SOFT_TURN, HARD_TURN }
-
     /** The direction of each light reading, ARGoS's: from 7.5 degrees every 15. */
     private static final double[] COS = new double[24];
     private static final double[] SIN = new double[24];
@@ -35,14 +33,10 @@ public final class FootBotFlocking implements RobotControl {
         }
     }
 
-    private Turning turning = Turning.NO_TURN;
-
     @Override
     public void run(Robot robot) throws InterruptedException {
-        double hardTurn = PortableMath.RADIANS_PER_DEGREE * robot.parameter("hard_turn_angle_threshold", 90.0);
-        double softTurn = PortableMath.RADIANS_PER_DEGREE * robot.parameter("soft_turn_angle_threshold", 70.0);
-        double noTurn = PortableMath.RADIANS_PER_DEGREE * robot.parameter("no_turn_angle_threshold", 10.0);
-        double maxSpeed = robot.parameter("max_speed", 10.0);
+        WheelTurning wheels = new WheelTurning(robot, 10.0, MM_PER_CM);
+        double maxSpeed = wheels.maxSpeed();
         double target = robot.parameter("target_distance", 75.0);
         double gain = robot.parameter("gain", 1000.0);
         double exponent = robot.parameter("exponent", 2.0);
@@ -88,55 +82,8 @@ public final class FootBotFlocking implements RobotControl {
                     fy *= maxSpeed / fl;
                 }
             }
-            wheels(robot, lx + fx, ly + fy, maxSpeed, hardTurn, softTurn, noTurn);
+            wheels.drive(robot, lx + fx, ly + fy);
             robot.step();
-        }
-    }
-
-    /** ARGoS's SetWheelSpeedsFromVector, in cm/s, set in mm/s. */
-    private void wheels(Robot robot, double x, double y, double maxSpeed, double hardTurn, double softTurn,
-            double noTurn) {
-        double angle = PortableMath.angle(y, x);
-        double base = Math.min(PortableMath.length(x, y), maxSpeed);
-        double a = Math.abs(angle);
-        if (turning == Turning.HARD_TURN && a <= softTurn) {
-            turning = Turning.SOFT_TURN;
-        }
-        if (turning == Turning.SOFT_TURN) {
-            if (a > hardTurn) {
-                turning = Turning.HARD_TURN;
-            } else if (a <= noTurn) {
-                turning = Turning.NO_TURN;
-            }
-        }
-        if (turning == Turning.NO_TURN) {
-            if (a > hardTurn) {
-                turning = Turning.HARD_TURN;
-            } else if (a > noTurn) {
-                turning = Turning.SOFT_TURN;
-            }
-        }
-        double speed1;
-        double speed2;
-        switch (turning) {
-            case NO_TURN -> {
-                speed1 = base;
-                speed2 = base;
-            }
-            case SOFT_TURN -> {
-                double factor = (hardTurn - a) / hardTurn;
-                speed1 = base - base * (1 - factor);
-                speed2 = base + base * (1 - factor);
-            }
-            default -> {
-                speed1 = -maxSpeed;
-                speed2 = maxSpeed;
-            }
-        }
-        if (angle > 0) {
-            robot.setWheelSpeeds(speed1 * MM_PER_CM, speed2 * MM_PER_CM);
-        } else {
-            robot.setWheelSpeeds(speed2 * MM_PER_CM, speed1 * MM_PER_CM);
         }
     }
 }

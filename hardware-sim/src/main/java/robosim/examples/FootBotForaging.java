@@ -32,8 +32,6 @@ public final class FootBotForaging implements RobotControl {
 
     private enum State { RESTING, EXPLORING, RETURN_TO_NEST }
 
-    private enum Turning { NO_TURN, SOFT_TURN, HARD_TURN }
-
     /** The direction of each proximity and light reading, ARGoS's: from 7.5 degrees every 15. */
     private static final double[] COS = new double[24];
     private static final double[] SIN = new double[24];
@@ -51,9 +49,7 @@ public final class FootBotForaging implements RobotControl {
     private double goStraightMin;
     private double goStraightMax;
     private double delta;
-    private double hardTurn;
-    private double softTurn;
-    private double noTurn;
+    private WheelTurning wheels;
     private double maxSpeed;
     private double foodExploreToRest;
     private double foodRestToExplore;
@@ -65,7 +61,6 @@ public final class FootBotForaging implements RobotControl {
     private int minimumSearchForPlaceInNestTime;
     // state
     private State state = State.RESTING;
-    private Turning turning = Turning.NO_TURN;
     private boolean inNest = true;
     private double restToExplore;
     private double exploreToRest;
@@ -88,10 +83,8 @@ public final class FootBotForaging implements RobotControl {
         goStraightMin = PortableMath.RADIANS_PER_DEGREE * Double.parseDouble(range[0].trim());
         goStraightMax = PortableMath.RADIANS_PER_DEGREE * Double.parseDouble(range[1].trim());
         delta = r.parameter("delta", 0.1);
-        hardTurn = PortableMath.RADIANS_PER_DEGREE * r.parameter("hard_turn_angle_threshold", 90.0);
-        softTurn = PortableMath.RADIANS_PER_DEGREE * r.parameter("soft_turn_angle_threshold", 70.0);
-        noTurn = PortableMath.RADIANS_PER_DEGREE * r.parameter("no_turn_angle_threshold", 10.0);
-        maxSpeed = r.parameter("max_speed", 100.0);
+        wheels = new WheelTurning(r, 100.0, 1);
+        maxSpeed = wheels.maxSpeed();
         restToExplore = r.parameter("initial_rest_to_explore_prob", 0.1);
         exploreToRest = r.parameter("initial_explore_to_rest_prob", 0.1);
         foodExploreToRest = r.parameter("food_rule_explore_to_rest_delta_prob", 0.01);
@@ -191,10 +184,10 @@ public final class FootBotForaging implements RobotControl {
         }
         if (inNest) {
             double[] light = toLight();
-            wheels(maxSpeed * diffusion[0] - maxSpeed * 0.25 * light[0],
+            wheels.drive(robot, maxSpeed * diffusion[0] - maxSpeed * 0.25 * light[0],
                     maxSpeed * diffusion[1] - maxSpeed * 0.25 * light[1]);
         } else {
-            wheels(maxSpeed * diffusion[0], maxSpeed * diffusion[1]);
+            wheels.drive(robot, maxSpeed * diffusion[0], maxSpeed * diffusion[1]);
         }
     }
 
@@ -217,7 +210,7 @@ public final class FootBotForaging implements RobotControl {
         double[] diffusion = new double[2];
         diffusion(diffusion);
         double[] light = toLight();
-        wheels(maxSpeed * diffusion[0] + maxSpeed * light[0], maxSpeed * diffusion[1] + maxSpeed * light[1]);
+        wheels.drive(robot, maxSpeed * diffusion[0] + maxSpeed * light[0], maxSpeed * diffusion[1] + maxSpeed * light[1]);
     }
 
     /** Sets the range-and-bearing message: byte 0 the last exploration's result, the other nine 0. */
@@ -269,52 +262,6 @@ public final class FootBotForaging implements RobotControl {
         }
         double length = PortableMath.length(x, y);
         return length > 0 ? new double[] {x / length, y / length} : new double[] {0, 0};
-    }
-
-    /** ARGoS's SetWheelSpeedsFromVector: no turn, a soft turn or a hard turn toward (x, y), with hysteresis. */
-    private void wheels(double x, double y) {
-        double angle = PortableMath.angle(y, x);
-        double base = Math.min(PortableMath.length(x, y), maxSpeed);
-        double a = Math.abs(angle);
-        if (turning == Turning.HARD_TURN && a <= softTurn) {
-            turning = Turning.SOFT_TURN;
-        }
-        if (turning == Turning.SOFT_TURN) {
-            if (a > hardTurn) {
-                turning = Turning.HARD_TURN;
-            } else if (a <= noTurn) {
-                turning = Turning.NO_TURN;
-            }
-        }
-        if (turning == Turning.NO_TURN) {
-            if (a > hardTurn) {
-                turning = Turning.HARD_TURN;
-            } else if (a > noTurn) {
-                turning = Turning.SOFT_TURN;
-            }
-        }
-        double speed1;
-        double speed2;
-        switch (turning) {
-            case NO_TURN -> {
-                speed1 = base;
-                speed2 = base;
-            }
-            case SOFT_TURN -> {
-                double factor = (hardTurn - a) / hardTurn;
-                speed1 = base - base * (1 - factor);
-                speed2 = base + base * (1 - factor);
-            }
-            default -> {
-                speed1 = -maxSpeed;
-                speed2 = maxSpeed;
-            }
-        }
-        if (angle > 0) {
-            robot.setWheelSpeeds(speed1, speed2);
-        } else {
-            robot.setWheelSpeeds(speed2, speed1);
-        }
     }
 
     private static double clamp(double p) {
