@@ -7,6 +7,7 @@ of operations: the two give the same pose log (runner's PythonControlIT)."""
 
 from __future__ import annotations
 
+from argos_ring import ring_sum
 from argos_wheels import WheelTurning
 
 from robosim import Robot
@@ -15,8 +16,6 @@ from robosim.portable import RADIANS_PER_DEGREE, cos, length, power, sin
 BEACON = 12
 RED = 0xFF0000
 MM_PER_CM = 10
-COS = [cos(RADIANS_PER_DEGREE * (7.5 + k * 15)) for k in range(24)]  # each light reading's direction
-SIN = [sin(RADIANS_PER_DEGREE * (7.5 + k * 15)) for k in range(24)]
 
 
 def control(robot: Robot) -> None:
@@ -30,12 +29,7 @@ def control(robot: Robot) -> None:
     robot.set_led(BEACON, "red")
     robot.step()  # readings come with a step: none before the first
     while True:
-        light = robot.sensor("light")
-        lx = 0.0
-        ly = 0.0
-        for k in range(len(light)):
-            lx += light[k] * COS[k]
-            ly += light[k] * SIN[k]
+        lx, ly = ring_sum(robot.sensor("light"))
         ll = length(lx, ly)
         if ll > 0:
             lx *= 0.25 * max_speed / ll

@@ -8,15 +8,14 @@ PythonControlIT)."""
 
 from __future__ import annotations
 
+from argos_ring import ring_sum
 from argos_wheels import WheelTurning
 
 from robosim import Robot
-from robosim.portable import RADIANS_PER_DEGREE, SplittableRandom, angle, cos, length, sin
+from robosim.portable import RADIANS_PER_DEGREE, SplittableRandom, angle, length
 
 NONE, SUCCESSFUL, UNSUCCESSFUL = 0, 1, 2  # what a robot tells of its last exploration (range-and-bearing byte 0)
 RAB_RECORD = 12  # a foot-bot's range-and-bearing record: distance, bearing, its ten bytes
-COS = [cos(RADIANS_PER_DEGREE * (7.5 + k * 15)) for k in range(24)]  # each proximity and light reading's direction
-SIN = [sin(RADIANS_PER_DEGREE * (7.5 + k * 15)) for k in range(24)]
 RESTING, EXPLORING, RETURN_TO_NEST = "resting", "exploring", "return_to_nest"
 
 
@@ -157,12 +156,7 @@ class Forager:
         self.in_nest = 0.25 < g[2] < 0.75 and 0.25 < g[3] < 0.75
 
     def diffusion(self) -> tuple[float, float, bool]:
-        near = self.robot.sensor("proximity")
-        x = 0.0
-        y = 0.0
-        for k in range(len(near)):
-            x += near[k] * COS[k]
-            y += near[k] * SIN[k]
+        x, y = ring_sum(self.robot.sensor("proximity"))
         a = angle(y, x)
         n = length(x, y)
         if self.go_straight_min <= a <= self.go_straight_max and n < self.delta:
@@ -170,12 +164,7 @@ class Forager:
         return (-x / n if n > 0 else 0.0), (-y / n if n > 0 else 0.0), True
 
     def to_light(self) -> tuple[float, float]:
-        light = self.robot.sensor("light")
-        x = 0.0
-        y = 0.0
-        for k in range(len(light)):
-            x += light[k] * COS[k]
-            y += light[k] * SIN[k]
+        x, y = ring_sum(self.robot.sensor("light"))
         n = length(x, y)
         return (x / n, y / n) if n > 0 else (0.0, 0.0)
 

@@ -17,21 +17,8 @@ import robosim.api.RobotControl;
  * {@code examples/python/argos_flocking.py}, gives the same pose log.
  */
 public final class FootBotFlocking implements RobotControl {
-    private static final double ANGLE0_DEG = 7.5;
-    private static final double STEP_DEG = 15;
     private static final int BEACON = 12;
     private static final double MM_PER_CM = 10;
-
-    /** The direction of each light reading, ARGoS's: from 7.5 degrees every 15. */
-    private static final double[] COS = new double[24];
-    private static final double[] SIN = new double[24];
-
-    static {
-        for (int k = 0; k < 24; k++) {
-            COS[k] = PortableMath.cos(PortableMath.RADIANS_PER_DEGREE * (ANGLE0_DEG + k * STEP_DEG));
-            SIN[k] = PortableMath.sin(PortableMath.RADIANS_PER_DEGREE * (ANGLE0_DEG + k * STEP_DEG));
-        }
-    }
 
     @Override
     public void run(Robot robot) throws InterruptedException {
@@ -46,13 +33,9 @@ public final class FootBotFlocking implements RobotControl {
         robot.setLed(BEACON, Colours.RED);
         robot.step(); // (readings come with a step: none before the first)
         while (true) {
-            double[] light = robot.sensor("light");
-            double lx = 0;
-            double ly = 0;
-            for (int k = 0; k < light.length; k++) {
-                lx += light[k] * COS[k];
-                ly += light[k] * SIN[k];
-            }
+            double[] light = FootBotRing.sum(robot.sensor("light"));
+            double lx = light[0];
+            double ly = light[1];
             double ll = PortableMath.length(lx, ly);
             if (ll > 0) {
                 lx *= 0.25 * maxSpeed / ll;

@@ -24,24 +24,10 @@ public final class FootBotForaging implements RobotControl {
     private static final int NONE = 0;
     private static final int SUCCESSFUL = 1;
     private static final int UNSUCCESSFUL = 2;
-    /** The first proximity and light reading's angle, and the angle between two. */
-    private static final double ANGLE0_DEG = 7.5;
-    private static final double STEP_DEG = 15;
     /** A foot-bot's range-and-bearing record: distance, bearing, then its ten bytes. */
     private static final int RAB_RECORD = 12;
 
     private enum State { RESTING, EXPLORING, RETURN_TO_NEST }
-
-    /** The direction of each proximity and light reading, ARGoS's: from 7.5 degrees every 15. */
-    private static final double[] COS = new double[24];
-    private static final double[] SIN = new double[24];
-
-    static {
-        for (int k = 0; k < 24; k++) {
-            COS[k] = PortableMath.cos(PortableMath.RADIANS_PER_DEGREE * (ANGLE0_DEG + k * STEP_DEG));
-            SIN[k] = PortableMath.sin(PortableMath.RADIANS_PER_DEGREE * (ANGLE0_DEG + k * STEP_DEG));
-        }
-    }
 
     private Robot robot;
     private SplittableRandom random;
@@ -232,13 +218,9 @@ public final class FootBotForaging implements RobotControl {
      * true in the second case (a collision avoided).
      */
     private boolean diffusion(double[] out) {
-        double[] near = robot.sensor("proximity");
-        double x = 0;
-        double y = 0;
-        for (int k = 0; k < near.length; k++) {
-            x += near[k] * COS[k];
-            y += near[k] * SIN[k];
-        }
+        double[] sum = FootBotRing.sum(robot.sensor("proximity"));
+        double x = sum[0];
+        double y = sum[1];
         double angle = PortableMath.angle(y, x);
         double length = PortableMath.length(x, y);
         if (angle >= goStraightMin && angle <= goStraightMax && length < delta) {
@@ -253,13 +235,9 @@ public final class FootBotForaging implements RobotControl {
 
     /** A unit vector toward the light the light sensors sense most, or (0, 0) if they sense none. */
     private double[] toLight() {
-        double[] light = robot.sensor("light");
-        double x = 0;
-        double y = 0;
-        for (int k = 0; k < light.length; k++) {
-            x += light[k] * COS[k];
-            y += light[k] * SIN[k];
-        }
+        double[] sum = FootBotRing.sum(robot.sensor("light"));
+        double x = sum[0];
+        double y = sum[1];
         double length = PortableMath.length(x, y);
         return length > 0 ? new double[] {x / length, y / length} : new double[] {0, 0};
     }
