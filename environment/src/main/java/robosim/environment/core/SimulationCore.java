@@ -40,6 +40,8 @@ public final class SimulationCore {
     }
 
     private static final double EPS = 1e-9;
+    /** Where loop functions a stepper did not start write their files. */
+    private static final java.nio.file.Path WORKING_DIRECTORY = java.nio.file.Path.of("");
 
     private final EnvironmentMap map;
     private final MessageRouter router;
@@ -281,7 +283,7 @@ public final class SimulationCore {
      */
     private GeometryStepRequest gather(long k, StepRequest[] requests) throws ProtocolException {
         if (experiment != null) {
-            experiment.start(java.nio.file.Path.of(""), null); // (once; a stepper that did not start it)
+            experiment.start(WORKING_DIRECTORY, null); // (once; a stepper that did not start it)
             experiment.preStep(k);
         }
         geometryRequest.setStep(k);
