@@ -128,7 +128,7 @@ class Forager:
         if self.in_nest:
             lx, ly = self.to_light()
             self.steer.drive(self.robot, self.max_speed * dx - self.max_speed * 0.25 * lx,
-                        self.max_speed * dy - self.max_speed * 0.25 * ly)
+                             self.max_speed * dy - self.max_speed * 0.25 * ly)
         else:
             self.steer.drive(self.robot, self.max_speed * dx, self.max_speed * dy)
 

@@ -102,6 +102,11 @@ public final class ForagingLoopFunctions implements LoopFunctions {
         }
         for (int r = 0; r < world.robots(); r++) {
             if (!world.present(r)) {
+                if (carried[r] >= 0) { // (it left with an item: the item comes back to the floor)
+                    place(world, carried[r]);
+                    carried[r] = -1;
+                    changed = true;
+                }
                 continue;
             }
             int[] leds = world.leds(r);

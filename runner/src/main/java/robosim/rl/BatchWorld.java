@@ -100,9 +100,13 @@ final class BatchWorld {
         }
         List<RobotProperties> properties = batch.properties();
         robosim.loop.LoopFunctions kept = core == null ? null : core.loopFunctions();
-        core = new SimulationCore(spec, properties, batch.areaCellM());
         try {
-            core.startExperiment(java.nio.file.Path.of(""), kept); // (the world's loop functions: one instance, reset)
+            if (core != null && kept == null) {
+                core.endExperiment(); // (loop functions that threw: destroyed once, their files closed)
+            }
+            core = new SimulationCore(spec, properties, batch.areaCellM());
+            // (the world's loop functions: one instance, reset each episode; each world's files in its own folder)
+            core.startExperiment(java.nio.file.Path.of("loop-world-" + index), kept);
         } catch (ExperimentFailure e) {
             throw new IOException(e.getMessage(), e);
         }

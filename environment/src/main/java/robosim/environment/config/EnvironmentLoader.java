@@ -309,7 +309,8 @@ public final class EnvironmentLoader {
         Scenery scenery = new Scenery(SceneryReader.floor(faults, xml, folder), SceneryReader.lights(faults, xml),
                 objects);
         LoopSpec loop = loopFunctions(faults, xml.loopFunctions);
-        if (loop != null && robots.fromStart().stream().anyMatch(r -> r.name().equals(LoopSpec.SENDER))) {
+        if (loop != null && java.util.stream.Stream.concat(robots.fromStart().stream(), robots.anyTime().stream())
+                .anyMatch(r -> r.name().equals(LoopSpec.SENDER))) {
             faults.add(xml.loopFunctions.at, "<loopFunctions>: a robot is named \"" + LoopSpec.SENDER + "\", the name "
                     + "the loop functions' messages come from; rename it");
         }

@@ -50,6 +50,10 @@ public final class HelloCheck {
         if (hello.name() == null) {
             return "a robot must say its name";
         }
+        if (spec.loopFunctions() != null && robosim.environment.core.LoopSpec.SENDER.equals(hello.name())) {
+            return "\"" + robosim.environment.core.LoopSpec.SENDER + "\" is the name the world's loop functions' "
+                    + "messages come from: no robot of it may have it";
+        }
         WorldSpec.RobotSpec entry;
         if (index < 0) {
             JoinRule rule = rule(hello.name());

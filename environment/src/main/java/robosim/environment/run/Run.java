@@ -485,8 +485,8 @@ public final class Run {
             try {
                 core.endExperiment(); // (first: a throw of its destroy is the run's end, on record everywhere)
             } catch (ExperimentFailure e) {
-                published.experimentFailed();
                 if (planned) {
+                    published.experimentFailed();
                     why = e.getMessage();
                     planned = false;
                 } else {
