@@ -112,17 +112,16 @@ final class ExperimentCode implements Experiment {
     /** Before step {@code k}'s moves. */
     void preStep(long k) {
         step = k;
-        call("preStep", () -> code.preStep(this));
+        call("preStep", preStep);
     }
 
     /** After step {@code k}'s moves and sensing: its post-step, then whether the experiment is finished. */
     void postStep(long k) {
         step = k + 1;
-        call("postStep", () -> code.postStep(this));
+        call("postStep", postStep);
         if (endReason == null && code != null) {
-            boolean[] done = new boolean[1];
-            call("finished", () -> done[0] = code.finished(this));
-            if (done[0]) {
+            call("finished", finished);
+            if (done) {
                 endReason = "the experiment is finished (" + spec.className() + ")";
             }
         }
@@ -167,6 +166,12 @@ final class ExperimentCode implements Experiment {
     List<Light> lightsNow() {
         return lights;
     }
+
+    /** The calls made every step, made once (a step allocates nothing to call them), and what finished said. */
+    private final Call preStep = () -> code.preStep(this);
+    private final Call postStep = () -> code.postStep(this);
+    private final Call finished = () -> done = code.finished(this);
+    private boolean done;
 
     private interface Call {
         void run() throws Exception;
