@@ -9,7 +9,7 @@ import java.util.Locale;
 import java.util.concurrent.TimeUnit;
 import org.msgpack.core.MessageBufferPacker;
 import org.msgpack.core.MessagePack;
-import robosim.hardware.link.LinkFrames;
+import robosim.protocol.link.LinkFrames;
 
 /**
  * The floor of the learning link's shape: a learner in another process sending one step's actions for K worlds of N

@@ -28,7 +28,7 @@ import robosim.environment.server.ServerContext;
 import robosim.environment.server.ViewerClientWorker;
 import robosim.environment.server.WebPortOption;
 import robosim.environment.ParamOption;
-import robosim.hardware.link.LinkFrames;
+import robosim.protocol.link.LinkFrames;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;

@@ -11,7 +11,7 @@
  * <tr><td>{@code rl-worlds[t]}</td><td>daemons, one fewer than the threads asked for (the cores, at most the
  * worlds; {@link robosim.rl.StepCrew}): each steps its share of the worlds while {@code main} steps its own, and
  * nothing else; between steps it spins for half a millisecond, then parks</td></tr>
- * <tr><td>{@code link-deadline}</td><td>the robot link's (robosim.hardware.link.LinkFrames): closes a learner's
+ * <tr><td>{@code link-deadline}</td><td>the robot link's (robosim.protocol.link.LinkFrames): closes a learner's
  * connection whose hello is late (a deadline)</td></tr>
  * <tr><td>{@code rl-viewer[n]}</td><td>with {@code --viewer-port} or {@code --web-port}: one a viewer, as an
  * Environment's viewer workers (robosim.environment.server), fed world 0 through a bounded queue; with them that

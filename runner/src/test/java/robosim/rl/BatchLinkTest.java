@@ -20,7 +20,7 @@ import org.msgpack.core.MessageBufferPacker;
 import org.msgpack.core.MessagePack;
 import org.msgpack.core.MessageUnpacker;
 import org.msgpack.value.Value;
-import robosim.hardware.link.LinkFrames;
+import robosim.protocol.link.LinkFrames;
 import robosim.protocol.ProtocolException;
 
 /** The learning link, served on a thread of this JVM to a learner written here with msgpack-core. */

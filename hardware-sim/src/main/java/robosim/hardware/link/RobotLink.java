@@ -20,6 +20,8 @@ import robosim.api.Robot;
 import robosim.protocol.Limits;
 import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
+import robosim.protocol.link.LinkFrames;
+import robosim.protocol.link.LinkHello;
 
 /**
  * The robot link: one robot's API served to control code in another process, in any language, over a socket of

@@ -25,6 +25,8 @@ import org.msgpack.core.MessagePack;
 import robosim.api.Message;
 import robosim.api.Robot;
 import robosim.protocol.ProtocolException;
+import robosim.protocol.link.LinkFrames;
+import robosim.protocol.link.LinkHello;
 
 /**
  * The robot link against a robot whose every answer is known: the golden transcript (each frame a controller sends,

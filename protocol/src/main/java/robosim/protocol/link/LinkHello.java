@@ -1,4 +1,4 @@
-package robosim.hardware.link;
+package robosim.protocol.link;
 
 import java.io.DataInputStream;
 import java.io.DataOutputStream;
@@ -31,9 +31,9 @@ public final class LinkHello {
     /** How long a peer has from its connection to its whole hello, ms. */
     public static final long DEADLINE_MS = 10_000;
     /** The most fields a hello may have. */
-    static final int MAX_FIELDS = 16;
+    public static final int MAX_FIELDS = 16;
     /** The longest text a hello's key or field may have, characters. */
-    static final int MAX_TEXT = 1000;
+    public static final int MAX_TEXT = 1000;
 
     /**
      * What a link expects of its hello: its {@code name} (the hello's {@code link}), what it is called in a refusal

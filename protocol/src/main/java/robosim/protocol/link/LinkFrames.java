@@ -1,4 +1,4 @@
-package robosim.hardware.link;
+package robosim.protocol.link;
 
 import java.io.DataInputStream;
 import java.io.DataOutputStream;

@@ -1,0 +1,17 @@
+/**
+ * What the MessagePack links share (the robot link, robosim.hardware.link; the loop link,
+ * robosim.environment.core.LoopScript; the learning link, robosim.rl): frames ({@link robosim.protocol.link.LinkFrames}),
+ * the hello ({@link robosim.protocol.link.LinkHello}), and the script a link serves, started and stopped
+ * ({@link robosim.protocol.link.ScriptProcess}). Threads:
+ *
+ * <table>
+ * <caption>threads</caption>
+ * <tr><th>thread</th><th>role</th></tr>
+ * <tr><td>{@code link-deadline}</td><td>a daemon, one per JVM while hellos are awaited (it ends after a second
+ * idle; {@link robosim.protocol.link.LinkFrames#hello}): closes a connection whose hello has not come within its
+ * deadline, {@link robosim.protocol.link.LinkHello#DEADLINE_MS} (a deadline, not a read timeout)</td></tr>
+ * <tr><td>{@code script-output[name]}</td><td>a daemon, one per script started ({@link robosim.protocol.link.ScriptProcess}):
+ * reads the script's output and logs it line by line, until the script exits</td></tr>
+ * </table>
+ */
+package robosim.protocol.link;
