@@ -147,13 +147,14 @@ public final class HeadlessRunner implements Callable<Integer> {
      * class: what is wrong, or null.
      */
     public static String missingControl(java.nio.file.Path env, WorldSpec spec) throws InterruptedException {
+        boolean scripts = false;
         if (spec.loopFunctions() != null && spec.loopFunctions().given() == null) {
             String problem = robosim.environment.core.LoopSpec.problem(spec.loopFunctions().className());
             if (problem != null) {
                 return env + ": <loopFunctions>: " + problem;
             }
+            scripts = robosim.protocol.ControlScripts.isScript(spec.loopFunctions().className());
         }
-        boolean scripts = false;
         for (WorldSpec.RobotSpec r : spec.robots()) {
             String where = env + ": <robot name=\"" + r.name() + "\">";
             if (r.control().isBlank()) {
@@ -178,7 +179,7 @@ public final class HeadlessRunner implements Callable<Integer> {
             }
         }
         String python = scripts ? robosim.protocol.ControlScripts.interpreterProblem() : null;
-        return python == null ? null : env + ": its robots' Python scripts need a Python with the robosim package: "
+        return python == null ? null : env + ": its Python scripts need a Python with the robosim package: "
                 + python;
     }
 

@@ -21,7 +21,8 @@ import robosim.sweep.Csv;
  * {@code scripts/record-tool.sh}: what is in a recording ({@code --record}). {@code summary} prints the
  * world, the steps and how the run ended (or where the file stops); {@code poses} writes every step's
  * poses as CSV on stdout, the {@code --pose-log} columns; {@code messages} every message delivered as CSV
- * ({@code step,from,to,text}); {@code reports} every value the robots reported as CSV ({@code step,robot,name,value});
+ * ({@code step,from,to,text}); {@code reports} every value the robots (and the loop functions, as {@code loop}) reported
+ * as CSV ({@code step,robot,name,value});
  * {@code readings} every sensor reading as CSV, a value a row ({@code step,robot,sensor,unit,index,value}: the unit
  * its sensor's description in the registry gives, {@code Sensors});
  * {@code metrics} the run's metrics as a sweep's row has them (CSV: a header and a line), from the recording alone;
@@ -29,7 +30,7 @@ import robosim.sweep.Csv;
  */
 @Command(name = "record-tool.sh", mixinStandardHelpOptions = true,
         description = "Reads a recording made with --record (or kept by a sweep's --keep-recordings): summary, poses "
-                + "(CSV), messages (CSV), reports (CSV: every value the robots reported, step by step), readings (CSV: "
+                + "(CSV), messages (CSV), reports (CSV: every value the robots and the loop functions reported, step by step), readings (CSV: "
                 + "every sensor reading, a value a row, with its sensor's unit) or metrics (CSV: "
                 + "the built-in metrics and every reported value, as a sweep's row has them; docs/EXPERIMENTS.md) on "
                 + "stdout; plot draws each robot's trajectory over the arena and its obstacles into --out FILE.png.")
@@ -201,7 +202,10 @@ public final class RecordToolMain implements Callable<Integer> {
         }
     }
 
-    /** Every value a robot reported, with the step whose request carried it (steps completed, as {@code poses}). */
+    /**
+     * Every value a robot reported, with the step whose request carried it (steps completed, as {@code poses}), then
+     * the step's loop functions' metrics, as the robot {@code loop}'s.
+     */
     static void reports(RecordingReader r, BufferedWriter out) throws IOException {
         out.write(Csv.line(List.of("step", "robot", "name", "value")));
         for (int k = 0; k < r.steps(); k++) {
@@ -213,6 +217,10 @@ public final class RecordToolMain implements Callable<Integer> {
                             v.robot() < names.size() ? names.get(v.robot()) : "robot" + v.robot(), report.name(),
                             Double.toString(report.value()))));
                 }
+            }
+            for (robosim.protocol.Report report : s.update().reports()) { // (the loop functions', as a reporter "loop")
+                out.write(Csv.line(List.of(Long.toString(StepNumbers.shown(s.update().step())),
+                        robosim.environment.core.LoopSpec.SENDER, report.name(), Double.toString(report.value()))));
             }
         }
     }

@@ -89,6 +89,112 @@ class PythonControlIT {
                 .get(food.size() - 1), "the same food brought home, the same energy");
         assertTrue(Integer.parseInt(food.get(food.size() - 1).split("\t")[3]) > 0, "food was brought home: "
                 + food.get(food.size() - 1));
+        // ARGoS's foraging loop functions in Python (the loop link), beside the Java robots: the same world
+        Path loop = dir.resolve("foraging-loop.csv");
+        ScriptRun lp = headless("--one-jvm", "--env", "examples/argos/foraging.xml", "--steps", "600", "--param",
+                "loop=python:../python/argos_foraging_loop.py", "--pose-log", loop.toString(), "--output-dir",
+                dir.resolve("loop").toString());
+        assertEquals(0, lp.exit(), lp.stdout() + lp.stderr());
+        assertEquals(Files.readString(dir.resolve("foraging-java.csv")), Files.readString(loop),
+                "the Python loop functions' world moved otherwise");
+        assertEquals(Files.readString(dir.resolve("java").resolve("foraging.txt")),
+                Files.readString(dir.resolve("loop").resolve("foraging.txt")), "their file is the Java class's");
+    }
+
+    @Test
+    void pythonLoopFunctionsChangeTheWorldAndTheirFailuresEndTheRunWithOneLine() throws Exception {
+        Files.writeString(dir.resolve("every.py"), """
+                from robosim.loop import Experiment, ExperimentValueError, LoopFunctions
+
+                class Every(LoopFunctions):
+                    def init(self, world: Experiment) -> None:
+                        assert world.parameter("gain", 1.0) == 2.5 and world.parameter("name", "x") == "g"
+                        assert world.robots == 2 and world.robot_name(1) == "r2" and world.lights == 1
+                        world.paint_disc(1000, 1000, 200, 0xFF0000)
+                        assert world.floor_colour(1000, 1000) == 0xFF0000
+                        world.switch_light(0, False)
+                        assert not world.light_on(0)
+                        assert world.move_robot(1, 1500, 1500, 450)
+                        assert world.robot_x_mm(1) == 1500 and world.robot_heading_deg(1) == 90
+                        assert not world.move_robot(1, 500, 500, 0), "onto r1"
+                        try:
+                            world.report("not a name!", 1)
+                            raise AssertionError("a bad name taken")
+                        except ExperimentValueError:
+                            pass
+
+                    def post_step(self, world: Experiment) -> None:
+                        world.report("seen", world.step)
+                        world.tell(0, "hello")
+
+                    def finished(self, world: Experiment) -> bool:
+                        return world.step == 7
+
+                loop_functions = Every
+                """);
+        Files.writeString(dir.resolve("raises.py"), """
+                from robosim.loop import LoopFunctions
+
+                class Raises(LoopFunctions):
+                    def pre_step(self, world):
+                        if world.step == 3:
+                            print("about to divide")
+                            1 / 0
+
+                loop_functions = Raises
+                """);
+        Files.writeString(dir.resolve("syntax.py"), "def oops(:\n    pass\n");
+        Files.writeString(dir.resolve("badcall.py"), """
+                from robosim.loop import LoopFunctions
+
+                class BadCall(LoopFunctions):
+                    def init(self, world):
+                        world._request("launch_missiles", 1)
+
+                loop_functions = BadCall
+                """);
+        Path world = Files.writeString(dir.resolve("loop.xml"), """
+                <environment name="loop" timeStepMs="100" seed="1">
+                  <loopFunctions class="python:${script}">
+                    <param name="gain" value="2.5"/>
+                    <param name="name" value="g"/>
+                  </loopFunctions>
+                  <arena width="3" height="3"/>
+                  <lights><light name="l" x="2" y="2" height="0.5"/></lights>
+                  <robots>
+                    <robot name="r1" type="foot-bot" control="robosim.examples.Diffusion" x="0.5" y="0.5" heading="0"/>
+                    <robot name="r2" type="foot-bot" control="robosim.examples.Diffusion" x="2.5" y="2.5" heading="0"/>
+                  </robots>
+                </environment>
+                """);
+        ScriptRun every = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
+                "script=every.py", "--record", dir.resolve("every.rec").toString());
+        assertEquals(0, every.exit(), every.stdout() + every.stderr());
+        assertTrue(every.stdout().contains("steps=7 robots=2 "), "finished after step 7: " + every.stdout());
+        ScriptRun reports = ScriptRun.of(REPO, Map.of(), dir, "bash", "scripts/record-tool.sh", "reports",
+                dir.resolve("every.rec").toString());
+        assertTrue(reports.stdout().contains("7,loop,seen,7"), reports.stdout());
+
+        ScriptRun raises = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
+                "script=raises.py");
+        assertEquals(4, raises.exit(), raises.stdout() + raises.stderr());
+        assertTrue(raises.stderr().contains("loop functions python:" + dir.resolve("raises.py") + " failed in preStep"
+                + " at step 3: ZeroDivisionError: division by zero\n"), raises.stderr());
+        assertTrue(raises.stderr().contains("loop: about to divide"), "its output logged: " + raises.stderr());
+        assertEquals(1, raises.stderr().split("Traceback \\(most recent call last\\)", -1).length - 1,
+                "the traceback once: " + raises.stderr());
+
+        ScriptRun syntax = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
+                "script=syntax.py");
+        assertEquals(4, syntax.exit(), syntax.stdout() + syntax.stderr());
+        assertTrue(syntax.stderr().contains("failed in init at step 0: " + dir.resolve("syntax.py") + ":1: SyntaxError: "),
+                syntax.stderr());
+
+        ScriptRun bad = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
+                "script=badcall.py");
+        assertEquals(4, bad.exit(), bad.stdout() + bad.stderr());
+        assertTrue(bad.stderr().contains("failed in init at step 0: its script badcall.py made a bad call: no request "
+                + "launch_missiles"), bad.stderr());
     }
 
     @Test

@@ -110,8 +110,8 @@ public final class EnvironmentLoader {
     }
 
     /**
-     * Each robot's, distributed robot's and join rule's control script ({@code python:PATH}) made absolute: a
-     * relative path is the file's folder's.
+     * Each robot's, distributed robot's and join rule's control script ({@code python:PATH}), and the loop functions'
+     * script, made absolute: a relative path is the file's folder's.
      */
     private static void scriptsFrom(EnvironmentFile xml, Path folder) {
         for (EnvironmentFile.RobotXml r : xml.robots) {
@@ -125,6 +125,9 @@ public final class EnvironmentLoader {
             if (r != null && r.control != null) {
                 r.control = ControlScripts.resolved(r.control, folder);
             }
+        }
+        if (xml.loopFunctions != null && xml.loopFunctions.className != null) {
+            xml.loopFunctions.className = ControlScripts.resolved(xml.loopFunctions.className, folder);
         }
     }
 
@@ -186,7 +189,8 @@ public final class EnvironmentLoader {
 
     /**
      * The experiment's code ({@code <loopFunctions>}), or null for none: a Java class name (looked up when the run
-     * starts, where control classes are) and its {@code <param>}s.
+     * starts, where control classes are) or a Python script ({@code python:PATH}, checked when the run starts), and
+     * its {@code <param>}s.
      */
     private static LoopSpec loopFunctions(FileFaults faults, EnvironmentFile.LoopFunctionsXml xml) {
         if (xml == null) {
@@ -194,9 +198,10 @@ public final class EnvironmentLoader {
         }
         String el = "<loopFunctions>";
         Map<String, String> params = params(faults, xml, el, xml.params);
-        if (xml.className == null || !JAVA_CLASS.matcher(xml.className).matches()) {
-            faults.add(xml.at, el + " needs class=\"...\", a Java class name (implementing robosim.loop.LoopFunctions), "
-                    + "got \"" + FileFaults.cut(xml.className) + "\"");
+        if (xml.className == null || !ControlScripts.isScript(xml.className)
+                && !JAVA_CLASS.matcher(xml.className).matches()) {
+            faults.add(xml.at, el + " needs class=\"...\", a Java class name (implementing robosim.loop.LoopFunctions) "
+                    + "or python:FILE, got \"" + FileFaults.cut(xml.className) + "\"");
             return null;
         }
         return new LoopSpec(xml.className, params);

@@ -93,6 +93,12 @@ final class ExperimentCode implements Experiment {
             call("init", () -> code.init(this));
             return;
         }
+        if (robosim.protocol.ControlScripts.isScript(spec.className())) {
+            code = new LoopScript(spec.className());
+            made = code;
+            call("init", () -> code.init(this));
+            return;
+        }
         try { // (the class looked at before any of its code runs: a world file may name any class)
             code = Class.forName(spec.className(), false, robosim.protocol.ControlClasses.loader())
                     .asSubclass(LoopFunctions.class).getDeclaredConstructor().newInstance();
@@ -184,9 +190,8 @@ final class ExperimentCode implements Experiment {
         try {
             c.run();
         } catch (Exception | LinkageError | StackOverflowError e) {
-            LoopFunctions failed = code;
             code = null; // (called no more)
-            throw new ExperimentFailure("loop functions " + failed.getClass().getName() + " failed in " + what
+            throw new ExperimentFailure("loop functions " + spec.className() + " failed in " + what
                     + " at step " + step + ": " + Printable.of(String.valueOf(e), 300), e);
         }
     }

@@ -7,7 +7,8 @@ import java.util.Map;
 /**
  * A world's experiment code ({@code <loopFunctions class="..."> <param name= value=/> </loopFunctions>}): the class
  * of its {@link robosim.loop.LoopFunctions}, looked up where control classes are
- * ({@link robosim.protocol.ControlClasses}), and its parameters, in file order; or an instance made already, which a
+ * ({@link robosim.protocol.ControlClasses}), or a Python script ({@code python:PATH}, {@link LoopScript}), and its
+ * parameters, in file order; or an instance made already, which a
  * run uses instead of a new one of its class (a test's, {@code robosim.testkit.Simulation.Builder#loopFunctions}).
  *
  * @param given the instance to run, or null: a new instance of the class for each run
@@ -26,8 +27,14 @@ public record LoopSpec(String className, Map<String, String> parameters, robosim
         this(className, parameters, null);
     }
 
-    /** Why {@code className} cannot be loop functions on this thread's class path, or null. The class is not initialised. */
+    /**
+     * Why {@code className} cannot be loop functions on this thread's class path (the class is not initialised), or
+     * why its script cannot run ({@code python:PATH}: no such file), or null.
+     */
     public static String problem(String className) {
+        if (robosim.protocol.ControlScripts.isScript(className)) {
+            return robosim.protocol.ControlScripts.problem(className);
+        }
         Class<?> c;
         try {
             c = Class.forName(className, false, robosim.protocol.ControlClasses.loader());
