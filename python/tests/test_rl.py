@@ -182,6 +182,35 @@ def test_an_episode_metric_is_measured_from_the_episodes_recording_when_it_ends(
         VectorEnv(DISPERSION, worlds=1, episode_metric="no.such.Metric")
 
 
+def test_a_reward_may_be_a_metric_the_worlds_loop_functions_report(tmp_path: Path,
+                                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "east.py").write_text(
+        "from robosim.loop import Experiment, LoopFunctions\n\n"
+        "class East(LoopFunctions):\n"
+        "    def post_step(self, world: Experiment) -> None:\n"
+        "        world.report('east', sum(world.robot_x_mm(r) for r in range(world.robots)) / 1000)\n\n"
+        "loop_functions = East\n")
+    world = tmp_path / "east.xml"
+    world.write_text(DISPERSION.read_text().replace(
+        '<arena width="8" height="8"/>', '<loopFunctions class="python:east.py"/><arena width="8" height="8"/>'))
+    monkeypatch.setenv("ROBOSIM_PYTHON", sys.executable)  # (the host starts the loop functions' script with it)
+    with VectorEnv(world, worlds=2, max_steps=4, reward="east", loop_metrics=["east"], pose=True) as env:
+        assert env.welcome.metrics[-1] == "east"
+        observations, _ = env.reset(seed=3)
+        before = observations["pose"][..., 0].astype(np.float64).sum(axis=1) / 1000
+        forward = np.zeros((2, 6, 2), np.float32)
+        forward[..., 0] = 500
+        for _ in range(3):
+            observations, rewards, _, _, infos = env.step(forward)
+            east = observations["pose"][..., 0].astype(np.float64).sum(axis=1) / 1000
+            assert np.allclose(infos["metrics"]["east"], east, atol=1e-3), "the loop functions' metric, as reported"
+            assert np.allclose(rewards, (east - before)[:, None], atol=1e-3), "each robot gets its world's gain"
+            assert (rewards != 0).any()
+            before = east
+    with pytest.raises(HostError, match="--loop-metric east: .* has no loop functions"):
+        VectorEnv(DISPERSION, worlds=1, loop_metrics=["east"])
+
+
 def test_an_agent_whose_episode_ends_leaves_the_parallel_env() -> None:
     def out_east(t: Transition) -> np.ndarray:  # a robot that crosses x = 4.7 m is done
         return t.pose[..., 0] > 4700
@@ -204,7 +233,7 @@ def test_an_agent_whose_episode_ends_leaves_the_parallel_env() -> None:
 
 
 def test_bad_choices_are_one_clear_error() -> None:
-    with pytest.raises(ValueError, match="reward 'speed' is not a built-in metric"):
+    with pytest.raises(ValueError, match="reward 'speed' is not a metric"):
         VectorEnv(DISPERSION, worlds=1, reward="speed")
     with pytest.raises(HostError, match="no-such.xml: no such environment file"):
         ParallelEnv(REPO / "no-such.xml")

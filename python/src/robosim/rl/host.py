@@ -11,6 +11,7 @@ import secrets
 import socket
 import subprocess
 import threading
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -76,7 +77,7 @@ class Batch:
     sonar: np.ndarray  # float32 (K, N, S), mm: each robot's sonars, 0 beyond its own
     pose: np.ndarray  # float32 (K, N, 3): x mm, y mm, heading degrees (0 to 360)
     contact: np.ndarray  # uint8 (K, N): 1 if the robot touched something during the action
-    metrics: np.ndarray  # float64 (K, M): each world's built-in metrics so far (Welcome.metrics)
+    metrics: np.ndarray  # float64 (K, M): each world's metrics so far (Welcome.metrics: built-ins, loop metrics)
     messages: np.ndarray | None  # float32 (K, N, N, m): the last message robot i heard from robot j, or zeros
     readings: np.ndarray | None  # float32 (K, N, R): each robot's sensors, a block of columns each (Layout)
 
@@ -107,8 +108,9 @@ class LearningHost:
                  sensors: bool = False, actuators: bool = False, random_headings: bool = False,
                  area_cell_m: float | None = None,
                  threads: int | None = None,
-                 episode_metric: str | None = None, web_port: int | None = None, viewer_port: int | None = None,
-                 params: dict[str, str] | None = None, robosim_home: str | os.PathLike[str] | None = None) -> None:
+                 episode_metric: str | None = None, loop_metrics: Sequence[str] = (), web_port: int | None = None,
+                 viewer_port: int | None = None, params: dict[str, str] | None = None,
+                 robosim_home: str | os.PathLike[str] | None = None) -> None:
         file = Path(path)
         if not file.is_file():
             raise HostError(f"{file}: no such environment file")
@@ -127,6 +129,8 @@ class LearningHost:
             command += ["--threads", str(threads)]
         if episode_metric is not None:
             command += ["--episode-metric", episode_metric]
+        for name in loop_metrics:
+            command += ["--loop-metric", name]
         if web_port is not None:
             command += ["--web-port", str(web_port)]
         if viewer_port is not None:

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from typing import Any
 
 import gymnasium
@@ -27,12 +27,14 @@ class SingleRobotEnv(gymnasium.Env):
                  message_size: int = 0,
                  max_steps: int = DEFAULT_MAX_STEPS,
                  reward: Reward = None, terminate: Terminate = None, episode_metric: str | None = None,
+                 loop_metrics: Sequence[str] = (),
                  random_headings: bool = False, area_cell_m: float | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
         self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors, actuators=actuators,
                                  message_size=message_size, max_steps=max_steps, reward=reward, terminate=terminate,
-                                 episode_metric=episode_metric, random_headings=random_headings,
+                                 episode_metric=episode_metric,
+                                 loop_metrics=loop_metrics, random_headings=random_headings,
                                  area_cell_m=area_cell_m, threads=1, web_port=web_port, viewer_port=viewer_port,
                                  params=params, robosim_home=robosim_home)
         agents = self._vector.agents

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -18,7 +18,8 @@ DEFAULT_MAX_STEPS = 500
 
 
 class Metrics(Mapping[str, np.ndarray]):
-    """The built-in metrics of K worlds by name, each (K,): views of one array (K, M), made when asked for."""
+    """The metrics of K worlds by name (the built-ins, then the loop metrics named), each (K,): views of one array
+    (K, M), made when asked for."""
 
     def __init__(self, names: list[str], values: np.ndarray) -> None:
         self._index = {name: i for i, name in enumerate(names)}
@@ -38,7 +39,7 @@ class Metrics(Mapping[str, np.ndarray]):
 class Transition:
     """What a reward or termination function sees of one step of K worlds (arrays of the batch, read-only):
     ``observations`` part by part (K, N, ...), the robots' ``pose`` (K, N, 3) and ``contact`` (K, N) whether observed
-    or not, the built-in ``metrics`` of each world's episode so far and before this step, by name (K,), ``actions``
+    or not, the ``metrics`` of each world's episode so far and before this step, by name (K,), ``actions``
     (K, N, Welcome.action_fields) and ``steps``: actions since each episode began (K,)."""
 
     observations: dict[str, np.ndarray]
@@ -51,8 +52,9 @@ class Transition:
 
 
 #: A reward: an array broadcastable to (K, N) from a transition ((K, N); (K, 1), a world's for each of its robots; or
-#: a number), or the name of a built-in metric whose increase in a step every robot of the world gets
-#: (``"area_covered"``: a share of the arena's cells newly visited).
+#: a number), or the name of a metric whose increase in a step every robot of the world gets: a built-in one
+#: (``"area_covered"``: a share of the arena's cells newly visited) or one of the world's loop functions' that
+#: ``loop_metrics`` names (``"collected_food"``).
 Reward = Callable[[Transition], np.ndarray] | str | None
 #: Which robots' episodes end (True where one does): an array broadcastable to (K, N) of bools.
 Terminate = Callable[[Transition], np.ndarray] | None
@@ -70,13 +72,16 @@ class VectorEnv:
     With ``episode_metric`` (a built-in metric's name or a ``robosim.sweep.Metric`` class on the host's class path),
     a world whose episode ends is measured from its episode's recording, as a sweep measures a run, and the value is
     added to the last reward of each robot that ends with it (``infos["episode_metric"]``: (K,), NaN for the other
-    worlds); one more exchange with the host an episode end.
+    worlds); one more exchange with the host an episode end. ``loop_metrics`` names metrics the world's loop functions
+    report (``Experiment.report``): each is a metric too (``Welcome.metrics``, ``Transition.metrics``), its newest value
+    in the episode (0 before their first report), so a reward may name one.
     World w of ``reset(seed=s)`` runs with seed s + w; its later episodes with seeds drawn from (s, w)."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
                  sensors: bool = False, actuators: bool = False, message_size: int = 0,
                  max_steps: int = DEFAULT_MAX_STEPS, reward: Reward = None,
-                 terminate: Terminate = None, episode_metric: str | None = None, random_headings: bool = False,
+                 terminate: Terminate = None, episode_metric: str | None = None,
+                 loop_metrics: Sequence[str] = (), random_headings: bool = False,
                  area_cell_m: float | None = None, threads: int | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
@@ -85,12 +90,14 @@ class VectorEnv:
         self.host = LearningHost(path, worlds=worlds, repeat=repeat, message_size=message_size, sensors=sensors,
                                  actuators=actuators, random_headings=random_headings, area_cell_m=area_cell_m,
                                  threads=threads,
-                                 episode_metric=episode_metric, web_port=web_port, viewer_port=viewer_port,
+                                 episode_metric=episode_metric,
+                                 loop_metrics=loop_metrics, web_port=web_port, viewer_port=viewer_port,
                                  params=params, robosim_home=robosim_home)
         self.welcome = self.host.welcome
         if isinstance(reward, str) and reward not in self.welcome.metrics:
             self.host.close()
-            raise ValueError(f"reward {reward!r} is not a built-in metric ({', '.join(self.welcome.metrics)})")
+            raise ValueError(f"reward {reward!r} is not a metric ({', '.join(self.welcome.metrics)}; a metric of "
+                             "the world's loop functions is one where loop_metrics names it)")
         self.layout = Layout(self.welcome, pose)
         self.agents = list(self.welcome.robots)
         self.num_worlds = worlds

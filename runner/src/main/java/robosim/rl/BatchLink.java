@@ -81,8 +81,8 @@ public final class BatchLink {
     }
 
     /** The largest reply of {@code batch}, bytes (its arrays and their names). */
-    static long replyBytes(int worlds, int robots, int sonars, int messageSize, int readings) {
-        return 256L + worlds * (8L + BatchWorlds.METRICS.size() * 8L + robots * (sonars * 4L + 12 + 1
+    static long replyBytes(int worlds, int robots, int sonars, int messageSize, int readings, int metrics) {
+        return 256L + worlds * (8L + metrics * 8L + robots * (sonars * 4L + 12 + 1
                 + (long) robots * messageSize * 4 + readings * 4L));
     }
 
@@ -132,8 +132,8 @@ public final class BatchLink {
         p.packString("step_ms").packLong(batch.spec().timeStepMs());
         p.packString("repeat").packInt(batch.repeat());
         p.packString("message_size").packInt(batch.messageSize());
-        p.packString("metrics").packArrayHeader(BatchWorlds.METRICS.size());
-        BatchWorlds.METRICS.forEach(m -> pack(p, m));
+        p.packString("metrics").packArrayHeader(batch.metricNames().size());
+        batch.metricNames().forEach(m -> pack(p, m));
         p.packString("arena_mm").packArrayHeader(4).packDouble(batch.spec().arena().minXMm())
                 .packDouble(batch.spec().arena().minYMm()).packDouble(batch.spec().arena().maxXMm())
                 .packDouble(batch.spec().arena().maxYMm());

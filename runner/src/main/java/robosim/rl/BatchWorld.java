@@ -51,6 +51,8 @@ final class BatchWorld {
     private final List<String>[] sensors;
     private final StepRequest[] lastRequests;
     private final boolean[] touched;
+    /** The newest value of each loop metric the batch names ({@link BatchWorlds#metricNames}), this episode. */
+    private final double[] loopMetrics;
     /** Null unless the batch measures a metric of each episode's recording. */
     private final EpisodeRecording recording;
     private final StepResponse[] responses;
@@ -79,6 +81,7 @@ final class BatchWorld {
         this.sensors = asked;
         this.lastRequests = new StepRequest[robots];
         this.touched = new boolean[robots];
+        this.loopMetrics = new double[batch.metricNames().size() - BatchWorlds.METRICS.size()];
         this.responses = new StepResponse[robots];
         this.recording = batch.episodeMetric() == null ? null
                 : new EpisodeRecording(batch.recordings(), index, batch.episodeMetric(), batch.areaCellM());
@@ -114,6 +117,7 @@ final class BatchWorld {
         step = 0;
         newWorld = true;
         Arrays.fill(touched, false);
+        Arrays.fill(loopMetrics, 0);
         forgetMessages();
         for (int i = 0; i < robots; i++) {
             requests[i] = new StepRequest(step, 0, 0, true, List.of(), sensors[i]);
@@ -164,6 +168,13 @@ final class BatchWorld {
             throw new IOException(e.getMessage(), e);
         }
         core.tally();
+        List<robosim.protocol.Report> reported = core.experimentReports();
+        for (int r = 0; r < reported.size(); r++) { // (the loop metrics the batch names: each one's newest value)
+            int column = batch.loopMetricColumn(reported.get(r).name());
+            if (column >= 0) {
+                loopMetrics[column] = reported.get(r).value();
+            }
+        }
         System.arraycopy(requests, 0, lastRequests, 0, robots);
         if (recording != null) {
             for (int i = 0; i < robots; i++) {
@@ -224,9 +235,12 @@ final class BatchWorld {
         }
         byte[] metrics = batch.metrics();
         MetricTally tally = core.metrics();
-        int m = index * tally.size() * 8;
+        int m = index * (tally.size() + loopMetrics.length) * 8;
         for (int k = 0; k < tally.size(); k++) {
             DOUBLE.set(metrics, m + k * 8, tally.value(k));
+        }
+        for (int k = 0; k < loopMetrics.length; k++) {
+            DOUBLE.set(metrics, m + (tally.size() + k) * 8, loopMetrics[k]);
         }
         LONG.set(batch.steps(), index * 8, step);
     }

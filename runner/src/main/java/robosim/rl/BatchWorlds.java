@@ -19,7 +19,7 @@ import robosim.environment.metrics.Metrics;
  * same actions give the same arrays, bit for bit, whatever the threads.
  */
 public final class BatchWorlds implements AutoCloseable {
-    /** The metrics of each world, in their column order (the registry's, {@link Metrics}). */
+    /** The built-in metrics of each world, their columns first (the registry's order, {@link Metrics}). */
     public static final List<String> METRICS = Metrics.names();
     /** A robot's action: linear velocity (mm/s), rotational velocity (deg/s), then its message's numbers. */
     public static final int VELOCITIES = 2;
@@ -44,6 +44,8 @@ public final class BatchWorlds implements AutoCloseable {
     private final ActuatorColumns actuatorColumns;
     private final byte[] readings;
     private final byte[] metrics;
+    /** The columns of {@link #metrics}: the built-ins, then the loop functions' the settings name. */
+    private final List<String> metricNames;
     private final byte[] steps;
 
     /**
@@ -59,11 +61,34 @@ public final class BatchWorlds implements AutoCloseable {
      *     {@link #readings()}; without, they are not read (no ray cast, no noise drawn)
      */
     public record Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
-            MetricChoice episodeMetric, boolean sensors, boolean actuators) {
+            MetricChoice episodeMetric, boolean sensors, boolean actuators, List<String> loopMetrics) {
         public Settings {
             if (!(areaCellM > 0) || Double.isInfinite(areaCellM)) {
                 throw new IllegalArgumentException("the area cell must be a side > 0 m, got " + areaCellM);
             }
+            loopMetrics = List.copyOf(loopMetrics);
+            String bad = loopMetricsProblem(loopMetrics);
+            if (bad != null) {
+                throw new IllegalArgumentException(bad);
+            }
+        }
+
+        /** What is wrong with these names of loop functions' metrics (not a report's name, a built-in's, twice), or null. */
+        public static String loopMetricsProblem(List<String> names) {
+            for (String name : names) {
+                String bad = robosim.protocol.Report.problem(name, 0);
+                if (bad != null || METRICS.contains(name) || names.indexOf(name) != names.lastIndexOf(name)) {
+                    return "loop metric \"" + robosim.protocol.Printable.of(name, 64) + "\": " + (bad != null ? bad
+                            : METRICS.contains(name) ? "a built-in metric's name" : "named twice");
+                }
+            }
+            return null;
+        }
+
+        /** Without metrics of the world's loop functions. */
+        public Settings(int repeat, int messageSize, boolean randomHeadings, double areaCellM, int threads,
+                MetricChoice episodeMetric, boolean sensors, boolean actuators) {
+            this(repeat, messageSize, randomHeadings, areaCellM, threads, episodeMetric, sensors, actuators, List.of());
         }
 
         /** Without acting through the robots' devices. */
@@ -109,7 +134,8 @@ public final class BatchWorlds implements AutoCloseable {
         this.sensorColumns = new SensorColumns(spec, settings.sensors());
         this.actuatorColumns = new ActuatorColumns(spec, settings.actuators(), VELOCITIES + messageSize);
         this.readings = new byte[count * robots * sensorColumns.width() * 4];
-        this.metrics = new byte[count * METRICS.size() * 8];
+        this.metricNames = java.util.stream.Stream.concat(METRICS.stream(), settings.loopMetrics().stream()).toList();
+        this.metrics = new byte[count * metricNames.size() * 8];
         this.steps = new byte[count * 8];
         this.threads = Math.max(1, Math.min(settings.threads(), count));
         this.crew = this.threads == 1 ? null : new StepCrew(this.threads);
@@ -299,9 +325,22 @@ public final class BatchWorlds implements AutoCloseable {
         return sensorColumns;
     }
 
-    /** float64 [worlds][{@link #METRICS}]: each world's episode so far. */
+    /** float64 [worlds][{@link #metricNames}]: each world's episode so far. */
     public byte[] metrics() {
         return metrics;
+    }
+
+    /** The column, among the loop metrics, of loop metric {@code name}; -1 when the batch does not name it. */
+    int loopMetricColumn(String name) {
+        return settings.loopMetrics().indexOf(name);
+    }
+
+    /**
+     * The metrics' columns: the built-ins ({@link #METRICS}), then the loop functions' metrics the settings name, each
+     * the newest value the world's loop functions reported in the episode (0 before their first report).
+     */
+    public List<String> metricNames() {
+        return metricNames;
     }
 
     /** int64 [worlds]: time steps since each world's episode began. */

@@ -94,6 +94,11 @@ public final class LearningHostMain implements Callable<Integer> {
             + "class on the class path, as a sweep's (default: none).")
     String episodeMetric;
 
+    @Option(names = "--loop-metric", paramLabel = "NAME", description = "A metric the world's loop functions report "
+            + "(Experiment.report), a column of the metrics after the built-ins: its newest value in the episode, 0 "
+            + "before their first report; a reward may name it (repeatable; default: none).")
+    List<String> loopMetrics = new java.util.ArrayList<>();
+
     @Option(names = "--threads", description = "Threads that step the worlds, at most the machine's cores (a thread "
             + "spins a little between steps) (default: the cores).")
     Integer threads;
@@ -132,7 +137,7 @@ public final class LearningHostMain implements Callable<Integer> {
         InetAddress loopback = InetAddress.getLoopbackAddress();
         MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
-                randomHeadings, areaCell.metres(), shares, metric, sensors, actuators));
+                randomHeadings, areaCell.metres(), shares, metric, sensors, actuators, loopMetrics));
                 ServerSocket server = new ServerSocket()) {
             server.bind(new InetSocketAddress(loopback, port), 1);
             WatchedWorld watch = viewerPort >= 0 || web.port() >= 0 ? new WatchedWorld(batch) : null;
@@ -238,6 +243,14 @@ public final class LearningHostMain implements Callable<Integer> {
         if (messageSize < 0 || messageSize > 64) {
             return "--message-size must be 0 to 64, got " + messageSize;
         }
+        String loop = BatchWorlds.Settings.loopMetricsProblem(loopMetrics);
+        if (loop != null) {
+            return "--loop-metric " + loop;
+        }
+        if (!loopMetrics.isEmpty() && spec.loopFunctions() == null) {
+            return "--loop-metric " + Printable.of(loopMetrics.get(0), 64) + ": " + env.file() + " has no loop "
+                    + "functions (<loopFunctions>) to report it";
+        }
         int cores = Runtime.getRuntime().availableProcessors();
         if (threads != null && (threads < 1 || threads > cores)) {
             return "--threads must be 1 to " + cores + " (this machine's cores: a helper spins between steps), got "
@@ -291,7 +304,7 @@ public final class LearningHostMain implements Callable<Integer> {
             }
         }
         long bytes = BatchLink.replyBytes(worlds, spec.robots().size(), sonars, messageSize,
-                new SensorColumns(spec, sensors).width());
+                new SensorColumns(spec, sensors).width(), BatchWorlds.METRICS.size() + loopMetrics.size());
         if (bytes > LinkFrames.MAX_BYTES) {
             return worlds + " worlds of " + spec.robots().size() + " robots make a step's reply of " + bytes
                     + " bytes, over the link's " + LinkFrames.MAX_BYTES + ": fewer worlds (or a smaller message)";

@@ -127,6 +127,11 @@ public final class SimulationCore {
         return experiment == null ? null : experiment.code();
     }
 
+    /** The metrics the loop functions reported for the last step completed (none: none, or no loop functions). */
+    public List<robosim.protocol.Report> experimentReports() {
+        return experiment == null ? List.of() : experiment.reports();
+    }
+
     /** Why the loop functions ended the run, after the last step completed; null while it goes on (or it has none). */
     public String experimentEnd() {
         return experiment == null ? null : experiment.endReason();
