@@ -18,8 +18,16 @@ WELCOME: dict[str, Any] = {"link": "robosim-loop-link", "version": 1, "step_ms":
                            "output_directory": "/tmp", "objects": ["box"], "lights": ["l"]}
 
 
+def pair() -> tuple[socket.socket, socket.socket]:
+    """A connected pair whose reads give up after 10 s: a test that goes wrong fails, it does not hang."""
+    mine, theirs = socket.socketpair()
+    mine.settimeout(10)
+    theirs.settimeout(10)
+    return mine, theirs
+
+
 def state(step: int, names: list[list[str]]) -> dict[str, Any]:
-    return {"step": step, "names": names, "robots": [[100.0, 200.0, 0.0, True, 0, [0x00FF00]]],
+    return {"step": step, "seed": -3, "names": names, "robots": [[100.0, 200.0, 0.0, True, 0, [0x00FF00]]],
             "objects": [[500.0, 500.0, 0.0, 0]], "lights": [True]}
 
 
@@ -56,14 +64,14 @@ def test_a_class_says_the_calls_it_defines_and_reset_with_its_init() -> None:
 
 
 def test_calls_bring_the_world_and_requests_are_answered() -> None:
-    mine, theirs = socket.socketpair()
+    mine, theirs = pair()
     sim = Frames(theirs)
     code = Counting()
     frames = Frames(mine)
     world = Experiment(frames, WELCOME)
     assert world.random.next_long() != 0 and world.seed == -3 and world.arena_width_mm == 2000.0
     done: list[int] = []
-    t = threading.Thread(target=lambda: done.append(serve(frames, code, world)))
+    t = threading.Thread(target=lambda: done.append(serve(frames, code, world)), daemon=True)
     t.start()
     sim.send(["init", state(0, [["r", "foot-bot"]])])
     assert sim.receive() == ["move_object", 0, 700.0, 700.0, 10.0]
@@ -82,18 +90,31 @@ def test_calls_bring_the_world_and_requests_are_answered() -> None:
     theirs.close()
 
 
-def test_a_call_that_raises_sends_its_traceback_and_ends() -> None:
-    mine, theirs = socket.socketpair()
+def test_a_call_that_raises_sends_its_traceback_and_answers_destroy() -> None:
+    mine, theirs = pair()
     sim = Frames(theirs)
     frames = Frames(mine)
     world = Experiment(frames, WELCOME)
     done: list[int] = []
-    t = threading.Thread(target=lambda: done.append(serve(frames, Raising(), world)))
+    t = threading.Thread(target=lambda: done.append(serve(frames, Raising(), world)), daemon=True)
     t.start()
     sim.send(["pre_step", state(0, [["r", "foot-bot"]])])
     failed = sim.receive()
-    t.join(10)
     assert failed[0] == "failed" and failed[1].rstrip().endswith("RuntimeError: no nest here")
-    assert "in pre_step" in failed[1] and done == [1]
+    assert "in pre_step" in failed[1]
+    sim.send(["destroy", state(0, [])])  # (after a failure it still answers: its files are closed)
+    assert sim.receive() == ["done", None]
+    theirs.shutdown(socket.SHUT_RDWR)
+    t.join(10)
+    assert done == [1], "its exit says it failed"
     mine.close()
     theirs.close()
+
+
+def test_a_negative_index_and_a_value_too_large_raise_as_values() -> None:
+    world = Experiment(Frames(pair()[0]), WELCOME)
+    world._see("init", state(0, [["r", "foot-bot"]]))
+    with pytest.raises(IndexError, match="no robot -1"):
+        world.robot_x_mm(-1)
+    with pytest.raises(ExperimentValueError, match="tell: a frame of"):
+        world.tell(0, "x" * (1 << 20))

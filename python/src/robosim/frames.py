@@ -50,6 +50,10 @@ class Frames:
     def send(self, value: Any) -> None:
         self._sock.sendall(pack(value))
 
+    def send_packed(self, frame: bytes) -> None:
+        """Sends a frame made already (:func:`pack`)."""
+        self._sock.sendall(frame)
+
     def receive(self) -> Any:
         """The next frame's value; a LinkError when the connection ends or the frame is out of bounds."""
         head = self._read(_LENGTH.size)

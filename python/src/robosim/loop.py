@@ -16,12 +16,15 @@ import importlib.util
 import os
 import socket
 import sys
+import threading
 import traceback
+from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from robosim.frames import Frames, LinkClosed, LinkError
+from robosim.frames import Frames, LinkClosed, LinkError, pack
 from robosim.portable import SplittableRandom
+from robosim.runner import _end_with_stdin, _stdin_is_a_pipe
 
 #: The link's name and version, said in the hello.
 LINK = "robosim-loop-link"
@@ -35,6 +38,10 @@ EXIT_FAILED = 1
 EXIT_UNUSABLE = 2
 
 _NO_DEFAULT = object()
+
+
+class LinkLost(BaseException):  # noqa: N818 (a BaseException, as SimulationOver: ``except Exception`` lets it by)
+    """The loop link broke under a request (the simulator gone, or it refused the request as malformed)."""
 
 
 class ExperimentValueError(ValueError):
@@ -90,16 +97,21 @@ class Experiment:
         self._object_names: tuple[str, ...] = tuple(_texts(welcome, "objects"))
         self._light_names: tuple[str, ...] = tuple(_texts(welcome, "lights"))
         self.step = 0
+        self._ended = False
         self._names: list[tuple[str, str]] = []
         self._robots: list[list[Any]] = []
         self._objects: list[list[Any]] = []
         self._lights: list[bool] = []
 
-    def _see(self, state: Any) -> None:
-        """Takes the world's state sent with a call."""
+    def _see(self, call: str, state: Any) -> None:
+        """Takes the world's state sent with a call (at ``init`` and ``reset``, the episode's seed with it)."""
         if not isinstance(state, dict):
             raise LinkError(f"a call's state that is not a map: {state!r:.80}")
         self.step = int(state["step"])
+        if call in ("init", "reset"):
+            self.seed = int(state["seed"])
+            self.random = SplittableRandom(self.seed ^ SEED_MIX)
+        self._ended = False
         self._names.extend((str(n), str(t)) for n, t in state["names"])
         self._robots = state["robots"]
         self._objects = state["objects"]
@@ -108,16 +120,30 @@ class Experiment:
                 or len(self._lights) != len(self._light_names):
             raise LinkError("a call's state whose robots, objects or lights are not the welcome's")
 
+    @staticmethod
+    def _at(rows: Sequence[Any], i: int, what: str) -> Any:
+        """Row ``i`` of ``rows``: an IndexError naming ``what`` where there is none (a negative ``i`` too)."""
+        if not 0 <= i < len(rows):
+            raise IndexError(f"no {what} {i} (there are {len(rows)})")
+        return rows[i]
+
     def _request(self, verb: str, *args: Any) -> Any:
-        self._frames.send([verb, *args])
-        reply = self._frames.receive()
+        try:
+            frame = pack([verb, *args])
+        except LinkError as e:  # (a frame over 1 MiB: a value too large, as the simulator would refuse one)
+            raise ExperimentValueError(f"{verb}: {e}") from None
+        try:
+            self._frames.send_packed(frame)
+            reply = self._frames.receive()
+        except (OSError, LinkError) as e:
+            raise LinkLost(f"{verb}: {e}") from e
         if isinstance(reply, list) and len(reply) == 2 and reply[0] == "ok":
             return reply[1]
         if isinstance(reply, list) and len(reply) == 3 and reply[0] == "error":
             if reply[1] == "value":
                 raise ExperimentValueError(f"{verb}: {reply[2]}")
-            raise LinkError(f"{verb}: {reply[2]}")
-        raise LinkError(f"{verb}: a reply that is not one: {reply!r:.80}")
+            raise LinkLost(f"{verb}: {reply[2]}")
+        raise LinkLost(f"{verb}: a reply that is not one: {reply!r:.80}")
 
     def parameter(self, name: str, default: Any = _NO_DEFAULT) -> Any:
         """Parameter ``name``: with a number as default, as a float (a value that is not one is a ValueError naming
@@ -141,31 +167,31 @@ class Experiment:
         return len(self._robots)
 
     def robot_name(self, robot: int) -> str:
-        return self._names[robot][0]
+        return self._at(self._names, robot, "robot")[0]
 
     def robot_type(self, robot: int) -> str:
-        return self._names[robot][1]
+        return self._at(self._names, robot, "robot")[1]
 
     def robot_x_mm(self, robot: int) -> float:
-        return float(self._robots[robot][0])
+        return float(self._at(self._robots, robot, "robot")[0])
 
     def robot_y_mm(self, robot: int) -> float:
-        return float(self._robots[robot][1])
+        return float(self._at(self._robots, robot, "robot")[1])
 
     def robot_heading_deg(self, robot: int) -> float:
-        return float(self._robots[robot][2])
+        return float(self._at(self._robots, robot, "robot")[2])
 
     def present(self, robot: int) -> bool:
         """False once it has left the run."""
-        return bool(self._robots[robot][3])
+        return bool(self._at(self._robots, robot, "robot")[3])
 
     def leds(self, robot: int) -> tuple[int, ...]:
         """Its LEDs' colours as it last set them (empty: it has none)."""
-        return tuple(self._robots[robot][5])
+        return tuple(self._at(self._robots, robot, "robot")[5])
 
     def carrying(self, robot: int) -> int:
         """The object it holds in its gripper, or -1."""
-        return int(self._robots[robot][4])
+        return int(self._at(self._robots, robot, "robot")[4])
 
     def move_robot(self, robot: int, x_mm: float, y_mm: float, heading_deg: float) -> bool:
         """Puts it at a pose, letting go of what it holds; False, and nothing moved, where it would overlap."""
@@ -190,20 +216,20 @@ class Experiment:
         return len(self._objects)
 
     def object_name(self, obj: int) -> str:
-        return self._object_names[obj]
+        return self._at(self._object_names, obj, "object")
 
     def object_x_mm(self, obj: int) -> float:
-        return float(self._objects[obj][0])
+        return float(self._at(self._objects, obj, "object")[0])
 
     def object_y_mm(self, obj: int) -> float:
-        return float(self._objects[obj][1])
+        return float(self._at(self._objects, obj, "object")[1])
 
     def object_heading_deg(self, obj: int) -> float:
-        return float(self._objects[obj][2])
+        return float(self._at(self._objects, obj, "object")[2])
 
     def carrier(self, obj: int) -> int:
         """The robot holding it, or -1."""
-        return int(self._objects[obj][3])
+        return int(self._at(self._objects, obj, "object")[3])
 
     def move_object(self, obj: int, x_mm: float, y_mm: float, heading_deg: float) -> bool:
         """Puts it at a pose, let go of by whoever held it; False, and nothing moved, where it would overlap."""
@@ -238,10 +264,10 @@ class Experiment:
         return len(self._lights)
 
     def light_name(self, light: int) -> str:
-        return self._light_names[light]
+        return self._at(self._light_names, light, "light")
 
     def light_on(self, light: int) -> bool:
-        return bool(self._lights[light])
+        return bool(self._at(self._lights, light, "light"))
 
     def switch_light(self, light: int, on: bool) -> None:
         self._request("switch_light", light, bool(on))
@@ -256,6 +282,7 @@ class Experiment:
     def end(self, reason: str = "") -> None:
         """Ends the run after this step, as planned, with ``reason`` as its end's reason."""
         self._request("end", reason)
+        self._ended = True
 
 
 def _whole(welcome: dict[str, Any], key: str) -> int:
@@ -302,29 +329,44 @@ def defined(made: type[LoopFunctions]) -> list[str]:
 
 
 def serve(frames: Frames, code: LoopFunctions, world: Experiment) -> int:
-    """Answers the simulator's calls until it closes the link; the exit code."""
+    """Answers the simulator's calls until it closes the link; the exit code (1 if a call failed). After a failure it
+    goes on answering: the simulator still calls ``destroy``, so the code's files are closed."""
+    failed = False
     while True:
         try:
             call = frames.receive()
         except LinkClosed:
-            return 0
+            return EXIT_FAILED if failed else 0
         if not isinstance(call, list) or len(call) != 2 or call[0] not in CALLS:
             raise LinkError(f"a call that is not one: {call!r:.80}")
-        world._see(call[1])
+        world._see(call[0], call[1])
         result: bool | None = None
         try:
             if call[0] == "post_step":
                 code.post_step(world)
-                result = bool(code.finished(world))
+                result = not world._ended and bool(code.finished(world))  # (as Java's: no finished after an end)
             else:
                 getattr(code, call[0])(world)
-        except (LinkError, OSError):
-            raise
+        except LinkLost as e:
+            raise LinkError(str(e)) from e
         except BaseException as e:  # (KeyboardInterrupt and SystemExit too: the call did not return)
-            account = "".join(traceback.format_exception(e.with_traceback(_theirs(e.__traceback__))))
-            frames.send(["failed", account])
-            return EXIT_FAILED
+            frames.send(["failed", _account(e)])
+            failed = True
+            continue
         frames.send(["done", result])
+
+
+#: The longest account of a failure sent, characters: its head and its last line beyond that.
+MAX_ACCOUNT = 8000
+
+
+def _account(e: BaseException) -> str:
+    """``e``'s traceback from the loop functions' own frames on, cut to :data:`MAX_ACCOUNT` (its last line kept)."""
+    account = "".join(traceback.format_exception(e.with_traceback(_theirs(e.__traceback__))))
+    if len(account) <= MAX_ACCOUNT:
+        return account
+    last = account.rstrip().rsplit("\n", 1)[-1][: MAX_ACCOUNT // 2]
+    return account[: MAX_ACCOUNT // 2] + "\n...\n" + last + "\n"
 
 
 def _theirs(tb: Any) -> Any:
@@ -370,6 +412,8 @@ def main(argv: list[str] | None = None) -> int:
     host, sep, port = link.rpartition(":")
     if not sep or not port.isdigit():
         parser.error("ROBOSIM_LINK (HOST:PORT) is not set: the simulator starts this for a world's loop functions")
+    if os.environ.get("ROBOSIM_LINK_KEY") and _stdin_is_a_pipe():  # (the simulator's pipe: its end ends this too)
+        threading.Thread(target=_end_with_stdin, name="stdin-watch", daemon=True).start()
     try:
         made: type[LoopFunctions] | None = load(args.script)
         unmade: str | None = None

@@ -11,8 +11,10 @@
  * <tr><td>{@code rl-worlds[t]}</td><td>daemons, one fewer than the threads asked for (the cores, at most the
  * worlds; {@link robosim.rl.StepCrew}): each steps its share of the worlds while {@code main} steps its own, and
  * nothing else; between steps it spins for half a millisecond, then parks</td></tr>
- * <tr><td>{@code link-deadline}</td><td>the robot link's (robosim.protocol.link.LinkFrames): closes a learner's
- * connection whose hello is late (a deadline)</td></tr>
+ * <tr><td>{@code link-deadline}</td><td>the links' (robosim.protocol.link.LinkFrames): closes a learner's
+ * connection whose hello is late (a deadline), and a world's loop link whose script's answer is late</td></tr>
+ * <tr><td>{@code script-output[loop]}</td><td>robosim.protocol.link.ScriptProcess: one a world whose loop functions
+ * are a Python script, logging its output</td></tr>
  * <tr><td>{@code rl-viewer[n]}</td><td>with {@code --viewer-port} or {@code --web-port}: one a viewer, as an
  * Environment's viewer workers (robosim.environment.server), fed world 0 through a bounded queue; with them that
  * package's {@code accept-viewers} and {@code connection-watch}, and with {@code --web-port} the browser viewer's

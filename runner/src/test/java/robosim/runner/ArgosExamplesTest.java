@@ -160,6 +160,7 @@ class ArgosExamplesTest {
             Moves m = moves(reader, 1, "");
             // (it starts heading east and shuttles between the east and west walls: at each, it turns away on one
             // wheel, grazing the wall for about 38 steps, as ARGoS's foot-bot turns into what it sees head on)
+            assertTrue(m.touches >= 4, "it met a wall again and again (7 times here): " + m);
             assertTrue(m.longestTouch < 60, "each touch ends within 6 s: " + m);
             assertTrue(m.travelled[0] > 10_000, "it kept moving (15 m at most): " + m);
         }
@@ -176,14 +177,16 @@ class ArgosExamplesTest {
         }
     }
 
-    /** What a world's robots did, step by step: their steps, those touching anything, those touching a robot. */
-    private record Moves(int robotSteps, int touching, int touchingRobots, double[] travelled, int longestTouch,
-            int longestRobotTouch) {
+    /**
+     * What a world's robots did, step by step: their steps, those touching anything, those touching a robot, how far
+     * each travelled, how many touches (a robot's steps of contact in a row) and the longest.
+     */
+    private record Moves(int robotSteps, int touching, int touchingRobots, double[] travelled, int touches,
+            int longestTouch) {
         @Override
         public String toString() {
             return robotSteps + " robot steps, " + touching + " touching, " + touchingRobots + " touching a robot, "
-                    + "the longest touch " + longestTouch + " steps, of a robot " + longestRobotTouch
-                    + " steps, travelled (mm) " + java.util.Arrays.toString(java.util.Arrays.stream(travelled)
+                    + touches + " touches, the longest " + longestTouch + " steps, travelled (mm) " + java.util.Arrays.toString(java.util.Arrays.stream(travelled)
                     .map(Math::rint).toArray());
         }
     }
@@ -195,9 +198,8 @@ class ArgosExamplesTest {
         int touching = 0;
         double[] travelled = new double[robots];
         int[] touch = new int[robots];
-        int[] robotTouch = new int[robots];
+        int touches = 0;
         int longestTouch = 0;
-        int longestRobotTouch = 0;
         PoseUpdate before = reader.step(0).update();
         for (int k = 1; k < reader.steps(); k++) {
             PoseUpdate now = reader.step(k).update();
@@ -207,15 +209,14 @@ class ArgosExamplesTest {
                 boolean robot = !prefix.isEmpty() && v.contact().startsWith(prefix);
                 touchingRobots += robot ? 1 : 0;
                 touch[v.robot()] = v.contact().isEmpty() ? 0 : touch[v.robot()] + 1;
-                robotTouch[v.robot()] = robot ? robotTouch[v.robot()] + 1 : 0;
+                touches += touch[v.robot()] == 1 ? 1 : 0;
                 longestTouch = Math.max(longestTouch, touch[v.robot()]);
-                longestRobotTouch = Math.max(longestRobotTouch, robotTouch[v.robot()]);
                 travelled[v.robot()] += Math.hypot(now.xMm(v.robot()) - before.xMm(v.robot()),
                         now.yMm(v.robot()) - before.yMm(v.robot()));
             }
             before = now;
         }
-        return new Moves(robotSteps, touching, touchingRobots, travelled, longestTouch, longestRobotTouch);
+        return new Moves(robotSteps, touching, touchingRobots, travelled, touches, longestTouch);
     }
 
     @Test

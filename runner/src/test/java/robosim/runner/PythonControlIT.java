@@ -117,11 +117,13 @@ class PythonControlIT {
                         assert world.move_robot(1, 1500, 1500, 450)
                         assert world.robot_x_mm(1) == 1500 and world.robot_heading_deg(1) == 90
                         assert not world.move_robot(1, 500, 500, 0), "onto r1"
-                        try:
-                            world.report("not a name!", 1)
-                            raise AssertionError("a bad name taken")
-                        except ExperimentValueError:
-                            pass
+                        for bad in (lambda: world.report("not a name!", 1), lambda: world.switch_light(-1, True),
+                                    lambda: world.paint_disc(0, 0, 10, 0x1000000), lambda: world.tell(9, "x")):
+                            try:
+                                bad()
+                                raise AssertionError("a bad value taken")
+                            except ExperimentValueError:
+                                pass
 
                     def post_step(self, world: Experiment) -> None:
                         world.report("seen", world.step)
@@ -141,6 +143,9 @@ class PythonControlIT {
                             print("about to divide")
                             1 / 0
 
+                    def destroy(self, world):
+                        print("destroyed after the failure")
+
                 loop_functions = Raises
                 """);
         Files.writeString(dir.resolve("syntax.py"), "def oops(:\n    pass\n");
@@ -152,6 +157,27 @@ class PythonControlIT {
                         world._request("launch_missiles", 1)
 
                 loop_functions = BadCall
+                """);
+        Files.writeString(dir.resolve("garbage.py"), """
+                from robosim.loop import LoopFunctions
+
+                class Garbage(LoopFunctions):
+                    def init(self, world):
+                        world._frames.send_packed(bytes([0, 0, 0, 1, 0xC1]))  # (a byte MessagePack never uses)
+                        world._frames.receive()
+
+                loop_functions = Garbage
+                """);
+        Files.writeString(dir.resolve("quits.py"), """
+                import os
+                from robosim.loop import LoopFunctions
+
+                class Quits(LoopFunctions):
+                    def pre_step(self, world):
+                        if world.step == 2:
+                            os._exit(3)
+
+                loop_functions = Quits
                 """);
         Path world = Files.writeString(dir.resolve("loop.xml"), """
                 <environment name="loop" timeStepMs="100" seed="1">
@@ -181,6 +207,7 @@ class PythonControlIT {
         assertTrue(raises.stderr().contains("loop functions python:" + dir.resolve("raises.py") + " failed in preStep"
                 + " at step 3: ZeroDivisionError: division by zero\n"), raises.stderr());
         assertTrue(raises.stderr().contains("loop: about to divide"), "its output logged: " + raises.stderr());
+        assertTrue(raises.stderr().contains("loop: destroyed after the failure"), "destroy called: " + raises.stderr());
         assertEquals(1, raises.stderr().split("Traceback \\(most recent call last\\)", -1).length - 1,
                 "the traceback once: " + raises.stderr());
 
@@ -195,6 +222,18 @@ class PythonControlIT {
         assertEquals(4, bad.exit(), bad.stdout() + bad.stderr());
         assertTrue(bad.stderr().contains("failed in init at step 0: its script badcall.py made a bad call: no request "
                 + "launch_missiles"), bad.stderr());
+
+        ScriptRun garbage = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
+                "script=garbage.py");
+        assertEquals(4, garbage.exit(), garbage.stdout() + garbage.stderr());
+        assertTrue(garbage.stderr().contains("failed in init at step 0: its script garbage.py made a bad call: a frame "
+                + "that is not MessagePack"), garbage.stderr());
+
+        ScriptRun quits = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
+                "script=quits.py");
+        assertEquals(4, quits.exit(), quits.stdout() + quits.stderr());
+        assertTrue(Pattern.compile("failed in preStep at step 2: its script quits.py (exited \\(exit code 3\\)|ended "
+                + "the link) in pre_step").matcher(quits.stderr()).find(), quits.stderr());
     }
 
     @Test

@@ -190,6 +190,9 @@ final class ExperimentCode implements Experiment {
         try {
             c.run();
         } catch (Exception | LinkageError | StackOverflowError e) {
+            if (e instanceof InterruptedException) {
+                Thread.currentThread().interrupt(); // (the run's end, kept for whoever waits next)
+            }
             code = null; // (called no more)
             throw new ExperimentFailure("loop functions " + spec.className() + " failed in " + what
                     + " at step " + step + ": " + Printable.of(String.valueOf(e), 300), e);

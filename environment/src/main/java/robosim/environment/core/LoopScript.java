@@ -56,6 +56,8 @@ final class LoopScript implements LoopFunctions {
             List.of("calls"));
     /** How long the script has from its start to its hello, ms (an interpreter's start and the script's imports). */
     static final long CONNECT_MS = 60_000;
+    /** How long one call of the script may take, its requests served, ms: then the run ends, the script stopped. */
+    static final long CALL_MS = 60_000;
     /** Connections whose hello was refused (not the script's) before the script's own is given up on. */
     static final int MAX_STRANGERS = 8;
     /** The name the script's output is logged under. */
@@ -86,8 +88,11 @@ final class LoopScript implements LoopFunctions {
         this.script = ControlScripts.script(control);
     }
 
-    /** A script that ended without its answer, or reported its failure: says why, in its message. */
-    static final class ScriptFailure extends IOException {
+    /**
+     * The link's failure: the script ended, broke the link, made a bad call or did not answer in time; the link is
+     * closed and the script stopped before it is thrown (nothing more is asked of it, its destroy neither).
+     */
+    static class ScriptFailure extends IOException {
         private static final long serialVersionUID = 1L;
 
         ScriptFailure(String why) {
@@ -97,6 +102,15 @@ final class LoopScript implements LoopFunctions {
         @Override
         public String toString() {
             return getMessage();
+        }
+    }
+
+    /** The script's code raised in a call (its traceback logged): the link goes on, so its destroy is still called. */
+    static final class CodeFailure extends ScriptFailure {
+        private static final long serialVersionUID = 1L;
+
+        CodeFailure(String lastLine) {
+            super(lastLine);
         }
     }
 
@@ -163,7 +177,6 @@ final class LoopScript implements LoopFunctions {
                     channel = peer;
                     return;
                 } catch (LinkHello.HelloRefused e) {
-                    peer.close();
                     refused = e.getMessage();
                     if (strangers + 1 >= MAX_STRANGERS) {
                         throw new ScriptFailure(process.ended("was not heard", ": " + MAX_STRANGERS
@@ -172,6 +185,9 @@ final class LoopScript implements LoopFunctions {
                     LOG.warn("loop functions: a hello on their loop link refused: {}", refused);
                 }
             }
+        } catch (java.nio.channels.ClosedByInterruptException e) {
+            close();
+            throw new InterruptedException("the run is over");
         } catch (IOException | RuntimeException | InterruptedException e) {
             close();
             throw e;
@@ -197,8 +213,21 @@ final class LoopScript implements LoopFunctions {
         }
     }
 
-    /** The script's hello, checked, and the world's facts for it. */
+    /** The script's hello, checked, and the world's facts for it; the connection closed if it fails. */
     private void hello(SocketChannel peer, String key, Experiment world) throws IOException {
+        try {
+            welcome(peer, key, world);
+        } catch (IOException | RuntimeException e) {
+            peer.close();
+            if (e instanceof LinkHello.HelloRefused r) {
+                throw r;
+            }
+            throw new ScriptFailure("its script " + script.getFileName() + " could not be welcomed: "
+                    + LinkFrames.oneLine(String.valueOf(e.getMessage())));
+        }
+    }
+
+    private void welcome(SocketChannel peer, String key, Experiment world) throws IOException {
         peer.socket().setTcpNoDelay(true);
         in = new DataInputStream(new BufferedInputStream(peer.socket().getInputStream()));
         out = new DataOutputStream(new BufferedOutputStream(peer.socket().getOutputStream()));
@@ -272,34 +301,51 @@ final class LoopScript implements LoopFunctions {
         packer.clear();
         packer.packArrayHeader(2).packString(call);
         packState(world);
+        java.util.concurrent.ScheduledFuture<?> late = LinkFrames.closeAfter(channel, CALL_MS);
         try {
             LinkFrames.write(out, packer.toByteArray());
             while (true) {
                 byte[] frame = LinkFrames.read(in);
                 if (frame == null) {
-                    throw new ScriptFailure(process.ended("closed its link", " in " + call));
+                    throw new IOException("it closed its link");
                 }
                 Boolean end = answer(frame, world);
                 if (end != null) {
+                    if (!late.cancel(false)) {
+                        throw new IOException("late"); // (its answer came as the deadline closed the link)
+                    }
                     return end;
                 }
             }
-        } catch (ScriptFailure e) {
+        } catch (CodeFailure e) {
+            late.cancel(false);
             throw e;
-        } catch (IOException e) {
-            throw new ScriptFailure(process.ended("ended the link", " in " + call + ": " + e.getMessage()));
+        } catch (IOException | RuntimeException e) {
+            boolean inTime = late.cancel(false);
+            boolean interrupted = Thread.currentThread().isInterrupted();
+            String why = e instanceof ScriptFailure ? e.getMessage()
+                    : !inTime ? "its script " + script.getFileName() + " did not answer " + call + " within " + CALL_MS
+                            + " ms"
+                    : interrupted ? null
+                    : process.ended("ended the link", " in " + call + ": " + LinkFrames.oneLine(e.getMessage()));
+            close();
+            if (why == null) {
+                throw new InterruptedException("the run is over");
+            }
+            throw new ScriptFailure(why);
         }
     }
 
     /**
-     * The world as the script sees it in a call: {@code {"step", "names": [[NAME, TYPE]...] (robots not named
+     * The world as the script sees it in a call: {@code {"step", "seed" (the episode's), "names": [[NAME, TYPE]...] (robots not named
      * before), "robots": [[X, Y, HEADING, PRESENT, CARRYING, [LED...]]...], "objects": [[X, Y, HEADING, CARRIER]...],
      * "lights": [ON...]}}.
      */
     private void packState(Experiment world) throws IOException {
         int robots = world.robots();
-        packer.packMapHeader(5);
+        packer.packMapHeader(6);
         packer.packString("step").packLong(world.step());
+        packer.packString("seed").packLong(world.seed());
         packer.packString("names").packArrayHeader(robots - named);
         for (int r = named; r < robots; r++) {
             packer.packArrayHeader(2).packString(world.robotName(r)).packString(world.robotType(r));
@@ -347,14 +393,19 @@ final class LoopScript implements LoopFunctions {
             }
             switch (verb) {
                 case "done":
-                    return args.length == 1 && Boolean.TRUE.equals(args[0]);
+                    if (args.length != 1 || args[0] != null && !(args[0] instanceof Boolean)) {
+                        throw new ProtocolException("done takes one result, true, false or nil");
+                    }
+                    return Boolean.TRUE.equals(args[0]);
                 case "failed":
-                    String account = args.length == 1 && args[0] instanceof String s ? s : "(no account)";
-                    for (String line : account.strip().split("\n")) {
-                        LOG.warn("loop functions: {}", Printable.of(line, 1000));
+                    if (args.length != 1 || !(args[0] instanceof String account)) {
+                        throw new ProtocolException("failed takes one text, its account");
                     }
                     String[] lines = account.strip().split("\n");
-                    throw new ScriptFailure(Printable.of(lines[lines.length - 1], 300));
+                    for (String line : lines) {
+                        LOG.warn("loop functions: {}", Printable.of(line, 1000));
+                    }
+                    throw new CodeFailure(Printable.of(lines[lines.length - 1], 300));
                 default:
                     reply(serve(verb, args, world));
                     return null;
@@ -365,7 +416,8 @@ final class LoopScript implements LoopFunctions {
             error("value", e.getMessage());
             return null;
         } catch (ProtocolException | MessagePackException e) {
-            String why = LinkFrames.oneLine(e.getMessage());
+            String why = e instanceof MessagePackException ? "a frame that is not MessagePack"
+                    : LinkFrames.oneLine(e.getMessage());
             error("bad_call", why);
             throw new ScriptFailure("its script " + script.getFileName() + " made a bad call: " + why);
         }
@@ -449,18 +501,25 @@ final class LoopScript implements LoopFunctions {
         throw new ProtocolException("true or false expected, got " + kind(o));
     }
 
+    /** A whole number as an index; one out of any range refused as a value (the Experiment checks the rest). */
     private static int index(Object o) throws ProtocolException {
-        if (o instanceof Long n && n >= 0 && n <= Integer.MAX_VALUE) {
-            return n.intValue();
+        if (!(o instanceof Long n)) {
+            throw new ProtocolException("an index (a whole number) expected, got " + kind(o));
         }
-        throw new ProtocolException("an index (a whole number from 0) expected, got " + kind(o));
+        if (n < 0 || n > Integer.MAX_VALUE) {
+            throw new IndexOutOfBoundsException("no index " + n);
+        }
+        return n.intValue();
     }
 
     private static int colour(Object o) throws ProtocolException {
-        if (o instanceof Long n && n >= 0 && n <= 0xFFFFFF) {
-            return n.intValue();
+        if (!(o instanceof Long n)) {
+            throw new ProtocolException("a colour (a whole number, 0xRRGGBB) expected, got " + kind(o));
         }
-        throw new ProtocolException("a colour 0xRRGGBB expected, got " + kind(o));
+        if (n < 0 || n > 0xFFFFFF) {
+            throw new IllegalArgumentException("a colour is 0xRRGGBB (0 to 16777215), got " + n);
+        }
+        return n.intValue();
     }
 
     private static String kind(Object o) {

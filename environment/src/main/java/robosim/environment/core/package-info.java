@@ -1,7 +1,8 @@
 /**
- * The simulation core: plain objects, no sockets, no threads, and it calls out only to a world's loop functions
+ * The simulation core: plain objects, no threads, and it calls out only to a world's loop functions
  * ({@link robosim.environment.core.ExperimentCode}: the experiment's own code, between a step's phases, on the calling
- * thread).
+ * thread; loop functions in Python, {@link robosim.environment.core.LoopScript}, are the one socket here: the loop
+ * link to their script, each call's answer awaited under a deadline).
  * {@link robosim.environment.core.WorldSpec} is the loaded file;
  * {@link robosim.environment.core.SimulationCore} owns the world state
  * ({@link robosim.environment.core.EnvironmentMap}) and turns one step's requests into that step's

@@ -39,7 +39,9 @@
  *     pause, the robots' deadlines, the end; a platform thread, or in a one-JVM run a virtual one beside the
  *     control code ({@link robosim.environment.run.LoopThread})</td><td>its inbox, timed to the next deadline
  *     (a virtual loop: untimed, {@code loop-watch} wakes it); its writes to robots and shared connections (one
- *     frame each after every event), which the connection watch bounds; a full recording queue</td></tr>
+ *     frame each after every event), which the connection watch bounds; a full recording queue; with loop
+ *     functions in Python, each call's answer on the loop link (a deadline of
+ *     {@code LoopScript.CALL_MS} closes the link)</td></tr>
  * <tr><td>{@code loop-watch}</td><td>{@link robosim.environment.run.LoopThread}</td><td>with a virtual loop only:
  *     wakes it at each tick, and gives virtual threads a second carrier when it has not come round for a
  *     second</td><td>a timed wait on the loop's end</td></tr>
@@ -79,6 +81,11 @@
  * <tr><td>{@code robot-output[name]}</td><td>{@code robosim.environment.control.RobotLaunches}
  *     ({@code --launch-robots})</td><td>one per robot process the control port's {@code add} started: pipes its
  *     output</td><td>its read of that output</td></tr>
+ * <tr><td>{@code script-output[loop]}</td><td>{@code robosim.protocol.link.ScriptProcess}, for
+ *     {@code robosim.environment.core.LoopScript}</td><td>a daemon, while a world's loop functions in Python run:
+ *     logs their script's output line by line</td><td>its read of that output</td></tr>
+ * <tr><td>{@code link-deadline}</td><td>{@code robosim.protocol.link.LinkFrames}</td><td>a daemon while a deadline
+ *     is set: closes the loop link whose script's hello or call's answer is late</td><td>its timed queue</td></tr>
  * <tr><td>{@code main}</td><td>{@code robosim.environment.EnvironmentMain}</td><td>opens the ports, waits for
  *     each simulation's end, prints the summary</td><td>the end</td></tr>
  * <tr><td>{@code start-announcer}</td><td>{@code EnvironmentMain}</td><td>prints the {@code running} line once

@@ -13,7 +13,7 @@ import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 
 /**
- * The robot link's frames (and the learning link's, {@code robosim.rl.BatchLink}): a 4-byte big-endian length,
+ * The MessagePack links' frames (the robot link's, the loop link's, the learning link's, {@code robosim.rl.BatchLink}): a 4-byte big-endian length,
  * then that many bytes of one MessagePack value. A length of 0 or over {@link #MAX_BYTES} is refused before
  * anything of the frame is read on.
  */
@@ -59,13 +59,7 @@ public final class LinkFrames {
      * @throws IOException the read's own failure when this thread was interrupted (the caller's end, not the peer's)
      */
     public static byte[] hello(DataInputStream in, Socket socket, long deadlineMs) throws IOException {
-        ScheduledFuture<?> late = DEADLINES.schedule(() -> {
-            try {
-                socket.close();
-            } catch (IOException ignored) {
-                // (closing is all)
-            }
-        }, deadlineMs, TimeUnit.MILLISECONDS);
+        ScheduledFuture<?> late = closeAfter(socket, deadlineMs);
         byte[] frame;
         try {
             frame = read(in);
@@ -81,6 +75,21 @@ public final class LinkFrames {
             throw new ProtocolException("no hello within " + deadlineMs + " ms");
         }
         return frame;
+    }
+
+    /**
+     * Closes {@code connection} {@code ms} from now (thread {@code link-deadline}) unless the returned future is
+     * cancelled first: a deadline on what is read from it, not a timeout on each read. {@code cancel(false)} false
+     * says the deadline passed.
+     */
+    public static ScheduledFuture<?> closeAfter(java.io.Closeable connection, long ms) {
+        return DEADLINES.schedule(() -> {
+            try {
+                connection.close();
+            } catch (IOException ignored) {
+                // (closing is all)
+            }
+        }, ms, TimeUnit.MILLISECONDS);
     }
 
     /** A reason as a link says it: on one line, made safe for a log line, at most 1000 characters. */

@@ -18,7 +18,8 @@ import robosim.protocol.Printable;
 import robosim.protocol.ProtocolException;
 
 /**
- * The first frame of a MessagePack link, the robot link's ({@link RobotLink}) and the learning link's
+ * The first frame of a MessagePack link, the robot link's ({@code robosim.hardware.link.RobotLink}), the loop link's
+ * ({@code robosim.environment.core.LoopScript}) and the learning link's
  * ({@code robosim.rl.BatchLink}) alike: a map of {@code link} (the link's name), {@code version} (a whole number),
  * {@code key} (the secret a peer this simulator started was given) and the link's own text fields, in within
  * {@link #DEADLINE_MS} of the connection ({@link LinkFrames#hello}). A hello that is late, not a map, of more than

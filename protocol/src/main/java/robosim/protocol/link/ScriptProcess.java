@@ -103,7 +103,8 @@ public final class ScriptProcess {
 
     /**
      * Gives the script its grace to exit, then stops it (SIGTERM, then SIGKILL) and any process it started, and
-     * awaits its output's end: within 1.75 s in all. The caller's interrupt, if it came, is set aside meanwhile (a
+     * awaits its output's end: within 1.75 s in all (less than the grace a robot's control code has at the end,
+     * {@code HardwareSimulator.CONTROL_GRACE_MS}). The caller's interrupt, if it came, is set aside meanwhile (a
      * wait would end at once) and set again after.
      */
     public void stop() {
