@@ -67,3 +67,27 @@ class Frames:
         if data is None or len(data) < n:
             raise LinkClosed("the simulator closed the link")
         return data
+
+
+def handshake(host: str, port: int, hello: dict[str, Any], called: str,
+              timeout_s: float) -> tuple[Frames, dict[str, Any]]:
+    """Connects to a link at ``host``:``port`` and says ``hello`` (its ``link`` and ``version`` say which, ``called``
+    names it in an error: ``"robot link"``): the frames and the simulator's welcome, checked as that link's. The
+    connection's reads wait as long as they take after it (a call lasts as long as the simulation takes)."""
+    sock = socket.create_connection((host, port), timeout=timeout_s)
+    try:
+        sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
+        frames = Frames(sock)
+        frames.send(hello)
+        welcome = frames.receive()
+        if not isinstance(welcome, dict):
+            raise LinkError(f"{host}:{port}: a welcome that is not a map: {welcome!r:.80}")
+        if "error" in welcome:
+            raise LinkError(f"{host}:{port}: the simulator refused the link: {welcome['error']}")
+        if welcome.get("link") != hello["link"] or welcome.get("version") != hello["version"]:
+            raise LinkError(f"{host}:{port}: not a {called} version {hello['version']}'s welcome: {welcome!r:.120}")
+        sock.settimeout(None)
+        return frames, welcome
+    except BaseException:
+        sock.close()
+        raise

@@ -12,9 +12,7 @@ the run with its last line and exit code 4; its traceback is logged once by the 
 from __future__ import annotations
 
 import argparse
-import importlib.util
 import os
-import socket
 import sys
 import threading
 import traceback
@@ -22,9 +20,9 @@ from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-from robosim.frames import Frames, LinkClosed, LinkError, pack
+from robosim.frames import Frames, LinkClosed, LinkError, handshake, pack
 from robosim.portable import SplittableRandom
-from robosim.runner import _end_with_stdin, _stdin_is_a_pipe
+from robosim.runner import _end_with_stdin, _stdin_is_a_pipe, script_module
 
 #: The link's name and version, said in the hello.
 LINK = "robosim-loop-link"
@@ -308,14 +306,7 @@ def _texts(welcome: dict[str, Any], key: str) -> list[str]:
 
 def load(script: Path) -> type[LoopFunctions]:
     """The loop functions' class ``script`` defines (its ``loop_functions``)."""
-    spec = importlib.util.spec_from_file_location(script.stem, script)
-    if spec is None or spec.loader is None:
-        raise ValueError(f"{script}: not a Python script")
-    module = importlib.util.module_from_spec(spec)
-    sys.path.insert(0, str(script.parent.resolve()))  # (its own modules beside it)
-    sys.modules[script.stem] = module
-    spec.loader.exec_module(module)
-    made = getattr(module, "loop_functions", None)
+    made = getattr(script_module(script), "loop_functions", None)
     if not isinstance(made, type) or not issubclass(made, LoopFunctions):
         raise ValueError(f"{script}: defines no loop_functions (a class of robosim.loop.LoopFunctions, named "
                          "loop_functions: loop_functions = Foraging)")
@@ -378,26 +369,10 @@ def _theirs(tb: Any) -> Any:
 
 def connect(host: str, port: int, key: str | None, calls: list[str]) -> tuple[Frames, dict[str, Any]]:
     """The loop link at ``host``:``port``: its frames and the simulator's welcome."""
-    sock = socket.create_connection((host, port), timeout=30.0)
-    try:
-        sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        frames = Frames(sock)
-        hello: dict[str, Any] = {"link": LINK, "version": VERSION, "calls": " ".join(calls)}
-        if key is not None:
-            hello["key"] = key
-        frames.send(hello)
-        welcome = frames.receive()
-        if not isinstance(welcome, dict):
-            raise LinkError(f"{host}:{port}: a welcome that is not a map: {welcome!r:.80}")
-        if "error" in welcome:
-            raise LinkError(f"{host}:{port}: the simulator refused the link: {welcome['error']}")
-        if welcome.get("link") != LINK or welcome.get("version") != VERSION:
-            raise LinkError(f"{host}:{port}: not a loop link version {VERSION}'s welcome: {welcome!r:.120}")
-        sock.settimeout(None)  # (a step of the world lasts as long as the robots take)
-        return frames, welcome
-    except BaseException:
-        sock.close()
-        raise
+    hello: dict[str, Any] = {"link": LINK, "version": VERSION, "calls": " ".join(calls)}
+    if key is not None:
+        hello["key"] = key
+    return handshake(host, port, hello, "loop link", 30.0)
 
 
 def main(argv: list[str] | None = None) -> int:

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import socket
 from collections.abc import Sequence
 from typing import Any, NamedTuple
 
-from robosim.frames import Frames, LinkClosed, LinkError
+from robosim.frames import Frames, LinkClosed, LinkError, handshake
 
 #: The link's name and version, said in the hello.
 LINK = "robosim-robot-link"
@@ -56,26 +55,11 @@ class Robot:
     @classmethod
     def connect(cls, host: str, port: int, robot: str, key: str | None = None) -> Robot:
         """Connects to robot ``robot``'s link at ``host``:``port`` (``key``: the secret a started script is given)."""
-        sock = socket.create_connection((host, port), timeout=HELLO_TIMEOUT_S)
-        try:
-            sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-            frames = Frames(sock)
-            hello: dict[str, Any] = {"link": LINK, "version": VERSION, "robot": robot}
-            if key is not None:
-                hello["key"] = key
-            frames.send(hello)
-            welcome = frames.receive()
-            if not isinstance(welcome, dict):
-                raise LinkError(f"{host}:{port}: a welcome that is not a map: {welcome!r:.80}")
-            if "error" in welcome:
-                raise LinkError(f"{host}:{port}: the simulator refused the link: {welcome['error']}")
-            if welcome.get("link") != LINK or welcome.get("version") != VERSION:
-                raise LinkError(f"{host}:{port}: not a robot link version {VERSION}'s welcome: {welcome!r:.120}")
-            sock.settimeout(None)  # (a call lasts as long as the simulation takes: a move of many steps, a pause)
-            return cls(frames, welcome)
-        except BaseException:
-            sock.close()
-            raise
+        hello: dict[str, Any] = {"link": LINK, "version": VERSION, "robot": robot}
+        if key is not None:
+            hello["key"] = key
+        frames, welcome = handshake(host, port, hello, "robot link", HELLO_TIMEOUT_S)
+        return cls(frames, welcome)
 
     def call(self, name: str, *args: Any) -> Any:
         """Makes the link's call ``name`` (hardware-sim/README.md, "The robot link") and returns its result."""

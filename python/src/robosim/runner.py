@@ -29,16 +29,21 @@ EXIT_FAILED = 1
 EXIT_UNUSABLE = 2
 
 
-def load(script: Path) -> Callable[[Robot], Any]:
-    """The controller ``script`` defines (its ``control``), as a function of the robot."""
+def script_module(script: Path) -> ModuleType:
+    """``script`` run as a module of its own name, its folder first on the path (its own modules beside it)."""
     spec = importlib.util.spec_from_file_location(script.stem, script)
     if spec is None or spec.loader is None:
         raise ValueError(f"{script}: not a Python script")
     module = importlib.util.module_from_spec(spec)
-    sys.path.insert(0, str(script.parent.resolve()))  # (its own modules beside it)
+    sys.path.insert(0, str(script.parent.resolve()))
     sys.modules[script.stem] = module
     spec.loader.exec_module(module)
-    return controller(module, script)
+    return module
+
+
+def load(script: Path) -> Callable[[Robot], Any]:
+    """The controller ``script`` defines (its ``control``), as a function of the robot."""
+    return controller(script_module(script), script)
 
 
 def controller(module: ModuleType, script: Path) -> Callable[[Robot], Any]:
