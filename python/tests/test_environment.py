@@ -82,7 +82,7 @@ def test_the_session_hardware_sim_readme_shows_is_a_real_one(environment: Enviro
                                                               monkeypatch: pytest.MonkeyPatch) -> None:
     import json
 
-    import robosim.robot
+    import robosim.frames
     from robosim.frames import Frames
 
     said: list[str] = []
@@ -97,7 +97,7 @@ def test_the_session_hardware_sim_readme_shows_is_a_real_one(environment: Enviro
             said.append("< " + json.dumps(value))
             return value
 
-    monkeypatch.setattr(robosim.robot, "Frames", Recorded)
+    monkeypatch.setattr(robosim.frames, "Frames", Recorded)  # (the one the link's handshake makes)
     robot = Robot.connect(environment.host, environment.port, "py1")
     robot.pose()
     robot.set_velocity(robot.parameter("speed", 300.0))
