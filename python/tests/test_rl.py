@@ -211,6 +211,30 @@ def test_a_reward_may_be_a_metric_the_worlds_loop_functions_report(tmp_path: Pat
         VectorEnv(DISPERSION, worlds=1, loop_metrics=["east"])
 
 
+def test_where_the_loop_functions_end_the_experiment_every_robot_of_the_world_is_done(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "three.py").write_text(
+        "from robosim.loop import Experiment, LoopFunctions\n\n"
+        "class Three(LoopFunctions):\n"
+        "    def finished(self, world: Experiment) -> bool:\n"
+        "        return world.step >= 3\n\n"
+        "loop_functions = Three\n")
+    world = tmp_path / "three.xml"
+    world.write_text(DISPERSION.read_text().replace(
+        '<arena width="8" height="8"/>', '<loopFunctions class="python:three.py"/><arena width="8" height="8"/>'))
+    monkeypatch.setenv("ROBOSIM_PYTHON", sys.executable)
+    with VectorEnv(world, worlds=2, max_steps=10) as env:
+        env.reset(seed=1)
+        still = np.zeros((2, 6, 2), np.float32)
+        ends = []
+        for _ in range(4):
+            _, _, terminated, truncated, _ = env.step(still)
+            assert not truncated.any()
+            ends.append(bool(terminated.all()))
+            assert terminated.all() or not terminated.any(), "a world's robots end together"
+        assert ends == [False, True, False, False], "the step the world's third completed ends it: " + str(ends)
+
+
 def test_an_agent_whose_episode_ends_leaves_the_parallel_env() -> None:
     def out_east(t: Transition) -> np.ndarray:  # a robot that crosses x = 4.7 m is done
         return t.pose[..., 0] > 4700

@@ -22,7 +22,7 @@ from robosim.frames import Frames, LinkError
 
 #: The link's name and version, as the hello says them.
 LINK = "robosim-batch-link"
-VERSION = 1
+VERSION = 2
 #: How long the host gets to say where it listens (a first use may build RoboSim: ``./mvnw`` once).
 START_S = 300.0
 #: How long a step may take before the link is taken for broken (a step of 1024 worlds of many robots is seconds).
@@ -54,6 +54,8 @@ class Welcome:
     arena_mm: list[float]
     seed: int
     episode_metric: str | None
+    #: Whether the world has loop functions: then ``Batch.finished`` says where they ended its experiment.
+    loop_functions: bool
     #: Each robot's sensors (its environment file's, with ``sensors=True``), in its file's order: name, offset (its
     #: first column of ``Batch.readings``), type, count, low and high (a list of count bounds: a group's fields, such
     #: as a message's range, bearing and bytes, each have their own), unit.
@@ -80,6 +82,7 @@ class Batch:
     metrics: np.ndarray  # float64 (K, M): each world's metrics so far (Welcome.metrics: built-ins, loop metrics)
     messages: np.ndarray | None  # float32 (K, N, N, m): the last message robot i heard from robot j, or zeros
     readings: np.ndarray | None  # float32 (K, N, R): each robot's sensors, a block of columns each (Layout)
+    finished: np.ndarray | None  # uint8 (K,): 1 where the world's loop functions ended its experiment (finished, end)
 
 
 def find_home(near: Path | None = None) -> Path:
@@ -178,6 +181,8 @@ class LearningHost:
             shapes.append(("messages", "<f4", (w.worlds, n, n, w.message_size)))
         if w.readings:
             shapes.append(("readings", "<f4", (w.worlds, n, w.readings)))
+        if w.loop_functions:
+            shapes.append(("finished", "u1", (w.worlds,)))
         #: Each array of a reply: its name, type, shape and size in bytes (Batch's fields, in order).
         self._arrays = [(name, dtype, shape, int(np.prod(shape)) * np.dtype(dtype).itemsize)
                         for name, dtype, shape in shapes]
@@ -238,7 +243,7 @@ class LearningHost:
         arrays = answer[1]
         if not isinstance(arrays, dict):
             raise HostError(f"an answer that is not one: {answer!r:.200}")
-        views: dict[str, np.ndarray | None] = {"messages": None, "readings": None}
+        views: dict[str, np.ndarray | None] = {"messages": None, "readings": None, "finished": None}
         for name, dtype, shape, size in self._arrays:
             data = arrays.get(name)
             if not isinstance(data, bytes) or len(data) != size:

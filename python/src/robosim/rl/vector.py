@@ -74,7 +74,8 @@ class VectorEnv:
     added to the last reward of each robot that ends with it (``infos["episode_metric"]``: (K,), NaN for the other
     worlds); one more exchange with the host an episode end. ``loop_metrics`` names metrics the world's loop functions
     report (``Experiment.report``): each is a metric too (``Welcome.metrics``, ``Transition.metrics``), its newest value
-    in the episode (0 before their first report), so a reward may name one.
+    in the episode (0 before their first report), so a reward may name one. Where the world's loop functions end its
+    experiment (``finished``, ``end``), every robot of it is terminated at that step.
     World w of ``reset(seed=s)`` runs with seed s + w; its later episodes with seeds drawn from (s, w)."""
 
     def __init__(self, path: str | os.PathLike[str], *, worlds: int = 8, repeat: int = 1, pose: bool = False,
@@ -172,9 +173,13 @@ class VectorEnv:
         shape = self._done.shape
         rewards = self._rewards(transition, shape)
         measured: np.ndarray | None = None
-        if self._first_end <= 0 or self._terminate is not None or self._any_done:
+        finished = batch.finished is not None and bool(batch.finished.any())
+        if self._first_end <= 0 or self._terminate is not None or self._any_done or finished:
             terminated = np.zeros(shape, bool) if self._terminate is None else np.broadcast_to(
                 np.asarray(self._terminate(transition), bool), shape).copy()
+            if finished:  # (the world's loop functions ended its experiment: every robot of it is done)
+                assert batch.finished is not None
+                terminated |= batch.finished.astype(bool)[:, None]
             terminated &= ~self._done
             truncated = np.broadcast_to((self._steps >= self.max_steps)[:, None], shape) & ~self._done & ~terminated
             rewards[self._done] = 0.0

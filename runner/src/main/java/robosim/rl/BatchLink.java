@@ -47,7 +47,7 @@ import robosim.protocol.SonarSpec;
  */
 public final class BatchLink {
     public static final String NAME = "robosim-batch-link";
-    public static final int VERSION = 1;
+    public static final int VERSION = 2;
     /** The arrays a learner observes besides each robot's sensors (a sensor may not take their names). */
     static final List<String> OBSERVED = List.of("sonar", "contact", "pose", "messages");
     /** What its hello must be: the link's name and version. */
@@ -100,7 +100,7 @@ public final class BatchLink {
     private byte[] welcomeFrame() throws IOException {
         MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
         List<RobotProperties> properties = batch.properties();
-        p.packMapHeader(22);
+        p.packMapHeader(23);
         p.packString("link").packString(NAME);
         p.packString("version").packInt(VERSION);
         p.packString("world").packString(batch.spec().name());
@@ -138,6 +138,7 @@ public final class BatchLink {
                 .packDouble(batch.spec().arena().minYMm()).packDouble(batch.spec().arena().maxXMm())
                 .packDouble(batch.spec().arena().maxYMm());
         p.packString("seed").packLong(batch.spec().seed());
+        p.packString("loop_functions").packBoolean(batch.spec().loopFunctions() != null);
         p.packString("readings").packInt(batch.sensorColumns().width());
         p.packString("sensors").packArrayHeader(batch.robots());
         for (int i = 0; i < batch.robots(); i++) { // (each robot's sensors: their boxes, from their descriptions)
@@ -400,7 +401,8 @@ public final class BatchLink {
         stepsServed++;
         reply.packArrayHeader(2).packString("ok");
         boolean readings = batch.sensorColumns().width() > 0;
-        reply.packMapHeader(5 + (batch.messageSize() > 0 ? 1 : 0) + (readings ? 1 : 0));
+        boolean loop = batch.spec().loopFunctions() != null;
+        reply.packMapHeader(5 + (batch.messageSize() > 0 ? 1 : 0) + (readings ? 1 : 0) + (loop ? 1 : 0));
         binary("steps", batch.steps());
         binary("sonar", batch.sonar());
         binary("pose", batch.pose());
@@ -411,6 +413,9 @@ public final class BatchLink {
         }
         if (readings) {
             binary("readings", batch.readings());
+        }
+        if (loop) {
+            binary("finished", batch.finished());
         }
     }
 

@@ -243,6 +243,7 @@ final class BatchWorld {
             DOUBLE.set(metrics, m + (tally.size() + k) * 8, loopMetrics[k]);
         }
         LONG.set(batch.steps(), index * 8, step);
+        batch.finished()[index] = (byte) (core.experimentEnd() != null ? 1 : 0);
     }
 
     /**

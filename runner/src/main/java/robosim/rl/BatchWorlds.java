@@ -44,6 +44,7 @@ public final class BatchWorlds implements AutoCloseable {
     private final ActuatorColumns actuatorColumns;
     private final byte[] readings;
     private final byte[] metrics;
+    private final byte[] finished;
     /** The columns of {@link #metrics}: the built-ins, then the loop functions' the settings name. */
     private final List<String> metricNames;
     private final byte[] steps;
@@ -137,6 +138,7 @@ public final class BatchWorlds implements AutoCloseable {
         this.metricNames = java.util.stream.Stream.concat(METRICS.stream(), settings.loopMetrics().stream()).toList();
         this.metrics = new byte[count * metricNames.size() * 8];
         this.steps = new byte[count * 8];
+        this.finished = new byte[count];
         this.threads = Math.max(1, Math.min(settings.threads(), count));
         this.crew = this.threads == 1 ? null : new StepCrew(this.threads);
         this.worlds = new BatchWorld[count];
@@ -346,6 +348,14 @@ public final class BatchWorlds implements AutoCloseable {
     /** int64 [worlds]: time steps since each world's episode began. */
     public byte[] steps() {
         return steps;
+    }
+
+    /**
+     * uint8 [worlds]: 1 where the world's loop functions have said its experiment is over (finished, or end) in this
+     * episode: its robots' episodes end there.
+     */
+    public byte[] finished() {
+        return finished;
     }
 
     @Override
