@@ -44,6 +44,7 @@ class Counting(LoopFunctions):
         assert world.carrying(0) == -1 and world.carrier(0) == -1 and world.object_x_mm(0) == 700.0
         with pytest.raises(ExperimentValueError, match="report: not a name"):
             world.report("bad name", 1)
+        world.trace("path", 1, 2, 0xFF0000)
 
     def post_step(self, world: Experiment) -> None:
         self.seen.append(("post_step", world.step))
@@ -78,6 +79,8 @@ def test_calls_bring_the_world_and_requests_are_answered() -> None:
     sim.send(["ok", [700.0, 700.0, 10.0]])
     assert sim.receive() == ["report", "bad name", 1.0]
     sim.send(["error", "value", "not a name"])
+    assert sim.receive() == ["trace", "path", 1.0, 2.0, 0xFF0000]
+    sim.send(["ok", None])
     assert sim.receive() == ["done", None]
     sim.send(["post_step", state(1, [])])
     assert sim.receive() == ["done", False]

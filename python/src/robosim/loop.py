@@ -257,6 +257,15 @@ class Experiment:
         """Takes away everything this code painted: the file's floor again."""
         self._request("erase_paint")
 
+    def trace(self, name: str, x_mm: float, y_mm: float, rgb: int) -> None:
+        """Draws over the world for the viewers: extends trace ``name`` (a line of colour ``rgb``, begun if new) to a
+        point. Not sensed; recorded and replayed; at most 1,024 traces and 100,000 points a drawing."""
+        self._request("trace", name, float(x_mm), float(y_mm), rgb)
+
+    def erase_traces(self) -> None:
+        """Erases every trace drawn."""
+        self._request("erase_traces")
+
     @property
     def lights(self) -> int:
         return len(self._lights)

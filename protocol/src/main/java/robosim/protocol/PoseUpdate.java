@@ -34,6 +34,9 @@ public final class PoseUpdate implements java.io.Externalizable {
     private List<Floor.Region> paint = List.of();
     private boolean[] lightsOn;
     private List<Report> reports = List.of();
+    /** What the loop functions drew over the world this step ({@link Traces}: a piece), and the whole drawing as of it. */
+    private Traces traces = Traces.NONE;
+    private Traces tracesWhole = Traces.NONE;
 
     private static final double[] NONE = new double[0];
     /** The LEDs of a robot that has none, or whose LEDs are all off and always were. */
@@ -106,6 +109,8 @@ public final class PoseUpdate implements java.io.Externalizable {
         u.paint = paint;
         u.lightsOn = lightsOn;
         u.reports = reports;
+        u.traces = traces;
+        u.tracesWhole = tracesWhole;
         return u;
     }
 
@@ -114,6 +119,15 @@ public final class PoseUpdate implements java.io.Externalizable {
      * first), {@code lights} as they stand (switched on or off), and the metrics they reported for the step.
      */
     public PoseUpdate withExperiment(List<Floor.Region> painted, List<Light> lights, List<Report> metrics) {
+        return withExperiment(painted, lights, metrics, Traces.NONE, Traces.NONE);
+    }
+
+    /**
+     * As {@link #withExperiment(List, List, List)}, and what they drew over the world: {@code piece}, this step's,
+     * and {@code whole}, the drawing as of this step (what a snapshot made of this update carries: {@link #posesOnly}).
+     */
+    public PoseUpdate withExperiment(List<Floor.Region> painted, List<Light> lights, List<Report> metrics,
+            Traces piece, Traces whole) {
         PoseUpdate u = withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
         u.paint = List.copyOf(painted);
         u.lightsOn = new boolean[lights.size()];
@@ -121,6 +135,37 @@ public final class PoseUpdate implements java.io.Externalizable {
             u.lightsOn[i] = lights.get(i).on();
         }
         u.reports = List.copyOf(metrics);
+        u.traces = piece;
+        u.tracesWhole = whole;
+        return u;
+    }
+
+    /** What the world's loop functions drew over it this step (a piece of the drawing: {@link Traces.Log#apply}). */
+    public Traces traces() {
+        return traces;
+    }
+
+    /**
+     * This update, what it draws preceded by what {@code earlier} drew: the update a viewer is sent instead of both
+     * (its queue keeps the newest).
+     */
+    public PoseUpdate drawnAfter(PoseUpdate earlier) {
+        if (earlier.traces.isEmpty()) {
+            return this;
+        }
+        PoseUpdate u = withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
+        u.traces = earlier.traces.then(traces);
+        return u;
+    }
+
+    /**
+     * This update drawing {@code whole}, the drawing as of its step, entire (a replay's snapshot: the drawing pieced
+     * together from the recorded steps).
+     */
+    public PoseUpdate withWholeDrawing(Traces whole) {
+        PoseUpdate u = withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
+        u.traces = whole;
+        u.tracesWhole = whole;
         return u;
     }
 
@@ -158,6 +203,8 @@ public final class PoseUpdate implements java.io.Externalizable {
         u.paint = paint; // (a viewer joining mid-run sees the loop functions' paint and lights at once)
         u.lightsOn = lightsOn;
         u.reports = reports;
+        u.traces = tracesWhole; // (and their whole drawing)
+        u.tracesWhole = tracesWhole;
         return u;
     }
 
@@ -260,6 +307,7 @@ public final class PoseUpdate implements java.io.Externalizable {
                 out.writeBoolean(on);
             }
             Report.write(out, reports);
+            traces.write(out);
         }
     }
 
@@ -312,5 +360,8 @@ public final class PoseUpdate implements java.io.Externalizable {
             lightsOn[i] = in.readBoolean();
         }
         reports = Report.read(in, Report.MAX_PER_STEP);
+        if (RecordingVersion.withTraces(in)) {
+            traces = Traces.read(in);
+        }
     }
 }

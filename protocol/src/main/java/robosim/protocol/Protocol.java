@@ -3,7 +3,7 @@ package robosim.protocol;
 /** Constants shared by every RoboSim process. */
 public final class Protocol {
     /** Carried by every handshake; a peer with another version is refused with a reason. */
-    public static final int VERSION = 10;
+    public static final int VERSION = 11;
 
     public static final int DEFAULT_ROBOT_PORT = 8000;
     public static final int DEFAULT_VIEWER_PORT = 3000;

@@ -3,8 +3,8 @@ package robosim.protocol;
 import java.nio.charset.StandardCharsets;
 
 /**
- * A run's recording, {@code --record FILE} (version {@value #VERSION}; {@code protocol/README.md}; version 5, whose steps
- * hold nothing of loop functions, version 4, whose
+ * A run's recording, {@code --record FILE} (version {@value #VERSION}; {@code protocol/README.md}; version 6, whose steps
+ * hold nothing loop functions drew, version 5, whose steps hold nothing of loop functions, version 4, whose
  * snapshot holds no scenery and whose steps no objects and LEDs, and version 3, whose views hold no reports either,
  * are read as such; versions 1 and 2 are refused): the
  * bytes {@code ROBOSIMREC} and a version byte, then frames, each {@code int length}, {@code length} bytes
@@ -20,7 +20,9 @@ import java.nio.charset.StandardCharsets;
  */
 public final class RecordingFormat {
     static final byte[] MAGIC = "ROBOSIMREC".getBytes(StandardCharsets.US_ASCII);
-    public static final byte VERSION = 6;
+    public static final byte VERSION = 7;
+    /** The version before: the same but for what loop functions drew over the world ({@link Traces}). */
+    static final byte VERSION_WITHOUT_TRACES = RecordingVersion.WITHOUT_TRACES;
     /** The version before: the same but for what loop functions painted, switched and reported in each step. */
     static final byte VERSION_WITHOUT_EXPERIMENT = RecordingVersion.WITHOUT_EXPERIMENT;
     /** The version before: the same but for the scenery, the objects' poses and the LEDs; read as without them. */

@@ -60,7 +60,8 @@ public final class RecordingReader implements Closeable {
                 throw new IOException(file + ": not a RoboSim recording");
             }
             version = in.readByte();
-            if (version != RecordingFormat.VERSION && version != RecordingFormat.VERSION_WITHOUT_EXPERIMENT
+            if (version != RecordingFormat.VERSION && version != RecordingFormat.VERSION_WITHOUT_TRACES
+                    && version != RecordingFormat.VERSION_WITHOUT_EXPERIMENT
                     && version != RecordingFormat.VERSION_WITHOUT_SCENE
                     && version != RecordingFormat.VERSION_WITHOUT_REPORTS) {
                 throw new IOException(file + ": recording version " + version + ", this RoboSim reads "

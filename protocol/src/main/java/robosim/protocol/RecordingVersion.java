@@ -14,6 +14,9 @@ interface RecordingVersion {
     /** The recording version before worlds had loop functions: its steps end without what they painted and reported. */
     byte WITHOUT_EXPERIMENT = 5;
 
+    /** The recording version before loop functions drew over the world: its steps end without their traces. */
+    byte WITHOUT_TRACES = 6;
+
     /** The recording version this stream reads a frame of. */
     int recordingVersion();
 
@@ -25,5 +28,10 @@ interface RecordingVersion {
     /** True unless {@code in} reads a recording of version {@link #WITHOUT_EXPERIMENT} or older. */
     static boolean withExperiment(ObjectInput in) {
         return !(in instanceof RecordingVersion v) || v.recordingVersion() > WITHOUT_EXPERIMENT;
+    }
+
+    /** True unless {@code in} reads a recording of version {@link #WITHOUT_TRACES} or older. */
+    static boolean withTraces(ObjectInput in) {
+        return !(in instanceof RecordingVersion v) || v.recordingVersion() > WITHOUT_TRACES;
     }
 }

@@ -255,6 +255,19 @@ class MessageRoundTripTest {
         assertEquals(true, looped.light(List.of(off, off), 0).on(), "switched on by the loop functions");
         assertEquals(List.of(), p2.paint());
         assertEquals(off, p2.light(List.of(off), 0), "as the file's without loop functions");
+        Traces.Log drawing = new Traces.Log();
+        drawing.add("fb0", 1, 2, 0xFF0000);
+        drawing.since();
+        drawing.add("fb0", 3, 4, 0xFF0000);
+        PoseUpdate drew = p.withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole());
+        Traces sent = roundTrip(drew).traces();
+        assertEquals(1, sent.firstPoint(), "a step's piece: its own point");
+        assertEquals(1, sent.points());
+        assertEquals(3, sent.xMm(1));
+        Traces whole = roundTrip(drew.posesOnly()).traces();
+        assertTrue(whole.fresh(), "a snapshot's poses hold the whole drawing");
+        assertEquals(2, whole.points());
+        assertEquals("fb0", whole.name(0));
         PoseUpdate tagged = new PoseUpdate(4, new double[] {1}, new double[] {3}, new double[] {5}, null,
                 List.of("a>b"));
         assertEquals(List.of("a>b"), roundTrip(tagged).tags());

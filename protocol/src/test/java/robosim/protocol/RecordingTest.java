@@ -97,7 +97,7 @@ class RecordingTest {
         bytes[RecordingFormat.MAGIC.length] = 2;
         Files.write(file, bytes);
         IOException e = assertThrows(IOException.class, () -> new RecordingReader(file));
-        assertEquals(file + ": recording version 2, this RoboSim reads 6", e.getMessage());
+        assertEquals(file + ": recording version 2, this RoboSim reads " + RecordingFormat.VERSION, e.getMessage());
     }
 
     @Test

@@ -130,6 +130,19 @@ public interface Experiment {
     /** Switches a light on or off. */
     void switchLight(int light, boolean on);
 
+    // ---- drawing for the viewers ----------------------------------------------------------------------------
+
+    /**
+     * Draws over the world for the viewers (ARGoS's Qt user functions' drawings): extends the trace {@code name}, a
+     * line of colour {@code rgb} (its first point's), to a point; a new name begins a new trace. Not sensed, in no
+     * result; recorded and replayed. A drawing holds at most 1,024 traces and 100,000 points (then
+     * {@link #eraseTraces} first); a name has 1 to 64 characters.
+     */
+    void trace(String name, double xMm, double yMm, int rgb);
+
+    /** Erases every trace drawn. */
+    void eraseTraces();
+
     // ---- the run -------------------------------------------------------------------------------------------
 
     /**

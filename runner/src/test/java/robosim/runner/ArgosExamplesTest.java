@@ -4,6 +4,7 @@ import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
+import java.util.List;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
 import robosim.protocol.PoseUpdate;
@@ -217,6 +218,38 @@ class ArgosExamplesTest {
             before = now;
         }
         return new Moves(robotSteps, touching, touchingRobots, travelled, touches, longestTouch);
+    }
+
+    @Test
+    void theLoopFunctionsKeepEachRobotsPathAndTheRecordingDrawsIt() throws Exception {
+        try (RecordingReader reader = run("trajectory.xml", 2000)) {
+            robosim.protocol.Traces.Log drawing = new robosim.protocol.Traces.Log();
+            for (int k = 0; k < reader.steps(); k++) {
+                drawing.apply(reader.step(k).update().traces());
+            }
+            PoseUpdate last = reader.step(reader.steps() - 1).update();
+            List<String> names = reader.snapshot().robotNames();
+            assertEquals(10, drawing.traces(), "a trace a robot");
+            double[][] lastPoint = new double[10][];
+            int[] points = new int[10];
+            for (int p = 0; p < drawing.points(); p++) {
+                int t = drawing.traceOf(p);
+                int r = names.indexOf(drawing.name(t));
+                assertTrue(r >= 0, "a robot's trace: " + drawing.name(t));
+                if (lastPoint[r] != null) { // (ARGoS's rule: a waypoint once the robot is over 5 cm from the last)
+                    double d = Math.hypot(drawing.xMm(p) - lastPoint[r][0], drawing.yMm(p) - lastPoint[r][1]);
+                    assertTrue(d > 50 && d < 50 + 10, names.get(r) + "'s waypoints 5 cm apart (a step goes 5 mm at "
+                            + "most): " + d);
+                }
+                lastPoint[r] = new double[] {drawing.xMm(p), drawing.yMm(p)};
+                points[r]++;
+            }
+            for (int r = 0; r < 10; r++) {
+                assertTrue(points[r] > 20, names.get(r) + " went its way: " + points[r] + " waypoints");
+                assertTrue(Math.hypot(last.xMm(r) - lastPoint[r][0], last.yMm(r) - lastPoint[r][1]) <= 50,
+                        names.get(r) + "'s path reaches where it stands");
+            }
+        }
     }
 
     @Test

@@ -128,6 +128,9 @@ class PythonControlIT {
                     def post_step(self, world: Experiment) -> None:
                         world.report("seen", world.step)
                         world.tell(0, "hello")
+                        world.trace("r1", world.robot_x_mm(0), world.robot_y_mm(0), 0x00FF00)
+                        if world.step == 5:
+                            world.erase_traces()
 
                     def finished(self, world: Experiment) -> bool:
                         return world.step == 7

@@ -5,6 +5,7 @@ import java.util.function.LongSupplier;
 import robosim.protocol.PoseUpdate;
 import robosim.protocol.RunState;
 import robosim.protocol.SimulationEnd;
+import robosim.protocol.Traces;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -38,6 +39,8 @@ public final class SceneFeed implements RunFollower.Listener {
     private long rateNanos;
     private double stepsPerSecond = Double.NaN;
     private PoseUpdate poses;
+    /** What the world's loop functions have drawn, pieced together from the updates ({@link Traces.Log#apply}). */
+    private final Traces.Log drawing = new Traces.Log();
     private ViewedRun status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
 
     /** {@code nanoClock}: the time the steps per second are measured by, ns ({@code System::nanoTime}). */
@@ -69,7 +72,7 @@ public final class SceneFeed implements RunFollower.Listener {
             }
             ringStart = java.util.Arrays.copyOf(ringStart, n);
             ringSize = java.util.Arrays.copyOf(ringSize, n);
-            publish(snapshot.poses());
+            publish(drawn(snapshot.poses()));
             return;
         }
         world = snapshot;
@@ -82,8 +85,10 @@ public final class SceneFeed implements RunFollower.Listener {
         if (!sameRun) {
             status = ViewedRun.of(ViewedRun.Kind.WAITING_FOR_ROBOTS);
         }
-        record(snapshot.poses());
-        publish(snapshot.poses());
+        drawing.erase();
+        PoseUpdate first = drawn(snapshot.poses());
+        record(first);
+        publish(first);
     }
 
     @Override
@@ -103,7 +108,8 @@ public final class SceneFeed implements RunFollower.Listener {
     }
 
     @Override
-    public void update(PoseUpdate u) {
+    public void update(PoseUpdate update) {
+        PoseUpdate u = drawn(update);
         record(u);
         long now = nanoClock.getAsLong();
         if (rateStep < 0) {
@@ -143,6 +149,23 @@ public final class SceneFeed implements RunFollower.Listener {
         if (s != null) {
             latest.set(s.withStatus(status));
         }
+    }
+
+    /**
+     * {@code u} with the whole drawing as of it (its piece applied to what was drawn before; a piece that does not
+     * follow, which only a fault sends, starts the drawing afresh at the next whole one). Unchanged without loop
+     * functions.
+     */
+    private PoseUpdate drawn(PoseUpdate u) {
+        if (u.lightsOn() == null) {
+            return u;
+        }
+        try {
+            drawing.apply(u.traces());
+        } catch (robosim.protocol.ProtocolException e) {
+            drawing.erase();
+        }
+        return u.withWholeDrawing(drawing.whole());
     }
 
     private void record(PoseUpdate u) {

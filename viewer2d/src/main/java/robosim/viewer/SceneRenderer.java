@@ -66,6 +66,7 @@ public final class SceneRenderer {
                 drawTrail(g, s.trails()[i], t, robotColor(i));
             }
         }
+        drawTraces(g, poses.traces(), t);
         if (o.sonar()) {
             for (int i = 0; i < s.robotCount(); i++) {
                 drawSonar(g, s.robots().get(i).sonars(), poses, i, t, robotColor(i));
@@ -242,6 +243,36 @@ public final class SceneRenderer {
         g.setColor(new Color(c.getRed(), c.getGreen(), c.getBlue(), 90));
         g.setStroke(new BasicStroke(1.5f));
         g.draw(p);
+    }
+
+    /** What the loop functions drew ({@code drawing}, whole: {@link SceneFeed}): each trace a line of its colour. */
+    private static void drawTraces(Graphics2D g, robosim.protocol.Traces drawing, ViewTransform t) {
+        if (drawing.traces() == 0) {
+            return;
+        }
+        Path2D.Double[] lines = new Path2D.Double[drawing.firstTrace() + drawing.traces()];
+        int last = drawing.firstPoint() + drawing.points();
+        for (int p = drawing.firstPoint(); p < last; p++) {
+            int k = drawing.traceOf(p);
+            if (k < drawing.firstTrace()) {
+                continue; // (not a whole drawing: a piece whose traces began before it)
+            }
+            double x = t.toScreenX(drawing.xMm(p));
+            double y = t.toScreenY(drawing.yMm(p));
+            if (lines[k] == null) {
+                lines[k] = new Path2D.Double();
+                lines[k].moveTo(x, y);
+            } else {
+                lines[k].lineTo(x, y);
+            }
+        }
+        g.setStroke(new BasicStroke(2f));
+        for (int k = drawing.firstTrace(); k < lines.length; k++) {
+            if (lines[k] != null) {
+                g.setColor(new Color(drawing.rgb(k)));
+                g.draw(lines[k]);
+            }
+        }
     }
 
     private static void drawSonar(Graphics2D g, List<SonarSpec> sonars, PoseUpdate poses, int i, ViewTransform t,

@@ -75,6 +75,29 @@ class SceneRendererTest {
     }
 
     @Test
+    void whatTheLoopFunctionsDrewIsDrawnInItsColour() {
+        robosim.protocol.Traces.Log drawing = new robosim.protocol.Traces.Log();
+        drawing.add("path", 500, 4500, 0xFF0000);
+        drawing.add("path", 3500, 4500, 0xFF0000);
+        Scene plain = scene();
+        PoseUpdate drew = plain.poses().withExperiment(List.of(), List.of(), List.of(), drawing.since(),
+                drawing.whole()).posesOnly();
+        Scene s = new Scene(ARENA, plain.obstacles(), plain.names(), plain.robots(), drew, plain.trails(), 0,
+                plain.status());
+        BufferedImage img = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);
+        ViewTransform t = new ViewTransform();
+        t.fit(ARENA, 1000, 500);
+        Graphics2D g = img.createGraphics();
+        SceneRenderer.render(g, s, t, SceneRenderer.Options.DEFAULT, 1000, 500);
+        g.dispose();
+        int x = (int) Math.round(t.toScreenX(2000));
+        int y = (int) Math.floor(t.toScreenY(4500));
+        assertTrue(close(0xFF0000, img.getRGB(x, y) & 0xFFFFFF, 40) || close(0xFF0000, img.getRGB(x, y + 1) & 0xFFFFFF,
+                40), "on the trace (a 2-pixel line, its edges anti-aliased)");
+        assertEquals(robosim.protocol.Floor.PLAIN.rgb(), pixel(img, t, 4000, 4500), "beyond its end");
+    }
+
+    @Test
     void aTaggedRobotGetsARing() {
         PoseUpdate poses = new PoseUpdate(41, new double[] {2000, 8000}, new double[] {2500, 4000},
                 new double[] {0, 90}, null, List.of("a>b"));

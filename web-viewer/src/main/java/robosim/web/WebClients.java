@@ -30,6 +30,8 @@ final class WebClients {
     private String snapshot;
     private String update;
     private String state;
+    /** What the world's loop functions have drawn (whole), for the pages that join. */
+    private robosim.protocol.Traces drawing = robosim.protocol.Traces.NONE;
     static final int MAX_WATCHED = 8;
     private final WatchFeeds watchFeeds;
     private List<String> robots = List.of();
@@ -58,6 +60,9 @@ final class WebClients {
         });
         if (snapshot != null) {
             send(page, snapshot);
+            if (drawing.traces() > 0) {
+                send(page, WebJson.traces(drawing));
+            }
             if (update != null) {
                 send(page, update);
             }
@@ -77,12 +82,26 @@ final class WebClients {
             snapshot = json;
             robots = List.copyOf(names);
             update = null;
+            drawing = robosim.protocol.Traces.NONE; // (the feed sends the new world's, if it has one)
             if (!sameRun) {
                 state = null;
                 heldView.clear(); // (views of the run before are no use)
             }
             for (Channel p : List.copyOf(pages.keySet())) { // (a failed write closes and removes a page)
                 pages.replace(p, null); // (an update of the world before is no use)
+                send(p, json);
+            }
+        });
+    }
+
+    /**
+     * Feed thread: what the loop functions drew ({@code json}, a piece) goes to every page at once, in order;
+     * {@code whole}, the drawing so far, to the pages that join.
+     */
+    void traces(String json, robosim.protocol.Traces whole) {
+        onIo(() -> {
+            drawing = whole;
+            for (Channel p : List.copyOf(pages.keySet())) {
                 send(p, json);
             }
         });

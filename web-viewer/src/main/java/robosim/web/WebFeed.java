@@ -38,6 +38,8 @@ final class WebFeed implements ViewerClient.Listener {
     /** The robot watched ("" for none: the pages' main feed). */
     private final String watch;
     private final CountDownLatch closed = new CountDownLatch(1);
+    /** What the loop functions have drawn, pieced together from the updates (the feed thread's). */
+    private final robosim.protocol.Traces.Log drawing = new robosim.protocol.Traces.Log();
     private final Thread thread;
     private final java.util.concurrent.atomic.AtomicBoolean started = new java.util.concurrent.atomic.AtomicBoolean();
     private volatile ViewerClient viewer;
@@ -108,6 +110,8 @@ final class WebFeed implements ViewerClient.Listener {
         worldSeen = true;
         if (watch.isEmpty()) {
             clients.snapshot(WebJson.snapshot(snapshot), snapshot.robotNames(), sameRun);
+            drawing.erase();
+            drawn(snapshot.poses()); // (a snapshot's drawing is whole: the pages begin it afresh)
         } else if (!sameRun) { // (a later world is of the same watch: joined robots, a seek; no new start)
             clients.watchStarted(watch, snapshot.step()); // (its views follow from the next step on)
         }
@@ -117,8 +121,28 @@ final class WebFeed implements ViewerClient.Listener {
     public void update(PoseUpdate update) {
         updates++;
         if (watch.isEmpty()) {
+            drawn(update);
             clients.update(WebJson.update(update));
         }
+    }
+
+    /**
+     * What the loop functions drew in {@code u} goes to every page as it comes (not held back as an update may be:
+     * a page pieces the drawing together), the whole drawing kept for the pages that join.
+     */
+    private void drawn(PoseUpdate u) {
+        robosim.protocol.Traces piece = u.traces();
+        if (u.lightsOn() == null || piece.isEmpty()) {
+            return;
+        }
+        try {
+            drawing.apply(piece);
+        } catch (robosim.protocol.ProtocolException e) { // (only a fault sends a piece that does not follow)
+            LOG.warn("web viewer: a drawing's piece refused: {}", e.getMessage());
+            drawing.erase();
+            piece = drawing.whole();
+        }
+        clients.traces(WebJson.traces(piece), drawing.whole());
     }
 
     @Override

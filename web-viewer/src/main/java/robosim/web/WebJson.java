@@ -134,6 +134,31 @@ final class WebJson {
         }
     }
 
+    /**
+     * What the loop functions drew ({@code traces}, a piece of their drawing or the whole): {@code {"type": "traces",
+     * "fresh", "firstTrace", "names", "colours", "firstPoint", "points": [TRACE, X, Y, ...]}} (mm).
+     */
+    static String traces(robosim.protocol.Traces piece) {
+        ObjectNode n = JSON.createObjectNode();
+        n.put("type", "traces");
+        n.put("fresh", piece.fresh());
+        n.put("firstTrace", piece.firstTrace());
+        ArrayNode names = n.putArray("names");
+        ArrayNode colours = n.putArray("colours");
+        for (int t = piece.firstTrace(); t < piece.firstTrace() + piece.traces(); t++) {
+            names.add(piece.name(t));
+            colours.add(colour(piece.rgb(t)));
+        }
+        n.put("firstPoint", piece.firstPoint());
+        ArrayNode points = n.putArray("points");
+        for (int p = piece.firstPoint(); p < piece.firstPoint() + piece.points(); p++) {
+            points.add(piece.traceOf(p));
+            points.add(Math.round(piece.xMm(p) * 10) / 10.0); // (a tenth of a millimetre is plenty on a screen)
+            points.add(Math.round(piece.yMm(p) * 10) / 10.0);
+        }
+        return n.toString();
+    }
+
     static String update(PoseUpdate u) {
         return poses(u).toString();
     }

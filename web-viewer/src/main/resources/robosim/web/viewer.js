@@ -7,6 +7,8 @@ import { floorPicture, paintFloor, objectPose, corners } from './scenery.js';
 const $ = (id) => document.getElementById(id);
 const TRAIL = 600; // points kept per robot
 let world = null, poses = null, trails = [], gone = new Set(), held = new Set(), follow = -1, picture = null;
+// what the world's loop functions drew, pieced together from the 'traces' messages: [{colour, points: [x, y, ...]}]
+let drawing = [], drawnPoints = 0;
 let scale = 0.1, offX = 0, offY = 0, fitted = false;
 let lastStep = -1, rateSteps = 0, rateSince = performance.now(), rate = 0;
 let ws = null;
@@ -49,7 +51,7 @@ function handle(m) {
       measureAfresh(); // (also when robots joined: a replay sought forward across a join looks the same)
       const arenaKept = world !== null && sameArena(world.arena, m.arena);
       if (!arenaKept) fitted = false;
-      world = m; poses = m.poses;
+      world = m; poses = m.poses; drawing = []; drawnPoints = 0;
       picture = floorPicture(m.floor, () => { view3d.world(world, true); redraw(); });
       $('ended').textContent = '';
       buildTable(); view3d.world(m, arenaKept, picture); panel.world(m); dirty = tableDirty = true; wake();
@@ -60,12 +62,26 @@ function handle(m) {
       poses = m; gone = new Set(m.departed); held = new Set(m.held || []);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
       panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
+    case 'traces': draw(m); dirty = true; wake(); break;
     case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 2}`); redraw(); break;
     case 'view': panel.show(m); redraw(); break;
     case 'viewEnded': watched = ''; panel.ended(m.reason); redraw(); break;
     case 'state': $('state').textContent = m.phase; if (m.phase === 'RUNNING') measureAfresh(); else rate = 0; redraw(); break;
     case 'end': $('state').textContent = 'ENDED'; $('ended').textContent = m.reason; rate = 0; redraw(); break;
     case 'reply': replied(m); break;
+  }
+}
+
+// a piece of the drawing: a fresh one starts it afresh; what the page has of it already is skipped; one that would
+// leave a gap (only a fault sends one) is left out
+function draw(m) {
+  if (m.fresh) { drawing = []; drawnPoints = 0; }
+  if (m.firstTrace > drawing.length || m.firstPoint > drawnPoints) return;
+  for (let t = drawing.length - m.firstTrace; t < m.names.length; t++) drawing.push({ colour: m.colours[t], points: [] });
+  for (let k = 3 * (drawnPoints - m.firstPoint); k < m.points.length; k += 3) {
+    const trace = drawing[m.points[k]];
+    if (trace) trace.points.push(m.points[k + 1], m.points[k + 2]);
+    drawnPoints++;
   }
 }
 
@@ -173,6 +189,12 @@ function draw2d() {
     }
     g.strokeStyle = '#222'; g.lineWidth = 1; g.beginPath(); g.arc(toX(l.x), toY(l.y), r, 0, 2 * Math.PI); g.stroke();
   });
+  g.lineWidth = 2;
+  for (const d of drawing) {
+    g.strokeStyle = d.colour; g.beginPath();
+    for (let k = 0; k < d.points.length; k += 2) g.lineTo(toX(d.points[k]), toY(d.points[k + 1]));
+    g.stroke();
+  }
   if ($('trails').checked) {
     g.strokeStyle = 'rgba(40,90,200,0.35)'; g.lineWidth = 1;
     for (const t of trails) {

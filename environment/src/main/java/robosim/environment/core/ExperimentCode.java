@@ -42,6 +42,9 @@ final class ExperimentCode implements Experiment {
     private final List<Light> fileLights;
     private List<Light> lights;
     private final Map<String, Double> reports = new LinkedHashMap<>();
+    /** What the code drew over the world, and the piece of it the last step completed drew. */
+    private final robosim.protocol.Traces.Log drawing = new robosim.protocol.Traces.Log();
+    private robosim.protocol.Traces stepTraces = robosim.protocol.Traces.NONE;
     /** The metrics reported for the last step completed (from its pre-step, or init, to its post-step). */
     private List<Report> stepReports = List.of();
     private String endReason;
@@ -132,6 +135,7 @@ final class ExperimentCode implements Experiment {
             }
         }
         stepReports = takeReports();
+        stepTraces = drawing.since();
     }
 
     /** Once the run is over, however it ended (a throw of the code's too): the code's destroy, once. */
@@ -161,6 +165,16 @@ final class ExperimentCode implements Experiment {
         reports.forEach((name, value) -> out.add(new Report(name, value)));
         reports.clear();
         return out;
+    }
+
+    /** What the code drew over the world in the last step completed (from its pre-step, or init, to its post-step). */
+    robosim.protocol.Traces tracesOfStep() {
+        return stepTraces;
+    }
+
+    /** The whole drawing, as of the last step completed's end (or now, before step 0). */
+    robosim.protocol.Traces tracesWhole() {
+        return drawing.whole();
     }
 
     /** What the code painted over the floor, oldest first (the same list until it paints again). */
@@ -432,6 +446,16 @@ final class ExperimentCode implements Experiment {
         now.set(light, new Light(l.name(), l.xMm(), l.yMm(), l.heightMm(), l.rgb(), l.intensity(), on));
         lights = List.copyOf(now);
         sensing.scenery(floor, lights);
+    }
+
+    @Override
+    public void trace(String name, double xMm, double yMm, int rgb) {
+        drawing.add(name, xMm, yMm, rgb);
+    }
+
+    @Override
+    public void eraseTraces() {
+        drawing.erase();
     }
 
     @Override

@@ -457,6 +457,14 @@ final class LoopScript implements LoopFunctions {
                 arity(verb, a, 0);
                 world.erasePaint();
                 return null;
+            case "trace":
+                arity(verb, a, 4);
+                world.trace(str(a[0]), num(a[1]), num(a[2]), colour(a[3]));
+                return null;
+            case "erase_traces":
+                arity(verb, a, 0);
+                world.eraseTraces();
+                return null;
             case "switch_light":
                 arity(verb, a, 2);
                 world.switchLight(index(a[0]), bool(a[1]));

@@ -449,7 +449,7 @@ public final class SimulationCore {
         }
         PoseUpdate u = map.poses(lastStep, sonar, tags, actuators.leds());
         return experiment == null ? u : u.withExperiment(experiment.paint(), experiment.lightsNow(),
-                experiment.reports());
+                experiment.reports(), experiment.tracesOfStep(), experiment.tracesWhole());
     }
 
     /** Every tag so far, "tagger>target", oldest first. */

@@ -8,6 +8,7 @@ import robosim.protocol.RecordingReader;
 import robosim.protocol.RobotView;
 import robosim.protocol.SimulationEnd;
 import robosim.protocol.StepNumbers;
+import robosim.protocol.Traces;
 import robosim.protocol.WorldSnapshot;
 
 /**
@@ -24,6 +25,8 @@ final class RecordingCursor {
     /** The world of the step shown (robots may have joined), and whether viewers have yet to get it. */
     private WorldSnapshot world;
     private boolean worldChanged;
+    /** What the loop functions had drawn by the step shown, pieced together from the steps' pieces. */
+    private final Traces.Log drawing = new Traces.Log();
 
     RecordingCursor(RecordingReader recording) {
         this.recording = recording;
@@ -34,7 +37,18 @@ final class RecordingCursor {
     /** Moves to the i-th recorded step; its update, or null if it cannot be read (the replay then ends before it). */
     PoseUpdate show(int i) {
         try {
-            shown = recording.step(i);
+            RecordingReader.Step next = recording.step(i);
+            if (next.update().lightsOn() != null) { // (a world with loop functions: what they drew, pieced together)
+                int from = i > index ? index + 1 : 0; // (a seek back: from the first step again)
+                if (from == 0) {
+                    drawing.erase();
+                }
+                for (int k = from; k < i; k++) {
+                    drawing.apply(recording.step(k).update().traces());
+                }
+                drawing.apply(next.update().traces());
+            }
+            shown = next;
             index = i;
             WorldSnapshot w = recording.snapshotAt(i);
             if (w != world) {
@@ -132,6 +146,6 @@ final class RecordingCursor {
     WorldSnapshot snapshot() {
         WorldSnapshot s = world;
         return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
-                s.robots(), shown.update());
+                s.robots(), shown.update().withWholeDrawing(drawing.whole()), s.scenery());
     }
 }

@@ -16,7 +16,8 @@ import robosim.protocol.WorldSnapshot;
  * n updates a second gets the newest at most every 1/n s. A change of run state is held the same way,
  * newest only; it goes out after the updates held before it, or ahead of one that waits for the rate cap.
  * A viewer that watches a robot ({@link #watching}) gets that robot's {@link RobotView} right after each
- * update; a live viewer's newest view carries the messages of the views it replaced. When robots have
+ * update; a live viewer's newest view carries the messages of the views it replaced, and its newest update what the
+ * updates it replaced drew ({@link PoseUpdate#drawnAfter}). When robots have
  * joined, a new {@link WorldSnapshot} goes right before the first update that holds them (a replaced
  * update hands its snapshot on to the one that replaces it).
  */
@@ -85,9 +86,11 @@ public final class ViewerQueue {
         }
         if (!everyStep) {
             Item replaced = pending.pollLast();
+            PoseUpdate between = null; // (a view-less update dropped after the one replaced, if any)
             if (replaced != null && replaced.view() == null && replaced.roster() == null) {
                 Item kept = pending.pollLast(); // (a view kept ahead of a view-less update, if any: see below)
                 if (kept != null) {
+                    between = replaced.update();
                     replaced = kept;
                 }
             }
@@ -99,7 +102,14 @@ public final class ViewerQueue {
                     view = view.after(replaced.view());
                 } else {
                     pending.addLast(replaced); // (so at most two are held: a view kept, and the newest update)
+                    replaced = null;
                 }
+            }
+            if (between != null) { // (dropped: what their steps drew, the newest draws after it, in order)
+                update = update.drawnAfter(between);
+            }
+            if (replaced != null) {
+                update = update.drawnAfter(replaced.update());
             }
         }
         pending.addLast(new Item(roster, update, view));

@@ -33,6 +33,63 @@ class RecordingCursorTest {
     }
 
     @Test
+    void aViewerJoiningOrASeekGetsTheWholeDrawingAsOfTheStepShown(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("drawn.rec");
+        robosim.protocol.Traces.Log drawing = new robosim.protocol.Traces.Log();
+        try (RecordingWriter w = new RecordingWriter(file)) {
+            w.snapshot(world(1, -1));
+            for (int k = 0; k < 8; k++) {
+                if (k == 5) {
+                    drawing.erase();
+                }
+                drawing.add("a", k, 0, 0xFF0000);
+                w.step(poses(k, 1).withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole()),
+                        new StepRequest[1], new StepResponse[1]);
+            }
+            w.end(new SimulationEnd(7, "completed 8 steps"));
+        }
+        try (RecordingReader r = new RecordingReader(file)) {
+            RecordingCursor at = new RecordingCursor(r);
+            for (int i = 0; i < 4; i++) {
+                at.show(i);
+            }
+            assertEquals(4, at.snapshot().poses().traces().points(), "steps 0 to 3 drew a point each");
+            at.show(1); // (a seek back)
+            assertEquals(2, at.snapshot().poses().traces().points());
+            at.show(6); // (a seek on, across the erasure at step 5)
+            robosim.protocol.Traces whole = at.snapshot().poses().traces();
+            assertEquals(2, whole.points());
+            assertEquals(5, whole.xMm(0));
+            at.show(7);
+            assertEquals(3, at.snapshot().poses().traces().points());
+        }
+    }
+
+    @Test
+    void aWorldWithObjectsIsSoughtIntoWithItsScenery(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("objects.rec");
+        robosim.protocol.WorldObject box = new robosim.protocol.WorldObject("box", robosim.protocol.WorldObject.Shape.BOX,
+                300, 300, 500, 1, 0.5, false, false, 0x808080, 5000, 5000, 0);
+        robosim.protocol.Scenery scenery = new robosim.protocol.Scenery(robosim.protocol.Floor.PLAIN, List.of(),
+                List.of(box));
+        try (RecordingWriter w = new RecordingWriter(file)) {
+            PoseUpdate start = poses(-1, 1).withScene(new double[] {5000}, new double[] {5000}, new double[] {0}, null);
+            w.snapshot(new WorldSnapshot(500, new Arena(0, 0, 10_000, 10_000), List.of(), List.of("a"),
+                    List.of(robosim.devices.RobotTypes.properties("Scout")), start, scenery));
+            for (int k = 0; k < 3; k++) {
+                w.step(poses(k, 1).withScene(new double[] {5000}, new double[] {5000}, new double[] {0}, null),
+                        new StepRequest[1], new StepResponse[1]);
+            }
+            w.end(new SimulationEnd(2, "completed 3 steps"));
+        }
+        try (RecordingReader r = new RecordingReader(file)) {
+            RecordingCursor at = new RecordingCursor(r);
+            at.show(2);
+            assertEquals(List.of(box), at.snapshot().scenery().objects(), "the world sought into, its box with it");
+        }
+    }
+
+    @Test
     void theWorldOfEachStepShownGoesToViewersWhenItChanges(@TempDir Path dir) throws Exception {
         Path file = dir.resolve("joins.rec");
         try (RecordingWriter w = new RecordingWriter(file)) {

@@ -63,6 +63,30 @@ class ViewerQueueTest {
     }
 
     @Test
+    void aLiveViewersNewestUpdateDrawsWhatTheUpdatesItReplacedDrew() throws Exception {
+        robosim.protocol.Traces.Log source = new robosim.protocol.Traces.Log();
+        robosim.protocol.Traces.Log viewer = new robosim.protocol.Traces.Log();
+        ViewerQueue q = new ViewerQueue(false, 0, System::nanoTime);
+        q.watch(0);
+        for (long k = 0; k < 6; k++) { // (views on even steps: a view kept ahead of a view-less update, then both go)
+            source.add("fb", k, 0, 0xFF0000);
+            PoseUpdate drew = update(k).withExperiment(List.of(), List.of(), List.of(), source.since(),
+                    source.whole());
+            q.offer(null, drew, k % 2 == 0 ? view(k, "m" + k) : null);
+        }
+        List<Long> steps = new java.util.ArrayList<>();
+        while (steps.isEmpty() || steps.get(steps.size() - 1) < 5) {
+            if (q.take() instanceof PoseUpdate sent) { // (and the view kept, after its update)
+                steps.add(sent.step());
+                viewer.apply(sent.traces());
+            }
+        }
+        assertEquals(List.of(4L, 5L), steps, "the view's update kept, then the newest");
+        assertEquals(6, viewer.points(), "every point drawn");
+        assertEquals(5, viewer.xMm(5));
+    }
+
+    @Test
     void aRecordingViewerKeepsEveryStepUpToItsBacklogThenSaysWhenItHasRoomAgain() throws Exception {
         ViewerQueue q = new ViewerQueue(true, 0, System::nanoTime);
         for (long k = 0; k < ViewerQueue.RECORDING_BACKLOG; k++) {
