@@ -28,7 +28,7 @@ def pair() -> tuple[socket.socket, socket.socket]:
 
 def state(step: int, names: list[list[str]]) -> dict[str, Any]:
     return {"step": step, "seed": -3, "names": names, "robots": [[100.0, 200.0, 0.0, True, 0, [0x00FF00]]],
-            "objects": [[500.0, 500.0, 0.0, 0]], "lights": [True]}
+            "objects": [[500.0, 500.0, 0.0, 0, True]], "lights": [True]}
 
 
 class Counting(LoopFunctions):
@@ -42,6 +42,9 @@ class Counting(LoopFunctions):
         assert world.robot_name(0) == "r" and world.leds(0) == (0x00FF00,) and world.carrying(0) == 0
         assert world.move_object(0, 700, 700, 10)
         assert world.carrying(0) == -1 and world.carrier(0) == -1 and world.object_x_mm(0) == 700.0
+        world.remove_object(0)
+        assert not world.object_present(0)
+        assert world.add_object(0, 800, 800, 0) and world.object_present(0) and world.object_x_mm(0) == 800.0
         with pytest.raises(ExperimentValueError, match="report: not a name"):
             world.report("bad name", 1)
         world.trace("path", 1, 2, 0xFF0000)
@@ -77,6 +80,10 @@ def test_calls_bring_the_world_and_requests_are_answered() -> None:
     sim.send(["init", state(0, [["r", "foot-bot"]])])
     assert sim.receive() == ["move_object", 0, 700.0, 700.0, 10.0]
     sim.send(["ok", [700.0, 700.0, 10.0]])
+    assert sim.receive() == ["remove_object", 0]
+    sim.send(["ok", None])
+    assert sim.receive() == ["add_object", 0, 800.0, 800.0, 0.0]
+    sim.send(["ok", [800.0, 800.0, 0.0]])
     assert sim.receive() == ["report", "bad name", 1.0]
     sim.send(["error", "value", "not a name"])
     assert sim.receive() == ["trace", "path", 1.0, 2.0, 0xFF0000]

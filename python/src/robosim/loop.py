@@ -229,6 +229,28 @@ class Experiment:
         """The robot holding it, or -1."""
         return int(self._at(self._objects, obj, "object")[3])
 
+    def object_present(self, obj: int) -> bool:
+        """False once ``remove_object`` took it out of the world (until ``add_object`` puts it back)."""
+        return bool(self._at(self._objects, obj, "object")[4])
+
+    def remove_object(self, obj: int) -> None:
+        """Takes it out of the world, let go of by whoever held it: from the next step nothing meets, senses or grips
+        it, and the viewers leave it out. It keeps its number and its last pose."""
+        self._request("remove_object", obj)
+        holder = self.carrier(obj)
+        if holder >= 0:
+            self._robots[holder][4] = -1
+        self._objects[obj][3] = -1
+        self._objects[obj][4] = False
+
+    def add_object(self, obj: int, x_mm: float, y_mm: float, heading_deg: float) -> bool:
+        """Puts an object taken out back into the world at a pose; False, and it stays out, where it would overlap."""
+        pose = self._request("add_object", obj, float(x_mm), float(y_mm), float(heading_deg))
+        if not pose:
+            return False
+        self._objects[obj] = [*(float(v) for v in pose), -1, True]
+        return True
+
     def move_object(self, obj: int, x_mm: float, y_mm: float, heading_deg: float) -> bool:
         """Puts it at a pose, let go of by whoever held it; False, and nothing moved, where it would overlap."""
         pose = self._request("move_object", obj, float(x_mm), float(y_mm), float(heading_deg))
@@ -237,7 +259,7 @@ class Experiment:
         holder = self.carrier(obj)
         if holder >= 0:
             self._robots[holder][4] = -1
-        self._objects[obj] = [*(float(v) for v in pose), -1]
+        self._objects[obj] = [*(float(v) for v in pose), -1, True]
         return True
 
     # ---- floor and lights ----------------------------------------------------------------------------------

@@ -165,7 +165,8 @@ public final class GeometryEngine {
         for (int o = 0; o < things.count(); o++) {
             things.place(o, in.objectXMm(o), in.objectYMm(o), in.objectHeadingDeg(o));
             int c = in.carrier(o);
-            carrier[o] = c >= 0 && absent[c] ? -1 : c;
+            things.gone(o, c == GeometryStepRequest.GONE);
+            carrier[o] = c >= 0 && absent[c] ? -1 : Math.max(c, -1);
         }
         grid.rebuild(x, y, absent);
         for (int i = 0; i < robots; i++) {
@@ -591,7 +592,7 @@ public final class GeometryEngine {
         double bestGap = Double.POSITIVE_INFINITY;
         for (int o = 0; o < things.count(); o++) {
             WorldObject w = things.object(o);
-            if (!w.gripable() || carrier[o] >= 0) {
+            if (!w.gripable() || carrier[o] >= 0 || things.gone(o)) {
                 continue;
             }
             double gap = things.nearest(o, x[i], y[i], scratch) - radius[i];

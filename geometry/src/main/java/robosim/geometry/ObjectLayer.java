@@ -25,6 +25,8 @@ public final class ObjectLayer {
     /** Each box's corners in the world, x0, y0, ... x3, y3 (a cylinder's unused). */
     private final double[] corners;
     private final double[] scratch = new double[2];
+    /** Objects out of the world (a world's loop functions removed them): nothing meets, sees or holds them. */
+    private final boolean[] gone;
 
     /** The objects of a world, each at its start pose. */
     public ObjectLayer(List<WorldObject> objects) {
@@ -36,6 +38,7 @@ public final class ObjectLayer {
         this.y = new double[n];
         this.heading = new double[n];
         this.corners = new double[8 * n];
+        this.gone = new boolean[n];
         for (int o = 0; o < n; o++) {
             WorldObject w = this.objects[o];
             box[o] = w.shape() == WorldObject.Shape.BOX;
@@ -81,8 +84,24 @@ public final class ObjectLayer {
         }
     }
 
-    /** The cheap test first: object {@code o}'s bounding box misses {@code area}. */
+    /** Object {@code o} is out of the world ({@code gone}) or in it. */
+    public void gone(int o, boolean out) {
+        gone[o] = out;
+    }
+
+    /** True if object {@code o} is out of the world. */
+    public boolean gone(int o) {
+        return gone[o];
+    }
+
+    /**
+     * The cheap test first: object {@code o}'s bounding box misses {@code area}, or it is out of the world (every
+     * query of what meets, sees or holds an object asks this first).
+     */
     boolean outside(int o, Envelope area) {
+        if (gone[o]) {
+            return true;
+        }
         double r = radius[o];
         return x[o] + r < area.getMinX() || x[o] - r > area.getMaxX() || y[o] + r < area.getMinY()
                 || y[o] - r > area.getMaxY();

@@ -101,6 +101,25 @@ class ObjectMotionTest {
     }
 
     @Test
+    void anObjectOutOfTheWorldIsNotMetSeenOrGripped() {
+        // a can 5 mm from the robot's rim, in its gripper's reach and its ray's
+        List<WorldObject> can = List.of(cylinder("can", 655, 1000, 50, true));
+        World in = new World(List.of(), can, new double[] {500, 1000, 0});
+        GeometryStepResponse seen = in.step(new double[1], new double[1], true);
+        assertEquals(5, seen.rayMm(0), 1e-9, "in the world: seen");
+        assertEquals(0, seen.gripObject(0), "and gripped");
+        World out = new World(List.of(), can, new double[] {500, 1000, 0});
+        out.carrier[0] = GeometryStepRequest.GONE; // (the loop functions took it out)
+        GeometryStepResponse r = out.step(new double[1], new double[1], true);
+        assertEquals(500, r.rayMm(0), 1e-9, "out of the world: nothing seen, the ray's whole range");
+        assertEquals(-1, r.gripObject(0), "nothing to grip");
+        r = out.move(500);
+        assertEquals(500, r.movedMm(0), 1e-9, "through where it is");
+        assertEquals(GeometryStepResponse.CONTACT_NONE, r.contactKind(0));
+        assertEquals(655, r.objectXMm(0), "it stays where it was");
+    }
+
+    @Test
     void aRobotStopsAtABoxThatDoesNotMove() {
         // the robot's rim at x 600, the box's near face at 900: 300 mm to go of the 500 asked
         World w = new World(List.of(), List.of(box("crate", 1000, 1000, 200, 1, false)), new double[] {500, 1000, 0});

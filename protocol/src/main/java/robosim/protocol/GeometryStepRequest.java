@@ -10,7 +10,8 @@ import java.io.ObjectOutput;
  * and a flags byte: {@link #SONAR} (its sonar ranges are wanted), {@link #RAYS} (its proximity rays' ranges are
  * wanted), {@link #GRIP} (its gripper takes what is in reach after the step's moves) and {@link #ABSENT} (the robot
  * has left the simulation: it neither moves, blocks nor echoes, and gets no ranges); then for every object in world
- * order its pose at the start of the step and the robot carrying it (-1 for none). Geometry is stateless between
+ * order its pose at the start of the step and the robot carrying it (-1 for none; {@link #GONE}, -2, for an object out of
+ * the world, which loop functions removed). Geometry is stateless between
  * steps.
  *
  * <p>The sender may reuse one instance and its arrays from step to step (the connection writes
@@ -44,6 +45,8 @@ public final class GeometryStepRequest implements java.io.Externalizable {
      * a robot without it stops where it touches.
      */
     public static final byte SLIDE = 16;
+    /** An object's carrier that says it is out of the world: nothing meets, sees or holds it this step. */
+    public static final int GONE = -2;
 
     public GeometryStepRequest() {
     }
@@ -95,7 +98,7 @@ public final class GeometryStepRequest implements java.io.Externalizable {
         flags[robot] = (byte) (robotFlags & (SONAR | RAYS | GRIP | SLIDE));
     }
 
-    /** Object {@code object}'s pose at the start of the step, and the robot carrying it (-1 for none). */
+    /** Object {@code object}'s pose at the start of the step, and the robot carrying it (-1 for none, {@link #GONE}). */
     public void setObject(int object, double x, double y, double heading, int carriedBy) {
         objectXMm[object] = x;
         objectYMm[object] = y;
@@ -219,7 +222,7 @@ public final class GeometryStepRequest implements java.io.Externalizable {
             objectYMm[o] = in.readDouble();
             objectHeadingDeg[o] = in.readDouble();
             carrier[o] = in.readInt();
-            if (carrier[o] < -1 || carrier[o] >= count) {
+            if (carrier[o] < GONE || carrier[o] >= count) {
                 throw new ProtocolException("object " + o + " carried by robot " + carrier[o] + " of " + count);
             }
         }

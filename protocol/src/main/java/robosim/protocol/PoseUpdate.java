@@ -37,8 +37,11 @@ public final class PoseUpdate implements java.io.Externalizable {
     /** What the loop functions drew over the world this step ({@link Traces}: a piece), and the whole drawing as of it. */
     private Traces traces = Traces.NONE;
     private Traces tracesWhole = Traces.NONE;
+    /** The objects the loop functions took out of the world, in world order. */
+    private int[] objectsGone = NO_OBJECTS;
 
     private static final double[] NONE = new double[0];
+    private static final int[] NO_OBJECTS = new int[0];
     /** The LEDs of a robot that has none, or whose LEDs are all off and always were. */
     public static final int[] NO_LEDS = new int[0];
 
@@ -111,23 +114,19 @@ public final class PoseUpdate implements java.io.Externalizable {
         u.reports = reports;
         u.traces = traces;
         u.tracesWhole = tracesWhole;
+        u.objectsGone = objectsGone;
         return u;
     }
 
     /**
      * This update with what the world's loop functions left of its step: {@code painted} over the floor (oldest
-     * first), {@code lights} as they stand (switched on or off), and the metrics they reported for the step.
-     */
-    public PoseUpdate withExperiment(List<Floor.Region> painted, List<Light> lights, List<Report> metrics) {
-        return withExperiment(painted, lights, metrics, Traces.NONE, Traces.NONE);
-    }
-
-    /**
-     * As {@link #withExperiment(List, List, List)}, and what they drew over the world: {@code piece}, this step's,
-     * and {@code whole}, the drawing as of this step (what a snapshot made of this update carries: {@link #posesOnly}).
+     * first), {@code lights} as they stand (switched on or off), the metrics they reported for the step, what they
+     * drew over the world ({@code piece}, this step's, and {@code whole}, the drawing as of this step, which a
+     * snapshot made of this update carries: {@link #posesOnly}), and the objects they took out of the world
+     * ({@code gone}, in world order).
      */
     public PoseUpdate withExperiment(List<Floor.Region> painted, List<Light> lights, List<Report> metrics,
-            Traces piece, Traces whole) {
+            Traces piece, Traces whole, int[] gone) {
         PoseUpdate u = withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
         u.paint = List.copyOf(painted);
         u.lightsOn = new boolean[lights.size()];
@@ -137,7 +136,18 @@ public final class PoseUpdate implements java.io.Externalizable {
         u.reports = List.copyOf(metrics);
         u.traces = piece;
         u.tracesWhole = whole;
+        u.objectsGone = gone;
         return u;
+    }
+
+    /** The objects the world's loop functions took out of it (in world order; none without them). */
+    public int[] objectsGone() {
+        return objectsGone.clone();
+    }
+
+    /** True if object {@code o} is out of the world (its loop functions removed it): viewers leave it out. */
+    public boolean objectGone(int o) {
+        return java.util.Arrays.binarySearch(objectsGone, o) >= 0;
     }
 
     /** What the world's loop functions drew over it this step (a piece of the drawing: {@link Traces.Log#apply}). */
@@ -205,6 +215,7 @@ public final class PoseUpdate implements java.io.Externalizable {
         u.reports = reports;
         u.traces = tracesWhole; // (and their whole drawing)
         u.tracesWhole = tracesWhole;
+        u.objectsGone = objectsGone;
         return u;
     }
 
@@ -308,6 +319,10 @@ public final class PoseUpdate implements java.io.Externalizable {
             }
             Report.write(out, reports);
             traces.write(out);
+            out.writeInt(objectsGone.length);
+            for (int o : objectsGone) {
+                out.writeInt(o);
+            }
         }
     }
 
@@ -362,6 +377,15 @@ public final class PoseUpdate implements java.io.Externalizable {
         reports = Report.read(in, Report.MAX_PER_STEP);
         if (RecordingVersion.withTraces(in)) {
             traces = Traces.read(in);
+            objectsGone = new int[Limits.checkCount("gone object count", in.readInt(), objectXMm.length)];
+            for (int k = 0; k < objectsGone.length; k++) {
+                objectsGone[k] = in.readInt();
+                if (objectsGone[k] < 0 || objectsGone[k] >= objectXMm.length
+                        || (k > 0 && objectsGone[k] <= objectsGone[k - 1])) {
+                    throw new ProtocolException("gone object " + objectsGone[k] + " (of " + objectXMm.length
+                            + ", in world order, once each)");
+                }
+            }
         }
     }
 }

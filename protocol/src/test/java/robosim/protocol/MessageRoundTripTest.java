@@ -246,7 +246,7 @@ class MessageRoundTripTest {
         assertEquals(OVERHEAD + 8 + 4 + 2 * (24 + 1) + 2 * 8 + 4 + 4 + 4 + 4 + 1 + 1, repeatedSize(p));
         PoseUpdate looped = roundTrip(p.withExperiment(List.of(new Floor.Region(new Floor.Disc(10, 20, 5), 0x000000)),
                 List.of(new Light("l1", 0, 0, 100, 0xFFFF00, 1, true), new Light("l2", 0, 0, 100, 0xFFFF00, 1, true)),
-                List.of(new Report("collected_food", 3))));
+                List.of(new Report("collected_food", 3)), robosim.protocol.Traces.NONE, robosim.protocol.Traces.NONE, new int[0]));
         assertEquals(List.of(new Floor.Region(new Floor.Disc(10, 20, 5), 0x000000)), looped.paint());
         assertEquals(List.of(new Report("collected_food", 3)), looped.reports());
         assertEquals(looped.paint(), looped.posesOnly().paint(), "a snapshot's poses keep the paint");
@@ -259,11 +259,15 @@ class MessageRoundTripTest {
         drawing.add("fb0", 1, 2, 0xFF0000);
         drawing.since();
         drawing.add("fb0", 3, 4, 0xFF0000);
-        PoseUpdate drew = p.withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole());
+        PoseUpdate drew = p.withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole(), new int[0]);
         Traces sent = roundTrip(drew).traces();
         assertEquals(1, sent.firstPoint(), "a step's piece: its own point");
         assertEquals(1, sent.points());
         assertEquals(3, sent.xMm(1));
+        PoseUpdate two = p.withScene(new double[] {1, 2}, new double[] {3, 4}, new double[] {0, 0}, null)
+                .withExperiment(List.of(), List.of(), List.of(), Traces.NONE, Traces.NONE, new int[] {1});
+        assertTrue(roundTrip(two).objectGone(1) && !roundTrip(two).objectGone(0), "object 1 out of the world");
+        assertTrue(roundTrip(two.posesOnly()).objectGone(1), "a snapshot's poses too");
         Traces whole = roundTrip(drew.posesOnly()).traces();
         assertTrue(whole.fresh(), "a snapshot's poses hold the whole drawing");
         assertEquals(2, whole.points());

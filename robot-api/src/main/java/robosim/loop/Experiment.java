@@ -103,9 +103,26 @@ public interface Experiment {
 
     /**
      * Puts it at a pose, let go of by whoever held it; false, and nothing moved, where it would overlap a wall, an
-     * obstacle, a robot or another object.
+     * obstacle, a robot or another object. An object out of the world is an IllegalStateException ({@link #addObject}).
      */
     boolean moveObject(int object, double xMm, double yMm, double headingDeg);
+
+    /** False once {@link #removeObject} took it out of the world (until {@link #addObject} puts it back). */
+    boolean objectPresent(int object);
+
+    /**
+     * Takes it out of the world, let go of by whoever held it: from the next step nothing meets, senses or grips it,
+     * and the viewers leave it out (ARGoS's {@code RemoveEntity}). A world's objects are its file's: one taken out
+     * keeps its number, and its last pose.
+     */
+    void removeObject(int object);
+
+    /**
+     * Puts an object {@link #removeObject} took out back into the world, at a pose (ARGoS's {@code AddEntity}, of an
+     * object the file declared); false, and it stays out, where it would overlap something. An object in the world is
+     * an IllegalStateException.
+     */
+    boolean addObject(int object, double xMm, double yMm, double headingDeg);
 
     // ---- floor and lights ----------------------------------------------------------------------------------
 

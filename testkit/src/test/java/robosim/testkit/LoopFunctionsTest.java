@@ -156,6 +156,40 @@ class LoopFunctionsTest {
     }
 
     @Test
+    void anObjectTakenOutOfTheWorldIsNotMetAndOneAddedBackIs() throws Exception {
+        Probe probe = new Probe();
+        boolean[] refused = new boolean[3];
+        probe.plan.put(0L, w -> { // (the crate right ahead of the foot-bot, then out of the world)
+            w.moveObject(0, 1300, 1000, 0);
+            w.removeObject(0);
+            refused[0] = !w.objectPresent(0);
+            try {
+                w.moveObject(0, 2000, 1000, 0);
+            } catch (IllegalStateException e) {
+                refused[1] = true;
+            }
+        });
+        probe.plan.put(60L, w -> { // (back, onto the foot-bot: refused; then ahead of it)
+            refused[2] = !w.addObject(0, w.robotXMm(0), w.robotYMm(0), 0);
+            w.addObject(0, w.robotXMm(0) + 300, 1000, 0);
+        });
+        RobotControl ahead = robot -> {
+            robot.setWheelSpeeds(100, 100);
+            while (true) {
+                robot.step();
+            }
+        };
+        try (Simulation sim = Simulation.of(world()).control("fb", ahead).loopFunctions(probe).start()) {
+            sim.run(60);
+            assertTrue(sim.pose("fb").xMm() > 1500, "through where the crate was: " + sim.pose("fb"));
+            assertEquals(List.of(), sim.contacts("fb"), "nothing met");
+            sim.run(60);
+            assertEquals("crate", sim.contacts("fb").get(0).with(), "the crate again, back in the world");
+        }
+        assertTrue(refused[0] && refused[1] && refused[2], java.util.Arrays.toString(refused));
+    }
+
+    @Test
     void loopFunctionsThatThrowEndTheRunNamingThemTheCallAndTheStep() throws Exception {
         Probe probe = new Probe();
         probe.plan.put(3L, w -> {

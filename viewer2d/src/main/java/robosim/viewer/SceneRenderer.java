@@ -166,7 +166,10 @@ public final class SceneRenderer {
         return polygon(((Floor.Polygon) area).xyMm(), t);
     }
 
-    /** Each object where the poses put it (its start pose before any), in its colour; a movable one dashed. */
+    /**
+     * Each object where the poses put it (its start pose before any), in its colour; a movable one dashed; none the
+     * loop functions took out of the world.
+     */
     private static void drawObjects(Graphics2D g, Scene s, ViewTransform t) {
         List<WorldObject> objects = s.scenery().objects();
         PoseUpdate p = s.poses();
@@ -174,6 +177,9 @@ public final class SceneRenderer {
         double[] corners = new double[8];
         for (int o = 0; o < objects.size(); o++) {
             WorldObject w = objects.get(o);
+            if (p.objectGone(o)) {
+                continue; // (the world's loop functions took it out)
+            }
             double x = moved ? p.objectXMm(o) : w.xMm();
             double y = moved ? p.objectYMm(o) : w.yMm();
             java.awt.Shape shape;

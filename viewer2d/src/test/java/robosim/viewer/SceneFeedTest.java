@@ -35,13 +35,13 @@ class SceneFeedTest {
         robosim.protocol.Traces.Log source = new robosim.protocol.Traces.Log();
         source.add("a", 10, 20, 0x00FF00);
         PoseUpdate start = at(-1, 1000).withExperiment(List.of(), List.of(), List.of(), source.since(),
-                source.whole());
+                source.whole(), new int[0]);
         SceneFeed feed = new SceneFeed(System::nanoTime);
         feed.snapshot(world(start.posesOnly()));
         Scene first = feed.latest();
         for (int k = 0; k < 50; k++) {
             source.add(k % 2 == 0 ? "a" : "b", k, k, 0x00FF00);
-            feed.update(at(k, 1000).withExperiment(List.of(), List.of(), List.of(), source.since(), source.whole()));
+            feed.update(at(k, 1000).withExperiment(List.of(), List.of(), List.of(), source.since(), source.whole(), new int[0]));
         }
         robosim.protocol.Traces drawn = feed.latest().poses().traces();
         assertTrue(drawn.fresh(), "a scene holds the whole drawing");
@@ -50,7 +50,7 @@ class SceneFeedTest {
         assertEquals(49, drawn.xMm(50));
         assertEquals(1, first.poses().traces().points(), "the first scene's drawing as it was");
         source.erase();
-        feed.update(at(50, 1000).withExperiment(List.of(), List.of(), List.of(), source.since(), source.whole()));
+        feed.update(at(50, 1000).withExperiment(List.of(), List.of(), List.of(), source.since(), source.whole(), new int[0]));
         assertEquals(0, feed.latest().poses().traces().points(), "erased");
     }
 

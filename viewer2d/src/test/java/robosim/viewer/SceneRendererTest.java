@@ -81,7 +81,7 @@ class SceneRendererTest {
         drawing.add("path", 3500, 4500, 0xFF0000);
         Scene plain = scene();
         PoseUpdate drew = plain.poses().withExperiment(List.of(), List.of(), List.of(), drawing.since(),
-                drawing.whole()).posesOnly();
+                drawing.whole(), new int[0]).posesOnly();
         Scene s = new Scene(ARENA, plain.obstacles(), plain.names(), plain.robots(), drew, plain.trails(), 0,
                 plain.status());
         BufferedImage img = new BufferedImage(1000, 500, BufferedImage.TYPE_INT_RGB);

@@ -190,6 +190,10 @@ final class WebJson {
                 oy.add(u.objectYMm(o));
                 oh.add(u.objectHeadingDeg(o));
             }
+            ArrayNode gone = objects.putArray("gone"); // (out of the world: the loop functions took them out)
+            for (int o : u.objectsGone()) {
+                gone.add(o);
+            }
         }
         ArrayNode leds = null;
         for (int i = 0; i < u.count(); i++) {

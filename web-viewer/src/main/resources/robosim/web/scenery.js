@@ -37,6 +37,12 @@ export function objectPose(world, poses, i) {
   return p ? [p.x[i], p.y[i], p.heading[i]] : [o.x, o.y, o.heading];
 }
 
+// whether object i is out of the world (the newest update says the loop functions took it out)
+export function objectGone(poses, i) {
+  const p = poses && poses.objects;
+  return !!(p && p.gone && p.gone.includes(i));
+}
+
 // a box's corners at (x, y), heading deg: x0, y0, ... x3, y3 (mm)
 export function corners(o, x, y, heading) {
   const h = heading * Math.PI / 180, c = Math.cos(h), s = Math.sin(h), hw = o.width / 2, hd = o.depth / 2;

@@ -5,7 +5,7 @@
 // floor. Metres; z up. Drag orbits, wheel zooms. Names are text laid over the canvas (set as textContent), placed
 // where each robot is drawn.
 import * as THREE from '/three/three.module.min.js';
-import { paintFloor, objectPose } from './scenery.js';
+import { paintFloor, objectPose, objectGone } from './scenery.js';
 
 const WALL_M = 0.4, BOUNDS_M = 0.05, TRAIL_Z = 0.01, LABEL_ABOVE_M = 0.15, FLOOR_PX = 1024, LED_M = 0.008;
 
@@ -174,6 +174,7 @@ export class View3D {
       this.trail(r.trail, trails && trails[i]);
     });
     this.objects.forEach((g, i) => {
+      g.visible = !objectGone(poses, i); // (the loop functions took it out of the world)
       const [x, y, h] = objectPose(this.w, poses, i);
       g.position.set(x / 1000, y / 1000, 0);
       g.rotation.z = h * Math.PI / 180;

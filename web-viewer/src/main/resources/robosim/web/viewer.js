@@ -2,7 +2,7 @@
 // is only ever set as textContent, never as markup.
 import { View3D } from './view3d.js';
 import { RobotPanel } from './robot.js';
-import { floorPicture, paintFloor, objectPose, corners } from './scenery.js';
+import { floorPicture, paintFloor, objectPose, objectGone, corners } from './scenery.js';
 
 const $ = (id) => document.getElementById(id);
 const TRAIL = 600; // points kept per robot
@@ -171,7 +171,8 @@ function draw2d() {
     for (let k = 0; k < o.xy.length; k += 2) g.lineTo(toX(o.xy[k]), toY(o.xy[k + 1]));
     g.closePath(); g.fill();
   }
-  world.objects.forEach((o, i) => { // (in their colours; a movable one outlined dashed)
+  world.objects.forEach((o, i) => { // (in their colours; a movable one outlined dashed; none taken out of the world)
+    if (objectGone(poses, i)) return;
     const [x, y, h] = objectPose(world, poses, i);
     g.beginPath();
     if (o.shape === 'cylinder') g.arc(toX(x), toY(y), o.width / 2 * scale, 0, 2 * Math.PI);

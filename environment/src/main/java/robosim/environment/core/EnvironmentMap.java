@@ -22,6 +22,8 @@ public final class EnvironmentMap {
     private final double[] objectX;
     private final double[] objectY;
     private final double[] objectHeading;
+    /** Each object out of the world. */
+    private final boolean[] objectGone;
     /** The robot carrying each object, or -1. */
     private final int[] carrier;
 
@@ -48,6 +50,7 @@ public final class EnvironmentMap {
         objectY = new double[m];
         objectHeading = new double[m];
         carrier = new int[m];
+        objectGone = new boolean[m];
         for (int o = 0; o < m; o++) {
             objectX[o] = objects.get(o).xMm();
             objectY[o] = objects.get(o).yMm();
@@ -146,6 +149,34 @@ public final class EnvironmentMap {
     /** The robot carrying object {@code object}, or -1. */
     public int carrier(int object) {
         return carrier[object];
+    }
+
+    /** True if object {@code object} is out of the world (the world's loop functions removed it). */
+    public boolean objectGone(int object) {
+        return objectGone[object];
+    }
+
+    /** Object {@code object} goes out of the world (let go of by whoever held it), or comes back into it. */
+    void objectGone(int object, boolean gone) {
+        objectGone[object] = gone;
+        if (gone) {
+            carrier[object] = -1;
+        }
+    }
+
+    /** The objects out of the world, in world order (a new array). */
+    public int[] objectsGone() {
+        int n = 0;
+        for (boolean g : objectGone) {
+            n += g ? 1 : 0;
+        }
+        int[] out = new int[n];
+        for (int o = 0, k = 0; o < objectGone.length; o++) {
+            if (objectGone[o]) {
+                out[k++] = o;
+            }
+        }
+        return out;
     }
 
     /** The object robot {@code robot} carries, or -1. */

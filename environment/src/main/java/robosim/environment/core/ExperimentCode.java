@@ -350,8 +350,39 @@ final class ExperimentCode implements Experiment {
     }
 
     @Override
+    public boolean objectPresent(int object) {
+        return !map.objectGone(object);
+    }
+
+    @Override
+    public void removeObject(int object) {
+        map.objectGone(object, true);
+    }
+
+    @Override
+    public boolean addObject(int object, double xMm, double yMm, double headingDeg) {
+        finite("addObject", xMm, yMm, headingDeg);
+        if (!map.objectGone(object)) {
+            throw new IllegalStateException("object " + object + " (" + objectName(object) + ") is in the world: "
+                    + "moveObject moves it");
+        }
+        WorldObject back = map.spec().scenery().objects().get(object).at(xMm, yMm,
+                robosim.geometry.Kinematics.turn(0, headingDeg));
+        if (placement(-1, object).overlapOf(back) != null) {
+            return false;
+        }
+        map.setObjectPose(object, back.xMm(), back.yMm(), back.headingDeg());
+        map.objectGone(object, false);
+        return true;
+    }
+
+    @Override
     public boolean moveObject(int object, double xMm, double yMm, double headingDeg) {
         finite("moveObject", xMm, yMm, headingDeg);
+        if (map.objectGone(object)) {
+            throw new IllegalStateException("object " + object + " (" + objectName(object) + ") is out of the world: "
+                    + "addObject puts it back");
+        }
         WorldObject moved = map.spec().scenery().objects().get(object).at(xMm, yMm,
                 robosim.geometry.Kinematics.turn(0, headingDeg));
         if (placement(-1, object).overlapOf(moved) != null) {
@@ -372,7 +403,7 @@ final class ExperimentCode implements Experiment {
         }
         List<WorldObject> objects = map.spec().scenery().objects();
         for (int o = 0; o < objects.size(); o++) {
-            if (o != object) {
+            if (o != object && !map.objectGone(o)) {
                 p.addObject(objects.get(o).at(map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o)));
             }
         }

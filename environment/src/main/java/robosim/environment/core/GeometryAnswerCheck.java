@@ -111,7 +111,7 @@ final class GeometryAnswerCheck {
             int robot = answer.gripRobot(k);
             int object = answer.gripObject(k);
             if (robot <= last || robot >= robots || !asked.wantsGrip(robot) || object < -1 || object >= objects
-                    || (object >= 0 && (asked.carrier(object) >= 0 || !things.get(object).gripable() || taken[object]))) {
+                    || (object >= 0 && (asked.carrier(object) != -1 || !things.get(object).gripable() || taken[object]))) {
                 throw new ProtocolException("geometry gave robot " + robot + " object " + object
                         + " to grip, which it did not ask for or cannot have");
             }

@@ -338,7 +338,7 @@ final class LoopScript implements LoopFunctions {
 
     /**
      * The world as the script sees it in a call: {@code {"step", "seed" (the episode's), "names": [[NAME, TYPE]...] (robots not named
-     * before), "robots": [[X, Y, HEADING, PRESENT, CARRYING, [LED...]]...], "objects": [[X, Y, HEADING, CARRIER]...],
+     * before), "robots": [[X, Y, HEADING, PRESENT, CARRYING, [LED...]]...], "objects": [[X, Y, HEADING, CARRIER, PRESENT]...],
      * "lights": [ON...]}}.
      */
     private void packState(Experiment world) throws IOException {
@@ -363,8 +363,8 @@ final class LoopScript implements LoopFunctions {
         }
         packer.packString("objects").packArrayHeader(world.objects());
         for (int o = 0; o < world.objects(); o++) {
-            packer.packArrayHeader(4).packDouble(world.objectXMm(o)).packDouble(world.objectYMm(o))
-                    .packDouble(world.objectHeadingDeg(o)).packInt(world.carrier(o));
+            packer.packArrayHeader(5).packDouble(world.objectXMm(o)).packDouble(world.objectYMm(o))
+                    .packDouble(world.objectHeadingDeg(o)).packInt(world.carrier(o)).packBoolean(world.objectPresent(o));
         }
         packer.packString("lights").packArrayHeader(world.lights());
         for (int l = 0; l < world.lights(); l++) {
@@ -436,6 +436,16 @@ final class LoopScript implements LoopFunctions {
                 arity(verb, a, 4);
                 int o = index(a[0]);
                 return world.moveObject(o, num(a[1]), num(a[2]), num(a[3]))
+                        ? new double[] {world.objectXMm(o), world.objectYMm(o), world.objectHeadingDeg(o)} : false;
+            }
+            case "remove_object":
+                arity(verb, a, 1);
+                world.removeObject(index(a[0]));
+                return null;
+            case "add_object": {
+                arity(verb, a, 4);
+                int o = index(a[0]);
+                return world.addObject(o, num(a[1]), num(a[2]), num(a[3]))
                         ? new double[] {world.objectXMm(o), world.objectYMm(o), world.objectHeadingDeg(o)} : false;
             }
             case "tell":

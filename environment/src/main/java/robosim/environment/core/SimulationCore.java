@@ -316,7 +316,8 @@ public final class SimulationCore {
             }
         }
         for (int o = 0; o < map.objectCount(); o++) {
-            geometryRequest.setObject(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o), map.carrier(o));
+            geometryRequest.setObject(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o),
+                    map.objectGone(o) ? GeometryStepRequest.GONE : map.carrier(o));
         }
         pending = requests;
         return geometryRequest;
@@ -449,7 +450,7 @@ public final class SimulationCore {
         }
         PoseUpdate u = map.poses(lastStep, sonar, tags, actuators.leds());
         return experiment == null ? u : u.withExperiment(experiment.paint(), experiment.lightsNow(),
-                experiment.reports(), experiment.tracesOfStep(), experiment.tracesWhole());
+                experiment.reports(), experiment.tracesOfStep(), experiment.tracesWhole(), map.objectsGone());
     }
 
     /** Every tag so far, "tagger>target", oldest first. */

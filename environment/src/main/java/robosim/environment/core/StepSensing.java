@@ -92,6 +92,7 @@ final class StepSensing {
     void stepped() {
         for (int o = 0; o < things.count(); o++) {
             things.place(o, map.objectXMm(o), map.objectYMm(o), map.objectHeadingDeg(o));
+            things.gone(o, map.objectGone(o));
         }
         media.stepped();
     }

@@ -43,7 +43,7 @@ class RecordingCursorTest {
                     drawing.erase();
                 }
                 drawing.add("a", k, 0, 0xFF0000);
-                w.step(poses(k, 1).withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole()),
+                w.step(poses(k, 1).withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole(), new int[0]),
                         new StepRequest[1], new StepResponse[1]);
             }
             w.end(new SimulationEnd(7, "completed 8 steps"));

@@ -71,7 +71,7 @@ class ViewerQueueTest {
         for (long k = 0; k < 6; k++) { // (views on even steps: a view kept ahead of a view-less update, then both go)
             source.add("fb", k, 0, 0xFF0000);
             PoseUpdate drew = update(k).withExperiment(List.of(), List.of(), List.of(), source.since(),
-                    source.whole());
+                    source.whole(), new int[0]);
             q.offer(null, drew, k % 2 == 0 ? view(k, "m" + k) : null);
         }
         List<Long> steps = new java.util.ArrayList<>();
