@@ -281,7 +281,7 @@ class Experiment:
 
     def trace(self, name: str, x_mm: float, y_mm: float, rgb: int) -> None:
         """Draws over the world for the viewers: extends trace ``name`` (a line of colour ``rgb``, begun if new) to a
-        point. Not sensed; recorded and replayed; at most 1,024 traces and 100,000 points a drawing."""
+        point. Not sensed; recorded and replayed; bounded as Java's ``Experiment.trace`` says."""
         self._request("trace", name, float(x_mm), float(y_mm), rgb)
 
     def erase_traces(self) -> None:

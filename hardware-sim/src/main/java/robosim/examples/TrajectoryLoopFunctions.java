@@ -9,7 +9,8 @@ import robosim.loop.LoopFunctions;
  * ARGoS's trajectory_loop_functions (examples/argos/trajectory.xml): each robot's waypoints, its start and then each
  * place it has reached more than {@code min_distance} (m; ARGoS's 0.05) from its last; each waypoint is drawn for the
  * viewers as the robot's trace (ARGoS's trajectory_qtuser_functions draw them in its window), in the robot's own
- * colour. A reset starts every path afresh where the robots stand.
+ * colour; a run long enough to fill a drawing ({@code Traces.MAX_POINTS}) has each path's newer half drawn again, its
+ * waypoints all kept. A reset starts every path afresh where the robots stand.
  */
 public final class TrajectoryLoopFunctions implements LoopFunctions {
     /** A colour a robot, in world order, from ten (Matplotlib's default cycle, distinct on a light floor). */
@@ -19,6 +20,8 @@ public final class TrajectoryLoopFunctions implements LoopFunctions {
     private double minSquaredMm;
     /** Each robot's waypoints, x and y (mm) in turn. */
     private final List<List<double[]>> waypoints = new ArrayList<>();
+    /** Points drawn since the drawing was last erased. */
+    private int drawn;
 
     @Override
     public void init(Experiment world) {
@@ -29,6 +32,7 @@ public final class TrajectoryLoopFunctions implements LoopFunctions {
         minSquaredMm = min * min;
         waypoints.clear();
         world.eraseTraces();
+        drawn = 0;
         for (int r = 0; r < world.robots(); r++) {
             start(world, r);
         }
@@ -43,7 +47,24 @@ public final class TrajectoryLoopFunctions implements LoopFunctions {
     private void add(Experiment world, int r, List<double[]> path) {
         double[] p = {world.robotXMm(r), world.robotYMm(r)};
         path.add(p);
+        if (drawn == robosim.protocol.Traces.MAX_POINTS) { // (a drawing's bound: each path's newer half drawn again)
+            world.eraseTraces();
+            drawn = 0;
+            int keep = robosim.protocol.Traces.MAX_POINTS / 2 / waypoints.size();
+            for (int k = 0; k < waypoints.size(); k++) {
+                List<double[]> w = waypoints.get(k);
+                for (double[] q : w.subList(Math.max(0, w.size() - keep - (k == r ? 1 : 0)),
+                        w.size() - (k == r ? 1 : 0))) {
+                    draw(world, k, q);
+                }
+            }
+        }
+        draw(world, r, p);
+    }
+
+    private void draw(Experiment world, int r, double[] p) {
         world.trace(world.robotName(r), p[0], p[1], COLOURS[r % COLOURS.length]);
+        drawn++;
     }
 
     @Override

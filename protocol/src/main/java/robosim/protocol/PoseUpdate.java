@@ -168,6 +168,13 @@ public final class PoseUpdate implements java.io.Externalizable {
         return u;
     }
 
+    /** This update drawing {@code piece} instead of what it drew (a replay's: a piece of its own drawing). */
+    public PoseUpdate withPiece(Traces piece) {
+        PoseUpdate u = withScene(objectXMm, objectYMm, objectHeadingDeg, leds);
+        u.traces = piece;
+        return u;
+    }
+
     /**
      * This update drawing {@code whole}, the drawing as of its step, entire (a replay's snapshot: the drawing pieced
      * together from the recorded steps).
@@ -377,6 +384,7 @@ public final class PoseUpdate implements java.io.Externalizable {
         reports = Report.read(in, Report.MAX_PER_STEP);
         if (RecordingVersion.withTraces(in)) {
             traces = Traces.read(in);
+            tracesWhole = traces.fresh() ? traces : Traces.NONE; // (a piece alone: the drawing before it is not here)
             objectsGone = new int[Limits.checkCount("gone object count", in.readInt(), objectXMm.length)];
             for (int k = 0; k < objectsGone.length; k++) {
                 objectsGone[k] = in.readInt();

@@ -13,10 +13,12 @@ import java.util.Map;
  * of this class is a piece of a drawing: the traces begun and the points added since a moment, after the erasure of
  * everything drawn before where it is {@link #fresh}; the whole drawing is the fresh piece of everything
  * ({@link Log#whole}). A point names its trace by its place among all the drawing's traces, so pieces apply in order
- * ({@link Log#apply}). Bounded: {@link #MAX_TRACES} traces and {@link #MAX_POINTS} points in a drawing.
+ * ({@link Log#apply}). Bounded: {@link #MAX_TRACES} traces and {@link #MAX_POINTS} points in a drawing, a trace's name
+ * {@link #MAX_NAME} characters (the limits {@code robosim.loop.Experiment#trace} states).
  *
- * <p>A piece is a range of a {@link Log}'s arrays, which only grow (a grown array is a copy; an erasure makes new
- * ones): it stays as it was made while the log draws on, so the loop hands it to other threads as it is.
+ * <p>A piece made by a {@link Log} is a range of the log's arrays, which only grow (a grown array is a copy; an
+ * erasure makes new ones): it stays as it was made while the log draws on, so the loop hands it to other threads as it
+ * is. A piece read from the wire holds its own range only.
  */
 public final class Traces {
     /** The most traces a drawing has. */
@@ -26,30 +28,39 @@ public final class Traces {
     /** The longest name of a trace, characters. */
     public static final int MAX_NAME = 64;
     /** Nothing new. */
-    public static final Traces NONE = new Traces(false, new String[0], new int[0], 0, 0, new int[0], new double[0],
-            new double[0], 0, 0);
+    public static final Traces NONE = new Traces(false, null, new String[0], new int[0], 0, 0, 0, new int[0],
+            new double[0], new double[0], 0, 0, 0);
 
     private final boolean fresh;
+    /** The log whose arrays these are (pieces of one log may share them), or null for arrays of this piece's own. */
+    private final Log source;
     private final String[] names;
     private final int[] rgb;
+    /** The place of {@code names[0]} among the drawing's traces. */
+    private final int traceBase;
     private final int traceFrom;
     private final int traceTo;
     private final int[] of;
     private final double[] x;
     private final double[] y;
+    /** The place of {@code of[0]} among the drawing's points. */
+    private final int pointBase;
     private final int pointFrom;
     private final int pointTo;
 
-    private Traces(boolean fresh, String[] names, int[] rgb, int traceFrom, int traceTo, int[] of, double[] x,
-            double[] y, int pointFrom, int pointTo) {
+    private Traces(boolean fresh, Log source, String[] names, int[] rgb, int traceBase, int traceFrom, int traceTo,
+            int[] of, double[] x, double[] y, int pointBase, int pointFrom, int pointTo) {
         this.fresh = fresh;
+        this.source = source;
         this.names = names;
         this.rgb = rgb;
+        this.traceBase = traceBase;
         this.traceFrom = traceFrom;
         this.traceTo = traceTo;
         this.of = of;
         this.x = x;
         this.y = y;
+        this.pointBase = pointBase;
         this.pointFrom = pointFrom;
         this.pointTo = pointTo;
     }
@@ -76,12 +87,12 @@ public final class Traces {
 
     /** The name of the drawing's trace {@code t} (one this piece begins: {@code firstTrace() <= t}). */
     public String name(int t) {
-        return names[check(t, traceFrom, traceTo)];
+        return names[check(t, traceFrom, traceTo) - traceBase];
     }
 
     /** The colour ({@code 0xRRGGBB}) of the drawing's trace {@code t}, one this piece begins. */
     public int rgb(int t) {
-        return rgb[check(t, traceFrom, traceTo)];
+        return rgb[check(t, traceFrom, traceTo) - traceBase];
     }
 
     /** The place, among the drawing's points, of this piece's first. */
@@ -96,15 +107,15 @@ public final class Traces {
 
     /** The trace of the drawing's point {@code p} (one this piece adds: {@code firstPoint() <= p}). */
     public int traceOf(int p) {
-        return of[check(p, pointFrom, pointTo)];
+        return of[check(p, pointFrom, pointTo) - pointBase];
     }
 
     public double xMm(int p) {
-        return x[check(p, pointFrom, pointTo)];
+        return x[check(p, pointFrom, pointTo) - pointBase];
     }
 
     public double yMm(int p) {
-        return y[check(p, pointFrom, pointTo)];
+        return y[check(p, pointFrom, pointTo) - pointBase];
     }
 
     private static int check(int i, int from, int to) {
@@ -115,9 +126,9 @@ public final class Traces {
     }
 
     /**
-     * This piece followed by {@code later}, both of one log in the order made (a viewer that is sent the newest of
-     * many updates is sent what all of them drew); were they not one after the other, all that {@code later}'s log
-     * holds, as a fresh piece.
+     * This piece followed by {@code later}, the one made next (a viewer that is sent the newest of many updates is sent
+     * what all of them drew): a range of their log's arrays where they share them, else a copy of both. Pieces that do
+     * not follow one another are not joined: {@code later} alone (the viewer that applies it finds the gap).
      */
     public Traces then(Traces later) {
         if (later.fresh || isEmpty()) {
@@ -126,12 +137,33 @@ public final class Traces {
         if (later.isEmpty()) {
             return this;
         }
-        if (later.traceFrom != traceTo || later.pointFrom != pointTo) { // (not one after the other: all of later's)
-            return new Traces(true, later.names, later.rgb, 0, later.traceTo, later.of, later.x, later.y, 0,
-                    later.pointTo);
+        if (later.traceFrom != traceTo || later.pointFrom != pointTo) {
+            return later;
         }
-        return new Traces(fresh, later.names, later.rgb, traceFrom, later.traceTo, later.of, later.x, later.y,
-                pointFrom, later.pointTo);
+        if (source != null && source == later.source) { // (the later arrays hold this range too: a log only grows)
+            return new Traces(fresh, source, later.names, later.rgb, later.traceBase, traceFrom, later.traceTo,
+                    later.of, later.x, later.y, later.pointBase, pointFrom, later.pointTo);
+        }
+        int traces = later.traceTo - traceFrom;
+        int points = later.pointTo - pointFrom;
+        String[] n = new String[traces];
+        int[] c = new int[traces];
+        for (int t = traceFrom; t < later.traceTo; t++) {
+            Traces from = t < traceTo ? this : later;
+            n[t - traceFrom] = from.name(t);
+            c[t - traceFrom] = from.rgb(t);
+        }
+        int[] o = new int[points];
+        double[] px = new double[points];
+        double[] py = new double[points];
+        for (int p = pointFrom; p < later.pointTo; p++) {
+            Traces from = p < pointTo ? this : later;
+            o[p - pointFrom] = from.traceOf(p);
+            px[p - pointFrom] = from.xMm(p);
+            py[p - pointFrom] = from.yMm(p);
+        }
+        return new Traces(fresh, null, n, c, traceFrom, traceFrom, later.traceTo, o, px, py, pointFrom, pointFrom,
+                later.pointTo);
     }
 
     // ---- the wire ----------------------------------------------------------------------------------------------
@@ -142,19 +174,22 @@ public final class Traces {
         out.writeInt(traceFrom);
         out.writeInt(traceTo - traceFrom);
         for (int t = traceFrom; t < traceTo; t++) {
-            out.writeUTF(names[t]);
-            out.writeInt(rgb[t]);
+            out.writeUTF(name(t));
+            out.writeInt(rgb(t));
         }
         out.writeInt(pointFrom);
         out.writeInt(pointTo - pointFrom);
         for (int p = pointFrom; p < pointTo; p++) {
-            out.writeShort(of[p]);
-            out.writeDouble(x[p]);
-            out.writeDouble(y[p]);
+            out.writeShort(traceOf(p));
+            out.writeDouble(xMm(p));
+            out.writeDouble(yMm(p));
         }
     }
 
-    /** A piece as {@link #write} wrote it, checked: within the bounds, its points on traces there are, finite. */
+    /**
+     * A piece as {@link #write} wrote it, checked: within the bounds, names of 1 to {@link #MAX_NAME} characters,
+     * colours {@code 0xRRGGBB}, its points finite and on traces there are; its arrays hold its own range only.
+     */
     public static Traces read(ObjectInput in) throws IOException {
         boolean fresh = in.readBoolean();
         int traceFrom = Limits.checkCount("first trace", in.readInt(), MAX_TRACES);
@@ -162,34 +197,38 @@ public final class Traces {
         if (fresh && traceFrom != 0) {
             throw new ProtocolException("a fresh drawing's traces start at " + traceFrom + ", not 0");
         }
-        String[] names = new String[traceFrom + traces];
-        int[] rgb = new int[traceFrom + traces];
-        for (int t = traceFrom; t < names.length; t++) {
+        String[] names = new String[traces];
+        int[] rgb = new int[traces];
+        for (int t = 0; t < traces; t++) {
             names[t] = in.readUTF();
             if (names[t].isEmpty() || names[t].length() > MAX_NAME) {
                 throw new ProtocolException("a trace's name of " + names[t].length() + " characters (1 to " + MAX_NAME
                         + ")");
             }
-            rgb[t] = in.readInt() & 0xFFFFFF;
+            rgb[t] = in.readInt();
+            if (rgb[t] < 0 || rgb[t] > 0xFFFFFF) {
+                throw new ProtocolException("a trace's colour " + rgb[t] + " (0xRRGGBB)");
+            }
         }
         int pointFrom = Limits.checkCount("first point", in.readInt(), MAX_POINTS);
         int points = Limits.checkCount("point count", in.readInt(), MAX_POINTS - pointFrom);
         if (fresh && pointFrom != 0) {
             throw new ProtocolException("a fresh drawing's points start at " + pointFrom + ", not 0");
         }
-        int[] of = new int[pointFrom + points];
-        double[] x = new double[of.length];
-        double[] y = new double[of.length];
-        for (int p = pointFrom; p < of.length; p++) {
-            of[p] = in.readUnsignedShort();
-            x[p] = in.readDouble();
-            y[p] = in.readDouble();
-            if (of[p] >= names.length || !Double.isFinite(x[p]) || !Double.isFinite(y[p])) {
-                throw new ProtocolException("point " + p + " of trace " + of[p] + " (of " + names.length + ") at ("
-                        + x[p] + ", " + y[p] + ")");
+        int[] of = new int[points];
+        double[] x = new double[points];
+        double[] y = new double[points];
+        for (int k = 0; k < points; k++) {
+            of[k] = in.readUnsignedShort();
+            x[k] = in.readDouble();
+            y[k] = in.readDouble();
+            if (of[k] >= traceFrom + traces || !Double.isFinite(x[k]) || !Double.isFinite(y[k])) {
+                throw new ProtocolException("point " + (pointFrom + k) + " of trace " + of[k] + " (of "
+                        + (traceFrom + traces) + ") at (" + x[k] + ", " + y[k] + ")");
             }
         }
-        return new Traces(fresh, names, rgb, traceFrom, names.length, of, x, y, pointFrom, of.length);
+        return new Traces(fresh, null, names, rgb, traceFrom, traceFrom, traceFrom + traces, of, x, y, pointFrom,
+                pointFrom, pointFrom + points);
     }
 
     // ---- the drawing ----------------------------------------------------------------------------------------
@@ -218,11 +257,6 @@ public final class Traces {
 
         public int points() {
             return points;
-        }
-
-        /** The name of trace {@code t}. */
-        public String name(int t) {
-            return names[check(t, 0, traces)];
         }
 
         /**
@@ -295,13 +329,13 @@ public final class Traces {
 
         /** The whole drawing: a fresh piece of everything. */
         public Traces whole() {
-            return new Traces(true, names, rgb, 0, traces, of, x, y, 0, points);
+            return new Traces(true, this, names, rgb, 0, 0, traces, of, x, y, 0, 0, points);
         }
 
-        /** What was drawn since the last call (or the start): the next piece. */
+        /** What was drawn since the last call (or the start, or an erasure: then a fresh piece): the next piece. */
         public Traces since() {
             Traces piece = erased || traceMark != traces || pointMark != points
-                    ? new Traces(erased, names, rgb, traceMark, traces, of, x, y, pointMark, points) : NONE;
+                    ? new Traces(erased, this, names, rgb, 0, traceMark, traces, of, x, y, 0, pointMark, points) : NONE;
             traceMark = traces;
             pointMark = points;
             erased = false;
@@ -316,39 +350,20 @@ public final class Traces {
         public void apply(Traces piece) throws ProtocolException {
             if (piece.fresh) {
                 erase();
-                erased = false;
             }
             if (piece.traceFrom > traces || piece.pointFrom > points) {
                 throw new ProtocolException("a piece of a drawing from trace " + piece.traceFrom + " and point "
                         + piece.pointFrom + " does not follow " + traces + " traces and " + points + " points");
             }
             for (int t = traces; t < piece.traceTo; t++) {
-                begin(piece.names[t], piece.rgb[t]);
+                begin(piece.name(t), piece.rgb(t));
             }
             for (int p = points; p < piece.pointTo; p++) {
-                if (piece.of[p] >= traces) {
-                    throw new ProtocolException("point " + p + " of trace " + piece.of[p] + ", of " + traces);
+                if (piece.traceOf(p) >= traces) {
+                    throw new ProtocolException("point " + p + " of trace " + piece.traceOf(p) + ", of " + traces);
                 }
-                point(piece.of[p], piece.x[p], piece.y[p]);
+                point(piece.traceOf(p), piece.xMm(p), piece.yMm(p));
             }
-        }
-
-        /** Trace {@code t}'s colour. */
-        public int rgb(int t) {
-            return rgb[check(t, 0, traces)];
-        }
-
-        /** Point {@code p}'s trace, and where it is. */
-        public int traceOf(int p) {
-            return of[check(p, 0, points)];
-        }
-
-        public double xMm(int p) {
-            return x[check(p, 0, points)];
-        }
-
-        public double yMm(int p) {
-            return y[check(p, 0, points)];
         }
     }
 }

@@ -29,10 +29,11 @@ class TracesTest {
     }
 
     private static String drawn(Traces.Log log) {
+        Traces all = log.whole();
         StringBuilder s = new StringBuilder();
-        for (int p = 0; p < log.points(); p++) {
-            s.append(log.name(log.traceOf(p))).append('#').append(Integer.toHexString(log.rgb(log.traceOf(p))))
-                    .append('(').append(log.xMm(p)).append(',').append(log.yMm(p)).append(") ");
+        for (int p = 0; p < all.points(); p++) {
+            s.append(all.name(all.traceOf(p))).append('#').append(Integer.toHexString(all.rgb(all.traceOf(p))))
+                    .append('(').append(all.xMm(p)).append(',').append(all.yMm(p)).append(") ");
         }
         return s.toString().trim();
     }
@@ -50,7 +51,7 @@ class TracesTest {
             }
             Traces piece = source.since();
             viewer.apply(wire(piece));
-            held = held.then(piece);
+            held = held.then(step % 2 == 0 ? piece : wire(piece)); // (a replay's queue joins pieces read back too)
             if (step % 5 == 4) { // (a viewer sent the newest of five updates: what the five drew)
                 merged.apply(wire(held));
                 held = Traces.NONE;

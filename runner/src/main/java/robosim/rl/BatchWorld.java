@@ -60,6 +60,8 @@ final class BatchWorld {
     private InProcessGeometry geometry;
     private long step;
     private boolean newWorld;
+    /** What the loop functions drew since the watched update was last taken ({@link #watchedUpdate}; world 0's). */
+    private robosim.protocol.Traces drawnSince = robosim.protocol.Traces.NONE;
 
     BatchWorld(BatchWorlds batch, int index) {
         this.batch = batch;
@@ -116,6 +118,7 @@ final class BatchWorld {
         geometry = new InProcessGeometry(core.map().geometryWorld());
         step = 0;
         newWorld = true;
+        drawnSince = robosim.protocol.Traces.NONE; // (the new world goes to viewers whole)
         Arrays.fill(touched, false);
         Arrays.fill(loopMetrics, 0);
         forgetMessages();
@@ -168,6 +171,9 @@ final class BatchWorld {
             throw new IOException(e.getMessage(), e);
         }
         core.tally();
+        if (index == 0) { // (the world viewers may watch: what each step drew, kept for the next update they get)
+            drawnSince = drawnSince.then(core.experimentTraces());
+        }
         List<robosim.protocol.Report> reported = core.experimentReports();
         for (int r = 0; r < reported.size(); r++) { // (the loop metrics the batch names: each one's newest value)
             int column = batch.loopMetricColumn(reported.get(r).name());
@@ -276,9 +282,23 @@ final class BatchWorld {
         }
     }
 
-    /** The world as it stands, for a viewer that joins (the caller holds the batch's watch lock). */
+    /**
+     * The world as it stands, for a viewer that joins (the caller holds the batch's watch lock): with what its loop
+     * functions have left, their whole drawing among it.
+     */
     WorldSnapshot snapshot() {
-        return core.map().snapshot(step - 1);
+        return robosim.environment.core.EnvironmentMap.snapshot(core.map().spec(), batch.properties(), core.viewerUpdate()
+                .posesOnly());
+    }
+
+    /**
+     * The step's update for the viewers, drawing what the loop functions drew in every time step of the last action
+     * (its {@code repeat} steps), not only its last (the caller holds the batch's watch lock).
+     */
+    robosim.protocol.PoseUpdate watchedUpdate() {
+        robosim.protocol.PoseUpdate u = core.viewerUpdate().withPiece(drawnSince);
+        drawnSince = robosim.protocol.Traces.NONE;
+        return u;
     }
 
     /** True once after each reset: a viewer is sent the new world whole. */

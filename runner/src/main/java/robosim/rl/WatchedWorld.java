@@ -62,7 +62,7 @@ final class WatchedWorld implements ViewerHost {
             if (viewers.isEmpty()) {
                 return;
             }
-            viewers.publish(whole ? world.snapshot() : null, world.core().viewerUpdate(), world::view);
+            viewers.publish(whole ? world.snapshot() : null, world.watchedUpdate(), world::view);
         }
     }
 

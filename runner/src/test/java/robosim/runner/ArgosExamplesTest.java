@@ -227,21 +227,22 @@ class ArgosExamplesTest {
             for (int k = 0; k < reader.steps(); k++) {
                 drawing.apply(reader.step(k).update().traces());
             }
+            robosim.protocol.Traces all = drawing.whole();
             PoseUpdate last = reader.step(reader.steps() - 1).update();
             List<String> names = reader.snapshot().robotNames();
             assertEquals(10, drawing.traces(), "a trace a robot");
             double[][] lastPoint = new double[10][];
             int[] points = new int[10];
-            for (int p = 0; p < drawing.points(); p++) {
-                int t = drawing.traceOf(p);
-                int r = names.indexOf(drawing.name(t));
-                assertTrue(r >= 0, "a robot's trace: " + drawing.name(t));
+            for (int p = 0; p < all.points(); p++) {
+                int t = all.traceOf(p);
+                int r = names.indexOf(all.name(t));
+                assertTrue(r >= 0, "a robot's trace: " + all.name(t));
                 if (lastPoint[r] != null) { // (ARGoS's rule: a waypoint once the robot is over 5 cm from the last)
-                    double d = Math.hypot(drawing.xMm(p) - lastPoint[r][0], drawing.yMm(p) - lastPoint[r][1]);
+                    double d = Math.hypot(all.xMm(p) - lastPoint[r][0], all.yMm(p) - lastPoint[r][1]);
                     assertTrue(d > 50 && d < 50 + 10, names.get(r) + "'s waypoints 5 cm apart (a step goes 5 mm at "
                             + "most): " + d);
                 }
-                lastPoint[r] = new double[] {drawing.xMm(p), drawing.yMm(p)};
+                lastPoint[r] = new double[] {all.xMm(p), all.yMm(p)};
                 points[r]++;
             }
             for (int r = 0; r < 10; r++) {

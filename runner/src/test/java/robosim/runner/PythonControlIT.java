@@ -203,6 +203,16 @@ class PythonControlIT {
         ScriptRun reports = ScriptRun.of(REPO, Map.of(), dir, "bash", "scripts/record-tool.sh", "reports",
                 dir.resolve("every.rec").toString());
         assertTrue(reports.stdout().contains("7,loop,seen,7"), reports.stdout());
+        robosim.protocol.Traces.Log drawn = new robosim.protocol.Traces.Log();
+        try (robosim.protocol.RecordingReader r = new robosim.protocol.RecordingReader(dir.resolve("every.rec"))) {
+            for (int k = 0; k < r.steps(); k++) {
+                drawn.apply(r.step(k).update().traces());
+            }
+        }
+        robosim.protocol.Traces whole = drawn.whole(); // (a point each post-step, erased at step 5: steps 6 and 7's)
+        assertEquals(2, whole.points(), "drawn, erased and drawn on");
+        assertEquals("r1", whole.name(0));
+        assertEquals(0x00FF00, whole.rgb(0));
 
         ScriptRun raises = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
                 "script=raises.py");

@@ -135,6 +135,73 @@ class RemoteControlTest {
     }
 
     @Test
+    void theRemoteControlDrivesAFootBotOfArgosManualControl(@TempDir Path dir) throws Exception {
+        // examples/argos/manualcontrol.xml: ten foot-bots, each a RemoteControlRobot on the port a RobotInfo file gives
+        WorldSpec spec = new EnvironmentLoader().load(Path.of("..", "examples", "argos", "manualcontrol.xml"));
+        StringBuilder robots = new StringBuilder("<robotInfo>\n");
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            robots.append("  <robot name=\"").append(r.name()).append("\" host=\"127.0.0.1\" port=\"").append(freePort())
+                    .append("\"/>\n");
+        }
+        Path info = Files.writeString(dir.resolve("manualcontrol-robots.xml"), robots + "</robotInfo>\n");
+        System.setProperty(RobotInfo.PROPERTY, info.toString());
+        try (ClientWorkerCoordinator env = new ClientWorkerCoordinator(spec, Settings.builder().ports(
+                InetAddress.getLoopbackAddress(), 0, 0, 0).inProcessGeometry(true).maxSteps(0).resetEvery(64)
+                .handshakeTimeoutMs(10_000).build())) {
+            env.start();
+            int[] ports = env.ports();
+            java.util.concurrent.CountDownLatch firstStep = new java.util.concurrent.CountDownLatch(1);
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", ports[1], true, 10_000);
+            viewer.start(new ViewerClient.Listener() {
+                @Override
+                public void snapshot(WorldSnapshot snapshot) {
+                }
+
+                @Override
+                public void update(PoseUpdate update) {
+                    firstStep.countDown();
+                }
+            });
+            for (WorldSpec.RobotSpec r : spec.robots()) {
+                HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
+                sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
+                CompletableFuture.runAsync(() -> {
+                    try {
+                        sim.run(new RemoteControlRobot());
+                    } catch (Exception e) {
+                        throw new IllegalStateException(e);
+                    }
+                }, TestThreads.ROBOTS);
+            }
+            assertTrue(firstStep.await(LONG, TimeUnit.SECONDS));
+            RobotInfo chosen = RobotInfo.load(info).get(3); // (the one chosen in the Remote Control's window)
+            WorldSpec.RobotSpec start = spec.robots().get(3);
+            BlockingQueue<String> replies = new LinkedBlockingQueue<>();
+            try (RobotLink link = new RobotLink(chosen, replies::add, null)) {
+                assertTrue(link.ensureConnected(), chosen.name() + " listens on its port");
+                assertTrue(link.send("left 90"));
+                String turned = replies.poll(LONG, TimeUnit.SECONDS);
+                double heading = (start.headingDeg() + 90) % 360;
+                assertTrue(turned != null && turned.startsWith("done left 90 x=") && turned.endsWith(
+                        String.format(java.util.Locale.ROOT, " heading=%.1f", heading)), turned + ", from "
+                        + start.headingDeg());
+                assertTrue(link.send("forward 100"));
+                String moved = replies.poll(LONG, TimeUnit.SECONDS);
+                assertNotNull(moved, "no reply to forward 100");
+                java.util.regex.Matcher at = java.util.regex.Pattern.compile("x=([-0-9.]+) y=([-0-9.]+)").matcher(moved);
+                assertTrue(moved.startsWith("done forward 100 ") && at.find(), moved);
+                double gone = Math.hypot(Double.parseDouble(at.group(1)) - start.xMm(),
+                        Double.parseDouble(at.group(2)) - start.yMm());
+                assertTrue(gone > 0 && gone <= 100.5, "it drove ahead, 100 mm at most (less where it touched): " + moved
+                        + " from (" + start.xMm() + ", " + start.yMm() + ")");
+            }
+            assertTrue(env.status().left().isEmpty(), "every foot-bot still in the simulation");
+        } finally {
+            System.clearProperty(RobotInfo.PROPERTY);
+        }
+    }
+
+    @Test
     void aBadRobotInfoFileIsReportedInOneLine(@TempDir Path dir) throws Exception {
         Path bad = dir.resolve("bad.xml");
         Files.writeString(bad, "<robotInfo><robot name=\"a\" port=\"eighty\"/></robotInfo>");

@@ -256,13 +256,10 @@ public final class SceneRenderer {
         if (drawing.traces() == 0) {
             return;
         }
-        Path2D.Double[] lines = new Path2D.Double[drawing.firstTrace() + drawing.traces()];
+        Path2D.Double[] lines = new Path2D.Double[drawing.traces()];
         int last = drawing.firstPoint() + drawing.points();
         for (int p = drawing.firstPoint(); p < last; p++) {
             int k = drawing.traceOf(p);
-            if (k < drawing.firstTrace()) {
-                continue; // (not a whole drawing: a piece whose traces began before it)
-            }
             double x = t.toScreenX(drawing.xMm(p));
             double y = t.toScreenY(drawing.yMm(p));
             if (lines[k] == null) {
@@ -273,7 +270,7 @@ public final class SceneRenderer {
             }
         }
         g.setStroke(new BasicStroke(2f));
-        for (int k = drawing.firstTrace(); k < lines.length; k++) {
+        for (int k = 0; k < lines.length; k++) {
             if (lines[k] != null) {
                 g.setColor(new Color(drawing.rgb(k)));
                 g.draw(lines[k]);

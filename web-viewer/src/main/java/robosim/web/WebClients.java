@@ -30,8 +30,10 @@ final class WebClients {
     private String snapshot;
     private String update;
     private String state;
-    /** What the world's loop functions have drawn (whole), for the pages that join. */
+    /** What the world's loop functions have drawn (whole), for the pages that join or fell behind. */
     private robosim.protocol.Traces drawing = robosim.protocol.Traces.NONE;
+    /** The pages that missed a piece of the drawing (they could not take more): sent it whole when they can. */
+    private final java.util.Set<Channel> redraw = new java.util.HashSet<>();
     static final int MAX_WATCHED = 8;
     private final WatchFeeds watchFeeds;
     private List<String> robots = List.of();
@@ -56,6 +58,7 @@ final class WebClients {
         firstPage.accept(this);
         page.closeFuture().addListener(f -> {
             pages.remove(page);
+            redraw.remove(page);
             unwatch(page);
         });
         if (snapshot != null) {
@@ -83,6 +86,7 @@ final class WebClients {
             robots = List.copyOf(names);
             update = null;
             drawing = robosim.protocol.Traces.NONE; // (the feed sends the new world's, if it has one)
+            redraw.clear();
             if (!sameRun) {
                 state = null;
                 heldView.clear(); // (views of the run before are no use)
@@ -102,7 +106,11 @@ final class WebClients {
         onIo(() -> {
             drawing = whole;
             for (Channel p : List.copyOf(pages.keySet())) {
-                send(p, json);
+                if (p.isWritable() && !redraw.contains(p)) {
+                    send(p, json);
+                } else {
+                    redraw.add(p); // (it is behind: the whole drawing when it can take more, instead of the pieces)
+                }
             }
         });
     }
@@ -131,8 +139,14 @@ final class WebClients {
         });
     }
 
-    /** I/O thread: the page can take more; it gets the update and the view held for it, if any. */
+    /**
+     * I/O thread: the page can take more; it gets the whole drawing if it missed pieces of it, the update and the view
+     * held for it, if any.
+     */
     void writable(Channel page) {
+        if (page.isWritable() && redraw.remove(page)) {
+            send(page, WebJson.traces(drawing));
+        }
         String held = pages.replace(page, null);
         if (held != null) {
             offer(page, held);

@@ -127,6 +127,11 @@ public final class SimulationCore {
         return experiment == null ? null : experiment.code();
     }
 
+    /** What the loop functions drew in the last step completed (nothing: nothing, or no loop functions). */
+    public robosim.protocol.Traces experimentTraces() {
+        return experiment == null ? robosim.protocol.Traces.NONE : experiment.tracesOfStep();
+    }
+
     /** The metrics the loop functions reported for the last step completed (none: none, or no loop functions). */
     public List<robosim.protocol.Report> experimentReports() {
         return experiment == null ? List.of() : experiment.reports();

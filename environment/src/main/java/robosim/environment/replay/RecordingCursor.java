@@ -1,6 +1,8 @@
 package robosim.environment.replay;
 
 import java.io.IOException;
+import java.util.HashMap;
+import java.util.Map;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.PoseUpdate;
@@ -22,11 +24,19 @@ final class RecordingCursor {
     private int steps;
     private int index = -1;
     private RecordingReader.Step shown;
+    /** The update of the step shown as viewers get it (its piece of the replay's drawing). */
+    private PoseUpdate shownUpdate;
     /** The world of the step shown (robots may have joined), and whether viewers have yet to get it. */
     private WorldSnapshot world;
     private boolean worldChanged;
     /** What the loop functions had drawn by the step shown, pieced together from the steps' pieces. */
     private final Traces.Log drawing = new Traces.Log();
+    /** The last step (index) whose piece {@link #drawing} holds, -1 for none. */
+    private int drawnTo = -1;
+    /** The whole drawing at every {@link #KEPT_EVERY}-th step pieced together so far, by step index over it. */
+    private final Map<Integer, Traces> kept = new HashMap<>();
+    /** Steps between the drawings kept: a seek pieces the drawing together from the nearest, at most this many back. */
+    static final int KEPT_EVERY = 256;
 
     RecordingCursor(RecordingReader recording) {
         this.recording = recording;
@@ -34,32 +44,61 @@ final class RecordingCursor {
         this.world = recording.snapshot();
     }
 
-    /** Moves to the i-th recorded step; its update, or null if it cannot be read (the replay then ends before it). */
+    /**
+     * Moves to the i-th recorded step; its update (what its loop functions drew, a piece of the replay's own
+     * drawing: after a seek, the whole of it), or null if it cannot be read (the replay then ends before it).
+     */
     PoseUpdate show(int i) {
         try {
             RecordingReader.Step next = recording.step(i);
-            if (next.update().lightsOn() != null) { // (a world with loop functions: what they drew, pieced together)
-                int from = i > index ? index + 1 : 0; // (a seek back: from the first step again)
-                if (from == 0) {
-                    drawing.erase();
-                }
-                for (int k = from; k < i; k++) {
-                    drawing.apply(recording.step(k).update().traces());
-                }
-                drawing.apply(next.update().traces());
+            PoseUpdate u = next.update();
+            if (u.lightsOn() != null) { // (a world with loop functions: what they drew, pieced together)
+                drawTo(i, u);
+                u = u.withPiece(drawing.since());
             }
             shown = next;
+            shownUpdate = u;
             index = i;
             WorldSnapshot w = recording.snapshotAt(i);
             if (w != world) {
                 world = w;
                 worldChanged = true;
             }
-            return shown.update();
+            return u;
         } catch (IOException e) {
             LOG.error("the recording cannot be read on: {}", e.getMessage());
             steps = i;
+            drawing.erase(); // (pieced together again from a step kept, if a seek back shows one)
+            drawnTo = -1;
             return null;
+        }
+    }
+
+    /** Pieces the drawing together up to step {@code i}, whose update is {@code u}: on from a seek's nearest kept. */
+    private void drawTo(int i, PoseUpdate u) throws IOException {
+        if (i != drawnTo + 1) {
+            drawing.erase();
+            drawnTo = -1;
+            for (int k = i / KEPT_EVERY; k >= 0; k--) {
+                Traces whole = kept.get(k * KEPT_EVERY);
+                if (whole != null && k * KEPT_EVERY < i) {
+                    drawing.apply(whole);
+                    drawnTo = k * KEPT_EVERY;
+                    break;
+                }
+            }
+            for (int k = drawnTo + 1; k < i; k++) {
+                drawn(k, recording.step(k).update());
+            }
+        }
+        drawn(i, u);
+    }
+
+    private void drawn(int k, PoseUpdate u) throws IOException {
+        drawing.apply(u.traces());
+        drawnTo = k;
+        if (k % KEPT_EVERY == 0) {
+            kept.put(k, drawing.whole());
         }
     }
 
@@ -146,6 +185,6 @@ final class RecordingCursor {
     WorldSnapshot snapshot() {
         WorldSnapshot s = world;
         return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
-                s.robots(), shown.update().withWholeDrawing(drawing.whole()), s.scenery());
+                s.robots(), shownUpdate.withWholeDrawing(drawing.whole()), s.scenery());
     }
 }

@@ -85,6 +85,7 @@ public final class ViewerQueue {
             return;
         }
         if (!everyStep) {
+            boolean ownWorld = roster != null; // (its world's drawing is whole: what the dropped drew is in it)
             Item replaced = pending.pollLast();
             PoseUpdate between = null; // (a view-less update dropped after the one replaced, if any)
             if (replaced != null && replaced.view() == null && replaced.roster() == null) {
@@ -105,10 +106,10 @@ public final class ViewerQueue {
                     replaced = null;
                 }
             }
-            if (between != null) { // (dropped: what their steps drew, the newest draws after it, in order)
+            if (between != null && !ownWorld) { // (dropped: what their steps drew, the newest draws after it, in order)
                 update = update.drawnAfter(between);
             }
-            if (replaced != null) {
+            if (replaced != null && !ownWorld) {
                 update = update.drawnAfter(replaced.update());
             }
         }

@@ -2,6 +2,7 @@ package robosim.environment.replay;
 
 import static org.junit.jupiter.api.Assertions.assertEquals;
 import static org.junit.jupiter.api.Assertions.assertNull;
+import static org.junit.jupiter.api.Assertions.assertTrue;
 
 import java.nio.file.Path;
 import java.util.List;
@@ -60,8 +61,39 @@ class RecordingCursorTest {
             robosim.protocol.Traces whole = at.snapshot().poses().traces();
             assertEquals(2, whole.points());
             assertEquals(5, whole.xMm(0));
-            at.show(7);
+            robosim.protocol.Traces next = at.show(7).traces();
             assertEquals(3, at.snapshot().poses().traces().points());
+            assertEquals(1, next.points(), "the next step: its own piece");
+            assertTrue(at.show(2).traces().fresh(), "a seek: the replay's drawing whole, afresh");
+        }
+    }
+
+    @Test
+    void aLongReplaySoughtBackPiecesItsDrawingFromTheNearestKept(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("long.rec");
+        robosim.protocol.Traces.Log drawing = new robosim.protocol.Traces.Log();
+        int steps = 3 * RecordingCursor.KEPT_EVERY;
+        try (RecordingWriter w = new RecordingWriter(file)) {
+            w.snapshot(world(1, -1));
+            for (int k = 0; k < steps; k++) {
+                drawing.add(k % 3 == 0 ? "a" : "b", k, 0, 0xFF0000);
+                w.step(poses(k, 1).withExperiment(List.of(), List.of(), List.of(), drawing.since(), drawing.whole(),
+                        new int[0]), new StepRequest[1], new StepResponse[1]);
+            }
+            w.end(new SimulationEnd(steps - 1, "done"));
+        }
+        try (RecordingReader r = new RecordingReader(file)) {
+            RecordingCursor at = new RecordingCursor(r);
+            for (int i = 0; i < steps; i++) {
+                at.show(i);
+            }
+            for (int i : new int[] {2 * RecordingCursor.KEPT_EVERY + 7, 5, RecordingCursor.KEPT_EVERY, steps - 1}) {
+                at.show(i);
+                robosim.protocol.Traces whole = at.snapshot().poses().traces();
+                assertEquals(i + 1, whole.points(), "step " + i + ": a point each step up to it");
+                assertEquals(i, whole.xMm(i));
+                assertEquals(i % 3 == 0 ? "a" : "b", whole.name(whole.traceOf(i)));
+            }
         }
     }
 
