@@ -9,9 +9,11 @@
 #   diffusion_10   examples/argos/diffusion_10.xml and diffusion_10.argos: the steps per second
 #   diffusion_100  bench/diffusion_100.xml and bench/diffusion_100.argos (ten times the robots and obstacles, an
 #                  arena sqrt(10) times as wide): the steps per second
-#   flocking       examples/argos/flocking.xml and flocking.argos: the steps per second, and RoboSim's steps until
-#                  the order parameter (the length of the robots' mean heading) passes 0.9, from its pose log
-#                  (ARGoS's example writes nothing to measure it by)
+#   flocking       examples/argos/flocking.xml and flocking.argos: the steps per second, and the steps until the
+#                  order parameter (the length of the robots' mean heading) passes 0.9: RoboSim's from its pose log,
+#                  ARGoS's from a second run of its file with loop functions of ours added that write it each step
+#                  (bench/argos/flocking_order_loop_functions.cpp, built here against PREFIX's ARGoS; that run is
+#                  not timed)
 #   flocking_100   bench/flocking_100.xml and bench/flocking_100.argos (ten times the robots, placed in a square
 #                  sqrt(10) times as wide): the steps per second
 # The floor of a one-JVM run's thread shape, for the diffusion worlds (whose controller it can run inline):
@@ -53,7 +55,23 @@ elapsed() { awk -v a="$1" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }'
   echo "$seeds seeds, $steps steps of 100 ms each run"
 } | tee "$out"
 declare -A one whole argos floor
-declare -a items_rs items_ar order_rs
+declare -a items_rs items_ar order_rs order_ar
+# ARGoS's flocking.argos with our loop functions that write its order parameter each step (flocking_order.txt)
+g++ -std=c++17 -O2 -shared -fPIC -I"$peers/argos3/include" $(pkg-config --cflags lua5.3 2>/dev/null || echo -I/usr/include/lua5.3) \
+  bench/argos/flocking_order_loop_functions.cpp -L"$peers/argos3/lib/argos3" -largos3core_simulator \
+  -largos3plugin_simulator_footbot -largos3plugin_simulator_entities -o "$tmp/libflocking_order.so" \
+  || robosim_fail "cannot build bench/argos/flocking_order_loop_functions.cpp against $peers (g++, ARGoS's headers)"
+flocking_argos=$peers/argos3-examples/experiments/flocking.argos
+[ -f "$flocking_argos" ] || flocking_argos=$peers/src/argos3-examples/experiments/flocking.argos
+python3 - "$flocking_argos" "$tmp/flocking_order.argos" "$tmp/libflocking_order.so" <<'PY'
+import re, sys
+s = open(sys.argv[1]).read()
+s = re.sub(r'<visualization>.*?</visualization>', '<visualization/>', s, flags=re.S)
+s = s.replace('<arena ', '<loop_functions library="' + sys.argv[3] + '" label="flocking_order"/>\n  <arena ', 1)
+open(sys.argv[2], 'w').write(s)
+PY
+# the first step whose order parameter is over 0.9, from flocking_order.txt (step, order)
+order_argos() { awk -F'\t' '$2 > 0.9 { print $1; found = 1; exit } END { if (!found) print -1 }' "$1"; }
 # robosim NAME WORLD SEED: a run in one JVM in a folder of its own (the loop functions write there)
 robosim() {
   local dir="$tmp/rs-$1-$3" t0=$EPOCHREALTIME
@@ -95,6 +113,8 @@ for seed in $(seq "$seeds"); do
   robosim flocking examples/argos/flocking.xml "$seed" --pose-log poses.csv
   order_rs+=("$(order "$tmp/rs-flocking-$seed/poses.csv")")
   argos flocking "$seed"
+  argos flocking_order "$seed" "$tmp/flocking_order.argos"
+  order_ar+=("$(order_argos "$tmp/ar-flocking_order-$seed/flocking_order.txt")")
   robosim flocking_100 bench/flocking_100.xml "$seed"
   argos flocking_100 "$seed" bench/flocking_100.argos
   echo "seed $seed: foraging items RoboSim ${items_rs[-1]} ARGoS ${items_ar[-1]};" \
@@ -104,13 +124,13 @@ for seed in $(seq "$seeds"); do
     "diffusion_100 $(echo ${one[diffusion_100]} | awk '{print $NF}'), $(echo ${whole[diffusion_100]} | awk '{print $NF}'); $(echo ${argos[diffusion_100]} | awk '{print $NF}')" \
     "flocking $(echo ${one[flocking]} | awk '{print $NF}'), $(echo ${whole[flocking]} | awk '{print $NF}'); $(echo ${argos[flocking]} | awk '{print $NF}')" \
     "flocking_100 $(echo ${one[flocking_100]} | awk '{print $NF}'), $(echo ${whole[flocking_100]} | awk '{print $NF}'); $(echo ${argos[flocking_100]} | awk '{print $NF}');" \
-    "flocking's order parameter over 0.9 from step ${order_rs[-1]}" \
+    "flocking's order parameter over 0.9 from step RoboSim ${order_rs[-1]} ARGoS ${order_ar[-1]}" \
     | tee -a "$out"
 done
 echo "foraging items collected in $steps steps, mean (95% interval) over $seeds seeds: RoboSim $(interval "${items_rs[@]}")," \
   "ARGoS $(interval "${items_ar[@]}")" | tee -a "$out"
 echo "flocking: steps until the order parameter passes 0.9, mean (95% interval) over $seeds seeds: RoboSim" \
-  "$(interval "${order_rs[@]}")" | tee -a "$out"
+  "$(interval "${order_rs[@]}"), ARGoS $(interval "${order_ar[@]}")" | tee -a "$out"
 for w in foraging diffusion_10 diffusion_100 flocking flocking_100; do
   # shellcheck disable=SC2086
   mo=$(median ${one[$w]}); mw=$(median ${whole[$w]}); ma=$(median ${argos[$w]})
