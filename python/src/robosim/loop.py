@@ -26,7 +26,7 @@ from robosim.runner import _end_with_stdin, _stdin_is_a_pipe, script_module
 
 #: The link's name and version, said in the hello.
 LINK = "robosim-loop-link"
-VERSION = 1
+VERSION = 2
 #: Mixed into the run's seed for the experiment's own generator (Java's ``ExperimentCode``: "loopfunc").
 SEED_MIX = 0x6C6F6F7066756E63
 #: The calls a script's class may define, by the link's names (``finished`` is answered with ``post_step``'s).
@@ -234,8 +234,9 @@ class Experiment:
         return bool(self._at(self._objects, obj, "object")[4])
 
     def remove_object(self, obj: int) -> None:
-        """Takes it out of the world, let go of by whoever held it: from the next step nothing meets, senses or grips
-        it, and the viewers leave it out. It keeps its number and its last pose."""
+        """Takes it out of the world, let go of by whoever held it: nothing meets, senses or grips it from the step's
+        moves on (the next step's, after a post-step), and the viewers leave it out. It keeps its number and its last
+        pose."""
         self._request("remove_object", obj)
         holder = self.carrier(obj)
         if holder >= 0:

@@ -111,8 +111,9 @@ public interface Experiment {
     boolean objectPresent(int object);
 
     /**
-     * Takes it out of the world, let go of by whoever held it: from the next step nothing meets, senses or grips it,
-     * and the viewers leave it out (ARGoS's {@code RemoveEntity}). A world's objects are its file's: one taken out
+     * Takes it out of the world, let go of by whoever held it: nothing meets, senses or grips it from the step's moves
+     * on (in a pre-step, this step's; in a post-step, the next), and the viewers leave it out (ARGoS's
+     * {@code RemoveEntity}). A world's objects are its file's: one taken out
      * keeps its number, and its last pose.
      */
     void removeObject(int object);

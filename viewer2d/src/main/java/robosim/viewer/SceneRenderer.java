@@ -251,9 +251,12 @@ public final class SceneRenderer {
         g.draw(p);
     }
 
-    /** What the loop functions drew ({@code drawing}, whole: {@link SceneFeed}): each trace a line of its colour. */
+    /**
+     * What the loop functions drew ({@code drawing}, whole, as {@link SceneFeed} gives it; a piece alone, which holds
+     * points of traces begun before it, is not drawn): each trace a line of its colour.
+     */
     private static void drawTraces(Graphics2D g, robosim.protocol.Traces drawing, ViewTransform t) {
-        if (drawing.traces() == 0) {
+        if (!drawing.fresh() || drawing.traces() == 0) {
             return;
         }
         Path2D.Double[] lines = new Path2D.Double[drawing.traces()];

@@ -30,10 +30,11 @@ final class WebClients {
     private String snapshot;
     private String update;
     private String state;
-    /** What the world's loop functions have drawn (whole), for the pages that join or fell behind. */
+    /** What the world's loop functions have drawn (whole), for the pages that join, and as their message. */
     private robosim.protocol.Traces drawing = robosim.protocol.Traces.NONE;
-    /** The pages that missed a piece of the drawing (they could not take more): sent it whole when they can. */
-    private final java.util.Set<Channel> redraw = new java.util.HashSet<>();
+    private String drawingJson;
+    /** What each page that could not take more missed of the drawing, joined: sent when it can. */
+    private final Map<Channel, robosim.protocol.Traces> heldDrawing = new HashMap<>();
     static final int MAX_WATCHED = 8;
     private final WatchFeeds watchFeeds;
     private List<String> robots = List.of();
@@ -58,13 +59,13 @@ final class WebClients {
         firstPage.accept(this);
         page.closeFuture().addListener(f -> {
             pages.remove(page);
-            redraw.remove(page);
+            heldDrawing.remove(page);
             unwatch(page);
         });
         if (snapshot != null) {
             send(page, snapshot);
             if (drawing.traces() > 0) {
-                send(page, WebJson.traces(drawing));
+                send(page, drawingJson());
             }
             if (update != null) {
                 send(page, update);
@@ -86,7 +87,8 @@ final class WebClients {
             robots = List.copyOf(names);
             update = null;
             drawing = robosim.protocol.Traces.NONE; // (the feed sends the new world's, if it has one)
-            redraw.clear();
+            heldDrawing.clear();
+            drawingJson = null;
             if (!sameRun) {
                 state = null;
                 heldView.clear(); // (views of the run before are no use)
@@ -99,20 +101,32 @@ final class WebClients {
     }
 
     /**
-     * Feed thread: what the loop functions drew ({@code json}, a piece) goes to every page at once, in order;
-     * {@code whole}, the drawing so far, to the pages that join.
+     * Feed thread: what the loop functions drew ({@code piece}) goes to every page that can take it, in order, and is
+     * joined to what a page that cannot has missed; {@code whole}, the drawing so far, goes to the pages that join.
      */
-    void traces(String json, robosim.protocol.Traces whole) {
+    void traces(robosim.protocol.Traces piece, robosim.protocol.Traces whole) {
         onIo(() -> {
             drawing = whole;
+            drawingJson = null;
+            String json = null;
             for (Channel p : List.copyOf(pages.keySet())) {
-                if (p.isWritable() && !redraw.contains(p)) {
+                robosim.protocol.Traces held = heldDrawing.remove(p);
+                if (held == null && p.isWritable()) {
+                    json = json == null ? WebJson.traces(piece) : json;
                     send(p, json);
-                } else {
-                    redraw.add(p); // (it is behind: the whole drawing when it can take more, instead of the pieces)
+                } else { // (it is behind: what it missed, joined, when it can take more)
+                    heldDrawing.put(p, held == null ? piece : held.then(piece));
                 }
             }
         });
+    }
+
+    /** The whole drawing as a page's message, made once a drawing (a page that joins gets it). */
+    private String drawingJson() {
+        if (drawingJson == null) {
+            drawingJson = WebJson.traces(drawing);
+        }
+        return drawingJson;
     }
 
     /** Feed thread: a step. */
@@ -140,12 +154,13 @@ final class WebClients {
     }
 
     /**
-     * I/O thread: the page can take more; it gets the whole drawing if it missed pieces of it, the update and the view
-     * held for it, if any.
+     * I/O thread: the page can take more; it gets what it missed of the drawing, the update and the view held for it,
+     * if any.
      */
     void writable(Channel page) {
-        if (page.isWritable() && redraw.remove(page)) {
-            send(page, WebJson.traces(drawing));
+        robosim.protocol.Traces missed = page.isWritable() ? heldDrawing.remove(page) : null;
+        if (missed != null) {
+            send(page, WebJson.traces(missed));
         }
         String held = pages.replace(page, null);
         if (held != null) {

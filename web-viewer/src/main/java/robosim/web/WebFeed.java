@@ -142,7 +142,7 @@ final class WebFeed implements ViewerClient.Listener {
             drawing.erase();
             piece = drawing.whole();
         }
-        clients.traces(WebJson.traces(piece), drawing.whole());
+        clients.traces(piece, drawing.whole());
     }
 
     @Override

@@ -49,7 +49,8 @@ final class GeometryAnswerCheck {
                 case GeometryStepResponse.CONTACT_NONE, GeometryStepResponse.CONTACT_ARENA -> true;
                 case GeometryStepResponse.CONTACT_ROBOT -> index >= 0 && index < robots && index != i;
                 case GeometryStepResponse.CONTACT_OBSTACLE -> index >= 0 && index < obstacles;
-                case GeometryStepResponse.CONTACT_OBJECT -> index >= 0 && index < objects;
+                case GeometryStepResponse.CONTACT_OBJECT -> index >= 0 && index < objects
+                        && asked.carrier(index) != GeometryStepRequest.GONE;
                 default -> false;
             };
             if (!contactOk) {
@@ -87,9 +88,10 @@ final class GeometryAnswerCheck {
                 throw new ProtocolException("geometry put object " + o + " at (" + x + ", " + y + ") heading "
                         + answer.objectHeadingDeg(o) + ", outside the arena or not a pose");
             }
-            if (!things.get(o).movable() && (x != asked.objectXMm(o) || y != asked.objectYMm(o)
+            if ((!things.get(o).movable() || asked.carrier(o) == GeometryStepRequest.GONE)
+                    && (x != asked.objectXMm(o) || y != asked.objectYMm(o)
                     || answer.objectHeadingDeg(o) != asked.objectHeadingDeg(o))) {
-                throw new ProtocolException("geometry moved object " + o + ", which is fixed");
+                throw new ProtocolException("geometry moved object " + o + ", which is fixed or out of the world");
             }
         }
         int before = -1;

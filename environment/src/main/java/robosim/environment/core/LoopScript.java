@@ -37,7 +37,7 @@ import robosim.protocol.link.ScriptProcess;
  * Loop functions that are a Python script ({@code <loopFunctions class="python:FILE">}), served over the loop link
  * (environment/README.md, "The loop link"): at {@link #init} it starts {@code INTERPRETER -m robosim.loop FILE}
  * ({@link ScriptProcess}) and takes its connection on a loopback port the system picks, within {@link #CONNECT_MS};
- * the hello ({@code {"link": "robosim-loop-link", "version": 1, "key", "calls"}}: the calls the script's class defines,
+ * the hello ({@code {"link": "robosim-loop-link", "version": 2, "key", "calls"}}: the calls the script's class defines,
  * by name) is answered with the world's facts ({@code step_ms, seed, parameters, arena, output_directory, objects,
  * lights}). Each call of these loop functions is then one frame to the script, {@code [CALL, STATE]} (CALL one of
  * {@code init, reset, pre_step, post_step, destroy}; STATE the world as it stands, {@link #packState}), answered by
@@ -50,8 +50,8 @@ final class LoopScript implements LoopFunctions {
     private static final Logger LOG = LoggerFactory.getLogger(LoopScript.class);
     /** What a hello and a welcome name the link by. */
     static final String NAME = "robosim-loop-link";
-    /** The link's version. */
-    static final int VERSION = 1;
+    /** The link's version (2: objects out of the world, traces). */
+    static final int VERSION = 2;
     private static final LinkHello.Link HELLO = new LinkHello.Link(NAME, "loop link", VERSION, "loop functions",
             List.of("calls"));
     /** How long the script has from its start to its hello, ms (an interpreter's start and the script's imports). */

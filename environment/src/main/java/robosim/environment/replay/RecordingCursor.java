@@ -1,8 +1,11 @@
 package robosim.environment.replay;
 
 import java.io.IOException;
+import java.util.ArrayList;
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
+import java.util.TreeSet;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.protocol.PoseUpdate;
@@ -35,8 +38,12 @@ final class RecordingCursor {
     private int drawnTo = -1;
     /** The whole drawing at every {@link #KEPT_EVERY}-th step pieced together so far, by step index over it. */
     private final Map<Integer, Traces> kept = new HashMap<>();
-    /** Steps between the drawings kept: a seek pieces the drawing together from the nearest, at most this many back. */
+    /** Steps between the drawings kept: a seek pieces the drawing together from the nearest kept before it. */
     static final int KEPT_EVERY = 256;
+    /** The most drawings kept (each may hold arrays of its own): beyond it, every other one is let go. */
+    static final int MAX_KEPT = 64;
+    /** The whole drawing as of the step shown. */
+    private Traces shownWhole = Traces.NONE;
 
     RecordingCursor(RecordingReader recording) {
         this.recording = recording;
@@ -58,6 +65,7 @@ final class RecordingCursor {
             }
             shown = next;
             shownUpdate = u;
+            shownWhole = drawing.whole();
             index = i;
             WorldSnapshot w = recording.snapshotAt(i);
             if (w != world) {
@@ -68,8 +76,7 @@ final class RecordingCursor {
         } catch (IOException e) {
             LOG.error("the recording cannot be read on: {}", e.getMessage());
             steps = i;
-            drawing.erase(); // (pieced together again from a step kept, if a seek back shows one)
-            drawnTo = -1;
+            drawnTo = -2; // (pieced together again, from a step kept, if a seek back shows one)
             return null;
         }
     }
@@ -81,7 +88,7 @@ final class RecordingCursor {
             drawnTo = -1;
             for (int k = i / KEPT_EVERY; k >= 0; k--) {
                 Traces whole = kept.get(k * KEPT_EVERY);
-                if (whole != null && k * KEPT_EVERY < i) {
+                if (whole != null && k * KEPT_EVERY <= i) {
                     drawing.apply(whole);
                     drawnTo = k * KEPT_EVERY;
                     break;
@@ -99,6 +106,12 @@ final class RecordingCursor {
         drawnTo = k;
         if (k % KEPT_EVERY == 0) {
             kept.put(k, drawing.whole());
+            if (kept.size() > MAX_KEPT) { // (every other one let go: fewer, and as far apart as the recording allows)
+                List<Integer> steps = new ArrayList<>(new TreeSet<>(kept.keySet()));
+                for (int n = 1; n < steps.size(); n += 2) {
+                    kept.remove(steps.get(n));
+                }
+            }
         }
     }
 
@@ -185,6 +198,6 @@ final class RecordingCursor {
     WorldSnapshot snapshot() {
         WorldSnapshot s = world;
         return shown == null ? s : new WorldSnapshot(s.timeStepMs(), s.arena(), s.obstacles(), s.robotNames(),
-                s.robots(), shownUpdate.withWholeDrawing(drawing.whole()), s.scenery());
+                s.robots(), shownUpdate.withWholeDrawing(shownWhole), s.scenery());
     }
 }

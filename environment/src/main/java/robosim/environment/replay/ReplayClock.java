@@ -256,7 +256,8 @@ public final class ReplayClock implements ViewerHost {
         PoseUpdate u = at.show(i);
         if (u != null) {
             WorldSnapshot changed = at.takeWorldChange();
-            viewers.publish(sought ? at.snapshot() : changed, u, at::view);
+            viewers.publish(sought ? at.snapshot() : changed, sought ? u.withPiece(robosim.protocol.Traces.NONE) : u,
+                    at::view); // (a seek's world holds the whole drawing: its update draws nothing more)
         }
     }
 

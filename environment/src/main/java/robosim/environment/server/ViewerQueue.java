@@ -17,7 +17,8 @@ import robosim.protocol.WorldSnapshot;
  * newest only; it goes out after the updates held before it, or ahead of one that waits for the rate cap.
  * A viewer that watches a robot ({@link #watching}) gets that robot's {@link RobotView} right after each
  * update; a live viewer's newest view carries the messages of the views it replaced, and its newest update what the
- * updates it replaced drew ({@link PoseUpdate#drawnAfter}). When robots have
+ * updates it replaced drew ({@link PoseUpdate#drawnAfter}), but where it comes with a world of its own (whose drawing
+ * is whole). When robots have
  * joined, a new {@link WorldSnapshot} goes right before the first update that holds them (a replaced
  * update hands its snapshot on to the one that replaces it).
  */

@@ -124,5 +124,33 @@ class GeometryAnswerCheckTest {
             assertEquals("can", core.response(0).gripped(), "the good answer: a takes the can");
             assertEquals("", core.response(1).gripped(), "the rock is not gripable");
         }
+        // the rock out of the world (its loop functions took it out): moved, or touched, is refused
+        for (Consumer<GeometryStepResponse> tamper : List.<Consumer<GeometryStepResponse>>of(
+                g -> g.setObject(2, 1141, 2000, 0),
+                g -> g.setMotion(1, 0, 0, GeometryStepResponse.CONTACT_OBJECT, 2))) {
+            SimulationCore core = new SimulationCore(spec, List.of(robosim.devices.RobotTypes.properties("foot-bot"),
+                    robosim.devices.RobotTypes.properties("foot-bot")));
+            core.map().objectGone(2, true);
+            GeometryStepRequest[] asked = new GeometryStepRequest[1];
+            StepRequest still = new StepRequest(0, 0, 0, false, List.of());
+            assertFalse(core.step(0, new StepRequest[] {still, still}, request -> {
+                asked[0] = request;
+                return null;
+            }));
+            assertEquals(GeometryStepRequest.GONE, asked[0].carrier(2));
+            GeometryStepResponse good = new InProcessGeometry(core.map().geometryWorld()).resolve(asked[0]);
+            GeometryStepResponse bad = new GeometryStepResponse(2, 16, 64, 3);
+            bad.begin(good.step());
+            for (int i = 0; i < 2; i++) {
+                bad.setMotion(i, good.movedMm(i), good.turnedDeg(i), good.contactKind(i), good.contactIndex(i));
+            }
+            for (int o = 0; o < 3; o++) {
+                bad.setObject(o, good.objectXMm(o), good.objectYMm(o), good.objectHeadingDeg(o));
+            }
+            tamper.accept(bad);
+            ProtocolException e = assertThrows(ProtocolException.class, () -> core.answer(bad));
+            assertTrue(e.getMessage().contains("out of the world") || e.getMessage().contains("does not exist"),
+                    e.getMessage());
+        }
     }
 }
