@@ -86,7 +86,10 @@ class BrowserViewerIT {
                             wait.until(p -> p.findElements(By.cssSelector("#robots tbody tr")).size() == 10);
                             pageHasTheWorld.countDown(); // the robots start now
                             long first = wait.until(p -> stepShown(p) >= 0 ? stepShown(p) : null);
-                            wait.until(p -> stepShown(p) > first && stepShown(p) >= 20); // the step advances (trails grow)
+                            // the step advances, and the trails grow: the page gets at most 10 updates a second, a
+                            // point of each robot's trail each, so some 200 steps (2.5 s at 80 steps a second) before
+                            // the pause, for trails the 3D view's check below can see go (20 steps left a few points)
+                            wait.until(p -> stepShown(p) > first && stepShown(p) >= 200);
                             env.pause(LONG_S, TimeUnit.SECONDS);
                             long last = env.status().step() - 1; // (the wire's step: the page shows it as last + 1)
                             PoseUpdate expected = wait.until(p -> seen.get(last));
