@@ -72,17 +72,7 @@ class RemoteControlTest {
                     }
                 }
             });
-            for (WorldSpec.RobotSpec r : spec.robots()) {
-                HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
-                sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
-                CompletableFuture.runAsync(() -> {
-                    try {
-                        sim.run(new RemoteControlRobot());
-                    } catch (Exception e) {
-                        throw new IllegalStateException(e);
-                    }
-                }, TestThreads.ROBOTS);
-            }
+            startRemoteControlRobots(spec, ports[0]);
             BlockingQueue<String> replies = new LinkedBlockingQueue<>();
             RobotInfo rc1 = RobotInfo.load(info).get(0);
             // a robot sends its first request only once its control code has started, and so its listener:
@@ -162,17 +152,7 @@ class RemoteControlTest {
                     firstStep.countDown();
                 }
             });
-            for (WorldSpec.RobotSpec r : spec.robots()) {
-                HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
-                sim.connect(new Socket(InetAddress.getLoopbackAddress(), ports[0]), 64);
-                CompletableFuture.runAsync(() -> {
-                    try {
-                        sim.run(new RemoteControlRobot());
-                    } catch (Exception e) {
-                        throw new IllegalStateException(e);
-                    }
-                }, TestThreads.ROBOTS);
-            }
+            startRemoteControlRobots(spec, ports[0]);
             assertTrue(firstStep.await(LONG, TimeUnit.SECONDS));
             RobotInfo chosen = RobotInfo.load(info).get(3); // (the one chosen in the Remote Control's window)
             WorldSpec.RobotSpec start = spec.robots().get(3);
@@ -239,6 +219,21 @@ class RemoteControlTest {
             }
         }
         return null;
+    }
+
+    /** Each robot of {@code spec} a RemoteControlRobot, in a Hardware Simulator of its own on the robot port. */
+    private static void startRemoteControlRobots(WorldSpec spec, int robotPort) throws Exception {
+        for (WorldSpec.RobotSpec r : spec.robots()) {
+            HardwareSimulator sim = new HardwareSimulator(r.name(), robosim.devices.RobotTypes.byName(r.type()));
+            sim.connect(new Socket(InetAddress.getLoopbackAddress(), robotPort), 64);
+            CompletableFuture.runAsync(() -> {
+                try {
+                    sim.run(new RemoteControlRobot());
+                } catch (Exception e) {
+                    throw new IllegalStateException(e);
+                }
+            }, TestThreads.ROBOTS);
+        }
     }
 
     private static int freePort() throws Exception {

@@ -81,6 +81,19 @@ class GeometryAnswerCheckTest {
         }, "sonar range -1.0 mm");
     }
 
+    /** {@code good}'s motions and object poses (two robots, three objects), to tamper with. */
+    private static GeometryStepResponse copyOf(GeometryStepResponse good) {
+        GeometryStepResponse bad = new GeometryStepResponse(2, 16, 64, 3);
+        bad.begin(good.step());
+        for (int i = 0; i < 2; i++) {
+            bad.setMotion(i, good.movedMm(i), good.turnedDeg(i), good.contactKind(i), good.contactIndex(i));
+        }
+        for (int o = 0; o < 3; o++) {
+            bad.setObject(o, good.objectXMm(o), good.objectYMm(o), good.objectHeadingDeg(o));
+        }
+        return bad;
+    }
+
     @Test
     void aFixedObjectMovedOrAGripOfWhatCannotBeTakenIsRefused(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
             throws Exception {
@@ -109,14 +122,7 @@ class GeometryAnswerCheckTest {
                 return null;
             }));
             GeometryStepResponse good = new InProcessGeometry(core.map().geometryWorld()).resolve(asked[0]);
-            GeometryStepResponse bad = new GeometryStepResponse(2, 16, 64, 3);
-            bad.begin(good.step());
-            for (int i = 0; i < 2; i++) {
-                bad.setMotion(i, good.movedMm(i), good.turnedDeg(i), good.contactKind(i), good.contactIndex(i));
-            }
-            for (int o = 0; o < 3; o++) {
-                bad.setObject(o, good.objectXMm(o), good.objectYMm(o), good.objectHeadingDeg(o));
-            }
+            GeometryStepResponse bad = copyOf(good);
             tamper.accept(bad);
             ProtocolException e = assertThrows(ProtocolException.class, () -> core.answer(bad));
             assertTrue(e.getMessage().contains("fixed") || e.getMessage().contains("cannot have"), e.getMessage());
@@ -139,14 +145,7 @@ class GeometryAnswerCheckTest {
             }));
             assertEquals(GeometryStepRequest.GONE, asked[0].carrier(2));
             GeometryStepResponse good = new InProcessGeometry(core.map().geometryWorld()).resolve(asked[0]);
-            GeometryStepResponse bad = new GeometryStepResponse(2, 16, 64, 3);
-            bad.begin(good.step());
-            for (int i = 0; i < 2; i++) {
-                bad.setMotion(i, good.movedMm(i), good.turnedDeg(i), good.contactKind(i), good.contactIndex(i));
-            }
-            for (int o = 0; o < 3; o++) {
-                bad.setObject(o, good.objectXMm(o), good.objectYMm(o), good.objectHeadingDeg(o));
-            }
+            GeometryStepResponse bad = copyOf(good);
             tamper.accept(bad);
             ProtocolException e = assertThrows(ProtocolException.class, () -> core.answer(bad));
             assertTrue(e.getMessage().contains("out of the world") || e.getMessage().contains("does not exist"),
