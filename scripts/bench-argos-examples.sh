@@ -10,10 +10,10 @@
 #   diffusion_100  bench/diffusion_100.xml and bench/diffusion_100.argos (ten times the robots and obstacles, an
 #                  arena sqrt(10) times as wide): the steps per second
 #   flocking       examples/argos/flocking.xml and flocking.argos: the steps per second, and the steps until the
-#                  order parameter (the length of the robots' mean heading) passes 0.9: RoboSim's from its pose log,
-#                  ARGoS's from a second run of its file with loop functions of ours added that write it each step
-#                  (bench/argos/flocking_order_loop_functions.cpp, built here against PREFIX's ARGoS; that run is
-#                  not timed)
+#                  order parameter (the length of the robots' mean heading) passes 0.9, each from a second run,
+#                  not timed, that writes it: RoboSim's with --pose-log (a viewer of every step, which costs a
+#                  small world's run half its speed again), ARGoS's with loop functions of ours added that write
+#                  it each step (bench/argos/flocking_order_loop_functions.cpp, built here against PREFIX's ARGoS)
 #   flocking_100   bench/flocking_100.xml and bench/flocking_100.argos (ten times the robots, placed in a square
 #                  sqrt(10) times as wide): the steps per second
 # The floor of a one-JVM run's thread shape, for the diffusion worlds (whose controller it can run inline):
@@ -110,8 +110,9 @@ for seed in $(seq "$seeds"); do
   robosim diffusion_100 bench/diffusion_100.xml "$seed"
   floor[diffusion_100]+="$(engine bench/diffusion_100.xml) "
   argos diffusion_100 "$seed" bench/diffusion_100.argos
-  robosim flocking examples/argos/flocking.xml "$seed" --pose-log poses.csv
-  order_rs+=("$(order "$tmp/rs-flocking-$seed/poses.csv")")
+  robosim flocking examples/argos/flocking.xml "$seed"
+  robosim flocking_order examples/argos/flocking.xml "$seed" --pose-log poses.csv
+  order_rs+=("$(order "$tmp/rs-flocking_order-$seed/poses.csv")")
   argos flocking "$seed"
   argos flocking_order "$seed" "$tmp/flocking_order.argos"
   order_ar+=("$(order_argos "$tmp/ar-flocking_order-$seed/flocking_order.txt")")
