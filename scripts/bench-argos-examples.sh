@@ -11,8 +11,8 @@
 #                  arena sqrt(10) times as wide): the steps per second
 #   flocking       examples/argos/flocking.xml and flocking.argos: the steps per second, and the steps until the
 #                  order parameter (the length of the robots' mean heading) passes 0.9, each from a second run,
-#                  not timed, that writes it: RoboSim's with --pose-log (a viewer of every step, which costs a
-#                  small world's run half its speed again), ARGoS's with loop functions of ours added that write
+#                  not timed, that writes it: RoboSim's with --pose-log (a viewer of every step, which makes a
+#                  small world's run take half as long again), ARGoS's with loop functions of ours added that write
 #                  it each step (bench/argos/flocking_order_loop_functions.cpp, built here against PREFIX's ARGoS)
 #   flocking_100   bench/flocking_100.xml and bench/flocking_100.argos (ten times the robots, placed in a square
 #                  sqrt(10) times as wide): the steps per second

@@ -17,20 +17,27 @@ example=""
 args=()
 while [ $# -gt 0 ]; do
   case $1 in
-    --example) [ $# -ge 2 ] || robosim_fail "--example needs the name of a world in examples/argos/"; example=$2; shift 2 ;;
-    --example=*) example=${1#--example=}; shift ;;
+    --example|--example=*)
+      if [ "$1" = --example ]; then
+        [ $# -ge 2 ] || robosim_fail "--example needs the name of a world in examples/argos/"; example=$2; shift
+      else
+        example=${1#--example=}
+      fi
+      shift
+      [ -n "$example" ] || robosim_fail "--example needs the name of a world in examples/argos/, got an empty one" ;;
     *) args+=("$1"); shift ;;
   esac
 done
 robosim_peer_bench_args 5 "${args[@]}"
-world=test-envs/bench-10.xml
+world=$ROBOSIM_HOME/test-envs/bench-10.xml
 if [ -n "$example" ]; then
-  world=examples/argos/$example.xml
-  [ -f "$ROBOSIM_HOME/$world" ] || robosim_fail "--example $example: no $world"
+  world=$ROBOSIM_HOME/examples/argos/$example.xml
+  [ -f "$world" ] || robosim_fail "--example $example: no examples/argos/$example.xml"
+  runner=$(dirname "$BENCH_PEER_SCRIPT")/run-argos-example.sh
+  [ -z "$BENCH_PEERS" ] || [ -x "$runner" ] || robosim_fail "no $runner (the peers' scripts)"
 fi
 [ "$ROBOSIM_WRITE_DOCS" = 1 ] && robosim_fail "writes no file: no --write-docs"
 reps=$BENCH_REPS peers=$BENCH_PEERS peer_script=$BENCH_PEER_SCRIPT
-cd "$ROBOSIM_HOME"
 robosim_build_if_stale
 echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE)"
 seconds() { # a command's whole wall time, s
@@ -40,32 +47,36 @@ seconds() { # a command's whole wall time, s
 }
 # the run's own wall time (its summary's wall_s), from its output
 run_s() { sed -n 's/.* wall_s=\([0-9.]*\) .*/\1/p' "$1" | tail -n 1 | grep . || echo NaN; }
-log=$(mktemp)
-trap 'rm -f "$log"' EXIT
+# RoboSim's runs in a folder of their own (an example's loop functions write their output where it runs)
+work=$(mktemp -d)
+log=$work/run.txt
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+scripts=$ROBOSIM_HOME/scripts
 declare -a one run start procs argos
 for rep in $(seq "$reps"); do
   t0=$EPOCHREALTIME
-  if scripts/headless.sh --one-jvm --env "$world" --steps 5000 >"$log" 2>&1; then
+  if "$scripts/headless.sh" --one-jvm --env "$world" --steps 5000 >"$log" 2>&1; then
     one+=("$(awk -v a="$t0" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }')"); run+=("$(run_s "$log")")
   else
     echo "bench-whole: failed: headless.sh --one-jvm --env $world" >&2; one+=(NaN); run+=(NaN)
   fi
-  start+=("$(seconds scripts/headless.sh --one-jvm --env "$world" --steps 1)")
-  procs+=("$(seconds scripts/headless.sh --robots-in-one-process --env "$world" --steps 5000)")
+  start+=("$(seconds "$scripts/headless.sh" --one-jvm --env "$world" --steps 1)")
+  procs+=("$(seconds "$scripts/headless.sh" --robots-in-one-process --env "$world" --steps 5000)")
   line="rep $rep: one-jvm 5000 steps ${one[-1]} s (run ${run[-1]} s), one-jvm 1 step ${start[-1]} s, processes 5000 steps ${procs[-1]} s"
   if [ -n "$peers" ] && [ -n "$example" ]; then
     pd=$(mktemp -d)
-    if "$ROBOSIM_HOME/../shared/peers/run-argos-example.sh" "$peers" "$example" 5000 "" "$pd" >"$pd/out.txt" 2>&1; then
-      argos+=("$(sed -n 's/.*wall_s=\([0-9.]*\).*/\1/p' "$pd/out.txt" | head -n 1)")
+    if "$runner" "$peers" "$example" 5000 "" "$pd/run" >"$pd/out.txt" 2>&1; then
+      argos+=("$(sed -n 's/.*wall_s=\([0-9.]*\).*/\1/p' "$pd/out.txt" | head -n 1 | grep . || echo NaN)")
     else
-      argos+=(NaN)
+      echo "bench-whole: ARGoS's $example failed: $(tail -n 3 "$pd/out.txt" | tr '\n' ' ')" >&2; argos+=(NaN)
     fi
     rm -rf "$pd"
     line="$line, ARGoS 5000 steps ${argos[-1]:-NaN} s"
   elif [ -n "$peers" ]; then
     pd=$(mktemp -d)
     SIZES=10 STEPS_10=5000 SKIP="stage robosim floor" OUT_DIR=$pd bash "$peer_script" 1 "$peers" >/dev/null 2>&1 || true
-    argos+=("$(awk -F'\t' '$2 == "argos" && $7 == "ok" { print $6 }' "$pd/raw.tsv" | tail -n 1)")
+    argos+=("$(awk -F'\t' '$2 == "argos" && $7 == "ok" { print $6 }' "$pd/raw.tsv" | tail -n 1 | grep . || echo NaN)")
     rm -rf "$pd"
     line="$line, ARGoS 5000 steps ${argos[-1]:-NaN} s"
   fi
@@ -73,7 +84,7 @@ for rep in $(seq "$reps"); do
 done
 median() { printf '%s\n' "$@" | grep -v '^NaN$' | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2) : "NaN")}'; }
 m1=$(median "${one[@]}"); mr=$(median "${run[@]}"); ms=$(median "${start[@]}"); mp=$(median "${procs[@]}")
-echo "median whole-process s ($world): one-jvm-5000=$m1 (its run $mr) one-jvm-1=$ms processes-5000=$mp"
+echo "median whole-process s (${world#"$ROBOSIM_HOME"/}): one-jvm-5000=$m1 (its run $mr) one-jvm-1=$ms processes-5000=$mp"
 if [ -n "$peers" ]; then
   ma=$(median "${argos[@]}")
   awk -v o="$m1" -v a="$ma" -v p="$mp" 'BEGIN { printf "median ARGoS-5000=%s; one-jvm / ARGoS = %.2f, processes / ARGoS = %.2f\n", a, o/a, p/a }'
