@@ -4,13 +4,8 @@ views in place (``numpy.frombuffer``: no decoding number by number)."""
 
 from __future__ import annotations
 
-import collections
 import os
 import re
-import secrets
-import socket
-import subprocess
-import threading
 from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
@@ -18,20 +13,15 @@ from typing import Any
 
 import numpy as np
 
-from robosim.frames import Frames, LinkError
+from robosim.frames import LinkError
+from robosim.hostprocess import HostError, HostProcess, find_home
 
 #: The link's name and version, as the hello says them.
 LINK = "robosim-batch-link"
 VERSION = 2
-#: How long the host gets to say where it listens (a first use may build RoboSim: ``./mvnw`` once).
-START_S = 300.0
 #: How long a step may take before the link is taken for broken (a step of 1024 worlds of many robots is seconds).
 STEP_S = 600.0
 _LISTENING = re.compile(r"robosim-batch-link listening on ([0-9.]+):(\d+)(?: viewers=(\d+))?(?: web=(\d+))?")
-
-
-class HostError(LinkError):
-    """The learning host could not start, refused what it was asked, or broke."""
 
 
 @dataclass(frozen=True)
@@ -85,25 +75,6 @@ class Batch:
     finished: np.ndarray | None  # uint8 (K,): 1 where the world's loop functions ended its experiment (finished, end)
 
 
-def find_home(near: Path | None = None) -> Path:
-    """RoboSim's checkout: ``$ROBOSIM_HOME``, else the first folder holding ``scripts/learning-host.sh`` above
-    ``near`` (an environment file) or the working directory."""
-    given = os.environ.get("ROBOSIM_HOME")
-    if given:
-        home = Path(given)
-        if not (home / "scripts/learning-host.sh").is_file():
-            raise HostError(f"ROBOSIM_HOME={given}: no scripts/learning-host.sh there (a RoboSim checkout)")
-        return home
-    starts = [p for p in (near, Path.cwd()) if p is not None]
-    for start in starts:
-        for folder in [start.resolve(), *start.resolve().parents]:
-            if (folder / "scripts/learning-host.sh").is_file():
-                return folder
-    raise HostError(
-        "cannot find RoboSim (scripts/learning-host.sh) above " + " or ".join(str(s) for s in starts)
-        + ": set ROBOSIM_HOME to a RoboSim checkout")
-
-
 class LearningHost:
     """A started learning host and the link to it. ``close()`` (or ``with``) says bye and waits for it to end."""
 
@@ -118,8 +89,8 @@ class LearningHost:
         if not file.is_file():
             raise HostError(f"{file}: no such environment file")
         home = Path(robosim_home) if robosim_home is not None else find_home(file.parent)
-        command = ["bash", str(home / "scripts/learning-host.sh"), "--env", str(file.resolve()),
-                   "--worlds", str(worlds), "--repeat", str(repeat), "--message-size", str(message_size)]
+        command = ["--env", str(file.resolve()), "--worlds", str(worlds), "--repeat", str(repeat),
+                   "--message-size", str(message_size)]
         if sensors:
             command.append("--sensors")
         if actuators:
@@ -140,29 +111,22 @@ class LearningHost:
             command += ["--viewer-port", str(viewer_port)]
         for name, value in (params or {}).items():
             command += ["--param", f"{name}={value}"]
-        key = secrets.token_hex(16)
-        env = dict(os.environ, ROBOSIM_LINK_KEY=key)
-        self._process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                         stdin=subprocess.DEVNULL, env=env, text=True, errors="replace")
-        self._output: collections.deque[str] = collections.deque(maxlen=40)
         self._closed = False
+        self._host = HostProcess(home, "learning-host.sh", command, _LISTENING, "learning host")
         try:
-            self._connect(key)
+            self._connect()
         except BaseException:
             self._stop()
             raise
 
-    def _connect(self, key: str) -> None:
+    def _connect(self) -> None:
         """Where the host listens (its first line), the hello, the welcome checked: the batch's shapes."""
-        where = self._listening()
+        where = self._host.where
         host, port = where.group(1), int(where.group(2))
         self.viewer_port = int(where.group(3)) if where.group(3) else None
         self.web_port = int(where.group(4)) if where.group(4) else None
-        threading.Thread(target=self._drain, name="learning-host-output", daemon=True).start()
-        self._sock = socket.create_connection((host, port), timeout=STEP_S)
-        self._sock.setsockopt(socket.IPPROTO_TCP, socket.TCP_NODELAY, 1)
-        self._frames = Frames(self._sock)
-        self._frames.send({"link": LINK, "version": VERSION, "key": key})
+        self._frames = self._host.connect(host, port, STEP_S)
+        self._frames.send({"link": LINK, "version": VERSION, "key": self._host.key})
         answer = self._receive()
         if not isinstance(answer, dict) or "error" in answer:
             why = answer.get("error") if isinstance(answer, dict) else answer
@@ -188,53 +152,13 @@ class LearningHost:
                         for name, dtype, shape in shapes]
         self._action_shape = (w.worlds, n, w.action_fields)
 
-    def _listening(self) -> re.Match[str]:
-        assert self._process.stdout is not None
-        found: list[re.Match[str]] = []
-        done = threading.Event()
-
-        def read() -> None:
-            assert self._process.stdout is not None
-            for line in self._process.stdout:
-                m = _LISTENING.search(line)
-                if m:
-                    found.append(m)
-                    break
-                self._output.append(line.rstrip("\n"))
-            done.set()
-
-        reader = threading.Thread(target=read, name="learning-host-start", daemon=True)
-        reader.start()
-        done.wait(START_S)
-        if not found:
-            raise HostError("the learning host did not start" + self._said())
-        reader.join()
-        return found[0]
-
-    def _drain(self) -> None:
-        assert self._process.stdout is not None
-        for line in self._process.stdout:
-            self._output.append(line.rstrip("\n"))
-
-    def _said(self) -> str:
-        lines = [line for line in self._output if line.strip()]
-        return (": " + " | ".join(lines[-8:])) if lines else ""
-
     def _receive(self) -> Any:
-        try:
-            return self._frames.receive()
-        except (OSError, LinkError) as e:
-            self._stop()
-            raise HostError(f"the learning link broke ({e}){self._said()}") from e
+        return self._host.receive(self._frames)
 
     def _call(self, request: list[Any]) -> Batch:
         if self._closed:
             raise HostError("the learning host is closed")
-        try:
-            self._frames.send(request)
-        except OSError as e:
-            self._stop()
-            raise HostError(f"the learning link broke ({e}){self._said()}") from e
+        self._host.send(self._frames, request)
         answer = self._receive()
         if not isinstance(answer, list) or not answer:
             raise HostError(f"an answer that is not one: {answer!r:.200}")
@@ -268,11 +192,7 @@ class LearningHost:
         """The episode metric (``episode_metric``) over each of ``worlds``' episodes so far, from their recordings."""
         if self._closed:
             raise HostError("the learning host is closed")
-        try:
-            self._frames.send(["measure", [int(w) for w in worlds]])
-        except OSError as e:
-            self._stop()
-            raise HostError(f"the learning link broke ({e}){self._said()}") from e
+        self._host.send(self._frames, ["measure", [int(w) for w in worlds]])
         answer = self._receive()
         if not isinstance(answer, list) or not answer or answer[0] != "ok" or len(answer[1]) != len(worlds):
             raise HostError(f"the learning host refused measure: {answer[2] if len(answer) > 2 else answer}")
@@ -291,20 +211,9 @@ class LearningHost:
         self._stop()
 
     def _stop(self) -> None:
-        """The link closed (the host, reading, sees its end) and the host waited for (killed after 10 s)."""
+        """The link closed and the host waited for (killed after 10 s)."""
         self._closed = True
-        sock = getattr(self, "_sock", None)
-        if sock is not None:
-            try:
-                sock.shutdown(socket.SHUT_RDWR)  # (a close alone leaves the connection open: Frames' file holds it)
-            except OSError:
-                pass
-            sock.close()
-        try:
-            self._process.wait(timeout=10)
-        except subprocess.TimeoutExpired:
-            self._process.kill()
-            self._process.wait()
+        self._host.stop()
 
     def __enter__(self) -> LearningHost:
         return self

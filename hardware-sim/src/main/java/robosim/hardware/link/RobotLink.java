@@ -76,9 +76,17 @@ public final class RobotLink {
         private static final long serialVersionUID = 1L;
         /** The longest account kept, characters. */
         static final int MAX_ACCOUNT = 4000;
+        /** The whole account, its lines as logged (without the robot's name). */
+        private final String account;
 
-        ControllerFailure(String lastLine) {
+        ControllerFailure(String lastLine, String account) {
             super(lastLine, null, false, false);
+            this.account = account;
+        }
+
+        /** The controller's whole account of its failure (a traceback), each line made safe as it was logged. */
+        public String account() {
+            return account;
         }
 
         /** Its message alone (what failed is the controller's, not a Java class). */
@@ -153,7 +161,7 @@ public final class RobotLink {
         String name = robot.name();
         LOG.error("{}: its controller failed:\n{}", name, String.join("\n", lines.stream().map(l -> name + "| " + l)
                 .toList()));
-        return new ControllerFailure(last.isEmpty() ? "(no account)" : last);
+        return new ControllerFailure(last.isEmpty() ? "(no account)" : last, String.join("\n", lines));
     }
 
     private void calls() throws IOException, InterruptedException {

@@ -1,0 +1,459 @@
+package robosim.testhost;
+
+import java.io.BufferedInputStream;
+import java.io.BufferedOutputStream;
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.io.IOException;
+import java.io.PrintWriter;
+import java.io.StringWriter;
+import java.net.Socket;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import org.msgpack.core.MessageBufferPacker;
+import org.msgpack.core.MessagePack;
+import org.msgpack.core.MessagePackException;
+import org.msgpack.core.MessageUnpacker;
+import org.msgpack.value.Value;
+import robosim.hardware.ControlFailure;
+import robosim.hardware.link.RobotLink;
+import robosim.protocol.Printable;
+import robosim.protocol.link.LinkFrames;
+import robosim.protocol.link.LinkHello;
+import robosim.testkit.Contact;
+import robosim.testkit.Pose;
+import robosim.testkit.Received;
+import robosim.testkit.Simulation;
+
+/**
+ * The simulation link (python/README.md, "Testing controllers"): a tester in another process (Python's
+ * {@code robosim.testing}) starts simulations of the testkit ({@link Simulation}) in this JVM, steps them and asks
+ * them what the Java testkit answers, over one connection in the robot link's frames ({@link LinkFrames}): a hello
+ * {@code {link: "robosim-simulation-link", version: 1, key}} ({@link LinkHello}), the welcome, then one request
+ * {@code [CALL, ARG...]} and one answer at a time:
+ * <ul>
+ * <li>{@code ["start", {world, params, seed, expect_failure, step_timeout_ms}]}: the environment file {@code world}
+ * (a path), its parameters (a map of texts), the seed (or nil: the file's), the robots whose control code may fail
+ * (an array), the step timeout (or nil: 10 s). Answer {@code ["ok", {id, robots}]};
+ * <li>{@code ["run", ID, N]}: N more steps. Answer {@code ["ok", STEPS]}, or, when control code failed (a robot not
+ * expected to, each said once), {@code ["failed", [FAILURE, ...], STEPS]};
+ * <li>{@code ["steps", ID]}, {@code ["robots", ID]}, {@code ["pose", ID, ROBOT]} ({@code [x_mm, y_mm, heading_deg]}),
+ * {@code ["sonar", ID, ROBOT]}, {@code ["reading", ID, ROBOT, SENSOR]} (nil if none), {@code ["received", ID, ROBOT]}
+ * ({@code [[step, from, text], ...]}), {@code ["contacts", ID, ROBOT]} ({@code [[step, with], ...]}),
+ * {@code ["failure", ID, ROBOT]} (FAILURE or nil), {@code ["reports", ID, ROBOT]} (a map),
+ * {@code ["metric", ID, NAME]}, {@code ["metrics", ID]} (a map), {@code ["ended", ID, ROBOT]} (a text or nil),
+ * {@code ["viewer_port", ID]}: {@code ["ok", VALUE]};
+ * <li>{@code ["close", ID]}: the simulation ends. Answer {@code ["ok", nil]} or {@code ["failed", [FAILURE, ...],
+ * STEPS]};
+ * <li>{@code ["bye"]}: every simulation still open ends; answer {@code ["ok", nil]}, and the link ends.
+ * </ul>
+ * FAILURE is a map {@code {robot, step, summary, account}}: the account a Python controller's traceback, or a Java
+ * stack trace. A request that is not one, a robot or simulation there is not, or a file that cannot be read, is
+ * answered {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}) and the link goes on.
+ */
+final class SimulationLink {
+    static final String NAME = "robosim-simulation-link";
+    static final int VERSION = 1;
+    /** The most simulations open at once. */
+    static final int MAX_OPEN = 64;
+    private static final LinkHello.Link HELLO = new LinkHello.Link(NAME, "simulation link", VERSION, "tester",
+            List.of());
+
+    private final Socket socket;
+    private final DataInputStream in;
+    private final DataOutputStream out;
+    private final Map<Long, Open> open = new LinkedHashMap<>();
+    private long next = 1;
+    private long served;
+
+    /** An open simulation, the robots whose control code may fail, and the robots whose failure was said. */
+    private record Open(Simulation sim, Set<String> expected, Set<String> said) {
+    }
+
+    /** A request the link cannot take: answered {@code ["error", kind, message]}. */
+    private static final class BadCall extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+        final String kind;
+
+        BadCall(String kind, String why) {
+            super(why, null, false, false);
+            this.kind = kind;
+        }
+    }
+
+    SimulationLink(Socket socket) throws IOException {
+        this.socket = socket;
+        this.in = new DataInputStream(new BufferedInputStream(socket.getInputStream()));
+        this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
+    }
+
+    /**
+     * The hello, checked ({@code key}: the secret the tester was given), then the welcome.
+     *
+     * @throws robosim.protocol.ProtocolException the refusal (answered why where it came)
+     */
+    void welcome(String key) throws IOException {
+        LinkHello.read(HELLO, socket, in, out, key);
+        MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+        p.packMapHeader(2).packString("link").packString(NAME).packString("version").packInt(VERSION);
+        LinkFrames.write(out, p.toByteArray());
+    }
+
+    /** Serves requests until the tester says bye or closes the link; every simulation it left open ends. */
+    long serve() throws IOException {
+        try {
+            while (true) {
+                byte[] frame = LinkFrames.read(in);
+                if (frame == null) {
+                    return served;
+                }
+                served++;
+                MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
+                boolean bye = false;
+                try (MessageUnpacker u = MessagePack.newDefaultUnpacker(frame)) {
+                    Value request = u.unpackValue();
+                    if (u.hasNext()) {
+                        throw new BadCall("bad_call", "a request frame holds more than its array");
+                    }
+                    bye = answer(request, reply);
+                } catch (BadCall e) {
+                    reply.clear();
+                    reply.packArrayHeader(3).packString("error").packString(e.kind)
+                            .packString(LinkFrames.oneLine(e.getMessage()));
+                } catch (IllegalArgumentException | IllegalStateException e) { // (the testkit's refusals)
+                    reply.clear();
+                    reply.packArrayHeader(3).packString("error").packString("value")
+                            .packString(LinkFrames.oneLine(String.valueOf(e.getMessage())));
+                } catch (MessagePackException e) {
+                    reply.clear();
+                    reply.packArrayHeader(3).packString("error").packString("bad_call")
+                            .packString("a request that is not one: " + LinkFrames.oneLine(e.getMessage()));
+                }
+                LinkFrames.write(out, reply.toByteArray());
+                if (bye) {
+                    return served;
+                }
+            }
+        } finally {
+            for (Open o : open.values()) {
+                close(o);
+            }
+            open.clear();
+        }
+    }
+
+    /** Packs the answer to {@code request} into {@code reply}; true if it is the bye. */
+    private boolean answer(Value request, MessageBufferPacker reply) throws IOException {
+        if (!request.isArrayValue() || request.asArrayValue().size() == 0
+                || !request.asArrayValue().get(0).isStringValue()) {
+            throw new BadCall("bad_call", "a request is an array [CALL, ARG...]");
+        }
+        List<Value> args = request.asArrayValue().list();
+        String call = args.get(0).asStringValue().asString();
+        switch (call) {
+            case "start" -> {
+                arguments(args, 1, "start: [\"start\", {world, params, seed, expect_failure, step_timeout_ms}]");
+                long id = start(args.get(1));
+                Open o = open.get(id);
+                reply.packArrayHeader(2).packString("ok").packMapHeader(2);
+                reply.packString("id").packLong(id);
+                reply.packString("robots");
+                packTexts(reply, o.sim().robots());
+            }
+            case "run" -> {
+                arguments(args, 2, "run: [\"run\", ID, N]");
+                Open o = opened(args.get(1));
+                long n = whole(args.get(2), "N");
+                List<ControlFailure> failed = new ArrayList<>();
+                try {
+                    o.sim().run(n);
+                } catch (AssertionError e) { // (control code failed: the testkit says it once; so do we, all of it)
+                    failed.addAll(unsaid(o));
+                }
+                failed.addAll(unsaid(o));
+                packOutcome(reply, o, failed);
+            }
+            case "close" -> {
+                arguments(args, 1, "close: [\"close\", ID]");
+                Open o = opened(args.get(1));
+                open.remove(args.get(1).asIntegerValue().toLong());
+                List<ControlFailure> failed = close(o);
+                if (failed.isEmpty()) {
+                    reply.packArrayHeader(2).packString("ok").packNil();
+                } else {
+                    packOutcome(reply, o, failed);
+                }
+            }
+            case "bye" -> {
+                arguments(args, 0, "bye: [\"bye\"]");
+                reply.packArrayHeader(2).packString("ok").packNil();
+                return true;
+            }
+            default -> {
+                if (args.size() < 2) {
+                    throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" without a simulation "
+                            + "(start, run, steps, robots, pose, sonar, reading, received, contacts, failure, reports, "
+                            + "metric, metrics, ended, viewer_port, close, bye)");
+                }
+                Simulation sim = opened(args.get(1)).sim();
+                reply.packArrayHeader(2).packString("ok");
+                ask(call, args, sim, reply);
+            }
+        }
+        return false;
+    }
+
+    /** Packs what {@code call} asks of {@code sim} (a question that changes nothing). */
+    private static void ask(String call, List<Value> args, Simulation sim, MessageBufferPacker reply)
+            throws IOException {
+        switch (call) {
+            case "steps" -> {
+                arguments(args, 1, "steps: [\"steps\", ID]");
+                reply.packLong(sim.steps());
+            }
+            case "robots" -> {
+                arguments(args, 1, "robots: [\"robots\", ID]");
+                packTexts(reply, sim.robots());
+            }
+            case "metrics" -> {
+                arguments(args, 1, "metrics: [\"metrics\", ID]");
+                packNumbers(reply, sim.metrics());
+            }
+            case "metric" -> {
+                arguments(args, 2, "metric: [\"metric\", ID, NAME]");
+                reply.packDouble(sim.metric(text(args.get(2), "NAME")));
+            }
+            case "viewer_port" -> {
+                arguments(args, 1, "viewer_port: [\"viewer_port\", ID]");
+                reply.packInt(sim.viewerPort());
+            }
+            case "reading" -> {
+                arguments(args, 3, "reading: [\"reading\", ID, ROBOT, SENSOR]");
+                double[] r = sim.reading(text(args.get(2), "ROBOT"), text(args.get(3), "SENSOR"));
+                if (r == null) {
+                    reply.packNil();
+                } else {
+                    packDoubles(reply, r);
+                }
+            }
+            default -> askOfRobot(call, args, sim, reply);
+        }
+    }
+
+    /** Packs what {@code call} asks of one robot of {@code sim}. */
+    private static void askOfRobot(String call, List<Value> args, Simulation sim, MessageBufferPacker reply)
+            throws IOException {
+        if (args.size() != 3) {
+            throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" of " + (args.size() - 1)
+                    + " arguments (a robot's: pose, sonar, received, contacts, failure, reports, ended, with ID and "
+                    + "ROBOT)");
+        }
+        String robot = text(args.get(2), "ROBOT");
+        switch (call) {
+            case "pose" -> {
+                Pose p = sim.pose(robot);
+                reply.packArrayHeader(3).packDouble(p.xMm()).packDouble(p.yMm()).packDouble(p.headingDeg());
+            }
+            case "sonar" -> packDoubles(reply, sim.sonar(robot));
+            case "received" -> {
+                List<Received> all = sim.received(robot);
+                reply.packArrayHeader(all.size());
+                for (Received r : all) {
+                    reply.packArrayHeader(3).packLong(r.step()).packString(r.from()).packString(r.text());
+                }
+            }
+            case "contacts" -> {
+                List<Contact> all = sim.contacts(robot);
+                reply.packArrayHeader(all.size());
+                for (Contact c : all) {
+                    reply.packArrayHeader(2).packLong(c.step()).packString(c.with());
+                }
+            }
+            case "failure" -> {
+                ControlFailure f = sim.failure(robot);
+                if (f == null) {
+                    reply.packNil();
+                } else {
+                    packFailure(reply, f);
+                }
+            }
+            case "reports" -> packNumbers(reply, sim.reports(robot));
+            case "ended" -> {
+                String end = sim.ended(robot);
+                if (end == null) {
+                    reply.packNil();
+                } else {
+                    reply.packString(end);
+                }
+            }
+            default -> throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" (start, run, steps, "
+                    + "robots, pose, sonar, reading, received, contacts, failure, reports, metric, metrics, ended, "
+                    + "viewer_port, close, bye)");
+        }
+    }
+
+    private long start(Value spec) {
+        if (open.size() >= MAX_OPEN) {
+            throw new BadCall("value", MAX_OPEN + " simulations are open: close one first");
+        }
+        if (!spec.isMapValue()) {
+            throw new BadCall("bad_call", "start takes a map {world, params, seed, expect_failure, step_timeout_ms}");
+        }
+        Map<String, Value> fields = new LinkedHashMap<>();
+        for (Map.Entry<Value, Value> e : spec.asMapValue().entrySet()) {
+            String name = text(e.getKey(), "a field's name");
+            if (!List.of("world", "params", "seed", "expect_failure", "step_timeout_ms").contains(name)) {
+                throw new BadCall("bad_call", "start: no field \"" + Printable.of(name, 40) + "\" (world, params, "
+                        + "seed, expect_failure, step_timeout_ms)");
+            }
+            fields.put(name, e.getValue());
+        }
+        if (!fields.containsKey("world")) {
+            throw new BadCall("bad_call", "start: no world (an environment file's path)");
+        }
+        Simulation.Builder b = Simulation.of(Path.of(text(fields.get("world"), "world")));
+        Value params = fields.get("params");
+        if (params != null && !params.isNilValue()) {
+            if (!params.isMapValue()) {
+                throw new BadCall("bad_call", "start: params is a map of names to texts");
+            }
+            for (Map.Entry<Value, Value> e : params.asMapValue().entrySet()) {
+                b.param(text(e.getKey(), "a parameter's name"), text(e.getValue(), "a parameter's value"));
+            }
+        }
+        Value seed = fields.get("seed");
+        if (seed != null && !seed.isNilValue()) {
+            b.seed(whole(seed, "seed"));
+        }
+        Set<String> expected = new HashSet<>();
+        Value expect = fields.get("expect_failure");
+        if (expect != null && !expect.isNilValue()) {
+            if (!expect.isArrayValue()) {
+                throw new BadCall("bad_call", "start: expect_failure is an array of robots' names");
+            }
+            for (Value v : expect.asArrayValue()) {
+                String robot = text(v, "a robot's name");
+                b.expectFailure(robot);
+                expected.add(robot);
+            }
+        }
+        Value timeout = fields.get("step_timeout_ms");
+        if (timeout != null && !timeout.isNilValue()) {
+            b.stepTimeout(Duration.ofMillis(whole(timeout, "step_timeout_ms")));
+        }
+        Simulation sim = b.start();
+        long id = next++;
+        open.put(id, new Open(sim, expected, new HashSet<>()));
+        return id;
+    }
+
+    /** Ends {@code o}'s simulation; the failures of its control code not said before. */
+    private static List<ControlFailure> close(Open o) {
+        List<ControlFailure> failed = new ArrayList<>();
+        try {
+            o.sim().close();
+        } catch (AssertionError e) {
+            failed.addAll(unsaid(o));
+        }
+        failed.addAll(unsaid(o));
+        return failed;
+    }
+
+    /** The failures of {@code o}'s control code of robots not expected to fail, not said yet (now said). */
+    private static List<ControlFailure> unsaid(Open o) {
+        List<ControlFailure> fresh = new ArrayList<>();
+        for (String robot : o.sim().robots()) {
+            ControlFailure f = o.sim().failure(robot);
+            if (f != null && !o.expected().contains(robot) && o.said().add(robot)) {
+                fresh.add(f);
+            }
+        }
+        return fresh;
+    }
+
+    private static void packOutcome(MessageBufferPacker reply, Open o, List<ControlFailure> failed) throws IOException {
+        if (failed.isEmpty()) {
+            reply.packArrayHeader(2).packString("ok").packLong(o.sim().steps());
+            return;
+        }
+        reply.packArrayHeader(3).packString("failed").packArrayHeader(failed.size());
+        for (ControlFailure f : failed) {
+            packFailure(reply, f);
+        }
+        reply.packLong(o.sim().steps());
+    }
+
+    private static void packFailure(MessageBufferPacker reply, ControlFailure f) throws IOException {
+        reply.packMapHeader(4);
+        reply.packString("robot").packString(f.robot());
+        reply.packString("step").packLong(f.step());
+        reply.packString("summary").packString(f.summary());
+        reply.packString("account").packString(account(f.thrown()));
+    }
+
+    /** What control code threw, whole: a controller's own account (a traceback), or a Java stack trace. */
+    private static String account(Throwable thrown) {
+        if (thrown instanceof RobotLink.ControllerFailure c) {
+            return c.account();
+        }
+        StringWriter w = new StringWriter();
+        thrown.printStackTrace(new PrintWriter(w));
+        return w.toString();
+    }
+
+    private Open opened(Value id) {
+        long n = whole(id, "ID");
+        Open o = open.get(n);
+        if (o == null) {
+            throw new BadCall("value", "no simulation " + n + " is open");
+        }
+        return o;
+    }
+
+    private static void arguments(List<Value> args, int n, String shape) {
+        if (args.size() != n + 1) {
+            throw new BadCall("bad_call", shape);
+        }
+    }
+
+    private static String text(Value v, String what) {
+        if (v == null || !v.isStringValue()) {
+            throw new BadCall("bad_call", what + " is a text");
+        }
+        return v.asStringValue().asString();
+    }
+
+    private static long whole(Value v, String what) {
+        if (!v.isIntegerValue() || !v.asIntegerValue().isInLongRange()) {
+            throw new BadCall("bad_call", what + " is a whole number");
+        }
+        return v.asIntegerValue().toLong();
+    }
+
+    private static void packTexts(MessageBufferPacker p, List<String> texts) throws IOException {
+        p.packArrayHeader(texts.size());
+        for (String t : texts) {
+            p.packString(t);
+        }
+    }
+
+    private static void packDoubles(MessageBufferPacker p, double[] values) throws IOException {
+        p.packArrayHeader(values.length);
+        for (double v : values) {
+            p.packDouble(v);
+        }
+    }
+
+    private static void packNumbers(MessageBufferPacker p, Map<String, Double> values) throws IOException {
+        p.packMapHeader(values.size());
+        for (Map.Entry<String, Double> e : values.entrySet()) {
+            p.packString(e.getKey()).packDouble(e.getValue());
+        }
+    }
+}

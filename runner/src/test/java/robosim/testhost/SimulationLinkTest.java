@@ -1,0 +1,195 @@
+package robosim.testhost;
+
+import static org.junit.jupiter.api.Assertions.assertEquals;
+import static org.junit.jupiter.api.Assertions.assertThrows;
+import static org.junit.jupiter.api.Assertions.assertTrue;
+
+import java.io.DataInputStream;
+import java.io.DataOutputStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.Future;
+import java.util.concurrent.TimeUnit;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.msgpack.core.MessageBufferPacker;
+import org.msgpack.core.MessagePack;
+import org.msgpack.core.MessageUnpacker;
+import org.msgpack.value.Value;
+import org.msgpack.value.ValueFactory;
+import robosim.api.Robot;
+import robosim.api.RobotControl;
+import robosim.protocol.ProtocolException;
+import robosim.protocol.link.LinkFrames;
+
+/** The simulation link, served on a thread of this JVM to a tester written here with msgpack-core. */
+class SimulationLinkTest {
+    private static final long WAIT_S = 60;
+    private final ExecutorService serving = Executors.newSingleThreadExecutor(r -> new Thread(r, "test-sim-link"));
+    private ServerSocket server;
+    @TempDir
+    Path dir;
+
+    /** Control code that moves, then throws (a bug two steps in). */
+    public static final class Careless implements RobotControl {
+        @Override
+        public void run(Robot robot) throws InterruptedException {
+            robot.move(100);
+            throw new IllegalStateException("a bug");
+        }
+    }
+
+    @BeforeEach
+    void start() throws Exception {
+        server = new ServerSocket(0, 1, InetAddress.getLoopbackAddress());
+        Files.writeString(dir.resolve("two.xml"), """
+                <environment name="two" timeStepMs="100" seed="1">
+                  <param name="speed" value="${speed:400}"/>
+                  <arena width="6" height="6"/>
+                  <robots>
+                    <robot name="mover" type="Scout" control="robosim.examples.BackAndForth" x="1" y="1" heading="0"/>
+                    <robot name="careless" type="Scout" control="robosim.testhost.SimulationLinkTest$Careless"
+                           x="1" y="4" heading="0"/>
+                  </robots>
+                </environment>
+                """);
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        serving.shutdownNow();
+        server.close();
+    }
+
+    private Future<Long> serve(String key) {
+        return serving.submit(() -> {
+            try (Socket s = server.accept()) {
+                SimulationLink link = new SimulationLink(s);
+                link.welcome(key);
+                return link.serve();
+            }
+        });
+    }
+
+    private static void send(DataOutputStream out, Value... request) throws Exception {
+        MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+        p.packValue(ValueFactory.newArray(request));
+        LinkFrames.write(out, p.toByteArray());
+    }
+
+    private static Value s(String text) {
+        return ValueFactory.newString(text);
+    }
+
+    private static Value n(long v) {
+        return ValueFactory.newInteger(v);
+    }
+
+    private static Value receive(DataInputStream in) throws Exception {
+        try (MessageUnpacker u = MessagePack.newDefaultUnpacker(LinkFrames.read(in))) {
+            return u.unpackValue();
+        }
+    }
+
+    private static void hello(DataOutputStream out, String key) throws Exception {
+        MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
+        p.packMapHeader(3).packString("link").packString(SimulationLink.NAME).packString("version")
+                .packInt(SimulationLink.VERSION).packString("key").packString(key);
+        LinkFrames.write(out, p.toByteArray());
+    }
+
+    private Value start(DataOutputStream out, DataInputStream in, Map<String, Value> fields) throws Exception {
+        Map<Value, Value> m = new java.util.LinkedHashMap<>();
+        m.put(s("world"), s(dir.resolve("two.xml").toString()));
+        fields.forEach((k, v) -> m.put(s(k), v));
+        send(out, s("start"), ValueFactory.newMap(m));
+        return receive(in);
+    }
+
+    @Test
+    void aTesterStartsStepsAndAsksAndIsToldOnceOfAFailureWhileTheLinkGoesOn() throws Exception {
+        Future<Long> served = serve("k1");
+        try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort())) {
+            DataOutputStream out = new DataOutputStream(socket.getOutputStream());
+            DataInputStream in = new DataInputStream(socket.getInputStream());
+            hello(out, "k1");
+            assertEquals("{\"link\":\"robosim-simulation-link\",\"version\":1}", receive(in).toJson());
+
+            assertEquals("[\"ok\",{\"id\":1,\"robots\":[\"mover\",\"careless\"]}]",
+                    start(out, in, Map.of("seed", n(3))).toJson());
+            send(out, s("pose"), n(1), s("mover"));
+            assertEquals("[\"ok\",[1000.0,1000.0,0.0]]", receive(in).toJson());
+            send(out, s("run"), n(1), n(20));
+            Value failed = receive(in);
+            assertEquals("failed", failed.asArrayValue().get(0).asStringValue().asString(), failed.toJson());
+            Map<Value, Value> failure = failed.asArrayValue().get(1).asArrayValue().get(0).asMapValue().map();
+            assertEquals("careless", failure.get(s("robot")).asStringValue().asString());
+            assertEquals("java.lang.IllegalStateException: a bug", failure.get(s("summary")).asStringValue().asString());
+            assertTrue(failure.get(s("account")).asStringValue().asString().contains("at robosim.testhost."
+                    + "SimulationLinkTest$Careless.run(SimulationLinkTest.java:"), failure.toString());
+            assertEquals(20, failed.asArrayValue().get(2).asIntegerValue().asLong());
+            send(out, s("run"), n(1), n(5));
+            assertEquals("[\"ok\",25]", receive(in).toJson(), "said once: the run goes on");
+            send(out, s("pose"), n(1), s("mover"));
+            assertTrue(receive(in).asArrayValue().get(1).asArrayValue().get(0).asFloatValue().toDouble() > 1000);
+
+            for (Object[] c : new Object[][] {
+                    {new Value[] {s("jump")}, "[\"error\",\"bad_call\",\"no call \\\"jump\\\" without a simulation"},
+                    {new Value[] {s("pose"), n(9), s("mover")}, "[\"error\",\"value\",\"no simulation 9 is open\"]"},
+                    {new Value[] {s("pose"), n(1), s("nobody")}, "[\"error\",\"value\",\"no robot named \\\"nobody\\\""},
+                    {new Value[] {s("pose"), s("1"), s("mover")}, "[\"error\",\"bad_call\",\"ID is a whole number\"]"},
+                    {new Value[] {s("run"), n(1), n(0)}, "[\"error\",\"value\",\"run(n) needs n >= 1, got 0\"]"},
+                    {new Value[] {s("run"), n(1)}, "[\"error\",\"bad_call\",\"run: [\\\"run\\\", ID, N]\"]"},
+                    {new Value[] {s("metric"), n(1), s("speed")}, "[\"error\",\"value\",\"no built-in metric named"},
+                    {new Value[] {n(1)}, "[\"error\",\"bad_call\",\"a request is an array [CALL, ARG...]\"]"}}) {
+                send(out, (Value[]) c[0]);
+                String answer = receive(in).toJson();
+                assertTrue(answer.startsWith((String) c[1]), answer);
+            }
+            assertTrue(start(out, in, Map.of("colour", s("red"))).toJson()
+                    .startsWith("[\"error\",\"bad_call\",\"start: no field \\\"colour\\\""));
+            assertTrue(start(out, in, Map.of("params", ValueFactory.newMap(Map.of(s("sped"), s("1"))))).toJson()
+                    .contains("sped"), "an unknown parameter is refused, named");
+            MessageBufferPacker trailing = MessagePack.newDefaultBufferPacker();
+            trailing.packArrayHeader(1).packString("bye").packInt(0);
+            LinkFrames.write(out, trailing.toByteArray());
+            assertEquals("[\"error\",\"bad_call\",\"a request frame holds more than its array\"]", receive(in).toJson());
+
+            assertEquals("[\"ok\",{\"id\":2,\"robots\":[\"mover\",\"careless\"]}]", start(out, in,
+                    Map.of("expect_failure", ValueFactory.newArray(s("careless")))).toJson());
+            send(out, s("run"), n(2), n(20));
+            assertEquals("[\"ok\",20]", receive(in).toJson(), "an expected failure is no failure of the run");
+            send(out, s("failure"), n(2), s("careless"));
+            assertTrue(receive(in).toJson().contains("\"summary\":\"java.lang.IllegalStateException: a bug\""));
+            send(out, s("close"), n(2));
+            assertEquals("[\"ok\",null]", receive(in).toJson());
+            send(out, s("steps"), n(2));
+            assertEquals("[\"error\",\"value\",\"no simulation 2 is open\"]", receive(in).toJson());
+
+            send(out, s("bye"));
+            assertEquals("[\"ok\",null]", receive(in).toJson());
+            assertTrue(served.get(WAIT_S, TimeUnit.SECONDS) > 10, "simulation 1, left open, ended with the link");
+        }
+    }
+
+    @Test
+    void aHelloWithAnotherKeyIsRefusedAndAnsweredWhy() throws Exception {
+        Future<Long> served = serve("k1");
+        try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort())) {
+            hello(new DataOutputStream(socket.getOutputStream()), "k2");
+            assertEquals("{\"error\":\"a hello with another key than this link was started with\"}",
+                    receive(new DataInputStream(socket.getInputStream())).toJson());
+            Exception e = assertThrows(ExecutionException.class, () -> served.get(WAIT_S, TimeUnit.SECONDS));
+            assertTrue(e.getCause() instanceof ProtocolException, e.toString());
+        }
+    }
+}
