@@ -24,9 +24,25 @@ from robosim.frames import LinkError
 from robosim.robot import Robot, SimulationOver
 
 #: Exit codes: the control code returned or the simulation ended (0), it failed (1), the link or the script could
-#: not be had (2).
+#: not be had (2); with --check, a script that does not compile (3).
 EXIT_FAILED = 1
 EXIT_UNUSABLE = 2
+EXIT_NOT_COMPILED = 3
+
+
+def check(scripts: list[Path]) -> list[str]:
+    """Each script compiled, not run: a line ``FILE:LINE: KIND: MESSAGE`` for each one that does not compile (or
+    cannot be read)."""
+    faults = []
+    for script in scripts:
+        try:
+            compile(script.read_bytes(), str(script), "exec", dont_inherit=True)
+        except SyntaxError as e:  # (IndentationError and TabError among them)
+            where = f"{e.filename or script}:{e.lineno}" if e.lineno else str(script)
+            faults.append(f"{where}: {type(e).__name__}: {e.msg}")
+        except (OSError, ValueError) as e:  # (ValueError: a null byte in the source)
+            faults.append(f"{script}: {e}")
+    return faults
 
 
 def script_module(script: Path) -> ModuleType:
@@ -125,12 +141,24 @@ def main(argv: list[str] | None = None) -> int:
         prog="python -m robosim",
         description="Runs a controller script for one RoboSim robot over its robot link. The script's `control` "
         "is a function of the robot, or a class whose run(robot) is called.")
-    parser.add_argument("script", type=Path, help="the controller script, e.g. examples/python/wander.py")
+    parser.add_argument("script", type=Path, nargs="+",
+                        help="the controller script, e.g. examples/python/wander.py (with --check, one or more)")
+    parser.add_argument("--check", action="store_true",
+                        help="only compile the script(s), run nothing: a line FILE:LINE: KIND: MESSAGE for each that "
+                        "does not compile, and exit 3 (0 if all do); a simulator asks this before a run")
     parser.add_argument("--link", type=_address, metavar="HOST:PORT",
                         help="the robot's link (default: $ROBOSIM_LINK; a robot whose control is "
                         "robosim.hardware.link.LinkedControl says its port when it waits)")
     parser.add_argument("--robot", metavar="NAME", help="the robot's name (default: $ROBOSIM_ROBOT)")
     args = parser.parse_args(argv)
+    if args.check:
+        faults = check(args.script)
+        for fault in faults:
+            print(fault.replace("\n", " "))
+        return EXIT_NOT_COMPILED if faults else 0
+    if len(args.script) > 1:
+        parser.error("one script (several only with --check)")
+    args.script = args.script[0]
     link = args.link or (_address(os.environ["ROBOSIM_LINK"]) if os.environ.get("ROBOSIM_LINK") else None)
     name = args.robot or os.environ.get("ROBOSIM_ROBOT")
     if link is None or not name:

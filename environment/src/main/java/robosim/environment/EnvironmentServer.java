@@ -34,6 +34,7 @@ import robosim.web.WebViewerServer;
  * {@code control-running NAME} line for each whose control code was still running 2 s after the end.
  */
 public final class EnvironmentServer {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(EnvironmentServer.class);
     /** How long the control code of robots in this JVM gets to end after the run, ms (a robot process's grace). */
     private static final long CONTROL_GRACE_MS = 2000;
 
@@ -139,6 +140,9 @@ public final class EnvironmentServer {
                 }
                 for (String r : end.running()) {
                     lines.accept("control-running " + r);
+                }
+                for (String w : plan.world().parameters().warnings(end.asked())) {
+                    LOG.warn(w);
                 }
                 if (!failed.isEmpty() && (code == 0 || code == EnvironmentHost.EXIT_ROBOTS_REMOVED)) {
                     code = EnvironmentHost.EXIT_CONTROL_FAILED; // (as headless.sh: a failed control code says more)

@@ -155,7 +155,32 @@ public final class HardwareSimulator {
         } finally {
             finish();
             awaitControlCode(CONTROL_GRACE_MS);
+            warnOfParameters(List.of(this));
         }
+    }
+
+    /**
+     * Warns, once for the robots of a process ({@code sims}), of each parameter their control code asked for that
+     * the world does not give them ({@link robosim.protocol.ParameterUse}; a one-JVM run's Environment, which sees
+     * every robot, warns of parameters nothing asked for too).
+     */
+    static void warnOfParameters(List<HardwareSimulator> sims) {
+        java.util.Map<String, java.util.Set<String>> asked = new java.util.LinkedHashMap<>();
+        java.util.Map<String, java.util.Set<String>> given = new java.util.LinkedHashMap<>();
+        for (HardwareSimulator sim : sims) {
+            ParameterAsks a = sim.parameterAsks();
+            asked.put(sim.name(), a.asked());
+            given.put(sim.name(), a.given());
+        }
+        for (String line : robosim.protocol.ParameterUse.warnings(asked, given, null, java.util.Map.of())) {
+            LOG.warn(line);
+        }
+    }
+
+    /** The parameters its control code asked for so far and those it was given (none before it started). */
+    public ParameterAsks parameterAsks() {
+        SimulatedRobot a = api;
+        return a == null ? ParameterAsks.NONE : a.asks();
     }
 
     /** How long control code gets to clean up (finally blocks) once the simulation is over, ms. */
@@ -174,6 +199,8 @@ public final class HardwareSimulator {
     // ---- the exchange, one step at a time -----------------------------------------------------
 
     private Thread controlThread;
+    /** The robot its control code is given (null before it starts); its parameter asks are read at the end. */
+    private volatile SimulatedRobot api;
     private long nextStep;
     private Command current;
     private double stepSeconds;
@@ -193,6 +220,7 @@ public final class HardwareSimulator {
         }
         SimulatedRobot api = new SimulatedRobot(state, link, welcome.robotNames(), welcome.timeStepMs(),
                 welcome.sensors(), welcome.actuators(), welcome.seed(), welcome.parameters());
+        this.api = api;
         stepSeconds = robosim.devices.Drive.seconds(welcome.timeStepMs());
         sonarWanted = !type.properties().sonars().isEmpty();
         sensorsWanted = welcome.sensors();

@@ -101,6 +101,10 @@ final class InMemoryRobot implements InMemoryLink.Robot {
         return sim.name();
     }
 
+    ParameterAsks parameterAsks() {
+        return sim.parameterAsks();
+    }
+
     private void owe(long k) {
         lock.lock();
         try {

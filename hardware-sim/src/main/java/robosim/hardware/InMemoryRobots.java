@@ -33,7 +33,9 @@ public final class InMemoryRobots implements InMemoryLink.Starter {
         }
         List<String> failed = new ArrayList<>();
         List<String> running = new ArrayList<>();
+        java.util.Map<String, java.util.Set<String>> asked = new java.util.LinkedHashMap<>();
         for (InMemoryRobot r : all) {
+            asked.put(r.name(), r.parameterAsks().asked());
             if (!r.awaitControlCode(Math.max(0, TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime())))) {
                 running.add(r.name());
             }
@@ -42,7 +44,7 @@ public final class InMemoryRobots implements InMemoryLink.Starter {
                 failed.add(why);
             }
         }
-        return new InMemoryLink.ControlEnd(failed, running);
+        return new InMemoryLink.ControlEnd(failed, running, asked);
     }
 
     /** What the control code of each robot this starter started threw out of {@code run} so far, in start order. */

@@ -66,6 +66,7 @@ final class SharedExchange {
             for (HardwareSimulator sim : sims) {
                 sim.awaitControlCode(TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
             }
+            HardwareSimulator.warnOfParameters(sims);
         }
     }
 

@@ -2,6 +2,7 @@ package robosim.hardware;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import robosim.api.Message;
 import robosim.api.Robot;
 import robosim.devices.Actuators;
@@ -30,6 +31,8 @@ final class SimulatedRobot implements Robot {
     private final double[] leds;
     private final long seed;
     private final Map<String, String> parameters;
+    /** The names its control code asked for ({@link #parameter}), for the warnings at the end ({@code ParameterUse}). */
+    private final Set<String> asked = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     /**
      * The robot {@code state} is of, its calls going through {@code link}; {@code worldSeed} and {@code parameters}
@@ -318,7 +321,13 @@ final class SimulatedRobot implements Robot {
 
     @Override
     public String parameter(String name, String defaultValue) {
+        asked.add(name);
         return parameters.getOrDefault(name, defaultValue);
+    }
+
+    /** The parameters its control code asked for so far, and those it was given. */
+    ParameterAsks asks() {
+        return new ParameterAsks(Set.copyOf(asked), parameters.keySet());
     }
 
     @Override

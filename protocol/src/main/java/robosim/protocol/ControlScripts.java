@@ -68,42 +68,95 @@ public final class ControlScripts {
         return null;
     }
 
-    /** How long the interpreter gets to show it can run a script ({@link #interpreterProblem}), s. */
+    /** How long the interpreter gets to compile the scripts ({@link #scriptsProblem}), s. */
     private static final long CHECK_S = 60;
-    /** The interpreter last found able to import robosim (a sweep's many worlds ask once). */
-    private static volatile String checked;
+    /** The exit code of {@code python -m robosim --check} when a script does not compile. */
+    private static final int NOT_COMPILED = 3;
+    /** The most of the check's output read, bytes. */
+    private static final int MAX_OUTPUT = 64 * 1024;
+    /** The scripts compiled already in this JVM, each as its interpreter, path, time and size (a sweep's runs ask once). */
+    private static final java.util.Set<String> CHECKED = java.util.concurrent.ConcurrentHashMap.newKeySet();
 
     /**
-     * Why the interpreter ({@link #interpreter}) could not run a script here (not found; cannot import the package in
-     * {@code python/}), or null: it is asked, {@code INTERPRETER -c "import robosim"}, until it has answered yes once in
-     * this JVM.
+     * Why {@code scripts} could not run here, or null: the interpreter ({@link #interpreter}) compiles them, runs
+     * none ({@code INTERPRETER -m robosim --check SCRIPT...}). A script that does not compile is its line
+     * {@code FILE:LINE: KIND: MESSAGE} (and how many more do not); an interpreter that cannot run the check (not
+     * found, without the package in {@code python/}) is said so. Scripts compiled before, unchanged, are not asked
+     * again.
      */
-    public static String interpreterProblem() throws InterruptedException {
+    public static String scriptsProblem(java.util.Collection<Path> scripts) throws InterruptedException {
         String interpreter = interpreter();
-        if (interpreter.equals(checked)) {
+        java.util.List<String> keys = new java.util.ArrayList<>();
+        for (Path p : scripts) {
+            try {
+                keys.add(interpreter + "\n" + p.toAbsolutePath() + "\n" + Files.getLastModifiedTime(p).toMillis() + "\n"
+                        + Files.size(p));
+            } catch (java.io.IOException e) {
+                keys.add(null); // (asked: the check says what is wrong with it)
+            }
+        }
+        if (!keys.contains(null) && CHECKED.containsAll(keys)) {
             return null;
         }
         String hint = " (pip install ./python into it, or set " + INTERPRETER_VARIABLE + " to a Python that has it)";
-        Process p;
+        java.util.List<String> command = new java.util.ArrayList<>(java.util.List.of(interpreter, "-m", "robosim",
+                "--check"));
+        scripts.forEach(p -> command.add(p.toString()));
+        Path output;
         try {
-            p = new ProcessBuilder(interpreter, "-c", "import robosim").redirectErrorStream(true)
-                    .redirectOutput(ProcessBuilder.Redirect.DISCARD).start();
+            output = Files.createTempFile("robosim-check", ".txt");
         } catch (java.io.IOException e) {
-            return "cannot run the Python interpreter " + Printable.of(interpreter, 200) + ": "
-                    + Printable.of(e.getMessage(), 200) + hint;
+            return "cannot check the Python scripts: " + Printable.of(String.valueOf(e.getMessage()), 200);
         }
         try {
-            if (!p.waitFor(CHECK_S, java.util.concurrent.TimeUnit.SECONDS)) {
-                return Printable.of(interpreter, 200) + " -c 'import robosim' did not end within " + CHECK_S + " s";
+            Process p;
+            try {
+                p = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(output.toFile())
+                        .redirectInput(ProcessBuilder.Redirect.PIPE).start();
+                p.getOutputStream().close();
+            } catch (java.io.IOException e) {
+                return "cannot run the Python interpreter " + Printable.of(interpreter, 200) + ": "
+                        + Printable.of(e.getMessage(), 200) + hint;
             }
+            try {
+                if (!p.waitFor(CHECK_S, java.util.concurrent.TimeUnit.SECONDS)) {
+                    return Printable.of(interpreter, 200) + " -m robosim --check did not end within " + CHECK_S + " s";
+                }
+            } finally {
+                p.destroyForcibly(); // (ended already, or given up on, or this thread interrupted)
+            }
+            java.util.List<String> lines = head(output).lines().filter(l -> !l.isBlank()).toList();
+            if (p.exitValue() == 0) {
+                if (!keys.contains(null)) {
+                    CHECKED.addAll(keys);
+                }
+                return null;
+            }
+            if (p.exitValue() == NOT_COMPILED && !lines.isEmpty()) {
+                return Printable.of(lines.get(0), 1000) + (lines.size() > 1 ? " (and " + (lines.size() - 1)
+                        + " more script" + (lines.size() > 2 ? "s" : "") + " that do not compile)" : "");
+            }
+            String said = lines.isEmpty() ? "" : ": " + Printable.of(lines.get(lines.size() - 1), 300);
+            return said.contains("No module named robosim")
+                    ? Printable.of(interpreter, 200) + " cannot import robosim, the package in python/" + hint
+                    : Printable.of(interpreter, 200) + " -m robosim --check failed (exit " + p.exitValue() + ")" + said
+                            + " (an older robosim package? pip install ./python again)";
         } finally {
-            p.destroyForcibly(); // (ended already, or given up on, or this thread interrupted)
+            try {
+                Files.deleteIfExists(output);
+            } catch (java.io.IOException e) {
+                // (a temporary file left in the temporary folder)
+            }
         }
-        if (p.exitValue() != 0) {
-            return Printable.of(interpreter, 200) + " cannot import robosim, the package in python/" + hint;
+    }
+
+    /** The first {@link #MAX_OUTPUT} bytes of {@code file}, as text. */
+    private static String head(Path file) {
+        try (java.io.InputStream in = Files.newInputStream(file)) {
+            return new String(in.readNBytes(MAX_OUTPUT), java.nio.charset.StandardCharsets.UTF_8);
+        } catch (java.io.IOException e) {
+            return "";
         }
-        checked = interpreter;
-        return null;
     }
 
     /** The interpreter a Python script runs with: {@code ROBOSIM_PYTHON}, else {@code python3} on the PATH. */

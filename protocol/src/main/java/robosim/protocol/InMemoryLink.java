@@ -69,14 +69,18 @@ public final class InMemoryLink {
      * @param failed for each robot whose control code threw out of {@code run}, {@code NAME: what it threw}
      * @param running the names of the robots whose control code had not ended when the wait was over (a robot
      *        process would have exited under it; a JVM that runs more runs must not go on with it)
+     * @param asked the parameters each robot's control code asked for ({@code Robot.parameter}), by robot
      */
-    public record ControlEnd(java.util.List<String> failed, java.util.List<String> running) {
-        /** Nobody's control code failed or is still running. */
-        public static final ControlEnd CLEAN = new ControlEnd(java.util.List.of(), java.util.List.of());
+    public record ControlEnd(java.util.List<String> failed, java.util.List<String> running,
+            java.util.Map<String, java.util.Set<String>> asked) {
+        /** Nobody's control code failed or is still running, or asked for anything. */
+        public static final ControlEnd CLEAN = new ControlEnd(java.util.List.of(), java.util.List.of(),
+                java.util.Map.of());
 
         public ControlEnd {
             failed = java.util.List.copyOf(failed);
             running = java.util.List.copyOf(running);
+            asked = java.util.Collections.unmodifiableMap(new java.util.LinkedHashMap<>(asked));
         }
     }
 }

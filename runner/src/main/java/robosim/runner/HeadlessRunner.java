@@ -143,17 +143,19 @@ public final class HeadlessRunner implements Callable<Integer> {
 
     /**
      * Every robot of {@code spec} (of environment file {@code env}) needs a control class on the class path the robot
-     * processes get (ours), or a script there and an interpreter that can run it, and the world's loop functions their
-     * class: what is wrong, or null.
+     * processes get (ours), or a script there that compiles and an interpreter that can run it, and the world's loop
+     * functions their class or script: what is wrong, or null.
      */
     public static String missingControl(java.nio.file.Path env, WorldSpec spec) throws InterruptedException {
-        boolean scripts = false;
+        java.util.Set<java.nio.file.Path> scripts = new java.util.LinkedHashSet<>();
         if (spec.loopFunctions() != null && spec.loopFunctions().given() == null) {
             String problem = robosim.environment.core.LoopSpec.problem(spec.loopFunctions().className());
             if (problem != null) {
                 return env + ": <loopFunctions>: " + problem;
             }
-            scripts = robosim.protocol.ControlScripts.isScript(spec.loopFunctions().className());
+            if (robosim.protocol.ControlScripts.isScript(spec.loopFunctions().className())) {
+                scripts.add(robosim.protocol.ControlScripts.script(spec.loopFunctions().className()));
+            }
         }
         for (WorldSpec.RobotSpec r : spec.robots()) {
             String where = env + ": <robot name=\"" + r.name() + "\">";
@@ -165,7 +167,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                 if (problem != null) {
                     return where + ": " + problem;
                 }
-                scripts = true;
+                scripts.add(robosim.protocol.ControlScripts.script(r.control()));
                 continue;
             }
             try {
@@ -178,9 +180,7 @@ public final class HeadlessRunner implements Callable<Integer> {
                         + "with --classpath or ROBOSIM_CLASSPATH)";
             }
         }
-        String python = scripts ? robosim.protocol.ControlScripts.interpreterProblem() : null;
-        return python == null ? null : env + ": its Python scripts need a Python with the robosim package: "
-                + python;
+        return scripts.isEmpty() ? null : robosim.protocol.ControlScripts.scriptsProblem(scripts);
     }
 
     private int run(WorldSpec spec, ChildProcesses children) throws Exception {
@@ -320,10 +320,10 @@ public final class HeadlessRunner implements Callable<Integer> {
             code = EXIT_CONTROL_FAILED;
         }
         System.out.println(String.format(Locale.ROOT,
-                "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s robots_left=%s "
+                "steps=%s robots=%s wall_s=%s steps_per_s=%s robot_steps_per_s=%s messages=%s robots_removed=%s "
                         + "control_failed=%d geometry=%s robots_in=%s",
                 s.get("steps"), s.get("robots"), s.get("wall_s"), s.get("steps_per_s"), s.get("robot_steps_per_s"),
-                s.get("messages"), s.get("robots_left"), controlFailed.size(),
+                s.get("messages"), s.get("robots_removed"), controlFailed.size(),
                 run.inProcessGeometry() ? "in-process" : "process",
                 run.oneJvm() ? "one-jvm" : robotsInOneProcess ? "one-process"
                         + (connectionKind() == ConnectionOption.Connection.SHARED ? "" : "-per-robot") : "processes"));

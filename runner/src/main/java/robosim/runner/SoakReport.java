@@ -30,8 +30,8 @@ record SoakReport(int robots, int robotProcesses, int silentRobots, long steps, 
         System.out.println("Environment: " + summary);
         ok &= check(Long.parseLong(s.get("steps")) == steps, "every step ran: " + s.get("steps") + " of " + steps);
         int lost = Math.min(robots, (killed + 1) * per) - killed * per;
-        ok &= check(Integer.parseInt(s.get("robots_left")) == lost + silentRobots,
-                "robots that left: " + s.get("robots_left") + " (expected " + lost + " killed + " + silentRobots
+        ok &= check(Integer.parseInt(s.get("robots_removed")) == lost + silentRobots,
+                "robots that left: " + s.get("robots_removed") + " (expected " + lost + " killed + " + silentRobots
                         + " silent)");
         ok &= check(Integer.parseInt(s.get("geometry_losses")) == 1 && Integer.parseInt(s.get("geometry_attaches")) == 1,
                 "Geometry lost " + s.get("geometry_losses") + " time(s), a new one attached "

@@ -13,8 +13,10 @@ import robosim.protocol.Report;
  * @param name the built-in's or the report's name, or the class's
  * @param over how a report's values (each robot's newest) make the run's: null for the default, their sum in a column
  *     named as the report; otherwise in a column named by it ({@link #column})
+ * @param count whether a report is a count (sweep file: {@code count="true"}): never below zero, its 95% interval a
+ *     bootstrap one, as the built-in counts' ({@code MetricInfo.Interval.BOOTSTRAP}), not Student's t
  */
-public record MetricChoice(Kind kind, String name, Over over) {
+public record MetricChoice(Kind kind, String name, Over over, boolean count) {
     /** Where the value comes from. */
     public enum Kind { BUILT_IN, REPORT, CLASS }
 
@@ -45,12 +47,24 @@ public record MetricChoice(Kind kind, String name, Over over) {
 
     /** A built-in metric, a report summed over the robots, or a class. */
     public MetricChoice(Kind kind, String name) {
-        this(kind, name, null);
+        this(kind, name, null, false);
     }
 
-    static MetricChoice of(String builtIn, String report, String className, Over over) {
+    /** A report taken over the robots as {@code over} says (a measure, not a count), or as the two-argument one. */
+    public MetricChoice(Kind kind, String name, Over over) {
+        this(kind, name, over, false);
+    }
+
+    static MetricChoice of(String builtIn, String report, String className, Over over, boolean count) {
         return builtIn != null ? new MetricChoice(Kind.BUILT_IN, builtIn)
-                : report != null ? new MetricChoice(Kind.REPORT, report, over) : new MetricChoice(Kind.CLASS, className);
+                : report != null ? new MetricChoice(Kind.REPORT, report, over, count)
+                : new MetricChoice(Kind.CLASS, className);
+    }
+
+    /** Whether {@code column} of a row is this choice's, a report declared a count. */
+    boolean countsIn(String column) {
+        return count && kind == Kind.REPORT && (over == Over.EACH ? column.startsWith(name + ".")
+                : column.equals(column(null)));
     }
 
     /**

@@ -87,7 +87,8 @@ public final class SweepFile {
     /**
      * {@code <metric name="distance_m"/>} (a built-in), {@code <metric report="found" over="sum"/>} (what the control
      * code reported, each robot's newest value, summed over the robots unless {@code over} says {@code mean},
-     * {@code min}, {@code max} or {@code each}) or {@code <metric class="my.Metric"/>} (one's own, from the recording).
+     * {@code min}, {@code max} or {@code each}; {@code count="true"}: a count, its interval a bootstrap one) or
+     * {@code <metric class="my.Metric"/>} (one's own, from the recording).
      */
     public static final class MetricXml {
         @JacksonXmlProperty(isAttribute = true)
@@ -98,6 +99,8 @@ public final class SweepFile {
         public String over;
         @JacksonXmlProperty(isAttribute = true, localName = "class")
         public String className;
+        @JacksonXmlProperty(isAttribute = true)
+        public String count;
     }
 
     /** Reads and checks {@code file}: the world loads with every combination of the values, every name is known. */
@@ -254,7 +257,12 @@ public final class SweepFile {
                         ? "over goes with report=\"NAME\" (a value the robots report)"
                         : "over is one of " + MetricChoice.Over.names()));
             }
-            MetricChoice choice = MetricChoice.of(m.name, m.report, m.className, over);
+            if (m.count != null && (m.report == null || !List.of("true", "false").contains(m.count))) {
+                throw new SweepException(file + ": <metric count=\"" + Printable.of(m.count, 40) + "\">: " + (m.report
+                        == null ? "count goes with report=\"NAME\" (a built-in metric says its own kind)"
+                        : "count is true (a count: never below zero, a bootstrap interval) or false"));
+            }
+            MetricChoice choice = MetricChoice.of(m.name, m.report, m.className, over, "true".equals(m.count));
             String bad = choice.problem();
             if (bad != null) {
                 throw new SweepException(file + ": <metric>: " + bad);

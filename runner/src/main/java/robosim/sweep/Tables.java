@@ -158,8 +158,9 @@ final class Tables {
 
     /**
      * The 95% confidence interval of the mean of {@code metric} at {@code combination}: a bootstrap percentile one for
-     * built-in metric whose {@link MetricInfo#interval()} says so (counts and shares, which a t-interval can leave),
-     * else Student's t with n - 1 degrees of freedom; null for fewer than 2 values.
+     * a built-in metric whose {@link MetricInfo#interval()} says so (counts and shares, which a t-interval can leave)
+     * and a report the sweep file declares a count, else Student's t with n - 1 degrees of freedom; null for fewer
+     * than 2 values.
      */
     double[] interval(Map<String, String> combination, String metric) {
         SummaryStatistics s = byCombination.get(combination).get(metric);
@@ -167,7 +168,8 @@ final class Tables {
             return null;
         }
         MetricInfo builtIn = Metrics.info(metric);
-        if (builtIn != null && builtIn.interval() == MetricInfo.Interval.BOOTSTRAP) {
+        boolean count = sweep.metrics().stream().anyMatch(c -> c.countsIn(metric));
+        if (count || builtIn != null && builtIn.interval() == MetricInfo.Interval.BOOTSTRAP) {
             return bootstrap(samples.get(combination).get(metric), (combination + " " + metric).hashCode());
         }
         double t = new TDistribution(null, s.getN() - 1).inverseCumulativeProbability(0.975);

@@ -153,7 +153,7 @@ class FaultsTest {
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
             RunSummary s = env.summary();
             assertTrue(s.completed(), s.reason());
-            assertEquals(1, s.robotsLeft());
+            assertEquals(1, s.robotsRemoved());
             viewer.awaitEnd(LONG, TimeUnit.SECONDS); // every update sent has been taken by the listener
             PoseUpdate last = seen.get(seen.size() - 1);
             assertEquals(99, last.step());
@@ -181,7 +181,7 @@ class FaultsTest {
                 // connected, answering nothing from step 5 on
                 assertEquals("completed 60 steps", r2.get(LONG, TimeUnit.SECONDS));
                 assertEquals("completed 60 steps", r3.get(LONG, TimeUnit.SECONDS));
-                assertEquals(1, env.summary().robotsLeft());
+                assertEquals(1, env.summary().robotsRemoved());
                 assertTrue(env.summary().completed());
                 assertTrue(closedByPeer(silent), "the silent robot's connection was closed");
             }
@@ -212,7 +212,7 @@ class FaultsTest {
                 });
         assertTrue(sim.summary.completed(), sim.summary.reason());
         assertEquals(200, sim.summary.steps());
-        assertEquals(1, sim.summary.robotsLeft(), "only the stuck robot was dropped");
+        assertEquals(1, sim.summary.robotsRemoved(), "only the stuck robot was dropped");
         assertEquals(List.of("robot3"), sim.updates.get(199).departed());
     }
 

@@ -116,7 +116,7 @@ class HeadlessRunnerTest {
         assertEquals(HeadlessRunner.EXIT_ROBOTS_REMOVED, r.code(), r.all());
         String summary = r.summary();
         assertTrue(summary.startsWith("steps=100 robots=2 "), r.all());
-        assertTrue(summary.contains(" robots_left=1 "), r.all());
+        assertTrue(summary.contains(" robots_removed=1 "), r.all());
         String removed = r.out().get(r.out().size() - 2);
         java.util.regex.Matcher m = Pattern.compile("removed robot=r2 step=(\\d+) reason=.+").matcher(removed);
         assertTrue(m.matches(), r.all());

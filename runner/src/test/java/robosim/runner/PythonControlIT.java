@@ -226,9 +226,9 @@ class PythonControlIT {
 
         ScriptRun syntax = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
                 "script=syntax.py");
-        assertEquals(4, syntax.exit(), syntax.stdout() + syntax.stderr());
-        assertTrue(syntax.stderr().contains("failed in init at step 0: " + dir.resolve("syntax.py") + ":1: SyntaxError: "),
-                syntax.stderr());
+        assertEquals(2, syntax.exit(), syntax.stdout() + syntax.stderr()); // (compiled before the run: none starts)
+        assertTrue(syntax.stderr().strip().startsWith(dir.resolve("syntax.py") + ":1: SyntaxError: "), syntax.stderr());
+        assertEquals("", syntax.stdout());
 
         ScriptRun bad = headless("--one-jvm", "--env", world.toString(), "--steps", "100", "--param",
                 "script=badcall.py");
@@ -289,6 +289,56 @@ class PythonControlIT {
         assertTrue(run.stderr().contains("raiser: its controller failed:\nraiser| Traceback (most recent call last):\n"
                 + "raiser|   File \"" + dir.resolve("raises.py") + "\", line 4, in control"), run.stderr());
         assertTrue(run.stderr().contains("raiser: about to divide"), "its output logged: " + run.stderr());
+    }
+
+    @Test
+    void aScriptThatDoesNotCompileIsOneLineBeforeAnythingRuns() throws Exception {
+        Files.writeString(dir.resolve("typo.py"), """
+                def control(robot):
+                    while True
+                        robot.move(250)
+                """);
+        Path world = Files.writeString(dir.resolve("typo.xml"), """
+                <environment name="typo" timeStepMs="100" seed="1">
+                  <arena width="6" height="6"/>
+                  <robots>
+                    <robot name="r1" type="Scout" control="python:typo.py" x="1" y="1" heading="0"/>
+                    <robot name="r2" type="Scout" control="python:typo.py" x="3" y="1" heading="0"/>
+                  </robots>
+                </environment>
+                """);
+        ScriptRun run = headless("--one-jvm", "--env", world.toString(), "--steps", "100");
+        assertEquals(2, run.exit(), run.stdout() + run.stderr());
+        assertEquals(dir.resolve("typo.py") + ":2: SyntaxError: expected ':'", run.stderr().strip(),
+                "one line, the file and the line first; nothing else");
+        assertEquals("", run.stdout(), "no run started");
+    }
+
+    @Test
+    void aParameterAskedForAndNotGivenAndOneGivenAndNotAskedForAreWarnedOnceAtTheEnd() throws Exception {
+        Files.writeString(dir.resolve("asks.py"), """
+                def control(robot):
+                    robot.set_velocity(robot.parameter("sped", 300.0))
+                    while True:
+                        robot.move(250)
+                """);
+        Path world = Files.writeString(dir.resolve("asks.xml"), """
+                <environment name="asks" timeStepMs="100" seed="1">
+                  <param name="speed" value="400"/>
+                  <arena width="6" height="6"/>
+                  <robots>
+                    <robot name="r1" type="Scout" control="python:asks.py" x="1" y="1" heading="0"/>
+                    <robot name="r2" type="Scout" control="python:asks.py" x="1" y="3" heading="0"/>
+                  </robots>
+                </environment>
+                """);
+        ScriptRun run = headless("--one-jvm", "--env", world.toString(), "--steps", "20");
+        assertEquals(0, run.exit(), run.stdout() + run.stderr());
+        String warned = "parameter \"sped\" asked for by the control code of r1, r2 is not given to them (its default"
+                + " was used); given: speed";
+        assertEquals(1, run.stderr().split(Pattern.quote(warned), -1).length - 1, run.stderr());
+        assertTrue(run.stderr().contains("parameter \"speed\" of the world was asked for by no robot's control code; "
+                + "asked: sped"), run.stderr());
     }
 
     private ScriptRun headless(String... args) throws Exception {

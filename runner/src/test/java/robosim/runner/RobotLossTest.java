@@ -154,7 +154,7 @@ class RobotLossTest {
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
             RunSummary s = env.summary();
             assertTrue(s.completed(), s.reason());
-            assertEquals(0, s.robotsLeft(), "a robot that came back has not left");
+            assertEquals(0, s.robotsRemoved(), "a robot that came back has not left");
         }
     }
 
@@ -196,7 +196,7 @@ class RobotLossTest {
             assertTrue(env.awaitEnd(LONG, TimeUnit.SECONDS));
             RunSummary s = env.summary();
             assertTrue(s.completed(), s.reason());
-            assertEquals(1, s.robotsLeft());
+            assertEquals(1, s.robotsRemoved());
             assertEquals("r1", s.departures().get(0).robot());
             assertEquals(20, s.departures().get(0).step());
             assertTrue(s.departures().get(0).why().contains("did not come back within " + STEP_TIMEOUT_MS + " ms"),

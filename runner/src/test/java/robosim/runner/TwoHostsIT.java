@@ -77,7 +77,7 @@ class TwoHostsIT {
 
             assertEquals(0, env.exit(LONG_S), env.output());
             String summary = env.await("summary steps=", LONG_S);
-            assertTrue(summary.startsWith("summary steps=200 robots=2 ") && summary.contains(" robots_left=0 ")
+            assertTrue(summary.startsWith("summary steps=200 robots=2 ") && summary.contains(" robots_removed=0 ")
                     && summary.contains(" geometry_losses=0"), summary);
             assertEquals(0, viewer.exit(LONG_S), viewer.output());
             viewer.await("pose-log: 200 steps written to " + poses, LONG_S);

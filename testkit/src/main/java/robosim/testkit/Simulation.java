@@ -50,7 +50,10 @@ import robosim.protocol.InMemoryLink;
  * Not thread-safe: one test thread drives it. Its viewer port (loopback) lets a viewer watch while it runs.
  */
 public final class Simulation implements AutoCloseable {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(Simulation.class);
     private final ClientWorkerCoordinator coordinator;
+    /** The world's parameters, for the warnings at the end of what control code asked for. */
+    private final Parameters parameters;
     private final Map<String, WatchedRobot> robots;
     private final InMemoryRobots hardware;
     private final long waitMs;
@@ -59,9 +62,10 @@ public final class Simulation implements AutoCloseable {
     /** The robots whose control code's failure has failed the test already (it is said once). */
     private final Set<String> said = new HashSet<>();
 
-    private Simulation(ClientWorkerCoordinator coordinator, Map<String, WatchedRobot> robots, InMemoryRobots hardware,
-            long waitMs, Set<String> expected) {
+    private Simulation(ClientWorkerCoordinator coordinator, Parameters parameters, Map<String, WatchedRobot> robots,
+            InMemoryRobots hardware, long waitMs, Set<String> expected) {
         this.coordinator = coordinator;
+        this.parameters = parameters;
         this.robots = robots;
         this.hardware = hardware;
         this.waitMs = waitMs;
@@ -250,7 +254,8 @@ public final class Simulation implements AutoCloseable {
             }
             ClientWorkerCoordinator c = new ClientWorkerCoordinator(spec, settings);
             c.startPaused();
-            Simulation sim = new Simulation(c, watched, robots, Math.max(1, wait.toMillis()), Set.copyOf(expected));
+            Simulation sim = new Simulation(c, spec.parameters(), watched, robots, Math.max(1, wait.toMillis()),
+                    Set.copyOf(expected));
             try {
                 c.start();
                 c.startRobotsInThisJvm();
@@ -434,7 +439,9 @@ public final class Simulation implements AutoCloseable {
     public void close() {
         coordinator.close();
         try {
-            coordinator.awaitControlCode(2000);
+            for (String w : parameters.warnings(coordinator.awaitControlCode(2000).asked())) {
+                LOG.warn(w);
+            }
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
         }

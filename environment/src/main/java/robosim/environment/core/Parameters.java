@@ -36,4 +36,19 @@ public record Parameters(Map<String, String> world, Map<String, Map<String, Stri
         all.putAll(own);
         return Collections.unmodifiableMap(all);
     }
+
+    /**
+     * The warnings at a run's end, one line each ({@link robosim.protocol.ParameterUse}), from what each robot's
+     * control code asked for ({@code asked}, by robot: every robot of the run): names asked for and not given, and
+     * parameters of the world or of a robot nothing asked for.
+     */
+    public java.util.List<String> warnings(Map<String, java.util.Set<String>> asked) {
+        Map<String, java.util.Set<String>> given = new LinkedHashMap<>();
+        Map<String, java.util.Set<String>> own = new LinkedHashMap<>();
+        for (String robot : asked.keySet()) {
+            given.put(robot, of(robot).keySet());
+            own.put(robot, robots.getOrDefault(robot, Map.of()).keySet());
+        }
+        return robosim.protocol.ParameterUse.warnings(asked, given, world.keySet(), own);
+    }
 }

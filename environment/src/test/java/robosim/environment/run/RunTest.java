@@ -166,7 +166,7 @@ class RunTest {
         assertTrue(hand.run.ended());
         RunSummary s = hand.summary();
         assertTrue(s.completed(), s.reason());
-        assertEquals(1, s.robotsLeft());
+        assertEquals(1, s.robotsRemoved());
         assertEquals(new Departure("c", 5, "its connection closed at step 5"), s.departures().get(0));
         assertEquals(new RobotState("c", "gone", 5), hand.state(2));
         assertEquals(20, bots.get(0).responses.size());
@@ -192,7 +192,7 @@ class RunTest {
         double stoodAt = bots.get(2).responses.get(4).xMm();
         assertEquals(stoodAt, c2.welcome.xMm(), 1e-9, "welcomed where it stood");
         assertEquals(14, c2.responses.size(), "steps 6 to 19");
-        assertEquals(0, hand.summary().robotsLeft());
+        assertEquals(0, hand.summary().robotsRemoved());
         assertEquals(new RobotState("c", "running", -1), hand.state(2));
     }
 
