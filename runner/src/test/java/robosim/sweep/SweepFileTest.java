@@ -52,11 +52,13 @@ class SweepFileTest {
     void valuesAreSeparatedBySpacesOrCommasAndAReportIsTakenOverTheRobotsAsTheFileSays() throws Exception {
         Sweep s = SweepFile.read(write(sweep("", "<seeds from=\"1\" to=\"1\"/><param name=\"speed\" "
                 + "values=\"200,400, 600 800\"/><metrics><metric report=\"turns\"/><metric report=\"turns\" "
-                + "over=\"mean\"/><metric report=\"turns\" over=\"each\"/></metrics>")));
+                + "over=\"mean\"/><metric report=\"turns\" over=\"each\"/><metric report=\"turns\" over=\"max\" count=\"true\"/>"
+                + "</metrics>")));
         assertEquals(List.of("200", "400", "600", "800"), s.values().get("speed"));
         assertEquals(List.of(new MetricChoice(MetricChoice.Kind.REPORT, "turns"),
                 new MetricChoice(MetricChoice.Kind.REPORT, "turns", MetricChoice.Over.MEAN),
-                new MetricChoice(MetricChoice.Kind.REPORT, "turns", MetricChoice.Over.EACH)), s.metrics());
+                new MetricChoice(MetricChoice.Kind.REPORT, "turns", MetricChoice.Over.EACH),
+                new MetricChoice(MetricChoice.Kind.REPORT, "turns", MetricChoice.Over.MAX, true)), s.metrics());
         assertEquals("turns", s.metrics().get(0).column(null));
         assertEquals("turns.robot_mean", s.metrics().get(1).column(null));
         assertEquals("turns.w3", s.metrics().get(2).column("w3"));
@@ -108,6 +110,10 @@ class SweepFileTest {
                 .contains("over is one of sum, mean, min, max, each"));
         assertTrue(refused(sweep("", seeds + "<metrics><metric name=\"contacts\" over=\"mean\"/></metrics>"))
                 .contains("over goes with report=\"NAME\""));
+        assertTrue(refused(sweep("", seeds + "<metrics><metric name=\"contacts\" count=\"true\"/></metrics>"))
+                .contains("count goes with report=\"NAME\""));
+        assertTrue(refused(sweep("", seeds + "<metrics><metric report=\"turns\" count=\"yes\"/></metrics>"))
+                .contains("count is true (a count: never below zero, a bootstrap interval) or false"));
         Path elsewhere = dir.resolve("elsewhere.xml");
         Files.writeString(elsewhere, Files.readString(WANDER).replace("robosim.examples.Wander", "my.Missing"));
         String missing = refused("<sweep world=\"elsewhere.xml\" steps=\"5\">" + seeds + "</sweep>");

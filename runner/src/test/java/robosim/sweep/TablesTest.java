@@ -48,4 +48,26 @@ class TablesTest {
         assertEquals(11 - 2.776 * Math.sqrt(2.5) / Math.sqrt(5), d[0], 1e-3);
         assertEquals(11 + 2.776 * Math.sqrt(2.5) / Math.sqrt(5), d[1], 1e-3);
     }
+
+    @Test
+    void aReportDeclaredACountHasABootstrapIntervalNeverBelowZeroAndAnotherReportStudentsT() {
+        List<MetricChoice> metrics = List.of(new MetricChoice(MetricChoice.Kind.REPORT, "found", null, true),
+                new MetricChoice(MetricChoice.Kind.REPORT, "turns"));
+        Sweep sweep = new Sweep(Path.of("/s.xml"), Path.of("/w.xml"), 10, 1, 5, 1, Map.of(), Sweep.Layout.ONE_JVM, 0,
+                List.of(), metrics, 0.5);
+        double[] found = {0, 0, 3, 0, 0};
+        List<Row> rows = new ArrayList<>();
+        for (int i = 0; i < 5; i++) {
+            Row r = row(i, 0, 1, 1);
+            Map<String, String> v = new LinkedHashMap<>(r.values());
+            v.put("found", Double.toString(found[i]));
+            v.put("turns", Double.toString(found[i]));
+            rows.add(new Row(v));
+        }
+        Tables tables = new Tables(sweep, rows);
+        double[] count = tables.interval(Map.of(), "found");
+        assertTrue(count[0] >= 0 && count[1] <= 3, count[0] + " to " + count[1]);
+        double[] t = tables.interval(Map.of(), "turns");
+        assertTrue(t[0] < 0, "Student's t of the same values reaches below zero: " + t[0]);
+    }
 }
