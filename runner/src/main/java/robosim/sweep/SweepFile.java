@@ -290,6 +290,15 @@ public final class SweepFile {
     private static void checkWorld(Path file, Sweep sweep) throws SweepException {
         EnvironmentLoader loader = new EnvironmentLoader();
         try {
+            java.util.SortedSet<String> known = loader.parameterNames(sweep.world());
+            known.removeIf(RunMetrics::reserved); // (a sweep may not set those: seed is <seeds>)
+            for (String name : sweep.values().keySet()) {
+                if (!known.contains(name)) {
+                    throw new SweepException(file + ": <param name=\"" + Printable.of(name, 64) + "\">: not a "
+                            + "parameter of " + sweep.world() + " (the parameters a sweep may set there: "
+                            + (known.isEmpty() ? "none" : String.join(", ", known)) + ")");
+                }
+            }
             for (Map<String, String> combination : sweep.combinations()) {
                 robosim.environment.core.WorldSpec spec = loader.load(sweep.world(), combination);
                 String cells = RunMetrics.cellProblem(spec.arena(), sweep.areaCellM());

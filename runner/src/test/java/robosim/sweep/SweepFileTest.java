@@ -91,7 +91,13 @@ class SweepFileTest {
         assertTrue(refused(sweep("", seeds + "<parameter name=\"speed\"/>"))
                 .contains("unknown element or attribute 'parameter'"));
         String unknown = refused(sweep("", seeds + "<param name=\"sped\" values=\"1 2\"/>"));
-        assertTrue(unknown.contains("no parameter 'sped' here (its parameters: speed)"), unknown);
+        assertTrue(unknown.contains("<param name=\"sped\">: not a parameter of ") && unknown.endsWith(
+                "(the parameters a sweep may set there: speed)"), unknown);
+        Path seeded = dir.resolve("seeded.xml");
+        Files.writeString(seeded, Files.readString(WANDER).replaceFirst("seed=\"\\d+\"", "seed=\"\\${seed:1}\""));
+        String notSeed = refused("<sweep world=\"seeded.xml\" steps=\"5\">" + seeds
+                + "<param name=\"sped\" values=\"1\"/></sweep>");
+        assertTrue(notSeed.endsWith("(the parameters a sweep may set there: speed)"), "seed is <seeds>: " + notSeed);
         assertTrue(refused(sweep("", "<seeds from=\"4\" to=\"3\"/>")).contains("is an empty range"));
         assertTrue(refused(sweep("", "")).contains("<seeds from=\"1\" to=\"10\"/> is needed"));
         assertTrue(refused(sweep("", seeds + "<param name=\"speed\" values=\"1 1\"/>")).contains("names a value twice"));

@@ -63,6 +63,34 @@ public final class EnvironmentLoader {
     }
 
     /**
+     * The names {@code --param} may give {@code file}: its placeholders' ({@code ${NAME:default}}) and its world's
+     * {@code <param>}s, sorted.
+     *
+     * @throws EnvironmentFileException the file cannot be read or is not an environment file
+     */
+    public java.util.SortedSet<String> parameterNames(Path file) throws EnvironmentFileException {
+        String where = file.toString();
+        String text;
+        try {
+            text = new String(read(file, where), StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new EnvironmentFileException(where + ": file not found");
+        } catch (IOException e) {
+            throw new EnvironmentFileException(where + ": cannot read: " + e.getMessage());
+        }
+        FileFaults faults = new FileFaults(where);
+        Placeholders.Replaced replaced = Placeholders.replace(faults, text, Map.of());
+        faults.throwIfAny();
+        faults.placedBy(replaced.columns());
+        EnvironmentFile xml = bind(faults, replaced.text());
+        faults.throwIfAny();
+        java.util.SortedSet<String> known = new TreeSet<>(replaced.names());
+        xml.params.stream().filter(p -> p.name != null && Placeholders.NAME.matcher(p.name).matches())
+                .forEach(p -> known.add(p.name));
+        return known;
+    }
+
+    /**
      * Loads and checks {@code file} with these parameters ({@code --param NAME=VALUE}): each replaces the file's
      * placeholder of that name ({@code ${NAME:default}}) and the value of the world's {@code <param name="NAME">};
      * a name that is neither is refused.
