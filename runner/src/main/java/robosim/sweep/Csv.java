@@ -57,4 +57,33 @@ public final class Csv {
         }
         return Double.toString(v);
     }
+
+    /**
+     * A statistic of runs as the summary writes it: to {@code decimals} places (half even), no trailing zeros; a
+     * negative {@code decimals} means 12 significant digits (what a double's sum of a few terms holds: 0.44, not
+     * 0.44000000000000006).
+     */
+    public static String number(double v, int decimals) {
+        if (Double.isNaN(v) || Double.isInfinite(v)) {
+            return number(v);
+        }
+        java.math.BigDecimal d = new java.math.BigDecimal(v);
+        d = decimals < 0 ? d.round(new java.math.MathContext(12, java.math.RoundingMode.HALF_EVEN))
+                : d.setScale(decimals, java.math.RoundingMode.HALF_EVEN);
+        d = d.stripTrailingZeros();
+        String text = d.signum() == 0 ? "0" : d.toPlainString();
+        return text.equals("-0") ? "0" : text;
+    }
+
+    /**
+     * The places a mean, its interval and its standard deviation {@code sd} are written to: the sd's second
+     * significant digit (an sd of 1.58 gives 1 place, 0.0012 gives 4, 158 gives none); -1 (12 significant digits)
+     * where there is no spread to go by.
+     */
+    public static int places(double sd) {
+        if (!(sd > 0) || Double.isInfinite(sd)) {
+            return -1;
+        }
+        return (int) Math.max(0, Math.min(15, 1 - Math.floor(Math.log10(sd))));
+    }
 }

@@ -232,6 +232,11 @@ public final class SweepMain implements Callable<Integer> {
     /** The sweep's end: tables made (again), one line, and the exit code. */
     private static int finish(Sweep sweep, OutputDirectory dir, int unfinished, PrintStream err) throws IOException {
         int rows = Gather.tables(sweep, dir);
+        java.nio.file.Path text = dir.path().resolve("summary.txt");
+        if (java.nio.file.Files.isRegularFile(text)) {
+            System.out.print(java.nio.file.Files.readString(text));
+            System.out.flush();
+        }
         long failed = dir.rowsWritten().stream().filter(r -> !r.ok()).count();
         long missing = sweep.runs() - rows;
         List<String> unreported = unreported(sweep, dir.rowsWritten());

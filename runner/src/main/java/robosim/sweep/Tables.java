@@ -146,14 +146,48 @@ final class Tables {
             for (String m : metrics) {
                 SummaryStatistics s = stats.get(m);
                 double[] ci = interval(combination, m);
-                line.add(s == null ? "" : Csv.number(s.getMean()));
-                line.add(s == null || s.getN() < 2 ? "" : Csv.number(s.getStandardDeviation()));
-                line.add(ci == null ? "" : Csv.number(ci[0]));
-                line.add(ci == null ? "" : Csv.number(ci[1]));
+                int places = s == null || s.getN() < 2 ? -1 : Csv.places(s.getStandardDeviation());
+                line.add(s == null ? "" : Csv.number(s.getMean(), places));
+                line.add(s == null || s.getN() < 2 ? "" : Csv.number(s.getStandardDeviation(), places));
+                line.add(ci == null ? "" : Csv.number(ci[0], places));
+                line.add(ci == null ? "" : Csv.number(ci[1], places));
             }
             summary.append(Csv.line(line));
         });
         replace(dir.resolve("summary.csv"), summary.toString());
+        replace(dir.resolve("summary.txt"), text());
+    }
+
+    /**
+     * The summary as a person reads it (the sweep prints it at its end; {@code summary.txt}): each combination, its
+     * runs, then each metric's mean and 95% interval, written as summary.csv writes them.
+     */
+    String text() {
+        StringBuilder out = new StringBuilder("mean and 95% interval over the runs that succeeded:\n");
+        int width = metrics.stream().mapToInt(String::length).max().orElse(0);
+        byCombination.forEach((combination, stats) -> {
+            int[] n = counts.get(combination);
+            String name = combination.isEmpty() ? "every run"
+                    : String.join(" ", combination.entrySet().stream().map(e -> e.getKey() + "=" + e.getValue()).toList());
+            out.append(name).append(" (").append(n[0]).append(n[0] == 1 ? " run" : " runs")
+                    .append(n[1] > 0 ? ", " + n[1] + " failed" : "").append(")\n");
+            for (String m : metrics) {
+                SummaryStatistics s = stats.get(m);
+                if (s == null) {
+                    continue;
+                }
+                double[] ci = interval(combination, m);
+                int places = s.getN() < 2 ? -1 : Csv.places(s.getStandardDeviation());
+                out.append("  ").append(m).append(" ".repeat(width - m.length() + 2))
+                        .append(Csv.number(s.getMean(), places));
+                if (ci != null) {
+                    out.append("  (").append(Csv.number(ci[0], places)).append(" to ")
+                            .append(Csv.number(ci[1], places)).append(")");
+                }
+                out.append("\n");
+            }
+        });
+        return out.toString();
     }
 
     /**

@@ -70,4 +70,27 @@ class TablesTest {
         double[] t = tables.interval(Map.of(), "turns");
         assertTrue(t[0] < 0, "Student's t of the same values reaches below zero: " + t[0]);
     }
+
+    @Test
+    void aSummaryIsWrittenToThePlacesItsSpreadSupports() {
+        assertEquals(1, Csv.places(1.58));
+        assertEquals(4, Csv.places(0.0012));
+        assertEquals(0, Csv.places(158));
+        assertEquals(-1, Csv.places(0));
+        assertEquals("11", Csv.number(11.0000001, 1));
+        assertEquals("1.6", Csv.number(1.58, 1));
+        assertEquals("0.44", Csv.number(0.1 + 0.34, -1), "a sum's float noise gone");
+        assertEquals("-2.5", Csv.number(-2.45, 1), "half even");
+        assertEquals("0", Csv.number(-0.01, 1));
+        Sweep sweep = new Sweep(Path.of("/s.xml"), Path.of("/w.xml"), 10, 1, 5, 1, Map.of(), Sweep.Layout.ONE_JVM, 0,
+                List.of(), List.of(), 0.5);
+        double[] distance = {10, 12, 11, 13, 9};
+        List<Row> rows = new ArrayList<>();
+        for (int i = 0; i < 5; i++) {
+            rows.add(row(i, 0, 1, distance[i]));
+        }
+        String text = new Tables(sweep, rows).text();
+        assertTrue(text.startsWith("mean and 95% interval over the runs that succeeded:\nevery run (5 runs)\n"), text);
+        assertTrue(text.contains("\n  distance_m    11  (9 to 13)\n"), text);
+    }
 }
