@@ -102,9 +102,19 @@ robosim_abs() {
   case $1 in /*) echo "$1" ;; *) echo "$ROBOSIM_CALLER_DIR/$1" ;; esac
 }
 
+# The log level $1 (trace, debug, info, warn, error, off) into ROBOSIM_LOG_LEVEL, or a one-line refusal.
+robosim_log_level() {
+  case ${1:-} in
+    trace|debug|info|warn|error|off) ROBOSIM_LOG_LEVEL=$1 ;;
+    *) robosim_fail "--log-level needs one of trace, debug, info, warn, error, off, got '${1:-}'" ;;
+  esac
+}
+
 # Takes every --classpath PATH[:PATH...] and --classpath=PATH[:PATH...] before a `--` out of the
-# arguments; the rest are left in ROBOSIM_ARGS. Their entries, then those of ROBOSIM_CLASSPATH, made
-# absolute, become ROBOSIM_CLASSPATH, exported so that scripts started from here add the same entries.
+# arguments, and --quiet (the log level warn) and --log-level LEVEL; the rest are left in ROBOSIM_ARGS. Their
+# entries, then those of ROBOSIM_CLASSPATH, made absolute, become ROBOSIM_CLASSPATH, exported so that scripts
+# started from here add the same entries; the level, ROBOSIM_LOG_LEVEL, is exported likewise (the JVM's
+# robosim_java starts, and every JVM RoboSim starts from it, log at that level).
 robosim_take_classpath() {
   local given=() entries=() parts=() joined e
   ROBOSIM_ARGS=()
@@ -115,6 +125,9 @@ robosim_take_classpath() {
         given+=("$2"); shift ;;
       --classpath=*) [ -n "${1#--classpath=}" ] || robosim_fail "--classpath needs a value: PATH[:PATH...]"
         given+=("${1#--classpath=}") ;;
+      --quiet) ROBOSIM_LOG_LEVEL=warn ;;
+      --log-level) robosim_log_level "${2:-}"; shift ;;
+      --log-level=*) robosim_log_level "${1#--log-level=}" ;;
       *) ROBOSIM_ARGS+=("$1") ;;
     esac
     shift
@@ -131,6 +144,10 @@ robosim_take_classpath() {
   done
   ROBOSIM_CLASSPATH=$(IFS=:; echo "${entries[*]}")
   export ROBOSIM_CLASSPATH
+  if [ -n "${ROBOSIM_LOG_LEVEL:-}" ]; then
+    robosim_log_level "$ROBOSIM_LOG_LEVEL"
+    export ROBOSIM_LOG_LEVEL
+  fi
 }
 
 # ROBOSIM_JAVA_OPTS may not set the class path: java would take the last -cp and drop RoboSim's own.
@@ -245,7 +262,9 @@ robosim_java() {
           echo "(RoboSim is not built yet: its full usage is printed once it is, e.g. after ./mvnw package -DskipTests.)"
         fi
         echo "This script also takes --classpath PATH[:PATH...] (anywhere, or ROBOSIM_CLASSPATH): entries added"
-        echo "after RoboSim's own jars to every process it starts. JVM options: ROBOSIM_JAVA_OPTS."
+        echo "after RoboSim's own jars to every process it starts; --quiet (warnings and errors only) or"
+        echo "--log-level trace|debug|info|warn|error|off (or ROBOSIM_LOG_LEVEL; default info): how much every"
+        echo "process it starts logs. JVM options: ROBOSIM_JAVA_OPTS."
         exit 0 ;;
     esac
   done
@@ -253,7 +272,9 @@ robosim_java() {
   cp=$(robosim_classpath)
   robosim_cds_opts "$main" "$cp"
   # shellcheck disable=SC2086
-  exec java -Dio.netty.noUnsafe=true -Dmsgpack.universal-buffer=true "${ROBOSIM_CDS_OPTS[@]}" ${ROBOSIM_JAVA_OPTS:-} -cp "$cp" "$main" "${ROBOSIM_ARGS[@]}"
+  local level=()
+  [ -z "${ROBOSIM_LOG_LEVEL:-}" ] || level=("-Dorg.slf4j.simpleLogger.defaultLogLevel=$ROBOSIM_LOG_LEVEL")
+  exec java -Dio.netty.noUnsafe=true -Dmsgpack.universal-buffer=true "${level[@]}" "${ROBOSIM_CDS_OPTS[@]}" ${ROBOSIM_JAVA_OPTS:-} -cp "$cp" "$main" "${ROBOSIM_ARGS[@]}"
 }
 
 # The class-data archive options of the JVM that runs main class $1 on class path $2 (into

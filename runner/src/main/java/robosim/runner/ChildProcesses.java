@@ -206,6 +206,7 @@ public final class ChildProcesses implements AutoCloseable {
         List<String> cmd = new ArrayList<>();
         cmd.add(java);
         cmd.addAll(NO_UNSAFE);
+        cmd.addAll(robosim.protocol.LogLevel.jvmOptions());
         cmd.addAll(archive.options());
         cmd.addAll(options);
         cmd.add("-cp");

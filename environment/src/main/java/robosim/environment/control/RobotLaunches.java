@@ -84,10 +84,11 @@ public final class RobotLaunches implements AutoCloseable {
         if (refusal != null) {
             throw new IOException(refusal);
         }
-        List<String> cmd = List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Dio.netty.noUnsafe=true", "-Dmsgpack.universal-buffer=true", "-cp",
-                System.getProperty("java.class.path"), "robosim.hardware.RobotMain", control, name, host,
-                Integer.toString(robotPort), "--type", type);
+        List<String> cmd = new java.util.ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java")
+                .toString(), "-Dio.netty.noUnsafe=true", "-Dmsgpack.universal-buffer=true"));
+        cmd.addAll(robosim.protocol.LogLevel.jvmOptions());
+        cmd.addAll(List.of("-cp", System.getProperty("java.class.path"), "robosim.hardware.RobotMain", control, name,
+                host, Integer.toString(robotPort), "--type", type));
         Process p = new ProcessBuilder(cmd).redirectErrorStream(true).start();
         running.add(p);
         Thread out = new Thread(() -> pipe(name, p), "robot-output[" + name + "]");
