@@ -39,3 +39,15 @@ def test_a_controller_that_raises_fails_the_test_with_its_traceback(tmp_path: Pa
     assert failed.value.failures[0].robot == "a"
     assert "careless.py\", line 4, in control" in str(failed.value)
     assert "TypeError: object of type 'NoneType' has no len()" in str(failed.value)
+
+
+def test_the_notebook_style_sweep_tabulates_and_plots(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    pytest.importorskip("pandas")
+    pytest.importorskip("matplotlib")
+    import sweep_and_plot  # noqa: PLC0415 (this folder's script)
+
+    out = tmp_path / "speed.png"
+    assert sweep_and_plot.main(["--steps", "50", "--seeds", "2", "--speeds", "200,800", "--out", str(out)]) == 0
+    printed = capsys.readouterr().out
+    assert "distance_m" in printed and "plot: " in printed
+    assert out.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -1,7 +1,6 @@
 package robosim.sweep;
 
 import java.io.IOException;
-import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
@@ -24,8 +23,6 @@ final class SweepRun {
     private static final int SIGNALLED = 128;
     private static final int SIGINT = 2;
     private static final int SIGTERM = 15;
-    /** How much of the end of a run's log is read for its summary line and its last error, bytes. */
-    static final int LOG_TAIL_BYTES = 64 * 1024;
     /** How long past its {@code runTimeoutS} a run's JVM is waited for before it is stopped, s. */
     private static final long PATIENCE_S = 30;
     private final Sweep sweep;
@@ -83,10 +80,10 @@ final class SweepRun {
         values.put("seed", Long.toString(run.seed()));
         values.put("repetition", Integer.toString(run.repetition()));
         values.putAll(run.parameters());
-        List<String> lines = tail(log);
-        Map<String, String> summary = summary(lines);
+        robosim.runner.RunLog lines = robosim.runner.RunLog.read(log);
+        Map<String, String> summary = lines.summary();
         String error = ended.broke() != null ? ended.broke() : code == 0 ? ""
-                : code > SIGNALLED && code < SIGNALLED + 65 ? "killed by signal " + (code - SIGNALLED) : lastError(lines);
+                : code > SIGNALLED && code < SIGNALLED + 65 ? "killed by signal " + (code - SIGNALLED) : lines.lastError();
         Map<String, Double> metrics = Map.of();
         if (Files.exists(recording)) {
             try {
@@ -126,48 +123,5 @@ final class SweepRun {
             Files.deleteIfExists(recording);
         }
         return row;
-    }
-
-    /** The last lines of a run's log, at most {@link #LOG_TAIL_BYTES} of it, bytes that are not UTF-8 replaced. */
-    static List<String> tail(Path log) throws IOException {
-        try (java.io.RandomAccessFile in = new java.io.RandomAccessFile(log.toFile(), "r")) {
-            long from = Math.max(0, in.length() - LOG_TAIL_BYTES);
-            byte[] bytes = new byte[(int) (in.length() - from)];
-            in.seek(from);
-            in.readFully(bytes);
-            List<String> lines = new ArrayList<>(new String(bytes, StandardCharsets.UTF_8).lines().toList());
-            if (from > 0 && !lines.isEmpty()) {
-                lines.remove(0); // (a line cut in two)
-            }
-            return lines;
-        }
-    }
-
-    /** The fields of the runner's summary line ({@code steps=... robots=...}), the last one in its output. */
-    private static Map<String, String> summary(List<String> lines) {
-        Map<String, String> fields = new LinkedHashMap<>();
-        for (int i = lines.size() - 1; i >= 0; i--) {
-            if (lines.get(i).startsWith("steps=")) {
-                for (String part : lines.get(i).trim().split("\\s+")) {
-                    int eq = part.indexOf('=');
-                    if (eq > 0) {
-                        fields.put(part.substring(0, eq), part.substring(eq + 1));
-                    }
-                }
-                break;
-            }
-        }
-        return fields;
-    }
-
-    /** A failed run's reason: its last line that is neither the summary nor an INFO or DEBUG log line. */
-    private static String lastError(List<String> lines) {
-        for (int i = lines.size() - 1; i >= 0; i--) {
-            String l = lines.get(i).strip();
-            if (!l.isEmpty() && !l.startsWith("steps=") && !l.contains(" INFO ") && !l.contains(" DEBUG ")) {
-                return l;
-            }
-        }
-        return "(the run wrote nothing)";
     }
 }

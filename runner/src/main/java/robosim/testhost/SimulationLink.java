@@ -51,6 +51,11 @@ import robosim.testkit.Simulation;
  * {@code ["viewer_port", ID]}: {@code ["ok", VALUE]};
  * <li>{@code ["close", ID]}: the simulation ends. Answer {@code ["ok", nil]} or {@code ["failed", [FAILURE, ...],
  * STEPS]};
+ * <li>{@code ["headless", {args, log, recording}]}: a headless run, {@code headless.sh ARGS} in this JVM as a sweep's
+ * warm worker runs one ({@code robosim.runner.RunHost}), its output into the file {@code log}, its metrics from the
+ * recording {@code recording} (a path, or nil) if the arguments make it. Answer {@code ["ok", {exit_code, broke,
+ * error, summary, metrics}]}: {@code broke} says why this host takes no more headless runs (the run left something
+ * running), or nil;
  * <li>{@code ["bye"]}: every simulation still open ends; answer {@code ["ok", nil]}, and the link ends.
  * </ul>
  * FAILURE is a map {@code {robot, step, summary, account}}: the account a Python controller's traceback, or a Java
@@ -71,6 +76,11 @@ final class SimulationLink {
     private final Map<Long, Open> open = new LinkedHashMap<>();
     private long next = 1;
     private long served;
+    /** Headless runs in this JVM, one at a time, as a sweep's warm worker runs them (the user's control classes). */
+    private final robosim.runner.RunHost runs = new robosim.runner.RunHost(
+            robosim.runner.ControlClassLoader.entries(System.getenv("ROBOSIM_CLASSPATH")));
+    /** Why this host runs no more headless runs (one left something running), or null. */
+    private String broke;
 
     /** An open simulation, the robots whose control code may fail, and the robots whose failure was said. */
     private record Open(Simulation sim, Set<String> expected, Set<String> said) {
@@ -190,6 +200,10 @@ final class SimulationLink {
                     packOutcome(reply, o, failed);
                 }
             }
+            case "headless" -> {
+                arguments(args, 1, "headless: [\"headless\", {args, log, recording}]");
+                headless(args.get(1), reply);
+            }
             case "bye" -> {
                 arguments(args, 0, "bye: [\"bye\"]");
                 reply.packArrayHeader(2).packString("ok").packNil();
@@ -199,7 +213,7 @@ final class SimulationLink {
                 if (args.size() < 2) {
                     throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" without a simulation "
                             + "(start, run, steps, robots, pose, sonar, reading, received, contacts, failure, reports, "
-                            + "metric, metrics, ended, viewer_port, close, bye)");
+                            + "metric, metrics, ended, viewer_port, close, headless, bye)");
                 }
                 Simulation sim = opened(args.get(1)).sim();
                 reply.packArrayHeader(2).packString("ok");
@@ -294,8 +308,78 @@ final class SimulationLink {
             }
             default -> throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" (start, run, steps, "
                     + "robots, pose, sonar, reading, received, contacts, failure, reports, metric, metrics, ended, "
-                    + "viewer_port, close, bye)");
+                    + "viewer_port, close, headless, bye)");
         }
+    }
+
+    /**
+     * A headless run ({@code headless.sh ARGS}, the runner in this JVM, as a sweep's warm worker runs one: its
+     * control classes loaded afresh, its output into {@code log}), then what it gave: its exit code, the summary
+     * line's fields, its metrics (every built-in one and every report, from {@code recording} when the run made
+     * it) and, for a run that failed, its reason. A run that left something running (threads, control code) is
+     * {@code broke}: this host runs no more headless runs after it.
+     */
+    private void headless(Value spec, MessageBufferPacker reply) throws IOException {
+        if (broke != null) {
+            throw new BadCall("value", "this host runs no more headless runs: " + broke);
+        }
+        if (!spec.isMapValue()) {
+            throw new BadCall("bad_call", "headless takes a map {args, log, recording}");
+        }
+        Map<String, Value> fields = new LinkedHashMap<>();
+        for (Map.Entry<Value, Value> e : spec.asMapValue().entrySet()) {
+            String name = text(e.getKey(), "a field's name");
+            if (!List.of("args", "log", "recording").contains(name)) {
+                throw new BadCall("bad_call", "headless: no field \"" + Printable.of(name, 40) + "\" (args, log, "
+                        + "recording)");
+            }
+            fields.put(name, e.getValue());
+        }
+        Value given = fields.get("args");
+        if (given == null || !given.isArrayValue()) {
+            throw new BadCall("bad_call", "headless: args is an array of texts (headless.sh's arguments)");
+        }
+        List<String> runArgs = new ArrayList<>();
+        for (Value v : given.asArrayValue()) {
+            runArgs.add(text(v, "an argument"));
+        }
+        Path log = Path.of(text(fields.get("log"), "log"));
+        Value rec = fields.get("recording");
+        Path recording = rec == null || rec.isNilValue() ? null : Path.of(text(rec, "recording"));
+        robosim.runner.HeadlessRuns.Ended ended;
+        try {
+            ended = runs.run(runArgs, log);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IOException("interrupted during a headless run", e);
+        }
+        broke = ended.broke();
+        robosim.runner.RunLog lines = robosim.runner.RunLog.read(log);
+        Map<String, Double> metrics = Map.of();
+        String error = ended.broke() != null ? ended.broke() : ended.code() == 0 ? "" : lines.lastError();
+        if (recording != null && java.nio.file.Files.exists(recording)) {
+            try {
+                metrics = robosim.sweep.RunMetrics.of(recording, List.of(), robosim.sweep.RunMetrics.DEFAULT_AREA_CELL_M);
+            } catch (IOException | RuntimeException e) {
+                error = error.isEmpty() ? "metrics: " + e.getMessage() : error;
+            }
+        }
+        reply.packArrayHeader(2).packString("ok").packMapHeader(5);
+        reply.packString("exit_code").packInt(ended.code());
+        reply.packString("broke");
+        if (ended.broke() == null) {
+            reply.packNil();
+        } else {
+            reply.packString(ended.broke());
+        }
+        reply.packString("error").packString(LinkFrames.oneLine(error));
+        Map<String, String> summary = lines.summary();
+        reply.packString("summary").packMapHeader(summary.size());
+        for (Map.Entry<String, String> e : summary.entrySet()) {
+            reply.packString(e.getKey()).packString(e.getValue());
+        }
+        reply.packString("metrics");
+        packNumbers(reply, metrics);
     }
 
     private long start(Value spec) {
