@@ -192,4 +192,38 @@ class SimulationLinkTest {
             assertTrue(e.getCause() instanceof ProtocolException, e.toString());
         }
     }
+
+    @Test
+    void aHeadlessRunInTheHostGivesItsExitCodeSummaryAndMetrics() throws Exception {
+        Future<Long> served = serve("k1");
+        try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort())) {
+            DataOutputStream out = new DataOutputStream(socket.getOutputStream());
+            DataInputStream in = new DataInputStream(socket.getInputStream());
+            hello(out, "k1");
+            receive(in);
+            Path log = dir.resolve("run.log");
+            Path recording = dir.resolve("run.rec");
+            Map<Value, Value> m = new java.util.LinkedHashMap<>();
+            m.put(s("args"), ValueFactory.newArray(s("--one-jvm"), s("--env"), s(dir.resolve("two.xml").toString()),
+                    s("--steps"), s("30"), s("--record"), s(recording.toString())));
+            m.put(s("log"), s(log.toString()));
+            m.put(s("recording"), s(recording.toString()));
+            send(out, s("headless"), ValueFactory.newMap(m));
+            Map<Value, Value> answer = receive(in).asArrayValue().get(1).asMapValue().map();
+            assertEquals(4, answer.get(s("exit_code")).asIntegerValue().asInt(), "careless's control code threw");
+            assertTrue(answer.get(s("broke")).isNilValue());
+            assertEquals("30", answer.get(s("summary")).asMapValue().map().get(s("steps")).asStringValue().asString());
+            assertTrue(answer.get(s("metrics")).asMapValue().map().get(s("distance_m")).asFloatValue().toDouble() > 0);
+            assertTrue(Files.readString(log).contains("robot careless: its control code failed"), "its output logged");
+            m.put(s("args"), ValueFactory.newArray(s("--one-jvm"), s("--env"), s(dir.resolve("none.xml").toString()),
+                    s("--steps"), s("30")));
+            send(out, s("headless"), ValueFactory.newMap(m));
+            Map<Value, Value> bad = receive(in).asArrayValue().get(1).asMapValue().map();
+            assertEquals(2, bad.get(s("exit_code")).asIntegerValue().asInt());
+            assertTrue(bad.get(s("error")).asStringValue().asString().contains("none.xml: file not found"), bad.toString());
+            send(out, s("bye"));
+            receive(in);
+            served.get(WAIT_S, TimeUnit.SECONDS);
+        }
+    }
 }
