@@ -266,6 +266,58 @@ def test_bad_choices_are_one_clear_error() -> None:
         VectorEnv(DISPERSION, worlds=0)
 
 
+def test_bad_actions_and_seeds_are_clear_errors_before_anything_is_sent() -> None:
+    with VectorEnv(MIXED, worlds=2) as env:
+        env.reset(seed=1)
+        good = np.zeros((2, 2, 2), np.float32)
+        with pytest.raises(ValueError, match=r"actions of shape \(2,\); this env takes .* \(2, 2, 2\)"):
+            env.step(np.zeros(2))
+        huge = good.astype(np.float64)
+        huge[1, 0, 1] = 1e300
+        with pytest.raises(ValueError, match="world 1, robot robot1: action field 1 is 1e[+]300, not a finite"):
+            env.step(huge)
+        nan = good.copy()
+        nan[0, 1, 0] = np.nan
+        with pytest.raises(ValueError, match="world 0, robot robot2: action field 0 is nan"):
+            env.step(nan)
+        for seed, why in (("7", "a whole number"), (2**64, "0 to 2\\*\\*63 - 2"), (-1, "0 to 2"), (True, "a whole")):
+            with pytest.raises(ValueError, match=f"seed .*: {why}"):
+                env.reset(seed=seed)  # type: ignore[arg-type]
+        _, infos = env.reset(seed=5)
+        assert infos["seeds"] == [5, 6], "the refused seeds changed nothing"
+        env.step(good)  # (the env goes on)
+    parallel = ParallelEnv(MIXED)
+    try:
+        parallel.reset(seed=1)
+        with pytest.raises(ValueError, match="actions is a dict of agent names to actions, not a list"):
+            parallel.step([np.zeros(2)])  # type: ignore[arg-type]
+        with pytest.raises(ValueError, match="no agent 'robot9' \\(agents: robot1, robot2\\)"):
+            parallel.step({"robot9": np.zeros(2)})
+        with pytest.raises(ValueError, match=r"agent robot1: an action of shape \(\); its action space's is \(2,\)"):
+            parallel.step({"robot1": 0.5})
+    finally:
+        parallel.close()
+
+
+def test_normalized_actions_are_a_unit_box_scaled_to_each_robots_limits() -> None:
+    with VectorEnv(MIXED, worlds=1, normalize_actions=True, pose=True) as env, \
+            VectorEnv(MIXED, worlds=1, pose=True) as physical:
+        box = env.action_space("robot1")
+        assert (box.low == -1).all() and (box.high == 1).all()
+        limits = physical.action_space("robot1")
+        env.reset(seed=3)
+        physical.reset(seed=3)
+        unit = np.array([[[0.5, 0.0], [1.0, -0.25]]], np.float32)
+        scaled = np.array([[[0.5 * limits.high[0], 0.0],
+                            [physical.action_space("robot2").high[0],
+                             -0.25 * physical.action_space("robot2").high[1]]]],
+                          np.float32)
+        for _ in range(5):
+            env.step(unit)
+            physical.step(scaled)
+        assert np.allclose(env.last_pose, physical.last_pose, atol=1e-3), (env.last_pose, physical.last_pose)
+
+
 def read_exact(sock: socket.socket, n: int, deadline: float) -> bytes:
     """``n`` bytes, however the server's writes split them, by ``deadline``; its end is an assertion."""
     data = b""

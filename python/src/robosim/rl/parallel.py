@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from typing import Any
 
 import numpy as np
@@ -27,18 +27,22 @@ class ParallelEnv(pettingzoo.ParallelEnv):
                  terminate: Terminate = None,
                  episode_metric: str | None = None,
                  loop_metrics: Sequence[str] = (), random_headings: bool = False, area_cell_m: float | None = None,
-                 web_port: int | None = None, viewer_port: int | None = None, params: dict[str, str] | None = None,
+                 web_port: int | None = None, viewer_port: int | None = None,
+                 params: dict[str, str] | None = None,
+                 normalize_actions: bool = False,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
         self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors, actuators=actuators,
                                  message_size=message_size, max_steps=max_steps, reward=reward, terminate=terminate,
                                  episode_metric=episode_metric,
                                  loop_metrics=loop_metrics, random_headings=random_headings,
                                  area_cell_m=area_cell_m, threads=1, web_port=web_port, viewer_port=viewer_port,
-                                 params=params, robosim_home=robosim_home)
+                                 params=params, normalize_actions=normalize_actions,
+                                 robosim_home=robosim_home)
         self.possible_agents = list(self._vector.agents)
         self.agents: list[str] = []
         self._index = {a: i for i, a in enumerate(self.possible_agents)}
-        self._actions = np.zeros((1, len(self.possible_agents), self._vector.welcome.action_fields), np.float32)
+        # (float64: the vector env checks each value as given, 1e300 too, before it becomes float32)
+        self._actions = np.zeros((1, len(self.possible_agents), self._vector.welcome.action_fields))
         self.web_port = self._vector.host.web_port
         self.viewer_port = self._vector.host.viewer_port
 
@@ -56,10 +60,17 @@ class ParallelEnv(pettingzoo.ParallelEnv):
 
     def step(self, actions: dict[str, Any]) -> tuple[dict[str, Any], dict[str, float], dict[str, bool],
                                                      dict[str, bool], dict[str, Any]]:
+        if not isinstance(actions, Mapping):
+            raise ValueError(f"actions is a dict of agent names to actions, not a {type(actions).__name__}")
         self._actions[:] = 0.0
+        fields = self._actions.shape[2]
         for agent, action in actions.items():
-            if agent in self._index:
-                self._actions[0, self._index[agent]] = action
+            if agent not in self._index:
+                raise ValueError(f"no agent {agent!r} (agents: {', '.join(self.possible_agents)})")
+            given = np.asarray(action)
+            if given.shape != (fields,):
+                raise ValueError(f"agent {agent}: an action of shape {given.shape}; its action space's is ({fields},)")
+            self._actions[0, self._index[agent]] = given  # (checked as numbers, finite, by the vector env)
         parts, rewards, terminated, truncated, infos = self._vector.step(self._actions)
         acting = self.agents
         observations = self._observations(parts, acting)

@@ -30,13 +30,15 @@ class SingleRobotEnv(gymnasium.Env):
                  loop_metrics: Sequence[str] = (),
                  random_headings: bool = False, area_cell_m: float | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
+                 normalize_actions: bool = False,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
         self._vector = VectorEnv(path, worlds=1, repeat=repeat, pose=pose, sensors=sensors, actuators=actuators,
                                  message_size=message_size, max_steps=max_steps, reward=reward, terminate=terminate,
                                  episode_metric=episode_metric,
                                  loop_metrics=loop_metrics, random_headings=random_headings,
                                  area_cell_m=area_cell_m, threads=1, web_port=web_port, viewer_port=viewer_port,
-                                 params=params, robosim_home=robosim_home)
+                                 params=params, normalize_actions=normalize_actions,
+                                 robosim_home=robosim_home)
         agents = self._vector.agents
         if robot is not None and robot not in agents:
             self._vector.close()
@@ -47,7 +49,8 @@ class SingleRobotEnv(gymnasium.Env):
         self.observation_space = self._vector.observation_space(self.robot)
         self.action_space = self._vector.action_space(self.robot)
         self._parts: dict[str, np.ndarray] = {}
-        self._actions = np.zeros((1, len(agents), self._vector.welcome.action_fields), np.float32)
+        # (float64: the vector env checks each value as given, 1e300 too, before it becomes float32)
+        self._actions = np.zeros((1, len(agents), self._vector.welcome.action_fields))
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None
               ) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
@@ -60,7 +63,10 @@ class SingleRobotEnv(gymnasium.Env):
             self._actions[0] = self._others({k: v[0] for k, v in self._parts.items()})
         else:
             self._actions[:] = 0.0
-        self._actions[0, self._i] = action
+        given = np.asarray(action)
+        if given.shape != self.action_space.shape:
+            raise ValueError(f"an action of shape {given.shape}; the action space's is {self.action_space.shape}")
+        self._actions[0, self._i] = given  # (checked as numbers, finite, by the vector env)
         self._parts, rewards, terminated, truncated, infos = self._vector.step(self._actions)
         observation = self._vector.layout.agent_observation(self._parts, 0, self._i)
         metrics = {m: float(v[0]) for m, v in infos["metrics"].items()}

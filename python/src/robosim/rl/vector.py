@@ -85,6 +85,7 @@ class VectorEnv:
                  loop_metrics: Sequence[str] = (), random_headings: bool = False,
                  area_cell_m: float | None = None, threads: int | None = None, web_port: int | None = None,
                  viewer_port: int | None = None, params: dict[str, str] | None = None,
+                 normalize_actions: bool = False,
                  robosim_home: str | os.PathLike[str] | None = None) -> None:
         if max_steps < 1:
             raise ValueError(f"max_steps must be >= 1, got {max_steps}")
@@ -106,7 +107,13 @@ class VectorEnv:
         self._reward = reward
         self._terminate = terminate
         self._observation_spaces = [self.layout.observation_space(i) for i in range(len(self.agents))]
-        self._action_spaces = [self.layout.action_space(i) for i in range(len(self.agents))]
+        physical = [self.layout.action_space(i) for i in range(len(self.agents))]
+        #: With normalize_actions, an action's field a in [-1, 1] is mid + half * a in the robot's own units.
+        self._mid = np.array([(b.high + b.low) / 2 for b in physical], np.float64)
+        self._half = np.array([(b.high - b.low) / 2 for b in physical], np.float64)
+        self.normalize_actions = normalize_actions
+        self._action_spaces = [spaces.Box(-1.0, 1.0, b.shape, np.float32) for b in physical] if normalize_actions \
+            else physical
         n = len(self.agents)
         self._actions = np.zeros((worlds, n, self.welcome.action_fields), np.float32)
         self._done = np.zeros((worlds, n), bool)
@@ -129,6 +136,8 @@ class VectorEnv:
 
     def reset(self, seed: int | None = None) -> tuple[dict[str, np.ndarray], dict[str, Any]]:
         """Every world begins a new episode (seed None: seeds drawn from the last seeded reset's, or the file's)."""
+        if seed is not None:
+            seed = self._checked_seed(seed)
         if seed is None:
             seed = self.welcome.seed if not self._generators else int(self._generators[0].integers(2**62))
         self._generators = [np.random.default_rng([seed, w]) for w in range(self.num_worlds)]
@@ -149,7 +158,10 @@ class VectorEnv:
         limits are held to them)."""
         if self._metrics is None:
             raise RuntimeError("reset() before step()")
-        np.copyto(self._actions, actions, casting="same_kind")
+        given = self._checked_actions(actions)
+        if self.normalize_actions:
+            given = self._mid + self._half * np.clip(given, -1.0, 1.0)
+        np.copyto(self._actions, given, casting="unsafe")
         again = list(self._ended)
         if self._any_done:
             self._actions[self._done] = 0.0
@@ -214,6 +226,32 @@ class VectorEnv:
         if self.welcome.episode_metric is not None:
             infos["episode_metric"] = measured if measured is not None else np.full(self.num_worlds, np.nan)
         return observations, rewards, terminated, truncated, infos
+
+    def _checked_seed(self, seed: object) -> int:
+        """``seed`` as the host takes it (a whole number, 0 to 2**63 - K: world w runs with seed + w), or a
+        ValueError; checked before anything changes."""
+        if isinstance(seed, bool) or not isinstance(seed, int | np.integer):
+            raise ValueError(f"seed {seed!r}: a whole number (an int), or None")
+        if not 0 <= int(seed) < 2**63 - self.num_worlds:
+            raise ValueError(f"seed {seed}: 0 to 2**63 - {self.num_worlds} (world w runs with seed + w)")
+        return int(seed)
+
+    def _checked_actions(self, actions: object) -> np.ndarray:
+        """``actions`` as numbers of shape (K, N, F), each finite within float32's range, or a ValueError naming the
+        world, the robot and the field."""
+        given = np.asarray(actions)
+        if given.shape != self._actions.shape:
+            raise ValueError(f"actions of shape {given.shape}; this env takes (worlds, robots, fields) = "
+                             f"{self._actions.shape} (no broadcasting: one action a robot of each world)")
+        if not (np.issubdtype(given.dtype, np.number) or given.dtype == np.bool_):
+            raise ValueError(f"actions of type {given.dtype}: numbers")
+        values = given.astype(np.float64)
+        bad = ~np.isfinite(values) | (np.abs(values) > np.finfo(np.float32).max)
+        if bad.any():
+            w, r, f = (int(i) for i in np.argwhere(bad)[0])
+            value = float(values[w, r, f])
+            raise ValueError(f"world {w}, robot {self.agents[r]}: action field {f} is {value!r}, not a finite float32")
+        return values
 
     def _rewards(self, transition: Transition, shape: tuple[int, int]) -> np.ndarray:
         if self._reward is None:
