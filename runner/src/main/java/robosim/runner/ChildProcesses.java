@@ -81,6 +81,8 @@ public final class ChildProcesses implements AutoCloseable {
     private final List<String> jvmOptions;
     private final ClassDataArchives archives = ClassDataArchives.fromEnvironment();
     private final Thread onSignal = new Thread(this::close, "stop-children");
+    /** Whether this JVM was told to stop (a signal), and so stopped the children: their exits are no failure. */
+    private volatile boolean stoppedBySignal;
     /** Set once {@link #close} has begun: a child started after that is stopped at once (guarded by {@code this}). */
     private boolean closed;
 
@@ -299,6 +301,11 @@ public final class ChildProcesses implements AutoCloseable {
         }
     }
 
+    /** Whether this JVM was told to stop (SIGTERM, SIGINT, SIGHUP) and stopped the children itself. */
+    boolean stoppedBySignal() {
+        return stoppedBySignal;
+    }
+
     /**
      * Asks every child still running (and its children) to stop with SIGTERM, so the Environment can
      * tell its clients; kills what is left after a grace period; then puts in place the class-data
@@ -308,6 +315,9 @@ public final class ChildProcesses implements AutoCloseable {
     public void close() {
         synchronized (this) {
             closed = true;
+        }
+        if (Thread.currentThread() == onSignal) {
+            stoppedBySignal = true;
         }
         List<ProcessHandle> all = new ArrayList<>();
         for (Child c : started) {

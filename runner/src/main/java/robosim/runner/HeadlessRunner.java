@@ -303,7 +303,10 @@ public final class HeadlessRunner implements Callable<Integer> {
         List<String> failed = new ArrayList<>(children.awaitAll(30));
         failed.removeIf(f -> f.endsWith("(exit " + ChildProcesses.EXIT_CONTROL_FAILED + ")"));
         controlFailed.addAll(children.controlFailures());
-        if (!failed.isEmpty()) {
+        if (children.stoppedBySignal()) { // (asked to stop: the processes' exits are the stop's, no failure)
+            System.err.println("headless: stopped (a signal: SIGTERM, SIGINT or SIGHUP); every process it started was "
+                    + "stopped");
+        } else if (!failed.isEmpty()) {
             System.err.println("headless: processes that did not end cleanly: " + failed);
             code = code == 0 ? 1 : code;
         }

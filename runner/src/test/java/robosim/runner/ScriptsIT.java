@@ -131,6 +131,7 @@ class ScriptsIT {
                 REPO.resolve("scripts/headless.sh").toString(), "--env", "world.xml", "--steps", "1000000",
                 "--speed", "1", "--progress", "--classpath", "classes");
         assertEquals(128 + 15, run.exit(), "ended by SIGTERM; stderr: " + run.stderr());
+        assertTrue(!run.stderr().contains("did not end cleanly"), "a stop is no failure: " + run.stderr());
     }
 
     private void assertRobotDrove(ScriptRun run) throws IOException {
