@@ -157,6 +157,41 @@ class ReplayTest {
         }
     }
 
+    @Test
+    void theDefaultPortsTakenAReplayListensOnFreeOnesAndSaysWhich(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("run.rec");
+        InJvmSimulation live = new InJvmSimulation(InJvmSimulation.env("paper-benchmark.xml"))
+                .settings(s -> s.record(file)).run(20, false, Chatter::new);
+        assertTrue(live.summary.completed(), live.summary.reason());
+        List<java.net.ServerSocket> held = new ArrayList<>(); // (the defaults held here, or by whatever holds them)
+        for (int p : new int[] {robosim.protocol.Protocol.DEFAULT_VIEWER_PORT, robosim.protocol.Protocol.DEFAULT_CONTROL_PORT}) {
+            try {
+                held.add(new java.net.ServerSocket(p, 1, java.net.InetAddress.getLoopbackAddress()));
+            } catch (java.net.BindException taken) {
+                // held by another process of this machine: taken all the same
+            }
+        }
+        List<String> command = new ArrayList<>(ProcessLines.java(List.of(), "robosim.environment.replay.ReplayMain",
+                file.toString(), "--speed", "100", "--exit-at-end"));
+        try (ProcessLines replay = new ProcessLines("replay", new ProcessBuilder(command))) {
+            int viewers = port(replay, "viewers");
+            assertTrue(viewers != robosim.protocol.Protocol.DEFAULT_VIEWER_PORT, "a free port: " + viewers);
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", viewers, new ViewerHello(true, 0, null),
+                    LONG_S * 1000, null);
+            viewer.start(new ViewerStream());
+            viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);
+            assertEquals(0, replay.exit(LONG_S), replay.output());
+            assertTrue(replay.output().contains("replay: the viewer port 3000 is taken; viewers connect to " + viewers
+                    + " (--viewer-port to choose)"), replay.output());
+            assertTrue(replay.output().contains("replay: the control port 8100 is taken; the control port is "),
+                    replay.output());
+        } finally {
+            for (java.net.ServerSocket s : held) {
+                s.close();
+            }
+        }
+    }
+
     private static JsonNode ok(JsonNode reply) {
         assertTrue(reply.path("ok").asBoolean(), reply.toString());
         return reply;

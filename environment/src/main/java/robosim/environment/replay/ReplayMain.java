@@ -43,6 +43,9 @@ public final class ReplayMain implements Callable<Integer> {
     @Mixin
     ServerOptions server;
 
+    @picocli.CommandLine.Spec
+    picocli.CommandLine.Model.CommandSpec spec;
+
     @Option(names = "--speed", defaultValue = "1", description = "Times real time, from " + ReplayClock.MIN_SPEED
             + " to " + ReplayClock.MAX_SPEED + " (default: ${DEFAULT-VALUE}: the run's time step per step).")
     double speed;
@@ -89,11 +92,32 @@ public final class ReplayMain implements Callable<Integer> {
         ControlServer control = null;
         WebViewerServer web = null;
         try {
-            port.bind(Port.VIEWER, server.viewerPort(), server.maxConnections(),
-                    (s, n) -> new ViewerClientWorker(context, s, "replay-viewer[" + n + "]", clock));
+            try {
+                port.bind(Port.VIEWER, server.viewerPort(), server.maxConnections(),
+                        (s, n) -> new ViewerClientWorker(context, s, "replay-viewer[" + n + "]", clock));
+            } catch (BindException e) {
+                if (given("--viewer-port")) {
+                    throw e;
+                }
+                port = new Acceptors(context, bindAddress, 256); // (the default taken, by a live run: a free one)
+                port.bind(Port.VIEWER, 0, server.maxConnections(),
+                        (s, n) -> new ViewerClientWorker(context, s, "replay-viewer[" + n + "]", clock));
+                System.err.println("replay: the viewer port " + server.viewerPort() + " is taken; viewers connect to "
+                        + port.port(Port.VIEWER) + " (--viewer-port to choose)");
+            }
             if (server.controlPort() >= 0) {
                 control = new ControlServer(new ReplayCommands(clock, file), keys, server.handshakeTimeoutMs());
-                control.start(bindAddress, server.controlPort());
+                try {
+                    control.start(bindAddress, server.controlPort());
+                } catch (BindException e) {
+                    if (given("--control-port")) {
+                        throw e;
+                    }
+                    control = new ControlServer(new ReplayCommands(clock, file), keys, server.handshakeTimeoutMs());
+                    control.start(bindAddress, 0);
+                    System.err.println("replay: the control port " + server.controlPort() + " is taken; the control "
+                            + "port is " + control.port() + " (--control-port to choose)");
+                }
             }
             if (server.webPort() >= 0) {
                 web = WebViewers.start(server.webPort(), bindAddress, port.port(Port.VIEWER), keys,
@@ -174,5 +198,10 @@ public final class ReplayMain implements Callable<Integer> {
 
     public static void main(String[] args) {
         CommandLines.exit("replay", new ReplayMain(), args);
+    }
+
+    /** Whether the command line gave {@code option} (a port given is kept, taken or not; a default gives way). */
+    private boolean given(String option) {
+        return spec.commandLine().getParseResult().hasMatchedOption(option);
     }
 }
