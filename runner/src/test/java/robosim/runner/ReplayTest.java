@@ -176,7 +176,7 @@ class ReplayTest {
         try (ProcessLines replay = new ProcessLines("replay", new ProcessBuilder(command))) {
             int viewers = port(replay, "viewers");
             assertTrue(viewers != robosim.protocol.Protocol.DEFAULT_VIEWER_PORT, "a free port: " + viewers);
-            ViewerClient viewer = ViewerClient.connect("127.0.0.1", viewers, new ViewerHello(true, 0, null),
+            ViewerClient viewer = ViewerClient.connect("127.0.0.1", viewers, new ViewerHello(true, 0, ""),
                     LONG_S * 1000, null);
             viewer.start(new ViewerStream());
             viewer.awaitEnd(LONG_S, TimeUnit.SECONDS);

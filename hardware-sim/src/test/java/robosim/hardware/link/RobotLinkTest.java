@@ -183,6 +183,16 @@ class RobotLinkTest {
             assertTrue(error(link.exchange("GET / HTTP/1.1\r\n".getBytes(StandardCharsets.US_ASCII)))
                     .startsWith("a hello is a map"));
         }
+        for (byte[] raw : List.of("GET / HTTP/1.1\r\nHost: x\r\n\r\n".getBytes(StandardCharsets.US_ASCII),
+                new byte[] {(byte) 0x80, 0, 0, 0}, new byte[] {0, 0, 0, 0})) { // (no frame: HTTP, 2^31, 0 bytes)
+            try (Served link = Served.of(new KnownRobot())) {
+                link.client().getOutputStream().write(raw);
+                byte[] answer = LinkFrames.read(new DataInputStream(new BufferedInputStream(
+                        link.client().getInputStream(), 1)));
+                assertTrue(error(answer).startsWith("not a robot link's hello frame: a frame of "), error(answer));
+                assertInstanceOf(ProtocolException.class, link.awaitEnd());
+            }
+        }
         try (Served link = Served.of(new KnownRobot())) {
             MessageBufferPacker p = MessagePack.newDefaultBufferPacker();
             p.packMapHeader(2).packString("link").packString(RobotLink.NAME).packString("robot").packInt(7);
@@ -255,8 +265,8 @@ class RobotLinkTest {
             new DataOutputStream(link.client().getOutputStream()).writeInt(LinkFrames.MAX_BYTES + 1);
             Throwable end = link.awaitEnd();
             assertInstanceOf(ProtocolException.class, end);
-            assertEquals("a frame of " + (LinkFrames.MAX_BYTES + 1) + " bytes (1 to " + LinkFrames.MAX_BYTES + ")",
-                    end.getMessage());
+            assertEquals("not a robot link's hello frame: a frame of " + (LinkFrames.MAX_BYTES + 1) + " bytes (1 to "
+                    + LinkFrames.MAX_BYTES + ")", end.getMessage());
         }
     }
 

@@ -71,7 +71,11 @@ public final class LinkHello {
             if (Thread.currentThread().isInterrupted()) {
                 throw e;
             }
-            throw new HelloRefused(e.getMessage());
+            // a frame that is none (a length of 0 or over the bound, an HTTP request, a connection ended inside it):
+            // answered why where the connection still takes a frame; a late hello's was closed by its deadline
+            throw socket.isClosed() ? new HelloRefused(e.getMessage())
+                    : new LinkHello(out, new HashMap<>()).refuse("not a " + link.called() + "'s hello frame: "
+                            + e.getMessage());
         } // (any other IOException: this thread was interrupted, as above)
         if (frame == null) {
             throw new HelloRefused("the " + link.peer() + " closed the link before its hello");
