@@ -14,13 +14,16 @@ import robosim.api.RobotControl;
 /**
  * Control code in another process, attached by hand over the robot link ({@link RobotLink}): the robot listens on
  * loopback, on its parameter {@code link_port} (0 or none: a port the system picks, said in the log), for one
- * controller, and serves it until it says bye (the control code returned), reports a failure (it threw) or the
+ * controller (a connection whose hello is refused, a stranger's, is answered why and logged, and the port listens
+ * on), and serves it until it says bye (the control code returned), reports a failure (it threw) or the
  * simulation ends. An environment file names it as a robot's control class,
  * {@code control="robosim.hardware.link.LinkedControl"}; the controller, started by hand (in a debugger, say), connects
  * within the run's step timeout (the simulation waits for the robot's first call until then).
  */
 public final class LinkedControl implements RobotControl {
     private static final Logger LOG = LoggerFactory.getLogger(LinkedControl.class);
+    /** Refused connections logged, at most (strangers on this machine may try many). */
+    static final int MAX_LOGGED_REFUSALS = 8;
     private final ServerSocketChannel given;
 
     /** Listens on the robot's parameter {@code link_port}. */
@@ -39,8 +42,21 @@ public final class LinkedControl implements RobotControl {
             InetSocketAddress at = (InetSocketAddress) server.getLocalAddress();
             LOG.info("{}: waiting for its controller on {}:{} (the robot link)", robot.name(),
                     at.getAddress().getHostAddress(), at.getPort());
-            SocketChannel controller = server.accept(); // (an interrupt, the simulation's end, closes it and ends this)
-            RobotLink.serve(controller.socket(), robot);
+            int refused = 0;
+            while (true) {
+                SocketChannel controller = server.accept(); // (an interrupt, the simulation's end, closes it: the end)
+                try {
+                    RobotLink.serve(controller.socket(), robot);
+                    return;
+                } catch (robosim.protocol.link.LinkHello.HelloRefused e) { // (a stranger: answered why, and the
+                    // port goes on listening for the controller)
+                    if (++refused <= MAX_LOGGED_REFUSALS) {
+                        LOG.warn("{}: a connection to its link port refused: {}; it waits for its controller{}",
+                                robot.name(), e.getMessage(), refused == MAX_LOGGED_REFUSALS
+                                        ? " (further refusals are not logged)" : "");
+                    }
+                }
+            }
         } catch (IOException e) { // (a ClosedByInterruptException among them: the simulation's end)
             if (Thread.currentThread().isInterrupted() || e instanceof ClosedByInterruptException) {
                 throw new InterruptedException("the simulation is over");

@@ -260,6 +260,40 @@ class RobotLinkTest {
     }
 
     @Test
+    void aLinkedRobotsPortRefusesStrangersAndWaitsOnForItsController() throws Exception {
+        java.nio.channels.ServerSocketChannel listening = java.nio.channels.ServerSocketChannel.open();
+        listening.bind(new java.net.InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
+        int port = ((java.net.InetSocketAddress) listening.getLocalAddress()).getPort();
+        KnownRobot robot = new KnownRobot();
+        CompletableFuture<Throwable> end = new CompletableFuture<>();
+        Thread control = new Thread(() -> {
+            try {
+                new LinkedControl(listening).run(robot);
+                end.complete(null);
+            } catch (Throwable e) {
+                end.complete(e);
+            }
+        }, "linked-control-under-test");
+        control.setDaemon(true);
+        control.start();
+        try (Socket stranger = new Socket(InetAddress.getLoopbackAddress(), port)) {
+            stranger.getOutputStream().write("GET / HTTP/1.1\r\n\r\n".getBytes(StandardCharsets.US_ASCII));
+            byte[] answer = LinkFrames.read(new DataInputStream(new BufferedInputStream(stranger.getInputStream(), 1)));
+            assertTrue(error(answer).startsWith("not a robot link's hello frame"), error(answer));
+        }
+        try (Socket controller = new Socket(InetAddress.getLoopbackAddress(), port)) {
+            DataInputStream in = new DataInputStream(new BufferedInputStream(controller.getInputStream(), 1));
+            LinkFrames.write(new DataOutputStream(controller.getOutputStream()), hello(RobotLink.NAME, 1, "r1"));
+            assertTrue(MessagePack.newDefaultUnpacker(LinkFrames.read(in)).unpackValue().toJson()
+                    .contains("\"robot\":\"r1\""), "the controller welcomed after the stranger");
+            MessageBufferPacker bye = MessagePack.newDefaultBufferPacker();
+            bye.packArrayHeader(1).packString("bye");
+            LinkFrames.write(new DataOutputStream(controller.getOutputStream()), bye.toByteArray());
+            assertEquals(null, end.get(WAIT_S, TimeUnit.SECONDS), "its control code returned at the bye");
+        }
+    }
+
+    @Test
     void aFrameOverTheLimitIsRefusedBeforeItIsRead() throws Exception {
         try (Served link = Served.of(new KnownRobot())) {
             new DataOutputStream(link.client().getOutputStream()).writeInt(LinkFrames.MAX_BYTES + 1);
