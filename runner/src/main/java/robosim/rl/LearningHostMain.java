@@ -5,7 +5,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.net.SocketTimeoutException;
 import java.util.List;
 import java.util.Locale;
 import java.util.concurrent.Callable;
@@ -28,6 +27,7 @@ import robosim.environment.server.ServerContext;
 import robosim.environment.server.ViewerClientWorker;
 import robosim.environment.server.WebPortOption;
 import robosim.environment.ParamOption;
+import robosim.protocol.link.FirstHello;
 import robosim.protocol.link.LinkFrames;
 import robosim.protocol.ObjectConnection;
 import robosim.protocol.Printable;
@@ -52,6 +52,8 @@ public final class LearningHostMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(LearningHostMain.class);
     /** Refused hellos logged, at most (strangers on this machine may try many). */
     static final int MAX_LOGGED_REFUSALS = 8;
+    /** Connections whose hellos are awaited at once (strangers beyond are closed at once). */
+    static final int MAX_PENDING = 16;
     /** The most worlds a batch holds. */
     static final int MAX_WORLDS = 1024;
 
@@ -139,7 +141,7 @@ public final class LearningHostMain implements Callable<Integer> {
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
                 randomHeadings, areaCell.metres(), shares, metric, sensors, actuators, loopMetrics));
                 ServerSocket server = new ServerSocket()) {
-            server.bind(new InetSocketAddress(loopback, port), 1);
+            server.bind(new InetSocketAddress(loopback, port), MAX_PENDING);
             WatchedWorld watch = viewerPort >= 0 || web.port() >= 0 ? new WatchedWorld(batch) : null;
             Acceptors viewers = null;
             WebViewerServer browsers = null;
@@ -187,49 +189,39 @@ public final class LearningHostMain implements Callable<Integer> {
 
     private int serve(ServerSocket server, BatchWorlds batch, WatchedWorld watch) throws IOException {
         String key = System.getenv("ROBOSIM_LINK_KEY");
-        long deadline = System.nanoTime() + acceptTimeoutS * 1_000_000_000L;
-        int refused = 0;
-        while (true) {
-            long left = (deadline - System.nanoTime()) / 1_000_000;
-            if (left <= 0) {
-                System.err.println("learning-host: no learner said hello within " + acceptTimeoutS + " s");
-                return 3;
-            }
-            server.setSoTimeout((int) Math.min(Integer.MAX_VALUE, left));
-            Socket socket;
-            try {
-                socket = server.accept();
-            } catch (SocketTimeoutException e) {
-                continue;
-            }
-            try (socket) {
-                socket.setTcpNoDelay(true);
-                BatchLink link = new BatchLink(socket, batch, watch);
-                try {
+        int[] refused = {0};
+        FirstHello.Welcomed<BatchLink> learner = FirstHello.await(server, acceptTimeoutS * 1000L, MAX_PENDING,
+                socket -> {
+                    socket.setTcpNoDelay(true);
+                    BatchLink link = new BatchLink(socket, batch, watch);
                     link.welcome(key);
-                } catch (ProtocolException e) { // (a stranger: refused; the learner awaited until the deadline)
-                    if (++refused <= MAX_LOGGED_REFUSALS) {
-                        LOG.warn("a hello from {} refused: {}{}", socket.getInetAddress().getHostAddress(),
-                                e.getMessage(),
-                                refused == MAX_LOGGED_REFUSALS ? " (further refusals are not logged)" : "");
+                    return link;
+                }, why -> {
+                    synchronized (refused) {
+                        if (++refused[0] <= MAX_LOGGED_REFUSALS) {
+                            LOG.warn("{}{}", why, refused[0] == MAX_LOGGED_REFUSALS
+                                    ? " (further refusals are not logged)" : "");
+                        }
                     }
-                    continue;
-                }
-                long start = System.nanoTime();
-                long steps;
-                try {
-                    steps = link.serve();
-                } catch (IOException e) {
-                    System.err.println("learning-host: the learning link failed: "
-                            + Printable.of(e.getMessage(), 1000));
-                    return 1;
-                }
-                double seconds = (System.nanoTime() - start) / 1e9;
-                LOG.info(String.format(Locale.ROOT, "served %d steps of %d worlds x %d robots (%d robot-steps, x%d "
-                        + "time steps an action) in %.1f s", steps, batch.count(), batch.robots(),
-                        steps * batch.count() * batch.robots(), batch.repeat(), seconds));
-                return 0;
+                });
+        if (learner == null) {
+            System.err.println("learning-host: no learner said hello within " + acceptTimeoutS + " s");
+            return 3;
+        }
+        try (Socket socket = learner.socket()) {
+            long start = System.nanoTime();
+            long steps;
+            try {
+                steps = learner.link().serve();
+            } catch (IOException e) {
+                System.err.println("learning-host: the learning link failed: " + Printable.of(e.getMessage(), 1000));
+                return 1;
             }
+            double seconds = (System.nanoTime() - start) / 1e9;
+            LOG.info(String.format(Locale.ROOT, "served %d steps of %d worlds x %d robots (%d robot-steps, x%d "
+                    + "time steps an action) in %.1f s", steps, batch.count(), batch.robots(),
+                    steps * batch.count() * batch.robots(), batch.repeat(), seconds));
+            return 0;
         }
     }
 

@@ -5,7 +5,6 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
-import java.net.SocketTimeoutException;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
@@ -13,7 +12,7 @@ import picocli.CommandLine.Command;
 import picocli.CommandLine.Option;
 import robosim.protocol.CommandLines;
 import robosim.protocol.Printable;
-import robosim.protocol.ProtocolException;
+import robosim.protocol.link.FirstHello;
 
 /**
  * {@code scripts/simulation-host.sh}: the testkit's simulations ({@link robosim.testkit.Simulation}) served to one
@@ -29,6 +28,8 @@ public final class SimulationHostMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(SimulationHostMain.class);
     /** Refused hellos logged, at most (strangers on this machine may try many). */
     static final int MAX_LOGGED_REFUSALS = 8;
+    /** Connections whose hellos are awaited at once (strangers beyond are closed at once). */
+    static final int MAX_PENDING = 16;
 
     @Option(names = "--port", defaultValue = "0", description = "The simulation link's port on loopback "
             + "(default: ${DEFAULT-VALUE}: one the system picks, printed).")
@@ -51,7 +52,7 @@ public final class SimulationHostMain implements Callable<Integer> {
         }
         InetAddress loopback = InetAddress.getLoopbackAddress();
         try (ServerSocket server = new ServerSocket()) {
-            server.bind(new InetSocketAddress(loopback, port), 1);
+            server.bind(new InetSocketAddress(loopback, port), MAX_PENDING);
             System.out.println(SimulationLink.NAME + " listening on " + loopback.getHostAddress() + ":"
                     + server.getLocalPort());
             System.out.flush();
@@ -64,44 +65,32 @@ public final class SimulationHostMain implements Callable<Integer> {
 
     private int serve(ServerSocket server) throws IOException {
         String key = System.getenv("ROBOSIM_LINK_KEY");
-        long deadline = System.nanoTime() + acceptTimeoutS * 1_000_000_000L;
-        int refused = 0;
-        while (true) {
-            long left = (deadline - System.nanoTime()) / 1_000_000;
-            if (left <= 0) {
-                System.err.println("simulation-host: no tester said hello within " + acceptTimeoutS + " s");
-                return 3;
-            }
-            server.setSoTimeout((int) Math.min(Integer.MAX_VALUE, left));
-            Socket socket;
-            try {
-                socket = server.accept();
-            } catch (SocketTimeoutException e) {
-                continue;
-            }
-            try (socket) {
-                socket.setTcpNoDelay(true);
-                SimulationLink link = new SimulationLink(socket);
-                try {
+        int[] refused = {0};
+        FirstHello.Welcomed<SimulationLink> tester = FirstHello.await(server, acceptTimeoutS * 1000L, MAX_PENDING,
+                socket -> {
+                    socket.setTcpNoDelay(true);
+                    SimulationLink link = new SimulationLink(socket);
                     link.welcome(key);
-                } catch (ProtocolException e) { // (a stranger: refused; the tester awaited until the deadline)
-                    if (++refused <= MAX_LOGGED_REFUSALS) {
-                        LOG.warn("a hello from {} refused: {}{}", socket.getInetAddress().getHostAddress(),
-                                e.getMessage(),
-                                refused == MAX_LOGGED_REFUSALS ? " (further refusals are not logged)" : "");
+                    return link;
+                }, why -> {
+                    synchronized (refused) {
+                        if (++refused[0] <= MAX_LOGGED_REFUSALS) {
+                            LOG.warn("{}{}", why, refused[0] == MAX_LOGGED_REFUSALS
+                                    ? " (further refusals are not logged)" : "");
+                        }
                     }
-                    continue;
-                }
-                try {
-                    long requests = link.serve();
-                    LOG.info("served {} requests; the tester has gone", requests);
-                    return 0;
-                } catch (IOException e) {
-                    System.err.println("simulation-host: the simulation link failed: "
-                            + Printable.of(e.getMessage(), 1000));
-                    return 1;
-                }
-            }
+                });
+        if (tester == null) {
+            System.err.println("simulation-host: no tester said hello within " + acceptTimeoutS + " s");
+            return 3;
+        }
+        try (Socket socket = tester.socket()) {
+            long requests = tester.link().serve();
+            LOG.info("served {} requests; the tester has gone", requests);
+            return 0;
+        } catch (IOException e) {
+            System.err.println("simulation-host: the simulation link failed: " + Printable.of(e.getMessage(), 1000));
+            return 1;
         }
     }
 
