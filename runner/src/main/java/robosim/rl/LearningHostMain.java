@@ -2,7 +2,6 @@ package robosim.rl;
 
 import java.io.IOException;
 import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.List;
@@ -50,10 +49,6 @@ import robosim.web.WebViewerServer;
                 + "learning link on loopback: one exchange a step for every robot of every world.")
 public final class LearningHostMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(LearningHostMain.class);
-    /** Refused hellos logged, at most (strangers on this machine may try many). */
-    static final int MAX_LOGGED_REFUSALS = 8;
-    /** Connections whose hellos are awaited at once (strangers beyond are closed at once). */
-    static final int MAX_PENDING = 16;
     /** The most worlds a batch holds. */
     static final int MAX_WORLDS = 1024;
 
@@ -105,14 +100,8 @@ public final class LearningHostMain implements Callable<Integer> {
             + "spins a little between steps) (default: the cores).")
     Integer threads;
 
-    @Option(names = "--port", defaultValue = "0", description = "The learning link's port on loopback "
-            + "(default: ${DEFAULT-VALUE}: one the system picks, printed).")
-    int port;
-
-    @Option(names = "--accept-timeout-s", defaultValue = "60", description = "Exit 3 if no learner has said hello "
-            + "within this long; hellos refused meanwhile (another key, another link) are logged (default: "
-            + "${DEFAULT-VALUE}).")
-    int acceptTimeoutS;
+    @Mixin
+    robosim.runner.LinkHostOptions host;
 
     @Option(names = "--viewer-port", defaultValue = "-1", description = "Serve world 0 to viewers (viewer2d.sh, "
             + "pose-log.sh) on this loopback port (default: ${DEFAULT-VALUE}: none; 0: one the system picks).")
@@ -140,8 +129,7 @@ public final class LearningHostMain implements Callable<Integer> {
         MetricChoice metric = episodeMetric == null ? null : MetricChoice.parse(episodeMetric);
         try (BatchWorlds batch = new BatchWorlds(spec, worlds, new BatchWorlds.Settings(repeat, messageSize,
                 randomHeadings, areaCell.metres(), shares, metric, sensors, actuators, loopMetrics));
-                ServerSocket server = new ServerSocket()) {
-            server.bind(new InetSocketAddress(loopback, port), MAX_PENDING);
+                ServerSocket server = host.listen()) {
             WatchedWorld watch = viewerPort >= 0 || web.port() >= 0 ? new WatchedWorld(batch) : null;
             Acceptors viewers = null;
             WebViewerServer browsers = null;
@@ -189,23 +177,14 @@ public final class LearningHostMain implements Callable<Integer> {
 
     private int serve(ServerSocket server, BatchWorlds batch, WatchedWorld watch) throws IOException {
         String key = System.getenv("ROBOSIM_LINK_KEY");
-        int[] refused = {0};
-        FirstHello.Welcomed<BatchLink> learner = FirstHello.await(server, acceptTimeoutS * 1000L, MAX_PENDING,
-                socket -> {
-                    socket.setTcpNoDelay(true);
-                    BatchLink link = new BatchLink(socket, batch, watch);
-                    link.welcome(key);
-                    return link;
-                }, why -> {
-                    synchronized (refused) {
-                        if (++refused[0] <= MAX_LOGGED_REFUSALS) {
-                            LOG.warn("{}{}", why, refused[0] == MAX_LOGGED_REFUSALS
-                                    ? " (further refusals are not logged)" : "");
-                        }
-                    }
-                });
+        FirstHello.Welcomed<BatchLink> learner = host.awaitPeer(server, socket -> {
+            socket.setTcpNoDelay(true);
+            BatchLink link = new BatchLink(socket, batch, watch);
+            link.welcome(key);
+            return link;
+        }, LOG);
         if (learner == null) {
-            System.err.println("learning-host: no learner said hello within " + acceptTimeoutS + " s");
+            System.err.println("learning-host: no learner said hello within " + host.acceptTimeoutS() + " s");
             return 3;
         }
         try (Socket socket = learner.socket()) {
@@ -257,11 +236,11 @@ public final class LearningHostMain implements Callable<Integer> {
         if (web.problem(null) != null) {
             return web.problem(null);
         }
-        for (String[] p : List.of(new String[] {"--port", "" + port}, new String[] {"--viewer-port", "" + viewerPort})) {
-            int v = Integer.parseInt(p[1]);
-            if (v < (p[0].equals("--port") ? 0 : -1) || v > 65535) {
-                return p[0] + " must be " + (p[0].equals("--port") ? "0" : "-1") + " to 65535, got " + v;
-            }
+        if (viewerPort < -1 || viewerPort > 65535) {
+            return "--viewer-port must be -1 to 65535, got " + viewerPort;
+        }
+        if (host.problem() != null) {
+            return host.problem();
         }
         if (episodeMetric != null) {
             MetricChoice metric = MetricChoice.parse(episodeMetric);
@@ -270,9 +249,6 @@ public final class LearningHostMain implements Callable<Integer> {
             if (wrong != null) {
                 return "--episode-metric " + Printable.of(episodeMetric, 200) + ": " + wrong;
             }
-        }
-        if (acceptTimeoutS < 1) {
-            return "--accept-timeout-s must be >= 1, got " + acceptTimeoutS;
         }
         if (spec.robots().isEmpty()) {
             return env.file() + ": no robots: a learning environment's agents are the file's robots";

@@ -1,15 +1,13 @@
 package robosim.testhost;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
 import java.util.concurrent.Callable;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import picocli.CommandLine.Command;
-import picocli.CommandLine.Option;
+import picocli.CommandLine.Mixin;
 import robosim.protocol.CommandLines;
 import robosim.protocol.Printable;
 import robosim.protocol.link.FirstHello;
@@ -26,70 +24,41 @@ import robosim.protocol.link.FirstHello;
                 + "(Python's robosim.testing) over the simulation link on loopback.")
 public final class SimulationHostMain implements Callable<Integer> {
     private static final Logger LOG = LoggerFactory.getLogger(SimulationHostMain.class);
-    /** Refused hellos logged, at most (strangers on this machine may try many). */
-    static final int MAX_LOGGED_REFUSALS = 8;
-    /** Connections whose hellos are awaited at once (strangers beyond are closed at once). */
-    static final int MAX_PENDING = 16;
 
-    @Option(names = "--port", defaultValue = "0", description = "The simulation link's port on loopback "
-            + "(default: ${DEFAULT-VALUE}: one the system picks, printed).")
-    int port;
-
-    @Option(names = "--accept-timeout-s", defaultValue = "60", description = "Exit 3 if no tester has said hello "
-            + "within this long; hellos refused meanwhile (another key, another link) are logged (default: "
-            + "${DEFAULT-VALUE}).")
-    int acceptTimeoutS;
+    @Mixin
+    robosim.runner.LinkHostOptions host;
 
     @Override
     public Integer call() {
-        if (port < 0 || port > 65535) {
-            System.err.println("simulation-host: --port must be 0 to 65535, got " + port);
+        if (host.problem() != null) {
+            System.err.println("simulation-host: " + host.problem());
             return 2;
         }
-        if (acceptTimeoutS < 1) {
-            System.err.println("simulation-host: --accept-timeout-s must be >= 1, got " + acceptTimeoutS);
-            return 2;
-        }
-        InetAddress loopback = InetAddress.getLoopbackAddress();
-        try (ServerSocket server = new ServerSocket()) {
-            server.bind(new InetSocketAddress(loopback, port), MAX_PENDING);
-            System.out.println(SimulationLink.NAME + " listening on " + loopback.getHostAddress() + ":"
+        try (ServerSocket server = host.listen()) {
+            System.out.println(SimulationLink.NAME + " listening on " + server.getInetAddress().getHostAddress() + ":"
                     + server.getLocalPort());
             System.out.flush();
-            return serve(server);
+            String key = System.getenv("ROBOSIM_LINK_KEY");
+            FirstHello.Welcomed<SimulationLink> tester = host.awaitPeer(server, socket -> {
+                socket.setTcpNoDelay(true);
+                SimulationLink link = new SimulationLink(socket);
+                link.welcome(key);
+                return link;
+            }, LOG);
+            if (tester == null) {
+                System.err.println("simulation-host: no tester said hello within " + host.acceptTimeoutS() + " s");
+                return 3;
+            }
+            try (Socket socket = tester.socket()) {
+                long requests = tester.link().serve();
+                LOG.info("served {} requests; the tester has gone", requests);
+                return 0;
+            } catch (IOException e) {
+                System.err.println("simulation-host: the simulation link failed: " + Printable.of(e.getMessage(), 1000));
+                return 1;
+            }
         } catch (IOException e) {
             System.err.println("simulation-host: " + Printable.of(String.valueOf(e.getMessage()), 1000));
-            return 1;
-        }
-    }
-
-    private int serve(ServerSocket server) throws IOException {
-        String key = System.getenv("ROBOSIM_LINK_KEY");
-        int[] refused = {0};
-        FirstHello.Welcomed<SimulationLink> tester = FirstHello.await(server, acceptTimeoutS * 1000L, MAX_PENDING,
-                socket -> {
-                    socket.setTcpNoDelay(true);
-                    SimulationLink link = new SimulationLink(socket);
-                    link.welcome(key);
-                    return link;
-                }, why -> {
-                    synchronized (refused) {
-                        if (++refused[0] <= MAX_LOGGED_REFUSALS) {
-                            LOG.warn("{}{}", why, refused[0] == MAX_LOGGED_REFUSALS
-                                    ? " (further refusals are not logged)" : "");
-                        }
-                    }
-                });
-        if (tester == null) {
-            System.err.println("simulation-host: no tester said hello within " + acceptTimeoutS + " s");
-            return 3;
-        }
-        try (Socket socket = tester.socket()) {
-            long requests = tester.link().serve();
-            LOG.info("served {} requests; the tester has gone", requests);
-            return 0;
-        } catch (IOException e) {
-            System.err.println("simulation-host: the simulation link failed: " + Printable.of(e.getMessage(), 1000));
             return 1;
         }
     }

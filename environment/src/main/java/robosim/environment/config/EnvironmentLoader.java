@@ -62,6 +62,17 @@ public final class EnvironmentLoader {
         return load(file, Map.of());
     }
 
+    /** The text of {@code file} (shown as {@code where}), read whole (at most {@link #MAX_FILE_BYTES}). */
+    private static String text(Path file, String where) throws EnvironmentFileException {
+        try {
+            return new String(read(file, where), StandardCharsets.UTF_8);
+        } catch (NoSuchFileException e) {
+            throw new EnvironmentFileException(where + ": file not found");
+        } catch (IOException e) {
+            throw new EnvironmentFileException(where + ": cannot read: " + e.getMessage());
+        }
+    }
+
     /**
      * The names {@code --param} may give {@code file}: its placeholders' ({@code ${NAME:default}}) and its world's
      * {@code <param>}s, sorted.
@@ -70,14 +81,7 @@ public final class EnvironmentLoader {
      */
     public java.util.SortedSet<String> parameterNames(Path file) throws EnvironmentFileException {
         String where = file.toString();
-        String text;
-        try {
-            text = new String(read(file, where), StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new EnvironmentFileException(where + ": file not found");
-        } catch (IOException e) {
-            throw new EnvironmentFileException(where + ": cannot read: " + e.getMessage());
-        }
+        String text = text(file, where);
         FileFaults faults = new FileFaults(where);
         Placeholders.Replaced replaced = Placeholders.replace(faults, text, Map.of());
         faults.throwIfAny();
@@ -105,14 +109,7 @@ public final class EnvironmentLoader {
                         + Limits.MAX_PARAMETER_BYTES + " bytes");
             }
         }
-        String text;
-        try {
-            text = new String(read(file, where), StandardCharsets.UTF_8);
-        } catch (NoSuchFileException e) {
-            throw new EnvironmentFileException(where + ": file not found");
-        } catch (IOException e) {
-            throw new EnvironmentFileException(where + ": cannot read: " + e.getMessage());
-        }
+        String text = text(file, where);
         FileFaults faults = new FileFaults(where);
         Placeholders.Replaced replaced = Placeholders.replace(faults, text, given);
         faults.throwIfAny();
