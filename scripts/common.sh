@@ -106,7 +106,7 @@ robosim_abs() {
 robosim_log_level() {
   case ${1:-} in
     trace|debug|info|warn|error|off) ROBOSIM_LOG_LEVEL=$1 ;;
-    *) robosim_fail "--log-level needs one of trace, debug, info, warn, error, off, got '${1:-}'" ;;
+    *) robosim_fail "--log-level (or ROBOSIM_LOG_LEVEL) needs one of trace, debug, info, warn, error, off, got '${1:-}'" ;;
   esac
 }
 

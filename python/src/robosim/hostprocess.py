@@ -10,6 +10,7 @@ import re
 import secrets
 import socket
 import subprocess
+import sys
 import threading
 from pathlib import Path
 from typing import Any
@@ -94,9 +95,14 @@ class HostProcess:
         return Frames(self._sock)
 
     def _drain(self) -> None:
+        """Keeps the host's output for errors, and passes its warnings and errors on to this process's stderr (the
+        end of a simulation's parameter warnings among them: a test's output shows them)."""
         assert self.process.stdout is not None
         for line in self.process.stdout:
-            self._output.append(line.rstrip("\n"))
+            kept = line.rstrip("\n")
+            self._output.append(kept)
+            if " WARN " in kept or " ERROR " in kept:
+                print(f"{self.called}: {kept}", file=sys.stderr, flush=True)
 
     def said(self) -> str:
         """The host's last lines of output, for an error: ``": line | line"``, or nothing."""
@@ -117,6 +123,11 @@ class HostProcess:
         except OSError as e:
             self.stop()
             raise HostError(f"the {self.called}'s link broke ({e}){self.said()}") from e
+
+    @property
+    def stopped(self) -> bool:
+        """Whether the host has ended (stopped here, or exited on its own: its link is gone)."""
+        return self.process.poll() is not None
 
     def stop(self) -> None:
         """The link closed (the host, reading, sees its end) and the host waited for (killed after 10 s)."""

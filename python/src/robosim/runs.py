@@ -15,6 +15,7 @@ layout) as a sweep's warm worker runs it, so a notebook's hundredth run costs wh
 
 from __future__ import annotations
 
+import atexit
 import itertools
 import os
 import tempfile
@@ -25,6 +26,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from robosim.hostprocess import HostError
 from robosim.testing import SimulationHost, shared_host
 
 __all__ = ["RunResult", "run", "sweep"]
@@ -65,8 +67,10 @@ def _host(index: int, near: Path) -> SimulationHost:
     with _pool_lock:
         while len(_pool) < index:
             _pool.append(SimulationHost(near=near))
-        if _pool[index - 1]._closed:
+            atexit.register(_pool[-1].close)
+        if _pool[index - 1].closed:
             _pool[index - 1] = SimulationHost(near=near)
+            atexit.register(_pool[index - 1].close)
         return _pool[index - 1]
 
 
@@ -151,6 +155,9 @@ def sweep(world: str | os.PathLike[str], *, steps: int, seeds: Iterable[int] = r
         try:
             result = run(file, steps=steps, seed=seed, params=combination, layout=layout, pose_log=keep_pose_logs,
                          out=base / f"run-{index}", timeout_s=timeout_s, host=_host(slot, file.parent))
+        except HostError as e:  # (its JVM lost during the run: a failed row; the next run gets a new one)
+            log = base / f"run-{index}" / "run.log"
+            result = RunResult(1, {}, {}, f"the warm JVM was lost: {e}", base / f"run-{index}", log, None, None)
         finally:
             with free_lock:
                 free.append(slot)

@@ -109,12 +109,17 @@ class SimulationHost:
             self._host.stop()
             raise
 
+    @property
+    def closed(self) -> bool:
+        """Whether this host is closed, or has ended (its JVM gone: :func:`shared_host` then starts another)."""
+        return self._closed or self._host.stopped
+
     def call(self, *request: Any) -> list[Any]:
         """One request and its answer: ``["ok", VALUE]`` or ``["failed", FAILURES, STEPS]``; an ``error`` answer is a
         ValueError with the host's reason."""
         with self._lock:
-            if self._closed:
-                raise HostError("the simulation host is closed")
+            if self.closed:
+                raise HostError("the simulation host is closed" + self._host.said())
             self._host.send(self._frames, list(request))
             answer = self._host.receive(self._frames)
         if not isinstance(answer, list) or not answer or not isinstance(answer[0], str):
@@ -156,7 +161,7 @@ def shared_host(near: Path | None = None) -> SimulationHost:
     directory, or ``ROBOSIM_HOME``) and closed at the interpreter's exit: one JVM, warm, for every simulation."""
     global _shared
     with _shared_lock:
-        if _shared is None or _shared._closed:
+        if _shared is None or _shared.closed:
             _shared = SimulationHost(near=near)
             atexit.register(_shared.close)
         return _shared

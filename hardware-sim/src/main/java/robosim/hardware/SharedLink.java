@@ -177,6 +177,7 @@ final class SharedLink {
             for (HardwareSimulator sim : welcomed) {
                 sim.awaitControlCode(TimeUnit.NANOSECONDS.toMillis(deadline - System.nanoTime()));
             }
+            HardwareSimulator.warnOfParameters(welcomed);
         }
     }
 

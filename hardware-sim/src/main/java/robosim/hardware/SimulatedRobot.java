@@ -33,6 +33,8 @@ final class SimulatedRobot implements Robot {
     private final Map<String, String> parameters;
     /** The names its control code asked for ({@link #parameter}), for the warnings at the end ({@code ParameterUse}). */
     private final Set<String> asked = java.util.concurrent.ConcurrentHashMap.newKeySet();
+    /** The most names not given that are kept as asked. */
+    static final int MAX_ASKED = 256;
 
     /**
      * The robot {@code state} is of, its calls going through {@code link}; {@code worldSeed} and {@code parameters}
@@ -321,7 +323,9 @@ final class SimulatedRobot implements Robot {
 
     @Override
     public String parameter(String name, String defaultValue) {
-        asked.add(name);
+        if (asked.size() < MAX_ASKED || parameters.containsKey(name)) { // (a bound: names from a link are anyone's)
+            asked.add(name);
+        }
         return parameters.getOrDefault(name, defaultValue);
     }
 

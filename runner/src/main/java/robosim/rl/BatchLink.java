@@ -60,11 +60,12 @@ public final class BatchLink {
     private final BatchWorlds batch;
     private final WatchedWorld watch;
     private final MessageBufferPacker reply = MessagePack.newDefaultBufferPacker();
-    private final float[] actions;
-    private final byte[] actionBytes;
-    private final boolean[] reset;
-    private final long[] seeds;
-    private final double[][] limits;
+    // (a step's buffers, made once the hello is accepted: a stranger's connection costs none of them)
+    private float[] actions;
+    private byte[] actionBytes;
+    private boolean[] reset;
+    private long[] seeds;
+    private double[][] limits;
     private long stepsServed;
 
     BatchLink(Socket socket, BatchWorlds batch, WatchedWorld watch) throws IOException {
@@ -73,11 +74,6 @@ public final class BatchLink {
         this.out = new DataOutputStream(new BufferedOutputStream(socket.getOutputStream()));
         this.batch = batch;
         this.watch = watch;
-        this.actions = new float[batch.count() * batch.robots() * batch.actionFields()];
-        this.actionBytes = new byte[actions.length * 4];
-        this.reset = new boolean[batch.count()];
-        this.seeds = new long[batch.count()];
-        this.limits = batch.limits();
     }
 
     /** The largest reply of {@code batch}, bytes (its arrays and their names). */
@@ -94,6 +90,11 @@ public final class BatchLink {
      */
     void welcome(String key) throws IOException {
         LinkHello.read(HELLO, socket, in, out, key);
+        actions = new float[batch.count() * batch.robots() * batch.actionFields()];
+        actionBytes = new byte[actions.length * 4];
+        reset = new boolean[batch.count()];
+        seeds = new long[batch.count()];
+        limits = batch.limits();
         LinkFrames.write(out, welcomeFrame());
     }
 

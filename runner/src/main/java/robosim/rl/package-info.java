@@ -7,7 +7,10 @@
  * <table>
  * <caption>threads</caption>
  * <tr><th>thread</th><th>role</th></tr>
- * <tr><td>{@code main}</td><td>accepts the learner and serves its link: the owner of time</td></tr>
+ * <tr><td>{@code main}</td><td>accepts connections until one is the learner's, then serves its link: the owner of
+ * time</td></tr>
+ * <tr><td>{@code link-hello[n]}</td><td>daemons, one a connection while the learner is awaited
+ * (robosim.protocol.link.FirstHello, at most 16 at once): each reads its connection's hello and answers it</td></tr>
  * <tr><td>{@code rl-worlds[t]}</td><td>daemons, one fewer than the threads asked for (the cores, at most the
  * worlds; {@link robosim.rl.StepCrew}): each steps its share of the worlds while {@code main} steps its own, and
  * nothing else; between steps it spins for half a millisecond, then parks</td></tr>

@@ -16,8 +16,8 @@ import robosim.protocol.link.FirstHello;
  * {@code scripts/simulation-host.sh}: the testkit's simulations ({@link robosim.testkit.Simulation}) served to one
  * tester over the simulation link ({@link SimulationLink}) on loopback. Python's {@code robosim.testing} starts it
  * and reads where it listens from its first line; it serves one tester (the first whose hello carries
- * {@code ROBOSIM_LINK_KEY}, when that is set), one simulation after another or several at once, and exits when the
- * tester says bye or goes.
+ * {@code ROBOSIM_LINK_KEY}, which must be set: its tester runs worlds and writes files as this user), one simulation
+ * after another or several at once, and exits when the tester says bye or goes.
  */
 @Command(name = "simulation-host.sh", mixinStandardHelpOptions = true,
         description = "Serves simulations of the testkit (a world run in this JVM, stepped and asked) to one tester "
@@ -34,11 +34,16 @@ public final class SimulationHostMain implements Callable<Integer> {
             System.err.println("simulation-host: " + host.problem());
             return 2;
         }
+        String key = System.getenv("ROBOSIM_LINK_KEY");
+        if (key == null || key.isBlank()) { // (its peer runs worlds and writes files as this user: it must prove it)
+            System.err.println("simulation-host: needs ROBOSIM_LINK_KEY, the secret its tester's hello carries "
+                    + "(Python's robosim.testing gives it one); none is set");
+            return 2;
+        }
         try (ServerSocket server = host.listen()) {
             System.out.println(SimulationLink.NAME + " listening on " + server.getInetAddress().getHostAddress() + ":"
                     + server.getLocalPort());
             System.out.flush();
-            String key = System.getenv("ROBOSIM_LINK_KEY");
             FirstHello.Welcomed<SimulationLink> tester = host.awaitPeer(server, socket -> {
                 socket.setTcpNoDelay(true);
                 SimulationLink link = new SimulationLink(socket);

@@ -60,7 +60,9 @@ import robosim.testkit.Simulation;
  * </ul>
  * FAILURE is a map {@code {robot, step, summary, account}}: the account a Python controller's traceback, or a Java
  * stack trace. A request that is not one, a robot or simulation there is not, or a file that cannot be read, is
- * answered {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}) and the link goes on.
+ * answered {@code ["error", KIND, WHY]} (kinds {@code bad_call}, {@code value}; {@code failed}: the call failed
+ * inside, a run's log that cannot be written, a fault of RoboSim's), and the link goes on; so is an answer over
+ * the frame's bound.
  */
 final class SimulationLink {
     static final String NAME = "robosim-simulation-link";
@@ -84,6 +86,15 @@ final class SimulationLink {
 
     /** An open simulation, the robots whose control code may fail, and the robots whose failure was said. */
     private record Open(Simulation sim, Set<String> expected, Set<String> said) {
+    }
+
+    /** A headless run that could not be made (its log not writable): answered {@code ["error", "failed", why]}. */
+    private static final class HeadlessFailed extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        HeadlessFailed(IOException cause) {
+            super(cause);
+        }
     }
 
     /** A request the link cannot take: answered {@code ["error", kind, message]}. */
@@ -144,6 +155,16 @@ final class SimulationLink {
                     reply.clear();
                     reply.packArrayHeader(3).packString("error").packString("bad_call")
                             .packString("a request that is not one: " + LinkFrames.oneLine(e.getMessage()));
+                } catch (RuntimeException | HeadlessFailed e) { // (a fault of the call's, not of the link: it goes on)
+                    reply.clear();
+                    reply.packArrayHeader(3).packString("error").packString("failed")
+                            .packString(LinkFrames.oneLine(e.getCause() != null ? e.getCause().toString() : e.toString()));
+                }
+                if (reply.getBufferSize() > LinkFrames.MAX_BYTES) {
+                    reply.clear();
+                    reply.packArrayHeader(3).packString("error").packString("value").packString("the answer is over "
+                            + "the link's " + LinkFrames.MAX_BYTES + " bytes (ask for less: received and contacts "
+                            + "hold the whole run so far)");
                 }
                 LinkFrames.write(out, reply.toByteArray());
                 if (bye) {
@@ -159,7 +180,7 @@ final class SimulationLink {
     }
 
     /** Packs the answer to {@code request} into {@code reply}; true if it is the bye. */
-    private boolean answer(Value request, MessageBufferPacker reply) throws IOException {
+    private boolean answer(Value request, MessageBufferPacker reply) throws IOException, HeadlessFailed {
         if (!request.isArrayValue() || request.asArrayValue().size() == 0
                 || !request.asArrayValue().get(0).isStringValue()) {
             throw new BadCall("bad_call", "a request is an array [CALL, ARG...]");
@@ -319,7 +340,7 @@ final class SimulationLink {
      * it) and, for a run that failed, its reason. A run that left something running (threads, control code) is
      * {@code broke}: this host runs no more headless runs after it.
      */
-    private void headless(Value spec, MessageBufferPacker reply) throws IOException {
+    private void headless(Value spec, MessageBufferPacker reply) throws IOException, HeadlessFailed {
         if (broke != null) {
             throw new BadCall("value", "this host runs no more headless runs: " + broke);
         }
@@ -347,14 +368,17 @@ final class SimulationLink {
         Value rec = fields.get("recording");
         Path recording = rec == null || rec.isNilValue() ? null : Path.of(text(rec, "recording"));
         robosim.runner.HeadlessRuns.Ended ended;
+        robosim.runner.RunLog lines;
         try {
             ended = runs.run(runArgs, log);
+            broke = ended.broke();
+            lines = robosim.runner.RunLog.read(log);
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             throw new IOException("interrupted during a headless run", e);
+        } catch (IOException e) { // (the log could not be written or read: the call's failure, not the link's)
+            throw new HeadlessFailed(e);
         }
-        broke = ended.broke();
-        robosim.runner.RunLog lines = robosim.runner.RunLog.read(log);
         Map<String, Double> metrics = Map.of();
         String error = ended.broke() != null ? ended.broke() : ended.code() == 0 ? "" : lines.lastError();
         if (recording != null && java.nio.file.Files.exists(recording)) {

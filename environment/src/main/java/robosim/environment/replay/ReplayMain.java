@@ -99,9 +99,12 @@ public final class ReplayMain implements Callable<Integer> {
                 if (given("--viewer-port")) {
                     throw e;
                 }
-                port = new Acceptors(context, bindAddress, 256); // (the default taken, by a live run: a free one)
+                // the default taken (by a live run): a free one, with a context of its own (the failed bind stopped
+                // the first one's connection watch)
+                ServerContext fresh = server.context(keys, GUIDE);
+                port = new Acceptors(fresh, bindAddress, 256);
                 port.bind(Port.VIEWER, 0, server.maxConnections(),
-                        (s, n) -> new ViewerClientWorker(context, s, "replay-viewer[" + n + "]", clock));
+                        (s, n) -> new ViewerClientWorker(fresh, s, "replay-viewer[" + n + "]", clock));
                 System.err.println("replay: the viewer port " + server.viewerPort() + " is taken; viewers connect to "
                         + port.port(Port.VIEWER) + " (--viewer-port to choose)");
             }
