@@ -175,6 +175,10 @@ class BrowserViewerIT {
             long paused = stepOf(ok(control, "pause"));
             shows(wait, live, paused);
             assertTrue(trailPixels(page, live, paused) > 0, "the trails drawn so far");
+            ok(control, "speed 20"); // (not one of the list's own speeds: the page adds it, and shows it)
+            wait.until(p -> "20".equals(p.findElement(By.id("speed")).getDomProperty("value")));
+            wait.until(p -> p.findElement(By.id("at")).getText().equals(stepShown(p) + " / " + RECORDED_STEPS)
+                    && p.findElement(By.id("timeline")).getDomProperty("value").equals(Long.toString(stepShown(p))));
 
             long forward = seekForward(live, paused);
             ok(control, "seek " + forward);

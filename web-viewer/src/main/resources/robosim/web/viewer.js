@@ -61,7 +61,7 @@ function handle(m) {
     case 'update':
       poses = m; gone = new Set(m.departed); held = new Set(m.held || []);
       m.x.forEach((x, i) => { const t = trails[i]; if (t) { t.push(x, m.y[i]); if (t.length > 2 * TRAIL) t.splice(0, 2); } });
-      panel.poses(m); count(m.step); dirty = tableDirty = true; wake(); break;
+      panel.poses(m); count(m.step); showAt(m.step + 1); dirty = tableDirty = true; wake(); break;
     case 'traces': draw(m); dirty = true; wake(); break;
     case 'watchStarted': if (m.name === watched) panel.line(`-- watching ${m.name} from step ${m.step + 2}`); redraw(); break;
     case 'view': panel.show(m); redraw(); break;
@@ -97,10 +97,12 @@ function replied(m) {
   if (m.request === 'status' && m.ok) {
     const replay = m.replay === true;
     $('replay').classList.toggle('hidden', !replay);
+    if (replay) lastShown = m.last_step;
     if (replay && document.activeElement !== $('timeline')) {
-      $('timeline').min = m.first_step; $('timeline').max = m.last_step; $('timeline').value = m.step;
-      $('at').textContent = `${m.step} / ${m.last_step}`;
-      if (document.activeElement !== $('speed')) $('speed').value = String(m.speed);
+      $('timeline').min = m.first_step; $('timeline').max = m.last_step;
+      // the step the page shows: the status's (a second old) only until the page has an update of its own
+      showAt(poses ? poses.step + 1 : m.step);
+      if (document.activeElement !== $('speed')) showSpeed(m.speed);
     }
     if (!poses || m.state === 'PAUSED' || m.state === 'ENDED' || m.state === 'WAITING') $('state').textContent = m.state;
   } else if (m.request === 'watch' && !m.ok) {
@@ -108,6 +110,24 @@ function replied(m) {
   } else if (m.request !== 'status') {
     $('reply').textContent = m.request + ': ' + (m.ok ? (m.message || 'ok') : 'refused: ' + m.error);
   }
+}
+
+// a replay's timeline and its 'step / last' follow the steps shown (a status comes once a second)
+let lastShown = null;
+function showAt(step) {
+  if (lastShown === null || document.activeElement === $('timeline')) return;
+  $('timeline').value = step; $('at').textContent = `${step} / ${lastShown}`;
+}
+
+// the replay's speed in the list, added where it is not one of the list's own (--speed 20)
+function showSpeed(speed) {
+  const list = $('speed'), text = String(speed);
+  if (![...list.options].some((o) => o.value === text)) {
+    const option = document.createElement('option');
+    option.textContent = text;
+    list.insertBefore(option, [...list.options].find((o) => Number(o.value) > speed) || null);
+  }
+  list.value = text;
 }
 
 function buildTable() {
