@@ -114,6 +114,21 @@ class ScriptsIT {
         assertRobotDrove(run);
     }
 
+    /** --quiet: every process the script starts (the Environment, Geometry, the robots) logs warnings and errors only. */
+    @Test
+    void quietLeavesTheInfoLinesOutOfEveryProcess() throws Exception {
+        writeWorldAndControlClass();
+        ScriptRun run = ScriptRun.of(tmp, Map.of(), tmp, REPO.resolve("scripts/headless.sh").toString(),
+                "--env", "world.xml", "--steps", "20", "--pose-log", "poses.csv", "--classpath", "classes", "--quiet");
+        assertRobotDrove(run);
+        assertTrue(!run.stderr().contains(" INFO ") && !run.stdout().contains(" INFO "), run.stderr() + run.stdout());
+        ScriptRun loud = ScriptRun.of(tmp, Map.of(), tmp, REPO.resolve("scripts/headless.sh").toString(),
+                "--env", "world.xml", "--steps", "1", "--classpath", "classes", "--log-level", "loud");
+        assertEquals(2, loud.exit());
+        assertEquals("headless: --log-level (or ROBOSIM_LOG_LEVEL) needs one of trace, debug, info, warn, error, off, got "
+                + "'loud'", loud.stderr().strip());
+    }
+
     @Test
     void robosimClasspathReachesRobotsInOneProcess() throws Exception {
         writeWorldAndControlClass();

@@ -5,11 +5,11 @@ import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.nio.channels.ClosedByInterruptException;
 import java.nio.channels.ServerSocketChannel;
-import java.nio.channels.SocketChannel;
 import org.slf4j.Logger;
 import org.slf4j.LoggerFactory;
 import robosim.api.Robot;
 import robosim.api.RobotControl;
+import robosim.protocol.link.FirstHello;
 
 /**
  * Control code in another process, attached by hand over the robot link ({@link RobotLink}): the robot listens on
@@ -24,6 +24,10 @@ public final class LinkedControl implements RobotControl {
     private static final Logger LOG = LoggerFactory.getLogger(LinkedControl.class);
     /** Refused connections logged, at most (strangers on this machine may try many). */
     static final int MAX_LOGGED_REFUSALS = 8;
+    /** Connections whose hellos are awaited at once (strangers beyond are closed at once). */
+    static final int MAX_PENDING = 16;
+    /** How long it waits for its controller: until the simulation ends it. */
+    private static final long FOREVER_MS = Long.MAX_VALUE / 2_000_000;
     private final ServerSocketChannel given;
 
     /** Listens on the robot's parameter {@code link_port}. */
@@ -42,21 +46,22 @@ public final class LinkedControl implements RobotControl {
             InetSocketAddress at = (InetSocketAddress) server.getLocalAddress();
             LOG.info("{}: waiting for its controller on {}:{} (the robot link)", robot.name(),
                     at.getAddress().getHostAddress(), at.getPort());
-            int refused = 0;
-            while (true) {
-                SocketChannel controller = server.accept(); // (an interrupt, the simulation's end, closes it: the end)
-                try {
-                    RobotLink.serve(controller.socket(), robot);
-                    return;
-                } catch (robosim.protocol.link.LinkHello.HelloRefused e) { // (a stranger: answered why, and the
-                    // port goes on listening for the controller)
-                    if (++refused <= MAX_LOGGED_REFUSALS) {
-                        LOG.warn("{}: a connection to its link port refused: {}; it waits for its controller{}",
-                                robot.name(), e.getMessage(), refused == MAX_LOGGED_REFUSALS
-                                        ? " (further refusals are not logged)" : "");
-                    }
-                }
+            int[] refused = {0};
+            // several hellos read at once (strangers that say nothing hold none of them up), until the controller's;
+            // an interrupt (the simulation's end) closes the channel and ends the wait
+            FirstHello.Welcomed<RobotLink> controller = FirstHello.await(server.socket(), FOREVER_MS, MAX_PENDING,
+                    socket -> RobotLink.welcomed(socket, robot, null), why -> {
+                        synchronized (refused) {
+                            if (++refused[0] <= MAX_LOGGED_REFUSALS) {
+                                LOG.warn("{}: {}; it waits for its controller{}", robot.name(), why,
+                                        refused[0] == MAX_LOGGED_REFUSALS ? " (further refusals are not logged)" : "");
+                            }
+                        }
+                    });
+            if (controller == null) {
+                throw new InterruptedException("the simulation is over");
             }
+            controller.link().serve();
         } catch (IOException e) { // (a ClosedByInterruptException among them: the simulation's end)
             if (Thread.currentThread().isInterrupted() || e instanceof ClosedByInterruptException) {
                 throw new InterruptedException("the simulation is over");
@@ -72,7 +77,7 @@ public final class LinkedControl implements RobotControl {
         }
         ServerSocketChannel server = ServerSocketChannel.open();
         try {
-            server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), (int) port), 1);
+            server.bind(new InetSocketAddress(InetAddress.getLoopbackAddress(), (int) port), MAX_PENDING);
         } catch (IOException e) {
             server.close();
             throw e;

@@ -115,18 +115,33 @@ public final class RobotLink {
      */
     public static void serve(Socket socket, Robot robot, String key) throws IOException, InterruptedException {
         try (socket) {
-            if (!socket.getInetAddress().isLoopbackAddress()) { // (keys for a link beyond loopback: not yet)
-                throw new ProtocolException("the robot link takes loopback connections only, not "
-                        + socket.getInetAddress().getHostAddress());
-            }
-            socket.setTcpNoDelay(true); // (a reply is one write; with a request in flight it must not wait)
-            RobotLink link = new RobotLink(socket, robot);
-            link.welcome(key);
-            try {
-                link.calls();
-            } finally {
-                LOG.info("{}: its controller made {} calls over the robot link", robot.name(), link.served);
-            }
+            welcomed(socket, robot, key).serve();
+        }
+    }
+
+    /**
+     * The link of the controller at the other end of {@code socket}, its hello read and answered (as
+     * {@link #serve(Socket, Robot, String)} does first); nothing served yet.
+     *
+     * @throws LinkHello.HelloRefused its hello was refused (answered why where it came)
+     */
+    static RobotLink welcomed(Socket socket, Robot robot, String key) throws IOException {
+        if (!socket.getInetAddress().isLoopbackAddress()) { // (keys for a link beyond loopback: not yet)
+            throw new ProtocolException("the robot link takes loopback connections only, not "
+                    + socket.getInetAddress().getHostAddress());
+        }
+        socket.setTcpNoDelay(true); // (a reply is one write; with a request in flight it must not wait)
+        RobotLink link = new RobotLink(socket, robot);
+        link.welcome(key);
+        return link;
+    }
+
+    /** Serves the welcomed controller's calls until it says bye, fails, or the simulation is over; closes its socket. */
+    void serve() throws IOException, InterruptedException {
+        try (socket) {
+            calls();
+        } finally {
+            LOG.info("{}: its controller made {} calls over the robot link", robot.name(), served);
         }
     }
 

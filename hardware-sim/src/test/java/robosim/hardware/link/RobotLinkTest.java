@@ -294,6 +294,29 @@ class RobotLinkTest {
     }
 
     @Test
+    void theEndOfTheSimulationEndsALinkedRobotsWaitForItsController() throws Exception {
+        java.nio.channels.ServerSocketChannel listening = java.nio.channels.ServerSocketChannel.open();
+        listening.bind(new java.net.InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
+        int port = ((java.net.InetSocketAddress) listening.getLocalAddress()).getPort();
+        CompletableFuture<Throwable> end = new CompletableFuture<>();
+        Thread control = new Thread(() -> {
+            try {
+                new LinkedControl(listening).run(new KnownRobot());
+                end.complete(null);
+            } catch (Throwable e) {
+                end.complete(e);
+            }
+        }, "linked-control-under-test");
+        control.setDaemon(true);
+        control.start();
+        try (Socket silent = new Socket(InetAddress.getLoopbackAddress(), port)) { // (a stranger that says nothing)
+            control.interrupt(); // (the simulation's end, as the Hardware Simulator tells control code)
+            assertInstanceOf(InterruptedException.class, end.get(WAIT_S, TimeUnit.SECONDS));
+        }
+        assertTrue(!listening.isOpen(), "its port closed");
+    }
+
+    @Test
     void aFrameOverTheLimitIsRefusedBeforeItIsRead() throws Exception {
         try (Served link = Served.of(new KnownRobot())) {
             new DataOutputStream(link.client().getOutputStream()).writeInt(LinkFrames.MAX_BYTES + 1);
