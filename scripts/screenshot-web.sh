@@ -23,10 +23,15 @@ tmp=$(mktemp -d)
 run="" replay=""
 cleanup() { kill ${run:+"$run"} ${replay:+"$replay"} 2>/dev/null || true; rm -rf "$tmp"; }
 trap cleanup EXIT
-shot() { # FILE URL: the page after 4 s of its own time
-  chromium --headless=new --no-sandbox --disable-dev-shm-usage --enable-unsafe-swiftshader --use-angle=swiftshader \
-    --user-data-dir="$tmp/chrome" --window-size=1200,800 --virtual-time-budget=4000 --screenshot="$1" "$2" \
-    >/dev/null 2>&1
+shot() { # FILE URL: the page after 4 s of its own time, loaded twice: headless chromium's time is virtual and runs
+  # on without waiting for the network, so a server's first page, which starts the server's feed of the world, is
+  # shot before the world has come (step -, an empty canvas); the second finds the feed running
+  local i
+  for i in 1 2; do
+    chromium --headless=new --no-sandbox --disable-dev-shm-usage --enable-unsafe-swiftshader --use-angle=swiftshader \
+      --user-data-dir="$tmp/chrome" --window-size=1200,800 --virtual-time-budget=4000 --screenshot="$1" "$2" \
+      >/dev/null 2>&1
+  done
   echo "wrote $1"
 }
 free_port() { local p; while :; do p=$((20000 + RANDOM % 20000))
