@@ -65,6 +65,8 @@ class ScriptsIT {
             ScriptRun run = ScriptRun.of(REPO, Map.of(), tmp, script.toString(), help);
             assertEquals(0, run.exit(), name + " " + help + " exit; stderr: " + run.stderr());
             assertTrue(run.stdout().contains(name), name + " " + help + " should print its usage: " + run.stdout());
+            assertTrue(!run.stdout().contains("null"), name + " " + help + ": a text the help lost (a ${NAME} of a "
+                    + "description read as a variable prints null): " + run.stdout());
             assertTrue(!run.stderr().contains("rebuilding"), name + " started a build: " + run.stderr());
             assertEquals(before, gitStatus(), name + " " + help + " changed the repository");
         }
