@@ -259,23 +259,33 @@ class RobotLinkTest {
         }
     }
 
+    /** A {@link LinkedControl} robot (a {@link KnownRobot}) waiting on a loopback port, run on a thread of its own. */
+    private record Linked(java.nio.channels.ServerSocketChannel listening, int port, Thread control,
+            CompletableFuture<Throwable> end) {
+        static Linked start() throws IOException {
+            java.nio.channels.ServerSocketChannel listening = java.nio.channels.ServerSocketChannel.open();
+            listening.bind(new java.net.InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
+            int port = ((java.net.InetSocketAddress) listening.getLocalAddress()).getPort();
+            CompletableFuture<Throwable> end = new CompletableFuture<>();
+            Thread control = new Thread(() -> {
+                try {
+                    new LinkedControl(listening).run(new KnownRobot());
+                    end.complete(null);
+                } catch (Throwable e) {
+                    end.complete(e);
+                }
+            }, "linked-control-under-test");
+            control.setDaemon(true);
+            control.start();
+            return new Linked(listening, port, control, end);
+        }
+    }
+
     @Test
     void aLinkedRobotsPortRefusesStrangersAndWaitsOnForItsController() throws Exception {
-        java.nio.channels.ServerSocketChannel listening = java.nio.channels.ServerSocketChannel.open();
-        listening.bind(new java.net.InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
-        int port = ((java.net.InetSocketAddress) listening.getLocalAddress()).getPort();
-        KnownRobot robot = new KnownRobot();
-        CompletableFuture<Throwable> end = new CompletableFuture<>();
-        Thread control = new Thread(() -> {
-            try {
-                new LinkedControl(listening).run(robot);
-                end.complete(null);
-            } catch (Throwable e) {
-                end.complete(e);
-            }
-        }, "linked-control-under-test");
-        control.setDaemon(true);
-        control.start();
+        Linked linked = Linked.start();
+        int port = linked.port();
+        CompletableFuture<Throwable> end = linked.end();
         try (Socket stranger = new Socket(InetAddress.getLoopbackAddress(), port)) {
             stranger.getOutputStream().write("GET / HTTP/1.1\r\n\r\n".getBytes(StandardCharsets.US_ASCII));
             byte[] answer = LinkFrames.read(new DataInputStream(new BufferedInputStream(stranger.getInputStream(), 1)));
@@ -295,20 +305,11 @@ class RobotLinkTest {
 
     @Test
     void theEndOfTheSimulationEndsALinkedRobotsWaitForItsController() throws Exception {
-        java.nio.channels.ServerSocketChannel listening = java.nio.channels.ServerSocketChannel.open();
-        listening.bind(new java.net.InetSocketAddress(InetAddress.getLoopbackAddress(), 0), 1);
-        int port = ((java.net.InetSocketAddress) listening.getLocalAddress()).getPort();
-        CompletableFuture<Throwable> end = new CompletableFuture<>();
-        Thread control = new Thread(() -> {
-            try {
-                new LinkedControl(listening).run(new KnownRobot());
-                end.complete(null);
-            } catch (Throwable e) {
-                end.complete(e);
-            }
-        }, "linked-control-under-test");
-        control.setDaemon(true);
-        control.start();
+        Linked linked = Linked.start();
+        int port = linked.port();
+        CompletableFuture<Throwable> end = linked.end();
+        Thread control = linked.control();
+        java.nio.channels.ServerSocketChannel listening = linked.listening();
         try (Socket silent = new Socket(InetAddress.getLoopbackAddress(), port)) { // (a stranger that says nothing)
             control.interrupt(); // (the simulation's end, as the Hardware Simulator tells control code)
             assertInstanceOf(InterruptedException.class, end.get(WAIT_S, TimeUnit.SECONDS));
