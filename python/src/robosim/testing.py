@@ -114,14 +114,19 @@ class SimulationHost:
         """Whether this host is closed, or has ended (its JVM gone: :func:`shared_host` then starts another)."""
         return self._closed or self._host.stopped
 
-    def call(self, *request: Any) -> list[Any]:
+    def call(self, *request: Any, meanwhile: Callable[[], object] | None = None) -> list[Any]:
         """One request and its answer: ``["ok", VALUE]`` or ``["failed", FAILURES, STEPS]``; an ``error`` answer is a
-        ValueError with the host's reason."""
+        ValueError with the host's reason. ``meanwhile``, if given, runs once the request is sent, while the host
+        works on it (the answer is read after it returns, even if it raises)."""
         with self._lock:
             if self.closed:
                 raise HostError("the simulation host is closed" + self._host.said())
             self._host.send(self._frames, list(request))
-            answer = self._host.receive(self._frames)
+            try:
+                if meanwhile is not None:
+                    meanwhile()
+            finally:
+                answer = self._host.receive(self._frames)
         if not isinstance(answer, list) or not answer or not isinstance(answer[0], str):
             raise HostError(f"an answer that is not one: {answer!r:.200}")
         if answer[0] == "error":
@@ -242,6 +247,7 @@ class SimulationBuilder:
         self._expected: list[str] = []
         self._step_timeout_ms: int | None = None
         self._host: SimulationHost | None = None
+        self._pose_log: str | None = None
 
     def param(self, name: str, value: object) -> SimulationBuilder:
         """The control code's parameter ``name`` (``robot.parameter``), as ``--param`` gives it: for a file, a
@@ -264,6 +270,11 @@ class SimulationBuilder:
         self._step_timeout_ms = max(1, int(seconds * 1000))
         return self
 
+    def pose_log(self, path: str | os.PathLike[str]) -> SimulationBuilder:
+        """Write the poses of every step ``drive`` runs into the new file ``path`` (``--pose-log``'s CSV)."""
+        self._pose_log = str(Path(path).resolve())
+        return self
+
     def host(self, host: SimulationHost) -> SimulationBuilder:
         """Run on ``host`` (default: this process's, :func:`shared_host`)."""
         self._host = host
@@ -284,7 +295,8 @@ class SimulationBuilder:
         try:
             host = self._host or shared_host(path.parent)
             answer = host.call("start", {"world": str(path), "params": self._params, "seed": self._seed,
-                                         "expect_failure": self._expected, "step_timeout_ms": self._step_timeout_ms})
+                                         "expect_failure": self._expected, "step_timeout_ms": self._step_timeout_ms,
+                                         "pose_log": self._pose_log})
         except BaseException:
             if folder is not None:
                 shutil.rmtree(folder, ignore_errors=True)
@@ -329,6 +341,27 @@ class Simulation:
                 return True
             self.run(1)
         return bool(done(self))
+
+    def drive(self, commands: dict[str, tuple[float, float] | list[float]],
+              meanwhile: Callable[[], object] | None = None) -> dict[str, Any]:
+        """One step, each robot driven by the link (``control="ros2"``) moving at its command: mm/s ahead and deg/s
+        counter-clockwise, held to its type's limits (one not named stands still); the step's frame (the ROS 2
+        bridge's, ``BridgeFrames`` in RoboSim's Java): ``step``, ``poses`` (every robot's x, y, heading as
+        little-endian float64s) and ``robots`` (each driven robot's senses). A world with such robots steps only
+        this way (``run`` refuses it). ``meanwhile`` runs while the host steps (the bridge publishes the last
+        step's messages then)."""
+        if self._closed:
+            raise ValueError("the simulation is closed")
+        answer = self._host.call("drive", self._id, {r: [float(c[0]), float(c[1])] for r, c in commands.items()},
+                                 meanwhile=meanwhile)
+        if answer[0] == "failed":
+            raise ControlFailed([_failure(f) for f in answer[1]])
+        return dict(answer[1])
+
+    def world(self) -> dict[str, Any]:
+        """The world as the ROS 2 bridge needs it: the step, the arena and obstacles (mm), each robot's type, sonars,
+        proximity rays and sensors, and whether the link drives it."""
+        return dict(self._ask("world"))
 
     @property
     def steps(self) -> int:

@@ -59,6 +59,29 @@ public final class ProximitySensor extends RobotSensor {
         return out;
     }
 
+    /**
+     * The distance, m, that a reading of model {@code model} ({@code foot-bot} or {@code e-puck}) says, by its law
+     * turned round (for those who want ranges, as ROS's {@code sensor_msgs/Range}): +infinity for 0 (nothing in
+     * range), the law's nearest distance for a reading at or above the law's largest (at contact); noise makes it
+     * approximate. An unknown model is an IllegalArgumentException.
+     */
+    public static double distanceM(String model, double reading) {
+        if (!(reading > 0)) {
+            return Double.POSITIVE_INFINITY;
+        }
+        switch (model) {
+            case "foot-bot" -> {
+                return reading >= 1 ? 0.009889556 : Math.max(0.009889556, 0.0100527 / reading - 0.000163144);
+            }
+            case "e-puck" -> { // (the quadratic falls from 1.08212 at 0 to 0.0851 at 0.05 m: one root there)
+                double c = 1.08212 - Math.min(reading, 1.08212);
+                double d = (36.8961 - Math.sqrt(36.8961 * 36.8961 - 4 * 298.701 * c)) / (2 * 298.701);
+                return Math.min(0.05, Math.max(0, d));
+            }
+            default -> throw new IllegalArgumentException("no proximity model " + model + " (foot-bot, e-puck)");
+        }
+    }
+
     /** The reading at {@code m} metres from the sensor, by the model's law. */
     private double reading(double m) {
         if (footBot) {

@@ -50,6 +50,9 @@ final class RobotLauncher {
         if (ControlScripts.isScript(className)) {
             return new ScriptControl(className);
         }
+        if (ControlScripts.isRos2(className)) {
+            throw new IllegalArgumentException("control ros2: " + ControlScripts.ros2Elsewhere());
+        }
         try {
             return Class.forName(className, true, ControlClasses.loader()).asSubclass(RobotControl.class)
                     .getDeclaredConstructor().newInstance();

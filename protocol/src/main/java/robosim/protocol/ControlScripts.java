@@ -14,6 +14,12 @@ import java.nio.file.Path;
 public final class ControlScripts {
     /** What begins a Python script's name. */
     public static final String PYTHON = "python:";
+    /**
+     * The control of a robot driven by ROS 2 topics ({@code control="ros2"}): the ROS 2 bridge (Python's
+     * {@code robosim.ros2}, python/README.md "From ROS 2") runs such a world and gives each step's command; no other way
+     * of running a world does.
+     */
+    public static final String ROS2 = "ros2";
     /** The environment variable naming the Python interpreter; unset or empty, {@code python3} on the PATH. */
     public static final String INTERPRETER_VARIABLE = "ROBOSIM_PYTHON";
 
@@ -23,6 +29,17 @@ public final class ControlScripts {
     /** Whether {@code control} names a script (not a control class). */
     public static boolean isScript(String control) {
         return control.startsWith(PYTHON);
+    }
+
+    /** Whether {@code control} is {@link #ROS2}: the robot is driven by ROS 2 topics through the bridge. */
+    public static boolean isRos2(String control) {
+        return ROS2.equals(control);
+    }
+
+    /** Why a robot driven by ROS 2 topics cannot run here: every way of running a world but the bridge says it. */
+    public static String ros2Elsewhere() {
+        return "it is driven by ROS 2 topics (control=\"ros2\"): only the ROS 2 bridge runs it, python -m robosim.ros2 "
+                + "FILE (python/README.md, \"From ROS 2\")";
     }
 
     /** The script's path as {@code control} gives it (a script's name, {@link #isScript}). */

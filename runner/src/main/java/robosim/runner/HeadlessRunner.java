@@ -162,6 +162,9 @@ public final class HeadlessRunner implements Callable<Integer> {
             if (r.control().isBlank()) {
                 return where + " needs a control class (control=\"...\") for the headless runner";
             }
+            if (robosim.protocol.ControlScripts.isRos2(r.control())) {
+                return where + ": " + robosim.protocol.ControlScripts.ros2Elsewhere();
+            }
             if (robosim.protocol.ControlScripts.isScript(r.control())) {
                 String problem = robosim.protocol.ControlScripts.problem(r.control());
                 if (problem != null) {

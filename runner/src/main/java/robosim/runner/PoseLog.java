@@ -19,14 +19,14 @@ import robosim.sweep.Csv;
  * {@code state} is {@code running}, {@code held} (lost, standing for its return: {@code --on-robot-loss HOLD}
  * or {@code WAIT}) or {@code gone}, so a robot's holds and returns show with their steps.
  */
-final class PoseLog implements AutoCloseable {
+public final class PoseLog implements AutoCloseable {
     private final BufferedWriter out;
     private List<String> names = List.of();
     /** Steps written (the {@code viewer-client} thread writes; read after the end). */
     private volatile long steps;
 
     /** Writes to {@code file} as {@code options} say (none: create or replace it). */
-    PoseLog(Path file, java.nio.file.OpenOption... options) throws IOException {
+    public PoseLog(Path file, java.nio.file.OpenOption... options) throws IOException {
         out = Files.newBufferedWriter(file, StandardCharsets.UTF_8, options);
         out.write(HEADER);
     }
@@ -35,7 +35,13 @@ final class PoseLog implements AutoCloseable {
         names = s.robotNames();
     }
 
-    void update(PoseUpdate u) {
+    /** The robots' names, in the order of the updates' poses (a world without a snapshot: the simulation host's). */
+    public void names(List<String> robots) {
+        names = List.copyOf(robots);
+    }
+
+    /** Writes the update's rows. */
+    public void update(PoseUpdate u) {
         try {
             write(u, names, out);
             steps++;
@@ -60,6 +66,11 @@ final class PoseLog implements AutoCloseable {
 
     long steps() {
         return steps;
+    }
+
+    /** Writes what is buffered. */
+    public void flush() throws IOException {
+        out.flush();
     }
 
     @Override

@@ -26,22 +26,30 @@ import robosim.sweep.Csv;
  * {@code readings} every sensor reading as CSV, a value a row ({@code step,robot,sensor,unit,index,value}: the unit
  * its sensor's description in the registry gives, {@code Sensors});
  * {@code metrics} the run's metrics as a sweep's row has them (CSV: a header and a line), from the recording alone;
- * {@code plot} draws the robots' trajectories over the arena into a PNG ({@link TrajectoryPlot}).
+ * {@code plot} draws the robots' trajectories over the arena into a PNG ({@link TrajectoryPlot});
+ * {@code export --mcap OUT.mcap} writes the run's ROS 2 messages into an MCAP file ({@link McapExport}: the ROS 2
+ * bridge's topics, by Python's {@code robosim.ros2}).
  */
 @Command(name = "record-tool.sh", mixinStandardHelpOptions = true,
         description = "Reads a recording made with --record (or kept by a sweep's --keep-recordings): summary, poses "
                 + "(CSV), messages (CSV), reports (CSV: every value the robots and the loop functions reported, step by step), readings (CSV: "
                 + "every sensor reading, a value a row, with its sensor's unit) or metrics (CSV: "
                 + "the built-in metrics and every reported value, as a sweep's row has them; docs/EXPERIMENTS.md) on "
-                + "stdout; plot draws each robot's trajectory over the arena and its obstacles into --out FILE.png.")
+                + "stdout; plot draws each robot's trajectory over the arena and its obstacles into --out FILE.png; export "
+                + "--mcap OUT.mcap writes the run as ROS 2 messages (the ROS 2 bridge's topics) into an MCAP file, with "
+                + "$ROBOSIM_PYTHON's robosim.ros2 (pip install \"robosim[ros2]\").")
 public final class RecordToolMain implements Callable<Integer> {
-    @Parameters(index = "0", paramLabel = "summary|poses|messages|reports|readings|metrics|plot", description = "What to print "
-            + "(or draw).")
+    @Parameters(index = "0", paramLabel = "summary|poses|messages|reports|readings|metrics|plot|export",
+            description = "What to print (or draw, or export).")
     String what;
 
     @picocli.CommandLine.Option(names = "--out", paramLabel = "FILE.png", description = "With plot: the PNG to write "
             + "(a new file).")
     Path png;
+
+    @picocli.CommandLine.Option(names = "--mcap", paramLabel = "OUT.mcap", description = "With export: the MCAP file "
+            + "to write (a new file).")
+    Path mcap;
 
     @picocli.CommandLine.Option(names = "--report", paramLabel = "NAME", description = "With plot: draw NAME's "
             + "reported values over the run, a line per robot, instead of the trajectories.")
@@ -64,10 +72,19 @@ public final class RecordToolMain implements Callable<Integer> {
 
     @Override
     public Integer call() throws Exception {
-        if (!List.of("summary", "poses", "messages", "reports", "readings", "metrics", "plot").contains(what)) {
+        if (!List.of("summary", "poses", "messages", "reports", "readings", "metrics", "plot", "export")
+                .contains(what)) {
             System.err.println("record-tool: unknown request \"" + robosim.protocol.Printable.of(what, 40)
-                    + "\" (summary, poses, messages, reports, readings, metrics or plot)");
+                    + "\" (summary, poses, messages, reports, readings, metrics, plot or export)");
             return 2;
+        }
+        if ((mcap != null) != what.equals("export")) {
+            System.err.println("record-tool: " + (mcap == null ? "export needs --mcap OUT.mcap" : "--mcap goes with "
+                    + "export"));
+            return 2;
+        }
+        if (mcap != null) {
+            return McapExport.export(file, mcap);
         }
         if (what.equals("metrics") && png == null && report == null) {
             return metrics();

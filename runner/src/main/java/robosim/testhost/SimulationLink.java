@@ -65,6 +65,7 @@ import robosim.testkit.Simulation;
  * the frame's bound.
  */
 final class SimulationLink {
+    private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(SimulationLink.class);
     static final String NAME = "robosim-simulation-link";
     static final int VERSION = 1;
     /** The most simulations open at once. */
@@ -84,8 +85,12 @@ final class SimulationLink {
     /** Why this host runs no more headless runs (one left something running), or null. */
     private String broke;
 
-    /** An open simulation, the robots whose control code may fail, and the robots whose failure was said. */
-    private record Open(Simulation sim, Set<String> expected, Set<String> said) {
+    /**
+     * An open simulation, the robots whose control code may fail, the robots whose failure was said, and the robots
+     * the link drives ({@code control="ros2"}), by name.
+     */
+    private record Open(Simulation sim, Set<String> expected, Set<String> said, Map<String, DrivenRobot> driven,
+            robosim.runner.PoseLog poseLog) {
     }
 
     /** A headless run that could not be made (its log not writable): answered {@code ["error", "failed", why]}. */
@@ -201,6 +206,10 @@ final class SimulationLink {
                 arguments(args, 2, "run: [\"run\", ID, N]");
                 Open o = opened(args.get(1));
                 long n = whole(args.get(2), "N");
+                if (!o.driven().isEmpty()) {
+                    throw new BadCall("value", "run: robots " + o.driven().keySet() + " are driven by the link "
+                            + "(control ros2): step this world with drive");
+                }
                 List<ControlFailure> failed = new ArrayList<>();
                 try {
                     o.sim().run(n);
@@ -209,6 +218,10 @@ final class SimulationLink {
                 }
                 failed.addAll(unsaid(o));
                 packOutcome(reply, o, failed);
+            }
+            case "drive" -> {
+                arguments(args, 2, "drive: [\"drive\", ID, {ROBOT: [MM_PER_S, DEG_PER_S], ...}]");
+                drive(opened(args.get(1)), args.get(2), reply);
             }
             case "close" -> {
                 arguments(args, 1, "close: [\"close\", ID]");
@@ -233,8 +246,8 @@ final class SimulationLink {
             default -> {
                 if (args.size() < 2) {
                     throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" without a simulation "
-                            + "(start, run, steps, robots, pose, sonar, reading, received, contacts, failure, reports, "
-                            + "metric, metrics, ended, viewer_port, close, headless, bye)");
+                            + "(start, run, drive, steps, robots, world, pose, sonar, reading, received, contacts, "
+                            + "failure, reports, metric, metrics, ended, viewer_port, close, headless, bye)");
                 }
                 Simulation sim = opened(args.get(1)).sim();
                 reply.packArrayHeader(2).packString("ok");
@@ -267,6 +280,10 @@ final class SimulationLink {
             case "viewer_port" -> {
                 arguments(args, 1, "viewer_port: [\"viewer_port\", ID]");
                 reply.packInt(sim.viewerPort());
+            }
+            case "world" -> {
+                arguments(args, 1, "world: [\"world\", ID]");
+                world(sim, reply);
             }
             case "reading" -> {
                 arguments(args, 3, "reading: [\"reading\", ID, ROBOT, SENSOR]");
@@ -327,9 +344,9 @@ final class SimulationLink {
                     reply.packString(end);
                 }
             }
-            default -> throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" (start, run, steps, "
-                    + "robots, pose, sonar, reading, received, contacts, failure, reports, metric, metrics, ended, "
-                    + "viewer_port, close, headless, bye)");
+            default -> throw new BadCall("bad_call", "no call \"" + Printable.of(call, 40) + "\" (start, run, drive, "
+                    + "steps, robots, world, pose, sonar, reading, received, contacts, failure, reports, metric, "
+                    + "metrics, ended, viewer_port, close, headless, bye)");
         }
     }
 
@@ -416,9 +433,9 @@ final class SimulationLink {
         Map<String, Value> fields = new LinkedHashMap<>();
         for (Map.Entry<Value, Value> e : spec.asMapValue().entrySet()) {
             String name = text(e.getKey(), "a field's name");
-            if (!List.of("world", "params", "seed", "expect_failure", "step_timeout_ms").contains(name)) {
+            if (!List.of("world", "params", "seed", "expect_failure", "step_timeout_ms", "pose_log").contains(name)) {
                 throw new BadCall("bad_call", "start: no field \"" + Printable.of(name, 40) + "\" (world, params, "
-                        + "seed, expect_failure, step_timeout_ms)");
+                        + "seed, expect_failure, step_timeout_ms, pose_log)");
             }
             fields.put(name, e.getValue());
         }
@@ -455,14 +472,158 @@ final class SimulationLink {
         if (timeout != null && !timeout.isNilValue()) {
             b.stepTimeout(Duration.ofMillis(whole(timeout, "step_timeout_ms")));
         }
-        Simulation sim = b.start();
+        Map<String, DrivenRobot> driven = new LinkedHashMap<>();
+        b.controls(r -> {
+            if (!robosim.protocol.ControlScripts.isRos2(r.control())) {
+                return null;
+            }
+            DrivenRobot d = new DrivenRobot(r.name(), r.type());
+            driven.put(r.name(), d);
+            return d;
+        });
+        Value log = fields.get("pose_log");
+        robosim.runner.PoseLog poseLog = null;
+        if (log != null && !log.isNilValue()) {
+            Path file = Path.of(text(log, "pose_log"));
+            try {
+                poseLog = new robosim.runner.PoseLog(file, java.nio.file.StandardOpenOption.CREATE_NEW,
+                        java.nio.file.StandardOpenOption.WRITE);
+            } catch (IOException e) {
+                throw new BadCall("value", "start: the pose log " + Printable.of(file.toString(), 200)
+                        + " cannot be made (" + (e instanceof java.nio.file.FileAlreadyExistsException
+                        ? "it exists already" : Printable.of(String.valueOf(e.getMessage()), 200)) + ")");
+            }
+        }
+        Simulation sim;
+        try {
+            sim = b.start();
+        } catch (RuntimeException e) {
+            closeQuietly(poseLog);
+            throw e;
+        }
+        if (poseLog != null) {
+            poseLog.names(sim.robots());
+        }
         long id = next++;
-        open.put(id, new Open(sim, expected, new HashSet<>()));
+        open.put(id, new Open(sim, expected, new HashSet<>(), driven, poseLog));
         return id;
     }
 
-    /** Ends {@code o}'s simulation; the failures of its control code not said before. */
+    /** Packs the world as the ROS 2 bridge needs it ({@link robosim.runner.BridgeFrames#world}). */
+    private static void world(Simulation sim, MessageBufferPacker reply) throws IOException {
+        robosim.environment.core.WorldSpec w = sim.world();
+        List<robosim.runner.BridgeFrames.Robot> robots = new ArrayList<>();
+        for (robosim.environment.core.WorldSpec.RobotSpec r : w.robots()) {
+            robots.add(new robosim.runner.BridgeFrames.Robot(r.name(), robosim.devices.RobotTypes.properties(r.type()),
+                    robosim.protocol.ControlScripts.isRos2(r.control()), r.sensors()));
+        }
+        robosim.runner.BridgeFrames.world(reply, w.timeStepMs(), w.arena(), w.obstacles(), robots);
+    }
+
+    /**
+     * One step of {@code o}'s world with each driven robot's command (one not named stands still; a robot the link
+     * does not drive, or a value that is not a finite number, is refused before anything is sent), answered with the
+     * step's frame ({@link robosim.runner.BridgeFrames#step}: every robot's pose, each driven robot's state), or, when control code
+     * failed, as {@code run} is.
+     */
+    private static void drive(Open o, Value commands, MessageBufferPacker reply) throws IOException {
+        if (!commands.isMapValue()) {
+            throw new BadCall("bad_call", "drive: the commands are a map {ROBOT: [MM_PER_S, DEG_PER_S], ...}");
+        }
+        Map<String, double[]> given = new LinkedHashMap<>();
+        for (Map.Entry<Value, Value> e : commands.asMapValue().entrySet()) {
+            String robot = text(e.getKey(), "a robot's name");
+            if (!o.driven().containsKey(robot)) {
+                throw new BadCall("value", "drive: " + Printable.of(robot, 40) + " is not a robot driven by the link "
+                        + "(those whose control is ros2: " + o.driven().keySet() + ")");
+            }
+            Value v = e.getValue();
+            if (!v.isArrayValue() || v.asArrayValue().size() != 2 || !finite(v.asArrayValue().get(0))
+                    || !finite(v.asArrayValue().get(1))) {
+                throw new BadCall("value", "drive: " + robot + "'s command is [MM_PER_S, DEG_PER_S], two finite "
+                        + "numbers");
+            }
+            given.put(robot, new double[] {v.asArrayValue().get(0).asNumberValue().toDouble(),
+                    v.asArrayValue().get(1).asNumberValue().toDouble()});
+        }
+        for (DrivenRobot d : o.driven().values()) {
+            double[] c = given.getOrDefault(d.name(), new double[2]);
+            d.command(c[0], c[1]);
+        }
+        List<ControlFailure> failed = new ArrayList<>();
+        try {
+            o.sim().run(1);
+        } catch (AssertionError e) {
+            failed.addAll(unsaid(o));
+        }
+        failed.addAll(unsaid(o));
+        Map<String, DrivenRobot.State> states = new LinkedHashMap<>();
+        for (DrivenRobot d : o.driven().values()) {
+            if (o.sim().ended(d.name()) == null) { // (a robot still in the world has its state within the step's time)
+                try {
+                    DrivenRobot.State s = d.state(STATE_WAIT_MS);
+                    if (s != null) {
+                        states.put(d.name(), s);
+                    }
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new IOException("interrupted while a driven robot's state was awaited", e);
+                }
+            }
+        }
+        if (!failed.isEmpty()) {
+            packOutcome(reply, o, failed);
+            return;
+        }
+        List<String> names = o.sim().robots();
+        double[] x = new double[names.size()];
+        double[] y = new double[names.size()];
+        double[] h = new double[names.size()];
+        for (int i = 0; i < names.size(); i++) {
+            Pose p = o.sim().pose(names.get(i));
+            x[i] = p.xMm();
+            y[i] = p.yMm();
+            h[i] = p.headingDeg();
+        }
+        Map<String, List<robosim.devices.DeviceSpec>> sensors = new LinkedHashMap<>();
+        for (robosim.environment.core.WorldSpec.RobotSpec r : o.sim().world().robots()) {
+            sensors.put(r.name(), r.sensors());
+        }
+        if (o.poseLog() != null) {
+            o.poseLog().update(new robosim.protocol.PoseUpdate(o.sim().steps() - 1, x, y, h));
+            o.poseLog().flush();
+        }
+        reply.packArrayHeader(2).packString("ok");
+        robosim.runner.BridgeFrames.step(reply, o.sim().steps(), x, y, h);
+        reply.packMapHeader(states.size());
+        for (Map.Entry<String, DrivenRobot.State> e : states.entrySet()) {
+            DrivenRobot.State s = e.getValue();
+            reply.packString(e.getKey());
+            robosim.runner.BridgeFrames.state(reply, s.sonarMm(), s.readings(), sensors.get(e.getKey()), s.received(),
+                    s.contact());
+        }
+    }
+
+    /** How long a driven robot's state is awaited once its step is done, ms (its control thread reads its senses). */
+    private static final long STATE_WAIT_MS = 10_000;
+
+    private static boolean finite(Value v) {
+        return v.isNumberValue() && Double.isFinite(v.asNumberValue().toDouble());
+    }
+
+    private static void closeQuietly(robosim.runner.PoseLog log) {
+        if (log != null) {
+            try {
+                log.close();
+            } catch (IOException e) {
+                LOG.warn("the pose log could not be closed: {}", Printable.of(String.valueOf(e.getMessage()), 200));
+            }
+        }
+    }
+
+    /** Ends {@code o}'s simulation (and its pose log); the failures of its control code not said before. */
     private static List<ControlFailure> close(Open o) {
+        closeQuietly(o.poseLog());
         List<ControlFailure> failed = new ArrayList<>();
         try {
             o.sim().close();

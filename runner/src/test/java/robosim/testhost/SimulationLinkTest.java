@@ -181,6 +181,72 @@ class SimulationLinkTest {
         }
     }
 
+    private static Value command(double mmPerS, double degPerS) {
+        return ValueFactory.newArray(ValueFactory.newFloat(mmPerS), ValueFactory.newFloat(degPerS));
+    }
+
+    @Test
+    void aRobotDrivenByTheLinkMovesByItsCommandsHeldToItsLimitsAndLogsItsPoses() throws Exception {
+        Files.writeString(dir.resolve("driven.xml"), """
+                <environment name="driven" timeStepMs="100" seed="1">
+                  <param name="speed" value="400"/>
+                  <arena width="20" height="6"/>
+                  <robots>
+                    <robot name="ros" type="Scout" control="ros2" x="1" y="3" heading="0"/>
+                    <robot name="mover" type="Scout" control="robosim.examples.BackAndForth" x="1" y="1" heading="0"/>
+                  </robots>
+                </environment>
+                """);
+        Future<Long> served = serve("k3");
+        try (Socket socket = new Socket(InetAddress.getLoopbackAddress(), server.getLocalPort())) {
+            DataOutputStream out = new DataOutputStream(socket.getOutputStream());
+            DataInputStream in = new DataInputStream(socket.getInputStream());
+            hello(out, "k3");
+            receive(in);
+            Map<Value, Value> fields = new java.util.LinkedHashMap<>();
+            fields.put(s("world"), s(dir.resolve("driven.xml").toString()));
+            fields.put(s("pose_log"), s(dir.resolve("poses.csv").toString()));
+            send(out, s("start"), ValueFactory.newMap(fields));
+            assertEquals("[\"ok\",{\"id\":1,\"robots\":[\"ros\",\"mover\"]}]", receive(in).toJson());
+            send(out, s("world"), n(1));
+            String world = receive(in).toJson();
+            assertTrue(world.contains("\"name\":\"ros\",\"type\":\"Scout\",\"driven\":true")
+                    && world.contains("\"name\":\"mover\",\"type\":\"Scout\",\"driven\":false"), world);
+            for (Object[] c : new Object[][] {
+                    {new Value[] {s("run"), n(1), n(3)}, "[\"error\",\"value\",\"run: robots [ros] are driven by the link"},
+                    {new Value[] {s("drive"), n(1), ValueFactory.newMap(Map.of(s("mover"), command(1, 0)))},
+                        "[\"error\",\"value\",\"drive: mover is not a robot driven by the link"},
+                    {new Value[] {s("drive"), n(1), ValueFactory.newMap(Map.of(s("ros"), command(Double.NaN, 0)))},
+                        "[\"error\",\"value\",\"drive: ros's command is [MM_PER_S, DEG_PER_S], two finite"},
+                    {new Value[] {s("drive"), n(1), s("fast")}, "[\"error\",\"bad_call\",\"drive: the commands are a map"}}) {
+                send(out, (Value[]) c[0]);
+                String answer = receive(in).toJson();
+                assertTrue(answer.startsWith((String) c[1]), answer);
+            }
+            send(out, s("drive"), n(1), ValueFactory.newMap(Map.of(s("ros"), command(1e9, 0))));
+            Value frame = receive(in).asArrayValue().get(1);
+            Map<Value, Value> f = frame.asMapValue().map();
+            assertEquals(1, f.get(s("step")).asIntegerValue().asLong());
+            java.nio.ByteBuffer poses = java.nio.ByteBuffer.wrap(f.get(s("poses")).asBinaryValue().asByteArray())
+                    .order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            assertEquals(1100, poses.getDouble(0), 1e-6, "a Scout's top speed, 1000 mm/s, for 100 ms");
+            assertTrue(f.get(s("robots")).asMapValue().map().containsKey(s("ros")), frame.toJson());
+            send(out, s("drive"), n(1), ValueFactory.newMap(Map.of(s("ros"), command(0, -1e9))));
+            poses = java.nio.ByteBuffer.wrap(receive(in).asArrayValue().get(1).asMapValue().map().get(s("poses"))
+                    .asBinaryValue().asByteArray()).order(java.nio.ByteOrder.LITTLE_ENDIAN);
+            assertEquals(1100, poses.getDouble(0), 1e-6, "turning on the spot");
+            assertEquals(360 - 30, poses.getDouble(16), 1e-6, "a Scout's top turn, 300 deg/s, for 100 ms");
+            send(out, s("close"), n(1));
+            assertEquals("[\"ok\",null]", receive(in).toJson());
+            java.util.List<String> log = Files.readAllLines(dir.resolve("poses.csv"));
+            assertEquals("step,robot,x_m,y_m,heading_deg,state", log.get(0));
+            assertTrue(log.contains("1,ros,1.1,3.0,0.0,running") && log.size() == 5, log.toString());
+            send(out, s("bye"));
+            receive(in);
+            served.get(WAIT_S, TimeUnit.SECONDS);
+        }
+    }
+
     @Test
     void aHelloWithAnotherKeyIsRefusedAndAnsweredWhy() throws Exception {
         Future<Long> served = serve("k1");

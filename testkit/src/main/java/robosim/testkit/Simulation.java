@@ -52,8 +52,8 @@ import robosim.protocol.InMemoryLink;
 public final class Simulation implements AutoCloseable {
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(Simulation.class);
     private final ClientWorkerCoordinator coordinator;
-    /** The world's parameters, for the warnings at the end of what control code asked for. */
-    private final Parameters parameters;
+    /** The world as read (its parameters for the warnings at the end of what control code asked for). */
+    private final WorldSpec world;
     private final Map<String, WatchedRobot> robots;
     private final InMemoryRobots hardware;
     private final long waitMs;
@@ -62,10 +62,10 @@ public final class Simulation implements AutoCloseable {
     /** The robots whose control code's failure has failed the test already (it is said once). */
     private final Set<String> said = new HashSet<>();
 
-    private Simulation(ClientWorkerCoordinator coordinator, Parameters parameters, Map<String, WatchedRobot> robots,
+    private Simulation(ClientWorkerCoordinator coordinator, WorldSpec world, Map<String, WatchedRobot> robots,
             InMemoryRobots hardware, long waitMs, Set<String> expected) {
         this.coordinator = coordinator;
-        this.parameters = parameters;
+        this.world = world;
         this.robots = robots;
         this.hardware = hardware;
         this.waitMs = waitMs;
@@ -106,6 +106,8 @@ public final class Simulation implements AutoCloseable {
         /** The environment file, or null for a world built in code. */
         private final Path file;
         private final Map<String, RobotControl> controls = new HashMap<>();
+        /** Control objects chosen by each robot's description, for the robots {@link #control} gives none, or null. */
+        private java.util.function.Function<WorldSpec.RobotSpec, RobotControl> chooser;
         private final Map<String, String> params = new LinkedHashMap<>();
         private final Set<String> expected = new HashSet<>();
         private Long seed;
@@ -122,6 +124,15 @@ public final class Simulation implements AutoCloseable {
         public Builder control(String robot, RobotControl control) {
             known(spec, robot);
             controls.put(robot, control);
+            return this;
+        }
+
+        /**
+         * Each robot that {@link #control} gives no object runs the one {@code chooser} gives for its description
+         * (its type, control and sensors, as the file says), or, where it gives null, the file's control class.
+         */
+        public Builder controls(java.util.function.Function<WorldSpec.RobotSpec, RobotControl> chooser) {
+            this.chooser = chooser;
             return this;
         }
 
@@ -218,7 +229,12 @@ public final class Simulation implements AutoCloseable {
                 spec = spec.withLoopFunctions(new robosim.environment.core.LoopSpec(loopFunctions.getClass().getName(),
                         spec.loopFunctions() == null ? Map.of() : spec.loopFunctions().parameters(), loopFunctions));
             }
+            Map<String, RobotControl> controls = new HashMap<>(this.controls);
             for (WorldSpec.RobotSpec r : spec.robots()) {
+                RobotControl chosen = chooser == null || controls.containsKey(r.name()) ? null : chooser.apply(r);
+                if (chosen != null) {
+                    controls.put(r.name(), chosen);
+                }
                 if (!controls.containsKey(r.name()) && r.control().isBlank()) {
                     throw new IllegalArgumentException("robot " + r.name() + " of " + spec.source()
                             + " has no control code: give it one with control(\"" + r.name() + "\", ...)");
@@ -254,7 +270,7 @@ public final class Simulation implements AutoCloseable {
             }
             ClientWorkerCoordinator c = new ClientWorkerCoordinator(spec, settings);
             c.startPaused();
-            Simulation sim = new Simulation(c, spec.parameters(), watched, robots, Math.max(1, wait.toMillis()),
+            Simulation sim = new Simulation(c, spec, watched, robots, Math.max(1, wait.toMillis()),
                     Set.copyOf(expected));
             try {
                 c.start();
@@ -281,6 +297,11 @@ public final class Simulation implements AutoCloseable {
             all.putAll(given);
             return all;
         }
+    }
+
+    /** The world it simulates, as read from its file or built (with the builder's parameters and seed). */
+    public WorldSpec world() {
+        return world;
     }
 
     /** Steps completed so far (0 before {@link #run}). */
@@ -439,7 +460,7 @@ public final class Simulation implements AutoCloseable {
     public void close() {
         coordinator.close();
         try {
-            for (String w : parameters.warnings(coordinator.awaitControlCode(2000).asked())) {
+            for (String w : world.parameters().warnings(coordinator.awaitControlCode(2000).asked())) {
                 LOG.warn(w);
             }
         } catch (InterruptedException e) {

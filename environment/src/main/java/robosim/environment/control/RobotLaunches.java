@@ -55,6 +55,9 @@ public final class RobotLaunches implements AutoCloseable {
         if (robosim.protocol.ControlScripts.isScript(control)) {
             return robosim.protocol.ControlScripts.problem(control);
         }
+        if (robosim.protocol.ControlScripts.isRos2(control)) {
+            return robosim.protocol.ControlScripts.ros2Elsewhere();
+        }
         if (!CLASS_NAME.matcher(control).matches() || control.length() > 200) {
             return "\"" + ControlReplies.abbreviate(control, 64) + "\" is not a Java class name";
         }
