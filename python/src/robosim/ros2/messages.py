@@ -2,28 +2,8 @@
 as ROS 2 CDR by rosbags (its Kilted type store: the message definitions, and the RIHS01 type hashes rmw_zenoh puts in
 key expressions). The live bridge and the MCAP files take their messages from here, so both have the same topics.
 
-Frames and units follow REP 103 and REP 105: metres, radians, x ahead, counter-clockwise; each robot has
-``NAME/odom`` (where it started: odometry here is exact, so ``map -> NAME/odom`` is a static transform, its start
-pose) and ``NAME/base_link`` (its centre; ``NAME/odom -> NAME/base_link`` every step). The topics, one table:
-
-========================  ===============================  ===================================================
-topic                     type                             what
-========================  ===============================  ===================================================
-``/clock``                rosgraph_msgs/msg/Clock          the simulated time, every step
-``/tf``                   tf2_msgs/msg/TFMessage           every robot's ``odom -> base_link``, every step
-``/tf_static``            tf2_msgs/msg/TFMessage           ``map -> NAME/odom``; each proximity ray's frame (latched)
-``/map``                  nav_msgs/msg/OccupancyGrid       the obstacles, a cell occupied (100) or free (0) (latched)
-``/obstacles``            visualization_msgs/msg/MarkerArray  the obstacles' outlines (latched)
-``NAME/odom``             nav_msgs/msg/Odometry            its pose in ``NAME/odom`` and its velocity, every step
-``NAME/cmd_vel``          geometry_msgs/msg/Twist          (in) its velocity: ``linear.x`` m/s, ``angular.z`` rad/s
-``NAME/scan``             sensor_msgs/msg/LaserScan        its laser, or else its sonar ring
-``NAME/SENSOR``           sensor_msgs/msg/Range            a proximity sensor: a message a ray, frame ``NAME/SENSOR_K``
-``NAME/SENSOR``           std_msgs/msg/Float64MultiArray   any other sensor: its values, labelled with its kind
-``NAME/received``         std_msgs/msg/String              each message the robot received, its text
-========================  ===============================  ===================================================
-
-``NAME/...`` topics are a driven robot's (``control="ros2"``; in an MCAP exported from a recording, every robot's
-whose senses the recording holds); ``NAME/odom`` and ``/tf`` have every robot."""
+Frames and units follow REP 103 and REP 105. The topics, their types and what each holds: python/README.md, "From
+ROS 2" (``Messages.topics`` is the list)."""
 
 from __future__ import annotations
 

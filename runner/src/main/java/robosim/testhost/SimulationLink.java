@@ -38,11 +38,17 @@ import robosim.testkit.Simulation;
  * {@code {link: "robosim-simulation-link", version: 1, key}} ({@link LinkHello}), the welcome, then one request
  * {@code [CALL, ARG...]} and one answer at a time:
  * <ul>
- * <li>{@code ["start", {world, params, seed, expect_failure, step_timeout_ms}]}: the environment file {@code world}
- * (a path), its parameters (a map of texts), the seed (or nil: the file's), the robots whose control code may fail
- * (an array), the step timeout (or nil: 10 s). Answer {@code ["ok", {id, robots}]};
- * <li>{@code ["run", ID, N]}: N more steps. Answer {@code ["ok", STEPS]}, or, when control code failed (a robot not
- * expected to, each said once), {@code ["failed", [FAILURE, ...], STEPS]};
+ * <li>{@code ["start", {world, params, seed, expect_failure, step_timeout_ms, pose_log}]}: the environment file
+ * {@code world} (a path), its parameters (a map of texts), the seed (or nil: the file's), the robots whose control
+ * code may fail (an array), the step timeout (or nil: 10 s), a new file for the poses of the steps {@code drive} runs
+ * ({@code --pose-log}'s CSV; or nil). Its robots whose control is {@code ros2} are driven by the link
+ * ({@link DrivenRobot}). Answer {@code ["ok", {id, robots}]};
+ * <li>{@code ["run", ID, N]}: N more steps (a world with driven robots: refused). Answer {@code ["ok", STEPS]}, or,
+ * when control code failed (a robot not expected to, each said once), {@code ["failed", [FAILURE, ...], STEPS]};
+ * <li>{@code ["drive", ID, {ROBOT: [MM_PER_S, DEG_PER_S], ...}]}: one step, each driven robot at its command (one
+ * not named stands still). Answer {@code ["ok", FRAME]} (the ROS 2 bridge's step,
+ * {@link robosim.runner.BridgeFrames}), or {@code ["failed", ...]} as {@code run}'s;
+ * <li>{@code ["world", ID]}: the world as the ROS 2 bridge needs it ({@link robosim.runner.BridgeFrames}).
  * <li>{@code ["steps", ID]}, {@code ["robots", ID]}, {@code ["pose", ID, ROBOT]} ({@code [x_mm, y_mm, heading_deg]}),
  * {@code ["sonar", ID, ROBOT]}, {@code ["reading", ID, ROBOT, SENSOR]} (nil if none), {@code ["received", ID, ROBOT]}
  * ({@code [[step, from, text], ...]}), {@code ["contacts", ID, ROBOT]} ({@code [[step, with], ...]}),

@@ -15,7 +15,10 @@
  * <tr><td>{@code run}</td><td>a headless run's runner ({@code robosim.runner.RunHost}), one run at a time, while
  * {@code main} waits for it; with it the run's own threads (robosim.runner, robosim.environment)</td></tr>
  * <tr><td>the testkit's</td><td>each simulation's ({@link robosim.testkit}: the Environment's loop and acceptors,
- * each robot's {@code control[name]}; a Python controller's process read by robosim.hardware.link's threads)</td></tr>
+ * each robot's {@code control[name]}; a Python controller's process read by robosim.hardware.link's threads); a
+ * robot the link drives ({@code control="ros2"}, {@link robosim.testhost.DrivenRobot}) runs on its
+ * {@code control[name]}, taking each step's command from {@code main} and leaving its senses for it through a
+ * one-place queue each way (no lock held while either waits)</td></tr>
  * </table>
  */
 package robosim.testhost;
