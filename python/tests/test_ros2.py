@@ -12,6 +12,7 @@ import os
 import re
 import signal
 import socket
+import struct
 import subprocess
 import sys
 import threading
@@ -27,7 +28,6 @@ from mcap_ros2.decoder import DecoderFactory
 from rosbags.typesys import Stores, get_typestore
 
 from robosim.ros2.bridge import session_config
-from robosim.ros2.graph import read_attachment
 
 REPO = Path(__file__).resolve().parents[2]
 WORLD = REPO / "examples/ros2/arena.xml"
@@ -37,7 +37,8 @@ WAIT_S = 120.0
 #: No test may reach the network: git (which the SDK clones missing message definitions with) takes no https.
 os.environ["GIT_ALLOW_PROTOCOL"] = "file"
 
-#: The world's topics and their types, as a ROS 2 user reads them in python/README.md.
+#: The world's topics and their types, as a ROS 2 user reads them in python/README.md (a cmd_vel takes a
+#: TwistStamped too: CMD_VEL_TYPES).
 TOPICS = {
     "/clock": "rosgraph_msgs/msg/Clock", "/tf": "tf2_msgs/msg/TFMessage", "/tf_static": "tf2_msgs/msg/TFMessage",
     "/map": "nav_msgs/msg/OccupancyGrid", "/obstacles": "visualization_msgs/msg/MarkerArray",
@@ -47,6 +48,9 @@ TOPICS = {
     "/robot2/proximity": "sensor_msgs/msg/Range", "/robot2/ground": "std_msgs/msg/Float64MultiArray",
     "/robot2/received": "std_msgs/msg/String", "/w1/odom": "nav_msgs/msg/Odometry",
 }
+CMD_VEL_TYPES = {"geometry_msgs/msg/Twist", "geometry_msgs/msg/TwistStamped"}
+#: Published once, kept for those who come later (transient local).
+LATCHED = ("/tf_static", "/map", "/obstacles")
 
 
 class Process:
@@ -60,7 +64,8 @@ class Process:
         self.lines: list[str] = []
         self._said = threading.Condition()
         self._read_all = False
-        threading.Thread(target=self._read, daemon=True).start()
+        threading.Thread(target=self._read, name=f"output-{args[3] if len(args) > 3 else args[-1]}",
+                         daemon=True).start()
 
     def _read(self) -> None:
         assert self.process.stdout is not None
@@ -72,10 +77,11 @@ class Process:
             self._read_all = True
             self._said.notify_all()
 
-    def await_line(self, pattern: str) -> re.Match[str] | None:
-        """The first line matching ``pattern``, waiting for it; None if the process ended without one."""
+    def await_line(self, pattern: str, timeout: float | None = None) -> re.Match[str] | None:
+        """The first line matching ``pattern``, waiting for it; None if the process ended without one, or, given a
+        ``timeout`` (s), if none came within it."""
         wanted = re.compile(pattern)
-        deadline = time.monotonic() + WAIT_S
+        deadline = time.monotonic() + (WAIT_S if timeout is None else timeout)
         with self._said:
             while True:
                 for line in self.lines:
@@ -85,6 +91,8 @@ class Process:
                 if self._read_all:
                     return None
                 if time.monotonic() > deadline:
+                    if timeout is not None:
+                        return None
                     raise AssertionError(f"no line like {pattern!r} within {WAIT_S} s:\n" + "\n".join(self.lines))
                 self._said.wait(0.5)
 
@@ -99,6 +107,13 @@ class Process:
     def output(self) -> str:
         with self._said:
             return "\n".join(self.lines)
+
+
+def read_attachment(raw: bytes) -> tuple[int, int, bytes]:
+    """An rmw_zenoh attachment's sequence number, time (ns) and GID (``<q q B 16s``, the GID's length 16)."""
+    assert len(raw) == 33 and raw[16] == 16, raw
+    sequence, stamp, _, publisher = struct.unpack("<qqB16s", raw)
+    return sequence, stamp, publisher
 
 
 def _free_port() -> int:
@@ -178,18 +193,24 @@ def test_a_ros2_node_sees_the_topics_and_drives_the_robots_in_lock_step(router: 
             return all(t in listed for t in TOPICS)
 
         _until(all_listed, "the topic list shows the bridge's topics")
-        assert {t: listed[t] for t in TOPICS} == {t: [kind] for t, kind in TOPICS.items()}
+        assert {t: set(listed[t]) for t in TOPICS} == {
+            t: CMD_VEL_TYPES if t.endswith("/cmd_vel") else {kind} for t, kind in TOPICS.items()}
 
         forward = ROS2Publisher("/robot1/cmd_vel", "geometry_msgs/msg/Twist", router_port=port, node_name="driver1")
-        spin = ROS2Publisher("/robot2/cmd_vel", "geometry_msgs/msg/Twist", router_port=port, node_name="driver2")
-        vector = forward.session_mgr.store.types["geometry_msgs/msg/Vector3"]
+        spin = ROS2Publisher("/robot2/cmd_vel", "geometry_msgs/msg/TwistStamped", router_port=port,
+                             node_name="driver2")  # (as Nav2 sends it)
+        store = forward.session_mgr.store.types
+        vector = store["geometry_msgs/msg/Vector3"]
+        still = store["builtin_interfaces/msg/Time"](sec=0, nanosec=0)
         clocks: set[int] = set()
         scans: list[int] = []
 
         def on_clock(message: Any) -> None:  # (a node of lock-step: each step's clock answered with a command)
             clocks.add(message.clock.sec * 1_000_000_000 + message.clock.nanosec)
             forward.publish(linear=vector(x=0.2, y=0.0, z=0.0), angular=vector(x=0.0, y=0.0, z=0.0))
-            spin.publish(linear=vector(x=0.0, y=0.0, z=0.0), angular=vector(x=0.0, y=0.0, z=0.5))
+            spin.publish(header=store["std_msgs/msg/Header"](stamp=still, frame_id="robot2/base_link"),
+                         twist=store["geometry_msgs/msg/Twist"](linear=vector(x=0.0, y=0.0, z=0.0),
+                                                                angular=vector(x=0.0, y=0.0, z=0.5)))
 
         ROS2Subscriber("/robot1/scan", "sensor_msgs/msg/LaserScan", callback=lambda m: scans.append(len(m.ranges)),
                        router_port=port, node_name="scans")
@@ -262,14 +283,18 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
     _, port = router
     session = _peer(port)
     samples: list[tuple[str, bytes, bytes | None]] = []
-    clock = threading.Event()
+    latched: dict[str, bytes] = {}
+    clocks: list[int] = []
+    heard_clock = threading.Condition()
 
     def heard(sample: zenoh.Sample) -> None:
         key = str(sample.key_expr)
         attachment = sample.attachment.to_bytes() if sample.attachment is not None else None
         samples.append((key, sample.payload.to_bytes(), attachment))
         if key.startswith("0/clock/"):
-            clock.set()
+            with heard_clock:
+                clocks.append(TYPES.deserialize_cdr(sample.payload.to_bytes(), "rosgraph_msgs/msg/Clock").clock.nanosec)
+                heard_clock.notify_all()
 
     try:
         session.declare_subscriber("0/**", heard)
@@ -280,7 +305,7 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
             def all_declared() -> bool:
                 tokens.update(str(r.ok.key_expr) for r in session.liveliness().get("@ros2_lv/0/**", timeout=2.0)
                               if r.ok is not None)
-                return sum("/MP/" in t or "/MS/" in t for t in tokens if "/robosim/" in t) == len(TOPICS)
+                return sum("/MP/" in t or "/MS/" in t for t in tokens if "/robosim/" in t) == len(TOPICS) + 2
 
             _until(all_declared, "the bridge's liveliness tokens")
             node = next(t for t in tokens if t.endswith("/NN/%/%/robosim"))
@@ -295,26 +320,36 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
             assert any(t.endswith(f"/%map/nav_msgs::msg::dds_::OccupancyGrid_/"
                                   f"{TYPES.hash_rihs01('nav_msgs/msg/OccupancyGrid')}/:1:,1:,:,:,,") for t in tokens)
 
-            late: list[bytes] = []  # (a subscriber that comes after /map was published gets it: transient local)
-            zenoh.ext.declare_advanced_subscriber(
-                session, _key("/map", "nav_msgs/msg/OccupancyGrid"),
-                lambda s: late.append(s.payload.to_bytes()),
-                history=zenoh.ext.HistoryConfig(detect_late_publishers=True))
-            _until(lambda: bool(late), "the latched /map for a late subscriber")
-            grid = TYPES.deserialize_cdr(late[0], "nav_msgs/msg/OccupancyGrid")
+            for topic in LATCHED:  # (subscribers that come after they were published get them: transient local)
+                zenoh.ext.declare_advanced_subscriber(
+                    session, _key(topic, TOPICS[topic]),
+                    lambda s, topic=topic: latched.setdefault(topic, s.payload.to_bytes()),
+                    history=zenoh.ext.HistoryConfig(detect_late_publishers=True))
+            _until(lambda: len(latched) == len(LATCHED), "the latched topics for late subscribers")
+            grid = TYPES.deserialize_cdr(latched["/map"], "nav_msgs/msg/OccupancyGrid")
             assert (grid.info.width, grid.info.height) == (120, 80)
             assert math.isclose(grid.info.resolution, 0.05, abs_tol=1e-7)
             assert sum(grid.data == 100) == 16 * 16 + 40 * 2  # (the 0.8 m box, the 2 m x 0.1 m wall)
+            for topic in ("/tf_static", "/obstacles"):
+                assert TYPES.deserialize_cdr(latched[topic], TOPICS[topic]) is not None
 
+            answered: set[int] = set()
             attachment = 0
-            for step in range(4):  # (a node of our own: each clock answered with both robots' commands)
-                _until(clock.is_set, f"the clock of step {step + 1}")
-                clock.clear()
-                for robot in ("robot1", "robot2"):
-                    attachment += 1
-                    session.put(_key(f"/{robot}/cmd_vel", "geometry_msgs/msg/Twist"), _twist(0.1, 0.0),
-                                attachment=int.to_bytes(attachment, 8, "little") + bytes(8) + b"\x10" + bytes(16))
+            while running.process.poll() is None:  # (a node of our own: each step's clock answered once)
+                with heard_clock:
+                    done = set(answered)
+                    heard_clock.wait_for(lambda done=done: set(clocks) - done or running.process.poll() is not None,
+                                         timeout=1.0)
+                    fresh = set(clocks) - done
+                for _ in fresh:
+                    for robot in ("robot1", "robot2"):
+                        attachment += 1
+                        session.put(_key(f"/{robot}/cmd_vel", "geometry_msgs/msg/Twist"), _twist(0.1, 0.0),
+                                    attachment=int.to_bytes(attachment, 8, "little") + bytes(8) + b"\x10" + bytes(16),
+                                    congestion_control=zenoh.CongestionControl.BLOCK)
+                answered |= fresh
             assert running.end() == 0, running.output()
+            assert answered == {k * 100_000_000 for k in range(1, 5)}
         finally:
             running.end(stop=True)
     finally:
@@ -324,7 +359,8 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
         if "/cmd_vel/" not in key:
             by_key.setdefault(key, []).append((payload, attachment))
     every = {_key(t, k) for t, k in TOPICS.items() if not t.endswith("/cmd_vel")}
-    assert {k for k in every if not k.startswith(("0/robot1/received/", "0/robot2/received/"))} <= set(by_key) <= every
+    assert {k for k in every if not k.startswith(("0/robot1/received/", "0/robot2/received/", "0/tf_static/",
+                                                  "0/map/", "0/obstacles/"))} <= set(by_key) <= every
     for key, got in by_key.items():
         kind = next(k for t, k in TOPICS.items() if _key(t, k) == key)
         sequences = []
@@ -334,7 +370,17 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
             sequences.append(sequence)
             assert abs(stamp - time.time_ns()) < 3600 * 10**9 and len(gid) == 16
             assert TYPES.deserialize_cdr(payload, kind) is not None
-        assert sequences == sorted(set(sequences)), key
+        assert len(set(sequences)) == len(sequences) and min(sequences) >= 1, key
+
+
+def put_until(running: Process, put: Callable[[], object], line: str) -> None:
+    """Puts until the bridge says ``line`` (a sample sent as a new peer's route forms may find none): a second a try."""
+    deadline = time.monotonic() + WAIT_S
+    while time.monotonic() < deadline:
+        put()
+        if running.await_line(line, timeout=1.0):
+            return
+    raise AssertionError(f"no line like {line!r} within {WAIT_S} s:\n" + running.output())
 
 
 def test_bad_commands_and_a_lost_router_are_said_and_the_world_goes_on(router: tuple[Process, int],
@@ -350,17 +396,19 @@ def test_bad_commands_and_a_lost_router_are_said_and_the_world_goes_on(router: t
         key1 = _key("/robot1/cmd_vel", "geometry_msgs/msg/Twist")
         key2 = _key("/robot2/cmd_vel", "geometry_msgs/msg/Twist")
         string = bytes(TYPES.serialize_cdr(TYPES.types["std_msgs/msg/String"](data="forward!"), "std_msgs/msg/String"))
-        session.put(key1, string)
-        assert running.await_line(r"robot1: a cmd_vel of \d+ bytes, not a geometry_msgs/msg/Twist in CDR .*: "
-                                  r"refused \(1 so far\); the robot keeps its last command")
-        session.put(key1, _twist(math.nan, 0.0))
-        assert running.await_line(r"robot1: a cmd_vel with a value that is not a finite number: refused \(1 so far\)")
+        block = zenoh.CongestionControl.BLOCK  # (none of ours dropped on the way)
+        put_until(running, lambda: session.put(key1, string, congestion_control=block),
+                  r"robot1: a cmd_vel of 17 bytes, not a geometry_msgs/msg/Twist in CDR .*: "
+                  r"refused \(1 so far\); the robot keeps its last command")
+        put_until(running, lambda: session.put(key1, _twist(math.nan, 0.0), congestion_control=block),
+                  r"robot1: a cmd_vel with a value that is not a finite number: refused \(1 so far\)")
+        session.put(key1, _twist(1e306, 0.0), congestion_control=block)  # (finite, beyond any robot: held to its top)
         for _ in range(3000):  # (a flood of bad ones: said once, then at each thousandth)
-            session.put(key1, b"\x00\x01\x00\x00junk")
+            session.put(key1, b"\x00\x01\x00\x00junk", congestion_control=block)
         assert running.await_line(r"robot1: a cmd_vel of 8 bytes.*refused \(1000 so far\)")
         for _ in range(2000):  # (a flood of good ones: each step takes the newest)
-            session.put(key1, _twist(0.3, 0.0))
-        session.put(key2, _twist(0.0, 0.0))
+            session.put(key1, _twist(0.3, 0.0), congestion_control=block)
+        session.put(key2, _twist(0.0, 0.0), congestion_control=block)  # (then robot2's: step 2 has both)
         _until(lambda: len(set(clocks)) >= 2, "a step driven by the good commands")
         process.end(stop=True)  # (the router goes)
         assert running.await_line(r"the Zenoh router \w+ went away: the world goes on")

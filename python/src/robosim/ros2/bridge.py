@@ -4,7 +4,11 @@ node, ``/robosim``, with the world's topics (``robosim.ros2.messages``).
 
 The world runs in a RoboSim JVM (the simulation host, in one JVM: the same steps as any other layout) driven over the
 simulation link's ``drive`` call: each step, every driven robot's command (its newest ``cmd_vel``), one step, then
-the step's frame, turned into messages and published."""
+the step's frame, turned into messages and published.
+
+Threads: the caller of ``run`` owns time (it alone steps the world, publishes and writes the MCAP file); Zenoh's own
+threads call ``_heard`` with each ``cmd_vel`` sample, which only checks it and keeps it as the robot's newest
+command, under ``_lock`` for a few assignments; a signal's handler only sets ``_stopping``."""
 
 from __future__ import annotations
 
@@ -22,16 +26,17 @@ from typing import Any
 import zenoh
 import zenoh.ext
 
-from robosim.hostprocess import HostError
-from robosim.ros2.graph import TRANSIENT_LOCAL, Attachment, Node, gid, topic_keyexpr
+from robosim.ros2.graph import RMW_ZENOH_VERSION, TRANSIENT_LOCAL, Attachment, Node, gid, topic_keyexpr
 from robosim.ros2.messages import STORE, TWIST, Messages, Topic
 from robosim.ros2.recorder import Recorder
-from robosim.testing import ControlFailed, Simulation, SimulationHost
+from robosim.testing import Simulation, SimulationHost
 
 LOG = logging.getLogger("robosim.ros2")
 
 #: A ``geometry_msgs/msg/Twist`` in CDR: the 4-byte header and six float64s.
 TWIST_BYTES = 4 + 6 * 8
+#: The most a ``geometry_msgs/msg/TwistStamped`` on ``cmd_vel`` may be, bytes (its frame's name is free text).
+TWIST_STAMPED_MAX_BYTES = 1024
 #: The router a node of rmw_zenoh connects to by default.
 DEFAULT_ROUTER = "tcp/localhost:7447"
 
@@ -48,8 +53,8 @@ def session_config(mode: str, connect: list[str], listen: list[str]) -> zenoh.Co
     config.insert_json5("listen/endpoints", _json_list(listen))
     config.insert_json5("scouting/multicast/enabled", "false")
     config.insert_json5("timestamping/enabled", "true")
-    if mode != "router":  # (a peer waits for no router at the start, and tries again as rmw_zenoh's does)
-        config.insert_json5("connect/timeout_ms", "0")
+    if mode != "router":  # (a peer needs no router to start, and tries it again until it answers, as rmw_zenoh's)
+        config.insert_json5("connect/timeout_ms", "-1")
         config.insert_json5("connect/exit_on_failure", "false")
     return config
 
@@ -63,13 +68,16 @@ def _json_list(endpoints: list[str]) -> str:
 
 @dataclass
 class _Command:
-    """A driven robot's newest command: m/s and rad/s, when it came (simulated step), and what was refused since."""
+    """A driven robot's newest command: m/s and rad/s within its type's limits, when it came (the steps done then),
+    and what was refused, by kind."""
 
+    top_speed: float
+    top_turn: float
     ahead: float = 0.0
     turn: float = 0.0
     step: int = -1
-    received: int = 0
     refused: dict[str, int] = field(default_factory=dict)
+    gone: bool = False
 
 
 @dataclass(frozen=True)
@@ -139,7 +147,7 @@ class Bridge:
             builder.host(host)
         builder.step_timeout(_step_timeout_s(options))
         self.simulation = builder.start()
-        self._stop = threading.Event()
+        self._stopping = False
         self._lock = threading.Lock()
         self._fresh = threading.Condition(self._lock)
         self.session: zenoh.Session | None = None
@@ -153,7 +161,9 @@ class Bridge:
             driven = self.messages.driven()
             if not driven:
                 raise ValueError(f"{world}: no robot is driven by ROS 2 (give one control=\"ros2\")")
-            self.commands = {name: _Command() for name in driven}
+            limits = {r["name"]: r for r in self.simulation.world()["robots"]}
+            self.commands = {name: _Command(float(limits[name]["max_speed_mm_s"]) / 1000,
+                                            math.radians(float(limits[name]["max_turn_deg_s"]))) for name in driven}
             self.step_s = self.messages.step_ms / 1000
             self._hold_steps = max(1, round(options.command_timeout_s / self.step_s))
             if options.mcap is not None:
@@ -189,11 +199,11 @@ class Bridge:
                 self._publishers[topic.name] = (publisher, Attachment(gid(token)))
             else:
                 robot = topic.name.split("/")[1]
-                self._subscribers.append(self.session.declare_subscriber(key, self._listener(robot)))
+                self._subscribers.append(self.session.declare_subscriber(key, self._listener(robot, topic.type)))
             self._tokens.append(self.session.liveliness().declare_token(token))
-        LOG.info("ROS 2 node /%s on domain %d (%s mode, %s): %d topics, driving %s", options.node_name,
-                 options.domain, options.mode, ", ".join(options.connect) or "no router", len(self.messages.topics()),
-                 ", ".join(self.commands))
+        LOG.info("ROS 2 node /%s on domain %d (%s mode, %s; rmw_zenoh %s's conventions): %d topics, driving %s",
+                 options.node_name, options.domain, options.mode, ", ".join(options.connect) or "no router",
+                 RMW_ZENOH_VERSION, len({t.name for t in self.messages.topics()}), ", ".join(self.commands))
 
     def _transport_event(self, event: Any) -> None:
         whatami = str(event.transport.whatami).lower()
@@ -205,30 +215,39 @@ class Bridge:
             LOG.warning("the Zenoh router %s went away: the world goes on, publishing to whoever is still "
                         "connected, and the session connects again when a router is back", event.transport.zid)
 
-    def _listener(self, robot: str) -> Callable[[Any], None]:
+    def _listener(self, robot: str, kind: str) -> Callable[[Any], None]:
         def heard(sample: Any) -> None:
             try:
-                self._heard(robot, sample)
+                self._heard(robot, kind, sample.payload.to_bytes())
             except Exception as e:  # (Zenoh's thread must not die of one sample)
                 self._refuse(robot, "fault", f"a cmd_vel the bridge could not take: {type(e).__name__}")
         return heard
 
-    def _heard(self, robot: str, sample: Any) -> None:
-        payload = sample.payload.to_bytes()
-        if len(payload) != TWIST_BYTES or payload[:2] not in (b"\x00\x01", b"\x00\x00"):
-            self._refuse(robot, "size", f"a cmd_vel of {len(payload)} bytes, not a geometry_msgs/msg/Twist in CDR "
-                                        f"({TWIST_BYTES} bytes)")
+    def _heard(self, robot: str, kind: str, payload: bytes) -> None:
+        """A ``cmd_vel`` of ``kind`` (``Twist``, or ``TwistStamped`` as Nav2 may send) checked before it is decoded:
+        its size, its encoding, its values finite; then the robot's newest command, held to its type's limits."""
+        if kind == TWIST:
+            fits = len(payload) == TWIST_BYTES
+            shape = f"a geometry_msgs/msg/Twist in CDR ({TWIST_BYTES} bytes)"
+        else:
+            fits = TWIST_BYTES < len(payload) <= TWIST_STAMPED_MAX_BYTES
+            shape = f"a geometry_msgs/msg/TwistStamped in CDR (at most {TWIST_STAMPED_MAX_BYTES} bytes)"
+        if not fits or payload[:2] not in (b"\x00\x01", b"\x00\x00"):
+            self._refuse(robot, "size", f"a cmd_vel of {len(payload)} bytes, not {shape}")
             return
-        twist = STORE.deserialize_cdr(payload, TWIST)
+        message = STORE.deserialize_cdr(payload, kind)
+        twist = message if kind == TWIST else message.twist
         values = (twist.linear.x, twist.linear.y, twist.linear.z, twist.angular.x, twist.angular.y, twist.angular.z)
         if not all(math.isfinite(v) for v in values):
             self._refuse(robot, "nan", "a cmd_vel with a value that is not a finite number")
             return
         with self._fresh:
             command = self.commands[robot]
-            command.ahead, command.turn = twist.linear.x, twist.angular.z
+            if command.gone:
+                return
+            command.ahead = max(-command.top_speed, min(command.top_speed, twist.linear.x))
+            command.turn = max(-command.top_turn, min(command.top_turn, twist.angular.z))
             command.step = self.steps
-            command.received += 1
             self._fresh.notify_all()
 
     def _refuse(self, robot: str, kind: str, why: str) -> None:
@@ -265,22 +284,24 @@ class Bridge:
         return [c.ahead * 1000, math.degrees(c.turn)]
 
     def _await_commands(self, last: list[tuple[Topic, bytearray]]) -> bool:
-        """Lock-step: waits until every driven robot has a command given since the last step's clock; False if
-        stopped first. Every second of waiting it sends the last step's ``/clock`` and each robot's own topics
-        again (not ``/tf``, nor messages received: they would count twice), so that a node that joined late, or
-        missed them, hears the step it is to answer; every 10 s it says whom it waits for."""
+        """Lock-step: waits until every driven robot in the world has a command given since the last step's clock;
+        False if stopped first. Until the first command of all comes, it sends the last step's ``/clock`` and each
+        robot's own topics again every second (not ``/tf``, nor messages received: they would count twice), so that
+        nodes that start after the bridge hear the step they are to answer; once nodes answer, never again (a slow
+        node would answer twice). Every 10 s it says whom it waits for."""
         again = [(t, b) for t, b in last if t is self.messages.clock or (t.name.count("/") == 2
                  and not t.name.endswith("/received"))]
         said = waited = time.monotonic()
         while True:
             with self._fresh:
-                late = [r for r, c in self.commands.items() if c.step < self.steps]
+                late = [r for r, c in self.commands.items() if not c.gone and c.step < self.steps]
                 if not late:
                     return True
-                if self._stop.is_set():
+                if self._stopping:
                     return False
                 self._fresh.wait(0.2)
-            if time.monotonic() - waited >= 1:
+                answered = any(c.step >= 0 for c in self.commands.values())
+            if not answered and time.monotonic() - waited >= 1:
                 waited = time.monotonic()
                 self._publish(self.steps, again, record=False)
             if time.monotonic() - said >= 10:
@@ -288,10 +309,29 @@ class Bridge:
                 LOG.info("lock-step: step %d waits for a cmd_vel of %s", self.steps, ", ".join(late))
 
     def stop(self) -> None:
-        """Ends ``run`` at the next step (any thread, or a signal's handler)."""
-        self._stop.set()
-        with self._fresh:
-            self._fresh.notify_all()
+        """Ends ``run`` at the next step: any thread, or a signal's handler (it takes no lock, so a signal that comes
+        while the loop holds one cannot wait for it)."""
+        self._stopping = True
+
+    def _pace(self, due: float) -> bool:
+        """Waits until ``due`` (monotonic seconds), a tenth of a second at a time; False if stopped first."""
+        while not self._stopping:
+            left = due - time.monotonic()
+            if left <= 0:
+                return True
+            time.sleep(min(left, 0.1))
+        return False
+
+    def _left(self, frame: dict[str, Any]) -> None:
+        """Driven robots without senses in ``frame`` that have left the world: said once, and no longer commanded
+        or waited for."""
+        for robot, command in self.commands.items():
+            if not command.gone and robot not in frame["robots"]:
+                why = self.simulation.ended(robot)
+                if why is not None:
+                    with self._lock:
+                        command.gone = True
+                    LOG.warning("%s has left the world (%s): it is no longer driven", robot, why)
 
     def run(self) -> int:
         """Steps the world until its steps are done, every driven robot has left it, or ``stop()``; the steps run.
@@ -305,16 +345,14 @@ class Bridge:
         rate = self.options.real_time_factor
         pipelined = rate == 0 and not self.options.lockstep
         pending: dict[str, Any] | None = None  # (as fast as it goes: a step turned into messages while the next runs)
-        while not self._stop.is_set() and (self.options.steps is None or self.steps < self.options.steps):
+        while not self._stopping and (self.options.steps is None or self.steps < self.options.steps):
             if self.options.lockstep:
                 if not self._await_commands(last):
                     break
-            elif rate > 0:
-                due = start + (self.steps - begun + 1) * self.step_s / rate
-                if self._stop.wait(max(0.0, due - time.monotonic())):
-                    break
+            elif rate > 0 and not self._pace(start + (self.steps - begun + 1) * self.step_s / rate):
+                break
             with self._lock:
-                commands = {r: self._command_of(r) for r in self.commands}
+                commands = {r: self._command_of(r) for r, c in self.commands.items() if not c.gone}
             frame = self.simulation.drive(commands, meanwhile=None if pending is None
                                           else functools.partial(self._publish_frame, pending))
             pending = None
@@ -324,9 +362,11 @@ class Bridge:
                 pending = frame
             else:  # (paced or in lock-step, a node hears a step as soon as it is done)
                 last = self._publish_frame(frame)
-            if not frame["robots"] and all(self.simulation.ended(r) for r in self.commands):
-                LOG.info("every driven robot has left the world: the bridge ends")
-                break
+            if len(frame["robots"]) < len(commands):
+                self._left(frame)
+                if all(c.gone for c in self.commands.values()):
+                    LOG.info("every driven robot has left the world: the bridge ends")
+                    break
         if pending is not None:
             self._publish_frame(pending)
         self.seconds = time.monotonic() - start
@@ -334,11 +374,11 @@ class Bridge:
         return self.steps
 
     def close(self) -> None:
-        """Ends the node (its tokens withdrawn), the MCAP file and the simulation."""
+        """Ends the node (its tokens withdrawn), the MCAP file and the simulation, each whatever the others did."""
         for closing in (self._close_session, self._close_recorder, self._close_simulation):
             try:
                 closing()
-            except (ControlFailed, ValueError, OSError, HostError) as e:  # (a Ctrl-C reaches the host's JVM too)
+            except Exception as e:  # (a Ctrl-C reaches the host's JVM too; a session that broke; a full disk)
                 LOG.warning("while closing: %s", e)
 
     def _close_session(self) -> None:

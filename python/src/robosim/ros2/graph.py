@@ -19,12 +19,10 @@ ADMIN_SPACE = "@ros2_lv"
 #: The version of rmw_zenoh whose conventions these are (README: "From ROS 2").
 RMW_ZENOH_VERSION = "0.6.7"
 
-# QoS enumerations as rmw writes them into a token (rmw/types.h).
+# QoS enumerations as rmw writes them into a token (rmw/types.h); the history is always keep-last.
 RELIABLE = 1
-BEST_EFFORT = 2
 TRANSIENT_LOCAL = 1
 VOLATILE = 2
-KEEP_LAST = 1
 
 
 @dataclass(frozen=True)
@@ -117,11 +115,3 @@ class Attachment:
 
 
 _ATTACHMENT = struct.Struct("<qqB16s")
-
-
-def read_attachment(raw: bytes) -> tuple[int, int, bytes]:
-    """An attachment's sequence number, time (ns) and GID; a ValueError if it is not one."""
-    if len(raw) != 33 or raw[16] != 16:
-        raise ValueError(f"an attachment of {len(raw)} bytes, not rmw_zenoh's 33")
-    sequence, stamp, _, publisher = struct.unpack("<qqB16s", raw)
-    return sequence, stamp, publisher

@@ -8,6 +8,7 @@ ROS 2" (``Messages.topics`` is the list)."""
 from __future__ import annotations
 
 import math
+import re
 import struct
 from collections.abc import Iterable
 from dataclasses import dataclass
@@ -28,6 +29,7 @@ GRID = "nav_msgs/msg/OccupancyGrid"
 MARKERS = "visualization_msgs/msg/MarkerArray"
 ODOMETRY = "nav_msgs/msg/Odometry"
 TWIST = "geometry_msgs/msg/Twist"
+TWIST_STAMPED = "geometry_msgs/msg/TwistStamped"
 SCAN = "sensor_msgs/msg/LaserScan"
 RANGE = "sensor_msgs/msg/Range"
 VALUES = "std_msgs/msg/Float64MultiArray"
@@ -35,6 +37,10 @@ TEXT = "std_msgs/msg/String"
 
 #: Sensors of these kinds make the scan (the first the robot has).
 SCAN_KINDS = ("laser",)
+#: A ROS name's token: a letter, then letters, digits and single underscores.
+_TOKEN = re.compile(r"[A-Za-z](?:_?[A-Za-z0-9])*_?")
+#: A robot's topics of its own, which no sensor of it may be named.
+_OWN = ("odom", "cmd_vel", "scan", "received")
 
 
 @dataclass(frozen=True)
@@ -113,6 +119,9 @@ class _Robot:
 
     def __init__(self, spec: dict[str, Any], index: int, sensed: bool) -> None:
         self.name = str(spec["name"])
+        if not _TOKEN.fullmatch(self.name):
+            raise ValueError(f"robot {self.name!r:.80} cannot be a ROS namespace: a ROS name is a letter, then "
+                             f"letters, digits and single underscores (rename it in the world's file)")
         self.index = index
         self.driven = bool(spec.get("driven", False))
         self.sensed = sensed
@@ -122,10 +131,16 @@ class _Robot:
         self.rays = [tuple(float(v) for v in r) for r in spec.get("rays", [])]
         self.sensors = [(str(s["name"]), str(s["kind"]), dict(s.get("attributes", {})))
                         for s in spec.get("sensors", [])]
+        for name, _, _ in self.sensors if sensed else []:
+            if not _TOKEN.fullmatch(name) or name in _OWN:
+                raise ValueError(f"robot {self.name}'s sensor {name!r:.80} cannot be a ROS topic of its own: a ROS "
+                                 f"name is a letter, then letters, digits and single underscores, and not one of "
+                                 f"{', '.join(_OWN)} (rename it in the world's file)")
         self.start: tuple[float, float, float] | None = None
         self.last: tuple[float, float, float] | None = None
         self.odom = Topic(f"/{self.name}/odom", ODOMETRY)
-        self.cmd_vel = Topic(f"/{self.name}/cmd_vel", TWIST, out=False)
+        self.cmd_vel = [Topic(f"/{self.name}/cmd_vel", TWIST, out=False),
+                        Topic(f"/{self.name}/cmd_vel", TWIST_STAMPED, out=False)]
         self.scan_source = next((n for n, k, _ in self.sensors if k in SCAN_KINDS), None)
         has_scan = self.scan_source is not None or bool(self.sonars)
         self.scan = Topic(f"/{self.name}/scan", SCAN) if sensed and has_scan else None
@@ -146,7 +161,7 @@ class _Robot:
     def topics(self) -> list[Topic]:
         out = [self.odom]
         if self.driven:
-            out.append(self.cmd_vel)
+            out.extend(self.cmd_vel)
         if self.scan is not None:
             out.append(self.scan)
         out.extend(self.sensor_topics.values())

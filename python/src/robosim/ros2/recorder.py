@@ -40,10 +40,7 @@ class Recorder:
                 definition = STORE.generate_msgdef(topic.type, ros_version=2)[0]
                 schema = self._writer.register_schema(topic.type, "ros2msg", definition.encode())
                 self._schemas[topic.type] = schema
-            durability = "transient_local" if topic.qos.durability == 1 else "volatile"
-            qos = (f"- history: keep_last\n  depth: {topic.qos.depth}\n  reliability: reliable\n"
-                   f"  durability: {durability}\n")
-            channel = self._writer.register_channel(topic.name, "cdr", schema, {"offered_qos_profiles": qos})
+            channel = self._writer.register_channel(topic.name, "cdr", schema)  # (no QoS: a player's defaults)
             self._channels[topic.name] = channel
         return channel
 

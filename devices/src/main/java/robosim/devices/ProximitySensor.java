@@ -73,7 +73,7 @@ public final class ProximitySensor extends RobotSensor {
             case "foot-bot" -> {
                 return reading >= 1 ? 0.009889556 : Math.max(0.009889556, 0.0100527 / reading - 0.000163144);
             }
-            case "e-puck" -> { // (the quadratic falls from 1.08212 at 0 to 0.0851 at 0.05 m: one root there)
+            case "e-puck" -> { // (the quadratic falls from 1.08212 at 0 to 0 at 0.0479 m: one root there)
                 double c = 1.08212 - Math.min(reading, 1.08212);
                 double d = (36.8961 - Math.sqrt(36.8961 * 36.8961 - 4 * 298.701 * c)) / (2 * 298.701);
                 return Math.min(0.05, Math.max(0, d));

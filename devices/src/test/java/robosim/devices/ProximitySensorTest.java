@@ -9,11 +9,13 @@ import org.junit.jupiter.api.Test;
 class ProximitySensorTest {
     @Test
     void aReadingGivesBackTheDistanceItWasReadAt() {
-        for (double m = 0.01; m <= 0.1; m += 0.005) {
+        for (int mm = 10; mm <= 100; mm += 5) {
+            double m = mm / 1000.0;
             double footBot = 0.0100527 / (m + 0.000163144);
             assertEquals(m, ProximitySensor.distanceM("foot-bot", footBot), 1e-12, "foot-bot at " + m);
         }
-        for (double m = 0.0; m <= 0.05; m += 0.0025) {
+        for (int tenths = 0; tenths <= 470; tenths += 25) { // (the law falls to 0 at 0.0479 m: within, every reading)
+            double m = tenths / 10000.0;
             double ePuck = Math.min(1, 298.701 * m * m - 36.8961 * m + 1.08212);
             double back = ProximitySensor.distanceM("e-puck", ePuck);
             assertEquals(ePuck, Math.min(1, 298.701 * back * back - 36.8961 * back + 1.08212), 1e-9, "e-puck at " + m);

@@ -18,7 +18,7 @@ import robosim.protocol.RobotProperties;
 import robosim.protocol.SonarSpec;
 
 /**
- * The ROS 2 bridge's frames (python/README.md, "From ROS 2"; Python's {@code robosim.ros2.frames} reads them): a world
+ * The ROS 2 bridge's frames (python/README.md, "From ROS 2"; Python's {@code robosim.ros2.messages} reads them): a world
  * as the bridge needs it to name, place and describe its topics, and a step's state, each one MessagePack value, from
  * a live simulation (the simulation link's {@code world} and {@code drive}) or from a recording ({@code record-tool.sh
  * export}) alike.
@@ -30,7 +30,7 @@ import robosim.protocol.SonarSpec;
  * attribute of the kind, as the file gives it or by default;
  * <li>a step: {@code {step, poses: BIN, robots: {NAME: STATE}}}: {@code step} the steps completed, {@code poses} every
  * robot's x, y (mm) and heading (degrees) in the world's order as little-endian float64s, STATE {@code {sonar: BIN,
- * readings: {SENSOR: BIN}, ranges: {SENSOR: BIN}, received: [[from, text], ...], contact}} for each robot whose
+ * readings: {SENSOR: BIN}, ranges: {SENSOR: BIN}, received: [[from, text], ...]}} for each robot whose
  * senses the step holds ({@code ranges}: a proximity sensor's readings as distances, m, by its model's law turned
  * round; +infinity where nothing is in range).
  * </ul>
@@ -112,8 +112,8 @@ public final class BridgeFrames {
 
     /** Packs one robot's state (its sensors' specs: for the proximity sensors' ranges). */
     public static void state(MessagePacker p, double[] sonarMm, Map<String, double[]> readings, List<DeviceSpec> sensors,
-            List<Message> received, String contact) throws IOException {
-        p.packMapHeader(5);
+            List<Message> received) throws IOException {
+        p.packMapHeader(4);
         p.packString("sonar");
         doubles(p, sonarMm == null ? new double[0] : sonarMm);
         p.packString("readings").packMapHeader(readings.size());
@@ -142,7 +142,6 @@ public final class BridgeFrames {
         for (Message m : received) {
             p.packArrayHeader(2).packString(m.from()).packString(m.text());
         }
-        p.packString("contact").packString(contact == null ? "" : contact);
     }
 
     private static void doubles(MessagePacker p, double[] values) throws IOException {

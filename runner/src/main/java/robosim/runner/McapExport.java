@@ -122,7 +122,7 @@ final class McapExport {
                 }
                 p.packString(name);
                 BridgeFrames.state(p, v.robot() < n ? u.sonarMm(v.robot()) : null, readings,
-                        sensors.getOrDefault(name, List.of()), received, v.contact());
+                        sensors.getOrDefault(name, List.of()), received);
             }
             LinkFrames.write(out, p.toByteArray());
         }

@@ -25,16 +25,21 @@ final class DrivenRobot implements RobotControl {
     /** The most messages a step's state carries; more wait for the next step (none is lost). */
     static final int MAX_MESSAGES = 256;
 
-    /** What the robot sensed after a step: its pose, sonar, every sensor's reading, messages come, what it touched. */
-    record State(double xMm, double yMm, double headingDeg, double[] sonarMm, Map<String, double[]> readings,
-            List<Message> received, String contact) {
+    /** What the robot sensed after the step of command {@code command}: its sonar, every sensor's reading, messages come. */
+    record State(long command, double[] sonarMm, Map<String, double[]> readings, List<Message> received) {
+    }
+
+    /** A command: its number (the first 1) and the wheels' speeds, mm/s. */
+    private record Wheels(long number, double left, double right) {
     }
 
     private final String name;
     private final double topMmPerS;
     private final double topDegPerS;
     private final double wheelBaseMm;
-    private final BlockingQueue<double[]> commands = new ArrayBlockingQueue<>(1);
+    private final BlockingQueue<Wheels> commands = new ArrayBlockingQueue<>(1);
+    /** The commands given so far (the link's thread alone). */
+    private long given;
     private final BlockingQueue<State> states = new ArrayBlockingQueue<>(1);
 
     /** Robot {@code name} of type {@code type} (a registered type's name). */
@@ -67,22 +72,33 @@ final class DrivenRobot implements RobotControl {
         double w = Math.toRadians(turn) * wheelBaseMm / 2;
         double left = Math.max(-topMmPerS, Math.min(topMmPerS, ahead - w)); // (a rounding past the top held to it)
         double right = Math.max(-topMmPerS, Math.min(topMmPerS, ahead + w));
-        if (!commands.offer(new double[] {left, right})) {
+        if (!commands.offer(new Wheels(given + 1, left, right))) {
             throw new IllegalStateException(name + " has a command not yet taken");
         }
+        given++;
     }
 
-    /** The state after the step run since the last command, waiting up to {@code ms} for it; null if none came. */
+    /**
+     * The state after the step of the last command, waiting up to {@code ms} for it; null if it did not come (a
+     * state of an earlier command, late, is passed over).
+     */
     State state(long ms) throws InterruptedException {
-        return states.poll(ms, TimeUnit.MILLISECONDS);
+        long deadline = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(ms);
+        for (State s = states.poll(ms, TimeUnit.MILLISECONDS); s != null;
+                s = states.poll(deadline - System.nanoTime(), TimeUnit.NANOSECONDS)) {
+            if (s.command() == given) {
+                return s;
+            }
+        }
+        return null;
     }
 
     @Override
     public void run(Robot robot) throws InterruptedException {
         List<String> sensors = robot.sensorNames();
         while (true) {
-            double[] wheels = commands.take();
-            robot.setWheelSpeeds(wheels[0], wheels[1]);
+            Wheels wheels = commands.take();
+            robot.setWheelSpeeds(wheels.left(), wheels.right());
             robot.step();
             Map<String, double[]> readings = new LinkedHashMap<>();
             for (String s : sensors) {
@@ -94,8 +110,7 @@ final class DrivenRobot implements RobotControl {
                 received.add(m);
             }
             states.clear(); // (a state the link gave up waiting for is stale: the newest is the one it wants)
-            states.offer(new State(robot.xMm(), robot.yMm(), robot.headingDeg(), robot.sonarRanges(), readings, received,
-                    robot.lastContact()));
+            states.offer(new State(wheels.number(), robot.sonarRanges(), readings, received));
         }
     }
 }

@@ -552,9 +552,13 @@ final class SimulationLink {
             given.put(robot, new double[] {v.asArrayValue().get(0).asNumberValue().toDouble(),
                     v.asArrayValue().get(1).asNumberValue().toDouble()});
         }
+        List<DrivenRobot> commanded = new ArrayList<>();
         for (DrivenRobot d : o.driven().values()) {
-            double[] c = given.getOrDefault(d.name(), new double[2]);
-            d.command(c[0], c[1]);
+            if (o.sim().ended(d.name()) == null) { // (one that left takes no command: it would wait for ever)
+                double[] c = given.getOrDefault(d.name(), new double[2]);
+                d.command(c[0], c[1]);
+                commanded.add(d);
+            }
         }
         List<ControlFailure> failed = new ArrayList<>();
         try {
@@ -564,7 +568,7 @@ final class SimulationLink {
         }
         failed.addAll(unsaid(o));
         Map<String, DrivenRobot.State> states = new LinkedHashMap<>();
-        for (DrivenRobot d : o.driven().values()) {
+        for (DrivenRobot d : commanded) {
             if (o.sim().ended(d.name()) == null) { // (a robot still in the world has its state within the step's time)
                 try {
                     DrivenRobot.State s = d.state(STATE_WAIT_MS);
@@ -605,8 +609,7 @@ final class SimulationLink {
         for (Map.Entry<String, DrivenRobot.State> e : states.entrySet()) {
             DrivenRobot.State s = e.getValue();
             reply.packString(e.getKey());
-            robosim.runner.BridgeFrames.state(reply, s.sonarMm(), s.readings(), sensors.get(e.getKey()), s.received(),
-                    s.contact());
+            robosim.runner.BridgeFrames.state(reply, s.sonarMm(), s.readings(), sensors.get(e.getKey()), s.received());
         }
     }
 
