@@ -99,7 +99,12 @@ class Process:
     def end(self, stop: bool = False) -> int:
         if stop and self.process.poll() is None:
             os.killpg(self.process.pid, signal.SIGTERM)
-        code = self.process.wait(timeout=WAIT_S)
+        try:
+            code = self.process.wait(timeout=WAIT_S)
+        except subprocess.TimeoutExpired:  # (nothing of it left behind: its JVM is in its process group)
+            os.killpg(self.process.pid, signal.SIGKILL)
+            self.process.wait()
+            raise
         with self._said:  # (the reader takes the last lines)
             self._said.wait_for(lambda: self._read_all, timeout=WAIT_S)
         return code
@@ -334,12 +339,14 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
                 assert TYPES.deserialize_cdr(latched[topic], TOPICS[topic]) is not None
 
             answered: set[int] = set()
+            expected = {k * 100_000_000 for k in range(1, 5)}
             attachment = 0
-            while running.process.poll() is None:  # (a node of our own: each step's clock answered once)
+            deadline = time.monotonic() + WAIT_S
+            while answered != expected:  # (a node of our own: each step's clock answered once)
+                assert time.monotonic() < deadline, f"clocks answered {sorted(answered)}:\n{running.output()}"
                 with heard_clock:
                     done = set(answered)
-                    heard_clock.wait_for(lambda done=done: set(clocks) - done or running.process.poll() is not None,
-                                         timeout=1.0)
+                    heard_clock.wait_for(lambda done=done: set(clocks) - done, timeout=1.0)
                     fresh = set(clocks) - done
                 for _ in fresh:
                     for robot in ("robot1", "robot2"):
@@ -349,7 +356,6 @@ def test_every_sample_on_the_wire_is_rmw_zenohs_and_decodes(router: tuple[Proces
                                     congestion_control=zenoh.CongestionControl.BLOCK)
                 answered |= fresh
             assert running.end() == 0, running.output()
-            assert answered == {k * 100_000_000 for k in range(1, 5)}
         finally:
             running.end(stop=True)
     finally:
@@ -393,6 +399,7 @@ def test_bad_commands_and_a_lost_router_are_said_and_the_world_goes_on(router: t
                                                                              "rosgraph_msgs/msg/Clock").clock.nanosec))
     running = bridge(port, "--lockstep", "--pose-log", str(tmp_path / "poses.csv"))
     try:
+        _until(lambda: bool(clocks), "the first step's clock")  # (a command before it would answer no step)
         key1 = _key("/robot1/cmd_vel", "geometry_msgs/msg/Twist")
         key2 = _key("/robot2/cmd_vel", "geometry_msgs/msg/Twist")
         string = bytes(TYPES.serialize_cdr(TYPES.types["std_msgs/msg/String"](data="forward!"), "std_msgs/msg/String"))
@@ -403,9 +410,9 @@ def test_bad_commands_and_a_lost_router_are_said_and_the_world_goes_on(router: t
         put_until(running, lambda: session.put(key1, _twist(math.nan, 0.0), congestion_control=block),
                   r"robot1: a cmd_vel with a value that is not a finite number: refused \(1 so far\)")
         session.put(key1, _twist(1e306, 0.0), congestion_control=block)  # (finite, beyond any robot: held to its top)
-        for _ in range(3000):  # (a flood of bad ones: said once, then at each thousandth)
+        flood = time.monotonic()
+        for _ in range(3000):  # (a flood of bad ones: a line every 10 s at most, each counted)
             session.put(key1, b"\x00\x01\x00\x00junk", congestion_control=block)
-        assert running.await_line(r"robot1: a cmd_vel of 8 bytes.*refused \(1000 so far\)")
         for _ in range(2000):  # (a flood of good ones: each step takes the newest)
             session.put(key1, _twist(0.3, 0.0), congestion_control=block)
         session.put(key2, _twist(0.0, 0.0), congestion_control=block)  # (then robot2's: step 2 has both)
@@ -418,8 +425,40 @@ def test_bad_commands_and_a_lost_router_are_said_and_the_world_goes_on(router: t
         code = running.end(stop=True)
     assert code == 0, running.output()
     assert re.search(r"the bridge ends after \d+ steps", running.output())
+    said = len(re.findall(r"robot1: a cmd_vel of 8 bytes", running.output()))
+    assert said <= 1 + (time.monotonic() - flood) / 10, running.output()
+    total = re.search(r"robot1: (\d+) cmd_vel refused in all \(nan (\d+), size (\d+)\)", running.output())
+    assert total and int(total.group(2)) >= 1 and int(total.group(3)) >= 3001, running.output()
     poses = _pose_log(tmp_path / "poses.csv")
     assert math.isclose(poses[(2, "robot1")][0], 1.0 + 0.03, abs_tol=1e-9)  # (step 1 stood still; step 2 at 0.3 m/s)
+
+
+def test_paced_a_command_holds_its_timeout_and_as_fast_as_it_goes_the_mcap_has_every_step(
+        router: tuple[Process, int], tmp_path: Path) -> None:
+    _, port = router
+    session = _peer(port)
+    clocks: list[int] = []
+    session.declare_subscriber(_key("/clock", "rosgraph_msgs/msg/Clock"), lambda s: clocks.append(1))
+    running = bridge(port, "--real-time-factor", "2", "--steps", "100", "--command-timeout", "0.5", "--pose-log",
+                     str(tmp_path / "paced.csv"))
+    try:
+        command = session.declare_publisher(_key("/robot1/cmd_vel", "geometry_msgs/msg/Twist"),
+                                            congestion_control=zenoh.CongestionControl.BLOCK)
+        _until(lambda: command.matching_status.matching, "the bridge's cmd_vel subscriber, seen from here")
+        command.put(_twist(0.2, 0.0))  # (once: it holds 0.5 s of simulated time)
+    finally:
+        session.close()
+    assert running.end() == 0, running.output()
+    xs = [x for (step, robot), (x, _, _) in sorted(_pose_log(tmp_path / "paced.csv").items()) if robot == "robot1"]
+    moved = [round((b - a) * 1000, 6) for a, b in zip(xs, xs[1:], strict=False) if b != a]
+    # (0.2 m/s, 20 mm a step, for 0.5 s of simulated time from the step it came in: five steps if it came between two
+    # steps, four if it came while one was computed, too late for it)
+    assert moved in ([20.0] * 4, [20.0] * 5), moved
+
+    running = bridge(port, "--real-time-factor", "0", "--steps", "50", "--pose-log", str(tmp_path / "fast.csv"),
+                     "--mcap", str(tmp_path / "fast.mcap"))
+    assert running.end() == 0, running.output()
+    assert_mcap_matches(tmp_path / "fast.mcap", _pose_log(tmp_path / "fast.csv"))
 
 
 def test_a_recording_exports_to_mcap_with_the_pose_log_s_poses(tmp_path: Path) -> None:

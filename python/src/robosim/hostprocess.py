@@ -8,6 +8,7 @@ import collections
 import os
 import re
 import secrets
+import signal
 import socket
 import subprocess
 import sys
@@ -55,7 +56,8 @@ class HostProcess:
         command = ["bash", str(home / "scripts" / script), *arguments]
         environment = dict(os.environ if env is None else env, ROBOSIM_LINK_KEY=self.key)
         self.process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
-                                        stdin=subprocess.DEVNULL, env=environment, text=True, errors="replace")
+                                        stdin=subprocess.DEVNULL, env=environment, text=True, errors="replace",
+                                        start_new_session=True)  # (a terminal's Ctrl-C is this process's to handle)
         self._output: collections.deque[str] = collections.deque(maxlen=40)
         self._sock: socket.socket | None = None
         try:
@@ -141,5 +143,8 @@ class HostProcess:
         try:
             self.process.wait(timeout=10)
         except subprocess.TimeoutExpired:
-            self.process.kill()
+            try:
+                os.killpg(self.process.pid, signal.SIGKILL)  # (its own session: the script and the JVM it started)
+            except ProcessLookupError:
+                pass
             self.process.wait()

@@ -83,7 +83,8 @@ class _Command:
 @dataclass(frozen=True)
 class Options:
     """How the bridge runs: the ROS domain, the Zenoh session, the pace, how long a command holds, the run's length,
-    a live MCAP file, a pose log, the world's parameters and seed, the map's cell size."""
+    a live MCAP file, a pose log, the world's parameters and seed, the map's cell size, whether it publishes
+    ``map -> NAME/odom``."""
 
     domain: int = 0
     mode: str = "peer"
@@ -98,6 +99,7 @@ class Options:
     params: tuple[tuple[str, str], ...] = ()
     seed: int | None = None
     map_resolution_m: float = 0.05
+    map_transform: bool = True
     node_name: str = "robosim"
 
 
@@ -111,17 +113,14 @@ def domain_from_environment() -> int:
     return int(raw)
 
 
-#: How long a driven robot may wait for its command in lock-step before the world drops it, s: a day (a node may be
-#: stopped in a debugger; the bridge says every 10 s whom it waits for).
-LOCKSTEP_WAIT_S = 86_400.0
-
-
-def _step_timeout_s(options: Options) -> float:
-    """The world's step timeout: a driven robot asks for its next step only once its command is in hand, so the
-    Environment must wait as long as the bridge may: in lock-step a day, else 10 s or three steps at the pace."""
-    if options.lockstep:
-        return LOCKSTEP_WAIT_S
-    return 10.0 if options.real_time_factor == 0 else max(10.0, 3 * 60.0 / options.real_time_factor)
+#: The world's step timeout, s: a day. A driven robot asks for its next step only once the bridge gives its command,
+#: and the Environment counts the time from the last step's end, so it must wait as long as the bridge may (waiting
+#: in lock-step for a node, stopped in a debugger, paused at a slow pace).
+STEP_WAIT_S = 86_400.0
+#: The least time between two lines of one kind about one robot (or the router), s: a flood is said, not echoed.
+SAY_EVERY_S = 10.0
+#: The most a sample may be that the bridge's session takes, bytes (it hears only commands; Zenoh's default is 1 GiB).
+MAX_RECEIVED_BYTES = 65_536
 
 
 class Bridge:
@@ -145,10 +144,12 @@ class Bridge:
             builder.pose_log(options.pose_log)
         if host is not None:
             builder.host(host)
-        builder.step_timeout(_step_timeout_s(options))
+        builder.step_timeout(STEP_WAIT_S)
         self.simulation = builder.start()
         self._stopping = False
         self._lock = threading.Lock()
+        #: When a line of each kind about each robot (or the router) was last said, monotonic seconds.
+        self._said: dict[tuple[str, str], float] = {}
         self._fresh = threading.Condition(self._lock)
         self.session: zenoh.Session | None = None
         self.recorder: Recorder | None = None
@@ -157,7 +158,8 @@ class Bridge:
         self.seconds = 0.0
         self.rate = 0.0
         try:
-            self.messages = Messages(self.simulation.world(), map_resolution_m=options.map_resolution_m)
+            self.messages = Messages(self.simulation.world(), map_resolution_m=options.map_resolution_m,
+                                     map_transform=options.map_transform)
             driven = self.messages.driven()
             if not driven:
                 raise ValueError(f"{world}: no robot is driven by ROS 2 (give one control=\"ros2\")")
@@ -176,7 +178,9 @@ class Bridge:
     # ---- the Zenoh side --------------------------------------------------------------------------------------
 
     def _open(self, options: Options) -> None:
-        self.session = zenoh.open(session_config(options.mode, list(options.connect), list(options.listen)))
+        config = session_config(options.mode, list(options.connect), list(options.listen))
+        config.insert_json5("transport/link/rx/max_message_size", str(MAX_RECEIVED_BYTES))
+        self.session = zenoh.open(config)
         self._events = self.session.info.declare_transport_events_listener(self._transport_event, history=True)
         zid = str(self.session.info.zid())
         self.node = Node(options.domain, zid, 0, options.node_name)
@@ -194,6 +198,8 @@ class Bridge:
                         self.session, key, cache=zenoh.ext.CacheConfig(max_samples=topic.qos.depth),
                         publisher_detection=True,
                         sample_miss_detection=zenoh.ext.MissDetectionConfig(sporadic_heartbeat=0.5))
+                elif topic is self.messages.clock:  # (a node in lock-step answers each: none is dropped)
+                    publisher = self.session.declare_publisher(key, congestion_control=zenoh.CongestionControl.BLOCK)
                 else:
                     publisher = self.session.declare_publisher(key)
                 self._publishers[topic.name] = (publisher, Attachment(gid(token)))
@@ -206,18 +212,32 @@ class Bridge:
                  RMW_ZENOH_VERSION, len({t.name for t in self.messages.topics()}), ", ".join(self.commands))
 
     def _transport_event(self, event: Any) -> None:
-        whatami = str(event.transport.whatami).lower()
-        if "router" not in whatami:
+        if "router" not in str(event.transport.whatami).lower():
             return
         if "put" in str(event.kind).lower():
-            LOG.info("connected to the Zenoh router %s", event.transport.zid)
-        else:
+            if self._due("router", "connected"):
+                LOG.info("connected to the Zenoh router %s", event.transport.zid)
+        elif self._due("router", "gone"):
             LOG.warning("the Zenoh router %s went away: the world goes on, publishing to whoever is still "
                         "connected, and the session connects again when a router is back", event.transport.zid)
+
+    def _due(self, who: str, kind: str) -> bool:
+        """Whether a line of ``kind`` about ``who`` may be said now (none in the last ``SAY_EVERY_S``); if so, it is."""
+        now = time.monotonic()
+        with self._lock:
+            last = self._said.get((who, kind))
+            if last is not None and now - last < SAY_EVERY_S:
+                return False
+            self._said[(who, kind)] = now
+            return True
 
     def _listener(self, robot: str, kind: str) -> Callable[[Any], None]:
         def heard(sample: Any) -> None:
             try:
+                size = len(sample.payload)
+                if size > TWIST_STAMPED_MAX_BYTES:  # (measured before a copy is made)
+                    self._refuse(robot, "size", f"a cmd_vel of {size} bytes, beyond any command's")
+                    return
                 self._heard(robot, kind, sample.payload.to_bytes())
             except Exception as e:  # (Zenoh's thread must not die of one sample)
                 self._refuse(robot, "fault", f"a cmd_vel the bridge could not take: {type(e).__name__}")
@@ -251,11 +271,12 @@ class Bridge:
             self._fresh.notify_all()
 
     def _refuse(self, robot: str, kind: str, why: str) -> None:
-        """Logs the first refusal of each kind for a robot, then every thousandth (a flood says itself once)."""
+        """Counts a refusal; says it, with the count so far, if nothing of its kind was said of the robot in the last
+        ``SAY_EVERY_S`` (a flood is a line every 10 s, whatever its rate); the end of the run says every count."""
         with self._lock:
             count = self.commands[robot].refused.get(kind, 0) + 1
             self.commands[robot].refused[kind] = count
-        if count == 1 or count % 1000 == 0:
+        if self._due(robot, kind):
             LOG.warning("%s: %s: refused (%d so far); the robot keeps its last command", robot, why, count)
 
     def _publish(self, step: int, messages: list[tuple[Topic, bytearray]], record: bool = True) -> None:
@@ -285,12 +306,10 @@ class Bridge:
 
     def _await_commands(self, last: list[tuple[Topic, bytearray]]) -> bool:
         """Lock-step: waits until every driven robot in the world has a command given since the last step's clock;
-        False if stopped first. Until the first command of all comes, it sends the last step's ``/clock`` and each
+        False if stopped first. While a robot has never had a command, it sends the last step's ``/clock`` and that
         robot's own topics again every second (not ``/tf``, nor messages received: they would count twice), so that
-        nodes that start after the bridge hear the step they are to answer; once nodes answer, never again (a slow
-        node would answer twice). Every 10 s it says whom it waits for."""
-        again = [(t, b) for t, b in last if t is self.messages.clock or (t.name.count("/") == 2
-                 and not t.name.endswith("/received"))]
+        a node that starts after the bridge hears the step it is to answer; once every robot's node has answered,
+        never again (a slow node would answer twice). Every 10 s it says whom it waits for."""
         said = waited = time.monotonic()
         while True:
             with self._fresh:
@@ -300,10 +319,11 @@ class Bridge:
                 if self._stopping:
                     return False
                 self._fresh.wait(0.2)
-                answered = any(c.step >= 0 for c in self.commands.values())
-            if not answered and time.monotonic() - waited >= 1:
+                silent = {f"/{r}/" for r, c in self.commands.items() if not c.gone and c.step < 0}
+            if silent and time.monotonic() - waited >= 1:
                 waited = time.monotonic()
-                self._publish(self.steps, again, record=False)
+                self._publish(self.steps, [(t, b) for t, b in last if t is self.messages.clock or (
+                    t.name[:t.name.rfind("/") + 1] in silent and not t.name.endswith("/received"))], record=False)
             if time.monotonic() - said >= 10:
                 said = time.monotonic()
                 LOG.info("lock-step: step %d waits for a cmd_vel of %s", self.steps, ", ".join(late))
@@ -323,8 +343,8 @@ class Bridge:
         return False
 
     def _left(self, frame: dict[str, Any]) -> None:
-        """Driven robots without senses in ``frame`` that have left the world: said once, and no longer commanded
-        or waited for."""
+        """Driven robots without senses in ``frame``: those that have left the world said once, and no longer
+        commanded or waited for; the others (their senses late, on a machine too loaded) said."""
         for robot, command in self.commands.items():
             if not command.gone and robot not in frame["robots"]:
                 why = self.simulation.ended(robot)
@@ -332,6 +352,9 @@ class Bridge:
                     with self._lock:
                         command.gone = True
                     LOG.warning("%s has left the world (%s): it is no longer driven", robot, why)
+                elif self._due(robot, "late"):
+                    LOG.warning("%s: its senses did not come with step %d: its topics skip the step", robot,
+                                int(frame["step"]))
 
     def run(self) -> int:
         """Steps the world until its steps are done, every driven robot has left it, or ``stop()``; the steps run.
@@ -369,6 +392,10 @@ class Bridge:
                     break
         if pending is not None:
             self._publish_frame(pending)
+        for robot, command in self.commands.items():  # (every refusal counted, each said at the end)
+            if command.refused:
+                LOG.warning("%s: %d cmd_vel refused in all (%s)", robot, sum(command.refused.values()),
+                            ", ".join(f"{kind} {n}" for kind, n in sorted(command.refused.items())))
         self.seconds = time.monotonic() - start
         self.rate = (self.steps - begun) / self.seconds if self.seconds > 0 else 0.0
         return self.steps

@@ -50,6 +50,8 @@ def _parser() -> argparse.ArgumentParser:
     bridge.add_argument("--seed", type=int, default=None, help="the run's seed (default: the file's)")
     bridge.add_argument("--map-resolution", type=float, default=0.05, metavar="M",
                         help="the /map's cell size, m (default 0.05)")
+    bridge.add_argument("--no-map-transform", action="store_true",
+                        help="publish no map -> NAME/odom: a node of yours localizes the robots (AMCL, slam_toolbox)")
     router = verbs.add_parser("router", help="a Zenoh router for the bridge and ROS 2 nodes (as rmw_zenohd)",
                               description="Runs a Zenoh router until SIGTERM or Ctrl-C. Zenoh has no authentication "
                               "here: listen beyond loopback only on a network you trust.")
@@ -104,7 +106,7 @@ def _bridge(args: argparse.Namespace) -> int:
                       listen=tuple(args.listen or ["tcp/localhost:0"]), real_time_factor=args.real_time_factor,
                       lockstep=args.lockstep, command_timeout_s=args.command_timeout, steps=args.steps,
                       mcap=args.mcap, pose_log=args.pose_log, params=tuple(params), seed=args.seed,
-                      map_resolution_m=args.map_resolution)
+                      map_resolution_m=args.map_resolution, map_transform=not args.no_map_transform)
     with Bridge(args.world, options) as bridge:
         _stop_on_signals(bridge.stop)
         steps = bridge.run()

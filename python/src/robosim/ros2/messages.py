@@ -175,7 +175,7 @@ class Messages:
     Java), for the robots in ``sensed`` with their senses' topics too (default: the driven ones)."""
 
     def __init__(self, world: dict[str, Any], sensed: Iterable[str] | None = None,
-                 map_resolution_m: float = 0.05) -> None:
+                 map_resolution_m: float = 0.05, map_transform: bool = True) -> None:
         self.step_ms = int(world["step_ms"])
         self.arena = [float(v) / 1000 for v in world["arena"]]
         self.obstacles = [(str(n), [float(v) / 1000 for v in xy]) for n, xy in world["obstacles"]]
@@ -186,6 +186,8 @@ class Messages:
         if not map_resolution_m > 0:
             raise ValueError(f"a map's resolution is a positive number of metres, got {map_resolution_m}")
         self.resolution = map_resolution_m
+        #: Whether ``map -> NAME/odom`` is published (not where a node of the user's localizes the robots).
+        self.map_transform = map_transform
         self.clock = Topic("/clock", CLOCK)
         self.tf = Topic("/tf", TF, Qos(depth=100))
         self.tf_static = Topic("/tf_static", TF, LATCHED_QOS)
@@ -215,7 +217,8 @@ class Messages:
         for r in self.robots:
             x, y, h = values[3 * r.index: 3 * r.index + 3]
             r.start = (x / 1000, y / 1000, math.radians(h))
-            transforms.append(self._transform(zero, "map", r.odom_frame, *r.start))
+            if self.map_transform:
+                transforms.append(self._transform(zero, "map", r.odom_frame, *r.start))
             for name, kind, _ in r.sensors:
                 if kind == "proximity" and name in r.sensor_topics:
                     for k, (rx, ry, angle, _) in enumerate(r.rays):

@@ -78,6 +78,11 @@ final class DrivenRobot implements RobotControl {
         given++;
     }
 
+    /** Takes back a command not yet taken (its step did not run); nothing if it was taken. */
+    void withdraw() {
+        commands.clear();
+    }
+
     /**
      * The state after the step of the last command, waiting up to {@code ms} for it; null if it did not come (a
      * state of an earlier command, late, is passed over).

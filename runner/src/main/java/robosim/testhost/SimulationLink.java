@@ -565,6 +565,11 @@ final class SimulationLink {
             o.sim().run(1);
         } catch (AssertionError e) {
             failed.addAll(unsaid(o));
+        } catch (RuntimeException e) { // (the step did not run: its commands are taken back, for the next drive's)
+            for (DrivenRobot d : commanded) {
+                d.withdraw();
+            }
+            throw e;
         }
         failed.addAll(unsaid(o));
         Map<String, DrivenRobot.State> states = new LinkedHashMap<>();
