@@ -84,7 +84,7 @@ final class McapExport {
 
     /** The world's frame, then a frame a step. */
     private static void send(RecordingReader r, DataOutputStream out) throws IOException {
-        WorldSnapshot world = r.snapshotAt(Math.max(0, r.steps() - 1)); // (every robot that ever took part)
+        WorldSnapshot world = r.steps() == 0 ? r.snapshot() : r.snapshotAt(r.steps() - 1); // (every robot, joined too)
         List<String> names = world.robotNames();
         Map<String, List<DeviceSpec>> sensors = sensors(r, names);
         List<BridgeFrames.Robot> robots = new ArrayList<>();

@@ -68,11 +68,6 @@ public final class PoseLog implements AutoCloseable {
         return steps;
     }
 
-    /** Writes what is buffered. */
-    public void flush() throws IOException {
-        out.flush();
-    }
-
     @Override
     public void close() throws IOException {
         out.close();

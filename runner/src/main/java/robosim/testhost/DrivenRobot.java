@@ -34,6 +34,7 @@ final class DrivenRobot implements RobotControl {
     }
 
     private final String name;
+    private final List<robosim.devices.DeviceSpec> sensors;
     private final double topMmPerS;
     private final double topDegPerS;
     private final double wheelBaseMm;
@@ -42,10 +43,11 @@ final class DrivenRobot implements RobotControl {
     private long given;
     private final BlockingQueue<State> states = new ArrayBlockingQueue<>(1);
 
-    /** Robot {@code name} of type {@code type} (a registered type's name). */
-    DrivenRobot(String name, String type) {
+    /** Robot {@code name} of type {@code type} (a registered type's name) with {@code sensors}, as its file gives them. */
+    DrivenRobot(String name, String type, List<robosim.devices.DeviceSpec> sensors) {
         RobotType t = RobotTypes.known(type);
         this.name = name;
+        this.sensors = List.copyOf(sensors);
         this.topMmPerS = t.properties().maxSpeedMmPerS();
         this.topDegPerS = t.properties().maxTurnDegPerS();
         this.wheelBaseMm = t.body().wheelBaseMm();
@@ -53,6 +55,11 @@ final class DrivenRobot implements RobotControl {
 
     String name() {
         return name;
+    }
+
+    /** Its sensors, as its file gives them (a proximity sensor's model turns its readings into ranges). */
+    List<robosim.devices.DeviceSpec> sensors() {
+        return sensors;
     }
 
     /**

@@ -483,7 +483,7 @@ final class SimulationLink {
             if (!robosim.protocol.ControlScripts.isRos2(r.control())) {
                 return null;
             }
-            DrivenRobot d = new DrivenRobot(r.name(), r.type());
+            DrivenRobot d = new DrivenRobot(r.name(), r.type(), r.sensors());
             driven.put(r.name(), d);
             return d;
         });
@@ -600,13 +600,8 @@ final class SimulationLink {
             y[i] = p.yMm();
             h[i] = p.headingDeg();
         }
-        Map<String, List<robosim.devices.DeviceSpec>> sensors = new LinkedHashMap<>();
-        for (robosim.environment.core.WorldSpec.RobotSpec r : o.sim().world().robots()) {
-            sensors.put(r.name(), r.sensors());
-        }
-        if (o.poseLog() != null) {
+        if (o.poseLog() != null) { // (buffered, as headless.sh's: written out as it fills and at the close)
             o.poseLog().update(new robosim.protocol.PoseUpdate(o.sim().steps() - 1, x, y, h));
-            o.poseLog().flush();
         }
         reply.packArrayHeader(2).packString("ok");
         robosim.runner.BridgeFrames.step(reply, o.sim().steps(), x, y, h);
@@ -614,7 +609,8 @@ final class SimulationLink {
         for (Map.Entry<String, DrivenRobot.State> e : states.entrySet()) {
             DrivenRobot.State s = e.getValue();
             reply.packString(e.getKey());
-            robosim.runner.BridgeFrames.state(reply, s.sonarMm(), s.readings(), sensors.get(e.getKey()), s.received());
+            robosim.runner.BridgeFrames.state(reply, s.sonarMm(), s.readings(), o.driven().get(e.getKey()).sensors(),
+                    s.received());
         }
     }
 
