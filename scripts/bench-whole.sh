@@ -9,8 +9,10 @@
 #   ARGoS 3, 10 robots, 5000 steps, with --peers PREFIX (one round of the peers' side-by-side.sh,
 #                                                                        ../shared/peers/ or PEERS_SCRIPT)
 # With --example NAME, ARGoS's example experiment NAME instead: examples/argos/NAME.xml (its seed) in RoboSim
-# and, with --peers, NAME.argos run by ../shared/peers/run-argos-example.sh (5000 steps, the file's seed).
-# Prints every time, then the medians and the one-JVM run's ratio to ARGoS; writes no file.
+# and, with --peers, NAME.argos run by ../shared/peers/run-argos-example.sh (5000 steps, the file's seed), and
+# its shortest run (10 steps, one second of the examples' 10 ticks a second: ARGoS's start-up and end alone).
+# Prints every time, then the medians and the one-JVM run's ratio to ARGoS (whole processes; for an example
+# also the runs alone: RoboSim's wall_s against ARGoS's 5000 steps less its 10); writes no file.
 set -euo pipefail
 source "$(dirname "${BASH_SOURCE[0]}")/common.sh"
 example=""
@@ -53,7 +55,18 @@ log=$work/run.txt
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 scripts=$ROBOSIM_HOME/scripts
-declare -a one run start procs argos
+declare -a one run start procs argos argos_start
+# ARGoS's wall time of example $1 for $2 steps (run-argos-example.sh's wall_s), or NaN with its last lines on stderr
+argos_s() {
+  local pd
+  pd=$(mktemp -d)
+  if "$runner" "$peers" "$1" "$2" "" "$pd/run" >"$pd/out.txt" 2>&1; then
+    sed -n 's/.*wall_s=\([0-9.]*\).*/\1/p' "$pd/out.txt" | head -n 1 | grep . || echo NaN
+  else
+    echo "bench-whole: ARGoS's $1 failed: $(tail -n 3 "$pd/out.txt" | tr '\n' ' ')" >&2; echo NaN
+  fi
+  rm -rf "$pd"
+}
 for rep in $(seq "$reps"); do
   t0=$EPOCHREALTIME
   if "$scripts/headless.sh" --one-jvm --env "$world" --steps 5000 >"$log" 2>&1; then
@@ -65,14 +78,9 @@ for rep in $(seq "$reps"); do
   procs+=("$(seconds "$scripts/headless.sh" --robots-in-one-process --env "$world" --steps 5000)")
   line="rep $rep: one-jvm 5000 steps ${one[-1]} s (run ${run[-1]} s), one-jvm 1 step ${start[-1]} s, processes 5000 steps ${procs[-1]} s"
   if [ -n "$peers" ] && [ -n "$example" ]; then
-    pd=$(mktemp -d)
-    if "$runner" "$peers" "$example" 5000 "" "$pd/run" >"$pd/out.txt" 2>&1; then
-      argos+=("$(sed -n 's/.*wall_s=\([0-9.]*\).*/\1/p' "$pd/out.txt" | head -n 1 | grep . || echo NaN)")
-    else
-      echo "bench-whole: ARGoS's $example failed: $(tail -n 3 "$pd/out.txt" | tr '\n' ' ')" >&2; argos+=(NaN)
-    fi
-    rm -rf "$pd"
-    line="$line, ARGoS 5000 steps ${argos[-1]:-NaN} s"
+    argos+=("$(argos_s "$example" 5000)")
+    argos_start+=("$(argos_s "$example" 10)")
+    line="$line, ARGoS 5000 steps ${argos[-1]} s, ARGoS 10 steps ${argos_start[-1]} s"
   elif [ -n "$peers" ]; then
     pd=$(mktemp -d)
     SIZES=10 STEPS_10=5000 SKIP="stage robosim floor" OUT_DIR=$pd bash "$peer_script" 1 "$peers" >/dev/null 2>&1 || true
@@ -88,4 +96,14 @@ echo "median whole-process s (${world#"$ROBOSIM_HOME"/}): one-jvm-5000=$m1 (its 
 if [ -n "$peers" ]; then
   ma=$(median "${argos[@]}")
   awk -v o="$m1" -v a="$ma" -v p="$mp" 'BEGIN { printf "median ARGoS-5000=%s; one-jvm / ARGoS = %.2f, processes / ARGoS = %.2f\n", a, o/a, p/a }'
+  if [ -n "$example" ]; then
+    # (ARGoS's run alone: its 5000 steps less its 10-step run, each rep's pair, so 4990 steps; RoboSim's: its
+    # summary's wall_s, 5000 steps)
+    alone=()
+    for i in "${!argos[@]}"; do
+      alone+=("$(awk -v a="${argos[$i]}" -v b="${argos_start[$i]}" 'BEGIN { if (a == "NaN" || b == "NaN") print "NaN"; else printf "%.3f", a - b }')")
+    done
+    mb=$(median "${argos_start[@]}") mra=$(median "${alone[@]}")
+    awk -v r="$mr" -v a="$mra" -v b="$mb" 'BEGIN { printf "median ARGoS-10=%s; the runs alone: RoboSim %s s (5000 steps), ARGoS %s s (4990 steps); RoboSim / ARGoS, steps a second = %.2f\n", b, r, a, (5000 / r) / (4990 / a) }'
+  fi
 fi

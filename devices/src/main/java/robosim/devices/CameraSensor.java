@@ -53,6 +53,10 @@ public final class CameraSensor extends RobotSensor {
     private record Blob(int rgb, double distance, double angle, int order) {
     }
 
+    /** Nearest first; at one distance, the one found first. */
+    private static final Comparator<Blob> NEAREST = Comparator.comparingDouble(Blob::distance)
+            .thenComparingInt(Blob::order);
+
     @Override
     public double[] generateSensorResponse(SensorContext c) {
         List<Blob> blobs = new ArrayList<>();
@@ -70,7 +74,7 @@ public final class CameraSensor extends RobotSensor {
                 blobs.add(new Blob(l.rgb(), d, angle(c, l.xMm(), l.yMm()), blobs.size()));
             }
         }
-        blobs.sort(Comparator.comparingDouble(Blob::distance).thenComparingInt(Blob::order));
+        blobs.sort(NEAREST);
         int n = Math.min(most, blobs.size());
         double[] out = new double[3 * n];
         for (int b = 0; b < n; b++) {

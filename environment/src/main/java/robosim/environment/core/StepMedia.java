@@ -42,6 +42,9 @@ final class StepMedia {
         this.height = height;
         this.receivers = new RabModel[radius.length];
         this.caps = new int[radius.length];
+        this.turned = new int[radius.length];
+        this.cos = new double[radius.length];
+        this.sin = new double[radius.length];
     }
 
     /** The robots' bodies now (after a robot joined or left: a robot gone has radius -infinity). */
@@ -50,6 +53,9 @@ final class StepMedia {
         height = heights;
         receivers = java.util.Arrays.copyOf(receivers, radii.length);
         caps = java.util.Arrays.copyOf(caps, radii.length);
+        turned = new int[radii.length];
+        cos = new double[radii.length];
+        sin = new double[radii.length];
         received = null;
     }
 
@@ -63,6 +69,10 @@ final class StepMedia {
     void stepped() {
         fresh = false;
         received = null;
+        if (++epoch == 0) { // (after 2^32 steps: no robot's old step may pass for this one)
+            epoch = 1;
+            java.util.Arrays.fill(turned, 0);
+        }
     }
 
     private void index() {
@@ -203,6 +213,12 @@ final class StepMedia {
         return out;
     }
 
+    /** The step ({@link #stepped} counts them) each robot's heading's cosine and sine were last worked out in. */
+    private int[] turned;
+    private double[] cos;
+    private double[] sin;
+    private int epoch = 1;
+
     /** Every lit LED of the robots within {@code range} (plus their size) of robot i, to {@code visitor}. */
     void leds(int i, double range, SensorContext.LedVisitor visitor) {
         double[] x = map.xs();
@@ -217,8 +233,14 @@ final class StepMedia {
                 continue;
             }
             List<LedSpec> where = map.properties(j).leds();
-            double c = Math.cos(Math.toRadians(h[j]));
-            double s = Math.sin(Math.toRadians(h[j]));
+            if (turned[j] != epoch) {
+                double r = Math.toRadians(h[j]);
+                cos[j] = Math.cos(r);
+                sin[j] = Math.sin(r);
+                turned[j] = epoch;
+            }
+            double c = cos[j];
+            double s = sin[j];
             for (int k = 0; k < Math.min(colours.length, where.size()); k++) {
                 if (colours[k] != 0) {
                     LedSpec l = where.get(k);
