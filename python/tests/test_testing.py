@@ -3,12 +3,14 @@ a test, as the Java testkit does it."""
 
 from __future__ import annotations
 
+import threading
 from collections.abc import Callable
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
 
-from robosim.testing import ControlFailed, Simulation, World
+from robosim.testing import ControlFailed, HostError, Simulation, SimulationHost, World, _warm_host
 
 REPORTER = """def control(robot):
     robot.report("speed", robot.parameter("speed", 0.0))
@@ -112,3 +114,45 @@ def test_simulations_side_by_side_on_one_host(reporting: Path, simulation: Calla
     slow.run(20)
     fast.run(20)
     assert fast.pose("r1").x_mm - 1000 > 8 * (slow.pose("r1").x_mm - 1000)
+
+
+def test_threads_take_turns_on_a_host_and_a_close_breaks_a_call_off(reporting: Path) -> None:
+    host = SimulationHost(near=reporting.parent)
+    try:
+        slow, fast = (Simulation.of(reporting).host(host).param("speed", v).start() for v in (100, 900))
+        with ThreadPoolExecutor(2) as pool:  # (two threads, one link: each call waits for its turn)
+            for done in [pool.submit(s.run, 20) for s in (slow, fast)]:
+                done.result(timeout=300)
+        assert fast.pose("r1").x_mm - 1000 > 8 * (slow.pose("r1").x_mm - 1000)
+
+        sent, closed = threading.Event(), threading.Event()
+
+        def under_way() -> None:  # (the request sent, its answer not read until the host is closed)
+            sent.set()
+            assert closed.wait(300)
+
+        with ThreadPoolExecutor(1) as pool:
+            call = pool.submit(host.call, "run", slow._id, 10, meanwhile=under_way)
+            assert sent.wait(300)
+            host.close()  # (returns without the call's answer: it stops the host)
+            closed.set()
+            with pytest.raises(HostError):
+                call.result(timeout=300)
+        with pytest.raises(HostError, match="closed"):
+            host.call("run", fast._id, 1)
+    finally:
+        host.close()
+
+
+def test_threads_asking_for_one_warm_host_at_once_start_one(reporting: Path) -> None:
+    with ThreadPoolExecutor(3) as pool:
+        hosts = list(pool.map(lambda _: _warm_host(99, reporting.parent), range(3)))
+    try:
+        assert hosts[0] is hosts[1] is hosts[2] and not hosts[0].closed
+    finally:
+        hosts[0].close()
+    again = _warm_host(99, reporting.parent)
+    try:
+        assert again is not hosts[0] and not again.closed  # (closed: its next use starts another)
+    finally:
+        again.close()

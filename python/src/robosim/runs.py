@@ -15,7 +15,6 @@ layout) as a sweep's warm worker runs it, so a notebook's hundredth run costs wh
 
 from __future__ import annotations
 
-import atexit
 import itertools
 import os
 import tempfile
@@ -27,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from robosim.hostprocess import HostError
-from robosim.testing import SimulationHost, shared_host
+from robosim.testing import SimulationHost, _warm_host, shared_host
 
 __all__ = ["RunResult", "run", "sweep"]
 
@@ -54,24 +53,6 @@ class RunResult:
     def ok(self) -> bool:
         """Every step ran, nothing failed."""
         return self.exit_code == 0 and not self.error
-
-
-_pool: list[SimulationHost] = []
-_pool_lock = threading.Lock()
-
-
-def _host(index: int, near: Path) -> SimulationHost:
-    """Warm host ``index`` of this process (0: the shared one), started at its first use, replaced once closed."""
-    if index == 0:
-        return shared_host(near)
-    with _pool_lock:
-        while len(_pool) < index:
-            _pool.append(SimulationHost(near=near))
-            atexit.register(_pool[-1].close)
-        if _pool[index - 1].closed:
-            _pool[index - 1] = SimulationHost(near=near)
-            atexit.register(_pool[index - 1].close)
-        return _pool[index - 1]
 
 
 def run(world: str | os.PathLike[str], *, steps: int, seed: int | None = None,
@@ -154,7 +135,7 @@ def sweep(world: str | os.PathLike[str], *, steps: int, seeds: Iterable[int] = r
             slot = free.pop()
         try:
             result = run(file, steps=steps, seed=seed, params=combination, layout=layout, pose_log=keep_pose_logs,
-                         out=base / f"run-{index}", timeout_s=timeout_s, host=_host(slot, file.parent))
+                         out=base / f"run-{index}", timeout_s=timeout_s, host=_warm_host(slot, file.parent))
         except HostError as e:  # (its JVM lost during the run: a failed row; the next run gets a new one)
             log = base / f"run-{index}" / "run.log"
             result = RunResult(1, {}, {}, f"the warm JVM was lost: {e}", base / f"run-{index}", log, None, None)

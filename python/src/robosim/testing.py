@@ -93,7 +93,10 @@ class SimulationHost:
         home = Path(robosim_home) if robosim_home is not None else find_home(near)
         env = dict(os.environ)
         env.setdefault("ROBOSIM_PYTHON", sys.executable)
-        self._lock = threading.Lock()
+        #: Whose turn it is on the link: one call at a time, the condition held only to take and give back the turn,
+        #: never across the link's I/O (a close meanwhile stops the host, which breaks the call off).
+        self._turn = threading.Condition()
+        self._talking = False
         self._closed = False
         self._host = HostProcess(home, "simulation-host.sh", [], _LISTENING, "simulation host", env)
         try:
@@ -117,16 +120,24 @@ class SimulationHost:
     def call(self, *request: Any, meanwhile: Callable[[], object] | None = None) -> list[Any]:
         """One request and its answer: ``["ok", VALUE]`` or ``["failed", FAILURES, STEPS]``; an ``error`` answer is a
         ValueError with the host's reason. ``meanwhile``, if given, runs once the request is sent, while the host
-        works on it (the answer is read after it returns, even if it raises)."""
-        with self._lock:
+        works on it (the answer is read after it returns, even if it raises). Calls from several threads take turns."""
+        with self._turn:
+            while self._talking and not self.closed:
+                self._turn.wait()
             if self.closed:
                 raise HostError("the simulation host is closed" + self._host.said())
+            self._talking = True
+        try:
             self._host.send(self._frames, list(request))
             try:
                 if meanwhile is not None:
                     meanwhile()
             finally:
                 answer = self._host.receive(self._frames)
+        finally:
+            with self._turn:
+                self._talking = False
+                self._turn.notify()
         if not isinstance(answer, list) or not answer or not isinstance(answer[0], str):
             raise HostError(f"an answer that is not one: {answer!r:.200}")
         if answer[0] == "error":
@@ -136,11 +147,15 @@ class SimulationHost:
         return answer
 
     def close(self) -> None:
-        """Says bye (every simulation still open ends) and waits for the host to exit."""
-        with self._lock:
+        """Says bye (every simulation still open ends) and waits for the host to exit. A call another thread has under
+        way is broken off (it raises HostError): the host is stopped without waiting for its answer."""
+        with self._turn:
             if self._closed:
                 return
             self._closed = True
+            talking = self._talking
+            self._turn.notify_all()
+        if not talking:
             try:
                 self._frames.send(["bye"])
                 self._frames.receive()
@@ -148,7 +163,7 @@ class SimulationHost:
                 pass
             except Exception:  # (a link that broke as it ended: the host is stopped below all the same)
                 pass
-            self._host.stop()
+        self._host.stop()
 
     def __enter__(self) -> SimulationHost:
         return self
@@ -157,19 +172,52 @@ class SimulationHost:
         self.close()
 
 
-_shared: SimulationHost | None = None
-_shared_lock = threading.Lock()
+class _Starting:
+    """A warm host one thread is starting; the others wait for it (an event: no lock held while a JVM starts)."""
+
+    def __init__(self) -> None:
+        self.done = threading.Event()
+
+
+#: This process's warm hosts by number (0: :func:`shared_host`'s; a sweep's workers 1, 2, ...), or the one starting.
+_warm: dict[int, SimulationHost | _Starting] = {}
+_warm_guard = threading.Lock()  # (the table's alone: looked at and changed under it, a host started outside it)
+
+
+def _warm_host(index: int, near: Path | None) -> SimulationHost:
+    """This process's warm host ``index``, started at its first use and again once closed, closed at the
+    interpreter's exit. A second caller while it starts waits for it; if the start fails, the starter raises and
+    a waiter tries again itself."""
+    while True:
+        with _warm_guard:
+            entry = _warm.get(index)
+            if isinstance(entry, SimulationHost) and not entry.closed:
+                return entry
+            mine = not isinstance(entry, _Starting)
+            starting = _Starting() if mine else entry
+            assert isinstance(starting, _Starting)
+            _warm[index] = starting
+        if not mine:
+            starting.done.wait()  # (bounded: a host's start has its own deadline)
+            continue
+        try:
+            host = SimulationHost(near=near)
+        except BaseException:
+            with _warm_guard:
+                del _warm[index]
+            starting.done.set()
+            raise
+        atexit.register(host.close)
+        with _warm_guard:
+            _warm[index] = host
+        starting.done.set()
+        return host
 
 
 def shared_host(near: Path | None = None) -> SimulationHost:
     """This process's simulation host, started at its first use (RoboSim found from ``near`` or the working
     directory, or ``ROBOSIM_HOME``) and closed at the interpreter's exit: one JVM, warm, for every simulation."""
-    global _shared
-    with _shared_lock:
-        if _shared is None or _shared.closed:
-            _shared = SimulationHost(near=near)
-            atexit.register(_shared.close)
-        return _shared
+    return _warm_host(0, near)
 
 
 class World:
