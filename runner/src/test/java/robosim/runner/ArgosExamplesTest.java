@@ -84,6 +84,8 @@ class ArgosExamplesTest {
             assertEquals("4999", last[0]);
             assertEquals(20, Integer.parseInt(last[1]) + Integer.parseInt(last[2]), "walking and resting");
             assertEquals((long) collected, Long.parseLong(last[3]));
+            assertEquals(15, reader.snapshot().poses().paint().size(), "the recording opens on the fifteen items the "
+                    + "loop functions' init painted on the floor");
             assertEquals(15, reader.step(0).update().paint().size(), "the fifteen items painted on the floor");
             int fewest = 15;
             for (int k = 0; k < reader.steps(); k += 100) {

@@ -458,6 +458,17 @@ public final class SimulationCore {
                 experiment.reports(), experiment.tracesOfStep(), experiment.tracesWhole(), map.objectsGone());
     }
 
+    /**
+     * The world before step 0, as a viewer that joins then (and a recording's first snapshot) starts from: every robot's
+     * and object's pose, and what the loop functions' init made of it: the floor's paint, the lights, the objects taken
+     * out. Not their drawing: it comes with step 0's update, as to a viewer that was there before (and so once).
+     */
+    public PoseUpdate startUpdate() {
+        PoseUpdate u = map.poses(-1);
+        return experiment == null ? u : u.withExperiment(experiment.paint(), experiment.lightsNow(), List.of(),
+                robosim.protocol.Traces.NONE, robosim.protocol.Traces.NONE, map.objectsGone());
+    }
+
     /** Every tag so far, "tagger>target", oldest first. */
     public List<String> tags() {
         return tags;

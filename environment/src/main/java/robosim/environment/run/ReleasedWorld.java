@@ -65,7 +65,7 @@ public final class ReleasedWorld {
     /** The world as the run starts from it: no step out yet, every robot where {@code core}'s map has it. */
     static ReleasedWorld start(SimulationCore core) {
         EnvironmentMap map = core.map();
-        return new ReleasedWorld(0, map.spec(), map.properties(), map.poses(-1), false, values(core.metrics()));
+        return new ReleasedWorld(0, map.spec(), map.properties(), core.startUpdate(), false, values(core.metrics()));
     }
 
     /** The world after {@code core}'s last step, the {@code steps}-th out; grown if robots joined since this one. */

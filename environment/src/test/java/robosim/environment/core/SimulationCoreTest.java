@@ -148,4 +148,38 @@ class SimulationCoreTest {
         }
         return poses;
     }
+
+    /** Loop functions whose init paints the floor, switches the light off and takes the crate out. */
+    public static final class Tidies implements robosim.loop.LoopFunctions {
+        @Override
+        public void init(robosim.loop.Experiment world) {
+            world.paintDisc(500, 500, 200, 0x000000);
+            world.switchLight(0, false);
+            world.removeObject(0);
+        }
+    }
+
+    @Test
+    void theWorldBeforeStepZeroIsAsTheLoopFunctionsInitLeftIt(@org.junit.jupiter.api.io.TempDir java.nio.file.Path dir)
+            throws Exception {
+        java.nio.file.Path file = dir.resolve("tidy.xml");
+        java.nio.file.Files.writeString(file, """
+                <environment name="tidy" timeStepMs="100">
+                  <loopFunctions class="robosim.environment.core.SimulationCoreTest$Tidies"/>
+                  <arena width="3" height="2"/>
+                  <floor colour="white"/>
+                  <lights><light name="lamp" x="1.5" y="1" height="0.5" intensity="3" colour="yellow"/></lights>
+                  <objects><box name="crate" x="2.5" y="0.5" width="0.2" depth="0.2" height="0.1"/></objects>
+                  <robots><robot name="fb" type="foot-bot" x="1" y="1" heading="0"/></robots>
+                </environment>
+                """);
+        WorldSpec spec = new robosim.environment.config.EnvironmentLoader().load(file);
+        SimulationCore core = new SimulationCore(spec, List.of(robosim.devices.RobotTypes.properties("foot-bot")));
+        core.startExperiment(dir, null);
+        // (a viewer joining before step 0, and a recording's first snapshot, start from this)
+        robosim.protocol.PoseUpdate start = core.startUpdate().posesOnly();
+        assertEquals(1, start.paint().size(), "the floor as init painted it");
+        assertArrayEquals(new boolean[] {false}, start.lightsOn(), "the light as init switched it");
+        assertArrayEquals(new int[] {0}, start.objectsGone(), "the crate init took out");
+    }
 }
