@@ -39,7 +39,7 @@ import robosim.web.WebViewerServer;
  * view renders the robots, the arena's walls, each robot's name and, while the trails box is checked, their
  * trails. The run goes on until the test stops it. On a replay of a recorded run, a seek starts the picture
  * afresh at the sought step: no trail across the jump, the robots where that step has them, the steps per
- * second measured anew.
+ * second measured anew. What a world's loop functions draw shows in both views.
  */
 class BrowserViewerIT {
     private static final Path CHROMIUM = Path.of("/usr/bin/chromium");
@@ -203,6 +203,56 @@ class BrowserViewerIT {
             ok(control, "stop");
             assertEquals(0, replay.exit(LONG_S), replay.output());
         }
+    }
+
+    @Test
+    @Timeout(value = 10, unit = TimeUnit.MINUTES)
+    void theLoopFunctionsDrawingShowsIn2DAnd3D(@TempDir Path dir) throws Exception {
+        Path file = dir.resolve("square.xml");
+        Files.writeString(file, """
+                <environment name="square" timeStepMs="100">
+                  <loopFunctions class="robosim.runner.DrawsASquare"/>
+                  <arena width="5" height="5"/>
+                  <robots><robot name="r1" type="ArRobot" x="0.5" y="0.5" heading="0"/></robots>
+                </environment>
+                """);
+        long[] magenta = new long[2]; // the 2D view's pixels of the square's colour, the 3D view's
+        InJvmSimulation sim = new InJvmSimulation(file);
+        sim.settings(s -> s.speed(10)).sideline((env, ports) -> {
+            try (WebViewerServer web = new WebViewerServer("127.0.0.1", ports[1], null, (verb, arg) -> "{\"ok\":true}")) {
+                web.start(java.net.InetAddress.getLoopbackAddress(), 0);
+                try {
+                    page.get("http://localhost:" + web.port() + "/");
+                    WebDriverWait wait = new WebDriverWait(page, Duration.ofSeconds(LONG_S));
+                    wait.until(p -> stepShown(p) >= 1); // (the drawing comes with step 0's update)
+                    magenta[0] = wait.until(p -> magentaPixels2d(p) > 500 ? magentaPixels2d(p) : null);
+                    page.findElement(By.cssSelector("input[name=view][value='3d']")).click();
+                    magenta[1] = wait.until(p -> pixels3d(p, MAGENTA) > 100 ? pixels3d(p, MAGENTA) : null);
+                } finally {
+                    page.findElement(By.cssSelector("input[name=view][value='2d']")).click(); // (as the others expect)
+                    env.stop("the test has seen what it needed");
+                }
+            }
+        }).run(1_000_000, true, () -> robot -> {
+            while (true) {
+                robot.sleep(100);
+            }
+        });
+        assertTrue(magenta[0] > 500, "the 2D view draws the square: " + magenta[0] + " magenta pixels");
+        assertTrue(magenta[1] > 100, "the 3D view draws the square: " + magenta[1] + " magenta pixels");
+    }
+
+    /** The square's colour, strongly: red and blue high, green well under both. */
+    private static final String MAGENTA = "r > 150 && b > 150 && g < Math.min(r, b) - 80";
+
+    /** Pixels of the 2D view's canvas in the square's colour. */
+    private static long magentaPixels2d(WebDriver page) {
+        Object n = ((JavascriptExecutor) page).executeScript("const c = document.getElementById('view2d');"
+                + "const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data; let n = 0;"
+                + "for (let i = 0; i < d.length; i += 4) { const r = d[i], g = d[i + 1], b = d[i + 2]; if (" + MAGENTA
+                + ") n++; }"
+                + "return n;");
+        return ((Number) n).longValue();
     }
 
     /**

@@ -1,13 +1,14 @@
 // The 3D view (three.js, served from the jar): the arena as its floor (colour, image, painted regions) with low
 // walls round it, obstacles as extruded polygons, objects as boxes and cylinders of their size and colour where they
 // stand, lights as glowing spheres at their height, robots as cylinders of their radius and height with a nose for
-// their heading, their lit LEDs as small spheres where they sit, and their name above them, and their trails on the
-// floor. Metres; z up. Drag orbits, wheel zooms. Names are text laid over the canvas (set as textContent), placed
+// their heading, their lit LEDs as small spheres where they sit, and their name above them, their trails on the
+// floor, and over it what the world's loop functions drew (a line a trace, in its colour). Metres; z up. Drag orbits, wheel zooms. Names are text laid over the canvas (set as textContent), placed
 // where each robot is drawn.
 import * as THREE from '/three/three.module.min.js';
 import { paintFloor, objectPose, objectGone } from './scenery.js';
 
-const WALL_M = 0.4, BOUNDS_M = 0.05, TRAIL_Z = 0.01, LABEL_ABOVE_M = 0.15, FLOOR_PX = 1024, LED_M = 0.008;
+const WALL_M = 0.4, BOUNDS_M = 0.05, TRAIL_Z = 0.01, TRACE_Z = 0.012, LABEL_ABOVE_M = 0.15, FLOOR_PX = 1024,
+  LED_M = 0.008, TRACE_POINTS = 64;
 
 export class View3D {
   // trailPoints: the most points a trail the page keeps has
@@ -103,7 +104,39 @@ export class View3D {
       return { group: g, body, trail, label, text: '', leds, heightM: hm };
     });
     this.labels.replaceChildren(...this.robots.map((r) => r.label));
+    this.traceLines = []; this.drawingShown = null; // (the scene is new: the drawing's lines are made again)
     if (!keepCamera) this.fit();
+  }
+
+  // the loop functions' drawing (viewer.js's: [{colour, points: [x, y mm, ...]}], whose traces and points only grow
+  // until a new drawing replaces it): a line a trace, its points added as they come, its buffer doubled when full
+  traces(drawing) {
+    if (drawing !== this.drawingShown) {
+      for (const l of this.traceLines) { this.scene.remove(l); l.geometry.dispose(); l.material.dispose(); }
+      this.traceLines = []; this.drawingShown = drawing;
+    }
+    drawing.forEach((t, i) => {
+      const n = t.points.length / 2;
+      let line = this.traceLines[i];
+      if (!line || line.capacity < n) {
+        const old = line, capacity = Math.max(TRACE_POINTS, 2 * n);
+        const points = new THREE.BufferGeometry();
+        points.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * capacity), 3));
+        line = new THREE.Line(points, old ? old.material : new THREE.LineBasicMaterial({ color: t.colour }));
+        line.frustumCulled = false; // (its bounds change with every point)
+        line.capacity = capacity; line.shown = 0;
+        if (old) { this.scene.remove(old); old.geometry.dispose(); }
+        this.scene.add(line);
+        this.traceLines[i] = line;
+      }
+      if (line.shown < n) {
+        const at = line.geometry.attributes.position;
+        for (let k = line.shown; k < n; k++) at.setXYZ(k, t.points[2 * k] / 1000, t.points[2 * k + 1] / 1000, TRACE_Z);
+        at.needsUpdate = true;
+        line.geometry.setDrawRange(0, n);
+        line.shown = n;
+      }
+    });
   }
 
   // the floor as a texture: painted as the 2D view paints it, FLOOR_PX on its longer side
@@ -145,8 +178,8 @@ export class View3D {
   }
 
   // poses: the update to show; gone, held: names of robots that left or are held (drawn grey, said so);
-  // trails: each robot's trail (x, y mm pairs, oldest first), or null for none
-  render(poses, gone, held, follow, trails) {
+  // trails: each robot's trail (x, y mm pairs, oldest first), or null for none; drawing: the loop functions' (traces)
+  render(poses, gone, held, follow, trails, drawing) {
     if (!this.scene || !poses) return;
     if (!this.renderer) this.start();
     const paint = JSON.stringify(poses.paint || []);
@@ -179,6 +212,7 @@ export class View3D {
       g.position.set(x / 1000, y / 1000, 0);
       g.rotation.z = h * Math.PI / 180;
     });
+    this.traces(drawing);
     const c = follow >= 0 ? new THREE.Vector3(poses.x[follow] / 1000, poses.y[follow] / 1000, 0) : this.center;
     this.camera.position.set(c.x + this.distance * Math.cos(this.pitch) * Math.cos(this.yaw),
       c.y + this.distance * Math.cos(this.pitch) * Math.sin(this.yaw), this.distance * Math.sin(this.pitch));

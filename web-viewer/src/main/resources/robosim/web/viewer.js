@@ -297,7 +297,7 @@ function frame(now) {
     $('step').textContent = poses ? poses.step + 1 : '-'; // steps completed (protocol/README.md, "Step numbers")
     $('rate').textContent = rate.toFixed(1);
     if (!canvas.classList.contains('hidden')) draw2d();
-    else view3d.render(poses, gone, held, follow, $('trails').checked ? trails : null);
+    else view3d.render(poses, gone, held, follow, $('trails').checked ? trails : null, drawing);
     panel.draw();
   }
   if (tableDirty) {
