@@ -62,7 +62,10 @@ public final class ReleasedWorld {
         return new ReleasedWorld(0, spec, List.copyOf(props), new PoseUpdate(-1, x, y, h), false, new double[0]);
     }
 
-    /** The world as the run starts from it: no step out yet, every robot where {@code core}'s map has it. */
+    /**
+     * The world as the run starts from it: no step out yet, every robot and object where {@code core}'s map has it, the
+     * floor, lights and objects as the loop functions' init left them ({@link SimulationCore#startUpdate}).
+     */
     static ReleasedWorld start(SimulationCore core) {
         EnvironmentMap map = core.map();
         return new ReleasedWorld(0, map.spec(), map.properties(), core.startUpdate(), false, values(core.metrics()));
