@@ -156,3 +156,16 @@ def test_threads_asking_for_one_warm_host_at_once_start_one(reporting: Path) -> 
         assert again is not hosts[0] and not again.closed  # (closed: its next use starts another)
     finally:
         again.close()
+
+
+def test_a_simulation_that_keeps_no_history_refuses_to_say_it(reporting: Path) -> None:
+    sim = Simulation.of(reporting).history(False).start()
+    try:
+        sim.run(3)
+        assert sim.pose("r1").x_mm > 1000
+        with pytest.raises(ValueError, match="messages are not kept"):
+            sim.received("r1")
+        with pytest.raises(ValueError, match="contacts are not kept"):
+            sim.contacts("r1")
+    finally:
+        sim.close()

@@ -296,6 +296,7 @@ class SimulationBuilder:
         self._step_timeout_ms: int | None = None
         self._host: SimulationHost | None = None
         self._pose_log: str | None = None
+        self._history = True
 
     def param(self, name: str, value: object) -> SimulationBuilder:
         """The control code's parameter ``name`` (``robot.parameter``), as ``--param`` gives it: for a file, a
@@ -323,6 +324,13 @@ class SimulationBuilder:
         self._pose_log = str(Path(path).resolve())
         return self
 
+    def history(self, keep: bool) -> SimulationBuilder:
+        """Whether the simulation keeps every message and contact of its robots for ``received`` and ``contacts``
+        (default: it does). A long run driven from outside (the ROS 2 bridge's) keeps none, so that its memory does not
+        grow with them; those two then raise ValueError."""
+        self._history = bool(keep)
+        return self
+
     def host(self, host: SimulationHost) -> SimulationBuilder:
         """Run on ``host`` (default: this process's, :func:`shared_host`)."""
         self._host = host
@@ -344,7 +352,7 @@ class SimulationBuilder:
             host = self._host or shared_host(path.parent)
             answer = host.call("start", {"world": str(path), "params": self._params, "seed": self._seed,
                                          "expect_failure": self._expected, "step_timeout_ms": self._step_timeout_ms,
-                                         "pose_log": self._pose_log})
+                                         "pose_log": self._pose_log, "history": self._history})
         except BaseException:
             if folder is not None:
                 shutil.rmtree(folder, ignore_errors=True)

@@ -38,10 +38,11 @@ import robosim.testkit.Simulation;
  * {@code {link: "robosim-simulation-link", version: 1, key}} ({@link LinkHello}), the welcome, then one request
  * {@code [CALL, ARG...]} and one answer at a time:
  * <ul>
- * <li>{@code ["start", {world, params, seed, expect_failure, step_timeout_ms, pose_log}]}: the environment file
- * {@code world} (a path), its parameters (a map of texts), the seed (or nil: the file's), the robots whose control
+ * <li>{@code ["start", {world, params, seed, expect_failure, step_timeout_ms, pose_log, history}]}: the environment
+ * file {@code world} (a path), its parameters (a map of texts), the seed (or nil: the file's), the robots whose control
  * code may fail (an array), the step timeout (or nil: 10 s), a new file for the poses of the steps {@code drive} runs
- * ({@code --pose-log}'s CSV; or nil). Its robots whose control is {@code ros2} are driven by the link
+ * ({@code --pose-log}'s CSV; or nil), whether to keep every message and contact for {@code received} and
+ * {@code contacts} (a boolean, or nil: true; the ROS 2 bridge keeps none). Its robots whose control is {@code ros2} are driven by the link
  * ({@link DrivenRobot}). Answer {@code ["ok", {id, robots}]};
  * <li>{@code ["run", ID, N]}: N more steps (a world with driven robots: refused). Answer {@code ["ok", STEPS]}, or,
  * when control code failed (a robot not expected to, each said once), {@code ["failed", [FAILURE, ...], STEPS]};
@@ -439,9 +440,10 @@ final class SimulationLink {
         Map<String, Value> fields = new LinkedHashMap<>();
         for (Map.Entry<Value, Value> e : spec.asMapValue().entrySet()) {
             String name = text(e.getKey(), "a field's name");
-            if (!List.of("world", "params", "seed", "expect_failure", "step_timeout_ms", "pose_log").contains(name)) {
+            if (!List.of("world", "params", "seed", "expect_failure", "step_timeout_ms", "pose_log", "history")
+                    .contains(name)) {
                 throw new BadCall("bad_call", "start: no field \"" + Printable.of(name, 40) + "\" (world, params, "
-                        + "seed, expect_failure, step_timeout_ms, pose_log)");
+                        + "seed, expect_failure, step_timeout_ms, pose_log, history)");
             }
             fields.put(name, e.getValue());
         }
@@ -477,6 +479,13 @@ final class SimulationLink {
         Value timeout = fields.get("step_timeout_ms");
         if (timeout != null && !timeout.isNilValue()) {
             b.stepTimeout(Duration.ofMillis(whole(timeout, "step_timeout_ms")));
+        }
+        Value history = fields.get("history");
+        if (history != null && !history.isNilValue()) {
+            if (!history.isBooleanValue()) {
+                throw new BadCall("bad_call", "start: history is true or false");
+            }
+            b.history(history.asBooleanValue().getBoolean());
         }
         Map<String, DrivenRobot> driven = new LinkedHashMap<>();
         b.controls(r -> {

@@ -157,6 +157,8 @@ class SimulationLinkTest {
             }
             assertTrue(start(out, in, Map.of("colour", s("red"))).toJson()
                     .startsWith("[\"error\",\"bad_call\",\"start: no field \\\"colour\\\""));
+            assertEquals("[\"error\",\"bad_call\",\"start: history is true or false\"]",
+                    start(out, in, Map.of("history", s("no"))).toJson());
             assertTrue(start(out, in, Map.of("params", ValueFactory.newMap(Map.of(s("sped"), s("1"))))).toJson()
                     .contains("sped"), "an unknown parameter is refused, named");
             MessageBufferPacker trailing = MessagePack.newDefaultBufferPacker();
@@ -206,6 +208,7 @@ class SimulationLinkTest {
             Map<Value, Value> fields = new java.util.LinkedHashMap<>();
             fields.put(s("world"), s(dir.resolve("driven.xml").toString()));
             fields.put(s("pose_log"), s(dir.resolve("poses.csv").toString()));
+            fields.put(s("history"), ValueFactory.newBoolean(false)); // (as the ROS 2 bridge starts it)
             send(out, s("start"), ValueFactory.newMap(fields));
             assertEquals("[\"ok\",{\"id\":1,\"robots\":[\"ros\",\"mover\"]}]", receive(in).toJson());
             send(out, s("world"), n(1));
@@ -218,7 +221,11 @@ class SimulationLinkTest {
                         "[\"error\",\"value\",\"drive: mover is not a robot driven by the link"},
                     {new Value[] {s("drive"), n(1), ValueFactory.newMap(Map.of(s("ros"), command(Double.NaN, 0)))},
                         "[\"error\",\"value\",\"drive: ros's command is [MM_PER_S, DEG_PER_S], two finite"},
-                    {new Value[] {s("drive"), n(1), s("fast")}, "[\"error\",\"bad_call\",\"drive: the commands are a map"}}) {
+                    {new Value[] {s("drive"), n(1), s("fast")}, "[\"error\",\"bad_call\",\"drive: the commands are a map"},
+                    {new Value[] {s("received"), n(1), s("mover")},
+                        "[\"error\",\"value\",\"robot mover's messages are not kept: the simulation was started to keep "
+                        + "no history\"]"},
+                    {new Value[] {s("contacts"), n(1), s("ros")}, "[\"error\",\"value\",\"robot ros's contacts are not kept"}}) {
                 send(out, (Value[]) c[0]);
                 String answer = receive(in).toJson();
                 assertTrue(answer.startsWith((String) c[1]), answer);

@@ -114,6 +114,7 @@ public final class Simulation implements AutoCloseable {
         private robosim.loop.LoopFunctions loopFunctions;
         private Duration stepTimeout = Duration.ofSeconds(10);
         private Duration wait = Duration.ofMinutes(10);
+        private boolean history = true;
 
         private Builder(WorldSpec spec, Path file) {
             this.spec = spec;
@@ -199,6 +200,16 @@ public final class Simulation implements AutoCloseable {
             return this;
         }
 
+        /**
+         * Whether the simulation keeps every message and contact of its robots for {@link Simulation#received} and
+         * {@link Simulation#contacts} (default: it does). A long run whose robots are driven from outside, the
+         * ROS 2 bridge's, keeps none: its memory does not grow with them, and those two then refuse.
+         */
+        public Builder history(boolean keep) {
+            history = keep;
+            return this;
+        }
+
         /** The longest {@link Simulation#run} waits for its steps before it gives up (default 10 min). */
         public Builder waitAtMost(Duration timeout) {
             wait = timeout;
@@ -247,7 +258,7 @@ public final class Simulation implements AutoCloseable {
                 public InMemoryLink.Robot start(String name, String type, String controlClass,
                         InMemoryLink.Environment environment) {
                     RobotControl given = controls.get(name);
-                    WatchedRobot w = new WatchedRobot(name);
+                    WatchedRobot w = new WatchedRobot(name, history);
                     InMemoryLink.Environment seen = w.environment(environment);
                     w.attach(given != null ? robots.start(name, type, given, seen)
                             : robots.start(name, type, controlClass, seen));
@@ -370,12 +381,20 @@ public final class Simulation implements AutoCloseable {
         return watched(robot).reading(sensor);
     }
 
-    /** Every message {@code robot} has received so far, in order. */
+    /**
+     * Every message {@code robot} has received so far, in order.
+     *
+     * @throws IllegalStateException if the simulation keeps no history ({@link Builder#history})
+     */
     public List<Received> received(String robot) {
         return watched(robot).received();
     }
 
-    /** Every step in which {@code robot} touched something so far, in order. */
+    /**
+     * Every step in which {@code robot} touched something so far, in order.
+     *
+     * @throws IllegalStateException if the simulation keeps no history ({@link Builder#history})
+     */
     public List<Contact> contacts(String robot) {
         return watched(robot).contacts();
     }

@@ -16,8 +16,8 @@ import robosim.protocol.StepResponse;
 
 /**
  * One robot of a {@link Simulation} as the test sees it: its Hardware Simulator's end of the in-memory link,
- * with what the Environment told it kept on the way (its pose, its last readings, every message and contact)
- * and what it reported in its requests (the newest value of each name; a request goes out from the loop's
+ * with what the Environment told it kept on the way (its pose, its last readings, and, unless told to keep no history,
+ * every message and contact) and what it reported in its requests (the newest value of each name; a request goes out from the loop's
  * thread or, through {@link #environment}, from its control thread). Those threads write; the test reads once a
  * step it asked for is out (the loop's answer orders the two), under this object's lock all the same.
  */
@@ -30,9 +30,12 @@ final class WatchedRobot implements InMemoryLink.Robot {
     private final List<Received> received = new ArrayList<>();
     private final List<Contact> contacts = new ArrayList<>();
     private String end;
+    /** Whether it keeps every message and contact ({@link Simulation.Builder#history}). */
+    private final boolean history;
 
-    WatchedRobot(String name) {
+    WatchedRobot(String name, boolean history) {
         this.name = name;
+        this.history = history;
     }
 
     /** Its Hardware Simulator's end, once started (before the Environment uses this robot). */
@@ -84,10 +87,11 @@ final class WatchedRobot implements InMemoryLink.Robot {
         synchronized (this) {
             last = response;
             pose = new Pose(response.xMm(), response.yMm(), response.headingDeg());
-            for (CommEvent m : response.inbox()) {
+            for (int i = 0; history && i < response.inbox().size(); i++) {
+                CommEvent m = response.inbox().get(i);
                 received.add(new Received(response.step(), m.from(), m.payload()));
             }
-            if (response.contact() != null && !response.contact().isEmpty()) {
+            if (history && response.contact() != null && !response.contact().isEmpty()) {
                 contacts.add(new Contact(response.step(), response.contact()));
             }
         }
@@ -128,11 +132,20 @@ final class WatchedRobot implements InMemoryLink.Robot {
     }
 
     synchronized List<Received> received() {
+        kept("messages");
         return List.copyOf(received);
     }
 
     synchronized List<Contact> contacts() {
+        kept("contacts");
         return List.copyOf(contacts);
+    }
+
+    private void kept(String what) {
+        if (!history) {
+            throw new IllegalStateException("robot " + name + "'s " + what + " are not kept: the simulation was "
+                    + "started to keep no history");
+        }
     }
 
     /** The newest value of each name it reported, in the order first reported. */
