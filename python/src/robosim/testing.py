@@ -98,6 +98,7 @@ class SimulationHost:
         self._turn = threading.Condition()
         self._talking = False
         self._closed = False
+        self._ended = threading.Event()  # (set once close has stopped the host: a second close waits for it)
         self._host = HostProcess(home, "simulation-host.sh", [], _LISTENING, "simulation host", env)
         try:
             where = self._host.where
@@ -110,6 +111,7 @@ class SimulationHost:
         except BaseException:
             self._closed = True
             self._host.stop()
+            self._ended.set()
             raise
 
     @property
@@ -125,6 +127,7 @@ class SimulationHost:
             while self._talking and not self.closed:
                 self._turn.wait()
             if self.closed:
+                self._turn.notify_all()  # (the host gone: every waiter is told, not one)
                 raise HostError("the simulation host is closed" + self._host.said())
             self._talking = True
         try:
@@ -137,7 +140,10 @@ class SimulationHost:
         finally:
             with self._turn:
                 self._talking = False
-                self._turn.notify()
+                closed = self._closed
+                self._turn.notify_all()
+        if closed:  # (its answer may have come before the stop broke the link off: it counts for nothing)
+            raise HostError("the simulation host was closed while the call was under way")
         if not isinstance(answer, list) or not answer or not isinstance(answer[0], str):
             raise HostError(f"an answer that is not one: {answer!r:.200}")
         if answer[0] == "error":
@@ -150,11 +156,13 @@ class SimulationHost:
         """Says bye (every simulation still open ends) and waits for the host to exit. A call another thread has under
         way is broken off (it raises HostError): the host is stopped without waiting for its answer."""
         with self._turn:
-            if self._closed:
-                return
+            first = not self._closed
             self._closed = True
             talking = self._talking
             self._turn.notify_all()
+        if not first:
+            self._ended.wait()  # (bounded: the first close's stop kills the host after 10 s)
+            return
         if not talking:
             try:
                 self._frames.send(["bye"])
@@ -163,7 +171,10 @@ class SimulationHost:
                 pass
             except Exception:  # (a link that broke as it ended: the host is stopped below all the same)
                 pass
-        self._host.stop()
+        try:
+            self._host.stop()
+        finally:
+            self._ended.set()
 
     def __enter__(self) -> SimulationHost:
         return self
@@ -198,19 +209,20 @@ def _warm_host(index: int, near: Path | None) -> SimulationHost:
             assert isinstance(starting, _Starting)
             _warm[index] = starting
         if not mine:
-            starting.done.wait()  # (bounded: a host's start has its own deadline)
+            starting.done.wait()  # (until the starter has a host or has given up)
             continue
+        started: SimulationHost | None = None
         try:
             host = SimulationHost(near=near)
-        except BaseException:
+            atexit.register(host.close)
+            started = host
+        finally:  # (whatever ends the start, even an interrupt: the table holds the host or nothing, waiters go on)
             with _warm_guard:
-                del _warm[index]
+                if started is not None:
+                    _warm[index] = started
+                else:
+                    del _warm[index]
             starting.done.set()
-            raise
-        atexit.register(host.close)
-        with _warm_guard:
-            _warm[index] = host
-        starting.done.set()
         return host
 
 
@@ -327,8 +339,10 @@ class SimulationBuilder:
     def history(self, keep: bool) -> SimulationBuilder:
         """Whether the simulation keeps every message and contact of its robots for ``received`` and ``contacts``
         (default: it does). A long run driven from outside (the ROS 2 bridge's) keeps none, so that its memory does not
-        grow with them; those two then raise ValueError."""
-        self._history = bool(keep)
+        grow with its messages and contacts; those two then raise ValueError."""
+        if not isinstance(keep, bool):
+            raise TypeError(f"history is True or False, got {keep!r:.40}")
+        self._history = keep
         return self
 
     def host(self, host: SimulationHost) -> SimulationBuilder:

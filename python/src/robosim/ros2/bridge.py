@@ -145,7 +145,7 @@ class Bridge:
         if host is not None:
             builder.host(host)
         builder.step_timeout(STEP_WAIT_S)
-        builder.history(False)  # (each step's messages reach the nodes: none kept, a long run's memory stays flat)
+        builder.history(False)  # (each step's messages reach the nodes: none kept, a long run does not grow with them)
         self.simulation = builder.start()
         self._stopping = False
         self._lock = threading.Lock()
