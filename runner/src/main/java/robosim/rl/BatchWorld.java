@@ -126,7 +126,7 @@ final class BatchWorld {
             requests[i] = new StepRequest(step, 0, 0, true, List.of(), sensors[i]);
         }
         if (recording != null) {
-            recording.begin(core.map().snapshot(-1));
+            recording.begin(core.startSnapshot()); // (as the loop functions' init left the world)
         }
         advance();
         write();

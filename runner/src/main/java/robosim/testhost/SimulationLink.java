@@ -73,6 +73,9 @@ import robosim.testkit.Simulation;
  */
 final class SimulationLink {
     private static final org.slf4j.Logger LOG = org.slf4j.LoggerFactory.getLogger(SimulationLink.class);
+    /** The fields a start's map may have (the class comment says what each is). */
+    private static final List<String> START_FIELDS = List.of("world", "params", "seed", "expect_failure",
+            "step_timeout_ms", "pose_log", "history");
     static final String NAME = "robosim-simulation-link";
     static final int VERSION = 1;
     /** The most simulations open at once. */
@@ -201,7 +204,7 @@ final class SimulationLink {
         String call = args.get(0).asStringValue().asString();
         switch (call) {
             case "start" -> {
-                arguments(args, 1, "start: [\"start\", {world, params, seed, expect_failure, step_timeout_ms}]");
+                arguments(args, 1, "start: [\"start\", {" + String.join(", ", START_FIELDS) + "}]");
                 long id = start(args.get(1));
                 Open o = open.get(id);
                 reply.packArrayHeader(2).packString("ok").packMapHeader(2);
@@ -435,15 +438,14 @@ final class SimulationLink {
             throw new BadCall("value", MAX_OPEN + " simulations are open: close one first");
         }
         if (!spec.isMapValue()) {
-            throw new BadCall("bad_call", "start takes a map {world, params, seed, expect_failure, step_timeout_ms}");
+            throw new BadCall("bad_call", "start takes a map {" + String.join(", ", START_FIELDS) + "}");
         }
         Map<String, Value> fields = new LinkedHashMap<>();
         for (Map.Entry<Value, Value> e : spec.asMapValue().entrySet()) {
             String name = text(e.getKey(), "a field's name");
-            if (!List.of("world", "params", "seed", "expect_failure", "step_timeout_ms", "pose_log", "history")
-                    .contains(name)) {
-                throw new BadCall("bad_call", "start: no field \"" + Printable.of(name, 40) + "\" (world, params, "
-                        + "seed, expect_failure, step_timeout_ms, pose_log, history)");
+            if (!START_FIELDS.contains(name)) {
+                throw new BadCall("bad_call", "start: no field \"" + Printable.of(name, 40) + "\" ("
+                        + String.join(", ", START_FIELDS) + ")");
             }
             fields.put(name, e.getValue());
         }

@@ -124,7 +124,7 @@ export class View3D {
         points.setAttribute('position', new THREE.BufferAttribute(new Float32Array(3 * capacity), 3));
         line = new THREE.Line(points, old ? old.material : new THREE.LineBasicMaterial({ color: t.colour }));
         line.frustumCulled = false; // (its bounds change with every point)
-        line.capacity = capacity; line.shown = 0;
+        points.setDrawRange(0, 0); line.capacity = capacity; line.shown = 0;
         if (old) { this.scene.remove(old); old.geometry.dispose(); }
         this.scene.add(line);
         this.traceLines[i] = line;

@@ -269,10 +269,6 @@ public final class EnvironmentMap {
         return new GeometryWorld(spec.arena(), spec.obstacles(), names, properties, spec.scenery().objects());
     }
 
-    public WorldSnapshot snapshot(long step) {
-        return snapshot(spec, properties, poses(step));
-    }
-
     /** A snapshot of a world whose robots are described by {@code properties}, at the given poses. */
     public static WorldSnapshot snapshot(WorldSpec spec, List<RobotProperties> properties, PoseUpdate poses) {
         List<String> names = new ArrayList<>();

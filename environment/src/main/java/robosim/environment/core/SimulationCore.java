@@ -469,6 +469,11 @@ public final class SimulationCore {
                 robosim.protocol.Traces.NONE, robosim.protocol.Traces.NONE, map.objectsGone());
     }
 
+    /** The world before step 0 as a snapshot (a recording's first): {@link #startUpdate}'s. */
+    public robosim.protocol.WorldSnapshot startSnapshot() {
+        return EnvironmentMap.snapshot(map.spec(), map.properties(), startUpdate().posesOnly());
+    }
+
     /** Every tag so far, "tagger>target", oldest first. */
     public List<String> tags() {
         return tags;
