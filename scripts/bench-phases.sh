@@ -26,8 +26,7 @@ while [ $# -gt 0 ]; do
     *) args+=("$1"); shift ;;
   esac
 done
-robosim_bench_args 5 docs/perf "${args[@]}"
-[ "$ROBOSIM_WRITE_DOCS" = 1 ] && robosim_fail "writes no file: no --write-docs"
+robosim_bench_args 5 "" "${args[@]}" # (writes no file: no --write-docs, no --out)
 world=$ROBOSIM_HOME/examples/argos/$example.xml
 [ -f "$world" ] || robosim_fail "--example $example: no examples/argos/$example.xml"
 case $steps in ''|*[!0-9]*|0) robosim_fail "--steps needs a whole number of steps > 0, got '$steps'" ;; esac
@@ -51,15 +50,19 @@ for rep in $(seq "$BENCH_REPS"); do
   w=$(awk -v a="$t0" -v b="$EPOCHREALTIME" 'BEGIN { printf "%.3f", b - a }')
   wall=$(sed -n 's/.* wall_s=\([0-9.]*\) .*/\1/p' out.txt | tail -n 1 | grep . || echo NaN)
   c=$(sed -n 's/.*Total compilation time *: *\([0-9.]*\) s.*/\1/p' out.txt | head -n 1 | grep . || echo NaN)
+  # (a marker or figure not found is NaN, and so is every phase computed from it: awk's own NaN differs by awk)
   line=$(awk -v m="$(at robosim/runner/HeadlessRunner)" -v l="$(at robosim/environment/config/EnvironmentLoader)" \
     -v p="$(at robosim/runner/ChildProcesses)" -v s="$(at robosim/environment/core/SimulationCore)" \
-    -v r="$wall" -v w="$w" -v c="$c" 'BEGIN {
-      printf "%.3f %.3f %.3f %.3f %.3f %.3f %.3f %.3f", m, l - m, p - l, s - p, r, w - s - r, w, c }')
+    -v r="$wall" -v w="$w" -v c="$c" '
+    function v(x) { return x == "NaN" ? "NaN" : sprintf("%.3f", x) }
+    function d(a, b) { return a == "NaN" || b == "NaN" ? "NaN" : sprintf("%.3f", b - a) }
+    BEGIN { rest = s == "NaN" || r == "NaN" ? "NaN" : w - s - r
+      print v(m), d(m, l), d(l, p), d(p, s), v(r), v(rest), v(w), v(c) }')
   read -r a b d e f g h i <<<"$line"
   jvm+=("$a"); command+=("$b"); world_+=("$d"); setup+=("$e"); runs+=("$f"); rest+=("$g"); whole+=("$h"); jit+=("$i")
   echo "run $rep: jvm $a s, command $b s, world $d s, set-up $e s, run $f s, rest $g s; whole $h s; JIT CPU $i s"
 done
-median() { printf '%s\n' "$@" | grep -v -i '^nan$' | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2) : "NaN")}'; }
+median() { printf '%s\n' "$@" | grep -v '^NaN$' | sort -g | awk '{a[NR]=$1} END {print (NR ? (NR%2 ? a[(NR+1)/2] : (a[NR/2]+a[NR/2+1])/2) : "NaN")}'; }
 echo "medians (examples/argos/$example.xml, $steps steps, one JVM): jvm $(median "${jvm[@]}") s, command $(median "${command[@]}") s," \
   "world $(median "${world_[@]}") s, set-up $(median "${setup[@]}") s, run $(median "${runs[@]}") s, rest $(median "${rest[@]}") s;" \
   "whole $(median "${whole[@]}") s; JIT CPU $(median "${jit[@]}") s"

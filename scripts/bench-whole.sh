@@ -39,6 +39,7 @@ if [ -n "$example" ]; then
   [ -z "$BENCH_PEERS" ] || [ -x "$runner" ] || robosim_fail "no $runner (the peers' scripts)"
 fi
 [ "$ROBOSIM_WRITE_DOCS" = 1 ] && robosim_fail "writes no file: no --write-docs"
+[ -n "$ROBOSIM_OUT_ARG" ] && robosim_fail "writes no file: no --out"
 reps=$BENCH_REPS peers=$BENCH_PEERS peer_script=$BENCH_PEER_SCRIPT
 robosim_build_if_stale
 echo "java: $(java -version 2>&1 | head -n 1) ($ROBOSIM_JAVA_CHOICE)"
@@ -95,7 +96,9 @@ m1=$(median "${one[@]}"); mr=$(median "${run[@]}"); ms=$(median "${start[@]}"); 
 echo "median whole-process s (${world#"$ROBOSIM_HOME"/}): one-jvm-5000=$m1 (its run $mr) one-jvm-1=$ms processes-5000=$mp"
 if [ -n "$peers" ]; then
   ma=$(median "${argos[@]}")
-  awk -v o="$m1" -v a="$ma" -v p="$mp" 'BEGIN { printf "median ARGoS-5000=%s; one-jvm / ARGoS = %.2f, processes / ARGoS = %.2f\n", a, o/a, p/a }'
+  # (a median that is NaN, every run of its kind failed, gives NaN ratios: awk's own NaN differs by awk)
+  awk -v o="$m1" -v a="$ma" -v p="$mp" 'function r(x, y) { return x == "NaN" || y == "NaN" ? "NaN" : sprintf("%.2f", x / y) }
+    BEGIN { printf "median ARGoS-5000=%s; one-jvm / ARGoS = %s, processes / ARGoS = %s\n", a, r(o, a), r(p, a) }'
   if [ -n "$example" ]; then
     # (ARGoS's run alone: its 5000 steps less its 10-step run, each rep's pair, so 4990 steps; RoboSim's: its
     # summary's wall_s, 5000 steps)
@@ -104,6 +107,7 @@ if [ -n "$peers" ]; then
       alone+=("$(awk -v a="${argos[$i]}" -v b="${argos_start[$i]}" 'BEGIN { if (a == "NaN" || b == "NaN") print "NaN"; else printf "%.3f", a - b }')")
     done
     mb=$(median "${argos_start[@]}") mra=$(median "${alone[@]}")
-    awk -v r="$mr" -v a="$mra" -v b="$mb" 'BEGIN { printf "median ARGoS-10=%s; the runs alone: RoboSim %s s (5000 steps), ARGoS %s s (4990 steps); RoboSim / ARGoS, steps a second = %.2f\n", b, r, a, (5000 / r) / (4990 / a) }'
+    awk -v r="$mr" -v a="$mra" -v b="$mb" 'BEGIN { q = r == "NaN" || a == "NaN" ? "NaN" : sprintf("%.2f", (5000 / r) / (4990 / a))
+      printf "median ARGoS-10=%s; the runs alone: RoboSim %s s (5000 steps), ARGoS %s s (4990 steps); RoboSim / ARGoS, steps a second = %s\n", b, r, a, q }'
   fi
 fi
