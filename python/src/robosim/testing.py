@@ -160,18 +160,19 @@ class SimulationHost:
             self._closed = True
             talking = self._talking
             self._turn.notify_all()
-        if not first:
-            self._ended.wait()  # (bounded: the first close's stop kills the host after 10 s)
+        if not first:  # (until the first close has said bye and stopped the host; then stopped again, should the
+            self._ended.wait()  # first have been interrupted before its stop: a stop is safe to repeat)
+            self._host.stop()
             return
-        if not talking:
-            try:
-                self._frames.send(["bye"])
-                self._frames.receive()
-            except (OSError, HostError, ValueError):
-                pass
-            except Exception:  # (a link that broke as it ended: the host is stopped below all the same)
-                pass
         try:
+            if not talking:
+                try:
+                    self._frames.send(["bye"])
+                    self._frames.receive()
+                except (OSError, HostError, ValueError):
+                    pass
+                except Exception:  # (a link that broke as it ended: the host is stopped below all the same)
+                    pass
             self._host.stop()
         finally:
             self._ended.set()
@@ -211,19 +212,23 @@ def _warm_host(index: int, near: Path | None) -> SimulationHost:
         if not mine:
             starting.done.wait()  # (until the starter has a host or has given up)
             continue
-        started: SimulationHost | None = None
-        try:
-            host = SimulationHost(near=near)
-            atexit.register(host.close)
-            started = host
-        finally:  # (whatever ends the start, even an interrupt: the table holds the host or nothing, waiters go on)
-            with _warm_guard:
-                if started is not None:
-                    _warm[index] = started
-                else:
-                    del _warm[index]
+        host: SimulationHost | None = None
+        try:  # (whatever ends the start, even an interrupt: the table holds the host or nothing, and waiters go on)
+            try:
+                host = SimulationHost(near=near)
+                atexit.register(host.close)
+                with _warm_guard:
+                    _warm[index] = host
+                return host
+            except BaseException:
+                with _warm_guard:
+                    if _warm.get(index) is starting:
+                        del _warm[index]
+                if host is not None:
+                    host.close()  # (started, not kept: closed, not left running)
+                raise
+        finally:
             starting.done.set()
-        return host
 
 
 def shared_host(near: Path | None = None) -> SimulationHost:
