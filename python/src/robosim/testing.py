@@ -169,8 +169,6 @@ class SimulationHost:
                 try:
                     self._frames.send(["bye"])
                     self._frames.receive()
-                except (OSError, HostError, ValueError):
-                    pass
                 except Exception:  # (a link that broke as it ended: the host is stopped below all the same)
                     pass
             self._host.stop()
